@@ -1,0 +1,503 @@
+//! Polynomial Bézier curves of any degree and dimension (text 000).
+//!
+//! `b(t) = Σ_{i=0}^n b_i B_i^n(t)`. Everything here is generic over [`Scalar`]: on exact
+//! rationals the results are exact and identities are decided with `==`; on `f64` the same
+//! code runs in floating point.
+//!
+//! | text 000                       | here                                   |
+//! |--------------------------------|----------------------------------------|
+//! | de Casteljau (1), scheme (9)   | [`BezierCurve::eval`], [`BezierCurve::scheme`] |
+//! | Bernstein sum                  | [`BezierCurve::eval_bernstein`]        |
+//! | power basis ↔ Bernstein        | [`BezierCurve::from_power_on`], [`BezierCurve::to_power`] |
+//! | degree elevation (7), (8)      | [`BezierCurve::elevate`], [`BezierCurve::elevate_by`] |
+//! | Theorem 1.2 (convergence)      | [`BezierCurve::elevation_distances`]   |
+//! | subdivision, Lemma 1.3         | [`BezierCurve::split_at`]              |
+//! | forward differences, derivatives | [`BezierCurve::forward_differences`], [`BezierCurve::derivative`] |
+//! | affine invariance, convex hull | [`BezierCurve::transform`], [`BezierCurve::hull_weights`] |
+
+use crate::bernstein::{bernstein_all, bernstein_to_power, binomial, power_to_bernstein, reparametrize};
+use crate::error::{check_degree, Error, Result};
+use crate::hull::convex_weights;
+use crate::point::{common_dimension, AffineMap, Point};
+use crate::scalar::{RefOps, Scalar};
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use std::fmt;
+
+/// A Bézier curve: its control points `b_0, …, b_n` (all of one dimension, at least one).
+///
+/// ```
+/// use casteljau::{BezierCurve, BigRational, Scalar};
+/// let q = |p, d| BigRational::from_ratio(p, d).unwrap();
+/// // text 000, §1.3: the Bézier points of (-u² + 1, -u³ + u) on [-1, 1]
+/// let c = BezierCurve::from_ints(&[&[0, 0], &[4, -4], &[4, 4], &[0, 0]]).unwrap();
+/// let c = c.transform(&casteljau::AffineMap::scaling(2, &q(1, 3))).unwrap();
+/// let t = q(1, 4);
+/// let u = &(&q(2, 1) * &t) - &q(1, 1); // u = 2t - 1
+/// let p = c.eval(&t);
+/// assert_eq!(p.coords()[0], &q(1, 1) - &(&u * &u));
+/// assert_eq!(p.coords()[1], &u - &(&(&u * &u) * &u));
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct BezierCurve<T> {
+    points: Vec<Point<T>>,
+}
+
+/// The triangular de Casteljau scheme (9) at one parameter: `column(r)[i] = b_i^r(t)`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DeCasteljauScheme<T> {
+    /// The parameter.
+    pub t: T,
+    /// `columns[r][i] = b_i^r(t)`, `r = 0..=n`, `i = 0..=n-r`.
+    pub columns: Vec<Vec<Point<T>>>,
+}
+
+/// How far the `r`-times elevated control polygon is from the curve (Theorem 1.2):
+/// the distances between `b_i^{(r)}` and `b(i/(n+r))`, maximised over `i`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ElevationDistance<T> {
+    /// Number of elevation steps.
+    pub r: usize,
+    /// `max_i max_k |b_i^{(r)} - b(i/(n+r))|_k`, the maximum-norm distance (exact).
+    pub max_norm: T,
+    /// `max_i |b_i^{(r)} - b(i/(n+r))|²`, the squared Euclidean distance (exact).
+    pub max_squared: T,
+}
+
+impl<T: Scalar> BezierCurve<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    /// A curve from its control points; empty polygons, mixed dimensions and degrees above
+    /// [`crate::MAX_DEGREE`] are errors.
+    pub fn new(points: Vec<Point<T>>) -> Result<Self> {
+        common_dimension(&points, "a Bézier curve")?;
+        check_degree("degree", points.len() as u128 - 1)?;
+        Ok(BezierCurve { points })
+    }
+
+    /// A curve from coordinate lists.
+    pub fn from_coords(coords: Vec<Vec<T>>) -> Result<Self> {
+        Self::new(coords.into_iter().map(Point::new).collect::<Result<_>>()?)
+    }
+
+    /// A curve with integer control points.
+    pub fn from_ints(coords: &[&[i64]]) -> Result<Self> {
+        Self::new(coords.iter().map(|c| Point::from_ints(c)).collect::<Result<_>>()?)
+    }
+
+    /// The Bézier form of `Σ_k a_k t^k` on `[0, 1]`; `coeffs[k]` is the vector `a_k`.
+    pub fn from_power(coeffs: &[Point<T>]) -> Result<Self> {
+        let dim = common_dimension(coeffs, "a power-basis curve")?;
+        let per_coord: Vec<Vec<T>> = (0..dim)
+            .map(|k| power_to_bernstein(&coeffs.iter().map(|a| a.coords()[k].clone()).collect::<Vec<_>>()))
+            .collect::<Result<_>>()?;
+        Self::from_coords(
+            (0..coeffs.len())
+                .map(|i| per_coord.iter().map(|c| c[i].clone()).collect())
+                .collect(),
+        )
+    }
+
+    /// The Bézier form of the polynomial curve `Σ_k a_k u^k`, `a ≤ u ≤ b`, reparametrised by
+    /// `u = a + (b - a) t` to `0 ≤ t ≤ 1` (text 000, §1.3); `a = b` is an error.
+    pub fn from_power_on(coeffs: &[Point<T>], a: &T, b: &T) -> Result<Self> {
+        if a == b {
+            return Err(Error::Domain(format!("the parameter interval [{a}, {b}] is empty")));
+        }
+        let dim = common_dimension(coeffs, "a power-basis curve")?;
+        let shifted: Vec<Vec<T>> = (0..dim)
+            .map(|k| reparametrize(&coeffs.iter().map(|c| c.coords()[k].clone()).collect::<Vec<_>>(), a, b))
+            .collect();
+        let points: Vec<Point<T>> = (0..coeffs.len())
+            .map(|i| Point::new(shifted.iter().map(|c| c[i].clone()).collect()))
+            .collect::<Result<_>>()?;
+        Self::from_power(&points)
+    }
+
+    /// The power-basis coefficients `a_0..a_n` (vectors) with `b(t) = Σ a_k t^k`.
+    pub fn to_power(&self) -> Result<Vec<Point<T>>> {
+        let per_coord: Vec<Vec<T>> = (0..self.dim())
+            .map(|k| bernstein_to_power(&self.points.iter().map(|p| p.coords()[k].clone()).collect::<Vec<_>>()))
+            .collect::<Result<_>>()?;
+        (0..self.points.len())
+            .map(|i| Point::new(per_coord.iter().map(|c| c[i].clone()).collect()))
+            .collect()
+    }
+
+    /// The degree `n`.
+    pub fn degree(&self) -> usize {
+        self.points.len() - 1
+    }
+
+    /// The dimension of the control points.
+    pub fn dim(&self) -> usize {
+        self.points[0].dim()
+    }
+
+    /// The control points.
+    pub fn points(&self) -> &[Point<T>] {
+        &self.points
+    }
+
+    /// The control points, by value.
+    pub fn into_points(self) -> Vec<Point<T>> {
+        self.points
+    }
+
+    /// Converts the coordinates to another scalar type (e.g. exact → `f64`).
+    pub fn try_map<U: Scalar>(&self, f: impl Fn(&T) -> Result<U> + Copy) -> Result<BezierCurve<U>>
+    where
+        for<'a> &'a U: RefOps<U>,
+    {
+        BezierCurve::new(self.points.iter().map(|p| p.try_map(f)).collect::<Result<_>>()?)
+    }
+
+    /// `b(t)` by de Casteljau's algorithm (1). Defined for every `t`, not only `[0, 1]`.
+    pub fn eval(&self, t: &T) -> Point<T> {
+        let dim = self.dim();
+        let n = self.degree();
+        // One flat buffer, updated in place column by column: b_i ← b_i + t (b_{i+1} - b_i).
+        let mut buf: Vec<T> = self.points.iter().flat_map(|p| p.coords().iter().cloned()).collect();
+        for r in 1..=n {
+            for i in 0..=n - r {
+                for k in 0..dim {
+                    let d = &buf[(i + 1) * dim + k] - &buf[i * dim + k];
+                    buf[i * dim + k] += &(t * &d);
+                }
+            }
+        }
+        buf.truncate(dim);
+        Point::new(buf).expect("dimension checked at construction")
+    }
+
+    /// The whole triangular scheme (9) at `t`.
+    pub fn scheme(&self, t: &T) -> DeCasteljauScheme<T> {
+        let mut columns = vec![self.points.clone()];
+        for r in 1..=self.degree() {
+            let prev = &columns[r - 1];
+            let next: Vec<Point<T>> = prev.windows(2).map(|w| w[0].lerp(&w[1], t)).collect();
+            columns.push(next);
+        }
+        DeCasteljauScheme { t: t.clone(), columns }
+    }
+
+    /// `b(t) = Σ b_i B_i^n(t)`, the Bernstein sum.
+    pub fn eval_bernstein(&self, t: &T) -> Point<T> {
+        let basis = bernstein_all(self.degree(), t);
+        let mut acc = Point::origin(self.dim());
+        for (b, p) in basis.iter().zip(&self.points) {
+            acc.add_scaled_assign(b, p);
+        }
+        acc
+    }
+
+    /// One step of degree elevation (7): the same curve with `n + 2` control points.
+    pub fn elevate(&self) -> Result<Self> {
+        let n = self.degree();
+        check_degree("degree after elevation", n as u128 + 1)?;
+        let n1 = T::from_usize(n + 1);
+        let mut out = Vec::with_capacity(n + 2);
+        out.push(self.points[0].clone());
+        for i in 1..=n {
+            let a = T::from_usize(i).checked_div(&n1)?;
+            // (i/(n+1)) b_{i-1} + (1 - i/(n+1)) b_i
+            out.push(self.points[i].lerp(&self.points[i - 1], &a));
+        }
+        out.push(self.points[n].clone());
+        Ok(BezierCurve { points: out })
+    }
+
+    /// `r` steps of elevation by the closed form (8):
+    /// `b_i^{(r)} = Σ_j C(n,j) C(r,i-j) / C(n+r,i) b_j`.
+    ///
+    /// ```
+    /// use casteljau::{BezierCurve, BigRational};
+    /// let c: BezierCurve<BigRational> = BezierCurve::from_ints(&[&[0, 0], &[1, 2], &[3, 1]]).unwrap();
+    /// assert_eq!(c.elevate_by(3).unwrap(), c.elevate().unwrap().elevate().unwrap().elevate().unwrap());
+    /// assert!(c.elevate_by(1_000_000_000_000).is_err());
+    /// ```
+    pub fn elevate_by(&self, r: usize) -> Result<Self> {
+        let n = self.degree();
+        let total = check_degree("degree after elevation", n as u128 + r as u128)?;
+        let cn: Vec<BigInt> = (0..=n).map(|j| binomial(n, j)).collect();
+        let cr: Vec<BigInt> = (0..=r).map(|k| binomial(r, k)).collect();
+        let mut out = Vec::with_capacity(total + 1);
+        for i in 0..=total {
+            let denom = binomial(total, i);
+            let mut acc = Point::origin(self.dim());
+            for j in i.saturating_sub(r)..=i.min(n) {
+                let w = T::from_rational(&BigRational::new(&cn[j] * &cr[i - j], denom.clone()))?;
+                acc.add_scaled_assign(&w, &self.points[j]);
+            }
+            out.push(acc);
+        }
+        Ok(BezierCurve { points: out })
+    }
+
+    /// `r` single steps of (7), one after another.
+    pub fn elevate_steps(&self, r: usize) -> Result<Self> {
+        check_degree("degree after elevation", self.degree() as u128 + r as u128)?;
+        let mut c = self.clone();
+        for _ in 0..r {
+            c = c.elevate()?;
+        }
+        Ok(c)
+    }
+
+    /// Subdivision at `t0` (Lemma 1.3): the curves `c1(t) = b(t0 t)` and
+    /// `c2(t) = b(t0 + (1 - t0) t)`, whose control points are the two boundaries of the
+    /// scheme (9). Any `t0` works; outside `(0, 1)` the pieces extrapolate.
+    pub fn split_at(&self, t0: &T) -> (Self, Self) {
+        let n = self.degree();
+        let mut left = Vec::with_capacity(n + 1);
+        let mut right = vec![self.points[n].clone()];
+        let mut col = self.points.clone();
+        left.push(col[0].clone());
+        for _ in 1..=n {
+            col = col.windows(2).map(|w| w[0].lerp(&w[1], t0)).collect();
+            left.push(col[0].clone());
+            right.push(col[col.len() - 1].clone());
+        }
+        right.reverse();
+        (BezierCurve { points: left }, BezierCurve { points: right })
+    }
+
+    /// The forward differences `Δ^k b_j`, `j = 0..=n-k`; `k > n` is an error.
+    pub fn forward_differences(&self, k: usize) -> Result<Vec<Point<T>>> {
+        let n = self.degree();
+        if k > n {
+            return Err(Error::DerivativeOrder { order: k, degree: n });
+        }
+        let mut d = self.points.clone();
+        for _ in 0..k {
+            d = d.windows(2).map(|w| w[1].sub(&w[0])).collect();
+        }
+        Ok(d)
+    }
+
+    /// The `k`-th derivative curve `n!/(n-k)! Σ_j Δ^k b_j B_j^{n-k}(t)`, of degree `n - k`.
+    /// `k > n` is an error (the derivative is zero, but no curve of degree `n - k` exists).
+    pub fn derivative(&self, k: usize) -> Result<Self> {
+        let n = self.degree();
+        let diffs = self.forward_differences(k)?;
+        let mut factor = BigInt::from(1);
+        for m in n - k + 1..=n {
+            factor *= m;
+        }
+        let f = T::from_bigint(&factor)?;
+        Ok(BezierCurve {
+            points: diffs.iter().map(|d| d.scale(&f)).collect(),
+        })
+    }
+
+    /// The hodograph: the first derivative curve `n Σ Δb_j B_j^{n-1}(t)`.
+    pub fn hodograph(&self) -> Result<Self> {
+        self.derivative(1)
+    }
+
+    /// The `k`-th derivative vector at `t`: zero when `k` exceeds the degree.
+    pub fn derivative_at(&self, k: usize, t: &T) -> Result<Point<T>> {
+        if k > self.degree() {
+            return Ok(Point::origin(self.dim()));
+        }
+        Ok(self.derivative(k)?.eval(t))
+    }
+
+    /// The image of the curve under an affine map: the curve of the mapped control points.
+    pub fn transform(&self, map: &AffineMap<T>) -> Result<Self> {
+        Self::new(map.apply_all(&self.points)?)
+    }
+
+    /// Convex weights expressing `p` through the control points when `p` lies in their
+    /// convex hull, `None` otherwise (see [`crate::hull::convex_weights`]).
+    pub fn hull_weights(&self, p: &Point<T>) -> Result<Option<Vec<T>>> {
+        convex_weights(&self.points, p)
+    }
+
+    /// Whether `p` lies in the convex hull of the control points.
+    pub fn hull_contains(&self, p: &Point<T>) -> Result<bool> {
+        Ok(self.hull_weights(p)?.is_some())
+    }
+
+    /// The distance between the `r`-times elevated polygon and the curve (Theorem 1.2),
+    /// measured at the Greville-like parameters `i/(n+r)`.
+    pub fn elevation_distance(&self, r: usize) -> Result<ElevationDistance<T>> {
+        Ok(self.distance_of_elevated(&self.elevate_by(r)?, r))
+    }
+
+    /// [`Self::elevation_distance`] for `r = 0..=r_max`, elevating one step at a time.
+    pub fn elevation_distances(&self, r_max: usize) -> Result<Vec<ElevationDistance<T>>> {
+        check_degree("degree after elevation", self.degree() as u128 + r_max as u128)?;
+        let mut c = self.clone();
+        let mut out = Vec::with_capacity(r_max + 1);
+        for r in 0..=r_max {
+            if r > 0 {
+                c = c.elevate()?;
+            }
+            out.push(self.distance_of_elevated(&c, r));
+        }
+        Ok(out)
+    }
+
+    fn distance_of_elevated(&self, elevated: &Self, r: usize) -> ElevationDistance<T> {
+        let total = elevated.degree();
+        let mut max_norm = T::zero();
+        let mut max_squared = T::zero();
+        for (i, p) in elevated.points.iter().enumerate() {
+            let t = if total == 0 {
+                T::zero()
+            } else {
+                T::from_usize(i).checked_div(&T::from_usize(total)).expect("total > 0")
+            };
+            let on_curve = self.eval(&t);
+            let m = p.max_norm_distance(&on_curve);
+            let s = p.distance_squared(&on_curve);
+            if m > max_norm {
+                max_norm = m;
+            }
+            if s > max_squared {
+                max_squared = s;
+            }
+        }
+        ElevationDistance {
+            r,
+            max_norm,
+            max_squared,
+        }
+    }
+}
+
+impl<T: Scalar> DeCasteljauScheme<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    /// The degree of the curve.
+    pub fn degree(&self) -> usize {
+        self.columns.len() - 1
+    }
+
+    /// `b_i^r(t)`.
+    pub fn get(&self, r: usize, i: usize) -> Option<&Point<T>> {
+        self.columns.get(r)?.get(i)
+    }
+
+    /// The point of the curve, `b_0^n(t)`.
+    pub fn point(&self) -> &Point<T> {
+        &self.columns[self.degree()][0]
+    }
+}
+
+/// Prints the scheme as the text's triangle (9): row `k` holds `b_k, b_{k-1}^1(t), …, b_0^k(t)`.
+impl<T: fmt::Display> fmt::Display for DeCasteljauScheme<T> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let n = self.columns.len() - 1;
+        writeln!(f, "de Casteljau scheme (9) at t = {}", self.t)?;
+        for k in 0..=n {
+            let mut cells = Vec::new();
+            for r in 0..=k {
+                let i = k - r;
+                let label = if r == 0 { format!("b_{i}") } else { format!("b_{i}^{r}") };
+                cells.push(format!("{label} = {}", self.columns[r][i]));
+            }
+            writeln!(f, "  {}", cells.join("   "))?;
+        }
+        Ok(())
+    }
+}
+
+impl<T: fmt::Display> fmt::Display for BezierCurve<T> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (i, p) in self.points.iter().enumerate() {
+            if i > 0 {
+                write!(f, "; ")?;
+            }
+            write!(f, "{p}")?;
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    type Q = BigRational;
+
+    fn q(p: i64, d: i64) -> Q {
+        Q::from_ratio(p, d).unwrap()
+    }
+
+    fn text_example() -> BezierCurve<Q> {
+        let a = |c: &[i64]| Point::from_ints(c).unwrap();
+        // (-u² + 1, -u³ + u): coefficients of u^0..u^3
+        let coeffs = vec![a(&[1, 0]), a(&[0, 1]), a(&[-1, 0]), a(&[0, -1])];
+        BezierCurve::from_power_on(&coeffs, &q(-1, 1), &q(1, 1)).unwrap()
+    }
+
+    #[test]
+    fn text_000_power_to_bezier_example() {
+        let c = text_example();
+        let expect = [
+            Point::new(vec![q(0, 1), q(0, 1)]).unwrap(),
+            Point::new(vec![q(4, 3), q(-4, 3)]).unwrap(),
+            Point::new(vec![q(4, 3), q(4, 3)]).unwrap(),
+            Point::new(vec![q(0, 1), q(0, 1)]).unwrap(),
+        ];
+        assert_eq!(c.points(), &expect[..]);
+    }
+
+    #[test]
+    fn scheme_boundary_is_split() {
+        let c = text_example();
+        let t = q(1, 3);
+        let s = c.scheme(&t);
+        let (l, r) = c.split_at(&t);
+        assert_eq!(s.point(), &c.eval(&t));
+        for k in 0..=3 {
+            assert_eq!(&l.points()[k], s.get(k, 0).unwrap());
+            assert_eq!(&r.points()[k], s.get(3 - k, k).unwrap());
+        }
+        let shown = s.to_string();
+        assert!(shown.contains("b_0^3 = "), "{shown}");
+    }
+
+    #[test]
+    fn degree_zero_and_one() {
+        let c0: BezierCurve<Q> = BezierCurve::from_ints(&[&[5, 7]]).unwrap();
+        assert_eq!(c0.eval(&q(3, 4)), Point::from_ints(&[5, 7]).unwrap());
+        assert!(c0.hodograph().is_err());
+        assert_eq!(
+            c0.derivative_at(1, &q(1, 2)).unwrap(),
+            Point::from_ints(&[0, 0]).unwrap()
+        );
+        assert_eq!(c0.elevate().unwrap().points().len(), 2);
+        let c1: BezierCurve<Q> = BezierCurve::from_ints(&[&[0], &[4]]).unwrap();
+        assert_eq!(c1.eval(&q(1, 4)).coords(), &[q(1, 1)]);
+        assert_eq!(c1.hodograph().unwrap().points(), &[Point::from_ints(&[4]).unwrap()]);
+    }
+
+    #[test]
+    fn bad_input_is_an_error() {
+        assert!(matches!(BezierCurve::<Q>::new(vec![]), Err(Error::Empty(_))));
+        assert!(matches!(
+            BezierCurve::<Q>::from_ints(&[&[0, 0], &[1]]),
+            Err(Error::DimensionMismatch { .. })
+        ));
+        let c = text_example();
+        assert!(matches!(
+            c.derivative(4),
+            Err(Error::DerivativeOrder { order: 4, degree: 3 })
+        ));
+        assert!(matches!(c.elevate_by(usize::MAX), Err(Error::TooLarge { .. })));
+        assert!(c.elevate_steps(1 << 40).is_err());
+    }
+
+    #[test]
+    fn elevation_distance_decreases() {
+        let c = text_example();
+        let d = c.elevation_distances(8).unwrap();
+        assert_eq!(d[0].r, 0);
+        assert!(d.windows(2).all(|w| w[1].max_squared <= w[0].max_squared));
+        assert_eq!(d[3], c.elevation_distance(3).unwrap());
+    }
+}

@@ -1,0 +1,39 @@
+//! # casteljau — Bézier geometry, checked exactly
+//!
+//! One set of algorithms, generic over a [`Scalar`], runs on exact rationals
+//! ([`BigRational`]) to verify identities and textbook claims with `==`, and on `f64` for
+//! speed. The exact path doubles as a regression oracle for float code.
+//!
+//! ```
+//! use casteljau::{BezierCurve, BigRational, Scalar};
+//! let curve: BezierCurve<BigRational> = BezierCurve::from_ints(&[&[0, 0], &[1, 2], &[3, 2], &[4, 0]]).unwrap();
+//! let half = BigRational::from_ratio(1, 2).unwrap();
+//! let (left, right) = curve.split_at(&half);
+//! // Lemma 1.3: the left half at t is the curve at t/2, exactly.
+//! let t = BigRational::from_ratio(1, 3).unwrap();
+//! assert_eq!(left.eval(&t), curve.eval(&(&half * &t)));
+//! assert_eq!(right.eval(&BigRational::from_i64(0)), curve.eval(&half));
+//! ```
+//!
+//! Modules, one concept each: [`scalar`] (the number trait, exact parsing), [`point`]
+//! (points, barycentric combinations, affine maps), [`bernstein`] (binomials, the Bernstein
+//! basis, power ↔ Bernstein), [`curve`] (Bézier curves), [`hull`] (exact convex-hull
+//! membership), [`linalg`] (exact elimination).
+
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod bernstein;
+pub mod curve;
+pub mod error;
+pub mod hull;
+pub mod linalg;
+pub mod point;
+pub mod scalar;
+
+pub use curve::{BezierCurve, DeCasteljauScheme, ElevationDistance};
+pub use error::{Error, Result, MAX_DEGREE, MAX_DIMENSION};
+pub use num_bigint::BigInt;
+pub use num_rational::BigRational;
+pub use point::{AffineMap, Point, Vector};
+pub use scalar::{RefOps, Scalar};

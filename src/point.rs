@@ -1,0 +1,459 @@
+//! Points and vectors of any dimension, barycentric combinations and affine maps.
+//!
+//! The texts use one letter for points and difference vectors alike, and so does this
+//! module: [`Point`] is a coordinate tuple, [`Vector`] an alias for it. What makes a
+//! combination of points meaningful is that its weights sum to one ([`barycentric`]), which
+//! is exactly why Bézier curves are invariant under [`AffineMap`]s.
+
+use crate::error::{Error, Result, MAX_DIMENSION};
+use crate::scalar::{RefOps, Scalar};
+use std::fmt;
+
+/// A point (or vector) with coordinates of type `T`.
+///
+/// Arithmetic between points of different dimensions is a programming error and panics;
+/// curves, surfaces and nets check dimensions when they are built, so their algorithms
+/// never meet one.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct Point<T> {
+    coords: Vec<T>,
+}
+
+/// A difference of two points; the same type as [`Point`].
+pub type Vector<T> = Point<T>;
+
+impl<T: Scalar> Point<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    /// A point from its coordinates; at least one, at most [`MAX_DIMENSION`].
+    pub fn new(coords: Vec<T>) -> Result<Self> {
+        if coords.is_empty() {
+            return Err(Error::ZeroDimension);
+        }
+        if coords.len() > MAX_DIMENSION {
+            return Err(Error::TooLarge {
+                what: "dimension",
+                value: coords.len().to_string(),
+                limit: MAX_DIMENSION.to_string(),
+            });
+        }
+        Ok(Point { coords })
+    }
+
+    /// A point with integer coordinates, convenient for literals.
+    ///
+    /// ```
+    /// use casteljau::{Point, BigRational};
+    /// let p: Point<BigRational> = Point::from_ints(&[1, -2]).unwrap();
+    /// assert_eq!(p.dim(), 2);
+    /// ```
+    pub fn from_ints(coords: &[i64]) -> Result<Self> {
+        Self::new(coords.iter().map(|&c| T::from_i64(c)).collect())
+    }
+
+    /// The origin of dimension `dim`.
+    pub fn origin(dim: usize) -> Self {
+        Point {
+            coords: vec![T::zero(); dim],
+        }
+    }
+
+    /// The number of coordinates.
+    pub fn dim(&self) -> usize {
+        self.coords.len()
+    }
+
+    /// The coordinates.
+    pub fn coords(&self) -> &[T] {
+        &self.coords
+    }
+
+    /// The coordinates, by value.
+    pub fn into_coords(self) -> Vec<T> {
+        self.coords
+    }
+
+    /// Converts every coordinate to another scalar type.
+    pub fn try_map<U: Scalar>(&self, f: impl Fn(&T) -> Result<U>) -> Result<Point<U>>
+    where
+        for<'a> &'a U: RefOps<U>,
+    {
+        Ok(Point {
+            coords: self.coords.iter().map(f).collect::<Result<_>>()?,
+        })
+    }
+
+    /// `self + v`.
+    pub fn add(&self, v: &Vector<T>) -> Point<T> {
+        self.zip(v, |a, b| a + b)
+    }
+
+    /// `self - other`, the vector from `other` to `self`.
+    pub fn sub(&self, other: &Point<T>) -> Vector<T> {
+        self.zip(other, |a, b| a - b)
+    }
+
+    /// `s * self`.
+    pub fn scale(&self, s: &T) -> Vector<T> {
+        Point {
+            coords: self.coords.iter().map(|c| c * s).collect(),
+        }
+    }
+
+    /// `-self`.
+    pub fn neg(&self) -> Vector<T> {
+        Point {
+            coords: self.coords.iter().map(|c| -c).collect(),
+        }
+    }
+
+    /// `(1 - t) self + t other`: the point dividing the segment in the ratio `t : 1 - t`,
+    /// the step of de Casteljau's algorithm (1).
+    pub fn lerp(&self, other: &Point<T>, t: &T) -> Point<T> {
+        self.zip(other, |a, b| a + &(t * &(b - a)))
+    }
+
+    /// The dot product.
+    pub fn dot(&self, other: &Vector<T>) -> T {
+        self.check_dim(other);
+        let mut acc = T::zero();
+        for (a, b) in self.coords.iter().zip(&other.coords) {
+            acc += &(a * b);
+        }
+        acc
+    }
+
+    /// `|self|²`, exact for exact scalars.
+    pub fn norm_squared(&self) -> T {
+        self.dot(self)
+    }
+
+    /// `|self - other|²`, exact for exact scalars.
+    pub fn distance_squared(&self, other: &Point<T>) -> T {
+        self.sub(other).norm_squared()
+    }
+
+    /// `max_k |self_k - other_k|`, the maximum-norm distance, exact for exact scalars.
+    pub fn max_norm_distance(&self, other: &Point<T>) -> T {
+        self.check_dim(other);
+        let mut best = T::zero();
+        for (a, b) in self.coords.iter().zip(&other.coords) {
+            let d = (a - b).abs();
+            if d > best {
+                best = d;
+            }
+        }
+        best
+    }
+
+    /// Whether every coordinate is zero.
+    pub fn is_zero(&self) -> bool {
+        self.coords.iter().all(Scalar::is_zero)
+    }
+
+    /// Coordinates as floats, for display and plotting.
+    pub fn to_f64(&self) -> Vec<f64> {
+        self.coords.iter().map(Scalar::to_f64).collect()
+    }
+
+    /// Equality within `tol` per coordinate for floats, exact equality for exact scalars.
+    pub fn approx_eq(&self, other: &Point<T>, tol: f64) -> bool {
+        self.dim() == other.dim() && self.coords.iter().zip(&other.coords).all(|(a, b)| a.approx_eq(b, tol))
+    }
+
+    pub(crate) fn add_scaled_assign(&mut self, s: &T, v: &Vector<T>) {
+        self.check_dim(v);
+        for (a, b) in self.coords.iter_mut().zip(&v.coords) {
+            *a += &(s * b);
+        }
+    }
+
+    fn zip(&self, other: &Point<T>, f: impl Fn(&T, &T) -> T) -> Point<T> {
+        self.check_dim(other);
+        Point {
+            coords: self.coords.iter().zip(&other.coords).map(|(a, b)| f(a, b)).collect(),
+        }
+    }
+
+    fn check_dim(&self, other: &Point<T>) {
+        assert_eq!(self.dim(), other.dim(), "dimension mismatch between points");
+    }
+}
+
+impl<T: fmt::Display> fmt::Display for Point<T> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "(")?;
+        for (i, c) in self.coords.iter().enumerate() {
+            if i > 0 {
+                write!(f, ", ")?;
+            }
+            write!(f, "{c}")?;
+        }
+        write!(f, ")")
+    }
+}
+
+/// Checks that `points` is non-empty and all of one dimension; returns that dimension.
+pub fn common_dimension<T: Scalar>(points: &[Point<T>], what: &'static str) -> Result<usize>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    let first = points.first().ok_or(Error::Empty(what))?;
+    let dim = first.dim();
+    for (i, p) in points.iter().enumerate() {
+        if p.dim() != dim {
+            return Err(Error::DimensionMismatch {
+                expected: dim,
+                found: p.dim(),
+                context: format!("{what}, point {i}"),
+            });
+        }
+    }
+    Ok(dim)
+}
+
+/// `Σ c_i p_i` with arbitrary coefficients: a linear combination, meaningful for vectors.
+pub fn linear_combination<T: Scalar>(points: &[Point<T>], coeffs: &[T]) -> Result<Point<T>>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    let dim = common_dimension(points, "linear combination")?;
+    if coeffs.len() != points.len() {
+        return Err(Error::WrongCount {
+            what: "linear combination coefficients",
+            needed: points.len(),
+            got: coeffs.len(),
+        });
+    }
+    let mut acc = Point::origin(dim);
+    for (p, c) in points.iter().zip(coeffs) {
+        acc.add_scaled_assign(c, p);
+    }
+    Ok(acc)
+}
+
+/// The barycentric combination `Σ c_i b_i` with `Σ c_i = 1` (text 000, §1.5).
+///
+/// For exact scalars the weights must sum to exactly one; for floats, to within `1e-12`
+/// relative to `Σ|c_i|`. Otherwise the combination depends on the origin and is an error.
+///
+/// ```
+/// use casteljau::{point::barycentric, Point, BigRational, Scalar};
+/// let tri: Vec<Point<BigRational>> =
+///     vec![Point::from_ints(&[0, 0]).unwrap(), Point::from_ints(&[3, 0]).unwrap(), Point::from_ints(&[0, 3]).unwrap()];
+/// let third = BigRational::from_ratio(1, 3).unwrap();
+/// let g = barycentric(&tri, &[third.clone(), third.clone(), third]).unwrap();
+/// assert_eq!(g, Point::from_ints(&[1, 1]).unwrap());
+/// ```
+pub fn barycentric<T: Scalar>(points: &[Point<T>], weights: &[T]) -> Result<Point<T>>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    let mut sum = T::zero();
+    let mut abs_sum = 0.0f64;
+    for w in weights {
+        sum += w;
+        abs_sum += w.to_f64().abs();
+    }
+    let affine = if T::EXACT {
+        sum == T::one()
+    } else {
+        (sum.to_f64() - 1.0).abs() <= 1e-12 * abs_sum.max(1.0)
+    };
+    if !affine {
+        return Err(Error::NotAffine(sum.to_string()));
+    }
+    linear_combination(points, weights)
+}
+
+/// An affine map `x ↦ A x + c` from dimension `A.cols` to dimension `A.rows`.
+///
+/// ```
+/// use casteljau::{AffineMap, Point};
+/// let shear = AffineMap::new(vec![vec![1.0, 2.0], vec![0.0, 1.0]], vec![1.0, 0.0]).unwrap();
+/// assert_eq!(shear.apply(&Point::new(vec![1.0, 1.0]).unwrap()).unwrap().coords(), &[4.0, 1.0]);
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct AffineMap<T> {
+    matrix: Vec<Vec<T>>,
+    translation: Vec<T>,
+}
+
+impl<T: Scalar> AffineMap<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    /// The map with matrix `matrix` (one row per output coordinate) and translation.
+    pub fn new(matrix: Vec<Vec<T>>, translation: Vec<T>) -> Result<Self> {
+        let cols = matrix.first().map(Vec::len).ok_or(Error::Empty("affine map matrix"))?;
+        if cols == 0 {
+            return Err(Error::ZeroDimension);
+        }
+        for (i, row) in matrix.iter().enumerate() {
+            if row.len() != cols {
+                return Err(Error::DimensionMismatch {
+                    expected: cols,
+                    found: row.len(),
+                    context: format!("affine map matrix row {i}"),
+                });
+            }
+        }
+        if translation.len() != matrix.len() {
+            return Err(Error::DimensionMismatch {
+                expected: matrix.len(),
+                found: translation.len(),
+                context: "affine map translation".into(),
+            });
+        }
+        Ok(AffineMap { matrix, translation })
+    }
+
+    /// The translation by `v`.
+    pub fn translation(v: &Vector<T>) -> Self {
+        let d = v.dim();
+        let matrix = (0..d)
+            .map(|i| (0..d).map(|j| if i == j { T::one() } else { T::zero() }).collect())
+            .collect();
+        AffineMap {
+            matrix,
+            translation: v.coords().to_vec(),
+        }
+    }
+
+    /// The uniform scaling by `s` about the origin in dimension `dim`.
+    pub fn scaling(dim: usize, s: &T) -> Self {
+        let matrix = (0..dim)
+            .map(|i| (0..dim).map(|j| if i == j { s.clone() } else { T::zero() }).collect())
+            .collect();
+        AffineMap {
+            matrix,
+            translation: vec![T::zero(); dim],
+        }
+    }
+
+    /// Input dimension.
+    pub fn input_dim(&self) -> usize {
+        self.matrix[0].len()
+    }
+
+    /// Output dimension.
+    pub fn output_dim(&self) -> usize {
+        self.matrix.len()
+    }
+
+    /// `A p + c`.
+    pub fn apply(&self, p: &Point<T>) -> Result<Point<T>> {
+        if p.dim() != self.input_dim() {
+            return Err(Error::DimensionMismatch {
+                expected: self.input_dim(),
+                found: p.dim(),
+                context: "affine map input".into(),
+            });
+        }
+        let coords = self
+            .matrix
+            .iter()
+            .zip(&self.translation)
+            .map(|(row, c)| {
+                let mut acc = c.clone();
+                for (a, x) in row.iter().zip(p.coords()) {
+                    acc += &(a * x);
+                }
+                acc
+            })
+            .collect();
+        Ok(Point { coords })
+    }
+
+    /// Applies the map to every point.
+    pub fn apply_all(&self, points: &[Point<T>]) -> Result<Vec<Point<T>>> {
+        points.iter().map(|p| self.apply(p)).collect()
+    }
+
+    /// `self ∘ inner`: first `inner`, then `self`.
+    pub fn compose(&self, inner: &AffineMap<T>) -> Result<AffineMap<T>> {
+        if inner.output_dim() != self.input_dim() {
+            return Err(Error::DimensionMismatch {
+                expected: self.input_dim(),
+                found: inner.output_dim(),
+                context: "composition of affine maps".into(),
+            });
+        }
+        let matrix = self
+            .matrix
+            .iter()
+            .map(|row| {
+                (0..inner.input_dim())
+                    .map(|j| {
+                        let mut acc = T::zero();
+                        for (k, a) in row.iter().enumerate() {
+                            acc += &(a * &inner.matrix[k][j]);
+                        }
+                        acc
+                    })
+                    .collect()
+            })
+            .collect();
+        let translation = self
+            .apply(&Point {
+                coords: inner.translation.clone(),
+            })?
+            .into_coords();
+        Ok(AffineMap { matrix, translation })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use num_rational::BigRational;
+
+    type Q = BigRational;
+
+    fn p(c: &[i64]) -> Point<Q> {
+        Point::from_ints(c).unwrap()
+    }
+
+    #[test]
+    fn barycentric_requires_exact_unit_sum() {
+        let pts = vec![p(&[0, 0]), p(&[2, 0])];
+        let half = Q::from_ratio(1, 2).unwrap();
+        assert_eq!(barycentric(&pts, &[half.clone(), half.clone()]).unwrap(), p(&[1, 0]));
+        let err = barycentric(&pts, &[half.clone(), half.clone() + Q::from_ratio(1, 1000).unwrap()]).unwrap_err();
+        assert!(matches!(err, Error::NotAffine(_)));
+        assert!(barycentric(&pts, &[half]).is_err());
+        assert!(barycentric::<Q>(&[], &[]).is_err());
+    }
+
+    #[test]
+    fn mixed_dimensions_are_reported() {
+        let err = common_dimension(&[p(&[0, 0]), p(&[1, 2, 3])], "polygon").unwrap_err();
+        assert!(err.to_string().contains("expected 2"), "{err}");
+        assert!(Point::<Q>::new(vec![]).is_err());
+    }
+
+    #[test]
+    fn affine_maps_compose() {
+        let a = AffineMap::new(
+            vec![
+                vec![Q::from_i64(2), Q::from_i64(1)],
+                vec![Q::from_i64(0), Q::from_i64(1)],
+            ],
+            vec![Q::from_i64(1), Q::from_i64(-1)],
+        )
+        .unwrap();
+        let b = AffineMap::translation(&p(&[3, 4]));
+        let ab = a.compose(&b).unwrap();
+        let x = p(&[5, -7]);
+        assert_eq!(ab.apply(&x).unwrap(), a.apply(&b.apply(&x).unwrap()).unwrap());
+        assert!(a.apply(&p(&[1, 2, 3])).is_err());
+        assert!(AffineMap::<Q>::new(vec![vec![Q::from_i64(1)], vec![]], vec![Q::from_i64(0), Q::from_i64(0)]).is_err());
+    }
+
+    #[test]
+    fn lerp_divides_in_ratio() {
+        let t = Q::from_ratio(1, 4).unwrap();
+        assert_eq!(p(&[0, 0]).lerp(&p(&[4, 8]), &t), p(&[1, 2]));
+    }
+}

@@ -1,0 +1,419 @@
+//! The [`Scalar`] trait every algorithm of casteljau is generic over.
+//!
+//! Two kinds of scalars run the same code: `f64`, for speed, and exact ones such as
+//! [`BigRational`] (and the quadratic irrationals of [`crate::quadratic`]), to decide
+//! identities with `==`. Exact scalars are `Clone`, not `Copy`, so generic code does its
+//! arithmetic on references — `&a * &b` — which the [`RefOps`] bound makes available:
+//! every generic item carries `where for<'a> &'a T: RefOps<T>`.
+//!
+//! Exact scalars never overflow: [`BigRational`] is arbitrary precision. Conversions into
+//! an exact type are exact (every finite `f64` is a dyadic rational); conversions that
+//! cannot be exact (NaN, infinities, a rational too large for `f64`) are errors.
+
+use crate::error::{Error, Result};
+use num_bigint::{BigInt, Sign};
+use num_rational::BigRational;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+use std::fmt::{Debug, Display};
+use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+
+/// Arithmetic on borrowed scalars: `&a + &b`, `&a - &b`, `&a * &b`, `-&a`.
+///
+/// Implemented automatically for `&T` whenever those operators exist; generic code asks for
+/// it with `where for<'a> &'a T: RefOps<T>`.
+pub trait RefOps<T>:
+    Sized + Add<Self, Output = T> + Sub<Self, Output = T> + Mul<Self, Output = T> + Neg<Output = T>
+{
+}
+
+impl<'a, T: 'a> RefOps<T> for &'a T where
+    &'a T: Add<&'a T, Output = T> + Sub<&'a T, Output = T> + Mul<&'a T, Output = T> + Neg<Output = T>
+{
+}
+
+/// A number type the Bézier algorithms can run on.
+///
+/// Division is not an operator: it is [`Scalar::checked_div`], so a zero divisor is an
+/// error for every scalar, `f64` included.
+///
+/// ```
+/// use casteljau::{Scalar, BigRational};
+/// let third = BigRational::from_ratio(1, 3).unwrap();
+/// assert!(BigRational::EXACT);
+/// assert_eq!(&third + &third + &third, BigRational::one());
+/// assert!(BigRational::from_ratio(1, 0).is_err());
+/// ```
+pub trait Scalar:
+    Clone
+    + PartialEq
+    + PartialOrd
+    + Debug
+    + Display
+    + Send
+    + Sync
+    + 'static
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Neg<Output = Self>
+    + for<'a> Add<&'a Self, Output = Self>
+    + for<'a> Sub<&'a Self, Output = Self>
+    + for<'a> Mul<&'a Self, Output = Self>
+    + for<'a> AddAssign<&'a Self>
+    + for<'a> SubAssign<&'a Self>
+    + for<'a> MulAssign<&'a Self>
+where
+    for<'a> &'a Self: RefOps<Self>,
+{
+    /// Whether arithmetic in this type is exact (comparisons by `==` decide identities).
+    const EXACT: bool;
+    /// A short name for reports ("f64", "rational", ...).
+    const NAME: &'static str;
+
+    /// The additive identity.
+    fn zero() -> Self;
+    /// The multiplicative identity.
+    fn one() -> Self;
+    /// Whether this is exactly zero.
+    fn is_zero(&self) -> bool;
+    /// The integer `n`.
+    fn from_i64(n: i64) -> Self;
+    /// The big integer `n`; an error for `f64` when it does not fit.
+    fn from_bigint(n: &BigInt) -> Result<Self>;
+    /// The rational `r`, exactly for exact types, rounded to nearest for `f64`.
+    fn from_rational(r: &BigRational) -> Result<Self>;
+    /// The float `x`: exactly its dyadic value for exact types; NaN and infinities are errors.
+    fn from_f64(x: f64) -> Result<Self>;
+    /// An approximation for display and for float comparisons.
+    fn to_f64(&self) -> f64;
+    /// `self / rhs`, or [`Error::DivisionByZero`].
+    fn checked_div(&self, rhs: &Self) -> Result<Self>;
+
+    /// The ratio `p/q`; `q = 0` is an error.
+    fn from_ratio(p: i64, q: i64) -> Result<Self> {
+        if q == 0 {
+            return Err(Error::DivisionByZero(format!("{p}/{q}")));
+        }
+        Self::from_rational(&BigRational::new(p.into(), q.into()))
+    }
+    /// The count `n` as a scalar.
+    fn from_usize(n: usize) -> Self {
+        Self::from_i64(n as i64)
+    }
+    /// `|self|`.
+    fn abs(&self) -> Self {
+        if *self < Self::zero() {
+            -self
+        } else {
+            self.clone()
+        }
+    }
+    /// `self^k` by repeated squaring.
+    fn powi(&self, mut k: u32) -> Self {
+        let mut base = self.clone();
+        let mut acc = Self::one();
+        while k > 0 {
+            if k & 1 == 1 {
+                acc *= &base;
+            }
+            k >>= 1;
+            if k > 0 {
+                base = &base * &base;
+            }
+        }
+        acc
+    }
+    /// Whether two values are equal: exactly for exact types, within `tol` (relative to the
+    /// larger magnitude, absolute below 1) for floats.
+    fn approx_eq(&self, other: &Self, tol: f64) -> bool {
+        if Self::EXACT {
+            return self == other;
+        }
+        let (a, b) = (self.to_f64(), other.to_f64());
+        (a - b).abs() <= tol * a.abs().max(b.abs()).max(1.0)
+    }
+}
+
+impl Scalar for f64 {
+    const EXACT: bool = false;
+    const NAME: &'static str = "f64";
+
+    fn zero() -> Self {
+        0.0
+    }
+    fn one() -> Self {
+        1.0
+    }
+    fn is_zero(&self) -> bool {
+        *self == 0.0
+    }
+    fn from_i64(n: i64) -> Self {
+        n as f64
+    }
+    fn from_bigint(n: &BigInt) -> Result<Self> {
+        finite(n.to_f64().unwrap_or(f64::INFINITY), || n.to_string())
+    }
+    fn from_rational(r: &BigRational) -> Result<Self> {
+        finite(ToPrimitive::to_f64(r).unwrap_or(f64::NAN), || r.to_string())
+    }
+    fn from_f64(x: f64) -> Result<Self> {
+        finite(x, || x.to_string())
+    }
+    fn to_f64(&self) -> f64 {
+        *self
+    }
+    fn checked_div(&self, rhs: &Self) -> Result<Self> {
+        if *rhs == 0.0 {
+            return Err(Error::DivisionByZero(format!("{self} / 0")));
+        }
+        Ok(self / rhs)
+    }
+}
+
+fn finite(x: f64, shown: impl FnOnce() -> String) -> Result<f64> {
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        Err(Error::NotFinite(shown()))
+    }
+}
+
+impl Scalar for BigRational {
+    const EXACT: bool = true;
+    const NAME: &'static str = "rational";
+
+    fn zero() -> Self {
+        Zero::zero()
+    }
+    fn one() -> Self {
+        One::one()
+    }
+    fn is_zero(&self) -> bool {
+        Zero::is_zero(self)
+    }
+    fn from_i64(n: i64) -> Self {
+        BigRational::from_integer(n.into())
+    }
+    fn from_bigint(n: &BigInt) -> Result<Self> {
+        Ok(BigRational::from_integer(n.clone()))
+    }
+    fn from_rational(r: &BigRational) -> Result<Self> {
+        Ok(r.clone())
+    }
+    fn from_f64(x: f64) -> Result<Self> {
+        BigRational::from_float(x).ok_or_else(|| Error::NotFinite(x.to_string()))
+    }
+    fn to_f64(&self) -> f64 {
+        ToPrimitive::to_f64(self).unwrap_or(f64::NAN)
+    }
+    fn checked_div(&self, rhs: &Self) -> Result<Self> {
+        if Zero::is_zero(rhs) {
+            return Err(Error::DivisionByZero(format!("{self} / 0")));
+        }
+        Ok(self / rhs)
+    }
+    fn abs(&self) -> Self {
+        Signed::abs(self)
+    }
+}
+
+/// Largest decimal exponent [`parse_exact`] accepts: `1e999999999` would need a billion
+/// digits, which is a typo or an attack, not a coordinate.
+pub const MAX_DECIMAL_EXPONENT: i64 = 4_096;
+
+/// Largest number of characters [`parse_exact`] accepts in one number.
+pub const MAX_NUMBER_LEN: usize = 10_000;
+
+/// Parses an exact rational written as an integer (`-3`), a fraction (`4/3`, `-1/2`), or a
+/// decimal with optional exponent (`0.25`, `1e-3`, `-2.5E+2`). The value is exact: `0.1`
+/// is `1/10`, not the nearest float.
+///
+/// ```
+/// use casteljau::scalar::parse_exact;
+/// use casteljau::BigRational;
+/// assert_eq!(parse_exact("0.1").unwrap(), BigRational::new(1.into(), 10.into()));
+/// assert_eq!(parse_exact("-4/6").unwrap(), BigRational::new((-2).into(), 3.into()));
+/// assert!(parse_exact("1/0").is_err());
+/// assert!(parse_exact("1e999999999").is_err());
+/// ```
+pub fn parse_exact(text: &str) -> Result<BigRational> {
+    let s = text.trim();
+    if s.is_empty() {
+        return Err(Error::Parse("empty number".into()));
+    }
+    if s.len() > MAX_NUMBER_LEN {
+        return Err(Error::TooLarge {
+            what: "number literal",
+            value: format!("{} characters", s.len()),
+            limit: format!("{MAX_NUMBER_LEN} characters"),
+        });
+    }
+    if let Some((p, q)) = s.split_once('/') {
+        let num = parse_decimal(p.trim(), text)?;
+        let den = parse_decimal(q.trim(), text)?;
+        if Zero::is_zero(&den) {
+            return Err(Error::DivisionByZero(format!("'{text}' has a zero denominator")));
+        }
+        return Ok(num / den);
+    }
+    parse_decimal(s, text)
+}
+
+fn parse_decimal(s: &str, whole: &str) -> Result<BigRational> {
+    let bad = || {
+        Error::Parse(format!(
+            "'{whole}' is not a number (write an integer, p/q, or a decimal like 0.25 or 1e-3)"
+        ))
+    };
+    let (negative, body) = match s.as_bytes().first() {
+        Some(b'-') => (true, &s[1..]),
+        Some(b'+') => (false, &s[1..]),
+        _ => (false, s),
+    };
+    let (mantissa, exponent) = match body.find(['e', 'E']) {
+        Some(i) => {
+            let exp_text = &body[i + 1..];
+            let digits = exp_text.trim_start_matches(['+', '-']);
+            if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) || exp_text.len() - digits.len() > 1 {
+                return Err(bad());
+            }
+            let magnitude: i64 = if digits.len() > 9 {
+                i64::MAX
+            } else {
+                digits.parse().map_err(|_| bad())?
+            };
+            let exp = if exp_text.starts_with('-') {
+                -magnitude
+            } else {
+                magnitude
+            };
+            (&body[..i], exp)
+        }
+        None => (body, 0),
+    };
+    let (int_part, frac_part) = match mantissa.split_once('.') {
+        Some((a, b)) => (a, b),
+        None => (mantissa, ""),
+    };
+    if int_part.is_empty() && frac_part.is_empty()
+        || !int_part.bytes().all(|b| b.is_ascii_digit())
+        || !frac_part.bytes().all(|b| b.is_ascii_digit())
+    {
+        return Err(bad());
+    }
+    let digits = format!("{int_part}{frac_part}");
+    let mut value = BigInt::parse_bytes(digits.as_bytes(), 10).ok_or_else(bad)?;
+    if negative {
+        value = -value;
+    }
+    let scale = exponent.saturating_sub(frac_part.len() as i64);
+    if Zero::is_zero(&value) {
+        return Ok(<BigRational as Zero>::zero());
+    }
+    if scale.abs() > MAX_DECIMAL_EXPONENT {
+        return Err(Error::TooLarge {
+            what: "decimal exponent",
+            value: if exponent.abs() > 999_999_999 {
+                "more than 999999999".to_string()
+            } else {
+                exponent.to_string()
+            },
+            limit: format!("±{MAX_DECIMAL_EXPONENT}"),
+        });
+    }
+    let ten = BigInt::from(10);
+    let power = num_traits::pow(ten, scale.unsigned_abs() as usize);
+    Ok(if scale >= 0 {
+        BigRational::from_integer(value * power)
+    } else {
+        BigRational::new(value, power)
+    })
+}
+
+/// Formats an exact rational in lowest terms as `p` or `p/q` with a positive denominator.
+pub fn format_exact(r: &BigRational) -> String {
+    // num-rational keeps ratios reduced with a positive denominator.
+    r.to_string()
+}
+
+/// The sign of an exact rational as -1, 0 or 1.
+pub fn sign(r: &BigRational) -> i32 {
+    match r.numer().sign() {
+        Sign::Minus => -1,
+        Sign::NoSign => 0,
+        Sign::Plus => 1,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(p: i64, d: i64) -> BigRational {
+        BigRational::new(p.into(), d.into())
+    }
+
+    #[test]
+    fn parses_exact_numbers() {
+        assert_eq!(parse_exact("3").unwrap(), q(3, 1));
+        assert_eq!(parse_exact(" -4/6 ").unwrap(), q(-2, 3));
+        assert_eq!(parse_exact("0.25").unwrap(), q(1, 4));
+        assert_eq!(parse_exact("1e-3").unwrap(), q(1, 1000));
+        assert_eq!(parse_exact("-2.5E+2").unwrap(), q(-250, 1));
+        assert_eq!(parse_exact(".5").unwrap(), q(1, 2));
+        assert_eq!(parse_exact("1.5/0.5").unwrap(), q(3, 1));
+        assert_eq!(parse_exact("0e999999999").unwrap(), q(0, 1));
+    }
+
+    #[test]
+    fn rejects_bad_numbers() {
+        for bad in [
+            "",
+            "abc",
+            "1/0",
+            "1e",
+            "1e+-3",
+            "--1",
+            "1.2.3",
+            ".",
+            "1e999999999",
+            "1e-99999",
+            "nan",
+            "inf",
+        ] {
+            assert!(parse_exact(bad).is_err(), "{bad} should be rejected");
+        }
+        let msg = parse_exact("1e999999999").unwrap_err().to_string();
+        assert!(msg.contains("too large"), "{msg}");
+    }
+
+    #[test]
+    fn f64_to_rational_is_exact() {
+        let r = BigRational::from_f64(0.1).unwrap();
+        assert_ne!(r, q(1, 10));
+        assert_eq!(r, BigRational::new(3602879701896397u64.into(), (1u64 << 55).into()));
+        assert!(BigRational::from_f64(f64::NAN).is_err());
+        assert!(BigRational::from_f64(f64::INFINITY).is_err());
+        assert_eq!(Scalar::to_f64(&r), 0.1);
+    }
+
+    #[test]
+    fn division_by_zero_is_an_error_for_every_scalar() {
+        assert!(1.0f64.checked_div(&0.0).is_err());
+        assert!(q(1, 2).checked_div(&q(0, 1)).is_err());
+        assert_eq!(q(1, 2).checked_div(&q(1, 4)).unwrap(), q(2, 1));
+    }
+
+    #[test]
+    fn huge_rational_does_not_become_infinite_float() {
+        let huge = parse_exact("1e400").unwrap();
+        assert!(f64::from_rational(&huge).is_err());
+    }
+
+    #[test]
+    fn powi_matches_repeated_multiplication() {
+        assert_eq!(q(2, 3).powi(5), q(32, 243));
+        assert_eq!(q(2, 3).powi(0), q(1, 1));
+        assert_eq!(3.0f64.powi(4), 81.0);
+    }
+}
