@@ -26,10 +26,19 @@
 pub mod bernstein;
 pub mod curve;
 pub mod error;
+pub mod fit;
 pub mod hull;
+pub mod input;
 pub mod linalg;
+pub mod oracle;
 pub mod point;
+pub mod quadratic;
+pub mod rational;
 pub mod scalar;
+#[cfg(feature = "strategies")]
+pub mod strategies;
+pub mod surface;
+pub mod verify;
 
 pub use curve::{BezierCurve, DeCasteljauScheme, ElevationDistance};
 pub use error::{Error, Result, MAX_DEGREE, MAX_DIMENSION};
@@ -37,3 +46,15 @@ pub use num_bigint::BigInt;
 pub use num_rational::BigRational;
 pub use point::{AffineMap, Point, Vector};
 pub use scalar::{RefOps, Scalar};
+
+// Re-exports of the later modules, one block each so that their work merges cleanly.
+
+// --- rational curves, conics, quadratic irrationals (issue 3)
+
+// --- surfaces (issue 4)
+
+// --- fitting (issue 5)
+
+// --- verification (issue 6)
+
+// --- end of re-exports

@@ -1,0 +1,2 @@
+//! (stub; filled by its issue)
+fn main() {}

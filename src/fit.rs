@@ -1,0 +1,1 @@
+//! (stub: fit — filled by its issue)

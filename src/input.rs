@@ -1,0 +1,1 @@
+//! (stub: input — filled by its issue)

@@ -1,0 +1,1 @@
+//! (stub: oracle — filled by its issue)

@@ -1,0 +1,1 @@
+//! (stub: quadratic — filled by its issue)

@@ -1,0 +1,1 @@
+//! (stub: rational — filled by its issue)

@@ -1,0 +1,1 @@
+//! (stub: strategies — filled by its issue)

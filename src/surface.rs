@@ -1,0 +1,1 @@
+//! (stub: surface — filled by its issue)

@@ -1,0 +1,1 @@
+//! (stub: verify — filled by its issue)
