@@ -55,7 +55,9 @@ pub fn parse_number(text: &str) -> Result<BigRational> {
 pub fn parse_count(text: &str, what: &str) -> Result<usize> {
     let s = text.trim();
     if s.is_empty() || !s.bytes().all(|b| b.is_ascii_digit()) {
-        return Err(Error::Parse(format!("{what} must be a non-negative integer, got '{text}'")));
+        return Err(Error::Parse(format!(
+            "{what} must be a non-negative integer, got '{text}'"
+        )));
     }
     s.parse::<usize>().map_err(|_| Error::TooLarge {
         what: "count",
@@ -79,7 +81,9 @@ pub fn parse_point(text: &str) -> Result<Point<BigRational>> {
         _ => return Err(Error::Parse(format!("unbalanced parentheses in point '{s}'"))),
     };
     if inner.trim().is_empty() {
-        return Err(Error::Parse("empty point (write its coordinates separated by ',')".into()));
+        return Err(Error::Parse(
+            "empty point (write its coordinates separated by ',')".into(),
+        ));
     }
     let parts: Vec<&str> = inner.split(',').collect();
     if parts.len() > MAX_DIMENSION {
@@ -273,9 +277,12 @@ pub fn points_from_json(v: &Value, max: usize) -> Result<Vec<Point<BigRational>>
 /// A rectangular control net from JSON: an array of rows, each an array of points; at most
 /// `max` points per row and `max` rows.
 pub fn net_from_json(v: &Value, max: usize) -> Result<Vec<Vec<Point<BigRational>>>> {
-    let rows = v
-        .as_array()
-        .ok_or_else(|| Error::Parse(format!("expected a net (an array of rows of points), got {}", describe(v))))?;
+    let rows = v.as_array().ok_or_else(|| {
+        Error::Parse(format!(
+            "expected a net (an array of rows of points), got {}",
+            describe(v)
+        ))
+    })?;
     if rows.len() > max {
         return Err(Error::TooLarge {
             what: "number of net rows",
@@ -378,7 +385,11 @@ mod tests {
     #[test]
     fn text_errors_say_where() {
         let msg = |s: &str| parse_points(s).unwrap_err().to_string();
-        assert!(msg("0,0; 1,abc").contains("point 1: coordinate 1"), "{}", msg("0,0; 1,abc"));
+        assert!(
+            msg("0,0; 1,abc").contains("point 1: coordinate 1"),
+            "{}",
+            msg("0,0; 1,abc")
+        );
         assert!(msg("0,0; 1/0,1").contains("zero denominator"));
         assert!(msg("0,0; 1,2,3").contains("dimension mismatch"));
         assert!(msg("0,0;;1,1").contains("point 1: empty point"));
@@ -396,12 +407,22 @@ mod tests {
         assert_eq!(number_from_json(&json!("-4/6")).unwrap(), q(-2, 3));
         assert_eq!(number_from_json(&json!("1e-3")).unwrap(), q(1, 1000));
         assert_eq!(number_from_json(&json!(-7)).unwrap(), q(-7, 1));
-        assert_eq!(number_from_json(&json!(u64::MAX)).unwrap(), BigRational::from_integer(u64::MAX.into()));
+        assert_eq!(
+            number_from_json(&json!(u64::MAX)).unwrap(),
+            BigRational::from_integer(u64::MAX.into())
+        );
         assert_eq!(number_from_json(&json!(0.375)).unwrap(), q(3, 8));
         let tenth = number_from_json(&json!(0.1)).unwrap();
         assert_eq!(tenth, <BigRational as Scalar>::from_f64(0.1).unwrap());
         assert_ne!(tenth, q(1, 10));
-        for bad in [json!("1/0"), json!("abc"), json!("1e999999999"), json!(null), json!([1]), json!(true)] {
+        for bad in [
+            json!("1/0"),
+            json!("abc"),
+            json!("1e999999999"),
+            json!(null),
+            json!([1]),
+            json!(true),
+        ] {
             assert!(number_from_json(&bad).is_err(), "{bad}");
         }
     }

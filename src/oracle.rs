@@ -56,7 +56,7 @@
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::input::{
-    count_from_json, describe, in_context, number_from_json, number_to_json, numbers_from_json, point_to_json,
+    count_from_json, describe, format_points, in_context, number_from_json, numbers_from_json, point_to_json,
     points_from_json, points_to_json,
 };
 use crate::point::Point;
@@ -193,6 +193,19 @@ impl Answer {
         }
         m
     }
+
+    /// The answer as text for people, in exact fractions; lists of points are written so
+    /// that [`crate::input::parse_points`] reads them back.
+    pub fn to_text(&self) -> String {
+        match self {
+            Answer::Point { point, .. } => point.to_string(),
+            Answer::Points(p) => format_points(p),
+            Answer::Vector(v) => v.to_string(),
+            Answer::Split { left, right } => {
+                format!("left:  {}\nright: {}", format_points(left), format_points(right))
+            }
+        }
+    }
 }
 
 fn bits(r: &BigRational) -> f64 {
@@ -201,11 +214,7 @@ fn bits(r: &BigRational) -> f64 {
 
 /// How many bits each de Casteljau level adds when the parameter is `t`.
 fn growth_bits(t: &BigRational) -> f64 {
-    r_max(t.numer().bits(), t.denom().bits()) as f64
-}
-
-fn r_max(a: u64, b: u64) -> u64 {
-    a.max(b)
+    t.numer().bits().max(t.denom().bits()) as f64
 }
 
 fn max_bits<'a>(numbers: impl IntoIterator<Item = &'a BigRational>) -> f64 {
@@ -224,7 +233,7 @@ fn den_growth<'a>(numbers: impl IntoIterator<Item = &'a BigRational>) -> f64 {
     for r in numbers {
         let d = r.denom();
         most = most.max(d.bits());
-        dyadic &= d.trailing_zeros().map_or(true, |z| z + 1 == d.bits());
+        dyadic &= d.trailing_zeros().is_none_or(|z| z + 1 == d.bits());
     }
     if dyadic {
         0.0
@@ -290,7 +299,9 @@ impl Op {
                     (k.max(1) * (n + 1)) as f64 * curve.dim() as f64 * op_cost(curve_bits(curve), shared, mixed);
                 let b = curve_bits(curve) + shared + mixed;
                 let level = curve_den_growth(curve);
-                diffs + at.as_ref().map_or(0.0, |t| triangle_work(n - k, curve.dim(), b, growth_bits(t), level))
+                diffs
+                    + at.as_ref()
+                        .map_or(0.0, |t| triangle_work(n - k, curve.dim(), b, growth_bits(t), level))
             }
             Op::ToBezier { power } => {
                 let n = power.first().map_or(0, |c| c.len().saturating_sub(1));
@@ -348,7 +359,8 @@ impl Op {
             }
         }
         let work = self.work();
-        if !(work <= MAX_WORK) {
+        // NaN cannot arise (finite sums of squares), but would be refused too
+        if work.is_nan() || work > MAX_WORK {
             return Err(Error::TooLarge {
                 what: "request (estimated exact work)",
                 value: format!("{work:.2e}"),
@@ -374,7 +386,12 @@ impl Op {
                                 context: "field 'approx'".into(),
                             });
                         }
-                        Some(a.iter().zip(point.coords()).map(|(a, x)| ulp_error(*a, x)).collect::<Result<_>>()?)
+                        Some(
+                            a.iter()
+                                .zip(point.coords())
+                                .map(|(a, x)| ulp_error(*a, x))
+                                .collect::<Result<_>>()?,
+                        )
                     }
                 };
                 Answer::Point { point, ulps }
@@ -409,7 +426,12 @@ impl Op {
             .ok_or_else(|| Error::Parse(format!("a request must be a JSON object, got {}", describe(request))))?;
         let op = match obj.get("op") {
             Some(Value::String(s)) => s.as_str(),
-            Some(other) => return Err(Error::Parse(format!("field 'op' must be a string, got {}", describe(other)))),
+            Some(other) => {
+                return Err(Error::Parse(format!(
+                    "field 'op' must be a string, got {}",
+                    describe(other)
+                )))
+            }
             None => return Err(Error::Parse(format!("missing field 'op' (one of {})", OPS.join(", ")))),
         };
         let fields: &[&str] = match op {
@@ -426,7 +448,10 @@ impl Op {
                 )))
             }
         };
-        if let Some(k) = obj.keys().find(|k| *k != "op" && *k != "id" && !fields.contains(&k.as_str())) {
+        if let Some(k) = obj
+            .keys()
+            .find(|k| *k != "op" && *k != "id" && !fields.contains(&k.as_str()))
+        {
             return Err(Error::Parse(format!(
                 "unknown field {:?} for op '{op}' (its fields: {})",
                 truncate(k),
@@ -538,7 +563,10 @@ impl Fields<'_> {
 
 fn floats_from_json(v: &Value) -> Result<Vec<f64>> {
     let items = v.as_array().ok_or_else(|| {
-        Error::Parse(format!("expected an array of JSON numbers (one per coordinate), got {}", describe(v)))
+        Error::Parse(format!(
+            "expected an array of JSON numbers (one per coordinate), got {}",
+            describe(v)
+        ))
     })?;
     if items.len() > MAX_DIMENSION {
         return Err(too_large("dimension", items.len(), MAX_DIMENSION));
@@ -690,8 +718,9 @@ pub fn handle_line(line: &str) -> String {
     let outcome = std::panic::catch_unwind(|| respond(line));
     match outcome {
         Ok(v) => v.to_string(),
-        Err(_) => json!({"ok": false, "error": "internal error (a bug in casteljau: please report the request)"})
-            .to_string(),
+        Err(_) => {
+            json!({"ok": false, "error": "internal error (a bug in casteljau: please report the request)"}).to_string()
+        }
     }
 }
 
@@ -803,6 +832,7 @@ pub fn serve<R: BufRead, W: Write>(mut reader: R, mut writer: W) -> io::Result<(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::input::number_to_json;
     use crate::scalar::parse_exact;
     use proptest::prelude::*;
 
@@ -825,7 +855,10 @@ mod tests {
     #[test]
     fn every_op_answers() {
         let r = ask(r#"{"op":"elevate","points":[[0,0],[1,2],[2,0]],"by":1}"#);
-        assert_eq!(r["points"], json!([["0", "0"], ["2/3", "4/3"], ["4/3", "4/3"], ["2", "0"]]));
+        assert_eq!(
+            r["points"],
+            json!([["0", "0"], ["2/3", "4/3"], ["4/3", "4/3"], ["2", "0"]])
+        );
         let r = ask(r#"{"op":"split","points":[[0],[1],[3]],"t":"1/2"}"#);
         assert_eq!(r["left"], json!([["0"], ["1/2"], ["5/4"]]));
         assert_eq!(r["right"], json!([["5/4"], ["2"], ["3"]]));
@@ -852,7 +885,10 @@ mod tests {
             (r#"{"op":"frobnicate"}"#, "unknown op"),
             (r#"{"op":7}"#, "'op' must be a string"),
             (r#"{"op":"eval","points":[[0]]}"#, "needs the field 't'"),
-            (r#"{"op":"eval","points":[[0]],"t":0,"aprox":[0.5]}"#, "unknown field \"aprox\""),
+            (
+                r#"{"op":"eval","points":[[0]],"t":0,"aprox":[0.5]}"#,
+                "unknown field \"aprox\"",
+            ),
             (r#"{"op":"eval","points":[],"t":0}"#, "empty"),
             (r#"{"op":"eval","points":[[0,0],[1]],"t":0}"#, "dimension mismatch"),
             (r#"{"op":"eval","points":[[0]],"t":"1/0"}"#, "zero denominator"),
@@ -861,9 +897,18 @@ mod tests {
             (r#"{"op":"eval","points":[[0]],"t":"1e999999999"}"#, "too large"),
             (r#"{"op":"eval","points":[[0]],"t":null}"#, "field 't'"),
             (r#"{"op":"eval","points":"0,0","t":0}"#, "field 'points'"),
-            (r#"{"op":"eval","points":[[0]],"t":0,"approx":[1,2]}"#, "dimension mismatch"),
-            (r#"{"op":"eval","points":[[0]],"t":0,"approx":["0.5"]}"#, "must be a JSON number"),
-            (r#"{"op":"elevate","points":[[0]],"by":1000000000000}"#, "degree after elevation is too large"),
+            (
+                r#"{"op":"eval","points":[[0]],"t":0,"approx":[1,2]}"#,
+                "dimension mismatch",
+            ),
+            (
+                r#"{"op":"eval","points":[[0]],"t":0,"approx":["0.5"]}"#,
+                "must be a JSON number",
+            ),
+            (
+                r#"{"op":"elevate","points":[[0]],"by":1000000000000}"#,
+                "degree after elevation is too large",
+            ),
             (r#"{"op":"elevate","points":[[0]],"by":-1}"#, "non-negative integer"),
             (r#"{"op":"elevate","points":[[0]],"by":"x"}"#, "non-negative integer"),
             (r#"{"op":"derivative","points":[[0],[1]],"order":2}"#, "order 2"),
@@ -883,7 +928,10 @@ mod tests {
     fn huge_requests_are_refused_quickly() {
         let many: Vec<Value> = (0..5000).map(|i| json!([i])).collect();
         let r = ask(&json!({"op": "eval", "points": many, "t": "1/3"}).to_string());
-        assert!(r["error"].as_str().unwrap().contains("number of points is too large"), "{r}");
+        assert!(
+            r["error"].as_str().unwrap().contains("number of points is too large"),
+            "{r}"
+        );
         let wide: Vec<Value> = (0..65).map(|i| json!(i)).collect();
         let r = ask(&json!({"op": "eval", "points": [wide], "t": 0}).to_string());
         assert!(r["error"].as_str().unwrap().contains("dimension is too large"), "{r}");
@@ -911,7 +959,11 @@ mod tests {
         ] {
             assert_eq!(nearest_f64(&q(s)).to_bits(), s.parse::<f64>().unwrap().to_bits(), "{s}");
             let neg = format!("-{s}");
-            assert_eq!(nearest_f64(&q(&neg)).to_bits(), neg.parse::<f64>().unwrap().to_bits(), "{neg}");
+            assert_eq!(
+                nearest_f64(&q(&neg)).to_bits(),
+                neg.parse::<f64>().unwrap().to_bits(),
+                "{neg}"
+            );
         }
         assert_eq!(nearest_f64(&q("1/3")), 1.0 / 3.0);
         assert_eq!(nearest_f64(&q("-2/3")), -2.0 / 3.0);
