@@ -54,6 +54,10 @@ pub use scalar::{RefOps, Scalar};
 // --- surfaces (issue 4)
 
 // --- fitting (issue 5)
+pub use fit::{
+    fit_cubic, fit_cubic_closed_form, fit_cubic_to, fit_least_squares, CubicFit, CubicFitData, CubicFitSource,
+    FitConstraints, LeastSquaresFit,
+};
 
 // --- verification (issue 6)
 
