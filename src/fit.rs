@@ -168,7 +168,13 @@ where
             .collect();
         let deriv: Vec<Vec<T>> = per_coord
             .iter()
-            .map(|c| c.iter().enumerate().skip(1).map(|(i, a)| &T::from_usize(i) * a).collect())
+            .map(|c| {
+                c.iter()
+                    .enumerate()
+                    .skip(1)
+                    .map(|(i, a)| &T::from_usize(i) * a)
+                    .collect()
+            })
             .collect();
         let at = |polys: &[Vec<T>], t: &T| Point::new(polys.iter().map(|p| eval_power(p, t)).collect());
         Self::new(
@@ -182,10 +188,7 @@ where
 
     /// The data of any curve given by two functions: `x(t)` and `ẋ(t)`, each called at the
     /// parameters it needs (`0`, `1/2`, `1` and `0`, `1`).
-    pub fn from_functions(
-        x: impl Fn(&T) -> Result<Point<T>>,
-        dx: impl Fn(&T) -> Result<Vector<T>>,
-    ) -> Result<Self> {
+    pub fn from_functions(x: impl Fn(&T) -> Result<Point<T>>, dx: impl Fn(&T) -> Result<Vector<T>>) -> Result<Self> {
         let (zero, one, half) = (T::zero(), T::one(), T::from_ratio(1, 2)?);
         Self::new(x(&zero)?, x(&one)?, x(&half)?, dx(&zero)?, dx(&one)?)
     }
@@ -665,7 +668,11 @@ where
             &[(0, &c.start_point), (degree, &c.end_point)]
         };
         for &(i, fixed) in ends {
-            let fixed = if degree == 0 { fixed.as_ref().or(c.end_point.as_ref()) } else { fixed.as_ref() };
+            let fixed = if degree == 0 {
+                fixed.as_ref().or(c.end_point.as_ref())
+            } else {
+                fixed.as_ref()
+            };
             match fixed {
                 Some(p) => d.fixed[i] = p.clone(),
                 None => d.add_vector_unknown(i),
@@ -699,7 +706,8 @@ where
             .collect();
         self.vector_terms.extend(inherited);
         self.scalar_terms.push((i, self.directions.len(), sign));
-        self.directions.push(dir.expect("tie is called only for a given direction"));
+        self.directions
+            .push(dir.expect("tie is called only for a given direction"));
         self.scalar_names.push(name);
     }
 
@@ -840,7 +848,11 @@ where
         return Err(Error::Singular(format!(
             "under-determined: {m} samples cannot determine {nv} free control points{} of a degree-{degree} curve \
              ({} scalar unknowns, {} scalar equations); give more samples or lower the degree",
-            if ns > 0 { format!(" and {ns} direction scales") } else { String::new() },
+            if ns > 0 {
+                format!(" and {ns} direction scales")
+            } else {
+                String::new()
+            },
             nv * dim + ns,
             m * dim
         )));
@@ -905,7 +917,10 @@ where
             .map(|v| r_v[v].coords().iter().chain(&g_vs[v]).cloned().collect())
             .collect();
         let x = solve_many(&g_vv, &rhs).map_err(singular)?;
-        let x_r = x.iter().map(|row| Point::new(row[..dim].to_vec())).collect::<Result<_>>()?;
+        let x_r = x
+            .iter()
+            .map(|row| Point::new(row[..dim].to_vec()))
+            .collect::<Result<_>>()?;
         let x_psi = x.iter().map(|row| row[dim..].to_vec()).collect();
         (x_r, x_psi)
     } else {
@@ -1089,7 +1104,10 @@ pub fn chord_length_params_via_f64<T: Scalar>(samples: &[Point<T>]) -> Result<Ve
 where
     for<'a> &'a T: RefOps<T>,
 {
-    let floats: Vec<Point<f64>> = samples.iter().map(|p| Point::<f64>::new(p.to_f64())).collect::<Result<_>>()?;
+    let floats: Vec<Point<f64>> = samples
+        .iter()
+        .map(|p| Point::<f64>::new(p.to_f64()))
+        .collect::<Result<_>>()?;
     chord_length_params(&floats)?.into_iter().map(T::from_f64).collect()
 }
 
@@ -1105,14 +1123,31 @@ mod tests {
 
     #[test]
     fn zero_and_parallel_tangents_are_clear_errors() {
-        let data = CubicFitData::new(p(&[0, 0, 0]), p(&[1, 0, 0]), p(&[0, 1, 1]), p(&[0, 0, 0]), p(&[1, 1, 0])).unwrap();
+        let data = CubicFitData::new(
+            p(&[0, 0, 0]),
+            p(&[1, 0, 0]),
+            p(&[0, 1, 1]),
+            p(&[0, 0, 0]),
+            p(&[1, 1, 0]),
+        )
+        .unwrap();
         let err = fit_cubic(&data).unwrap_err();
         assert!(matches!(err, Error::Singular(_)));
         assert!(err.to_string().contains("zero vector"), "{err}");
-        let data = CubicFitData::new(p(&[0, 0, 0]), p(&[1, 0, 0]), p(&[0, 1, 1]), p(&[1, 2, 3]), p(&[-2, -4, -6])).unwrap();
+        let data = CubicFitData::new(
+            p(&[0, 0, 0]),
+            p(&[1, 0, 0]),
+            p(&[0, 1, 1]),
+            p(&[1, 2, 3]),
+            p(&[-2, -4, -6]),
+        )
+        .unwrap();
         let err = fit_cubic(&data).unwrap_err();
         assert!(err.to_string().contains("parallel"), "{err}");
-        assert!(fit_cubic_closed_form(&data).unwrap_err().to_string().contains("parallel"));
+        assert!(fit_cubic_closed_form(&data)
+            .unwrap_err()
+            .to_string()
+            .contains("parallel"));
     }
 
     #[test]
@@ -1130,12 +1165,18 @@ mod tests {
         let y = vec![p(&[0, 0]), p(&[1, 1]), p(&[2, 0]), p(&[3, 1])];
         let t: Vec<Q> = uniform_params(4).unwrap();
         let both = FitConstraints::endpoints_and_directions(p(&[0, 0]), p(&[3, 1]), p(&[1, 0]), p(&[1, 0]));
-        assert!(fit_least_squares(&y, &t, 2, &both).unwrap_err().to_string().contains("degree at least 3"));
+        assert!(fit_least_squares(&y, &t, 2, &both)
+            .unwrap_err()
+            .to_string()
+            .contains("degree at least 3"));
         let zero_dir = FitConstraints {
             start_direction: Some(p(&[0, 0])),
             ..FitConstraints::none()
         };
-        assert!(fit_least_squares(&y, &t, 3, &zero_dir).unwrap_err().to_string().contains("zero vector"));
+        assert!(fit_least_squares(&y, &t, 3, &zero_dir)
+            .unwrap_err()
+            .to_string()
+            .contains("zero vector"));
         let wrong_dim = FitConstraints::endpoints(p(&[0, 0, 0]), p(&[1, 1, 1]));
         assert!(matches!(
             fit_least_squares(&y, &t, 3, &wrong_dim),
@@ -1163,6 +1204,9 @@ mod tests {
         assert!(chord_length_params(&same).is_err());
         assert_eq!(chord_length_params(&y[..1]).unwrap(), vec![0.0]);
         let exact: Vec<Point<Q>> = vec![p(&[0, 0]), p(&[3, 4]), p(&[3, 9])];
-        assert_eq!(chord_length_params_via_f64(&exact).unwrap()[1], Q::from_ratio(1, 2).unwrap());
+        assert_eq!(
+            chord_length_params_via_f64(&exact).unwrap()[1],
+            Q::from_ratio(1, 2).unwrap()
+        );
     }
 }

@@ -189,7 +189,9 @@ where
     for<'a> &'a T: RefOps<T>,
 {
     let cols = check_rectangular(a, "transpose")?;
-    Ok((0..cols).map(|j| a.iter().map(|row| row[j].clone()).collect()).collect())
+    Ok((0..cols)
+        .map(|j| a.iter().map(|row| row[j].clone()).collect())
+        .collect())
 }
 
 /// The product `a b`; the inner dimensions must agree.
@@ -206,8 +208,7 @@ where
             context: "matrix product: rows of the right factor must equal columns of the left".into(),
         });
     }
-    Ok(a
-        .iter()
+    Ok(a.iter()
         .map(|row| {
             (0..cols)
                 .map(|j| {
@@ -235,8 +236,7 @@ where
             context: "matrix-vector product: vector length must equal the number of columns".into(),
         });
     }
-    Ok(a
-        .iter()
+    Ok(a.iter()
         .map(|row| {
             let mut acc = T::zero();
             for (u, v) in row.iter().zip(x) {
@@ -273,7 +273,11 @@ where
         });
     }
     let r = check_rectangular(b, "right-hand sides")?;
-    let mut m: Matrix<T> = a.iter().zip(b).map(|(row, rhs)| row.iter().chain(rhs).cloned().collect()).collect();
+    let mut m: Matrix<T> = a
+        .iter()
+        .zip(b)
+        .map(|(row, rhs)| row.iter().chain(rhs).cloned().collect())
+        .collect();
     let pivots = row_reduce(&mut m)?;
     // The first n columns are the matrix: full rank means pivots 0..n, in order.
     if pivots.len() < n || pivots[n - 1] != n - 1 {

@@ -47,7 +47,13 @@ fn gram_det(d: &CubicFitData<Q>) -> Q {
 
 /// The quartic space curve x(t) = (t, 1 + t², t⁴) of the worked example below.
 fn quartic() -> CubicFitData<Q> {
-    let coeffs = vec![p(&[0, 1, 0]), p(&[1, 0, 0]), p(&[0, 1, 0]), p(&[0, 0, 0]), p(&[0, 0, 1])];
+    let coeffs = vec![
+        p(&[0, 1, 0]),
+        p(&[1, 0, 0]),
+        p(&[0, 1, 0]),
+        p(&[0, 0, 0]),
+        p(&[0, 0, 1]),
+    ];
     CubicFitData::from_power(&coeffs).unwrap()
 }
 
@@ -155,7 +161,7 @@ proptest! {
         let det = gram_det(&d);
         prop_assert_eq!(&determinant(&g).unwrap(), &det);
         if !det.is_zero() {
-            let adj = vec![vec![g[1][1].clone(), -&g[0][1]], vec![-&g[1][0], g[0][0].clone()]];
+            let adj = [vec![g[1][1].clone(), -&g[0][1]], vec![-&g[1][0], g[0][0].clone()]];
             let by_adj: Vec<Vec<Q>> = adj.iter().map(|r| r.iter().map(|a| a.checked_div(&det).unwrap()).collect()).collect();
             prop_assert_eq!(by_adj, inverse(&g).unwrap());
         }
@@ -233,7 +239,7 @@ proptest! {
             return Ok(());
         }
         let exact = fit_cubic(&d).unwrap();
-        let to_f = |p: &Point<Q>| p.try_map(|c| f64::from_rational(c)).unwrap();
+        let to_f = |p: &Point<Q>| p.try_map(f64::from_rational).unwrap();
         let df = CubicFitData::new(to_f(&d.x0), to_f(&d.x1), to_f(&d.xh), to_f(&d.d0), to_f(&d.d1)).unwrap();
         let float = fit_cubic(&df).unwrap();
         prop_assert!(float.k.approx_eq(&exact.k.to_f64(), 1e-9), "{} vs {}", float.k, exact.k);
@@ -279,7 +285,14 @@ fn printed_equations_8_and_10_fail_corrected_hold() {
     // And the printed version is not even translation invariant, while δ² is: moving the
     // curve by (0, 5, 0) changes the printed solution but not the true one.
     let shift = p(&[0, 5, 0]);
-    let moved = CubicFitData::new(d.x0.add(&shift), d.x1.add(&shift), d.xh.add(&shift), d.d0.clone(), d.d1.clone()).unwrap();
+    let moved = CubicFitData::new(
+        d.x0.add(&shift),
+        d.x1.add(&shift),
+        d.xh.add(&shift),
+        d.d0.clone(),
+        d.d1.clone(),
+    )
+    .unwrap();
     assert_eq!(fit_cubic(&moved).unwrap().k, fit.k);
     let printed_moved = solve(&m, &[x.dot(&moved.x0), x.dot(&moved.x1)]).unwrap();
     assert_ne!(printed_moved, printed);
@@ -289,17 +302,35 @@ fn printed_equations_8_and_10_fail_corrected_hold() {
 fn negative_tangent_lengths_are_flagged() {
     // With orthonormal tangents, k = −4/3 X·ẋ(0) and l = 4/3 X·ẋ(1).
     // x(1/2) = (10, −3, 1): X = (−19, 6, −2), k = 76/3, l = 8: as the text assumes.
-    let d = CubicFitData::new(p(&[0, 0, 0]), p(&[1, 0, 0]), p(&[10, -3, 1]), p(&[1, 0, 0]), p(&[0, 1, 0])).unwrap();
+    let d = CubicFitData::new(
+        p(&[0, 0, 0]),
+        p(&[1, 0, 0]),
+        p(&[10, -3, 1]),
+        p(&[1, 0, 0]),
+        p(&[0, 1, 0]),
+    )
+    .unwrap();
     let fit = fit_cubic(&d).unwrap();
     assert_eq!((fit.k.clone(), fit.l.clone()), (q(76, 3), q(8, 1)));
     assert!(fit.warnings.is_empty());
     // x(1/2) = (−10, −3, 1): X = (21, 6, −2), k = −28 < 0: flagged.
-    let d = CubicFitData::new(p(&[0, 0, 0]), p(&[1, 0, 0]), p(&[-10, -3, 1]), p(&[1, 0, 0]), p(&[0, 1, 0])).unwrap();
+    let d = CubicFitData::new(
+        p(&[0, 0, 0]),
+        p(&[1, 0, 0]),
+        p(&[-10, -3, 1]),
+        p(&[1, 0, 0]),
+        p(&[0, 1, 0]),
+    )
+    .unwrap();
     let fit = fit_cubic(&d).unwrap();
     assert_eq!((fit.k.clone(), fit.l.clone()), (q(-28, 1), q(8, 1)));
     assert!(!fit.tangent_lengths_positive());
     assert_eq!(fit.warnings.len(), 1);
-    assert!(fit.warnings[0].contains("k = ") && fit.warnings[0].contains("assumes k > 0"), "{:?}", fit.warnings);
+    assert!(
+        fit.warnings[0].contains("k = ") && fit.warnings[0].contains("assumes k > 0"),
+        "{:?}",
+        fit.warnings
+    );
 }
 
 #[test]
@@ -314,7 +345,11 @@ fn float_nearly_parallel_tangents_are_flagged() {
     )
     .unwrap();
     let fit = fit_cubic(&d).unwrap();
-    assert!(fit.warnings.iter().any(|w| w.contains("nearly parallel")), "{:?}", fit.warnings);
+    assert!(
+        fit.warnings.iter().any(|w| w.contains("nearly parallel")),
+        "{:?}",
+        fit.warnings
+    );
 }
 
 // ---- least squares --------------------------------------------------------------------------
@@ -438,7 +473,7 @@ proptest! {
         let spread = &t[t.len() - 1] - &t[0];
         prop_assume!(spread >= q(1, 2));
         let exact = fit_least_squares(&y, &t, degree, &FitConstraints::none()).unwrap();
-        let yf: Vec<Point<f64>> = y.iter().map(|p| p.try_map(|c| f64::from_rational(c)).unwrap()).collect();
+        let yf: Vec<Point<f64>> = y.iter().map(|p| p.try_map(f64::from_rational).unwrap()).collect();
         let tf: Vec<f64> = t.iter().map(Scalar::to_f64).collect();
         let float = fit_least_squares(&yf, &tf, degree, &FitConstraints::none()).unwrap();
         for (a, b) in float.curve.points().iter().zip(exact.curve.points()) {
@@ -461,7 +496,10 @@ fn under_determined_and_repeated_parameters_are_errors() {
     // t = 0, 1/2, 1, where only t = 1/2 sees a1 and a2 (B_1 and B_2 vanish at the ends).
     let cons = FitConstraints::endpoints(p(&[0, 0]), p(&[2, 0]));
     let err = fit_least_squares(&y, &t, 3, &cons).unwrap_err();
-    assert!(matches!(err, Error::Singular(_)) && err.to_string().contains("normal equations"), "{err}");
+    assert!(
+        matches!(err, Error::Singular(_)) && err.to_string().contains("normal equations"),
+        "{err}"
+    );
     let inner = vec![q(1, 4), q(1, 2), q(3, 4)];
     let fit = fit_least_squares(&y, &inner, 3, &cons).unwrap();
     assert!(fit.gradient.iter().all(Scalar::is_zero));
