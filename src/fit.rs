@@ -206,8 +206,7 @@ where
     /// If the five vectors differ in dimension (a programming error, as in [`Point`]
     /// arithmetic; [`CubicFitData::validate`] checks it).
     pub fn normal_equations(&self) -> (Matrix<T>, Vec<T>) {
-        let three_quarters = T::from_rational(&num_rational::BigRational::new(3.into(), 4.into()))
-            .expect("3/4 is representable in every scalar");
+        let three_quarters = T::from_ratio(3, 4).expect("3/4 is representable in every scalar");
         let g = self.gram();
         let matrix = g
             .iter()
@@ -319,9 +318,15 @@ where
         );
     }
     format!(
-        "the end tangents x'(0) = {} and x'(1) = {} are parallel, so the Gram matrix in (11)/(12) has determinant 0 \
+        "the end tangents x'(0) = {} and x'(1) = {} are parallel{}, so the Gram matrix in (11)/(12) has determinant 0 \
          and k, l are not unique (text 004 needs independent end tangents)",
-        data.d0, data.d1
+        data.d0,
+        data.d1,
+        if T::EXACT {
+            ""
+        } else {
+            " (numerically, in floating point)"
+        }
     )
 }
 
@@ -889,7 +894,8 @@ where
             if fv.is_zero() {
                 continue;
             }
-            for (w, fw) in phi.iter().enumerate() {
+            // Symmetric: the upper triangle now, mirrored below after the loop.
+            for (w, fw) in phi.iter().enumerate().skip(v) {
                 g_vv[v][w] += &(fv * fw);
             }
             for (s, fs) in psi.iter().enumerate() {
@@ -902,6 +908,11 @@ where
                 g_ss[s][s2] += &(fs * fs2);
             }
             r_s[s] += &(fs * &design.directions[s].dot(&target));
+        }
+    }
+    for v in 0..nv {
+        for w in 0..v {
+            g_vv[v][w] = g_vv[w][v].clone();
         }
     }
     let singular = |e: Error| match e {

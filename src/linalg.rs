@@ -372,6 +372,11 @@ where
         }
         prev = m[k][k].clone();
     }
+    if !T::EXACT && !prev.to_f64().is_finite() {
+        return Err(Error::NotFinite(format!(
+            "the determinant of a {n}×{n} float matrix overflowed; use exact scalars"
+        )));
+    }
     Ok(if negate { -prev } else { prev })
 }
 

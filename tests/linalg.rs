@@ -96,3 +96,9 @@ fn bad_shapes_are_errors() {
     // Under-determined: 1 equation, 2 unknowns.
     assert!(solve(&[vec![q(1), q(1)]], &[q(2)]).is_err());
 }
+
+#[test]
+fn float_overflow_is_an_error_not_infinity() {
+    let a = vec![vec![1e200, 0.0], vec![0.0, 1e200]];
+    assert!(matches!(determinant(&a), Err(Error::NotFinite(_))));
+}
