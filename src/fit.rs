@@ -910,9 +910,10 @@ where
             r_s[s] += &(fs * &design.directions[s].dot(&target));
         }
     }
-    for v in 0..nv {
-        for w in 0..v {
-            g_vv[v][w] = g_vv[w][v].clone();
+    for v in 1..nv {
+        let (upper, lower) = g_vv.split_at_mut(v);
+        for (w, row) in upper.iter().enumerate() {
+            lower[0][w] = row[v].clone();
         }
     }
     let singular = |e: Error| match e {
