@@ -238,38 +238,39 @@ where
     /// reduced at `u` (giving the control points of the `u = u0` curve), then that curve is
     /// evaluated at `v`. Defined for every `(u, v)`, not only the unit square.
     pub fn eval(&self, u: &T, v: &T) -> Point<T> {
-        let (m, n) = self.degrees();
         let dim = self.dim();
-        let mut column = Vec::with_capacity((m + 1) * dim);
-        let mut mid = Vec::with_capacity((n + 1) * dim);
-        for j in 0..=n {
-            column.clear();
-            column.extend(self.net.iter().flat_map(|row| row[j].coords().iter().cloned()));
-            casteljau_in_place(&mut column, dim, u);
-            mid.extend_from_slice(&column[..dim]);
-        }
-        casteljau_in_place(&mut mid, dim, v);
-        mid.truncate(dim);
-        Point::new(mid).expect("dimension checked at construction")
+        // Row-major flat net: de Casteljau in u acts on whole rows at once (every column
+        // reduced in lockstep), leaving the control points of the u = u0 curve in row 0.
+        let mut buf: Vec<T> = self
+            .net
+            .iter()
+            .flatten()
+            .flat_map(|p| p.coords().iter().cloned())
+            .collect();
+        let row_len = buf.len() / self.net.len();
+        casteljau_in_place(&mut buf, row_len, u);
+        buf.truncate(row_len);
+        casteljau_in_place(&mut buf, dim, v);
+        buf.truncate(dim);
+        Point::new(buf).expect("dimension checked at construction")
     }
 
     /// `b(u, v)` by the tensor de Casteljau algorithm, `v` first: each row `b_{i,·}` is
     /// reduced at `v` (the control points of the `v = v0` curve of the text), then that curve
     /// is evaluated at `u`. Equal to [`Self::eval`] exactly for exact scalars.
     pub fn eval_v_first(&self, u: &T, v: &T) -> Point<T> {
-        let (m, n) = self.degrees();
         let dim = self.dim();
-        let mut row_buf = Vec::with_capacity((n + 1) * dim);
-        let mut mid = Vec::with_capacity((m + 1) * dim);
-        for row in &self.net {
-            row_buf.clear();
-            row_buf.extend(row.iter().flat_map(|p| p.coords().iter().cloned()));
-            casteljau_in_place(&mut row_buf, dim, v);
-            mid.extend_from_slice(&row_buf[..dim]);
-        }
-        casteljau_in_place(&mut mid, dim, u);
-        mid.truncate(dim);
-        Point::new(mid).expect("dimension checked at construction")
+        let (_, n) = self.degrees();
+        // Column-major flat net, so that de Casteljau in v acts on whole columns at once.
+        let mut buf: Vec<T> = (0..=n)
+            .flat_map(|j| self.net.iter().flat_map(move |row| row[j].coords().iter().cloned()))
+            .collect();
+        let col_len = buf.len() / (n + 1);
+        casteljau_in_place(&mut buf, col_len, v);
+        buf.truncate(col_len);
+        casteljau_in_place(&mut buf, dim, u);
+        buf.truncate(dim);
+        Point::new(buf).expect("dimension checked at construction")
     }
 
     /// `b(u, v) = Σ_i Σ_j b_{i,j} B_i^m(u) B_j^n(v)`, the double Bernstein sum.
@@ -644,17 +645,20 @@ where
     Ok((m, n, dim))
 }
 
-/// De Casteljau on a flat buffer of `len / dim` points; the result ends in `buf[..dim]`.
-fn casteljau_in_place<T: Scalar>(buf: &mut [T], dim: usize, t: &T)
+/// De Casteljau on a flat buffer of `buf.len() / block` "points" of `block` scalars each
+/// (a point's coordinates, or a whole row of a net); the result ends in `buf[..block]`.
+fn casteljau_in_place<T: Scalar>(buf: &mut [T], block: usize, t: &T)
 where
     for<'a> &'a T: RefOps<T>,
 {
-    let count = buf.len() / dim;
+    let count = buf.len() / block;
     for r in 1..count {
         for i in 0..count - r {
-            for k in 0..dim {
-                let d = &buf[(i + 1) * dim + k] - &buf[i * dim + k];
-                buf[i * dim + k] += &(t * &d);
+            // b_i ← b_i + t (b_{i+1} − b_i), the step of (1) in text 000
+            let (lo, hi) = buf.split_at_mut((i + 1) * block);
+            for (x, y) in lo[i * block..].iter_mut().zip(&hi[..block]) {
+                let d = y - &*x;
+                *x += &(t * &d);
             }
         }
     }
