@@ -202,6 +202,22 @@ fn bilinear_example_gives_u_v_uv_and_z_equals_xy() {
     assert_iso_curves(&s);
 }
 
+/// The text calls the bilinear patch through four distinct points a hyperbolic paraboloid;
+/// that needs the points not to be coplanar. Four distinct coplanar points give a planar patch.
+#[test]
+fn bilinear_patch_of_coplanar_points_is_planar() {
+    let s = S::bilinear(pt(&[0, 0, 0]), pt(&[0, 1, 0]), pt(&[1, 0, 0]), pt(&[2, 3, 0])).unwrap();
+    for u in params() {
+        for v in params() {
+            assert!(s.eval(&u, &v).coords()[2].is_zero());
+        }
+    }
+    // ... while the text's example, whose points are not coplanar, has the saddle z = xy:
+    // its mixed partial ∂²z/∂u∂v = 1 ≠ 0 everywhere.
+    let h = S::bilinear(pt(&[0, 0, 0]), pt(&[0, 1, 0]), pt(&[1, 0, 0]), pt(&[1, 1, 1])).unwrap();
+    assert_eq!(h.derivative(1, 1).unwrap().net(), &[vec![pt(&[0, 0, 1])]]);
+}
+
 /// The two-stage construction as printed uses `b_{1,0}^{(0,1)} = (1 − v) b_{1,0} + v b_{0,1}`;
 /// the bilinear formula needs `b_{1,1}` there. The printed version does not even pass through
 /// `b_{1,1}`; the corrected one reproduces the bilinear patch exactly.
