@@ -52,6 +52,7 @@ pub use scalar::{RefOps, Scalar};
 // --- rational curves, conics, quadratic irrationals (issue 3)
 
 // --- surfaces (issue 4)
+pub use surface::{enneper_net, BezierSurface, EnneperMatch};
 
 // --- fitting (issue 5)
 pub use fit::{
