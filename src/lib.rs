@@ -50,6 +50,8 @@ pub use scalar::{RefOps, Scalar};
 // Re-exports of the later modules, one block each so that their work merges cleanly.
 
 // --- rational curves, conics, quadratic irrationals (issue 3)
+pub use quadratic::QuadraticIrrational;
+
 
 // --- surfaces (issue 4)
 

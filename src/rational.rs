@@ -1,1 +1,1 @@
-//! (stub: rational — filled by its issue)
+//! Rational Bézier curves (stub in progress)
