@@ -51,6 +51,10 @@ pub use scalar::{RefOps, Scalar};
 
 // --- rational curves, conics, quadratic irrationals (issue 3)
 pub use quadratic::QuadraticIrrational;
+pub use rational::{
+    classify_conic, conic_arc_passes_infinity, conic_shape_factor, implicit_conic, ConicKind, ExactSqrt, ImplicitConic,
+    RationalBezierCurve,
+};
 
 
 // --- surfaces (issue 4)
