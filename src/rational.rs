@@ -702,18 +702,20 @@ where
         (0..6).all(|i| (i + 1..6).all(|j| &s[i] * &o[j] == &s[j] * &o[i]))
     }
 
-    /// [`Self::is_multiple_of`] for floats: both normalised by their largest coefficient
-    /// (with sign chosen to match), then compared within `tol`.
+    /// [`Self::is_multiple_of`] for floats: both divided by their coefficient at the index
+    /// where `self` is largest in magnitude, then compared coefficient by coefficient within
+    /// `tol`.
     pub fn approx_multiple_of(&self, other: &ImplicitConic<T>, tol: f64) -> bool {
-        let unit = |k: [T; 6]| -> Option<Vec<f64>> {
-            let v: Vec<f64> = k.iter().map(Scalar::to_f64).collect();
-            let m = v.iter().copied().fold(0.0f64, |m, x| if x.abs() > m.abs() { x } else { m });
-            (m != 0.0 && m.is_finite()).then(|| v.iter().map(|x| x / m).collect())
+        let s: Vec<f64> = self.coefficients().iter().map(Scalar::to_f64).collect();
+        let o: Vec<f64> = other.coefficients().iter().map(Scalar::to_f64).collect();
+        let Some(i) = (0..6).max_by(|&i, &j| s[i].abs().total_cmp(&s[j].abs())) else {
+            return false;
         };
-        match (unit(self.coefficients()), unit(other.coefficients())) {
-            (Some(s), Some(o)) => s.iter().zip(&o).all(|(x, y)| (x - y).abs() <= tol),
-            _ => false,
+        let (si, oi) = (s[i], o[i]);
+        if si == 0.0 || oi == 0.0 || !si.is_finite() || !oi.is_finite() {
+            return false;
         }
+        s.iter().zip(&o).all(|(x, y)| (x / si - y / oi).abs() <= tol)
     }
 }
 
