@@ -56,7 +56,6 @@ pub use rational::{
     RationalBezierCurve,
 };
 
-
 // --- surfaces (issue 4)
 
 // --- fitting (issue 5)

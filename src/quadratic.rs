@@ -185,11 +185,14 @@ impl QuadraticIrrational {
     /// ```
     pub fn sqrt_rational(r: &BigRational) -> Result<Self> {
         let pq: BigInt = r.numer() * r.denom();
-        let n = pq.to_i64().filter(|n| n.unsigned_abs() <= MAX_RADICAND as u64).ok_or_else(|| Error::TooLarge {
-            what: "radicand",
-            value: pq.to_string(),
-            limit: MAX_RADICAND.to_string(),
-        })?;
+        let n = pq
+            .to_i64()
+            .filter(|n| n.unsigned_abs() <= MAX_RADICAND as u64)
+            .ok_or_else(|| Error::TooLarge {
+                what: "radicand",
+                value: pq.to_string(),
+                limit: MAX_RADICAND.to_string(),
+            })?;
         let root = Self::sqrt(n)?;
         let inv_q = BigRational::new(1.into(), r.denom().clone());
         Ok(root.scale(&inv_q))
@@ -205,15 +208,19 @@ impl QuadraticIrrational {
     }
 
     fn normalized(a: BigRational, b: BigRational, d: i64) -> Self {
-        let field = if Zero::is_zero(&b) { Field::Rational } else { Field::Sqrt(d) };
+        let field = if Zero::is_zero(&b) {
+            Field::Rational
+        } else {
+            Field::Sqrt(d)
+        };
         QuadraticIrrational { a, b, field }
     }
 
-    fn poisoned(d: i64, e: i64) -> Self {
+    fn poisoned(field: Field) -> Self {
         QuadraticIrrational {
             a: q0(),
             b: q0(),
-            field: Field::Mixed(d, e),
+            field,
         }
     }
 
@@ -339,11 +346,12 @@ impl QuadraticIrrational {
         }
     }
 
-    fn combine(&self, other: &Self) -> std::result::Result<i64, Self> {
+    /// The radicand of `self ∘ other`, or the poisoned field when they cannot combine.
+    fn combine(&self, other: &Self) -> std::result::Result<i64, Field> {
         match (self.field, other.field) {
-            (Field::Mixed(..), _) => Err(self.clone()),
-            (_, Field::Mixed(..)) => Err(other.clone()),
-            (Field::Sqrt(d), Field::Sqrt(e)) if d != e => Err(Self::poisoned(d, e)),
+            (Field::Mixed(..), _) => Err(self.field),
+            (_, Field::Mixed(..)) => Err(other.field),
+            (Field::Sqrt(d), Field::Sqrt(e)) if d != e => Err(Field::Mixed(d, e)),
             (Field::Sqrt(d), _) | (_, Field::Sqrt(d)) => Ok(d),
             // Both rational: b = b' = 0, the radicand is never used.
             (Field::Rational, Field::Rational) => Ok(0),
@@ -353,14 +361,14 @@ impl QuadraticIrrational {
     fn add_ref(&self, other: &Self) -> Self {
         match self.combine(other) {
             Ok(d) => Self::normalized(&self.a + &other.a, &self.b + &other.b, d),
-            Err(poison) => poison,
+            Err(field) => Self::poisoned(field),
         }
     }
 
     fn sub_ref(&self, other: &Self) -> Self {
         match self.combine(other) {
             Ok(d) => Self::normalized(&self.a - &other.a, &self.b - &other.b, d),
-            Err(poison) => poison,
+            Err(field) => Self::poisoned(field),
         }
     }
 
@@ -374,7 +382,7 @@ impl QuadraticIrrational {
                 let b = &self.a * &other.b + &self.b * &other.a;
                 Self::normalized(a, b, d)
             }
-            Err(poison) => poison,
+            Err(field) => Self::poisoned(field),
         }
     }
 
@@ -441,7 +449,10 @@ fn parse_term(term: &str, whole: &str) -> Result<QuadraticIrrational> {
             };
             let rest = &body[i..];
             let radicand_text = if let Some(r) = rest.strip_prefix("sqrt") {
-                r.trim().strip_prefix('(').and_then(|r| r.strip_suffix(')')).ok_or_else(bad)?
+                r.trim()
+                    .strip_prefix('(')
+                    .and_then(|r| r.strip_suffix(')'))
+                    .ok_or_else(bad)?
             } else {
                 rest.strip_prefix('√').ok_or_else(bad)?
             };
@@ -689,9 +700,14 @@ mod tests {
         // A rational-valued result leaves its field: √2·√2 = 2 combines with √3.
         let two = QuadraticIrrational::sqrt(2).unwrap() * QuadraticIrrational::sqrt(2).unwrap();
         assert!((two + QuadraticIrrational::sqrt(3).unwrap()).is_valid());
-        assert_ne!(QuadraticIrrational::sqrt(2).unwrap(), QuadraticIrrational::sqrt(3).unwrap());
+        assert_ne!(
+            QuadraticIrrational::sqrt(2).unwrap(),
+            QuadraticIrrational::sqrt(3).unwrap()
+        );
         assert_eq!(
-            QuadraticIrrational::sqrt(2).unwrap().partial_cmp(&QuadraticIrrational::sqrt(3).unwrap()),
+            QuadraticIrrational::sqrt(2)
+                .unwrap()
+                .partial_cmp(&QuadraticIrrational::sqrt(3).unwrap()),
             None
         );
     }
@@ -723,7 +739,12 @@ mod tests {
             let s = x.to_string();
             assert_eq!(QuadraticIrrational::parse(&s).unwrap(), x, "{s}");
         }
-        assert_eq!(QuadraticIrrational::parse("1e-3 + 2*sqrt(2) - sqrt(2)").unwrap().to_string(), "1/1000 + sqrt(2)");
+        assert_eq!(
+            QuadraticIrrational::parse("1e-3 + 2*sqrt(2) - sqrt(2)")
+                .unwrap()
+                .to_string(),
+            "1/1000 + sqrt(2)"
+        );
         for bad in ["", "sqrt", "sqrt()", "2*", "*sqrt(2)", "sqrt(2)+sqrt(3)", "1/0", "abc"] {
             assert!(QuadraticIrrational::parse(bad).is_err(), "{bad}");
         }

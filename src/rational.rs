@@ -325,7 +325,9 @@ where
     /// ```
     pub fn reparametrize_weights(&self, c: &T) -> Result<Self> {
         if c.is_zero() {
-            return Err(Error::Domain("the weight reparametrisation factor c must not be 0".into()));
+            return Err(Error::Domain(
+                "the weight reparametrisation factor c must not be 0".into(),
+            ));
         }
         let mut power = T::one();
         let mut weights = Vec::with_capacity(self.weights.len());
@@ -725,15 +727,26 @@ impl ImplicitConic<BigRational> {
     pub fn to_primitive_integers(&self) -> [BigInt; 6] {
         let k = self.coefficients();
         let lcm = k.iter().fold(BigInt::from(1), |l, x| l.lcm(x.denom()));
-        let ints: Vec<BigInt> = k.iter().map(|x| (x * BigRational::from_integer(lcm.clone())).to_integer()).collect();
+        let ints: Vec<BigInt> = k
+            .iter()
+            .map(|x| (x * BigRational::from_integer(lcm.clone())).to_integer())
+            .collect();
         let mut g = ints.iter().fold(BigInt::zero(), |g, x| g.gcd(x));
         if Zero::is_zero(&g) {
             return ints.try_into().expect("six coefficients");
         }
-        if ints.iter().find(|x| !Zero::is_zero(*x)).is_some_and(|x| x.is_negative()) {
+        if ints
+            .iter()
+            .find(|x| !Zero::is_zero(*x))
+            .is_some_and(|x| x.is_negative())
+        {
             g = -g;
         }
-        ints.iter().map(|x| x / &g).collect::<Vec<_>>().try_into().expect("six coefficients")
+        ints.iter()
+            .map(|x| x / &g)
+            .collect::<Vec<_>>()
+            .try_into()
+            .expect("six coefficients")
     }
 }
 
@@ -798,11 +811,7 @@ where
     for<'a> &'a T: RefOps<T>,
 {
     // (u_x - x)(v_y - y) - (v_x - x)(u_y - y)
-    [
-        &u[1] - &v[1],
-        &v[0] - &u[0],
-        &(&u[0] * &v[1]) - &(&v[0] * &u[1]),
-    ]
+    [&u[1] - &v[1], &v[0] - &u[0], &(&u[0] * &v[1]) - &(&v[0] * &u[1])]
 }
 
 /// The exact implicit equation of the conic carrying a planar rational quadratic arc,
@@ -856,7 +865,11 @@ where
     let w0w2 = w0 * w2;
     let p02 = affine_product(&l0, &l2);
     let p11 = affine_product(&l1, &l1);
-    let k: Vec<T> = p02.iter().zip(&p11).map(|(x, y)| &(&four_w1_sq * x) - &(&w0w2 * y)).collect();
+    let k: Vec<T> = p02
+        .iter()
+        .zip(&p11)
+        .map(|(x, y)| &(&four_w1_sq * x) - &(&w0w2 * y))
+        .collect();
     let conic = ImplicitConic::from_coefficients(k.try_into().expect("six coefficients"));
     if conic.is_zero() {
         return Err(Error::Domain(
@@ -882,7 +895,10 @@ mod tests {
 
     #[test]
     fn bad_input_is_an_error() {
-        let pts = vec![Point::<Q>::from_ints(&[0, 0]).unwrap(), Point::from_ints(&[1, 0]).unwrap()];
+        let pts = vec![
+            Point::<Q>::from_ints(&[0, 0]).unwrap(),
+            Point::from_ints(&[1, 0]).unwrap(),
+        ];
         assert!(RationalBezierCurve::new(pts.clone(), vec![q(1, 1)]).is_err());
         assert!(RationalBezierCurve::new(pts.clone(), vec![q(0, 1), q(0, 1)]).is_err());
         assert!(RationalBezierCurve::<Q>::new(vec![], vec![]).is_err());
@@ -929,7 +945,10 @@ mod tests {
             ImplicitConic::<Q>::from_ints([4, 0, 3, 0, -10, 3]).to_string(),
             "4*x^2 + 3*y^2 - 10*y + 3 = 0"
         );
-        assert_eq!(ImplicitConic::<Q>::from_ints([-1, 1, 0, 0, 0, -1]).to_string(), "-x^2 + x*y - 1 = 0");
+        assert_eq!(
+            ImplicitConic::<Q>::from_ints([-1, 1, 0, 0, 0, -1]).to_string(),
+            "-x^2 + x*y - 1 = 0"
+        );
         let r2 = QuadraticIrrational::sqrt(2).unwrap();
         let k = ImplicitConic::from_coefficients([
             QuadraticIrrational::one(),

@@ -2,8 +2,8 @@
 //! rational curve algorithms, the conic equations and the quadratic-irrational scalar.
 
 use casteljau::{
-    classify_conic, conic_arc_passes_infinity, conic_shape_factor, implicit_conic, BezierCurve, BigRational,
-    ConicKind, Error, ImplicitConic, Point, QuadraticIrrational, RationalBezierCurve, Scalar,
+    classify_conic, conic_arc_passes_infinity, conic_shape_factor, implicit_conic, BezierCurve, BigRational, ConicKind,
+    Error, ImplicitConic, Point, QuadraticIrrational, RationalBezierCurve, Scalar,
 };
 use proptest::prelude::*;
 
@@ -50,7 +50,9 @@ where
     for<'a> &'a T: casteljau::RefOps<T>,
 {
     let power = c.lift().to_power().unwrap();
-    (0..=c.dim()).map(|j| power.iter().map(|a| a.coords()[j].clone()).collect()).collect()
+    (0..=c.dim())
+        .map(|j| power.iter().map(|a| a.coords()[j].clone()).collect())
+        .collect()
 }
 
 /// Whether `c(t)` equals the printed `(num_j(t) / den(t))_j` as rational functions:
@@ -62,7 +64,10 @@ where
     let h = homogeneous_power(c);
     let w = &h[c.dim()];
     nums.len() == c.dim()
-        && nums.iter().enumerate().all(|(j, num)| poly_eq(&poly_mul(&h[j], den), &poly_mul(num, w)))
+        && nums
+            .iter()
+            .enumerate()
+            .all(|(j, num)| poly_eq(&poly_mul(&h[j], den), &poly_mul(num, w)))
 }
 
 fn ints<T: Scalar>(v: &[i64]) -> Vec<T>
@@ -78,7 +83,10 @@ fn pt(c: &[i64]) -> Point<Q> {
 
 /// Exact parameters, including outside [0, 1].
 fn sample_params() -> Vec<Q> {
-    [(0, 1), (1, 1), (1, 2), (1, 3), (2, 7), (-1, 2), (3, 2), (5, 4)].iter().map(|&(p, d)| q(p, d)).collect()
+    [(0, 1), (1, 1), (1, 2), (1, 3), (2, 7), (-1, 2), (3, 2), (5, 4)]
+        .iter()
+        .map(|&(p, d)| q(p, d))
+        .collect()
 }
 
 // ---------------------------------------------------------------- text 001, examples
@@ -87,7 +95,11 @@ fn sample_params() -> Vec<Q> {
 fn example1_circle_arc() {
     let c = RationalBezierCurve::<Q>::from_ints(&[&[1, 0], &[1, 1], &[0, 1]], &[1, 1, 2]).unwrap();
     // printed: x(t) = ((1 - t²)/(1 + t²), 2t/(1 + t²))
-    assert!(is_printed_curve(&c, &[ints(&[1, 0, -1]), ints(&[0, 2])], &ints(&[1, 0, 1])));
+    assert!(is_printed_curve(
+        &c,
+        &[ints(&[1, 0, -1]), ints(&[0, 2])],
+        &ints(&[1, 0, 1])
+    ));
     // the claimed circle x² + y² = 1
     let circle = ImplicitConic::from_ints([1, 0, 1, 0, 0, -1]);
     assert!(implicit_conic(&c).unwrap().is_multiple_of(&circle));
@@ -131,7 +143,10 @@ fn example2_hyperbola_with_sqrt2() {
         assert!(x.check().is_ok() && y.check().is_ok());
     }
     // the vertex (1, 0) at t = 1/2
-    assert_eq!(c.eval(&QI::from_ratio(1, 2).unwrap()).unwrap(), Point::new(vec![qs(1), qs(0)]).unwrap());
+    assert_eq!(
+        c.eval(&QI::from_ratio(1, 2).unwrap()).unwrap(),
+        Point::new(vec![qs(1), qs(0)]).unwrap()
+    );
     // the same generic polynomial code on the lifted parabola of R³
     let lifted: BezierCurve<QI> = c.lift();
     assert_eq!(lifted.points()[1], Point::new(vec![qs(1), qs(0), qs(3)]).unwrap());
@@ -145,11 +160,18 @@ fn example3_ellipse() {
     )
     .unwrap();
     // printed: ((2t - 1)/(t² - t + 1), (3t² - 3t + 1)/(t² - t + 1))
-    assert!(is_printed_curve(&c, &[ints(&[-1, 2]), ints(&[1, -3, 3])], &ints(&[1, -1, 1])));
+    assert!(is_printed_curve(
+        &c,
+        &[ints(&[-1, 2]), ints(&[1, -3, 3])],
+        &ints(&[1, -1, 1])
+    ));
     let conic = implicit_conic(&c).unwrap();
     let printed = ImplicitConic::from_ints([4, 0, 3, 0, -10, 3]);
     assert!(conic.is_multiple_of(&printed));
-    assert_eq!(conic.to_primitive_integers().map(|k| k.to_string()), ["4", "0", "3", "0", "-10", "3"]);
+    assert_eq!(
+        conic.to_primitive_integers().map(|k| k.to_string()),
+        ["4", "0", "3", "0", "-10", "3"]
+    );
     assert_eq!(classify_conic(&c).unwrap(), ConicKind::Ellipse);
     assert_eq!(printed.kind(), ConicKind::Ellipse);
 }
@@ -158,11 +180,18 @@ fn example3_ellipse() {
 fn example4_hyperbola() {
     let c = RationalBezierCurve::<Q>::from_ints(&[&[-1, 1], &[0, -1], &[1, 1]], &[1, 2, 1]).unwrap();
     // printed: ((2t - 1)/(-2t² + 2t + 1), (6t² - 6t + 1)/(-2t² + 2t + 1))
-    assert!(is_printed_curve(&c, &[ints(&[-1, 2]), ints(&[1, -6, 6])], &ints(&[1, 2, -2])));
+    assert!(is_printed_curve(
+        &c,
+        &[ints(&[-1, 2]), ints(&[1, -6, 6])],
+        &ints(&[1, 2, -2])
+    ));
     let conic = implicit_conic(&c).unwrap();
     let printed = ImplicitConic::from_ints([16, 0, -3, 0, -10, -3]);
     assert!(conic.is_multiple_of(&printed));
-    assert_eq!(conic.to_primitive_integers().map(|k| k.to_string()), ["16", "0", "-3", "0", "-10", "-3"]);
+    assert_eq!(
+        conic.to_primitive_integers().map(|k| k.to_string()),
+        ["16", "0", "-3", "0", "-10", "-3"]
+    );
     assert_eq!(classify_conic(&c).unwrap(), ConicKind::Hyperbola);
     assert_eq!(printed.kind(), ConicKind::Hyperbola);
 }
@@ -174,7 +203,11 @@ fn printed_equations_are_not_accepted_when_wrong() {
     let conic = implicit_conic(&c).unwrap();
     assert!(!conic.is_multiple_of(&ImplicitConic::from_ints([16, 0, -3, 0, -10, 3])));
     assert!(!conic.is_multiple_of(&ImplicitConic::from_ints([4, 0, 3, 0, -10, 3])));
-    assert!(!is_printed_curve(&c, &[ints(&[-1, 2]), ints(&[1, -6, 6])], &ints(&[1, 2, -3])));
+    assert!(!is_printed_curve(
+        &c,
+        &[ints(&[-1, 2]), ints(&[1, -6, 6])],
+        &ints(&[1, 2, -3])
+    ));
 }
 
 #[test]
@@ -189,7 +222,11 @@ fn projection_example1_parabola_in_space() {
     let c = RationalBezierCurve::from_homogeneous(&p).unwrap();
     assert_eq!(c.points(), &[pt(&[1, 0]), pt(&[1, 1]), pt(&[0, 1])]);
     assert_eq!(c.weights(), &ints::<Q>(&[1, 1, 2])[..]);
-    assert!(is_printed_curve(&c, &[ints(&[1, 0, -1]), ints(&[0, 2])], &ints(&[1, 0, 1])));
+    assert!(is_printed_curve(
+        &c,
+        &[ints(&[1, 0, -1]), ints(&[0, 2])],
+        &ints(&[1, 0, 1])
+    ));
     assert_eq!(c.lift(), p);
 }
 
@@ -229,11 +266,8 @@ fn figure_7c_weights_decide_the_type() {
         (q(101, 100), ConicKind::Hyperbola),
         (q(5, 1), ConicKind::Hyperbola),
     ] {
-        let c = RationalBezierCurve::new(
-            pts.iter().map(|p| pt(p)).collect(),
-            vec![q(1, 1), w1.clone(), q(1, 1)],
-        )
-        .unwrap();
+        let c =
+            RationalBezierCurve::new(pts.iter().map(|p| pt(p)).collect(), vec![q(1, 1), w1.clone(), q(1, 1)]).unwrap();
         assert_eq!(classify_conic(&c).unwrap(), kind, "w1 = {w1}");
         assert_eq!(implicit_conic(&c).unwrap().kind(), kind, "w1 = {w1}");
         assert!(!conic_arc_passes_infinity(&c).unwrap());
@@ -268,7 +302,10 @@ fn standard_form_of_example1_is_exact_in_sqrt2() {
     let cq = RationalBezierCurve::<Q>::from_ints(&[&[1, 0], &[1, 1], &[0, 1]], &[1, 1, 2]).unwrap();
     assert!(cq.conic_standard_form().is_err());
     let cq4 = RationalBezierCurve::<Q>::from_ints(&[&[1, 0], &[1, 1], &[0, 1]], &[1, 1, 4]).unwrap();
-    assert_eq!(cq4.conic_standard_form().unwrap().weights(), &[q(1, 1), q(1, 2), q(1, 1)]);
+    assert_eq!(
+        cq4.conic_standard_form().unwrap().weights(),
+        &[q(1, 1), q(1, 2), q(1, 1)]
+    );
 }
 
 #[test]
@@ -319,7 +356,10 @@ fn point(dim: usize) -> impl Strategy<Value = Point<Q>> {
 /// Random curves of degree 1..=5 and dimension 1..=3 with the given weight strategy.
 fn curve_with<S: Strategy<Value = Q> + Clone>(weight: S) -> impl Strategy<Value = RationalBezierCurve<Q>> {
     (1usize..=5, 1usize..=3).prop_flat_map(move |(n, dim)| {
-        (prop::collection::vec(point(dim), n + 1), prop::collection::vec(weight.clone(), n + 1))
+        (
+            prop::collection::vec(point(dim), n + 1),
+            prop::collection::vec(weight.clone(), n + 1),
+        )
             .prop_filter_map("all weights zero", |(p, w)| RationalBezierCurve::new(p, w).ok())
     })
 }
@@ -544,7 +584,7 @@ proptest! {
 
     #[test]
     fn f64_matches_exact(c in curve_with(positive_q()), t in (0i64..=16).prop_map(|k| q(k, 16))) {
-        let cf = c.try_map(|x| f64::from_rational(x)).unwrap();
+        let cf = c.try_map(f64::from_rational).unwrap();
         let exact = c.eval(&t).unwrap();
         let approx = cf.eval(&Scalar::to_f64(&t)).unwrap();
         for (a, b) in exact.to_f64().iter().zip(approx.coords()) {
