@@ -917,6 +917,14 @@ mod tests {
         assert_eq!(classify_conic(&flat).unwrap(), ConicKind::DegenerateCollinear);
         assert!(implicit_conic(&flat).is_err());
         assert!(implicit_conic(&arc(&[0, 0, 1])).is_err());
+        let cubic = RationalBezierCurve::<Q>::from_ints(&[&[0, 0], &[1, 0], &[1, 1], &[0, 1]], &[1, 1, 1, 1]).unwrap();
+        assert!(matches!(
+            classify_conic(&cubic),
+            Err(Error::WrongCount { needed: 3, got: 4, .. })
+        ));
+        assert!(implicit_conic(&cubic).is_err());
+        assert!(cubic.conic_standard_form().is_err());
+        assert!(conic_shape_factor(&arc(&[0, 1, 1])).is_err());
     }
 
     #[test]

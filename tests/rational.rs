@@ -255,6 +255,32 @@ fn projection_example2_parabola_in_space() {
     assert_eq!(c.points()[1].coords()[0], QI::from_ratio(1, 3).unwrap());
 }
 
+/// Barycentric coordinates of `p` with respect to the triangle `a b c` (planar, exact).
+fn barycentric_of(p: &Point<Q>, tri: &[Point<Q>]) -> [Q; 3] {
+    let cross = |u: &Point<Q>, v: &Point<Q>, w: &Point<Q>| {
+        let (x, y) = (v.sub(u), w.sub(u));
+        &x.coords()[0] * &y.coords()[1] - &x.coords()[1] * &y.coords()[0]
+    };
+    let area = cross(&tri[0], &tri[1], &tri[2]);
+    [
+        cross(p, &tri[1], &tri[2]) / &area,
+        cross(&tri[0], p, &tri[2]) / &area,
+        cross(&tri[0], &tri[1], p) / &area,
+    ]
+}
+
+#[test]
+fn barycentric_form_of_the_conic_has_w1_squared_with_tau0_tau2() {
+    // 4 w1² τ0 τ2 = w0 w2 τ1² on the arc; the variant 4 w0 w2 τ0 τ2 = w1² τ1² does not hold.
+    let c = RationalBezierCurve::<Q>::from_ints(&[&[-1, 1], &[0, -1], &[1, 1]], &[1, 2, 1]).unwrap();
+    let w = c.weights();
+    let four = Q::from_i64(4);
+    let t = q(1, 3);
+    let [t0, t1, t2] = barycentric_of(&c.eval(&t).unwrap(), c.points());
+    assert_eq!(&four * &(&w[1] * &w[1]) * &t0 * &t2, &w[0] * &w[2] * &t1 * &t1);
+    assert_ne!(&four * &(&w[0] * &w[2]) * &t0 * &t2, &w[1] * &w[1] * &t1 * &t1);
+}
+
 #[test]
 fn figure_7c_weights_decide_the_type() {
     // fixed control points, w0 = w2 = 1, middle weight running through 1
