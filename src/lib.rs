@@ -57,6 +57,7 @@ pub use rational::{
 };
 
 // --- surfaces (issue 4)
+pub use surface::{enneper_net, BezierSurface, EnneperMatch};
 
 // --- fitting (issue 5)
 
