@@ -3,10 +3,11 @@
 //! Exit status: 0 on success, 1 when `prove` finds a verdict other than the expected one,
 //! 2 for usage errors, bad input and I/O errors (one clear line on stderr, never a panic).
 
-use casteljau::input::{parse_count, parse_number, parse_points};
-use casteljau::oracle::{self, Answer, Op};
+use casteljau::fit::CubicFitData;
+use casteljau::input::{parse_count, parse_net, parse_number, parse_numbers, parse_point, parse_points};
+use casteljau::oracle::{self, check_weight_count, Answer, Op};
 use casteljau::verify::{explain, prove_paths};
-use casteljau::{BezierCurve, BigRational, Error};
+use casteljau::{BezierCurve, BezierSurface, BigRational, Error, Point, RationalBezierCurve};
 use clap::{Parser, Subcommand, ValueEnum};
 use serde_json::{json, Value};
 use std::io::{self, IsTerminal, Write};
@@ -49,7 +50,7 @@ enum Command {
         #[arg(long, value_name = "ID")]
         explain: Option<String>,
     },
-    /// Evaluate b(t) exactly by de Casteljau's algorithm.
+    /// Evaluate b(t) exactly by de Casteljau's algorithm (a rational curve with --weights).
     Eval {
         /// Control points, e.g. "0,0; 4/3,-4/3; 4/3,4/3; 0,0".
         #[arg(allow_hyphen_values = true)]
@@ -57,9 +58,51 @@ enum Command {
         /// The parameter.
         #[arg(long, allow_hyphen_values = true)]
         t: String,
-        /// Print the whole triangular scheme (9).
-        #[arg(long)]
+        /// Print the whole triangular scheme (9) (polynomial curves).
+        #[arg(long, conflicts_with = "weights")]
         scheme: bool,
+        /// Weights of a rational curve, one per control point, e.g. "1, 1/2, 1".
+        #[arg(long, allow_hyphen_values = true)]
+        weights: Option<String>,
+    },
+    /// The type and implicit equation of the conic through a rational quadratic arc.
+    Conic {
+        /// Three planar control points.
+        #[arg(allow_hyphen_values = true)]
+        points: String,
+        /// Their weights, e.g. "1, 1/2, 1".
+        #[arg(long, allow_hyphen_values = true)]
+        weights: String,
+    },
+    /// Evaluate a tensor-product surface b(u, v) exactly.
+    Surface {
+        /// The control net: rows i = 0..m separated by '|', each row the points j = 0..n.
+        #[arg(allow_hyphen_values = true)]
+        net: String,
+        /// The parameter u (along the rows' index i).
+        #[arg(long, allow_hyphen_values = true)]
+        u: String,
+        /// The parameter v (along a row, index j).
+        #[arg(long, allow_hyphen_values = true)]
+        v: String,
+    },
+    /// Text 004's cubic fit from x(0), x(1), x(1/2), x'(0), x'(1).
+    Fit {
+        /// x(0).
+        #[arg(long, allow_hyphen_values = true)]
+        x0: String,
+        /// x(1).
+        #[arg(long, allow_hyphen_values = true)]
+        x1: String,
+        /// x(1/2).
+        #[arg(long, allow_hyphen_values = true)]
+        xh: String,
+        /// x'(0).
+        #[arg(long, allow_hyphen_values = true)]
+        d0: String,
+        /// x'(1).
+        #[arg(long, allow_hyphen_values = true)]
+        d1: String,
     },
     /// Elevate the degree by r (formula (8)).
     Elevate {
@@ -135,7 +178,47 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
                 Err(err) => Err(format!("oracle: {err}")),
             }
         }
-        Command::Eval { points, t, scheme } => {
+        Command::Eval {
+            points,
+            t,
+            weights: Some(weights),
+            ..
+        } => {
+            let op = Op::RationalEval {
+                curve: rational_arg(&points, &weights)?,
+                t: number_arg("--t", &t)?,
+                approx: None,
+            };
+            emit(&op.run().map_err(e)?, format, None)
+        }
+        Command::Conic { points, weights } => {
+            let op = Op::Conic {
+                curve: rational_arg(&points, &weights)?,
+            };
+            emit(&op.run().map_err(e)?, format, None)
+        }
+        Command::Surface { net, u, v } => {
+            let net = parse_net(&net).map_err(|err| format!("control net: {err}"))?;
+            let op = Op::SurfaceEval {
+                surface: BezierSurface::new(net).map_err(|err| format!("control net: {err}"))?,
+                u: number_arg("--u", &u)?,
+                v: number_arg("--v", &v)?,
+                approx: None,
+            };
+            emit(&op.run().map_err(e)?, format, None)
+        }
+        Command::Fit { x0, x1, xh, d0, d1 } => {
+            let data = CubicFitData::new(
+                point_arg("--x0", &x0)?,
+                point_arg("--x1", &x1)?,
+                point_arg("--xh", &xh)?,
+                point_arg("--d0", &d0)?,
+                point_arg("--d1", &d1)?,
+            )
+            .map_err(e)?;
+            emit(&Op::FitCubic { data }.run().map_err(e)?, format, None)
+        }
+        Command::Eval { points, t, scheme, .. } => {
             let curve = curve_arg(&points)?;
             let t = number_arg("--t", &t)?;
             let op = Op::Eval {
@@ -202,6 +285,17 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
 fn curve_arg(text: &str) -> Result<BezierCurve<BigRational>, String> {
     let points = parse_points(text).map_err(|e| format!("control points: {e}"))?;
     BezierCurve::new(points).map_err(|e| format!("control points: {e}"))
+}
+
+fn rational_arg(points: &str, weights: &str) -> Result<RationalBezierCurve<BigRational>, String> {
+    let points = parse_points(points).map_err(|e| format!("control points: {e}"))?;
+    let weights = parse_numbers(weights).map_err(|e| format!("--weights: {e}"))?;
+    check_weight_count(points.len(), weights.len()).map_err(|e| format!("--weights: {e}"))?;
+    RationalBezierCurve::new(points, weights).map_err(|e| e.to_string())
+}
+
+fn point_arg(flag: &str, text: &str) -> Result<Point<BigRational>, String> {
+    parse_point(text).map_err(|e| format!("{flag}: {e}"))
 }
 
 fn number_arg(flag: &str, text: &str) -> Result<BigRational, String> {

@@ -28,6 +28,16 @@
 //! | `split`      | `points`, `t`                            | `left`, `right`            |
 //! | `derivative` | `points`, `order`, optional `t`          | `points`, or `vector` with `t` |
 //! | `to_bezier`  | `power` (one array per coordinate, `t^0..t^n`) | `points`             |
+//! | `rational_eval` | `points`, `weights`, `t`, optional `approx` | `point` (+ ulps)      |
+//! | `conic`      | `points` (three 2D points), `weights` (three) | `type`, `implicit`    |
+//! | `surface_eval` | `net` (rows `i = 0..m` of points `j = 0..n`), `u`, `v`, optional `approx` | `point` (+ ulps) |
+//! | `fit_cubic`  | `x0`, `x1`, `xh` = x(1/2), `d0` = ẋ(0), `d1` = ẋ(1) | `k`, `l`, `points`, `delta2`, `warnings` |
+//!
+//! `conic`'s `type` is `"ellipse"`, `"parabola"`, `"hyperbola"` or `"degenerate (…)"`;
+//! `implicit` is `[A, B, C, D, E, F]` of `A x² + B xy + C y² + D x + E y + F = 0` scaled to
+//! coprime integers with the first non-zero one positive (`null` when the control points
+//! are collinear: no unique conic carries the arc). `surface_eval` is
+//! `Σ_i Σ_j b_ij B_i^m(u) B_j^n(v)` with `net[i][j] = b_ij`.
 //!
 //! # `ulps`
 //!
@@ -55,12 +65,15 @@
 
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
+use crate::fit::{fit_cubic, CubicFit, CubicFitData};
 use crate::input::{
-    count_from_json, describe, format_points, in_context, number_from_json, numbers_from_json, point_to_json,
-    points_from_json, points_to_json,
+    count_from_json, describe, format_points, in_context, net_from_json, number_from_json, number_to_json,
+    numbers_from_json, point_from_json, point_to_json, points_from_json, points_to_json,
 };
 use crate::point::Point;
+use crate::rational::{classify_conic, implicit_conic, ConicKind, RationalBezierCurve};
 use crate::scalar::Scalar;
+use crate::surface::BezierSurface;
 use num_bigint::{BigInt, BigUint};
 use num_integer::Integer;
 use num_rational::BigRational;
@@ -130,6 +143,36 @@ pub enum Op {
         /// `power[k][i]`: coordinate `k`'s coefficient of `t^i`
         power: Vec<Vec<BigRational>>,
     },
+    /// `x(t)` of a rational Bézier curve; with `approx`, also the caller's rounding error.
+    RationalEval {
+        /// the curve
+        curve: RationalBezierCurve<BigRational>,
+        /// the parameter
+        t: BigRational,
+        /// the caller's float result, one per coordinate
+        approx: Option<Vec<f64>>,
+    },
+    /// The type and implicit equation of the conic carrying a rational quadratic arc.
+    Conic {
+        /// the arc: three planar points and their weights
+        curve: RationalBezierCurve<BigRational>,
+    },
+    /// `b(u, v)` of a tensor-product surface; with `approx`, also the caller's error.
+    SurfaceEval {
+        /// the surface
+        surface: BezierSurface<BigRational>,
+        /// the first parameter (the direction of the net's rows index `i`)
+        u: BigRational,
+        /// the second parameter
+        v: BigRational,
+        /// the caller's float result, one per coordinate
+        approx: Option<Vec<f64>>,
+    },
+    /// Text 004's cubic fit.
+    FitCubic {
+        /// `x(0), x(1), x(1/2), ẋ(0), ẋ(1)`
+        data: CubicFitData<BigRational>,
+    },
 }
 
 /// How far a float approximation is from the exact value, for one coordinate.
@@ -165,6 +208,16 @@ pub enum Answer {
         /// `b(t0 + (1 - t0) t)`
         right: Vec<Point<BigRational>>,
     },
+    /// The conic carrying a rational quadratic arc.
+    Conic {
+        /// its affine type
+        kind: ConicKind,
+        /// `[A, B, C, D, E, F]` as coprime integers, first non-zero positive; `None` when
+        /// the control points are collinear
+        implicit: Option<[BigInt; 6]>,
+    },
+    /// Text 004's cubic fit.
+    Fit(Box<CubicFit<BigRational>>),
 }
 
 impl Answer {
@@ -190,6 +243,20 @@ impl Answer {
                 m.insert("left".into(), points_to_json(left));
                 m.insert("right".into(), points_to_json(right));
             }
+            Answer::Conic { kind, implicit } => {
+                m.insert("type".into(), json!(kind.as_str()));
+                let implicit = implicit
+                    .as_ref()
+                    .map_or(Value::Null, |k| k.iter().map(|c| json!(c.to_string())).collect());
+                m.insert("implicit".into(), implicit);
+            }
+            Answer::Fit(fit) => {
+                m.insert("k".into(), number_to_json(&fit.k));
+                m.insert("l".into(), number_to_json(&fit.l));
+                m.insert("points".into(), points_to_json(fit.curve.points()));
+                m.insert("delta2".into(), number_to_json(&fit.delta2));
+                m.insert("warnings".into(), json!(fit.warnings));
+            }
         }
         m
     }
@@ -204,8 +271,59 @@ impl Answer {
             Answer::Split { left, right } => {
                 format!("left:  {}\nright: {}", format_points(left), format_points(right))
             }
+            Answer::Conic { kind, implicit } => match implicit {
+                Some(k) => format!("type: {}\nimplicit: {} = 0", kind.as_str(), conic_polynomial(k)),
+                None => format!(
+                    "type: {}\nimplicit: none (no unique conic through collinear points)",
+                    kind.as_str()
+                ),
+            },
+            Answer::Fit(fit) => {
+                let mut text = format!(
+                    "k = {}\nl = {}\npoints: {}\ndelta2 = {}",
+                    fit.k,
+                    fit.l,
+                    format_points(fit.curve.points()),
+                    fit.delta2
+                );
+                for w in &fit.warnings {
+                    text.push_str(&format!("\nwarning: {w}"));
+                }
+                text
+            }
         }
     }
+}
+
+/// `A x^2 + B xy + C y^2 + D x + E y + F` with zero terms left out and signs folded in,
+/// e.g. `4x^2 + 3y^2 - 10y + 3`.
+pub fn conic_polynomial(k: &[BigInt; 6]) -> String {
+    const MONOMIALS: [&str; 6] = ["x^2", "xy", "y^2", "x", "y", ""];
+    let mut out = String::new();
+    for (c, mono) in k.iter().zip(MONOMIALS) {
+        if num_traits::Zero::is_zero(c) {
+            continue;
+        }
+        let negative = c.is_negative();
+        let magnitude = c.abs();
+        let digits = if num_traits::One::is_one(&magnitude) && !mono.is_empty() {
+            String::new()
+        } else {
+            magnitude.to_string()
+        };
+        match (out.is_empty(), negative) {
+            (true, true) => out.push('-'),
+            (true, false) => {}
+            (false, true) => out.push_str(" - "),
+            (false, false) => out.push_str(" + "),
+        }
+        out.push_str(&digits);
+        out.push_str(mono);
+    }
+    if out.is_empty() {
+        out.push('0');
+    }
+    out
 }
 
 fn bits(r: &BigRational) -> f64 {
@@ -303,6 +421,33 @@ impl Op {
                     + at.as_ref()
                         .map_or(0.0, |t| triangle_work(n - k, curve.dim(), b, growth_bits(t), level))
             }
+            Op::RationalEval { curve, t, .. } => {
+                let numbers = curve.points().iter().flat_map(|p| p.coords()).chain(curve.weights());
+                let b = 2.0 * max_bits(numbers.clone());
+                triangle_work(curve.degree(), curve.dim() + 1, b, growth_bits(t), den_growth(numbers))
+                    + curve.dim() as f64 * op_cost(b + curve.degree() as f64 * growth_bits(t), 0.0, 0.0)
+            }
+            Op::Conic { curve } => {
+                let numbers = curve.points().iter().flat_map(|p| p.coords()).chain(curve.weights());
+                // a few hundred products of up to about eight input numbers
+                300.0 * op_cost(8.0 * max_bits(numbers), 0.0, 0.0)
+            }
+            Op::SurfaceEval { surface, u, v, .. } => {
+                let (m, n) = surface.degrees();
+                let numbers = || surface.net().iter().flatten().flat_map(|p| p.coords());
+                let (b, den) = (max_bits(numbers()), den_growth(numbers()));
+                // u first: n + 1 columns reduced at u, then one curve in v of grown numbers
+                let columns = (n + 1) as f64 * triangle_work(m, surface.dim(), b, growth_bits(u), den);
+                let grown = b + m as f64 * (growth_bits(u) + den);
+                columns + triangle_work(n, surface.dim(), grown, growth_bits(v), den)
+            }
+            Op::FitCubic { data } => {
+                let d = &data;
+                let numbers = [&d.x0, &d.x1, &d.xh, &d.d0, &d.d1].into_iter().flat_map(|p| p.coords());
+                // Gram matrix, right-hand side, a 2×2 solve and δ²: a few dozen operations per
+                // coordinate on products of up to about ten input numbers
+                (60 * d.x0.dim() + 100) as f64 * op_cost(10.0 * max_bits(numbers), 0.0, 0.0)
+            }
             Op::ToBezier { power } => {
                 let n = power.first().map_or(0, |c| c.len().saturating_sub(1));
                 let b = max_bits(power.iter().flatten());
@@ -334,6 +479,32 @@ impl Op {
                         value: total.to_string(),
                         limit: MAX_DEGREE.to_string(),
                     });
+                }
+            }
+            Op::RationalEval { curve, .. } | Op::Conic { curve } => {
+                if curve.points().len() > MAX_POINTS {
+                    return Err(too_large("number of points", curve.points().len(), MAX_POINTS));
+                }
+                if curve.dim() > MAX_DIMENSION {
+                    return Err(too_large("dimension", curve.dim(), MAX_DIMENSION));
+                }
+            }
+            Op::SurfaceEval { surface, .. } => {
+                let (m, n) = surface.degrees();
+                if m.max(n) >= MAX_POINTS {
+                    return Err(too_large(
+                        "number of points in a net row or column",
+                        m.max(n) + 1,
+                        MAX_POINTS,
+                    ));
+                }
+                if surface.dim() > MAX_DIMENSION {
+                    return Err(too_large("dimension", surface.dim(), MAX_DIMENSION));
+                }
+            }
+            Op::FitCubic { data } => {
+                if data.x0.dim() > MAX_DIMENSION {
+                    return Err(too_large("dimension", data.x0.dim(), MAX_DIMENSION));
                 }
             }
             Op::ToBezier { power } => {
@@ -376,24 +547,7 @@ impl Op {
         Ok(match self {
             Op::Eval { curve, t, approx } => {
                 let point = curve.eval(t);
-                let ulps = match approx {
-                    None => None,
-                    Some(a) => {
-                        if a.len() != point.dim() {
-                            return Err(Error::DimensionMismatch {
-                                expected: point.dim(),
-                                found: a.len(),
-                                context: "field 'approx'".into(),
-                            });
-                        }
-                        Some(
-                            a.iter()
-                                .zip(point.coords())
-                                .map(|(a, x)| ulp_error(*a, x))
-                                .collect::<Result<_>>()?,
-                        )
-                    }
-                };
+                let ulps = ulps_of(approx.as_deref(), &point)?;
                 Answer::Point { point, ulps }
             }
             Op::Elevate { curve, by } => Answer::Points(curve.elevate_by(*by)?.into_points()),
@@ -410,6 +564,40 @@ impl Op {
                 order,
                 at: Some(t),
             } => Answer::Vector(curve.derivative_at(*order, t)?),
+            Op::RationalEval { curve, t, approx } => {
+                let point = curve.eval(t)?;
+                let ulps = ulps_of(approx.as_deref(), &point)?;
+                Answer::Point { point, ulps }
+            }
+            Op::Conic { curve } => {
+                if curve.points().len() != 3 {
+                    return Err(Error::WrongCount {
+                        what: "a conic arc",
+                        needed: 3,
+                        got: curve.points().len(),
+                    });
+                }
+                if curve.dim() != 2 {
+                    return Err(Error::DimensionMismatch {
+                        expected: 2,
+                        found: curve.dim(),
+                        context: "the control points of a conic arc (planar)".into(),
+                    });
+                }
+                let kind = classify_conic(curve)?;
+                let implicit = if kind == ConicKind::DegenerateCollinear {
+                    None
+                } else {
+                    Some(implicit_conic(curve)?.to_primitive_integers())
+                };
+                Answer::Conic { kind, implicit }
+            }
+            Op::SurfaceEval { surface, u, v, approx } => {
+                let point = surface.eval(u, v);
+                let ulps = ulps_of(approx.as_deref(), &point)?;
+                Answer::Point { point, ulps }
+            }
+            Op::FitCubic { data } => Answer::Fit(Box::new(fit_cubic(data)?)),
             Op::ToBezier { power } => {
                 let coeffs = (0..power[0].len())
                     .map(|i| Point::new(power.iter().map(|c| c[i].clone()).collect()))
@@ -440,6 +628,10 @@ impl Op {
             "split" => &["points", "t"],
             "derivative" => &["points", "order", "t"],
             "to_bezier" => &["power"],
+            "rational_eval" => &["points", "weights", "t", "approx"],
+            "conic" => &["points", "weights"],
+            "surface_eval" => &["net", "u", "v", "approx"],
+            "fit_cubic" => &["x0", "x1", "xh", "d0", "d1"],
             other => {
                 return Err(Error::Parse(format!(
                     "unknown op {:?} (known ops: {})",
@@ -463,10 +655,7 @@ impl Op {
             "eval" => Op::Eval {
                 curve: req.curve("points")?,
                 t: req.number("t")?,
-                approx: match obj.get("approx") {
-                    None => None,
-                    Some(v) => Some(req.in_field("approx", floats_from_json(v))?),
-                },
+                approx: req.approx()?,
             },
             "elevate" => Op::Elevate {
                 curve: req.curve("points")?,
@@ -506,6 +695,32 @@ impl Op {
                         .collect::<Result<_>>()?,
                 }
             }
+            "rational_eval" => Op::RationalEval {
+                curve: req.rational_curve()?,
+                t: req.number("t")?,
+                approx: req.approx()?,
+            },
+            "conic" => Op::Conic {
+                curve: req.rational_curve()?,
+            },
+            "surface_eval" => {
+                let net = req.in_field("net", net_from_json(req.get("net")?, MAX_POINTS))?;
+                if net[0][0].dim() > MAX_DIMENSION {
+                    return Err(too_large("dimension", net[0][0].dim(), MAX_DIMENSION));
+                }
+                Op::SurfaceEval {
+                    surface: req.in_field("net", BezierSurface::new(net))?,
+                    u: req.number("u")?,
+                    v: req.number("v")?,
+                    approx: req.approx()?,
+                }
+            }
+            "fit_cubic" => {
+                let point = |name: &str| req.in_field(name, point_from_json(req.get(name)?));
+                Op::FitCubic {
+                    data: CubicFitData::new(point("x0")?, point("x1")?, point("xh")?, point("d0")?, point("d1")?)?,
+                }
+            }
             _ => unreachable!("op names were matched above"),
         };
         op.check_limits()?;
@@ -513,8 +728,46 @@ impl Op {
     }
 }
 
+/// One weight per control point, said in those words.
+pub fn check_weight_count(points: usize, weights: usize) -> Result<()> {
+    if points != weights {
+        return Err(Error::Parse(format!(
+            "{weights} weights for {points} control points (give one weight per control point)"
+        )));
+    }
+    Ok(())
+}
+
+/// Per coordinate errors of the caller's approximation, when it sent one.
+fn ulps_of(approx: Option<&[f64]>, point: &Point<BigRational>) -> Result<Option<Vec<UlpError>>> {
+    let Some(a) = approx else { return Ok(None) };
+    if a.len() != point.dim() {
+        return Err(Error::DimensionMismatch {
+            expected: point.dim(),
+            found: a.len(),
+            context: "field 'approx'".into(),
+        });
+    }
+    Ok(Some(
+        a.iter()
+            .zip(point.coords())
+            .map(|(a, x)| ulp_error(*a, x))
+            .collect::<Result<_>>()?,
+    ))
+}
+
 /// The names of the ops, for error messages.
-pub const OPS: &[&str] = &["eval", "elevate", "split", "derivative", "to_bezier"];
+pub const OPS: &[&str] = &[
+    "eval",
+    "elevate",
+    "split",
+    "derivative",
+    "to_bezier",
+    "rational_eval",
+    "conic",
+    "surface_eval",
+    "fit_cubic",
+];
 
 fn too_large(what: &'static str, value: usize, limit: usize) -> Error {
     Error::TooLarge {
@@ -550,6 +803,23 @@ impl Fields<'_> {
 
     fn number(&self, name: &str) -> Result<BigRational> {
         self.in_field(name, number_from_json(self.get(name)?))
+    }
+
+    fn approx(&self) -> Result<Option<Vec<f64>>> {
+        match self.obj.get("approx") {
+            None => Ok(None),
+            Some(v) => Ok(Some(self.in_field("approx", floats_from_json(v))?)),
+        }
+    }
+
+    fn rational_curve(&self) -> Result<RationalBezierCurve<BigRational>> {
+        let points = self.in_field("points", points_from_json(self.get("points")?, MAX_POINTS))?;
+        if points[0].dim() > MAX_DIMENSION {
+            return Err(too_large("dimension", points[0].dim(), MAX_DIMENSION));
+        }
+        let weights = self.in_field("weights", numbers_from_json(self.get("weights")?, MAX_POINTS))?;
+        check_weight_count(points.len(), weights.len())?;
+        RationalBezierCurve::new(points, weights)
     }
 
     fn curve(&self, name: &str) -> Result<BezierCurve<BigRational>> {
@@ -873,6 +1143,85 @@ mod tests {
         // 4t - 4t² as a quadratic: Bézier points 0, 2, 0
         let r = ask(r#"{"op":"to_bezier","power":[[0,4,-4],[1,0,0]]}"#);
         assert_eq!(r["points"], json!([["0", "1"], ["2", "1"], ["0", "1"]]));
+    }
+
+    #[test]
+    fn rational_conic_surface_fit_answer() {
+        // text 001, Example 3: the arc (-1,1), (0,-1), (1,1) with weights 1, 1/2, 1
+        let r = ask(r#"{"op":"conic","points":[[-1,1],[0,-1],[1,1]],"weights":[1,"1/2",1]}"#);
+        assert_eq!(
+            r,
+            json!({"ok": true, "type": "ellipse", "implicit": ["4", "0", "3", "0", "-10", "3"]})
+        );
+        let r = ask(r#"{"op":"conic","points":[[-1,1],[0,-1],[1,1]],"weights":[1,2,1]}"#);
+        assert_eq!(r["type"], json!("hyperbola"));
+        let r = ask(r#"{"op":"conic","points":[[0,0],[1,1],[2,2]],"weights":[1,1,1]}"#);
+        assert_eq!(r["implicit"], Value::Null);
+        assert!(r["type"].as_str().unwrap().starts_with("degenerate"));
+        // the quarter circle: x(1/2) = (3/5, 4/5), and 0.6, 0.8 are its correctly rounded floats
+        let r = ask(
+            r#"{"op":"rational_eval","points":[[1,0],[1,1],[0,1]],"weights":[1,1,2],"t":"1/2","approx":[0.6,0.8]}"#,
+        );
+        assert_eq!(r["point"], json!(["3/5", "4/5"]));
+        assert_eq!(r["ulps"], json!([0, 0]));
+        let r = ask(r#"{"op":"rational_eval","points":[[1,0],[1,1],[0,1]],"weights":[1,-1,1],"t":"1/2"}"#);
+        assert!(r["error"].as_str().unwrap().contains("vanishes"), "{r}");
+        // text 003: the bilinear patch z = xy
+        let r = ask(r#"{"op":"surface_eval","net":[[[0,0,0],[0,1,0]],[[1,0,0],[1,1,1]]],"u":"1/3","v":"3/4"}"#);
+        assert_eq!(r["point"], json!(["1/3", "3/4", "1/4"]));
+        // text 004: a cubic is its own fit, k = l = 1/3, δ² = 0
+        let r = ask(r#"{"op":"fit_cubic","x0":[0,0,0],"x1":[4,0,5],"xh":[2,"3/2",1],"d0":[3,6,0],"d1":[3,-6,12]}"#);
+        assert_eq!(
+            r,
+            json!({"ok": true, "k": "1/3", "l": "1/3", "delta2": "0", "warnings": [],
+                   "points": [["0", "0", "0"], ["1", "2", "0"], ["3", "2", "1"], ["4", "0", "5"]]})
+        );
+        let r = ask(r#"{"op":"fit_cubic","x0":[0,0],"x1":[1,0],"xh":[0,1],"d0":[1,0],"d1":[2,0]}"#);
+        assert!(r["error"].as_str().unwrap().contains("parallel"), "{r}");
+        for (line, needle) in [
+            (
+                r#"{"op":"conic","points":[[-1,1],[0,-1]],"weights":[1,1]}"#,
+                "needs 3 points",
+            ),
+            (
+                r#"{"op":"conic","points":[[-1,1,0],[0,-1,0],[1,1,0]],"weights":[1,1,1]}"#,
+                "planar",
+            ),
+            (
+                r#"{"op":"rational_eval","points":[[1,0],[1,1]],"weights":[1],"t":0}"#,
+                "1 weights for 2",
+            ),
+            (
+                r#"{"op":"rational_eval","points":[[1,0],[1,1]],"weights":[0,0],"t":0}"#,
+                "all weights",
+            ),
+            (
+                r#"{"op":"surface_eval","net":[[[0,0]],[[0,1],[1,1]]],"u":0,"v":0}"#,
+                "ragged",
+            ),
+            (r#"{"op":"surface_eval","net":[],"u":0,"v":0}"#, "empty"),
+            (
+                r#"{"op":"fit_cubic","x0":[0,0],"x1":[1,0],"xh":[0,1],"d0":[1,0]}"#,
+                "'d1'",
+            ),
+            (
+                r#"{"op":"fit_cubic","x0":[0,0],"x1":[1,0,0],"xh":[0,1],"d0":[1,0],"d1":[0,1]}"#,
+                "dimension",
+            ),
+        ] {
+            let r = ask(line);
+            assert_eq!(r["ok"], json!(false), "{line}");
+            assert!(r["error"].as_str().unwrap().contains(needle), "{line}: {r}");
+        }
+    }
+
+    #[test]
+    fn conic_equations_read_like_the_text() {
+        let k = |c: [i64; 6]| conic_polynomial(&c.map(BigInt::from));
+        assert_eq!(k([4, 0, 3, 0, -10, 3]), "4x^2 + 3y^2 - 10y + 3");
+        assert_eq!(k([-1, 1, 0, 0, 0, 0]), "-x^2 + xy");
+        assert_eq!(k([0, 0, 0, 0, 0, -1]), "-1");
+        assert_eq!(k([0, 0, 0, 0, 0, 0]), "0");
     }
 
     #[test]

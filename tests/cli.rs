@@ -91,6 +91,42 @@ fn elevate_split_derivative() {
 }
 
 #[test]
+fn rational_conic_surface_fit() {
+    // text 001, Example 3
+    assert_eq!(
+        ok(&["conic", "-1,1; 0,-1; 1,1", "--weights", "1, 1/2, 1"]),
+        "type: ellipse\nimplicit: 4x^2 + 3y^2 - 10y + 3 = 0\n"
+    );
+    assert_eq!(
+        json_out(&["conic", "-1,1; 0,-1; 1,1", "--weights", "1, 1, 1", "--format", "json"]),
+        json!({"ok": true, "type": "parabola", "implicit": ["1", "0", "0", "0", "-1", "0"]})
+    );
+    assert_eq!(
+        ok(&["eval", "1,0; 1,1; 0,1", "--weights", "1,1,2", "--t", "1/2"]),
+        "(3/5, 4/5)\n"
+    );
+    assert_eq!(
+        ok(&["surface", "0,0,0; 0,1,0 | 1,0,0; 1,1,1", "--u", "1/3", "--v", "3/4"]),
+        "(1/3, 3/4, 1/4)\n"
+    );
+    let fit = [
+        "fit", "--x0", "0,0,0", "--x1", "4,0,5", "--xh", "2,3/2,1", "--d0", "3,6,0", "--d1", "3,-6,12",
+    ];
+    assert_eq!(
+        ok(&fit),
+        "k = 1/3\nl = 1/3\npoints: (0, 0, 0); (1, 2, 0); (3, 2, 1); (4, 0, 5)\ndelta2 = 0\n"
+    );
+    let err = fails(&[
+        "fit", "--x0", "0,0", "--x1", "1,0", "--xh", "0,1", "--d0", "1,0", "--d1", "2,0",
+    ]);
+    assert!(err.contains("parallel"), "{err}");
+    let err = fails(&["conic", "-1,1; 0,-1; 1,1", "--weights", "1, 1/2"]);
+    assert!(err.contains("2 weights for 3 control points"), "{err}");
+    let err = fails(&["surface", "0,0 | 1,0; 1,1", "--u", "0", "--v", "0"]);
+    assert!(err.contains("ragged"), "{err}");
+}
+
+#[test]
 fn printed_points_are_valid_input() {
     let elevated = ok(&["elevate", CUBIC, "--by", "3"]);
     let a = ok(&["eval", elevated.trim(), "--t", "2/7"]);

@@ -56,6 +56,11 @@ fn every_line_is_answered_in_order_with_ids() {
         r#"{"id":14,"op":"eval","points":[[0]]}"#,
         r#""#,
         r#"{"id":16,"op":"eval","points":[[0],[1]],"t":0.1,"approx":[0.1]}"#,
+        r#"{"id":17,"op":"conic","points":[[-1,1],[0,-1],[1,1]],"weights":[1,"1/2",1]}"#,
+        r#"{"id":18,"op":"rational_eval","points":[[1,0],[1,1],[0,1]],"weights":[1,1,2],"t":"1/2"}"#,
+        r#"{"id":19,"op":"surface_eval","net":[[[0,0,0],[0,1,0]],[[1,0,0],[1,1,1]]],"u":"1/3","v":"3/4"}"#,
+        r#"{"id":20,"op":"fit_cubic","x0":[0,0,0],"x1":[4,0,5],"xh":[2,"3/2",1],"d0":[3,6,0],"d1":[3,-6,12]}"#,
+        r#"{"id":21,"op":"conic","points":[[-1,1],[0,-1],[1,1]],"weights":[1,"1/2"]}"#,
     ];
     let input = lines.join("\n") + "\n";
     let out = session(input.as_bytes());
@@ -98,6 +103,14 @@ fn every_line_is_answered_in_order_with_ids() {
     assert_eq!(out[16]["point"], json!(["3602879701896397/36028797018963968"]));
     assert_eq!(out[16]["ulps"], json!([0]));
     assert_eq!(out[16]["error_ulps"], json!([0.0]));
+    assert_eq!(out[17]["implicit"], json!(["4", "0", "3", "0", "-10", "3"]));
+    assert_eq!(out[18]["point"], json!(["3/5", "4/5"]));
+    assert_eq!(out[19]["point"], json!(["1/3", "3/4", "1/4"]));
+    assert_eq!(
+        (&out[20]["k"], &out[20]["l"], &out[20]["delta2"]),
+        (&json!("1/3"), &json!("1/3"), &json!("0"))
+    );
+    assert_eq!((&out[21]["id"], &out[21]["ok"]), (&json!(21), &json!(false)));
 }
 
 #[test]
