@@ -233,8 +233,7 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             let scheme = curve.scheme(&t);
             match format {
                 Format::Text => {
-                    print!("{scheme}");
-                    println!("b({}) = {}", t, answer.to_text());
+                    output(&format!("{scheme}b({}) = {}\n", t, answer.to_text()))?;
                     Ok(ExitCode::SUCCESS)
                 }
                 Format::Json => {
@@ -305,17 +304,28 @@ fn number_arg(flag: &str, text: &str) -> Result<BigRational, String> {
 /// Prints an answer as text, or as the oracle's JSON object (plus an `extra` field).
 fn emit(answer: &Answer, format: Format, extra: Option<(&str, Value)>) -> Result<ExitCode, String> {
     match format {
-        Format::Text => println!("{}", answer.to_text()),
+        Format::Text => output(&format!("{}\n", answer.to_text()))?,
         Format::Json => {
             let mut m = answer.to_json();
             m.insert("ok".into(), json!(true));
             if let Some((k, v)) = extra {
                 m.insert(k.into(), v);
             }
-            println!("{}", Value::Object(m));
+            output(&format!("{}\n", Value::Object(m)))?;
         }
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// Writes to stdout. `println!` would panic when the reader has gone (`casteljau … | head`);
+/// a closed pipe just means nobody wants the rest, so the command ends quietly.
+fn output(text: &str) -> Result<(), String> {
+    let mut out = io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == io::ErrorKind::BrokenPipe => std::process::exit(0),
+        Err(e) => Err(format!("cannot write the output: {e}")),
+    }
 }
 
 fn prove(paths: &[PathBuf], id: Option<&str>, format: Format) -> Result<ExitCode, String> {
@@ -328,8 +338,8 @@ fn prove(paths: &[PathBuf], id: Option<&str>, format: Format) -> Result<ExitCode
     if let Some(id) = id {
         let text = explain(paths, id).map_err(|e| e.to_string())?;
         match format {
-            Format::Text => println!("{}", text.trim_end()),
-            Format::Json => println!("{}", json!({"id": id, "explanation": text})),
+            Format::Text => output(&format!("{}\n", text.trim_end()))?,
+            Format::Json => output(&format!("{}\n", json!({"id": id, "explanation": text})))?,
         }
         return Ok(ExitCode::SUCCESS);
     }
@@ -348,8 +358,8 @@ fn prove(paths: &[PathBuf], id: Option<&str>, format: Format) -> Result<ExitCode
     }
     let report = report.map_err(|e| e.to_string())?;
     match format {
-        Format::Text => print!("{}", report.to_text()),
-        Format::Json => println!("{}", report.to_json()),
+        Format::Text => output(&report.to_text())?,
+        Format::Json => output(&format!("{}\n", report.to_json()))?,
     }
     Ok(if report.mismatches() > 0 {
         ExitCode::from(1)
