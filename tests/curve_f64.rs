@@ -132,6 +132,20 @@ proptest! {
         prop_assert!(c.derivative_at(n + 1, &t).unwrap().is_zero());
     }
 
+    /// The allocation-free fast path performs the very same operations: bit-for-bit equal.
+    #[test]
+    fn eval_array_is_bitwise_eval(c in f64_curve(0..=24, 1..=3, 100.0), t in wide_parameter_f64()) {
+        let slow = c.eval(&t);
+        let fast: Vec<f64> = match c.dim() {
+            1 => c.eval_array::<1>(t).unwrap().to_vec(),
+            2 => c.eval_array::<2>(t).unwrap().to_vec(),
+            _ => c.eval_array::<3>(t).unwrap().to_vec(),
+        };
+        let same_bits = fast.iter().zip(slow.coords()).all(|(a, b)| a.to_bits() == b.to_bits());
+        prop_assert!(same_bits, "{:?} vs {:?}", fast, slow.coords());
+        prop_assert!(c.eval_array::<4>(t).is_err());
+    }
+
     // ---- f64 against the exact result of the same inputs ----
 
     /// de Casteljau: at most 5n ulp(M); the Bernstein sum: at most 4n + 2 ulp(M).
