@@ -21,7 +21,7 @@ fn curves(n: usize) -> (BezierCurve<BigRational>, BezierCurve<f64>) {
         })
         .collect();
     let exact = BezierCurve::from_coords(coords).unwrap();
-    let float = exact.try_map(|c| f64::from_rational(c)).unwrap();
+    let float = exact.try_map(f64::from_rational).unwrap();
     (exact, float)
 }
 
