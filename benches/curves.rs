@@ -112,5 +112,18 @@ fn versus_kurbo(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, versus_kurbo, generic_ops);
+/// Many elevation steps at once by (8): dominated by the exact binomial rows.
+fn elevate_many(c: &mut Criterion) {
+    let (exact, float) = curves(3);
+    let mut group = c.benchmark_group("elevate_by_1000");
+    group
+        .sample_size(10)
+        .measurement_time(Duration::from_secs(2))
+        .warm_up_time(Duration::from_millis(500));
+    group.bench_function("f64", |b| b.iter(|| float.elevate_by(black_box(1000)).unwrap()));
+    group.bench_function("rational", |b| b.iter(|| exact.elevate_by(black_box(1000)).unwrap()));
+    group.finish();
+}
+
+criterion_group!(benches, versus_kurbo, generic_ops, elevate_many);
 criterion_main!(benches);

