@@ -52,6 +52,9 @@ fn generic_ops(c: &mut Criterion) {
                     group.bench_with_input(BenchmarkId::new("rational", n), &exact, |b, c| {
                         b.iter(|| c.eval(black_box(&t_exact)))
                     });
+                    group.bench_with_input(BenchmarkId::new("rational_fraction_free", n), &exact, |b, c| {
+                        b.iter(|| c.eval_fraction_free(black_box(&t_exact)))
+                    });
                 }
                 "split" => {
                     group.bench_with_input(BenchmarkId::new("f64", n), &float, |b, c| {
@@ -125,5 +128,32 @@ fn elevate_many(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, versus_kurbo, generic_ops, elevate_many);
+/// Exact evaluation, naive (a reduced fraction at every step) against fraction-free, at
+/// degrees where the difference shows.
+fn exact_eval_naive_vs_fraction_free(c: &mut Criterion) {
+    let t = BigRational::from_ratio(2, 7).unwrap();
+    let mut group = c.benchmark_group("exact_eval");
+    group
+        .sample_size(10)
+        .measurement_time(Duration::from_secs(2))
+        .warm_up_time(Duration::from_millis(300));
+    for n in [10usize, 50, 200] {
+        let (exact, _) = curves(n);
+        group.bench_with_input(BenchmarkId::new("naive", n), &exact, |b, c| {
+            b.iter(|| c.eval(black_box(&t)))
+        });
+        group.bench_with_input(BenchmarkId::new("fraction_free", n), &exact, |b, c| {
+            b.iter(|| c.eval_fraction_free(black_box(&t)))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(
+    benches,
+    versus_kurbo,
+    generic_ops,
+    elevate_many,
+    exact_eval_naive_vs_fraction_free
+);
 criterion_main!(benches);

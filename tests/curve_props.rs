@@ -62,6 +62,7 @@ proptest! {
         prop_assert_eq!(&by_casteljau, &c.eval_bernstein(&t));
         prop_assert_eq!(&by_casteljau, &eval_power_points(&c.to_power().unwrap(), &t));
         prop_assert_eq!(&by_casteljau, &c.scheme(&t).point().clone());
+        prop_assert_eq!(&by_casteljau, &c.eval_fraction_free(&t));
         // Per coordinate, through the scalar conversion directly.
         for k in 0..c.dim() {
             let coord: Vec<Q> = c.points().iter().map(|p| p.coords()[k].clone()).collect();
@@ -73,6 +74,7 @@ proptest! {
     #[test]
     fn large_coordinates_evaluate_consistently(c in large_exact_curve(0..=8, 1..=2), t in wide_parameter()) {
         prop_assert_eq!(c.eval(&t), c.eval_bernstein(&t));
+        prop_assert_eq!(c.eval(&t), c.eval_fraction_free(&t));
         prop_assert_eq!(BezierCurve::from_power(&c.to_power().unwrap()).unwrap(), c.clone());
     }
 
