@@ -3,6 +3,9 @@
 //! (Skeleton: the public API the `casteljau prove` command is written against. The claim
 //! format, the expression parser and the proof engine fill it in.)
 
+pub mod eval;
+pub mod expr;
+
 use crate::error::Result;
 use serde::Serialize;
 use std::path::PathBuf;
