@@ -560,23 +560,19 @@ impl<'e, A: Alg> Evaluator<'e, A> {
                 Value::S(bernstein(i, n, &g)?)
             }
             "__dB" => {
-                let (i, n) = (self.int(&args[0])?, self.int(&args[1])?);
+                let (i, n, k) = (self.int(&args[0])?, self.int(&args[1])?, self.int(&args[3])?);
                 check_index(n)?;
                 check_index(i)?;
+                check_index(k)?;
                 let g = self.scalar(&args[2])?;
-                if i < 0 || i > n {
-                    return Ok(Value::S(A::from_int(0)));
-                }
-                let one_minus = A::from_int(1).sub(&g);
-                let c = A::from_bigint(&binomial_signed(n, i));
-                let left = dpow(&g, i)?.mul(&one_minus.pow(n - i)?);
-                let right = g.pow(i)?.mul(&dpow(&one_minus, n - i)?);
-                Value::S(c.mul(&left.sub(&right)))
+                Value::S(bernstein_derivative(i, n, &g, k)?)
             }
             "__dpow" => {
-                let k = self.int(&args[1])?;
+                let (e, k) = (self.int(&args[1])?, self.int(&args[2])?);
+                check_index(e)?;
+                check_index(k)?;
                 let g = self.scalar(&args[0])?;
-                Value::S(dpow(&g, k)?)
+                Value::S(power_derivative(&g, e, k)?)
             }
             "C" | "binom" => Value::S(A::from_int(self.int(e)?)),
             "sqrt" => {
@@ -616,6 +612,16 @@ impl<'e, A: Alg> Evaluator<'e, A> {
                 }
             }
             "transpose" => transpose(self.eval(&args[0])?)?,
+            "comp" => {
+                let k = self.int(&args[1])?;
+                let v = self.eval(&args[0])?;
+                let entries = v.entries();
+                let x = usize::try_from(k - 1)
+                    .ok()
+                    .and_then(|i| entries.get(i))
+                    .ok_or_else(|| Error::Domain(format!("'{e}': {} has no coordinate {k}", v.shape())))?;
+                Value::S((*x).clone())
+            }
             "det" | "inv" => {
                 let m = match self.eval(&args[0])? {
                     Value::M(m) if m.len() == m[0].len() && m.len() <= 4 => m,
@@ -685,12 +691,36 @@ fn restore(ints: &mut BTreeMap<String, i64>, v: &str, saved: Option<i64>) {
     };
 }
 
-/// `k g^(k-1)`, zero when `k = 0` (even where `g = 0`).
-fn dpow<A: Alg>(g: &A, k: i64) -> Result<A> {
-    if k == 0 {
+/// The `k`-th derivative of `g^e` with respect to `g`: `e(e-1)…(e-k+1) g^(e-k)`, zero when
+/// the falling factorial is (so `d/dg g^0 = 0` even at `g = 0`).
+fn power_derivative<A: Alg>(g: &A, e: i64, k: i64) -> Result<A> {
+    let mut ff = BigInt::from(1);
+    for m in 0..k {
+        ff *= e - m;
+    }
+    if ff.is_zero() {
         return Ok(A::from_int(0));
     }
-    Ok(A::from_int(k).mul(&g.pow(k - 1)?))
+    Ok(A::from_bigint(&ff).mul(&g.pow(e - k)?))
+}
+
+/// The `k`-th derivative of `B_i^n(g) = C(n,i) g^i (1-g)^(n-i)` with respect to `g`, by
+/// Leibniz's rule on the two powers (independent of the difference formulas it is used to check).
+fn bernstein_derivative<A: Alg>(i: i64, n: i64, g: &A, k: i64) -> Result<A> {
+    if i < 0 || i > n {
+        return Ok(A::from_int(0));
+    }
+    let s = A::from_int(1).sub(g);
+    let mut acc = A::from_int(0);
+    for m in 0..=k {
+        let left = power_derivative(g, i, m)?;
+        let mut right = power_derivative(&s, n - i, k - m)?;
+        if (k - m) % 2 == 1 {
+            right = right.neg(); // d/dg (1-g) = -1
+        }
+        acc = acc.add(&A::from_bigint(&binomial_signed(k, m)).mul(&left).mul(&right));
+    }
+    Ok(A::from_bigint(&binomial_signed(n, i)).mul(&acc))
 }
 
 /// `B_i^n(g) = C(n,i) g^i (1-g)^(n-i)`, zero outside `0 ≤ i ≤ n`.

@@ -20,7 +20,8 @@
 //! Functions: `B(i, n, t)` (Bernstein, zero for `i < 0` or `i > n`), `C(n, k)` / `binom(n, k)`
 //! (zero outside `0 ≤ k ≤ n`), `sum(r, a, b, body)` (`a ≤ r ≤ b`, empty when `a > b`),
 //! `sqrt(d)` (exact), `diff(e, t)` / `diff(e, t, k)`, `dot(a, b)`, `det(M)`, `inv(M)`,
-//! `rows(v1, v2, …)`, `cols(v1, v2, …)`, `transpose(M)`, `delta(b, k, j)` (forward difference
+//! `rows(v1, v2, …)`, `cols(v1, v2, …)`, `transpose(M)`, `comp(v, k)` (the `k`-th coordinate,
+//! from 1), `delta(b, k, j)` (forward difference
 //! `Δ^k b_j` of a control polygon). Claim objects are called by name: `b(t)` (a curve),
 //! `b(i, r, t)` (the de Casteljau point `b_i^r(t)`), `b'(t)` (derivative), `b[j]` (a control
 //! point), `x(u, v)` (a surface).
@@ -49,7 +50,7 @@ pub const MAX_DEPTH: usize = 200;
 
 /// Built-in function names (they are never split into one-letter variables).
 pub const FUNCTIONS: &[&str] = &[
-    "B", "C", "binom", "sum", "sqrt", "diff", "dot", "det", "inv", "rows", "cols", "transpose", "delta",
+    "B", "C", "binom", "sum", "sqrt", "diff", "dot", "det", "inv", "rows", "cols", "transpose", "delta", "comp",
 ];
 
 /// A binary operator.
@@ -633,7 +634,7 @@ impl Parser<'_> {
 fn check_arity(name: &str, n: usize) -> std::result::Result<(), String> {
     let ok = match name {
         "B" => n == 3,
-        "C" | "binom" | "dot" => n == 2,
+        "C" | "binom" | "dot" | "comp" => n == 2,
         "sqrt" | "det" | "inv" | "transpose" => n == 1,
         "diff" => n == 2 || n == 3,
         "delta" => n == 3,
@@ -647,6 +648,7 @@ fn check_arity(name: &str, n: usize) -> std::result::Result<(), String> {
             "B" => "3 arguments: B(i, n, t)",
             "C" | "binom" => "2 arguments: C(n, k)",
             "dot" => "2 arguments: dot(a, b)",
+            "comp" => "2 arguments: comp(v, k), the k-th coordinate (from 1)",
             "diff" => "2 or 3 arguments: diff(e, t) or diff(e, t, k)",
             "delta" => "3 arguments: delta(b, k, j)",
             "rows" | "cols" => "at least one argument",
@@ -808,40 +810,89 @@ pub fn expand_diffs(e: &Expr) -> Result<Expr> {
     Ok(inner)
 }
 
-fn is_const_in(e: &Expr, var: &str) -> bool {
-    !e.mentions(var)
+fn is_lit(e: &Expr, v: i64) -> bool {
+    matches!(e, Expr::Num(r) if *r == BigRational::from_integer(v.into()))
+}
+
+/// `a + b`, dropping literal zeros (keeps derivative trees from doubling at every order).
+fn sadd(a: Expr, b: Expr) -> Expr {
+    if is_lit(&a, 0) {
+        b
+    } else if is_lit(&b, 0) {
+        a
+    } else {
+        Expr::add(a, b)
+    }
+}
+
+fn ssub(a: Expr, b: Expr) -> Expr {
+    if is_lit(&b, 0) {
+        a
+    } else if is_lit(&a, 0) {
+        Expr::Neg(Box::new(b))
+    } else {
+        Expr::sub(a, b)
+    }
+}
+
+/// `a * b`, with `0 * x = 0` and `1 * x = x` for literals.
+fn smul(a: Expr, b: Expr) -> Expr {
+    if is_lit(&a, 0) || is_lit(&b, 0) {
+        Expr::int(0)
+    } else if is_lit(&a, 1) {
+        b
+    } else if is_lit(&b, 1) {
+        a
+    } else {
+        Expr::mul(a, b)
+    }
 }
 
 /// The derivative of `e` with respect to `var`.
 pub fn derive(e: &Expr, var: &str) -> Result<Expr> {
     let zero = || Expr::int(0);
-    if is_const_in(e, var) && !e.called_names().iter().any(|_| true) {
+    if !e.mentions(var) && e.called_names().is_empty() {
         return Ok(zero());
     }
     Ok(match e {
         Expr::Num(_) => zero(),
         Expr::Var(v) => Expr::int(i64::from(v == var)),
-        Expr::Neg(a) => Expr::Neg(Box::new(derive(a, var)?)),
-        Expr::Bin(Op::Add, a, b) => Expr::add(derive(a, var)?, derive(b, var)?),
-        Expr::Bin(Op::Sub, a, b) => Expr::sub(derive(a, var)?, derive(b, var)?),
-        Expr::Bin(Op::Mul, a, b) => Expr::add(
-            Expr::mul(derive(a, var)?, (**b).clone()),
-            Expr::mul((**a).clone(), derive(b, var)?),
+        Expr::Neg(a) => {
+            let d = derive(a, var)?;
+            if is_lit(&d, 0) {
+                d
+            } else {
+                Expr::Neg(Box::new(d))
+            }
+        }
+        Expr::Bin(Op::Add, a, b) => sadd(derive(a, var)?, derive(b, var)?),
+        Expr::Bin(Op::Sub, a, b) => ssub(derive(a, var)?, derive(b, var)?),
+        Expr::Bin(Op::Mul, a, b) => sadd(
+            smul(derive(a, var)?, (**b).clone()),
+            smul((**a).clone(), derive(b, var)?),
         ),
-        Expr::Bin(Op::Div, a, b) => Expr::div(
-            Expr::sub(
-                Expr::mul(derive(a, var)?, (**b).clone()),
-                Expr::mul((**a).clone(), derive(b, var)?),
-            ),
-            Expr::pow((**b).clone(), Expr::int(2)),
-        ),
+        Expr::Bin(Op::Div, a, b) => {
+            let (da, db) = (derive(a, var)?, derive(b, var)?);
+            if is_lit(&db, 0) {
+                if is_lit(&da, 0) {
+                    zero()
+                } else {
+                    Expr::div(da, (**b).clone())
+                }
+            } else {
+                Expr::div(
+                    ssub(smul(da, (**b).clone()), smul((**a).clone(), db)),
+                    Expr::pow((**b).clone(), Expr::int(2)),
+                )
+            }
+        }
         Expr::Bin(Op::Pow, a, k) => {
             if k.mentions(var) {
                 return Err(Error::Domain(format!("cannot differentiate '{e}': the exponent depends on {var}")));
             }
-            // k a^(k-1) a', written so that k = 0 gives 0 even where a = 0.
-            Expr::mul(
-                Expr::Call("__dpow".into(), vec![(**a).clone(), (**k).clone()]),
+            // d/dx a^k = (k-th power rule, written so that k = 0 gives 0 even where a = 0)
+            smul(
+                Expr::Call("__dpow".into(), vec![(**a).clone(), (**k).clone(), Expr::int(1)]),
                 derive(a, var)?,
             )
         }
@@ -850,7 +901,12 @@ pub fn derive(e: &Expr, var: &str) -> Result<Expr> {
             if v == var {
                 return Err(Error::Domain(format!("cannot differentiate by the summation variable {var}")));
             }
-            Expr::Sum(v.clone(), a.clone(), b.clone(), Box::new(derive(body, var)?))
+            let d = derive(body, var)?;
+            if is_lit(&d, 0) {
+                d
+            } else {
+                Expr::Sum(v.clone(), a.clone(), b.clone(), Box::new(d))
+            }
         }
         Expr::Tuple(items) => Expr::Tuple(items.iter().map(|x| derive(x, var)).collect::<Result<_>>()?),
         Expr::Matrix(rows) => Expr::Matrix(
@@ -868,6 +924,19 @@ pub fn derive(e: &Expr, var: &str) -> Result<Expr> {
     })
 }
 
+fn bump_order(name: &str, args: &[Expr], var: &str, e: &Expr) -> Result<Expr> {
+    // __dB(i, n, g, k) / __dpow(g, e, k): the k-th derivative with respect to g; one more
+    // derivative raises k by one and multiplies by g' (chain rule).
+    let (g, fixed) = if name == "__dB" { (&args[2], &args[..2]) } else { (&args[0], &args[1..2]) };
+    if fixed.iter().any(|a| a.mentions(var)) {
+        return Err(Error::Domain(format!("cannot differentiate '{e}' by {var}")));
+    }
+    let mut next = args.to_vec();
+    let k = next.last().cloned().expect("order argument");
+    *next.last_mut().expect("order argument") = Expr::add(k, Expr::int(1));
+    Ok(smul(Expr::Call(name.into(), next), derive(g, var)?))
+}
+
 fn derive_call(e: &Expr, name: &str, args: &[Expr], var: &str) -> Result<Expr> {
     let zero = Expr::int(0);
     let unsupported = || Error::Domain(format!("cannot differentiate '{e}' by {var}"));
@@ -876,28 +945,23 @@ fn derive_call(e: &Expr, name: &str, args: &[Expr], var: &str) -> Result<Expr> {
             if args[0].mentions(var) || args[1].mentions(var) {
                 return Err(unsupported());
             }
-            Ok(Expr::mul(
-                Expr::Call("__dB".into(), args.to_vec()),
-                derive(&args[2], var)?,
-            ))
+            let mut a = args.to_vec();
+            a.push(Expr::int(1));
+            Ok(smul(Expr::Call("__dB".into(), a), derive(&args[2], var)?))
         }
-        "C" | "binom" | "delta" => {
+        "__dB" | "__dpow" => bump_order(name, args, var, e),
+        "C" | "binom" | "delta" | "sqrt" => {
             if args.iter().any(|a| a.mentions(var)) {
                 return Err(unsupported());
             }
             Ok(zero)
         }
-        "sqrt" => {
-            if args[0].mentions(var) {
-                return Err(unsupported());
-            }
-            Ok(zero)
-        }
-        "dot" => Ok(Expr::add(
+        "comp" => Ok(Expr::Call("comp".into(), vec![derive(&args[0], var)?, args[1].clone()])),
+        "dot" => Ok(sadd(
             Expr::Call("dot".into(), vec![derive(&args[0], var)?, args[1].clone()]),
             Expr::Call("dot".into(), vec![args[0].clone(), derive(&args[1], var)?]),
         )),
-        "__dpow" | "__dB" | "det" | "inv" | "rows" | "cols" | "transpose" => {
+        "det" | "inv" | "rows" | "cols" | "transpose" => {
             if args.iter().any(|a| a.mentions(var)) {
                 return Err(unsupported());
             }
@@ -914,10 +978,7 @@ fn derive_call(e: &Expr, name: &str, args: &[Expr], var: &str) -> Result<Expr> {
             if !args[0].mentions(var) {
                 return Ok(zero);
             }
-            Ok(Expr::mul(
-                Expr::Call(format!("{name}'"), args.to_vec()),
-                derive(&args[0], var)?,
-            ))
+            Ok(smul(Expr::Call(format!("{name}'"), args.to_vec()), derive(&args[0], var)?))
         }
     }
 }
@@ -1077,7 +1138,7 @@ mod tests {
         let e = expand(&p("e(2) + e(j)"), &[d]).unwrap();
         assert_eq!(e.to_string(), "2/(n + 1)*b[2 - 1] + j/(n + 1)*b[j - 1]");
         let dd = expand_diffs(&p("diff(t^3, t)")).unwrap();
-        assert!(dd.to_string().contains("__dpow(t, 3)"), "{dd}");
+        assert!(dd.to_string().contains("__dpow(t, 3, 1)"), "{dd}");
     }
 
     #[test]
