@@ -50,10 +50,20 @@ pub use scalar::{RefOps, Scalar};
 // Re-exports of the later modules, one block each so that their work merges cleanly.
 
 // --- rational curves, conics, quadratic irrationals (issue 3)
+pub use quadratic::QuadraticIrrational;
+pub use rational::{
+    classify_conic, conic_arc_passes_infinity, conic_shape_factor, implicit_conic, ConicKind, ExactSqrt, ImplicitConic,
+    RationalBezierCurve,
+};
 
 // --- surfaces (issue 4)
+pub use surface::{enneper_net, BezierSurface, EnneperMatch};
 
 // --- fitting (issue 5)
+pub use fit::{
+    fit_cubic, fit_cubic_closed_form, fit_cubic_to, fit_least_squares, CubicFit, CubicFitData, CubicFitSource,
+    FitConstraints, LeastSquaresFit,
+};
 
 // --- verification (issue 6)
 

@@ -123,6 +123,12 @@ where
         }
         acc
     }
+    /// `Ok` for a genuine number. Scalars whose operators can produce an invalid value say
+    /// why here: a [`crate::QuadraticIrrational`] that mixed `√2` with `√3` reports
+    /// [`Error::MixedField`]. The default (f64, rationals) is always `Ok`.
+    fn check(&self) -> Result<()> {
+        Ok(())
+    }
     /// Whether two values are equal: exactly for exact types, within `tol` (relative to the
     /// larger magnitude, absolute below 1) for floats.
     fn approx_eq(&self, other: &Self, tol: f64) -> bool {
