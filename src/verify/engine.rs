@@ -8,6 +8,7 @@ use super::expr::{self, check_index, parse, parse_definition, parse_range, Defin
 use super::poly::{set_names, Poly, RatFunc};
 use super::Verdict;
 use crate::curve::BezierCurve;
+use crate::surface::BezierSurface;
 use crate::error::{Error, Result};
 use crate::point::Point;
 use crate::scalar::{RefOps, Scalar};
@@ -62,7 +63,7 @@ impl<'c> Ctx<'c> {
     /// Parses the claim's shared fields.
     pub fn new(claim: &'c Claim) -> Result<Self> {
         let mut known = claim.known_names();
-        known.extend(POLYGON_METHODS.iter().map(|s| s.to_string()));
+        known.extend(POLYGON_METHODS.iter().chain(NET_METHODS).map(|s| s.to_string()));
         let mut defs: Vec<Definition> = Vec::new();
         for d in claim.defs.iter().flatten() {
             let mut def = parse_definition(d, &known)?;
@@ -203,8 +204,8 @@ where
 pub enum CurveObj<T> {
     /// `Σ b_i B_i^n(t)`.
     Polynomial(BezierCurve<T>),
-    /// `Σ w_i b_i B_i^n(t) / Σ w_i B_i^n(t)`, kept as its homogeneous lift `(w_i b_i, w_i)`.
-    Rational(BezierCurve<T>),
+    /// `Σ w_i b_i B_i^n(t) / Σ w_i B_i^n(t)` (the library's rational curve).
+    Rational(crate::rational::RationalBezierCurve<T>),
 }
 
 impl<T: Exact> CurveObj<T>
@@ -217,47 +218,28 @@ where
         match &spec.weights {
             None => Ok(CurveObj::Polynomial(BezierCurve::new(pts)?)),
             Some(w) => {
-                if w.len() != pts.len() {
-                    return Err(Error::WrongCount {
-                        what: "weights of a rational curve",
-                        needed: pts.len(),
-                        got: w.len(),
-                    });
-                }
-                let lifted = pts
-                    .iter()
-                    .zip(w)
-                    .map(|(p, w)| {
-                        let w: T = constant(&w.text()?)?;
-                        let mut c: Vec<T> = p.coords().iter().map(|x| x * &w).collect();
-                        c.push(w);
-                        Point::new(c)
-                    })
-                    .collect::<Result<Vec<_>>>()?;
-                Ok(CurveObj::Rational(BezierCurve::new(lifted)?))
+                let w = w.iter().map(|x| constant(&x.text()?)).collect::<Result<Vec<T>>>()?;
+                Ok(CurveObj::Rational(crate::rational::RationalBezierCurve::new(pts, w)?))
             }
         }
     }
     fn degree(&self) -> usize {
         match self {
-            CurveObj::Polynomial(c) | CurveObj::Rational(c) => c.degree(),
+            CurveObj::Polynomial(c) => c.degree(),
+            CurveObj::Rational(c) => c.degree(),
         }
     }
     fn dim(&self) -> usize {
         match self {
             CurveObj::Polynomial(c) => c.dim(),
-            CurveObj::Rational(c) => c.dim() - 1,
+            CurveObj::Rational(c) => c.dim(),
         }
     }
     /// The point at `t` (the projection of the lift for a rational curve).
     pub fn eval(&self, t: &T) -> Result<Vec<T>> {
         match self {
             CurveObj::Polynomial(c) => Ok(c.eval(t).into_coords()),
-            CurveObj::Rational(c) => {
-                let p = c.eval(t).into_coords();
-                let (w, xs) = p.split_last().expect("lift has dimension >= 2");
-                xs.iter().map(|x| Scalar::checked_div(x, w)).collect()
-            }
+            CurveObj::Rational(c) => Ok(c.eval(t)?.into_coords()),
         }
     }
 }
@@ -276,16 +258,12 @@ where
     Ok(net)
 }
 
-/// `Σ_i Σ_j b_ij B_i^m(u) B_j^n(v)`, by de Casteljau along `v` in each row, then along `u`.
+/// `Σ_i Σ_j b_ij B_i^m(u) B_j^n(v)` by the library ([`BezierSurface::eval`], u first).
 pub fn eval_net<T: Exact>(net: &[Vec<Point<T>>], u: &T, v: &T) -> Result<Point<T>>
 where
     for<'a> &'a T: RefOps<T>,
 {
-    let col: Vec<Point<T>> = net
-        .iter()
-        .map(|row| Ok(BezierCurve::new(row.clone())?.eval(v)))
-        .collect::<Result<_>>()?;
-    Ok(BezierCurve::new(col)?.eval(u))
+    Ok(BezierSurface::new(net.to_vec())?.eval(u, v))
 }
 
 // ---------------------------------------------------------------------------------------
@@ -367,6 +345,9 @@ where
             }
         }
         if let Some((nname, net)) = &self.net {
+            if let Some(v) = net_method(nname, net, name, args, ev)? {
+                return Ok(Some(v));
+            }
             if nname == base {
                 if args.len() != 2 || order > 0 {
                     return Err(Error::Domain(format!("the net {base} is called as {base}(u, v)")));
@@ -532,6 +513,53 @@ fn polygon_method_deg(n: u64, name: &str, args: &[Expr], ev: &mut Evaluator<'_, 
     Ok(d)
 }
 
+/// The library's operations on the symbolic net: `vfirst(b, u, v)` (eval_v_first),
+/// `sbsum(b, u, v)` (eval_bernstein), `isou(b, u0, v)` (iso_u(u0) at v), `isov(b, v0, u)`
+/// (iso_v(v0) at u), `bnd(b, k, s)` (boundary curve k = 0..3 at s), `corner(b, k, 0)`.
+pub const NET_METHODS: &[&str] = &["vfirst", "sbsum", "isou", "isov", "bnd", "corner"];
+
+fn net_method<T: Exact>(
+    nname: &str,
+    net: &[Vec<T>],
+    name: &str,
+    args: &[Expr],
+    ev: &mut Evaluator<'_, T>,
+) -> Result<Option<Value<T>>>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    if !NET_METHODS.contains(&name) || !matches!(args.first(), Some(Expr::Var(v)) if v == nname) {
+        return Ok(None);
+    }
+    if args.len() != 3 {
+        return Err(Error::Domain(format!("{name} takes 3 arguments")));
+    }
+    let pts: Vec<Vec<Point<T>>> = net
+        .iter()
+        .map(|r| r.iter().map(|c| Point::new(vec![c.clone()])).collect::<Result<_>>())
+        .collect::<Result<_>>()?;
+    let s = BezierSurface::new(pts)?;
+    let p = match name {
+        "vfirst" => s.eval_v_first(&ev.scalar(&args[1])?, &ev.scalar(&args[2])?),
+        "sbsum" => s.eval_bernstein(&ev.scalar(&args[1])?, &ev.scalar(&args[2])?),
+        "isou" => s.iso_u(&ev.scalar(&args[1])?).eval(&ev.scalar(&args[2])?),
+        "isov" => s.iso_v(&ev.scalar(&args[1])?).eval(&ev.scalar(&args[2])?),
+        "bnd" | "corner" => {
+            let k = usize::try_from(ev.int(&args[1])?)
+                .ok()
+                .filter(|k| *k < 4)
+                .ok_or_else(|| Error::Domain(format!("{name}: k must be 0, 1, 2 or 3")))?;
+            if name == "bnd" {
+                s.boundary()[k].eval(&ev.scalar(&args[2])?)
+            } else {
+                s.corners()[k].clone()
+            }
+        }
+        _ => unreachable!("checked against NET_METHODS"),
+    };
+    Ok(Some(Value::S(p.coords()[0].clone())))
+}
+
 fn one_index(name: &str, idx: &[i64]) -> Result<()> {
     if idx.len() != 1 {
         return Err(Error::Domain(format!("the polygon {name} is indexed as {name}[j]")));
@@ -673,6 +701,27 @@ impl Env<Deg> for DegEnv {
             return Ok(Some(Value::V(vec![d; dim])));
         }
         if let Some((nname, m, n)) = &self.net {
+            if NET_METHODS.contains(&name) && matches!(args.first(), Some(Expr::Var(v)) if v == nname) {
+                let (m, n) = (*m, *n);
+                let mut d = match name {
+                    "vfirst" | "sbsum" => {
+                        let (u, v) = (ev.scalar(&args[1])?, ev.scalar(&args[2])?);
+                        u.compose(m).mul(&v.compose(n))
+                    }
+                    "isou" => {
+                        let (u0, v) = (ev.scalar(&args[1])?, ev.scalar(&args[2])?);
+                        u0.compose(m).mul(&v.compose(n))
+                    }
+                    "isov" => {
+                        let (v0, u) = (ev.scalar(&args[1])?, ev.scalar(&args[2])?);
+                        v0.compose(n).mul(&u.compose(m))
+                    }
+                    "bnd" => ev.scalar(&args[2])?.compose(m.max(n)),
+                    _ => Deg::default(),
+                };
+                d.poly = 1;
+                return Ok(Some(Value::S(d)));
+            }
             if nname == base {
                 let mut d = surface(ev, *m, *n)?;
                 d.poly = 1;
@@ -1340,8 +1389,9 @@ pub fn check_implies(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
     let (a, b) = ctx.equation(c.need(&c.equation, "equation")?)?;
     let (p, q) = ctx.equation(c.need(&c.premise, "premise")?)?;
     let factor = ctx.expr(c.need(&c.factor, "factor")?)?;
+    let is_zero = |e: &Expr| matches!(e, Expr::Num(r) if Scalar::is_zero(r));
     let concl = Expr::sub(a.clone(), b.clone());
-    let prem = Expr::sub(p.clone(), q.clone());
+    let prem = if is_zero(&q) { p.clone() } else { Expr::sub(p.clone(), q.clone()) };
     let rhs = Expr::mul(factor.clone(), prem.clone());
     let inst = BTreeMap::new();
     match symbolic_equal(ctx, &concl, &rhs, &inst)? {

@@ -109,6 +109,40 @@ impl Alg for BigRational {
     }
 }
 
+impl Alg for crate::quadratic::QuadraticIrrational {
+    fn from_rat(r: &BigRational) -> Self {
+        crate::quadratic::QuadraticIrrational::rational(r.clone())
+    }
+    fn add(&self, o: &Self) -> Self {
+        self + o
+    }
+    fn sub(&self, o: &Self) -> Self {
+        self - o
+    }
+    fn mul(&self, o: &Self) -> Self {
+        self * o
+    }
+    fn neg(&self) -> Self {
+        -self
+    }
+    fn div(&self, o: &Self) -> Result<Self> {
+        crate::scalar::Scalar::checked_div(self, o)
+    }
+    fn sqrt_rat(r: &BigRational) -> Result<Self> {
+        if r.is_negative() {
+            return Err(Error::Domain(format!("sqrt({r}): the square root of a negative number is not real")));
+        }
+        if let Ok(q) = rational_sqrt(r) {
+            return Ok(Self::from_rat(&q));
+        }
+        crate::quadratic::QuadraticIrrational::sqrt_rational(r)
+    }
+    fn equals(&self, o: &Self) -> Option<bool> {
+        // Mixing two fields (√2 and √3) poisons a value: it cannot be compared.
+        (self.is_valid() && o.is_valid()).then(|| self == o)
+    }
+}
+
 /// Degree bounds of a rational function: for each parameter `v`, the value is `P/Q` with
 /// `deg_v P ≤ num` and `deg_v Q ≤ den`, where `P` and `Q` are the formal numerator and
 /// denominator the evaluator builds (`a/b = (Pa Qb)/(Qa Pb)`, `a+b = (Pa Qb + Pb Qa)/(Qa Qb)`).

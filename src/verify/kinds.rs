@@ -19,6 +19,9 @@ use super::{theorems, Verdict};
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::point::Point;
+use crate::quadratic::QuadraticIrrational;
+use crate::rational::{classify_conic, RationalBezierCurve};
+use crate::surface::BezierSurface;
 use crate::scalar::sign;
 use num_rational::BigRational;
 use num_traits::Zero;
@@ -35,9 +38,11 @@ pub fn check_claim(claim: &Claim, detail: bool) -> Result<Checked> {
         "conic_type" => check_conic_type(&ctx),
         "implies" => check_implies(&ctx, detail),
         "theorem" => theorems::check_theorem(&ctx, detail),
+        "enneper" => check_enneper(&ctx, detail),
+        "weight_type" => check_weight_type(&ctx),
         "convergence" => theorems::check_convergence(&ctx, detail),
         other => Err(Error::Parse(format!(
-            "claim {}: unknown kind '{other}' (identity, implicit, bezier_points, conic_type, implies, theorem, convergence)",
+            "claim {}: unknown kind '{other}' (identity, implicit, bezier_points, conic_type, weight_type, enneper, implies, theorem, convergence)",
             claim.id
         ))),
     }
@@ -58,7 +63,23 @@ fn check_identity(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
     if ctx.symbolic() {
         check_chain_symbolic(ctx, &sides, detail)
     } else {
-        check_chain::<BigRational>(ctx, &sides, detail)
+        chain_in_field(ctx, &sides, detail)
+    }
+}
+
+/// Whether the claim writes a square root anywhere (then it is checked in `Q(√d)`).
+fn uses_sqrt(c: &Claim) -> bool {
+    format!("{c:?}").contains("sqrt")
+}
+
+/// Checks a chain in exact rationals, or in the quadratic irrationals when a `sqrt` occurs.
+fn chain_in_field(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Result<Checked> {
+    if uses_sqrt(ctx.claim) {
+        let mut out = check_chain::<QuadraticIrrational>(ctx, sides, detail)?;
+        out.certificate = format!("{} (exact arithmetic in Q(√d))", out.certificate);
+        Ok(out)
+    } else {
+        check_chain::<BigRational>(ctx, sides, detail)
     }
 }
 
@@ -83,7 +104,7 @@ fn check_implicit(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
     let on = ctx.expr(c.need(&c.on, "on")?)?;
     let (a, b) = ctx.equation(c.need(&c.equation, "equation")?)?;
     let sides = vec![on_curve(ctx, &a, &on), on_curve(ctx, &b, &on)];
-    let mut out = check_chain::<BigRational>(ctx, &sides, detail)?;
+    let mut out = chain_in_field(ctx, &sides, detail)?;
     out.certificate = format!("substituting the curve into the equation: {}", out.certificate);
     Ok(out)
 }
@@ -252,4 +273,106 @@ fn check_conic_type(ctx: &Ctx<'_>) -> Result<Checked> {
     } else {
         Ok(Checked::new(Verdict::Fails, format!("{cert}, not {printed}")))
     }
+}
+
+/// `weight_type`: the type of the conic of a quadratic rational curve (`curves`, one curve
+/// with weights), by the library's [`classify_conic`] (`w1² / (w0 w2)` against 1), compared
+/// with the printed `conic`.
+fn check_weight_type(ctx: &Ctx<'_>) -> Result<Checked> {
+    let c = ctx.claim;
+    let printed = c.need(&c.conic, "conic")?;
+    let (name, spec) = c
+        .curves
+        .as_ref()
+        .and_then(|m| m.iter().next())
+        .ok_or_else(|| Error::Parse(format!("claim {}: weight_type needs one curve with weights", c.id)))?;
+    let w = spec
+        .weights
+        .as_ref()
+        .ok_or_else(|| Error::Parse(format!("claim {}: the curve {name} needs weights", c.id)))?;
+    let verdict = |kind: &str, detail: String| {
+        if kind == printed {
+            Checked::new(Verdict::Proved, format!("{detail} ⇒ {kind}: proof"))
+        } else {
+            Checked::new(Verdict::Fails, format!("{detail} ⇒ {kind}, not {printed}"))
+        }
+    };
+    if uses_sqrt(c) {
+        let pts = points::<QuadraticIrrational>(&spec.points)?;
+        let ws = w.iter().map(|x| super::engine::constant(&x.text()?)).collect::<Result<Vec<QuadraticIrrational>>>()?;
+        let curve = RationalBezierCurve::new(pts, ws.clone())?;
+        let kind = classify_conic(&curve)?;
+        return Ok(verdict(kind.as_str(), format!("weights {}, {}, {}", ws[0], ws[1], ws[2])));
+    }
+    let pts = points::<BigRational>(&spec.points)?;
+    let ws = w.iter().map(|x| super::engine::constant(&x.text()?)).collect::<Result<Vec<BigRational>>>()?;
+    let curve = RationalBezierCurve::new(pts, ws.clone())?;
+    let kind = classify_conic(&curve)?;
+    let ratio = if ws.len() == 3 && !ws[0].is_zero() && !ws[2].is_zero() {
+        format!(", w1²/(w0 w2) = {}", &ws[1] * &ws[1] / (&ws[0] * &ws[2]))
+    } else {
+        String::new()
+    };
+    Ok(verdict(
+        kind.as_str(),
+        format!("classify_conic: weights ({}){ratio}", ws.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", ")),
+    ))
+}
+
+/// `enneper`: the surface (`surfaces`, one) is Enneper's surface
+/// `E(u, v) = (u − u³/3 + uv², v − v³/3 + vu², u² − v²)` up to an affine change of parameters
+/// and a scale. The library's power-form match ([`BezierSurface::enneper_matches`]) finds the
+/// parameters; the identity `x(s, t) = λ E(αs + β, γt + δ)` is then proved independently on a
+/// 4×4 grid (bicubic: degree ≤ 3 in each parameter).
+fn check_enneper(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
+    let c = ctx.claim;
+    let (name, spec) = c
+        .surfaces
+        .as_ref()
+        .and_then(|m| m.iter().next())
+        .ok_or_else(|| Error::Parse(format!("claim {}: enneper needs one surface", c.id)))?;
+    let net = super::engine::net_from_spec::<BigRational>(spec)?;
+    let surface = BezierSurface::new(net)?;
+    let found = surface.enneper_matches()?;
+    let Some(m) = found.first() else {
+        let power = surface.to_power()?;
+        return Ok(Checked::new(
+            Verdict::Fails,
+            format!(
+                "the power form of {name} (coefficients of s^k t^l, e.g. s³: {}, t³: {}) is not λ E(αs+β, γt+δ) for any α, β, γ, δ, λ, nor with s and t exchanged (the parameters are forced by a few coefficients, then every coefficient is compared exactly)",
+                power.get(3).and_then(|r| r.first()).map(|p| p.to_string()).unwrap_or_default(),
+                power.first().and_then(|r| r.get(3)).map(|p| p.to_string()).unwrap_or_default()
+            ),
+        ));
+    };
+    let (u, v) = if m.swapped {
+        (format!("({})*t + ({})", m.gamma, m.delta), format!("({})*s + ({})", m.alpha, m.beta))
+    } else {
+        (format!("({})*s + ({})", m.alpha, m.beta), format!("({})*t + ({})", m.gamma, m.delta))
+    };
+    let mut cl = c.clone();
+    cl.kind = "identity".into();
+    cl.vars = Some(vec!["s".into(), "t".into()]);
+    cl.defs = Some(vec!["E(u, v) = (u - u^3/3 + u*v^2, v - v^3/3 + v*u^2, u^2 - v^2)".into()]);
+    let sub = Ctx::new(&cl)?;
+    let lhs = sub.expr(&format!("{name}(s, t)"))?;
+    let rhs = sub.expr(&format!("({})*E({u}, {v})", m.lambda))?;
+    let out = check_chain::<BigRational>(&sub, &[lhs, rhs], detail)?;
+    if out.verdict != Verdict::Proved {
+        return Ok(Checked::new(
+            Verdict::Fails,
+            format!("the library's match does not hold: {}", out.certificate),
+        ));
+    }
+    let mut res = Checked::new(
+        Verdict::Proved,
+        format!(
+            "power-form match: {name}(s, t) = {} · E({u}, {v}){}; verified independently: {}",
+            m.lambda,
+            if m.swapped { " (parameters exchanged)" } else { "" },
+            out.certificate
+        ),
+    );
+    res.steps = out.steps;
+    Ok(res)
 }
