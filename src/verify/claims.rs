@@ -212,9 +212,12 @@ impl Claim {
 
     /// A required text field, or a clear error.
     pub fn need<'a>(&self, field: &'a Option<String>, name: &str) -> Result<&'a str> {
-        field
-            .as_deref()
-            .ok_or_else(|| Error::Parse(format!("claim {} (kind {}) needs the field '{name}'", self.id, self.kind)))
+        field.as_deref().ok_or_else(|| {
+            Error::Parse(format!(
+                "claim {} (kind {}) needs the field '{name}'",
+                self.id, self.kind
+            ))
+        })
     }
 }
 
@@ -226,7 +229,11 @@ pub fn parse_file(text: &str, path: &Path) -> Result<ClaimFile> {
     let mut seen = std::collections::BTreeSet::new();
     for c in &f.claim {
         if !seen.insert(c.id.clone()) {
-            return Err(Error::Parse(format!("{}: duplicate claim id '{}'", path.display(), c.id)));
+            return Err(Error::Parse(format!(
+                "{}: duplicate claim id '{}'",
+                path.display(),
+                c.id
+            )));
         }
         c.expected()?;
     }
@@ -268,7 +275,10 @@ pub fn load_paths(paths: &[PathBuf]) -> Result<Vec<ClaimFile>> {
         } else if p.exists() {
             files.push(load_file(p)?);
         } else {
-            return Err(Error::Domain(format!("no such claim file or directory: {}", p.display())));
+            return Err(Error::Domain(format!(
+                "no such claim file or directory: {}",
+                p.display()
+            )));
         }
     }
     if files.is_empty() {

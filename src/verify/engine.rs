@@ -8,10 +8,10 @@ use super::expr::{self, check_index, parse, parse_definition, parse_range, Defin
 use super::poly::{set_names, Poly, RatFunc};
 use super::Verdict;
 use crate::curve::BezierCurve;
-use crate::surface::BezierSurface;
 use crate::error::{Error, Result};
 use crate::point::Point;
 use crate::scalar::{RefOps, Scalar};
+use crate::surface::BezierSurface;
 use num_rational::BigRational;
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
@@ -127,7 +127,13 @@ impl<'c> Ctx<'c> {
 
     /// Describes the ranges, e.g. `n = 0..=10, j = 0..=n`.
     pub fn range_text(&self) -> String {
-        self.claim.ranges.iter().flatten().cloned().collect::<Vec<_>>().join(", ")
+        self.claim
+            .ranges
+            .iter()
+            .flatten()
+            .cloned()
+            .collect::<Vec<_>>()
+            .join(", ")
     }
 
     fn is_bound(&self, name: &str) -> bool {
@@ -252,7 +258,9 @@ where
     let net: Vec<Vec<Point<T>>> = spec.net.iter().map(|r| points(r)).collect::<Result<_>>()?;
     let cols = net.first().map_or(0, Vec::len);
     if net.is_empty() || cols == 0 || net.iter().any(|r| r.len() != cols) {
-        return Err(Error::Domain("a control net needs rows of equal, non-zero length".into()));
+        return Err(Error::Domain(
+            "a control net needs rows of equal, non-zero length".into(),
+        ));
     }
     crate::point::common_dimension(&net.concat(), "a control net")?;
     Ok(net)
@@ -337,7 +345,10 @@ where
                 return Ok(Some(v));
             }
             if pname == base {
-                let pts = coeffs.iter().map(|c| Point::new(vec![c.clone()])).collect::<Result<_>>()?;
+                let pts = coeffs
+                    .iter()
+                    .map(|c| Point::new(vec![c.clone()]))
+                    .collect::<Result<_>>()?;
                 let c = CurveObj::Polynomial(BezierCurve::new(pts)?);
                 return Ok(Some(Value::S(
                     curve_call(&c, base, order, args, ev)?.entries()[0].clone(),
@@ -364,7 +375,12 @@ where
     }
 
     fn index(&self, name: &str, idx: &[i64]) -> Result<Option<Value<T>>> {
-        let get = |v: &[T], i: i64| -> T { usize::try_from(i).ok().and_then(|i| v.get(i).cloned()).unwrap_or_else(T::zero) };
+        let get = |v: &[T], i: i64| -> T {
+            usize::try_from(i)
+                .ok()
+                .and_then(|i| v.get(i).cloned())
+                .unwrap_or_else(T::zero)
+        };
         if let Some((pname, coeffs)) = &self.polygon {
             if pname == name {
                 one_index(name, idx)?;
@@ -383,7 +399,9 @@ where
         if let Some(c) = self.curves.get(name) {
             one_index(name, idx)?;
             let CurveObj::Polynomial(c) = c else {
-                return Err(Error::Domain(format!("{name} is rational: index its control points by hand")));
+                return Err(Error::Domain(format!(
+                    "{name} is rational: index its control points by hand"
+                )));
             };
             let p = usize::try_from(idx[0]).ok().and_then(|i| c.points().get(i));
             return Ok(Some(Value::V(
@@ -399,7 +417,9 @@ where
                 .ok()
                 .and_then(|i| net.get(i))
                 .and_then(|r| usize::try_from(idx[1]).ok().and_then(|j| r.get(j)));
-            return Ok(Some(Value::V(p.map_or_else(|| vec![T::zero(); dim], |p| p.coords().to_vec()))));
+            return Ok(Some(Value::V(
+                p.map_or_else(|| vec![T::zero(); dim], |p| p.coords().to_vec()),
+            )));
         }
         Ok(None)
     }
@@ -430,7 +450,10 @@ where
     if args.len() != 3 && name != "bsum" || name == "bsum" && args.len() != 2 {
         return Err(Error::Domain(format!("wrong number of arguments to {name}")));
     }
-    let pts = coeffs.iter().map(|c| Point::new(vec![c.clone()])).collect::<Result<_>>()?;
+    let pts = coeffs
+        .iter()
+        .map(|c| Point::new(vec![c.clone()]))
+        .collect::<Result<_>>()?;
     let c = BezierCurve::new(pts)?;
     let pick = |curve: &BezierCurve<T>, i: i64| -> T {
         usize::try_from(i)
@@ -445,7 +468,11 @@ where
         "bsum" => c.eval_bernstein(&ev.scalar(&args[1])?).coords()[0].clone(),
         "elev" | "steps" | "elevp" => {
             let r = nonneg(ev.int(&args[1])?)?;
-            let e = if name == "steps" { c.elevate_steps(r)? } else { c.elevate_by(r)? };
+            let e = if name == "steps" {
+                c.elevate_steps(r)?
+            } else {
+                c.elevate_by(r)?
+            };
             if name == "elevp" {
                 pick(&e, ev.int(&args[2])?)
             } else {
@@ -594,7 +621,10 @@ where
             }
             let s = curve.scheme(&t);
             Ok(Value::V(
-                s.get(r as usize, i as usize).expect("indices checked").coords().to_vec(),
+                s.get(r as usize, i as usize)
+                    .expect("indices checked")
+                    .coords()
+                    .to_vec(),
             ))
         }
         _ => Err(Error::Domain(format!(
@@ -627,12 +657,22 @@ impl DegEnv {
             curves: num
                 .curves
                 .iter()
-                .map(|(k, c)| (k.clone(), (c.degree() as u64, c.dim(), matches!(c, CurveObj::Rational(_)))))
+                .map(|(k, c)| {
+                    (
+                        k.clone(),
+                        (c.degree() as u64, c.dim(), matches!(c, CurveObj::Rational(_))),
+                    )
+                })
                 .collect(),
             surfaces: num
                 .surfaces
                 .iter()
-                .map(|(k, n)| (k.clone(), ((n.len() - 1) as u64, (n[0].len() - 1) as u64, n[0][0].dim())))
+                .map(|(k, n)| {
+                    (
+                        k.clone(),
+                        ((n.len() - 1) as u64, (n[0].len() - 1) as u64, n[0][0].dim()),
+                    )
+                })
                 .collect(),
             polygon: num.polygon.as_ref().map(|(k, c)| (k.clone(), (c.len() - 1) as u64)),
             net: num
@@ -782,7 +822,10 @@ impl Iterator for Candidates {
             let q = self.q;
             // Also step outside [0, 1]: a denominator may vanish on a whole interval's rationals
             // only if it is zero, but values beyond 1 make the search shorter for e.g. 1/(t - p/q).
-            self.queue = (0..=2 * q).rev().map(|p| BigRational::new(p.into(), q.into())).collect();
+            self.queue = (0..=2 * q)
+                .rev()
+                .map(|p| BigRational::new(p.into(), q.into()))
+                .collect();
         }
     }
 }
@@ -862,7 +905,11 @@ fn needed_degree(l: &Value<Deg>, r: &Value<Deg>, v: &str) -> Result<u64> {
     for (a, b) in le.iter().zip(&re) {
         let (na, da) = a.get(v);
         let (nb, db) = b.get(v);
-        let d = if da == 0 && db == 0 { na.max(nb) } else { (na + db).max(nb + da) };
+        let d = if da == 0 && db == 0 {
+            na.max(nb)
+        } else {
+            (na + db).max(nb + da)
+        };
         need = need.max(d);
     }
     Ok(need)
@@ -890,7 +937,9 @@ where
             return Err(Error::Domain(format!("polygon {} of negative degree {n}", p.name)));
         }
         num.polygon = Some((p.name.clone(), vec![T::zero(); n as usize + 1]));
-        basis = std::iter::once(Basis::Zero).chain((0..=n as usize).map(Basis::Unit)).collect();
+        basis = std::iter::once(Basis::Zero)
+            .chain((0..=n as usize).map(Basis::Unit))
+            .collect();
     }
     if let Some(p) = &ctx.claim.net {
         let m = expr::eval_int(&parse(&p.degree[0], &[])?, ints)?;
@@ -951,7 +1000,11 @@ where
             ));
         }
     }
-    let total: usize = needs.iter().map(|d| d + 1).product::<usize>().saturating_mul(basis.len());
+    let total: usize = needs
+        .iter()
+        .map(|d| d + 1)
+        .product::<usize>()
+        .saturating_mul(basis.len());
     if total.saturating_mul(2) > MAX_EVALUATIONS {
         return Err(Error::TooLarge {
             what: "number of exact evaluations",
@@ -1088,7 +1141,11 @@ pub fn pair_summary(p: &PairProof) -> String {
             .zip(&p.points)
             .map(|((v, need, _, _), pts)| {
                 if pts.len() <= 8 {
-                    format!("degree ≤ {need} in {v}, equal at {v} = {} ({} points)", list(pts), pts.len())
+                    format!(
+                        "degree ≤ {need} in {v}, equal at {v} = {} ({} points)",
+                        list(pts),
+                        pts.len()
+                    )
                 } else {
                     format!("degree ≤ {need} in {v}, equal at {} values of {v}", pts.len())
                 }
@@ -1096,14 +1153,30 @@ pub fn pair_summary(p: &PairProof) -> String {
             .collect();
         s.push_str(&parts.join("; "));
         if p.degrees.len() > 1 {
-            let _ = write!(s, " (a {} grid)", p.points.iter().map(|x| x.len().to_string()).collect::<Vec<_>>().join("×"));
+            let _ = write!(
+                s,
+                " (a {} grid)",
+                p.points
+                    .iter()
+                    .map(|x| x.len().to_string())
+                    .collect::<Vec<_>>()
+                    .join("×")
+            );
         }
     }
     if p.polygons > 1 {
-        let _ = write!(s, ", on {} basis polygons (zero and unit; both sides affine in the control points)", p.polygons);
+        let _ = write!(
+            s,
+            ", on {} basis polygons (zero and unit; both sides affine in the control points)",
+            p.polygons
+        );
     }
     if p.skipped > 0 {
-        let _ = write!(s, ", {} candidate values skipped where a denominator vanishes", p.skipped);
+        let _ = write!(
+            s,
+            ", {} candidate values skipped where a denominator vanishes",
+            p.skipped
+        );
     }
     s
 }
@@ -1114,7 +1187,10 @@ where
     for<'a> &'a T: RefOps<T>,
 {
     if sides.len() < 2 {
-        return Err(Error::Parse(format!("claim {}: an identity needs two sides", ctx.claim.id)));
+        return Err(Error::Parse(format!(
+            "claim {}: an identity needs two sides",
+            ctx.claim.id
+        )));
     }
     let instances = ctx.instances()?;
     let mut steps = Vec::new();
@@ -1133,7 +1209,7 @@ where
                     } else {
                         String::new()
                     };
-                    let mut c = Checked::new(Verdict::Fails, format!("{which}counterexample {cx}"));
+                    let mut c = Checked::new(Verdict::Fails, format!("{which}{cx}"));
                     c.steps = steps;
                     c.steps.push(format!("FAILS {which}at {cx}"));
                     return Ok(c);
@@ -1150,7 +1226,13 @@ where
                         let head = if inst.is_empty() {
                             String::new()
                         } else {
-                            format!("[{}] ", inst.iter().map(|(k, v)| format!("{k} = {v}")).collect::<Vec<_>>().join(", "))
+                            format!(
+                                "[{}] ",
+                                inst.iter()
+                                    .map(|(k, v)| format!("{k} = {v}"))
+                                    .collect::<Vec<_>>()
+                                    .join(", ")
+                            )
                         };
                         steps.push(format!("{head}'{}' = '{}': {}", pair[0], pair[1], pair_summary(&p)));
                         steps.extend(p.lines.iter().map(|l| format!("    {l}")));
@@ -1175,7 +1257,10 @@ where
         } else {
             ""
         };
-        format!("{what}: {}{rat}; {evaluations} exact evaluations: proof", pair_summary(&p))
+        format!(
+            "{what}: {}{rat}; {evaluations} exact evaluations: proof",
+            pair_summary(&p)
+        )
     } else {
         let degs: Vec<String> = max_need.iter().map(|(v, d)| format!("{v} ≤ {d}")).collect();
         let poly = if polygons.1 > 1 {
@@ -1189,7 +1274,10 @@ where
         let degs = if degs.is_empty() {
             "no continuous parameters".to_string()
         } else {
-            format!("degrees (from the expressions) up to {}, each case at d+1 points per parameter", degs.join(", "))
+            format!(
+                "degrees (from the expressions) up to {}, each case at d+1 points per parameter",
+                degs.join(", ")
+            )
         };
         format!(
             "{what} for every {} ({} cases): {degs}{poly}; {evaluations} exact evaluations: proof",
@@ -1275,7 +1363,11 @@ fn nonzero_point(p: &Poly, n: usize) -> Vec<BigRational> {
     vec![BigRational::one(); n]
 }
 
-fn sym_assignment(names: &Rc<[String]>, layout: &[(String, usize)], point: &[BigRational]) -> (String, BTreeMap<String, Value<BigRational>>) {
+fn sym_assignment(
+    names: &Rc<[String]>,
+    layout: &[(String, usize)],
+    point: &[BigRational],
+) -> (String, BTreeMap<String, Value<BigRational>>) {
     let mut vars = BTreeMap::new();
     let mut parts = Vec::new();
     let mut k = 0;
@@ -1306,7 +1398,11 @@ pub fn symbolic_equal(ctx: &Ctx<'_>, lhs: &Expr, rhs: &Expr, ints: &BTreeMap<Str
     let le = l.entries();
     let re = r.entries();
     if le.len() != re.len() {
-        return Err(Error::Domain(format!("the two sides have different shapes ({} and {})", l.shape(), r.shape())));
+        return Err(Error::Domain(format!(
+            "the two sides have different shapes ({} and {})",
+            l.shape(),
+            r.shape()
+        )));
     }
     let mut terms = 0;
     for (a, b) in le.iter().zip(&re) {
@@ -1391,7 +1487,11 @@ pub fn check_implies(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
     let factor = ctx.expr(c.need(&c.factor, "factor")?)?;
     let is_zero = |e: &Expr| matches!(e, Expr::Num(r) if Scalar::is_zero(r));
     let concl = Expr::sub(a.clone(), b.clone());
-    let prem = if is_zero(&q) { p.clone() } else { Expr::sub(p.clone(), q.clone()) };
+    let prem = if is_zero(&q) {
+        p.clone()
+    } else {
+        Expr::sub(p.clone(), q.clone())
+    };
     let rhs = Expr::mul(factor.clone(), prem.clone());
     let inst = BTreeMap::new();
     match symbolic_equal(ctx, &concl, &rhs, &inst)? {
@@ -1399,8 +1499,12 @@ pub fn check_implies(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
             let mut out = Checked::new(
                 Verdict::Proved,
                 format!(
-                    "({a}) − ({b}) = {factor} · (({p}) − ({q})) identically (exact symbolic expansion), \
-                     so the premise implies the equation: proof"
+                    "[{}] = ({}) · [{}] identically, as rational functions of the symbols and vector coordinates \
+                     (exact symbolic expansion), so '{} = 0' implies the equation: proof",
+                    c.equation.as_deref().unwrap_or_default(),
+                    c.factor.as_deref().unwrap_or_default(),
+                    c.premise.as_deref().unwrap_or_default(),
+                    c.premise.as_deref().unwrap_or_default()
                 ),
             );
             if detail {
@@ -1419,7 +1523,10 @@ pub fn check_implies(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
             let (names, layout) = sym_names(ctx, &[]);
             for attempt in 0..200u64 {
                 let point: Vec<BigRational> = (0..names.len())
-                    .map(|i| BigRational::from_integer((((attempt + 2) * (i as u64 * 5 + 1) + attempt) % 7) .into()) - BigRational::from_integer(3.into()))
+                    .map(|i| {
+                        BigRational::from_integer((((attempt + 2) * (i as u64 * 5 + 1) + attempt) % 7).into())
+                            - BigRational::from_integer(3.into())
+                    })
                     .collect();
                 let (_, mut vars) = sym_assignment(&names, &layout, &point);
                 // other symbols 0, the unknown solved from the (linear) premise
@@ -1434,7 +1541,9 @@ pub fn check_implies(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
                 vars.insert(unknown.clone(), Value::S(BigRational::one()));
                 let p1 = eval_prem(&vars)?;
                 let (Value::S(p0), Value::S(p1)) = (p0, p1) else {
-                    return Err(Error::Domain("implies with a vector premise needs a proof, not a search".into()));
+                    return Err(Error::Domain(
+                        "implies with a vector premise needs a proof, not a search".into(),
+                    ));
                 };
                 let slope = &p1 - &p0;
                 if slope.is_zero() {
@@ -1451,8 +1560,10 @@ pub fn check_implies(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
                     return Ok(Checked::new(
                         Verdict::Fails,
                         format!(
-                            "counterexample: at {}: the premise {p} = {q} holds, but the equation gives left side = {av}, right side = {bv}",
-                            shown.join(", ")
+                            "at {}: the premise '{}' = 0 holds, but the equation '{}' gives left side = {av}, right side = {bv}",
+                            shown.join(", "),
+                            c.premise.as_deref().unwrap_or_default(),
+                            c.equation.as_deref().unwrap_or_default()
                         ),
                     ));
                 }

@@ -69,13 +69,17 @@ pub trait Alg: Clone + fmt::Debug + fmt::Display {
 /// quadratic irrationals.
 pub fn rational_sqrt(r: &BigRational) -> Result<BigRational> {
     if r.is_negative() {
-        return Err(Error::Domain(format!("sqrt({r}): the square root of a negative number is not real")));
+        return Err(Error::Domain(format!(
+            "sqrt({r}): the square root of a negative number is not real"
+        )));
     }
     let (n, d) = (r.numer().sqrt(), r.denom().sqrt());
     if &(&n * &n) == r.numer() && &(&d * &d) == r.denom() {
         Ok(BigRational::new(n, d))
     } else {
-        Err(Error::Domain(format!("sqrt({r}) is irrational (not a square of a rational)")))
+        Err(Error::Domain(format!(
+            "sqrt({r}) is irrational (not a square of a rational)"
+        )))
     }
 }
 
@@ -130,7 +134,9 @@ impl Alg for crate::quadratic::QuadraticIrrational {
     }
     fn sqrt_rat(r: &BigRational) -> Result<Self> {
         if r.is_negative() {
-            return Err(Error::Domain(format!("sqrt({r}): the square root of a negative number is not real")));
+            return Err(Error::Domain(format!(
+                "sqrt({r}): the square root of a negative number is not real"
+            )));
         }
         if let Ok(q) = rational_sqrt(r) {
             return Ok(Self::from_rat(&q));
@@ -203,7 +209,13 @@ impl fmt::Display for Deg {
             .vars
             .iter()
             .filter(|(_, &(n, d))| n > 0 || d > 0)
-            .map(|(v, &(n, d))| if d == 0 { format!("{v}:{n}") } else { format!("{v}:{n}/{d}") })
+            .map(|(v, &(n, d))| {
+                if d == 0 {
+                    format!("{v}:{n}")
+                } else {
+                    format!("{v}:{n}/{d}")
+                }
+            })
             .collect();
         if parts.is_empty() {
             write!(f, "const")
@@ -331,7 +343,11 @@ impl<A: Alg> Value<A> {
     }
     fn zip(&self, o: &Value<A>, what: &str, f: impl Fn(&A, &A) -> A) -> Result<Value<A>> {
         if !self.same_shape(o) {
-            return Err(Error::Domain(format!("cannot {what} {} and {}", self.shape(), o.shape())));
+            return Err(Error::Domain(format!(
+                "cannot {what} {} and {}",
+                self.shape(),
+                o.shape()
+            )));
         }
         Ok(match (self, o) {
             (Value::S(a), Value::S(b)) => Value::S(f(a, b)),
@@ -364,14 +380,22 @@ impl<A: Alg> Value<A> {
             (x, Value::S(b)) => x.map(|y| y.mul(b)),
             (Value::M(m), Value::V(v)) => {
                 if m.first().map_or(0, Vec::len) != v.len() {
-                    return Err(Error::Domain(format!("cannot multiply {} by {}", self.shape(), o.shape())));
+                    return Err(Error::Domain(format!(
+                        "cannot multiply {} by {}",
+                        self.shape(),
+                        o.shape()
+                    )));
                 }
                 Value::V(m.iter().map(|r| dot(r, v)).collect())
             }
             (Value::M(a), Value::M(b)) => {
                 let inner = a.first().map_or(0, Vec::len);
                 if inner != b.len() {
-                    return Err(Error::Domain(format!("cannot multiply {} by {}", self.shape(), o.shape())));
+                    return Err(Error::Domain(format!(
+                        "cannot multiply {} by {}",
+                        self.shape(),
+                        o.shape()
+                    )));
                 }
                 let cols = b.first().map_or(0, Vec::len);
                 Value::M(
@@ -440,7 +464,13 @@ fn det<A: Alg>(m: &[Vec<A>]) -> A {
             for j in 0..n {
                 let minor: Vec<Vec<A>> = m[1..]
                     .iter()
-                    .map(|r| r.iter().enumerate().filter(|(k, _)| *k != j).map(|(_, x)| x.clone()).collect())
+                    .map(|r| {
+                        r.iter()
+                            .enumerate()
+                            .filter(|(k, _)| *k != j)
+                            .map(|(_, x)| x.clone())
+                            .collect()
+                    })
                     .collect();
                 let term = m[0][j].mul(&det(&minor));
                 acc = if j % 2 == 0 { acc.add(&term) } else { acc.sub(&term) };
@@ -770,7 +800,9 @@ fn transpose<A: Alg>(v: Value<A>) -> Result<Value<A>> {
     match v {
         Value::M(m) => {
             let cols = m.first().map_or(0, Vec::len);
-            Ok(Value::M((0..cols).map(|j| m.iter().map(|r| r[j].clone()).collect()).collect()))
+            Ok(Value::M(
+                (0..cols).map(|j| m.iter().map(|r| r[j].clone()).collect()).collect(),
+            ))
         }
         other => Err(Error::Domain(format!("transpose of {}", other.shape()))),
     }
@@ -786,7 +818,13 @@ fn inverse<A: Alg>(m: &[Vec<A>], d: &A) -> Result<Value<A>> {
                 .iter()
                 .enumerate()
                 .filter(|(r, _)| *r != j)
-                .map(|(_, r)| r.iter().enumerate().filter(|(c, _)| *c != i).map(|(_, x)| x.clone()).collect())
+                .map(|(_, r)| {
+                    r.iter()
+                        .enumerate()
+                        .filter(|(c, _)| *c != i)
+                        .map(|(_, x)| x.clone())
+                        .collect()
+                })
                 .collect();
             let c = det(&minor);
             let c = if (i + j) % 2 == 0 { c } else { c.neg() };
@@ -825,15 +863,24 @@ mod tests {
     fn evaluates_exactly() {
         let v = eval_at("(2t - 1)/(t^2 - t + 1)", q(1, 3)).unwrap().scalar("").unwrap();
         assert_eq!(v, q(-1, 3) / q(7, 9));
-        let b = eval_at("4/3 B(1, 3, t) + 4/3 B(2, 3, t)", q(1, 2)).unwrap().scalar("").unwrap();
+        let b = eval_at("4/3 B(1, 3, t) + 4/3 B(2, 3, t)", q(1, 2))
+            .unwrap()
+            .scalar("")
+            .unwrap();
         assert_eq!(b, q(1, 1));
         assert!(matches!(eval_at("1/(t - 1/3)", q(1, 3)), Err(Error::DivisionByZero(_))));
         assert!(eval_at("sqrt(2)", q(0, 1)).is_err());
         assert_eq!(eval_at("sqrt(9/4)", q(0, 1)).unwrap().scalar("").unwrap(), q(3, 2));
-        assert!(eval_at("sqrt(-4)", q(0, 1)).unwrap_err().to_string().contains("negative"));
+        assert!(eval_at("sqrt(-4)", q(0, 1))
+            .unwrap_err()
+            .to_string()
+            .contains("negative"));
         assert!(eval_at("t^99999999", q(1, 2)).is_err());
         assert_eq!(
-            eval_at("sum(r, 0, 3, B(r, 3, t))", q(2, 7)).unwrap().scalar("").unwrap(),
+            eval_at("sum(r, 0, 3, B(r, 3, t))", q(2, 7))
+                .unwrap()
+                .scalar("")
+                .unwrap(),
             q(1, 1)
         );
     }

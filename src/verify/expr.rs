@@ -15,7 +15,8 @@
 //!
 //! Implicit multiplication binds like `*`, so `3k/8` is `(3k)/8` and `1/2t` is `(1/2)t`.
 //! A run of letters that is not a known name is a product of one-letter variables
-//! (`st` = `s t`, `xy^2` = `x y^2`); names with digits (`t0`, `x1`) are single names.
+//! (`st` = `s t`, `xy^2` = `x y^2`), unless it is directly followed by `(` (a call);
+//! names with digits (`t0`, `x1`) are single names.
 //!
 //! Functions: `B(i, n, t)` (Bernstein, zero for `i < 0` or `i > n`), `C(n, k)` / `binom(n, k)`
 //! (zero outside `0 ≤ k ≤ n`), `sum(r, a, b, body)` (`a ≤ r ≤ b`, empty when `a > b`),
@@ -50,7 +51,20 @@ pub const MAX_DEPTH: usize = 200;
 
 /// Built-in function names (they are never split into one-letter variables).
 pub const FUNCTIONS: &[&str] = &[
-    "B", "C", "binom", "sum", "sqrt", "diff", "dot", "det", "inv", "rows", "cols", "transpose", "delta", "comp",
+    "B",
+    "C",
+    "binom",
+    "sum",
+    "sqrt",
+    "diff",
+    "dot",
+    "det",
+    "inv",
+    "rows",
+    "cols",
+    "transpose",
+    "delta",
+    "comp",
 ];
 
 /// A binary operator.
@@ -93,6 +107,8 @@ pub enum Expr {
     Matrix(Vec<Vec<Expr>>),
 }
 
+// Constructors named after the operation they build (not arithmetic on values).
+#[allow(clippy::should_implement_trait)]
 impl Expr {
     fn bin(op: Op, a: Expr, b: Expr) -> Expr {
         Expr::Bin(op, Box::new(a), Box::new(b))
@@ -173,11 +189,7 @@ impl Expr {
     pub fn called_names(&self) -> Vec<String> {
         let mut out = Vec::new();
         self.visit(&mut |e| match e {
-            Expr::Call(n, _) | Expr::Index(n, _) => {
-                if !out.contains(n) {
-                    out.push(n.clone())
-                }
-            }
+            Expr::Call(n, _) | Expr::Index(n, _) if !out.contains(n) => out.push(n.clone()),
             _ => {}
         });
         out
@@ -333,14 +345,18 @@ fn lex(text: &str, known: &[String]) -> Result<Vec<Tok>> {
                 i += 1;
             }
             let lit: String = chars[start..i].iter().collect();
-            out.push(Tok::Num(parse_exact(&lit).map_err(|_| Error::Parse(format!("bad number '{lit}'")))?));
+            out.push(Tok::Num(
+                parse_exact(&lit).map_err(|_| Error::Parse(format!("bad number '{lit}'")))?,
+            ));
         } else if c.is_alphabetic() || c == '_' {
             let start = i;
             while i < chars.len() && (chars[i].is_alphanumeric() || chars[i] == '_' || chars[i] == '\'') {
                 i += 1;
             }
             let word: String = chars[start..i].iter().collect();
-            let is_known = known.iter().any(|k| k == &word) || FUNCTIONS.contains(&word.as_str());
+            // A word directly followed by '(' is a call (an unknown one is reported by name).
+            let called = chars.get(i) == Some(&'(');
+            let is_known = called || known.iter().any(|k| k == &word) || FUNCTIONS.contains(&word.as_str());
             if is_known || word.chars().count() == 1 || !word.chars().all(char::is_alphabetic) {
                 out.push(Tok::Ident(word));
             } else {
@@ -369,6 +385,7 @@ fn lex(text: &str, known: &[String]) -> Result<Vec<Tok>> {
 // Parser
 
 struct Parser<'a> {
+    known: &'a [String],
     toks: Vec<Tok>,
     pos: usize,
     text: &'a str,
@@ -390,6 +407,7 @@ pub fn parse(text: &str, known: &[String]) -> Result<Expr> {
         return Err(Error::Parse("empty expression".into()));
     }
     let mut p = Parser {
+        known,
         toks,
         pos: 0,
         text,
@@ -474,7 +492,10 @@ impl Parser<'_> {
     }
 
     fn starts_primary(&self) -> bool {
-        matches!(self.peek(), Some(Tok::Num(_) | Tok::Ident(_) | Tok::Sym('(') | Tok::Sym('[')))
+        matches!(
+            self.peek(),
+            Some(Tok::Num(_) | Tok::Ident(_) | Tok::Sym('(') | Tok::Sym('['))
+        )
     }
 
     fn term(&mut self) -> Result<Expr> {
@@ -591,7 +612,11 @@ impl Parser<'_> {
                 Ok(Expr::Matrix(rows))
             }
             Tok::Ident(name) => {
-                if self.peek_sym('(') {
+                // `t(1 - t)` is a product; `b(t)`, `B(…)`, `foo(…)` are calls.
+                let one_letter_var = name.chars().count() == 1
+                    && !FUNCTIONS.contains(&name.as_str())
+                    && !self.known.iter().any(|k| k == &name);
+                if self.peek_sym('(') && !one_letter_var {
                     self.pos += 1;
                     let args = self.args(')')?;
                     if name == "sum" {
@@ -683,7 +708,10 @@ pub fn parse_definition(text: &str, known: &[String]) -> Result<Definition> {
             let inner = rest
                 .strip_suffix(')')
                 .ok_or_else(|| Error::Parse(format!("bad definition head '{head}'")))?;
-            (n.trim(), inner.split(',').map(|p| p.trim().to_string()).collect::<Vec<_>>())
+            (
+                n.trim(),
+                inner.split(',').map(|p| p.trim().to_string()).collect::<Vec<_>>(),
+            )
         }
         None => (head, Vec::new()),
     };
@@ -705,7 +733,9 @@ pub fn expand(e: &Expr, defs: &[Definition]) -> Result<Expr> {
 
 fn expand_depth(e: &Expr, defs: &[Definition], depth: usize) -> Result<Expr> {
     if depth > 64 {
-        return Err(Error::Domain("definitions nest more than 64 deep (a recursive definition?)".into()));
+        return Err(Error::Domain(
+            "definitions nest more than 64 deep (a recursive definition?)".into(),
+        ));
     }
     let rec = |x: &Expr| expand_depth(x, defs, depth);
     Ok(match e {
@@ -888,7 +918,9 @@ pub fn derive(e: &Expr, var: &str) -> Result<Expr> {
         }
         Expr::Bin(Op::Pow, a, k) => {
             if k.mentions(var) {
-                return Err(Error::Domain(format!("cannot differentiate '{e}': the exponent depends on {var}")));
+                return Err(Error::Domain(format!(
+                    "cannot differentiate '{e}': the exponent depends on {var}"
+                )));
             }
             // d/dx a^k = (k-th power rule, written so that k = 0 gives 0 even where a = 0)
             smul(
@@ -899,7 +931,9 @@ pub fn derive(e: &Expr, var: &str) -> Result<Expr> {
         Expr::Fact(_) => zero(),
         Expr::Sum(v, a, b, body) => {
             if v == var {
-                return Err(Error::Domain(format!("cannot differentiate by the summation variable {var}")));
+                return Err(Error::Domain(format!(
+                    "cannot differentiate by the summation variable {var}"
+                )));
             }
             let d = derive(body, var)?;
             if is_lit(&d, 0) {
@@ -927,7 +961,11 @@ pub fn derive(e: &Expr, var: &str) -> Result<Expr> {
 fn bump_order(name: &str, args: &[Expr], var: &str, e: &Expr) -> Result<Expr> {
     // __dB(i, n, g, k) / __dpow(g, e, k): the k-th derivative with respect to g; one more
     // derivative raises k by one and multiplies by g' (chain rule).
-    let (g, fixed) = if name == "__dB" { (&args[2], &args[..2]) } else { (&args[0], &args[1..2]) };
+    let (g, fixed) = if name == "__dB" {
+        (&args[2], &args[..2])
+    } else {
+        (&args[0], &args[1..2])
+    };
     if fixed.iter().any(|a| a.mentions(var)) {
         return Err(Error::Domain(format!("cannot differentiate '{e}' by {var}")));
     }
@@ -978,7 +1016,10 @@ fn derive_call(e: &Expr, name: &str, args: &[Expr], var: &str) -> Result<Expr> {
             if !args[0].mentions(var) {
                 return Ok(zero);
             }
-            Ok(smul(Expr::Call(format!("{name}'"), args.to_vec()), derive(&args[0], var)?))
+            Ok(smul(
+                Expr::Call(format!("{name}'"), args.to_vec()),
+                derive(&args[0], var)?,
+            ))
         }
     }
 }
@@ -1102,10 +1143,16 @@ mod tests {
     fn precedence_and_implicit_multiplication() {
         assert_eq!(p("2t").to_string(), "2*t");
         assert_eq!(p("-t^2").to_string(), "-t^2");
-        assert_eq!(p("3k/8"), Expr::div(Expr::mul(Expr::int(3), Expr::Var("k".into())), Expr::int(8)));
+        assert_eq!(
+            p("3k/8"),
+            Expr::div(Expr::mul(Expr::int(3), Expr::Var("k".into())), Expr::int(8))
+        );
         assert_eq!(p("(1-t)(1+t)").to_string(), "(1 - t)*(1 + t)");
         assert_eq!(p("xy^2").to_string(), "x*y^2");
-        assert_eq!(p("2^3^2"), Expr::pow(Expr::int(2), Expr::pow(Expr::int(3), Expr::int(2))));
+        assert_eq!(
+            p("2^3^2"),
+            Expr::pow(Expr::int(2), Expr::pow(Expr::int(3), Expr::int(2)))
+        );
         assert_eq!(p("t^-1").to_string(), "t^-1");
         assert_eq!(p("n!/(n-k)!").to_string(), "n!/(n - k)!");
         assert_eq!(p("(a, b)").to_string(), "(a, b)");

@@ -12,17 +12,17 @@
 
 use super::claims::{Claim, CurveSpec, Number};
 use super::engine::{check_chain, check_chain_symbolic, check_implies, points, Checked, Ctx};
+use super::eval::{Alg, Evaluator, Value};
 use super::expr::{substitute, Expr};
 use super::poly::{set_names, Poly, RatFunc};
-use super::eval::{Alg, Evaluator, Value};
 use super::{theorems, Verdict};
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::point::Point;
 use crate::quadratic::QuadraticIrrational;
 use crate::rational::{classify_conic, RationalBezierCurve};
-use crate::surface::BezierSurface;
 use crate::scalar::sign;
+use crate::surface::BezierSurface;
 use num_rational::BigRational;
 use num_traits::Zero;
 use std::collections::BTreeMap;
@@ -121,9 +121,13 @@ fn check_bezier_points(claim: &Claim, detail: bool) -> Result<Checked> {
         .clone()
         .ok_or_else(|| Error::Parse(format!("claim {} needs points", claim.id)))?;
     let mut cl = claim.clone();
-    cl.curves
-        .get_or_insert_with(BTreeMap::new)
-        .insert("P".into(), CurveSpec { points: pts.clone(), weights: None });
+    cl.curves.get_or_insert_with(BTreeMap::new).insert(
+        "P".into(),
+        CurveSpec {
+            points: pts.clone(),
+            weights: None,
+        },
+    );
     cl.vars = Some(vec![t.to_string()]);
     let ctx = Ctx::new(&cl)?;
     let power = ctx.expr(claim.need(&claim.power, "power")?)?;
@@ -152,21 +156,30 @@ fn check_bezier_points(claim: &Claim, detail: bool) -> Result<Checked> {
     Ok(out)
 }
 
-fn library_power_on(ctx: &Ctx<'_>, power: &Expr, param: &str, a: &Number, b: &Number) -> Result<BezierCurve<BigRational>> {
+fn library_power_on(
+    ctx: &Ctx<'_>,
+    power: &Expr,
+    param: &str,
+    a: &Number,
+    b: &Number,
+) -> Result<BezierCurve<BigRational>> {
     let names: Rc<[String]> = Rc::from(vec![param.to_string()]);
     set_names(&names);
     let mut vars = BTreeMap::new();
     vars.insert(param.to_string(), Value::S(RatFunc::poly(Poly::var(&names, 0))));
     let env = super::eval::VarEnv(vars);
     let v = Evaluator::new(&env, BTreeMap::new()).eval(power)?;
-    let comps: Vec<Vec<BigRational>> = v
-        .entries()
-        .iter()
-        .map(|r| poly_coeffs_1d(r))
-        .collect::<Result<_>>()?;
+    let comps: Vec<Vec<BigRational>> = v.entries().iter().map(|r| poly_coeffs_1d(r)).collect::<Result<_>>()?;
     let n = comps.iter().map(Vec::len).max().unwrap_or(1);
     let coeffs: Vec<Point<BigRational>> = (0..n)
-        .map(|k| Point::new(comps.iter().map(|c| c.get(k).cloned().unwrap_or_else(BigRational::zero)).collect()))
+        .map(|k| {
+            Point::new(
+                comps
+                    .iter()
+                    .map(|c| c.get(k).cloned().unwrap_or_else(BigRational::zero))
+                    .collect(),
+            )
+        })
         .collect::<Result<_>>()?;
     let _ = ctx;
     BezierCurve::from_power_on(
@@ -208,7 +221,8 @@ pub fn conic_type_of(coef: &[BigRational; 6]) -> &'static str {
         [b / &two, c.clone(), e / &two],
         [d / &two, e / &two, f.clone()],
     ];
-    let det = &m[0][0] * (&m[1][1] * &m[2][2] - &m[1][2] * &m[2][1]) - &m[0][1] * (&m[1][0] * &m[2][2] - &m[1][2] * &m[2][0])
+    let det = &m[0][0] * (&m[1][1] * &m[2][2] - &m[1][2] * &m[2][1])
+        - &m[0][1] * (&m[1][0] * &m[2][2] - &m[1][2] * &m[2][0])
         + &m[0][2] * (&m[1][0] * &m[2][1] - &m[1][1] * &m[2][0]);
     let disc = b * b - BigRational::from_integer(4.into()) * a * c;
     if a.is_zero() && b.is_zero() && c.is_zero() {
@@ -299,13 +313,22 @@ fn check_weight_type(ctx: &Ctx<'_>) -> Result<Checked> {
     };
     if uses_sqrt(c) {
         let pts = points::<QuadraticIrrational>(&spec.points)?;
-        let ws = w.iter().map(|x| super::engine::constant(&x.text()?)).collect::<Result<Vec<QuadraticIrrational>>>()?;
+        let ws = w
+            .iter()
+            .map(|x| super::engine::constant(&x.text()?))
+            .collect::<Result<Vec<QuadraticIrrational>>>()?;
         let curve = RationalBezierCurve::new(pts, ws.clone())?;
         let kind = classify_conic(&curve)?;
-        return Ok(verdict(kind.as_str(), format!("weights {}, {}, {}", ws[0], ws[1], ws[2])));
+        return Ok(verdict(
+            kind.as_str(),
+            format!("weights {}, {}, {}", ws[0], ws[1], ws[2]),
+        ));
     }
     let pts = points::<BigRational>(&spec.points)?;
-    let ws = w.iter().map(|x| super::engine::constant(&x.text()?)).collect::<Result<Vec<BigRational>>>()?;
+    let ws = w
+        .iter()
+        .map(|x| super::engine::constant(&x.text()?))
+        .collect::<Result<Vec<BigRational>>>()?;
     let curve = RationalBezierCurve::new(pts, ws.clone())?;
     let kind = classify_conic(&curve)?;
     let ratio = if ws.len() == 3 && !ws[0].is_zero() && !ws[2].is_zero() {
@@ -315,7 +338,10 @@ fn check_weight_type(ctx: &Ctx<'_>) -> Result<Checked> {
     };
     Ok(verdict(
         kind.as_str(),
-        format!("classify_conic: weights ({}){ratio}", ws.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", ")),
+        format!(
+            "classify_conic: weights ({}){ratio}",
+            ws.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", ")
+        ),
     ))
 }
 
@@ -346,14 +372,22 @@ fn check_enneper(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
         ));
     };
     let (u, v) = if m.swapped {
-        (format!("({})*t + ({})", m.gamma, m.delta), format!("({})*s + ({})", m.alpha, m.beta))
+        (
+            format!("({})*t + ({})", m.gamma, m.delta),
+            format!("({})*s + ({})", m.alpha, m.beta),
+        )
     } else {
-        (format!("({})*s + ({})", m.alpha, m.beta), format!("({})*t + ({})", m.gamma, m.delta))
+        (
+            format!("({})*s + ({})", m.alpha, m.beta),
+            format!("({})*t + ({})", m.gamma, m.delta),
+        )
     };
     let mut cl = c.clone();
     cl.kind = "identity".into();
     cl.vars = Some(vec!["s".into(), "t".into()]);
-    cl.defs = Some(vec!["E(u, v) = (u - u^3/3 + u*v^2, v - v^3/3 + v*u^2, u^2 - v^2)".into()]);
+    cl.defs = Some(vec![
+        "E(u, v) = (u - u^3/3 + u*v^2, v - v^3/3 + v*u^2, u^2 - v^2)".into()
+    ]);
     let sub = Ctx::new(&cl)?;
     let lhs = sub.expr(&format!("{name}(s, t)"))?;
     let rhs = sub.expr(&format!("({})*E({u}, {v})", m.lambda))?;

@@ -180,5 +180,7 @@ pub fn explain(paths: &[PathBuf], id: &str) -> Result<String> {
             return Ok(report::explain_text(f, c, &checked));
         }
     }
-    Err(Error::Domain(format!("no claim with id '{id}' in the given claim files")))
+    Err(Error::Domain(format!(
+        "no claim with id '{id}' in the given claim files"
+    )))
 }

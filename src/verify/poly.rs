@@ -264,7 +264,9 @@ impl Alg for RatFunc {
     }
     fn div(&self, o: &Self) -> Result<Self> {
         if o.num.is_zero() {
-            return Err(Error::DivisionByZero(format!("division by the zero polynomial ({self} / 0)")));
+            return Err(Error::DivisionByZero(format!(
+                "division by the zero polynomial ({self} / 0)"
+            )));
         }
         let r = RatFunc::normal(self.num.mul(&o.den), self.den.mul(&o.num));
         r.size_check()?;

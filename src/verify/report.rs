@@ -146,7 +146,12 @@ pub(super) fn to_text(r: &Report) -> String {
             .filter(|o| o.verdict != o.expect)
             .map(|o| o.id.as_str())
             .collect();
-        let _ = writeln!(s, "{} verdicts differ from the claim files: {}", t.mismatches, bad.join(", "));
+        let _ = writeln!(
+            s,
+            "{} verdicts differ from the claim files: {}",
+            t.mismatches,
+            bad.join(", ")
+        );
     }
     s
 }
@@ -210,7 +215,16 @@ pub(super) fn explain_text(f: &ClaimFile, c: &Claim, checked: &Checked) -> Strin
         let _ = writeln!(s, "for:       {}", r.join(", "));
     }
     let _ = writeln!(s, "\nverdict: {}", checked.verdict.as_str());
-    let _ = writeln!(s, "{}: {}\n", if checked.verdict == Verdict::Fails { "counterexample" } else { "certificate" }, checked.certificate);
+    let _ = writeln!(
+        s,
+        "{}: {}\n",
+        if checked.verdict == Verdict::Fails {
+            "counterexample"
+        } else {
+            "certificate"
+        },
+        checked.certificate
+    );
     if !checked.steps.is_empty() {
         let _ = writeln!(s, "steps:");
         for line in &checked.steps {

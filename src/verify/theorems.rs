@@ -20,25 +20,43 @@ type Q = BigRational;
 
 /// The theorems known to `kind = "theorem"`, with what each checks.
 pub const THEOREMS: &[(&str, &str)] = &[
-    ("de_casteljau_bernstein", "de Casteljau (1) = eval_bernstein = Σ b_i B_i^n(t)"),
+    (
+        "de_casteljau_bernstein",
+        "de Casteljau (1) = eval_bernstein = Σ b_i B_i^n(t)",
+    ),
     ("partition_of_unity", "Σ_i B_i^n(t) = 1"),
     ("elevation_7", "elevate() gives the points (7) and the same curve"),
-    ("elevation_8", "elevate_by(r) gives the points (8) = r steps of (7), and the same curve"),
-    ("subdivision", "Lemma 1.3: split_at(t0) gives b(t0 t) and b(t0 + (1-t0) t), with the scheme's boundary as points"),
+    (
+        "elevation_8",
+        "elevate_by(r) gives the points (8) = r steps of (7), and the same curve",
+    ),
+    (
+        "subdivision",
+        "Lemma 1.3: split_at(t0) gives b(t0 t) and b(t0 + (1-t0) t), with the scheme's boundary as points",
+    ),
     ("identity_4", "(4): B_j^n(st) = Σ_{r=j}^n B_j^r(s) B_r^n(t)"),
-    ("derivative", "d/dt b(t) = n Σ Δb_j B_j^{n-1}(t) (library derivative and the formula)"),
+    (
+        "derivative",
+        "d/dt b(t) = n Σ Δb_j B_j^{n-1}(t) (library derivative and the formula)",
+    ),
     ("derivative_k", "d^k/dt^k b(t) = n!/(n-k)! Σ Δ^k b_j B_j^{n-k}(t)"),
     ("endpoint_tangent", "b'(0) = n(b_1 - b_0), b'(1) = n(b_n - b_{n-1})"),
     ("tangent_at_t0", "b'(t0) = n (b_1^{n-1}(t0) - b_0^{n-1}(t0))"),
     ("affine_invariance", "transform(Φ) then evaluate = evaluate then Φ"),
-    ("convex_hull", "b(t) lies in the convex hull of the control points for 0 ≤ t ≤ 1"),
+    (
+        "convex_hull",
+        "b(t) lies in the convex hull of the control points for 0 ≤ t ≤ 1",
+    ),
 ];
 
 fn degrees(ctx: &Ctx<'_>) -> Result<(i64, i64)> {
     let text = ctx.claim.degrees.as_deref().unwrap_or("0..=10");
     let r = super::expr::parse_range(&format!("n = {text}"))?;
     let empty = Default::default();
-    Ok((super::expr::eval_int(&r.from, &empty)?, super::expr::eval_int(&r.to, &empty)?))
+    Ok((
+        super::expr::eval_int(&r.from, &empty)?,
+        super::expr::eval_int(&r.to, &empty)?,
+    ))
 }
 
 /// One identity over the symbolic polygon `b` of degree `n`.
@@ -106,7 +124,13 @@ fn parts_of(name: &str, kmax: i64) -> Option<Vec<(i64, Part)>> {
                 &["t0", "t"],
                 &["right(b, t0, t)", "b(t0 + (1 - t0)*t)"],
             ),
-            part("points of c1: b_0^r(t0)", 0, &["r = 0..=n"], &["t0"], &["leftp(b, t0, r)", "b(0, r, t0)"]),
+            part(
+                "points of c1: b_0^r(t0)",
+                0,
+                &["r = 0..=n"],
+                &["t0"],
+                &["leftp(b, t0, r)", "b(0, r, t0)"],
+            ),
             part(
                 "points of c2: b_r^{n-r}(t0)",
                 0,
@@ -218,14 +242,20 @@ pub fn check_theorem(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
             steps.extend(out.steps.iter().map(|s| format!("  {s}")));
         }
         if out.verdict == Verdict::Fails {
-            let mut f = Checked::new(Verdict::Fails, format!("{} ({}): {}", p.label, p.chain.join(" = "), out.certificate));
+            let mut f = Checked::new(
+                Verdict::Fails,
+                format!("{} ({}): {}", p.label, p.chain.join(" = "), out.certificate),
+            );
             f.steps = steps;
             return Ok(f);
         }
         certs.push(format!("[{}] {}", p.label, out.certificate));
     }
     if certs.is_empty() {
-        return Err(Error::Domain(format!("claim {}: the degree range {lo}..={hi} is empty for {name}", c.id)));
+        return Err(Error::Domain(format!(
+            "claim {}: the degree range {lo}..={hi} is empty for {name}",
+            c.id
+        )));
     }
     let mut out = Checked::new(Verdict::Proved, certs.join("; "));
     out.steps = steps;
@@ -246,7 +276,9 @@ fn unit_polygon(n: usize, dim: usize, k: usize, coord: usize) -> Result<BezierCu
 }
 
 fn params(d: usize) -> Vec<Q> {
-    (0..=d).map(|k| Q::new((k as i64).into(), (d.max(1) as i64).into())).collect()
+    (0..=d)
+        .map(|k| Q::new((k as i64).into(), (d.max(1) as i64).into()))
+        .collect()
 }
 
 /// Affine invariance: `transform(Φ)(t) = Φ(b(t))` for every affine `Φ(p) = A p + c` (in the
@@ -322,7 +354,10 @@ fn convex_hull(lo: i64, hi: i64, detail: bool) -> Result<Checked> {
                 return Ok(Checked::new(Verdict::Fails, format!("Σ B_i^{n}({t}) = {sum} ≠ 1")));
             }
             if basis.iter().any(|b| *b < Q::zero()) {
-                return Ok(Checked::new(Verdict::Fails, format!("a Bernstein polynomial of degree {n} is negative at t = {t}")));
+                return Ok(Checked::new(
+                    Verdict::Fails,
+                    format!("a Bernstein polynomial of degree {n} is negative at t = {t}"),
+                ));
             }
         }
         // A sample curve of degree n in the plane (a zig-zag), its points at t = k/8 in the hull.
@@ -337,13 +372,18 @@ fn convex_hull(lo: i64, hi: i64, detail: bool) -> Result<Checked> {
                 Some(w) => {
                     hull_checks += 1;
                     if detail && n == hi as usize {
-                        steps.push(format!("n = {n}, t = {t}: b(t) = {p} = Σ w_i b_i with w = {:?}", w.iter().map(|x| x.to_string()).collect::<Vec<_>>()));
+                        steps.push(format!(
+                            "n = {n}, t = {t}: b(t) = {p} = Σ w_i b_i with w = {:?}",
+                            w.iter().map(|x| x.to_string()).collect::<Vec<_>>()
+                        ));
                     }
                 }
                 None => {
                     return Ok(Checked::new(
                         Verdict::Fails,
-                        format!("the point b({t}) = {p} of the curve {curve} is outside the convex hull of its control points"),
+                        format!(
+                        "the point b({t}) = {p} of the curve {curve} is outside the convex hull of its control points"
+                    ),
                     ))
                 }
             }
@@ -376,7 +416,7 @@ pub fn elevation_bound(curve: &BezierCurve<Q>, r: usize) -> Result<Q> {
     let d2 = curve.forward_differences(2)?;
     let m = d2
         .iter()
-        .flat_map(|p| p.coords().iter().map(|x| Scalar::abs(x)))
+        .flat_map(|p| p.coords().iter().map(Scalar::abs))
         .fold(Q::zero(), |a, b| if b > a { b } else { a });
     let factor = Q::new(((n * (n - 1)) as i64).into(), (2 * (n + r) as i64).into());
     Ok(factor * m)
@@ -419,7 +459,10 @@ pub fn check_convergence(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
             if e.max_norm > bound {
                 return Ok(Checked::new(
                     Verdict::Fails,
-                    format!("{name}: at r = {} the distance {} exceeds the bound {bound}", e.r, e.max_norm),
+                    format!(
+                        "{name}: at r = {} the distance {} exceeds the bound {bound}",
+                        e.r, e.max_norm
+                    ),
                 ));
             }
             if detail {
