@@ -1182,7 +1182,9 @@ mod tests {
     #[test]
     fn definitions_and_derivatives() {
         let d = parse_definition("e(i) = i/(n+1)*b[i-1]", &[]).unwrap();
-        let e = expand(&p("e(2) + e(j)"), &[d]).unwrap();
+        // `e` is declared (as claims declare their definitions); undeclared, `e(2)` is `e·2`.
+        assert_eq!(p("e(2)").to_string(), "e*2");
+        let e = expand(&parse("e(2) + e(j)", &["e".to_string()]).unwrap(), &[d]).unwrap();
         assert_eq!(e.to_string(), "2/(n + 1)*b[2 - 1] + j/(n + 1)*b[j - 1]");
         let dd = expand_diffs(&p("diff(t^3, t)")).unwrap();
         assert!(dd.to_string().contains("__dpow(t, 3, 1)"), "{dd}");
