@@ -254,6 +254,25 @@ where
     }
 }
 
+/// A rational curve: `x(t)` and `ẋ(t)` by the homogeneous de Casteljau algorithm and the
+/// quotient rule, exactly for exact scalars. A weight sum vanishing at 0, 1/2 or 1 is an error.
+impl<T: Scalar> CubicFitSource<T> for crate::rational::RationalBezierCurve<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    fn cubic_fit_data(&self) -> Result<CubicFitData<T>> {
+        let (zero, one) = (T::zero(), T::one());
+        let half = one.checked_div(&T::from_i64(2))?;
+        CubicFitData::new(
+            self.eval(&zero)?,
+            self.eval(&one)?,
+            self.eval(&half)?,
+            self.derivative_at(&zero)?,
+            self.derivative_at(&one)?,
+        )
+    }
+}
+
 /// The result of text 004's fit.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CubicFit<T> {

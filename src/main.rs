@@ -1,11 +1,369 @@
-//! The `casteljau` command.
-use casteljau::{BezierCurve, BigRational, Point, Scalar};
+//! The `casteljau` command: prove the texts' claims, compute on exact data, serve the oracle.
+//!
+//! Exit status: 0 on success, 1 when `prove` finds a verdict other than the expected one,
+//! 2 for usage errors, bad input and I/O errors (one clear line on stderr, never a panic).
 
-fn main() {
-    let q = |p, d| BigRational::from_ratio(p, d).unwrap();
-    let a = |c: &[i64]| Point::from_ints(c).unwrap();
-    let coeffs = vec![a(&[1, 0]), a(&[0, 1]), a(&[-1, 0]), a(&[0, -1])];
-    let c = BezierCurve::from_power_on(&coeffs, &q(-1, 1), &q(1, 1)).unwrap();
-    println!("text 000 §1.3: Bézier points of (-u^2+1, -u^3+u), -1 <= u <= 1: {c}");
-    println!("{}", c.scheme(&q(1, 3)));
+use casteljau::fit::CubicFitData;
+use casteljau::input::{parse_count, parse_net, parse_number, parse_numbers, parse_point, parse_points};
+use casteljau::oracle::{self, check_weight_count, Answer, Op};
+use casteljau::verify::{explain, prove_paths};
+use casteljau::{BezierCurve, BezierSurface, BigRational, Error, Point, RationalBezierCurve};
+use clap::{Parser, Subcommand, ValueEnum};
+use serde_json::{json, Value};
+use std::io::{self, IsTerminal, Write};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+#[derive(Parser)]
+#[command(
+    name = "casteljau",
+    version,
+    about = "Exact Bézier geometry: prove the texts' claims, compute with exact fractions, serve an oracle",
+    after_help = "Numbers are exact: 3, -4/3, 0.25, 1e-3. Points: \"0,0; 4/3,-4/3; 4/3,4/3; 0,0\". \
+                  Nets: rows separated by '|'.\nExit status: 0 ok, 1 a claim did not get its expected verdict, \
+                  2 bad usage or input."
+)]
+struct Cli {
+    /// Output format.
+    #[arg(long, global = true, value_enum, default_value_t = Format::Text)]
+    format: Format,
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum Format {
+    /// Exact fractions for people.
+    Text,
+    /// One JSON object, the same fields as the oracle's answer.
+    Json,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Check every claim in the claim files (default: proofs/); exit 1 on a mismatch.
+    Prove {
+        /// Claim files or directories.
+        #[arg(default_value = "proofs")]
+        paths: Vec<PathBuf>,
+        /// Print the step-by-step proof of one claim instead.
+        #[arg(long, value_name = "ID")]
+        explain: Option<String>,
+    },
+    /// Evaluate b(t) exactly by de Casteljau's algorithm (a rational curve with --weights).
+    Eval {
+        /// Control points, e.g. "0,0; 4/3,-4/3; 4/3,4/3; 0,0".
+        #[arg(allow_hyphen_values = true)]
+        points: String,
+        /// The parameter.
+        #[arg(long, allow_hyphen_values = true)]
+        t: String,
+        /// Print the whole triangular scheme (9) (polynomial curves).
+        #[arg(long, conflicts_with = "weights")]
+        scheme: bool,
+        /// Weights of a rational curve, one per control point, e.g. "1, 1/2, 1".
+        #[arg(long, allow_hyphen_values = true)]
+        weights: Option<String>,
+    },
+    /// The type and implicit equation of the conic through a rational quadratic arc.
+    Conic {
+        /// Three planar control points.
+        #[arg(allow_hyphen_values = true)]
+        points: String,
+        /// Their weights, e.g. "1, 1/2, 1".
+        #[arg(long, allow_hyphen_values = true)]
+        weights: String,
+    },
+    /// Evaluate a tensor-product surface b(u, v) exactly.
+    Surface {
+        /// The control net: rows i = 0..m separated by '|', each row the points j = 0..n.
+        #[arg(allow_hyphen_values = true)]
+        net: String,
+        /// The parameter u (along the rows' index i).
+        #[arg(long, allow_hyphen_values = true)]
+        u: String,
+        /// The parameter v (along a row, index j).
+        #[arg(long, allow_hyphen_values = true)]
+        v: String,
+    },
+    /// Text 004's cubic fit from x(0), x(1), x(1/2), x'(0), x'(1).
+    Fit {
+        /// x(0).
+        #[arg(long, allow_hyphen_values = true)]
+        x0: String,
+        /// x(1).
+        #[arg(long, allow_hyphen_values = true)]
+        x1: String,
+        /// x(1/2).
+        #[arg(long, allow_hyphen_values = true)]
+        xh: String,
+        /// x'(0).
+        #[arg(long, allow_hyphen_values = true)]
+        d0: String,
+        /// x'(1).
+        #[arg(long, allow_hyphen_values = true)]
+        d1: String,
+    },
+    /// Elevate the degree by r (formula (8)).
+    Elevate {
+        /// Control points.
+        #[arg(allow_hyphen_values = true)]
+        points: String,
+        /// Number of elevation steps r.
+        #[arg(long, value_name = "R", allow_hyphen_values = true)]
+        by: String,
+    },
+    /// Subdivide at t: the control points of both pieces.
+    Split {
+        /// Control points.
+        #[arg(allow_hyphen_values = true)]
+        points: String,
+        /// The parameter.
+        #[arg(long, allow_hyphen_values = true)]
+        t: String,
+    },
+    /// The control points of the k-th derivative curve (with n!/(n-k)!), or its vector at t.
+    Derivative {
+        /// Control points.
+        #[arg(allow_hyphen_values = true)]
+        points: String,
+        /// The order k.
+        #[arg(long, value_name = "K", default_value = "1", allow_hyphen_values = true)]
+        order: String,
+        /// Print the derivative vector at this parameter instead.
+        #[arg(long, value_name = "T", allow_hyphen_values = true)]
+        at: Option<String>,
+    },
+    /// Bézier points of the polynomial curve a_0 + a_1 t + … + a_n t^n on [0, 1].
+    ToBezier {
+        /// The coefficient vectors a_0; a_1; …; a_n, e.g. "0,1; 4,0; -4,0".
+        #[arg(allow_hyphen_values = true)]
+        power: String,
+    },
+    /// Serve exact answers to JSON requests, one per line on stdin (see docs).
+    Oracle,
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        // clap prints help and version to stdout with status 0, usage errors to stderr with 2
+        Err(e) => e.exit(),
+    };
+    match std::panic::catch_unwind(|| run(cli)) {
+        Ok(Ok(code)) => code,
+        Ok(Err(message)) => {
+            eprintln!("casteljau: {message}");
+            ExitCode::from(2)
+        }
+        Err(_) => {
+            eprintln!("casteljau: internal error (a bug in casteljau: please report the command line)");
+            ExitCode::from(2)
+        }
+    }
+}
+
+/// Runs one command; `Err` is the one-line message for stderr (exit status 2).
+fn run(cli: Cli) -> Result<ExitCode, String> {
+    let format = cli.format;
+    let e = |e: Error| e.to_string();
+    match cli.command {
+        Command::Prove { paths, explain: id } => prove(&paths, id.as_deref(), format),
+        Command::Oracle => {
+            let stdin = io::stdin();
+            match oracle::serve(stdin.lock(), io::stdout().lock()) {
+                Ok(()) => Ok(ExitCode::SUCCESS),
+                // the client closed its end: nobody is left to answer
+                Err(err) if err.kind() == io::ErrorKind::BrokenPipe => Ok(ExitCode::SUCCESS),
+                Err(err) => Err(format!("oracle: {err}")),
+            }
+        }
+        Command::Eval {
+            points,
+            t,
+            weights: Some(weights),
+            ..
+        } => {
+            let op = Op::RationalEval {
+                curve: rational_arg(&points, &weights)?,
+                t: number_arg("--t", &t)?,
+                approx: None,
+            };
+            emit(&op.run().map_err(e)?, format, None)
+        }
+        Command::Conic { points, weights } => {
+            let op = Op::Conic {
+                curve: rational_arg(&points, &weights)?,
+            };
+            emit(&op.run().map_err(e)?, format, None)
+        }
+        Command::Surface { net, u, v } => {
+            let net = parse_net(&net).map_err(|err| format!("control net: {err}"))?;
+            let op = Op::SurfaceEval {
+                surface: BezierSurface::new(net).map_err(|err| format!("control net: {err}"))?,
+                u: number_arg("--u", &u)?,
+                v: number_arg("--v", &v)?,
+                approx: None,
+            };
+            emit(&op.run().map_err(e)?, format, None)
+        }
+        Command::Fit { x0, x1, xh, d0, d1 } => {
+            let data = CubicFitData::new(
+                point_arg("--x0", &x0)?,
+                point_arg("--x1", &x1)?,
+                point_arg("--xh", &xh)?,
+                point_arg("--d0", &d0)?,
+                point_arg("--d1", &d1)?,
+            )
+            .map_err(e)?;
+            emit(&Op::FitCubic { data }.run().map_err(e)?, format, None)
+        }
+        Command::Eval { points, t, scheme, .. } => {
+            let curve = curve_arg(&points)?;
+            let t = number_arg("--t", &t)?;
+            let op = Op::Eval {
+                curve: curve.clone(),
+                t: t.clone(),
+                approx: None,
+            };
+            let answer = op.run().map_err(e)?;
+            if !scheme {
+                return emit(&answer, format, None);
+            }
+            let scheme = curve.scheme(&t);
+            match format {
+                Format::Text => {
+                    output(&format!("{scheme}b({}) = {}\n", t, answer.to_text()))?;
+                    Ok(ExitCode::SUCCESS)
+                }
+                Format::Json => {
+                    let columns: Vec<Value> = scheme
+                        .columns
+                        .iter()
+                        .map(|c| casteljau::input::points_to_json(c))
+                        .collect();
+                    emit(&answer, format, Some(("scheme", Value::Array(columns))))
+                }
+            }
+        }
+        Command::Elevate { points, by } => {
+            let op = Op::Elevate {
+                curve: curve_arg(&points)?,
+                by: parse_count(&by, "--by").map_err(e)?,
+            };
+            emit(&op.run().map_err(e)?, format, None)
+        }
+        Command::Split { points, t } => {
+            let op = Op::Split {
+                curve: curve_arg(&points)?,
+                t: number_arg("--t", &t)?,
+            };
+            emit(&op.run().map_err(e)?, format, None)
+        }
+        Command::Derivative { points, order, at } => {
+            let op = Op::Derivative {
+                curve: curve_arg(&points)?,
+                order: parse_count(&order, "--order").map_err(e)?,
+                at: at.as_deref().map(|t| number_arg("--at", t)).transpose()?,
+            };
+            emit(&op.run().map_err(e)?, format, None)
+        }
+        Command::ToBezier { power } => {
+            let coeffs = parse_points(&power).map_err(|err| format!("coefficients: {err}"))?;
+            let dim = coeffs[0].dim();
+            let op = Op::ToBezier {
+                power: (0..dim)
+                    .map(|k| coeffs.iter().map(|a| a.coords()[k].clone()).collect())
+                    .collect(),
+            };
+            emit(&op.run().map_err(e)?, format, None)
+        }
+    }
+}
+
+fn curve_arg(text: &str) -> Result<BezierCurve<BigRational>, String> {
+    let points = parse_points(text).map_err(|e| format!("control points: {e}"))?;
+    BezierCurve::new(points).map_err(|e| format!("control points: {e}"))
+}
+
+fn rational_arg(points: &str, weights: &str) -> Result<RationalBezierCurve<BigRational>, String> {
+    let points = parse_points(points).map_err(|e| format!("control points: {e}"))?;
+    let weights = parse_numbers(weights).map_err(|e| format!("--weights: {e}"))?;
+    check_weight_count(points.len(), weights.len()).map_err(|e| format!("--weights: {e}"))?;
+    RationalBezierCurve::new(points, weights).map_err(|e| e.to_string())
+}
+
+fn point_arg(flag: &str, text: &str) -> Result<Point<BigRational>, String> {
+    parse_point(text).map_err(|e| format!("{flag}: {e}"))
+}
+
+fn number_arg(flag: &str, text: &str) -> Result<BigRational, String> {
+    parse_number(text).map_err(|e| format!("{flag}: {e}"))
+}
+
+/// Prints an answer as text, or as the oracle's JSON object (plus an `extra` field).
+fn emit(answer: &Answer, format: Format, extra: Option<(&str, Value)>) -> Result<ExitCode, String> {
+    match format {
+        Format::Text => output(&format!("{}\n", answer.to_text()))?,
+        Format::Json => {
+            let mut m = answer.to_json();
+            m.insert("ok".into(), json!(true));
+            if let Some((k, v)) = extra {
+                m.insert(k.into(), v);
+            }
+            output(&format!("{}\n", Value::Object(m)))?;
+        }
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Writes to stdout. `println!` would panic when the reader has gone (`casteljau … | head`);
+/// a closed pipe just means nobody wants the rest, so the command ends quietly.
+fn output(text: &str) -> Result<(), String> {
+    let mut out = io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == io::ErrorKind::BrokenPipe => std::process::exit(0),
+        Err(e) => Err(format!("cannot write the output: {e}")),
+    }
+}
+
+fn prove(paths: &[PathBuf], id: Option<&str>, format: Format) -> Result<ExitCode, String> {
+    if let Some(missing) = paths.iter().find(|p| !p.exists()) {
+        return Err(format!(
+            "no such file or directory: {} (give claim files or directories)",
+            missing.display()
+        ));
+    }
+    if let Some(id) = id {
+        let text = explain(paths, id).map_err(|e| e.to_string())?;
+        match format {
+            Format::Text => output(&format!("{}\n", text.trim_end()))?,
+            Format::Json => output(&format!("{}\n", json!({"id": id, "explanation": text})))?,
+        }
+        return Ok(ExitCode::SUCCESS);
+    }
+    let show_progress = io::stderr().is_terminal();
+    let mut progress = |done: usize, total: usize, claim: &str| {
+        if show_progress {
+            // one line, redrawn in place: carriage return, then clear to the end of the line
+            let mut err = io::stderr().lock();
+            let _ = write!(err, "\r\x1b[2K[{done}/{total}] {claim}");
+            let _ = err.flush();
+        }
+    };
+    let report = prove_paths(paths, &mut progress);
+    if show_progress {
+        eprint!("\r\x1b[2K");
+    }
+    let report = report.map_err(|e| e.to_string())?;
+    match format {
+        Format::Text => output(&report.to_text())?,
+        Format::Json => output(&format!("{}\n", report.to_json()))?,
+    }
+    Ok(if report.mismatches() > 0 {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    })
 }

@@ -546,3 +546,21 @@ fn text_004_as_a_least_squares_problem() {
     assert_eq!(fit.residual_squared, cubic.delta2);
     assert_eq!(fit.unknowns, vec!["alpha".to_string(), "beta".to_string()]);
 }
+
+#[test]
+fn rational_quarter_circle_is_fitted_exactly_in_the_plane() {
+    // Text 001, Example 1: x(t) = ((1-t²)/(1+t²), 2t/(1+t²)), a quarter of the unit circle.
+    let circle = casteljau::rational::RationalBezierCurve::new(
+        vec![p(&[1, 0]), p(&[1, 1]), p(&[0, 1])],
+        vec![q(1, 1), q(1, 1), q(2, 1)],
+    )
+    .unwrap();
+    let data = casteljau::CubicFitSource::cubic_fit_data(&circle).unwrap();
+    assert_eq!(data.xh, Point::new(vec![q(3, 5), q(4, 5)]).unwrap());
+    assert_eq!(data.d0, p(&[0, 2]));
+    assert_eq!(data.d1, p(&[-1, 0]));
+    let fit = fit_cubic(&data).unwrap();
+    // A plane curve with independent end tangents: δ = 0 exactly (text 004's remark).
+    assert_eq!(fit.delta2, q(0, 1));
+    assert_eq!(fit.curve.eval(&q(1, 2)), data.xh);
+}

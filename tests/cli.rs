@@ -1,0 +1,190 @@
+//! The `casteljau` command through the built binary: outputs, JSON, exit statuses, errors.
+
+use serde_json::{json, Value};
+use std::process::{Command, Output};
+
+fn casteljau(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_casteljau"))
+        .args(args)
+        .output()
+        .expect("the casteljau binary runs")
+}
+
+/// Runs a command that must succeed; returns its stdout.
+fn ok(args: &[&str]) -> String {
+    let out = casteljau(args);
+    assert!(
+        out.status.success(),
+        "{args:?} failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(out.stderr.is_empty(), "{args:?} wrote to stderr");
+    String::from_utf8(out.stdout).unwrap()
+}
+
+/// Runs a command that must fail with status 2 and one line on stderr; returns that line.
+fn fails(args: &[&str]) -> String {
+    let out = casteljau(args);
+    assert_eq!(out.status.code(), Some(2), "{args:?} should exit 2");
+    assert!(out.stdout.is_empty(), "{args:?} printed to stdout");
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(!err.contains("panicked"), "{args:?} panicked: {err}");
+    err
+}
+
+fn json_out(args: &[&str]) -> Value {
+    serde_json::from_str(&ok(args)).unwrap()
+}
+
+// text 000, §1.3: the Bézier points of (-u² + 1, -u³ + u), -1 ≤ u ≤ 1
+const CUBIC: &str = "0,0; 4/3,-4/3; 4/3,4/3; 0,0";
+
+#[test]
+fn eval_prints_exact_fractions() {
+    assert_eq!(ok(&["eval", CUBIC, "--t", "1/3"]), "(8/9, -8/27)\n");
+    // t = 1/2 is u = 0: the point (1, 0)
+    assert_eq!(ok(&["eval", CUBIC, "--t", "0.5"]), "(1, 0)\n");
+    // negative parameters and decimals, exactly
+    assert_eq!(ok(&["eval", "0; 1; 3", "--t", "-1/2"]), "(-3/4)\n");
+    assert_eq!(
+        json_out(&["eval", CUBIC, "--t", "1/3", "--format", "json"]),
+        json!({"ok": true, "point": ["8/9", "-8/27"]})
+    );
+}
+
+#[test]
+fn eval_scheme_prints_the_triangle() {
+    let out = ok(&["eval", CUBIC, "--t", "1/3", "--scheme"]);
+    assert!(out.starts_with("de Casteljau scheme (9) at t = 1/3\n"), "{out}");
+    assert!(out.contains("b_0^1 = (4/9, -4/9)"), "{out}");
+    assert!(out.contains("b_0^3 = (8/9, -8/27)"), "{out}");
+    assert!(out.ends_with("b(1/3) = (8/9, -8/27)\n"), "{out}");
+    let j = json_out(&["--format", "json", "eval", CUBIC, "--t", "1/3", "--scheme"]);
+    assert_eq!(j["scheme"][3], json!([["8/9", "-8/27"]]));
+    assert_eq!(j["scheme"][0][1], json!(["4/3", "-4/3"]));
+}
+
+#[test]
+fn elevate_split_derivative() {
+    assert_eq!(
+        ok(&["elevate", "0,0; 1,2; 3,1", "--by", "2"]),
+        "(0, 0); (1/2, 1); (7/6, 3/2); (2, 3/2); (3, 1)\n"
+    );
+    assert_eq!(
+        ok(&["split", "0,0; 1,2; 3,1", "--t", "1/2"]),
+        "left:  (0, 0); (1/2, 1); (5/4, 5/4)\nright: (5/4, 5/4); (2, 3/2); (3, 1)\n"
+    );
+    let j = json_out(&["split", "0; 1; 3", "--t", "1/2", "--format", "json"]);
+    assert_eq!(
+        j,
+        json!({"ok": true, "left": [["0"], ["1/2"], ["5/4"]], "right": [["5/4"], ["2"], ["3"]]})
+    );
+    assert_eq!(ok(&["derivative", "0,0; 1,2; 3,1"]), "(2, 4); (4, -2)\n");
+    assert_eq!(ok(&["derivative", "0,0; 1,2; 3,1", "--order", "2"]), "(2, -6)\n");
+    assert_eq!(ok(&["derivative", "0,0; 1,2; 3,1", "--at", "1/2"]), "(3, 1)\n");
+    assert_eq!(
+        ok(&["derivative", "0,0; 1,2; 3,1", "--order", "3", "--at", "1/2"]),
+        "(0, 0)\n"
+    );
+    // 4t − 4t² and 1 as a quadratic: the parabola's Bézier points
+    assert_eq!(ok(&["to-bezier", "0,1; 4,0; -4,0"]), "(0, 1); (2, 1); (0, 1)\n");
+}
+
+#[test]
+fn rational_conic_surface_fit() {
+    // text 001, Example 3
+    assert_eq!(
+        ok(&["conic", "-1,1; 0,-1; 1,1", "--weights", "1, 1/2, 1"]),
+        "type: ellipse\nimplicit: 4x^2 + 3y^2 - 10y + 3 = 0\n"
+    );
+    assert_eq!(
+        json_out(&["conic", "-1,1; 0,-1; 1,1", "--weights", "1, 1, 1", "--format", "json"]),
+        json!({"ok": true, "type": "parabola", "implicit": ["1", "0", "0", "0", "-1", "0"]})
+    );
+    assert_eq!(
+        ok(&["eval", "1,0; 1,1; 0,1", "--weights", "1,1,2", "--t", "1/2"]),
+        "(3/5, 4/5)\n"
+    );
+    assert_eq!(
+        ok(&["surface", "0,0,0; 0,1,0 | 1,0,0; 1,1,1", "--u", "1/3", "--v", "3/4"]),
+        "(1/3, 3/4, 1/4)\n"
+    );
+    let fit = [
+        "fit", "--x0", "0,0,0", "--x1", "4,0,5", "--xh", "2,3/2,1", "--d0", "3,6,0", "--d1", "3,-6,12",
+    ];
+    assert_eq!(
+        ok(&fit),
+        "k = 1/3\nl = 1/3\npoints: (0, 0, 0); (1, 2, 0); (3, 2, 1); (4, 0, 5)\ndelta2 = 0\n"
+    );
+    let err = fails(&[
+        "fit", "--x0", "0,0", "--x1", "1,0", "--xh", "0,1", "--d0", "1,0", "--d1", "2,0",
+    ]);
+    assert!(err.contains("parallel"), "{err}");
+    let err = fails(&["conic", "-1,1; 0,-1; 1,1", "--weights", "1, 1/2"]);
+    assert!(err.contains("2 weights for 3 control points"), "{err}");
+    let err = fails(&["surface", "0,0 | 1,0; 1,1", "--u", "0", "--v", "0"]);
+    assert!(err.contains("ragged"), "{err}");
+}
+
+#[test]
+fn printed_points_are_valid_input() {
+    let elevated = ok(&["elevate", CUBIC, "--by", "3"]);
+    let a = ok(&["eval", elevated.trim(), "--t", "2/7"]);
+    let b = ok(&["eval", CUBIC, "--t", "2/7"]);
+    assert_eq!(a, b);
+}
+
+#[test]
+fn bad_input_is_one_line_on_stderr_and_status_2() {
+    let cases: &[(&[&str], &str)] = &[
+        (&["eval", "0,0; 1", "--t", "1"], "dimension mismatch"),
+        (&["eval", "0,0", "--t", "1/0"], "zero denominator"),
+        (&["eval", "0,0", "--t", "abc"], "not a number"),
+        (&["eval", "", "--t", "0"], "empty"),
+        (&["eval", "0,x", "--t", "0"], "point 0: coordinate 1"),
+        (&["eval", "0,0", "--t", "1e999999999"], "too large"),
+        (
+            &["elevate", "0,0", "--by", "1000000000000"],
+            "degree after elevation is too large",
+        ),
+        (&["elevate", "0,0", "--by", "-1"], "non-negative integer"),
+        (&["derivative", "0,0; 1,1", "--order", "2"], "order 2"),
+        (&["to-bezier", "0,1; 4"], "dimension mismatch"),
+        (&["prove", "/no/such/dir"], "no such file or directory"),
+    ];
+    for (args, needle) in cases {
+        let err = fails(args);
+        assert!(err.starts_with("casteljau: "), "{args:?}: {err}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(needle), "{args:?}: {err:?} should mention {needle:?}");
+    }
+}
+
+#[test]
+fn usage_errors_exit_2_and_help_exits_0() {
+    let out = casteljau(&["frobnicate"]);
+    assert_eq!(out.status.code(), Some(2));
+    let out = casteljau(&["eval", "0,0"]);
+    assert_eq!(out.status.code(), Some(2), "missing --t");
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--t"));
+    let out = casteljau(&["--help"]);
+    assert_eq!(out.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("oracle"));
+}
+
+#[test]
+fn prove_reports_and_sets_the_status() {
+    let dir = std::env::temp_dir().join(format!("casteljau-cli-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = casteljau(&["prove", dir.to_str().unwrap(), "--format", "json"]);
+    let code = out.status.code();
+    assert!(code == Some(0) || code == Some(1), "prove exits 0 or 1, got {code:?}");
+    let report: Value = serde_json::from_slice(&out.stdout).expect("prove --format json prints one JSON object");
+    let mismatches = report["summary"]["mismatches"].as_u64().unwrap();
+    assert_eq!(code == Some(1), mismatches > 0);
+    // progress goes to stderr only on a terminal, never into a piped run
+    assert!(out.stderr.is_empty());
+    let err = fails(&["prove", dir.to_str().unwrap(), "--explain", "no-such-claim"]);
+    assert!(err.contains("no-such-claim"), "{err}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
