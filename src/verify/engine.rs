@@ -1211,7 +1211,7 @@ where
                     };
                     let mut c = Checked::new(Verdict::Fails, format!("{which}{cx}"));
                     c.steps = steps;
-                    c.steps.push(format!("FAILS {which}at {cx}"));
+                    c.steps.push(format!("FAILS {which}{cx}"));
                     return Ok(c);
                 }
                 PairResult::Proved(p) => {
