@@ -66,5 +66,6 @@ pub use fit::{
 };
 
 // --- verification (issue 6)
+pub use verify::{explain, prove_paths, ClaimOutcome, Report, Verdict};
 
 // --- end of re-exports

@@ -1,11 +1,49 @@
-//! Numerical proofs of the texts' claims: claim files, verdicts with certificates, reports.
+//! Exact proofs of the texts' claims: claim files, verdicts with certificates, reports.
 //!
-//! (Skeleton: the public API the `casteljau prove` command is written against. The claim
-//! format, the expression parser and the proof engine fill it in.)
+//! A claim file (TOML, documented in `proofs/README.md`) lists what a text prints — formulas,
+//! examples, properties, each step of a derivation — as expressions written as in a book
+//! (`(2t-1)/(t^2-t+1)`, `4x^2+3y^2-10y+3`, `B(i, n, t)`, `sum(r, j, n, …)`). Each claim gets a
+//! verdict decided in exact arithmetic only:
+//!
+//! - **proved**: the finite check is a proof. A polynomial identity of degree ≤ d (the bound is
+//!   *derived* from the expressions by [`eval::Deg`], never guessed) is checked exactly at d+1
+//!   distinct parameters; rational functions by their cleared numerators at points where no
+//!   denominator vanishes; identities affine in the control points on the zero and unit
+//!   polygons; two parameters on a grid; claims about arbitrary vectors by exact symbolic
+//!   expansion ([`poly`]).
+//! - **verified**: bounded evidence for a statement about a limit, saying exactly what was checked.
+//! - **fails**: an exact counterexample (the parameters and both sides' values).
+//!
+//! ```
+//! use casteljau::verify::{claims::parse_file, kinds::check_claim, Verdict};
+//! let file = parse_file(r#"
+//! [[claim]]
+//! id = "ex"
+//! source = "000 4)"
+//! statement = "-(2t-1)^2+1 = 4/3 B_1^3(t) + 4/3 B_2^3(t)"
+//! kind = "identity"
+//! lhs = "-(2t-1)^2 + 1"
+//! rhs = "4/3 B(1,3,t) + 4/3 B(2,3,t)"
+//! "#, std::path::Path::new("x.toml")).unwrap();
+//! let out = check_claim(&file.claim[0], false).unwrap();
+//! assert_eq!(out.verdict, Verdict::Proved);
+//! assert!(out.certificate.contains("degree ≤ 3 in t"));
+//! ```
 
-use crate::error::Result;
+pub mod claims;
+pub mod engine;
+pub mod eval;
+pub mod expr;
+pub mod kinds;
+pub mod poly;
+mod report;
+pub mod theorems;
+
+use crate::error::{Error, Result};
 use serde::Serialize;
 use std::path::PathBuf;
+
+pub use report::TextSummary;
 
 /// How strong a verdict is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -47,6 +85,14 @@ pub struct ClaimOutcome {
     pub expect: Verdict,
     /// The claim file it came from.
     pub file: String,
+    /// The text file the claim is about (from the file's `[text]` table, or the file name).
+    pub text: String,
+    /// The id of the misprinted claim this one corrects.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub corrects: Option<String>,
+    /// The claim file's note, if any.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub note: Option<String>,
 }
 
 /// The outcomes of a whole run.
@@ -62,37 +108,79 @@ impl Report {
         self.outcomes.iter().filter(|o| o.verdict != o.expect).count()
     }
 
-    /// The human-readable report.
+    /// Per text: counts of proved / verified / fails and of verdicts as expected.
+    pub fn summaries(&self) -> Vec<TextSummary> {
+        report::summaries(&self.outcomes)
+    }
+
+    /// The human-readable report: per claim its source, statement, verdict and certificate,
+    /// then a summary per text.
     pub fn to_text(&self) -> String {
-        let mut s = String::new();
-        for o in &self.outcomes {
-            s.push_str(&format!(
-                "[{}] {} ({})\n  {}\n  {}\n",
-                o.verdict.as_str(),
-                o.id,
-                o.source,
-                o.statement,
-                o.certificate
-            ));
-        }
-        s
+        report::to_text(self)
     }
 
-    /// The JSON report `{"claims": [...], "summary": ...}`.
+    /// The JSON report `{"claims": [...], "summary": {...}}` with a summary per text.
     pub fn to_json(&self) -> serde_json::Value {
-        serde_json::json!({ "claims": self.outcomes, "summary": { "claims": self.outcomes.len(), "mismatches": self.mismatches() } })
+        report::to_json(self)
     }
 }
 
-/// Loads every claim file under `paths` (files or directories) and checks every claim;
-/// `progress(done, total, id)` is called after each claim.
+/// Loads every claim file under `paths` (files, or directories whose `.toml` files are read in
+/// name order) and checks every claim; `progress(done, total, id)` is called after each claim.
+/// A claim that cannot be checked (a malformed expression, an unknown kind) is an error naming
+/// the file and the claim.
 pub fn prove_paths(paths: &[PathBuf], progress: &mut dyn FnMut(usize, usize, &str)) -> Result<Report> {
-    let _ = (paths, progress);
-    Ok(Report::default())
+    let files = claims::load_paths(paths)?;
+    let total: usize = files.iter().map(|f| f.claim.len()).sum();
+    let mut outcomes = Vec::with_capacity(total);
+    for f in &files {
+        let text = text_name(f);
+        for c in &f.claim {
+            let checked = kinds::check_claim(c, false).map_err(|e| in_claim(f, &c.id, e))?;
+            outcomes.push(ClaimOutcome {
+                id: c.id.clone(),
+                source: c.source.clone(),
+                statement: c.statement.clone(),
+                verdict: checked.verdict,
+                certificate: checked.certificate,
+                expect: c.expected()?,
+                file: f.path.display().to_string(),
+                text: text.clone(),
+                corrects: c.corrects.clone(),
+                note: c.note.clone(),
+            });
+            progress(outcomes.len(), total, &c.id);
+        }
+    }
+    Ok(Report { outcomes })
 }
 
-/// The step-by-step proof of claim `id` (searched in `paths`), in exact fractions.
+fn text_name(f: &claims::ClaimFile) -> String {
+    match &f.text {
+        Some(t) => t.file.clone(),
+        None => f
+            .path
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default(),
+    }
+}
+
+fn in_claim(f: &claims::ClaimFile, id: &str, e: Error) -> Error {
+    Error::Domain(format!("{}: claim {id}: {e}", f.path.display()))
+}
+
+/// The step-by-step proof of claim `id` (searched in `paths`), in exact fractions: each checked
+/// parameter with both sides' values, the de Casteljau scheme (9) of the claim's curves.
 pub fn explain(paths: &[PathBuf], id: &str) -> Result<String> {
-    let _ = paths;
-    Err(crate::Error::Domain(format!("no claim with id '{id}'")))
+    let files = claims::load_paths(paths)?;
+    for f in &files {
+        if let Some(c) = f.claim.iter().find(|c| c.id == id) {
+            let checked = kinds::check_claim(c, true).map_err(|e| in_claim(f, id, e))?;
+            return Ok(report::explain_text(f, c, &checked));
+        }
+    }
+    Err(Error::Domain(format!(
+        "no claim with id '{id}' in the given claim files"
+    )))
 }

@@ -1,0 +1,288 @@
+//! The claim file format (TOML), documented for authors in `proofs/README.md`.
+//!
+//! A file holds an optional `[text]` table and a list of `[[claim]]` tables. Every claim has
+//! `id`, `source`, `statement`, `kind`, optional `expect` ("proved" by default, "verified",
+//! "fails") and, for the correction of a misprint, `corrects = "<id>"`. The remaining fields
+//! depend on the kind; unknown fields are errors, so a typo never silently drops data.
+
+use super::Verdict;
+use crate::error::{Error, Result};
+use serde::Deserialize;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+/// One claim file.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ClaimFile {
+    /// The text the claims come from.
+    pub text: Option<TextInfo>,
+    /// The claims, in order.
+    #[serde(default)]
+    pub claim: Vec<Claim>,
+    /// Where it was loaded from (filled in by [`load_file`]).
+    #[serde(skip)]
+    pub path: PathBuf,
+}
+
+/// The `[text]` table.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TextInfo {
+    /// The text file name, e.g. `000_ef6a3958c7d702f5.txt`.
+    pub file: String,
+    /// A short title.
+    pub title: Option<String>,
+}
+
+/// A number written in a claim file: an integer or an exact expression string ("4/3", "2*sqrt(2)").
+#[derive(Clone, Debug, Deserialize)]
+#[serde(untagged)]
+pub enum Number {
+    /// An integer.
+    Int(i64),
+    /// An expression.
+    Text(String),
+    /// A float: refused (write it as a string to keep it exact).
+    Float(f64),
+}
+
+impl Number {
+    /// The expression text.
+    pub fn text(&self) -> Result<String> {
+        match self {
+            Number::Int(n) => Ok(n.to_string()),
+            Number::Text(s) => Ok(s.clone()),
+            Number::Float(x) => Err(Error::Parse(format!(
+                "the float {x} is not exact: write it as a string, e.g. \"0.25\" or \"1/4\""
+            ))),
+        }
+    }
+}
+
+/// A polynomial or rational Bézier curve given by its control points (and weights).
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CurveSpec {
+    /// Control points, each a list of coordinates.
+    pub points: Vec<Vec<Number>>,
+    /// Weights (a rational curve) or none (a polynomial curve).
+    pub weights: Option<Vec<Number>>,
+}
+
+/// A tensor-product Bézier surface given by its net `net[i][j]` = `b_{i,j}`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SurfaceSpec {
+    /// The control net, rows `i = 0..=m`, each with `j = 0..=n` points.
+    pub net: Vec<Vec<Vec<Number>>>,
+}
+
+/// A symbolic control polygon `b_0..b_n` (`degree` names an integer range variable or is a number).
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PolygonSpec {
+    /// Its name in expressions (`b[j]`, `b(t)`, `b(i, r, t)`, `b'(t)`).
+    pub name: String,
+    /// The degree, an integer expression (`"n"`, `"3"`).
+    pub degree: String,
+}
+
+/// A symbolic control net `b_{i,j}` of degree `(m, n)`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct NetSpec {
+    /// Its name in expressions (`b[i, j]`, `b(u, v)`).
+    pub name: String,
+    /// The degrees `[m, n]`, integer expressions.
+    pub degree: [String; 2],
+}
+
+/// One claim (fields by kind; see `proofs/README.md`).
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Claim {
+    /// Unique id.
+    pub id: String,
+    /// Text file and printed label.
+    pub source: String,
+    /// The statement as printed.
+    pub statement: String,
+    /// The kind of check.
+    pub kind: String,
+    /// The expected verdict ("proved" when absent).
+    pub expect: Option<String>,
+    /// The id of the misprinted claim this one corrects.
+    pub corrects: Option<String>,
+    /// A remark shown in the report.
+    pub note: Option<String>,
+
+    /// identity: left side.
+    pub lhs: Option<String>,
+    /// identity: right side.
+    pub rhs: Option<String>,
+    /// identity: a chain `a = b = c = …` (consecutive members are claimed equal).
+    pub chain: Option<Vec<String>>,
+    /// implicit / implies / conic: an equation `A = B` (or an expression meaning `= 0`).
+    pub equation: Option<String>,
+    /// implicit: the curve, a tuple expression in `t` (or a curve call like `x(t)`).
+    pub on: Option<String>,
+    /// implicit: the coordinate names the equation uses (default `x, y, z`).
+    pub coords: Option<Vec<String>>,
+    /// implies: the premise (an expression meaning `= 0`, or `A = B`).
+    pub premise: Option<String>,
+    /// implies: the factor with `conclusion = factor · premise` identically.
+    pub factor: Option<String>,
+    /// bezier_points: the curve in the power basis, a tuple expression in `param`.
+    pub power: Option<String>,
+    /// bezier_points: its parameter name (default `u`).
+    pub param: Option<String>,
+    /// bezier_points: the parameter interval `[a, b]`.
+    pub interval: Option<[Number; 2]>,
+    /// bezier_points: the claimed Bézier points.
+    pub points: Option<Vec<Vec<Number>>>,
+    /// conic_type / weight_type: the printed type ("ellipse", "parabola", "hyperbola").
+    pub conic: Option<String>,
+
+    /// Continuous parameters (default: the one-letter names t, s, u, v that occur).
+    pub vars: Option<Vec<String>>,
+    /// Integer ranges `"n = 0..=10"`, in order.
+    #[serde(rename = "for")]
+    pub ranges: Option<Vec<String>>,
+    /// Definitions `"f(i) = …"`, in order (later ones may use earlier ones).
+    #[serde(rename = "let")]
+    pub defs: Option<Vec<String>>,
+    /// A symbolic control polygon (identities affine in it are checked on a basis).
+    pub polygon: Option<PolygonSpec>,
+    /// A symbolic control net.
+    pub net: Option<NetSpec>,
+    /// Scalar unknowns for symbolic expansion.
+    pub symbols: Option<Vec<String>>,
+    /// Vector unknowns for symbolic expansion: name → dimension.
+    pub vectors: Option<BTreeMap<String, usize>>,
+    /// Concrete curves, by name.
+    pub curves: Option<BTreeMap<String, CurveSpec>>,
+    /// Concrete surfaces, by name.
+    pub surfaces: Option<BTreeMap<String, SurfaceSpec>>,
+
+    /// theorem / convergence: which one.
+    pub theorem: Option<String>,
+    /// theorem: the degrees checked, `"0..=10"`.
+    pub degrees: Option<String>,
+    /// convergence: the largest number of elevation steps.
+    pub steps: Option<usize>,
+}
+
+impl Claim {
+    /// The expected verdict.
+    pub fn expected(&self) -> Result<Verdict> {
+        match self.expect.as_deref() {
+            None | Some("proved") => Ok(Verdict::Proved),
+            Some("verified") => Ok(Verdict::Verified),
+            Some("fails") => Ok(Verdict::Fails),
+            Some(other) => Err(Error::Parse(format!(
+                "claim {}: expect must be \"proved\", \"verified\" or \"fails\", not \"{other}\"",
+                self.id
+            ))),
+        }
+    }
+
+    /// The multi-letter names the claim declares (kept whole by the parser).
+    pub fn known_names(&self) -> Vec<String> {
+        let mut out: Vec<String> = Vec::new();
+        if let Some(p) = &self.polygon {
+            out.push(p.name.clone());
+        }
+        if let Some(n) = &self.net {
+            out.push(n.name.clone());
+        }
+        out.extend(self.symbols.iter().flatten().cloned());
+        out.extend(self.vectors.iter().flat_map(|v| v.keys().cloned()));
+        out.extend(self.curves.iter().flat_map(|c| c.keys().cloned()));
+        out.extend(self.surfaces.iter().flat_map(|c| c.keys().cloned()));
+        out.extend(self.vars.iter().flatten().cloned());
+        for d in self.defs.iter().flatten() {
+            if let Some((head, _)) = d.split_once('=') {
+                let name = head.split('(').next().unwrap_or("").trim();
+                out.push(name.to_string());
+            }
+        }
+        out
+    }
+
+    /// A required text field, or a clear error.
+    pub fn need<'a>(&self, field: &'a Option<String>, name: &str) -> Result<&'a str> {
+        field.as_deref().ok_or_else(|| {
+            Error::Parse(format!(
+                "claim {} (kind {}) needs the field '{name}'",
+                self.id, self.kind
+            ))
+        })
+    }
+}
+
+/// Parses one claim file's text.
+pub fn parse_file(text: &str, path: &Path) -> Result<ClaimFile> {
+    let mut f: ClaimFile =
+        toml::from_str(text).map_err(|e| Error::Parse(format!("{}: {}", path.display(), e.to_string().trim())))?;
+    f.path = path.to_path_buf();
+    let mut seen = std::collections::BTreeSet::new();
+    for c in &f.claim {
+        if !seen.insert(c.id.clone()) {
+            return Err(Error::Parse(format!(
+                "{}: duplicate claim id '{}'",
+                path.display(),
+                c.id
+            )));
+        }
+        c.expected()?;
+    }
+    for c in &f.claim {
+        if let Some(target) = &c.corrects {
+            if !seen.contains(target) {
+                return Err(Error::Parse(format!(
+                    "{}: claim {} corrects '{target}', which is not in the file",
+                    path.display(),
+                    c.id
+                )));
+            }
+        }
+    }
+    Ok(f)
+}
+
+/// Loads one claim file.
+pub fn load_file(path: &Path) -> Result<ClaimFile> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| Error::Domain(format!("cannot read claim file {}: {e}", path.display())))?;
+    parse_file(&text, path)
+}
+
+/// Loads every `.toml` file given, or found directly in a given directory (sorted by name).
+pub fn load_paths(paths: &[PathBuf]) -> Result<Vec<ClaimFile>> {
+    let mut files = Vec::new();
+    for p in paths {
+        if p.is_dir() {
+            let mut entries: Vec<PathBuf> = std::fs::read_dir(p)
+                .map_err(|e| Error::Domain(format!("cannot read directory {}: {e}", p.display())))?
+                .filter_map(|e| e.ok().map(|e| e.path()))
+                .filter(|q| q.extension().is_some_and(|x| x == "toml"))
+                .collect();
+            entries.sort();
+            for q in entries {
+                files.push(load_file(&q)?);
+            }
+        } else if p.exists() {
+            files.push(load_file(p)?);
+        } else {
+            return Err(Error::Domain(format!(
+                "no such claim file or directory: {}",
+                p.display()
+            )));
+        }
+    }
+    if files.is_empty() {
+        return Err(Error::Domain("no claim files found (expected .toml files)".into()));
+    }
+    Ok(files)
+}

@@ -1,0 +1,896 @@
+//! Evaluation of expressions in any "algebra": exact numbers (to check a claim at a point),
+//! degree bounds (to know how many points make a proof), and symbolic polynomials.
+//!
+//! One evaluator, generic over [`Alg`], walks the tree; what a claim object (`b(t)`, `b[j]`,
+//! `x(u, v)`) means is supplied by an [`Env`]. Because the degree bounds are computed by the
+//! very same walk as the values, every construct that has a value also has a bound, and the
+//! bound describes the formal numerator/denominator the walk builds (see [`Deg`]).
+
+use super::expr::{check_index, eval_int, Expr, Op, MAX_SUM_TERMS};
+use crate::bernstein::binomial_signed;
+use crate::error::{Error, Result};
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{Signed, Zero};
+use std::collections::BTreeMap;
+use std::fmt;
+
+/// What the evaluator computes in: a commutative ring with a checked division.
+pub trait Alg: Clone + fmt::Debug + fmt::Display {
+    /// The rational constant `r`.
+    fn from_rat(r: &BigRational) -> Self;
+    /// `self + o`
+    fn add(&self, o: &Self) -> Self;
+    /// `self - o`
+    fn sub(&self, o: &Self) -> Self;
+    /// `self * o`
+    fn mul(&self, o: &Self) -> Self;
+    /// `-self`
+    fn neg(&self) -> Self;
+    /// `self / o`; an error when `o` is zero.
+    fn div(&self, o: &Self) -> Result<Self>;
+    /// `√r` of a rational constant; an error when it is not in this algebra.
+    fn sqrt_rat(r: &BigRational) -> Result<Self>;
+    /// Exact equality (`None` for algebras without one, like degree bounds).
+    fn equals(&self, o: &Self) -> Option<bool>;
+
+    /// The integer `n`.
+    fn from_int(n: i64) -> Self {
+        Self::from_rat(&BigRational::from_integer(n.into()))
+    }
+    /// The big integer `n`.
+    fn from_bigint(n: &BigInt) -> Self {
+        Self::from_rat(&BigRational::from_integer(n.clone()))
+    }
+    /// `self^k` for an integer `k` (negative: `1 / self^|k|`).
+    fn pow(&self, k: i64) -> Result<Self> {
+        check_index(k)?;
+        let mut base = self.clone();
+        let mut acc = Self::from_int(1);
+        let mut e = k.unsigned_abs();
+        while e > 0 {
+            if e & 1 == 1 {
+                acc = acc.mul(&base);
+            }
+            e >>= 1;
+            if e > 0 {
+                base = base.mul(&base);
+            }
+        }
+        if k < 0 {
+            Self::from_int(1).div(&acc)
+        } else {
+            Ok(acc)
+        }
+    }
+}
+
+/// `√r` for a rational that is the square of a rational; other square roots need the
+/// quadratic irrationals.
+pub fn rational_sqrt(r: &BigRational) -> Result<BigRational> {
+    if r.is_negative() {
+        return Err(Error::Domain(format!(
+            "sqrt({r}): the square root of a negative number is not real"
+        )));
+    }
+    let (n, d) = (r.numer().sqrt(), r.denom().sqrt());
+    if &(&n * &n) == r.numer() && &(&d * &d) == r.denom() {
+        Ok(BigRational::new(n, d))
+    } else {
+        Err(Error::Domain(format!(
+            "sqrt({r}) is irrational (not a square of a rational)"
+        )))
+    }
+}
+
+impl Alg for BigRational {
+    fn from_rat(r: &BigRational) -> Self {
+        r.clone()
+    }
+    fn add(&self, o: &Self) -> Self {
+        self + o
+    }
+    fn sub(&self, o: &Self) -> Self {
+        self - o
+    }
+    fn mul(&self, o: &Self) -> Self {
+        self * o
+    }
+    fn neg(&self) -> Self {
+        -self
+    }
+    fn div(&self, o: &Self) -> Result<Self> {
+        if o.is_zero() {
+            return Err(Error::DivisionByZero(format!("{self} / 0")));
+        }
+        Ok(self / o)
+    }
+    fn sqrt_rat(r: &BigRational) -> Result<Self> {
+        rational_sqrt(r)
+    }
+    fn equals(&self, o: &Self) -> Option<bool> {
+        Some(self == o)
+    }
+}
+
+impl Alg for crate::quadratic::QuadraticIrrational {
+    fn from_rat(r: &BigRational) -> Self {
+        crate::quadratic::QuadraticIrrational::rational(r.clone())
+    }
+    fn add(&self, o: &Self) -> Self {
+        self + o
+    }
+    fn sub(&self, o: &Self) -> Self {
+        self - o
+    }
+    fn mul(&self, o: &Self) -> Self {
+        self * o
+    }
+    fn neg(&self) -> Self {
+        -self
+    }
+    fn div(&self, o: &Self) -> Result<Self> {
+        crate::scalar::Scalar::checked_div(self, o)
+    }
+    fn sqrt_rat(r: &BigRational) -> Result<Self> {
+        if r.is_negative() {
+            return Err(Error::Domain(format!(
+                "sqrt({r}): the square root of a negative number is not real"
+            )));
+        }
+        if let Ok(q) = rational_sqrt(r) {
+            return Ok(Self::from_rat(&q));
+        }
+        crate::quadratic::QuadraticIrrational::sqrt_rational(r)
+    }
+    fn equals(&self, o: &Self) -> Option<bool> {
+        // Mixing two fields (√2 and √3) poisons a value: it cannot be compared.
+        (self.is_valid() && o.is_valid()).then(|| self == o)
+    }
+}
+
+/// Degree bounds of a rational function: for each parameter `v`, the value is `P/Q` with
+/// `deg_v P ≤ num` and `deg_v Q ≤ den`, where `P` and `Q` are the formal numerator and
+/// denominator the evaluator builds (`a/b = (Pa Qb)/(Qa Pb)`, `a+b = (Pa Qb + Pb Qa)/(Qa Qb)`).
+/// `affine` is the degree in a symbolic control polygon (must stay ≤ 1).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Deg {
+    /// `var → (num, den)`; missing vars are `(0, 0)`.
+    pub vars: BTreeMap<String, (u64, u64)>,
+    /// Degree in the symbolic control points.
+    pub poly: u64,
+}
+
+const DEG_LIMIT: u64 = 1 << 40;
+
+impl Deg {
+    /// The bound of a single parameter `v`.
+    pub fn var(v: &str) -> Deg {
+        let mut vars = BTreeMap::new();
+        vars.insert(v.to_string(), (1, 0));
+        Deg { vars, poly: 0 }
+    }
+    /// A control point of a symbolic polygon (degree 1 in the polygon, 0 in the parameters).
+    pub fn control_point() -> Deg {
+        Deg {
+            vars: BTreeMap::new(),
+            poly: 1,
+        }
+    }
+    /// `(num, den)` for `v`.
+    pub fn get(&self, v: &str) -> (u64, u64) {
+        self.vars.get(v).copied().unwrap_or((0, 0))
+    }
+    fn zip(&self, o: &Deg, poly: u64, f: impl Fn((u64, u64), (u64, u64)) -> (u64, u64)) -> Deg {
+        let mut vars = BTreeMap::new();
+        for k in self.vars.keys().chain(o.vars.keys()) {
+            let (n, d) = f(self.get(k), o.get(k));
+            vars.insert(k.clone(), (n.min(DEG_LIMIT), d.min(DEG_LIMIT)));
+        }
+        Deg { vars, poly }
+    }
+    /// The bound of `g ↦ p(g)` for a polynomial `p` of degree `n` (`Σ c_k P^k Q^(n-k) / Q^n`).
+    pub fn compose(&self, n: u64) -> Deg {
+        let mut vars = BTreeMap::new();
+        for (k, &(num, den)) in &self.vars {
+            vars.insert(k.clone(), ((n * num.max(den)).min(DEG_LIMIT), (n * den).min(DEG_LIMIT)));
+        }
+        Deg { vars, poly: 0 }
+    }
+    /// Whether the value is a polynomial in every parameter (no parameter in a denominator).
+    pub fn is_polynomial(&self) -> bool {
+        self.vars.values().all(|&(_, d)| d == 0)
+    }
+}
+
+impl fmt::Display for Deg {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let parts: Vec<String> = self
+            .vars
+            .iter()
+            .filter(|(_, &(n, d))| n > 0 || d > 0)
+            .map(|(v, &(n, d))| {
+                if d == 0 {
+                    format!("{v}:{n}")
+                } else {
+                    format!("{v}:{n}/{d}")
+                }
+            })
+            .collect();
+        if parts.is_empty() {
+            write!(f, "const")
+        } else {
+            write!(f, "{}", parts.join(","))
+        }
+    }
+}
+
+impl Alg for Deg {
+    fn from_rat(_: &BigRational) -> Self {
+        Deg::default()
+    }
+    fn add(&self, o: &Self) -> Self {
+        self.zip(o, self.poly.max(o.poly), |(na, da), (nb, db)| {
+            if da == 0 && db == 0 {
+                (na.max(nb), 0)
+            } else {
+                ((na + db).max(nb + da), da + db)
+            }
+        })
+    }
+    fn sub(&self, o: &Self) -> Self {
+        self.add(o)
+    }
+    fn mul(&self, o: &Self) -> Self {
+        self.zip(o, self.poly + o.poly, |(na, da), (nb, db)| (na + nb, da + db))
+    }
+    fn neg(&self) -> Self {
+        self.clone()
+    }
+    fn div(&self, o: &Self) -> Result<Self> {
+        if o.poly > 0 {
+            return Err(Error::Domain(
+                "division by an expression in the symbolic control points (not affine in them)".into(),
+            ));
+        }
+        Ok(self.zip(o, self.poly, |(na, da), (nb, db)| (na + db, da + nb)))
+    }
+    fn sqrt_rat(_: &BigRational) -> Result<Self> {
+        Ok(Deg::default())
+    }
+    fn equals(&self, _: &Self) -> Option<bool> {
+        None
+    }
+    fn pow(&self, k: i64) -> Result<Self> {
+        check_index(k)?;
+        let m = k.unsigned_abs();
+        let scaled = Deg {
+            vars: self
+                .vars
+                .iter()
+                .map(|(v, &(n, d))| (v.clone(), ((n * m).min(DEG_LIMIT), (d * m).min(DEG_LIMIT))))
+                .collect(),
+            poly: self.poly * m,
+        };
+        if k < 0 {
+            Deg::default().div(&scaled)
+        } else {
+            Ok(scaled)
+        }
+    }
+}
+
+/// A value: a scalar, a vector (tuple, point) or a matrix.
+#[derive(Clone, Debug)]
+pub enum Value<A> {
+    /// A number.
+    S(A),
+    /// A vector.
+    V(Vec<A>),
+    /// A matrix, by rows.
+    M(Vec<Vec<A>>),
+}
+
+impl<A: Alg> fmt::Display for Value<A> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let list = |v: &[A]| v.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", ");
+        match self {
+            Value::S(a) => write!(f, "{a}"),
+            Value::V(v) => write!(f, "({})", list(v)),
+            Value::M(m) => write!(f, "[{}]", m.iter().map(|r| list(r)).collect::<Vec<_>>().join("; ")),
+        }
+    }
+}
+
+impl<A: Alg> Value<A> {
+    /// The entries, flattened.
+    pub fn entries(&self) -> Vec<&A> {
+        match self {
+            Value::S(a) => vec![a],
+            Value::V(v) => v.iter().collect(),
+            Value::M(m) => m.iter().flatten().collect(),
+        }
+    }
+    /// A description of the shape, for error messages.
+    pub fn shape(&self) -> String {
+        match self {
+            Value::S(_) => "a number".into(),
+            Value::V(v) => format!("a vector of {}", v.len()),
+            Value::M(m) => format!("a {}×{} matrix", m.len(), m.first().map_or(0, Vec::len)),
+        }
+    }
+    /// The scalar, or an error naming `what`.
+    pub fn scalar(self, what: &str) -> Result<A> {
+        match self {
+            Value::S(a) => Ok(a),
+            other => Err(Error::Domain(format!("{what} must be a number, not {}", other.shape()))),
+        }
+    }
+    fn same_shape(&self, o: &Value<A>) -> bool {
+        match (self, o) {
+            (Value::S(_), Value::S(_)) => true,
+            (Value::V(a), Value::V(b)) => a.len() == b.len(),
+            (Value::M(a), Value::M(b)) => a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.len() == y.len()),
+            _ => false,
+        }
+    }
+    fn map(&self, f: impl Fn(&A) -> A) -> Value<A> {
+        match self {
+            Value::S(a) => Value::S(f(a)),
+            Value::V(v) => Value::V(v.iter().map(f).collect()),
+            Value::M(m) => Value::M(m.iter().map(|r| r.iter().map(&f).collect()).collect()),
+        }
+    }
+    fn zip(&self, o: &Value<A>, what: &str, f: impl Fn(&A, &A) -> A) -> Result<Value<A>> {
+        if !self.same_shape(o) {
+            return Err(Error::Domain(format!(
+                "cannot {what} {} and {}",
+                self.shape(),
+                o.shape()
+            )));
+        }
+        Ok(match (self, o) {
+            (Value::S(a), Value::S(b)) => Value::S(f(a, b)),
+            (Value::V(a), Value::V(b)) => Value::V(a.iter().zip(b).map(|(x, y)| f(x, y)).collect()),
+            (Value::M(a), Value::M(b)) => Value::M(
+                a.iter()
+                    .zip(b)
+                    .map(|(r, s)| r.iter().zip(s).map(|(x, y)| f(x, y)).collect())
+                    .collect(),
+            ),
+            _ => unreachable!("shapes checked above"),
+        })
+    }
+    /// `self + o`
+    pub fn add(&self, o: &Value<A>) -> Result<Value<A>> {
+        self.zip(o, "add", A::add)
+    }
+    /// `self - o`
+    pub fn sub(&self, o: &Value<A>) -> Result<Value<A>> {
+        self.zip(o, "subtract", A::sub)
+    }
+    /// `-self`
+    pub fn neg(&self) -> Value<A> {
+        self.map(A::neg)
+    }
+    /// Products: scalar × anything, matrix × vector, matrix × matrix.
+    pub fn mul(&self, o: &Value<A>) -> Result<Value<A>> {
+        Ok(match (self, o) {
+            (Value::S(a), x) => x.map(|y| a.mul(y)),
+            (x, Value::S(b)) => x.map(|y| y.mul(b)),
+            (Value::M(m), Value::V(v)) => {
+                if m.first().map_or(0, Vec::len) != v.len() {
+                    return Err(Error::Domain(format!(
+                        "cannot multiply {} by {}",
+                        self.shape(),
+                        o.shape()
+                    )));
+                }
+                Value::V(m.iter().map(|r| dot(r, v)).collect())
+            }
+            (Value::M(a), Value::M(b)) => {
+                let inner = a.first().map_or(0, Vec::len);
+                if inner != b.len() {
+                    return Err(Error::Domain(format!(
+                        "cannot multiply {} by {}",
+                        self.shape(),
+                        o.shape()
+                    )));
+                }
+                let cols = b.first().map_or(0, Vec::len);
+                Value::M(
+                    a.iter()
+                        .map(|r| {
+                            (0..cols)
+                                .map(|j| dot(r, &b.iter().map(|row| row[j].clone()).collect::<Vec<_>>()))
+                                .collect()
+                        })
+                        .collect(),
+                )
+            }
+            _ => {
+                return Err(Error::Domain(format!(
+                    "cannot multiply {} by {} (use dot(a, b) for the dot product)",
+                    self.shape(),
+                    o.shape()
+                )))
+            }
+        })
+    }
+    /// `self / s` for a scalar `s`.
+    pub fn div(&self, o: &Value<A>) -> Result<Value<A>> {
+        let Value::S(s) = o else {
+            return Err(Error::Domain(format!("cannot divide by {}", o.shape())));
+        };
+        Ok(match self {
+            Value::S(a) => Value::S(a.div(s)?),
+            Value::V(v) => Value::V(v.iter().map(|x| x.div(s)).collect::<Result<_>>()?),
+            Value::M(m) => Value::M(
+                m.iter()
+                    .map(|r| r.iter().map(|x| x.div(s)).collect::<Result<Vec<_>>>())
+                    .collect::<Result<_>>()?,
+            ),
+        })
+    }
+    /// Exact equality, entry by entry (`None` when the algebra has none).
+    pub fn equals(&self, o: &Value<A>) -> Option<bool> {
+        if !self.same_shape(o) {
+            return Some(false);
+        }
+        let mut all = true;
+        for (a, b) in self.entries().into_iter().zip(o.entries()) {
+            all &= a.equals(b)?;
+        }
+        Some(all)
+    }
+}
+
+fn dot<A: Alg>(a: &[A], b: &[A]) -> A {
+    let mut acc = A::from_int(0);
+    for (x, y) in a.iter().zip(b) {
+        acc = acc.add(&x.mul(y));
+    }
+    acc
+}
+
+fn det<A: Alg>(m: &[Vec<A>]) -> A {
+    match m.len() {
+        0 => A::from_int(1),
+        1 => m[0][0].clone(),
+        2 => m[0][0].mul(&m[1][1]).sub(&m[0][1].mul(&m[1][0])),
+        n => {
+            // Laplace expansion along the first row (matrices here are tiny).
+            let mut acc = A::from_int(0);
+            for j in 0..n {
+                let minor: Vec<Vec<A>> = m[1..]
+                    .iter()
+                    .map(|r| {
+                        r.iter()
+                            .enumerate()
+                            .filter(|(k, _)| *k != j)
+                            .map(|(_, x)| x.clone())
+                            .collect()
+                    })
+                    .collect();
+                let term = m[0][j].mul(&det(&minor));
+                acc = if j % 2 == 0 { acc.add(&term) } else { acc.sub(&term) };
+            }
+            acc
+        }
+    }
+}
+
+/// What the names of a claim mean in one algebra.
+pub trait Env<A: Alg> {
+    /// A variable's value (`None`: unknown).
+    fn var(&self, name: &str) -> Option<Value<A>>;
+    /// A call of a claim object, `b(t)`, `b(i, r, t)`, `b'(t)`, `x(u, v)`; `None`: unknown name.
+    fn call(&self, name: &str, args: &[Expr], ev: &mut Evaluator<'_, A>) -> Result<Option<Value<A>>>;
+    /// A control point `b[j]` (`None`: unknown name). Out-of-range indices are zero.
+    fn index(&self, name: &str, idx: &[i64]) -> Result<Option<Value<A>>>;
+}
+
+/// An environment with plain variables only.
+pub struct VarEnv<A>(pub BTreeMap<String, Value<A>>);
+
+impl<A: Alg> Env<A> for VarEnv<A> {
+    fn var(&self, name: &str) -> Option<Value<A>> {
+        self.0.get(name).cloned()
+    }
+    fn call(&self, _: &str, _: &[Expr], _: &mut Evaluator<'_, A>) -> Result<Option<Value<A>>> {
+        Ok(None)
+    }
+    fn index(&self, _: &str, _: &[i64]) -> Result<Option<Value<A>>> {
+        Ok(None)
+    }
+}
+
+/// Walks an expression in one algebra.
+pub struct Evaluator<'e, A: Alg> {
+    /// Bound integer variables (ranges of the claim, summation variables).
+    pub ints: BTreeMap<String, i64>,
+    env: &'e dyn Env<A>,
+    terms: i64,
+}
+
+impl<'e, A: Alg> Evaluator<'e, A> {
+    /// An evaluator over `env` with the integer variables `ints`.
+    pub fn new(env: &'e dyn Env<A>, ints: BTreeMap<String, i64>) -> Self {
+        Evaluator { ints, env, terms: 0 }
+    }
+
+    /// An integer sub-expression (index, exponent, range bound).
+    pub fn int(&self, e: &Expr) -> Result<i64> {
+        eval_int(e, &self.ints)
+    }
+
+    /// A scalar sub-expression.
+    pub fn scalar(&mut self, e: &Expr) -> Result<A> {
+        self.eval(e)?.scalar(&format!("'{e}'"))
+    }
+
+    /// Evaluates `e`.
+    pub fn eval(&mut self, e: &Expr) -> Result<Value<A>> {
+        Ok(match e {
+            Expr::Num(r) => Value::S(A::from_rat(r)),
+            Expr::Var(v) => {
+                if let Some(&n) = self.ints.get(v) {
+                    Value::S(A::from_int(n))
+                } else if let Some(x) = self.env.var(v) {
+                    x
+                } else {
+                    return Err(Error::Domain(format!("unknown variable '{v}'")));
+                }
+            }
+            Expr::Neg(a) => self.eval(a)?.neg(),
+            Expr::Bin(Op::Pow, a, k) => {
+                let k = self.int(k).map_err(|err| {
+                    Error::Domain(format!("in '{e}': the exponent must be an integer expression ({err})"))
+                })?;
+                Value::S(self.scalar(a)?.pow(k)?)
+            }
+            Expr::Bin(op, a, b) => {
+                let (x, y) = (self.eval(a)?, self.eval(b)?);
+                match op {
+                    Op::Add => x.add(&y)?,
+                    Op::Sub => x.sub(&y)?,
+                    Op::Mul => x.mul(&y)?,
+                    Op::Div => x.div(&y).map_err(|err| match err {
+                        Error::DivisionByZero(_) => Error::DivisionByZero(format!("'{e}'")),
+                        other => other,
+                    })?,
+                    Op::Pow => unreachable!("handled above"),
+                }
+            }
+            Expr::Fact(_) => Value::S(A::from_int(self.int(e)?)),
+            Expr::Tuple(items) => Value::V(items.iter().map(|x| self.scalar(x)).collect::<Result<_>>()?),
+            Expr::Matrix(rows) => Value::M(
+                rows.iter()
+                    .map(|r| r.iter().map(|x| self.scalar(x)).collect::<Result<Vec<_>>>())
+                    .collect::<Result<_>>()?,
+            ),
+            Expr::Sum(v, from, to, body) => {
+                let (a, b) = (self.int(from)?, self.int(to)?);
+                let mut acc: Option<Value<A>> = None;
+                let saved = self.ints.get(v).copied();
+                if b >= a {
+                    self.terms = self.terms.saturating_add(b.saturating_sub(a).saturating_add(1));
+                    if self.terms > MAX_SUM_TERMS {
+                        return Err(Error::TooLarge {
+                            what: "number of summed terms",
+                            value: self.terms.to_string(),
+                            limit: MAX_SUM_TERMS.to_string(),
+                        });
+                    }
+                }
+                let mut r = a;
+                while r <= b {
+                    self.ints.insert(v.clone(), r);
+                    let term = self.eval(body);
+                    let term = match term {
+                        Ok(t) => t,
+                        Err(err) => {
+                            restore(&mut self.ints, v, saved);
+                            return Err(err);
+                        }
+                    };
+                    acc = Some(match acc {
+                        None => term,
+                        Some(s) => s.add(&term)?,
+                    });
+                    r += 1;
+                }
+                restore(&mut self.ints, v, saved);
+                // An empty sum is the number 0 (there is no term to take a shape from).
+                acc.unwrap_or(Value::S(A::from_int(0)))
+            }
+            Expr::Index(name, args) => {
+                let idx = args.iter().map(|a| self.int(a)).collect::<Result<Vec<_>>>()?;
+                self.env
+                    .index(name, &idx)?
+                    .ok_or_else(|| Error::Domain(format!("'{name}' is not a control polygon or net")))?
+            }
+            Expr::Call(name, args) => self.call(e, name, args)?,
+        })
+    }
+
+    fn call(&mut self, e: &Expr, name: &str, args: &[Expr]) -> Result<Value<A>> {
+        Ok(match name {
+            "B" => {
+                let (i, n) = (self.int(&args[0])?, self.int(&args[1])?);
+                check_index(n)?;
+                check_index(i)?;
+                let g = self.scalar(&args[2])?;
+                Value::S(bernstein(i, n, &g)?)
+            }
+            "__dB" => {
+                let (i, n, k) = (self.int(&args[0])?, self.int(&args[1])?, self.int(&args[3])?);
+                check_index(n)?;
+                check_index(i)?;
+                check_index(k)?;
+                let g = self.scalar(&args[2])?;
+                Value::S(bernstein_derivative(i, n, &g, k)?)
+            }
+            "__dpow" => {
+                let (e, k) = (self.int(&args[1])?, self.int(&args[2])?);
+                check_index(e)?;
+                check_index(k)?;
+                let g = self.scalar(&args[0])?;
+                Value::S(power_derivative(&g, e, k)?)
+            }
+            "C" | "binom" => Value::S(A::from_int(self.int(e)?)),
+            "sqrt" => {
+                // The argument must be a constant: evaluate it exactly, with no variables.
+                let env = VarEnv::<BigRational>(BTreeMap::new());
+                let mut ev = Evaluator::new(&env, self.ints.clone());
+                let r = ev.scalar(&args[0]).map_err(|err| {
+                    Error::Domain(format!("sqrt needs a constant rational argument in '{e}' ({err})"))
+                })?;
+                Value::S(A::sqrt_rat(&r)?)
+            }
+            "dot" => {
+                let (a, b) = (self.eval(&args[0])?, self.eval(&args[1])?);
+                match (&a, &b) {
+                    (Value::V(x), Value::V(y)) if x.len() == y.len() => Value::S(dot(x, y)),
+                    (Value::S(x), Value::S(y)) => Value::S(x.mul(y)),
+                    _ => return Err(Error::Domain(format!("dot of {} and {}", a.shape(), b.shape()))),
+                }
+            }
+            "rows" | "cols" => {
+                let vs = args
+                    .iter()
+                    .map(|a| match self.eval(a)? {
+                        Value::V(v) => Ok(v),
+                        Value::S(s) => Ok(vec![s]),
+                        other => Err(Error::Domain(format!("{name} takes vectors, not {}", other.shape()))),
+                    })
+                    .collect::<Result<Vec<_>>>()?;
+                if vs.iter().any(|v| v.len() != vs[0].len()) {
+                    return Err(Error::Domain(format!("{name} of vectors of different lengths")));
+                }
+                let m = Value::M(vs);
+                if name == "cols" {
+                    transpose(m)?
+                } else {
+                    m
+                }
+            }
+            "transpose" => transpose(self.eval(&args[0])?)?,
+            "comp" => {
+                let k = self.int(&args[1])?;
+                let v = self.eval(&args[0])?;
+                let entries = v.entries();
+                let x = usize::try_from(k - 1)
+                    .ok()
+                    .and_then(|i| entries.get(i))
+                    .ok_or_else(|| Error::Domain(format!("'{e}': {} has no coordinate {k}", v.shape())))?;
+                Value::S((*x).clone())
+            }
+            "det" | "inv" => {
+                let m = match self.eval(&args[0])? {
+                    Value::M(m) if m.len() == m[0].len() && m.len() <= 4 => m,
+                    other => {
+                        return Err(Error::Domain(format!(
+                            "{name} needs a square matrix of size at most 4, not {}",
+                            other.shape()
+                        )))
+                    }
+                };
+                let d = det(&m);
+                if name == "det" {
+                    Value::S(d)
+                } else {
+                    inverse(&m, &d).map_err(|err| match err {
+                        Error::DivisionByZero(_) => Error::Singular(format!("'{e}' is not invertible")),
+                        other => other,
+                    })?
+                }
+            }
+            "delta" => {
+                let Expr::Var(poly) = &args[0] else {
+                    return Err(Error::Domain(format!("delta needs a polygon name first, in '{e}'")));
+                };
+                let (k, j) = (self.int(&args[1])?, self.int(&args[2])?);
+                check_index(k)?;
+                if k < 0 {
+                    return Err(Error::Domain(format!("negative difference order in '{e}'")));
+                }
+                // Δ^k b_j = Σ_i (-1)^(k-i) C(k,i) b_(j+i)
+                let mut acc: Option<Value<A>> = None;
+                for i in 0..=k {
+                    let p = self
+                        .env
+                        .index(poly, &[j + i])?
+                        .ok_or_else(|| Error::Domain(format!("'{poly}' is not a control polygon")))?;
+                    let mut c = binomial_signed(k, i);
+                    if (k - i) % 2 == 1 {
+                        c = -c;
+                    }
+                    let term = Value::S(A::from_bigint(&c)).mul(&p)?;
+                    acc = Some(match acc {
+                        None => term,
+                        Some(s) => s.add(&term)?,
+                    });
+                }
+                acc.expect("k >= 0 gives at least one term")
+            }
+            "diff" => {
+                return Err(Error::Domain(format!(
+                    "'{e}': diff must be expanded before evaluation (internal)"
+                )))
+            }
+            _ => {
+                let env = self.env;
+                env.call(name, args, self)?
+                    .ok_or_else(|| Error::Domain(format!("unknown function or object '{name}'")))?
+            }
+        })
+    }
+}
+
+fn restore(ints: &mut BTreeMap<String, i64>, v: &str, saved: Option<i64>) {
+    match saved {
+        Some(x) => ints.insert(v.to_string(), x),
+        None => ints.remove(v),
+    };
+}
+
+/// The `k`-th derivative of `g^e` with respect to `g`: `e(e-1)…(e-k+1) g^(e-k)`, zero when
+/// the falling factorial is (so `d/dg g^0 = 0` even at `g = 0`).
+fn power_derivative<A: Alg>(g: &A, e: i64, k: i64) -> Result<A> {
+    let mut ff = BigInt::from(1);
+    for m in 0..k {
+        ff *= e - m;
+    }
+    if ff.is_zero() {
+        return Ok(A::from_int(0));
+    }
+    Ok(A::from_bigint(&ff).mul(&g.pow(e - k)?))
+}
+
+/// The `k`-th derivative of `B_i^n(g) = C(n,i) g^i (1-g)^(n-i)` with respect to `g`, by
+/// Leibniz's rule on the two powers (independent of the difference formulas it is used to check).
+fn bernstein_derivative<A: Alg>(i: i64, n: i64, g: &A, k: i64) -> Result<A> {
+    if i < 0 || i > n {
+        return Ok(A::from_int(0));
+    }
+    let s = A::from_int(1).sub(g);
+    let mut acc = A::from_int(0);
+    for m in 0..=k {
+        let left = power_derivative(g, i, m)?;
+        let mut right = power_derivative(&s, n - i, k - m)?;
+        if (k - m) % 2 == 1 {
+            right = right.neg(); // d/dg (1-g) = -1
+        }
+        acc = acc.add(&A::from_bigint(&binomial_signed(k, m)).mul(&left).mul(&right));
+    }
+    Ok(A::from_bigint(&binomial_signed(n, i)).mul(&acc))
+}
+
+/// `B_i^n(g) = C(n,i) g^i (1-g)^(n-i)`, zero outside `0 ≤ i ≤ n`.
+pub fn bernstein<A: Alg>(i: i64, n: i64, g: &A) -> Result<A> {
+    if i < 0 || i > n {
+        return Ok(A::from_int(0));
+    }
+    let c = A::from_bigint(&binomial_signed(n, i));
+    Ok(c.mul(&g.pow(i)?).mul(&A::from_int(1).sub(g).pow(n - i)?))
+}
+
+fn transpose<A: Alg>(v: Value<A>) -> Result<Value<A>> {
+    match v {
+        Value::M(m) => {
+            let cols = m.first().map_or(0, Vec::len);
+            Ok(Value::M(
+                (0..cols).map(|j| m.iter().map(|r| r[j].clone()).collect()).collect(),
+            ))
+        }
+        other => Err(Error::Domain(format!("transpose of {}", other.shape()))),
+    }
+}
+
+fn inverse<A: Alg>(m: &[Vec<A>], d: &A) -> Result<Value<A>> {
+    let n = m.len();
+    let mut out = vec![vec![A::from_int(0); n]; n];
+    for (i, row) in out.iter_mut().enumerate() {
+        for (j, cell) in row.iter_mut().enumerate() {
+            // inverse[i][j] = cofactor(j, i) / det
+            let minor: Vec<Vec<A>> = m
+                .iter()
+                .enumerate()
+                .filter(|(r, _)| *r != j)
+                .map(|(_, r)| {
+                    r.iter()
+                        .enumerate()
+                        .filter(|(c, _)| *c != i)
+                        .map(|(_, x)| x.clone())
+                        .collect()
+                })
+                .collect();
+            let c = det(&minor);
+            let c = if (i + j) % 2 == 0 { c } else { c.neg() };
+            *cell = c.div(d)?;
+        }
+    }
+    Ok(Value::M(out))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::expr::parse;
+    use super::*;
+
+    fn q(p: i64, d: i64) -> BigRational {
+        BigRational::new(p.into(), d.into())
+    }
+
+    fn eval_at(s: &str, t: BigRational) -> Result<Value<BigRational>> {
+        let mut vars = BTreeMap::new();
+        vars.insert("t".to_string(), Value::S(t));
+        let env = VarEnv(vars);
+        Evaluator::new(&env, BTreeMap::new()).eval(&parse(s, &[])?)
+    }
+
+    fn deg(s: &str) -> Deg {
+        let mut vars = BTreeMap::new();
+        vars.insert("t".to_string(), Value::S(Deg::var("t")));
+        let env = VarEnv(vars);
+        Evaluator::new(&env, BTreeMap::new())
+            .scalar(&parse(s, &[]).unwrap())
+            .unwrap()
+    }
+
+    #[test]
+    fn evaluates_exactly() {
+        let v = eval_at("(2t - 1)/(t^2 - t + 1)", q(1, 3)).unwrap().scalar("").unwrap();
+        assert_eq!(v, q(-1, 3) / q(7, 9));
+        let b = eval_at("4/3 B(1, 3, t) + 4/3 B(2, 3, t)", q(1, 2))
+            .unwrap()
+            .scalar("")
+            .unwrap();
+        assert_eq!(b, q(1, 1));
+        assert!(matches!(eval_at("1/(t - 1/3)", q(1, 3)), Err(Error::DivisionByZero(_))));
+        assert!(eval_at("sqrt(2)", q(0, 1)).is_err());
+        assert_eq!(eval_at("sqrt(9/4)", q(0, 1)).unwrap().scalar("").unwrap(), q(3, 2));
+        assert!(eval_at("sqrt(-4)", q(0, 1))
+            .unwrap_err()
+            .to_string()
+            .contains("negative"));
+        assert!(eval_at("t^99999999", q(1, 2)).is_err());
+        assert_eq!(
+            eval_at("sum(r, 0, 3, B(r, 3, t))", q(2, 7))
+                .unwrap()
+                .scalar("")
+                .unwrap(),
+            q(1, 1)
+        );
+    }
+
+    #[test]
+    fn degree_bounds() {
+        assert_eq!(deg("(2t-1)^3 + 2t").get("t"), (3, 0));
+        assert_eq!(deg("B(2, 5, t)").get("t"), (5, 0));
+        assert_eq!(deg("(2t - 1)/(t^2 - t + 1)").get("t"), (1, 2));
+        assert_eq!(deg("1/(1+t) + t").get("t"), (2, 1));
+        assert_eq!(deg("t^-2").get("t"), (0, 2));
+    }
+}

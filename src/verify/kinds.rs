@@ -1,0 +1,412 @@
+//! The claim kinds: each turns a claim into identities (or other exact checks) and a verdict.
+//!
+//! | kind            | decides                                                             |
+//! |-----------------|---------------------------------------------------------------------|
+//! | `identity`      | `lhs = rhs` or every step of `chain`, for all parameters and ranges   |
+//! | `implicit`      | the curve `on` satisfies `equation` for every parameter               |
+//! | `bezier_points` | the Bézier points of a power-basis curve on `[a, b]` are `points`     |
+//! | `conic_type`    | the conic `equation` (degree 2 in x, y) is the printed `conic`        |
+//! | `implies`       | `equation` follows from `premise`: their difference is `factor · premise` |
+//! | `theorem`       | a general theorem of the texts for every degree in `degrees`          |
+//! | `convergence`   | Theorem 1.2 (bounded evidence: `verified`)                            |
+
+use super::claims::{Claim, CurveSpec, Number};
+use super::engine::{check_chain, check_chain_symbolic, check_implies, points, Checked, Ctx};
+use super::eval::{Alg, Evaluator, Value};
+use super::expr::{substitute, Expr};
+use super::poly::{set_names, Poly, RatFunc};
+use super::{theorems, Verdict};
+use crate::curve::BezierCurve;
+use crate::error::{Error, Result};
+use crate::point::Point;
+use crate::quadratic::QuadraticIrrational;
+use crate::rational::{classify_conic, RationalBezierCurve};
+use crate::scalar::sign;
+use crate::surface::BezierSurface;
+use num_rational::BigRational;
+use num_traits::Zero;
+use std::collections::BTreeMap;
+use std::rc::Rc;
+
+/// Checks one claim; `detail` also records the steps for `explain`.
+pub fn check_claim(claim: &Claim, detail: bool) -> Result<Checked> {
+    let ctx = Ctx::new(claim)?;
+    match claim.kind.as_str() {
+        "identity" => check_identity(&ctx, detail),
+        "implicit" => check_implicit(&ctx, detail),
+        "bezier_points" => check_bezier_points(claim, detail),
+        "conic_type" => check_conic_type(&ctx),
+        "implies" => check_implies(&ctx, detail),
+        "theorem" => theorems::check_theorem(&ctx, detail),
+        "enneper" => check_enneper(&ctx, detail),
+        "weight_type" => check_weight_type(&ctx),
+        "convergence" => theorems::check_convergence(&ctx, detail),
+        other => Err(Error::Parse(format!(
+            "claim {}: unknown kind '{other}' (identity, implicit, bezier_points, conic_type, weight_type, enneper, implies, theorem, convergence)",
+            claim.id
+        ))),
+    }
+}
+
+fn check_identity(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
+    let c = ctx.claim;
+    let sides: Vec<Expr> = match (&c.chain, &c.lhs, &c.rhs) {
+        (Some(chain), None, None) => chain.iter().map(|s| ctx.expr(s)).collect::<Result<_>>()?,
+        (None, Some(l), Some(r)) => vec![ctx.expr(l)?, ctx.expr(r)?],
+        _ => {
+            return Err(Error::Parse(format!(
+                "claim {}: an identity needs either lhs and rhs, or chain",
+                c.id
+            )))
+        }
+    };
+    if ctx.symbolic() {
+        check_chain_symbolic(ctx, &sides, detail)
+    } else {
+        chain_in_field(ctx, &sides, detail)
+    }
+}
+
+/// Whether the claim writes a square root anywhere (then it is checked in `Q(√d)`).
+fn uses_sqrt(c: &Claim) -> bool {
+    format!("{c:?}").contains("sqrt")
+}
+
+/// Checks a chain in exact rationals, or in the quadratic irrationals when a `sqrt` occurs.
+fn chain_in_field(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Result<Checked> {
+    if uses_sqrt(ctx.claim) {
+        let mut out = check_chain::<QuadraticIrrational>(ctx, sides, detail)?;
+        out.certificate = format!("{} (exact arithmetic in Q(√d))", out.certificate);
+        Ok(out)
+    } else {
+        check_chain::<BigRational>(ctx, sides, detail)
+    }
+}
+
+/// Substitutes the coordinates of the curve `on` for the coordinate names in an equation.
+fn on_curve(ctx: &Ctx<'_>, e: &Expr, on: &Expr) -> Expr {
+    let coords: Vec<String> = ctx
+        .claim
+        .coords
+        .clone()
+        .unwrap_or_else(|| vec!["x".into(), "y".into(), "z".into()]);
+    let args: Vec<Expr> = (1..=coords.len())
+        .map(|k| match on {
+            Expr::Tuple(items) if k <= items.len() => items[k - 1].clone(),
+            _ => Expr::Call("comp".into(), vec![on.clone(), Expr::int(k as i64)]),
+        })
+        .collect();
+    substitute(e, &coords, &args)
+}
+
+fn check_implicit(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
+    let c = ctx.claim;
+    let on = ctx.expr(c.need(&c.on, "on")?)?;
+    let (a, b) = ctx.equation(c.need(&c.equation, "equation")?)?;
+    let sides = vec![on_curve(ctx, &a, &on), on_curve(ctx, &b, &on)];
+    let mut out = chain_in_field(ctx, &sides, detail)?;
+    out.certificate = format!("substituting the curve into the equation: {}", out.certificate);
+    Ok(out)
+}
+
+fn check_bezier_points(claim: &Claim, detail: bool) -> Result<Checked> {
+    let param = claim.param.clone().unwrap_or_else(|| "u".into());
+    let t = if param == "t" { "s" } else { "t" };
+    let [a, b] = claim
+        .interval
+        .clone()
+        .ok_or_else(|| Error::Parse(format!("claim {} needs interval = [a, b]", claim.id)))?;
+    let pts = claim
+        .points
+        .clone()
+        .ok_or_else(|| Error::Parse(format!("claim {} needs points", claim.id)))?;
+    let mut cl = claim.clone();
+    cl.curves.get_or_insert_with(BTreeMap::new).insert(
+        "P".into(),
+        CurveSpec {
+            points: pts.clone(),
+            weights: None,
+        },
+    );
+    cl.vars = Some(vec![t.to_string()]);
+    let ctx = Ctx::new(&cl)?;
+    let power = ctx.expr(claim.need(&claim.power, "power")?)?;
+    let (ea, eb) = (ctx.expr(&a.text()?)?, ctx.expr(&b.text()?)?);
+    // u = a + (b - a) t
+    let u = Expr::add(ea, Expr::mul(Expr::sub(eb, ctx.expr(&a.text()?)?), Expr::Var(t.into())));
+    let lhs = Expr::Call("P".into(), vec![Expr::Var(t.into())]);
+    let rhs = substitute(&power, std::slice::from_ref(&param), &[u]);
+    let mut out = check_chain::<BigRational>(&ctx, &[lhs, rhs], detail)?;
+    if out.verdict != Verdict::Proved {
+        return Ok(out);
+    }
+    // The library's conversion must give the same points.
+    let lib = library_power_on(&ctx, &power, &param, &a, &b)?;
+    let printed: Vec<Point<BigRational>> = points(&pts)?;
+    if lib.points() != printed.as_slice() {
+        return Ok(Checked::new(
+            Verdict::Fails,
+            format!("BezierCurve::from_power_on gives {lib}, not the printed points"),
+        ));
+    }
+    out.certificate = format!(
+        "the curve with the printed points equals the power form at {param} = a + (b − a){t}: {}; BezierCurve::from_power_on gives the same points",
+        out.certificate
+    );
+    Ok(out)
+}
+
+fn library_power_on(
+    ctx: &Ctx<'_>,
+    power: &Expr,
+    param: &str,
+    a: &Number,
+    b: &Number,
+) -> Result<BezierCurve<BigRational>> {
+    let names: Rc<[String]> = Rc::from(vec![param.to_string()]);
+    set_names(&names);
+    let mut vars = BTreeMap::new();
+    vars.insert(param.to_string(), Value::S(RatFunc::poly(Poly::var(&names, 0))));
+    let env = super::eval::VarEnv(vars);
+    let v = Evaluator::new(&env, BTreeMap::new()).eval(power)?;
+    let comps: Vec<Vec<BigRational>> = v.entries().iter().map(|r| poly_coeffs_1d(r)).collect::<Result<_>>()?;
+    let n = comps.iter().map(Vec::len).max().unwrap_or(1);
+    let coeffs: Vec<Point<BigRational>> = (0..n)
+        .map(|k| {
+            Point::new(
+                comps
+                    .iter()
+                    .map(|c| c.get(k).cloned().unwrap_or_else(BigRational::zero))
+                    .collect(),
+            )
+        })
+        .collect::<Result<_>>()?;
+    let _ = ctx;
+    BezierCurve::from_power_on(
+        &coeffs,
+        &super::engine::constant(&a.text()?)?,
+        &super::engine::constant(&b.text()?)?,
+    )
+}
+
+fn poly_coeffs_1d(r: &RatFunc) -> Result<Vec<BigRational>> {
+    let den = r
+        .den
+        .as_constant()
+        .ok_or_else(|| Error::Domain("the power form must be a polynomial".into()))?;
+    let mut out = Vec::new();
+    for (e, c) in poly_terms(&r.num) {
+        let k = e[0] as usize;
+        if out.len() <= k {
+            out.resize(k + 1, BigRational::zero());
+        }
+        out[k] = &c / &den;
+    }
+    if out.is_empty() {
+        out.push(BigRational::zero());
+    }
+    Ok(out)
+}
+
+fn poly_terms(p: &Poly) -> Vec<(Vec<u16>, BigRational)> {
+    p.terms_list()
+}
+
+/// The type of the conic `A x² + B xy + C y² + D x + E y + F = 0`, exactly.
+pub fn conic_type_of(coef: &[BigRational; 6]) -> &'static str {
+    let [a, b, c, d, e, f] = coef;
+    let two = BigRational::from_integer(2.into());
+    let m = [
+        [a.clone(), b / &two, d / &two],
+        [b / &two, c.clone(), e / &two],
+        [d / &two, e / &two, f.clone()],
+    ];
+    let det = &m[0][0] * (&m[1][1] * &m[2][2] - &m[1][2] * &m[2][1])
+        - &m[0][1] * (&m[1][0] * &m[2][2] - &m[1][2] * &m[2][0])
+        + &m[0][2] * (&m[1][0] * &m[2][1] - &m[1][1] * &m[2][0]);
+    let disc = b * b - BigRational::from_integer(4.into()) * a * c;
+    if a.is_zero() && b.is_zero() && c.is_zero() {
+        return "not a conic (no quadratic terms)";
+    }
+    if det.is_zero() {
+        return "degenerate";
+    }
+    match sign(&disc) {
+        -1 => {
+            if sign(&((a + c) * &det)) < 0 {
+                "ellipse"
+            } else {
+                "imaginary ellipse (no real points)"
+            }
+        }
+        0 => "parabola",
+        _ => "hyperbola",
+    }
+}
+
+fn check_conic_type(ctx: &Ctx<'_>) -> Result<Checked> {
+    let c = ctx.claim;
+    let (l, r) = ctx.equation(c.need(&c.equation, "equation")?)?;
+    let printed = c.need(&c.conic, "conic")?;
+    let names: Rc<[String]> = Rc::from(vec!["x".to_string(), "y".to_string()]);
+    set_names(&names);
+    let mut vars = BTreeMap::new();
+    vars.insert("x".into(), Value::S(RatFunc::poly(Poly::var(&names, 0))));
+    vars.insert("y".into(), Value::S(RatFunc::poly(Poly::var(&names, 1))));
+    let env = super::eval::VarEnv(vars);
+    let lv = Evaluator::new(&env, BTreeMap::new()).scalar(&l)?;
+    let rv = Evaluator::new(&env, BTreeMap::new()).scalar(&r)?;
+    let diff = lv.sub(&rv);
+    let den = diff
+        .den
+        .as_constant()
+        .ok_or_else(|| Error::Domain("the conic's equation must be a polynomial in x, y".into()))?;
+    let mut coef: [BigRational; 6] = Default::default();
+    for (e, k) in poly_terms(&diff.num) {
+        let slot = match (e[0], e[1]) {
+            (2, 0) => 0,
+            (1, 1) => 1,
+            (0, 2) => 2,
+            (1, 0) => 3,
+            (0, 1) => 4,
+            (0, 0) => 5,
+            _ => return Err(Error::Domain(format!("'{}' has degree above 2: not a conic", diff))),
+        };
+        coef[slot] = &k / &den;
+    }
+    let kind = conic_type_of(&coef);
+    let [a, b, cc, d, e, f] = &coef;
+    let disc = b * b - BigRational::from_integer(4.into()) * a * cc;
+    let cert = format!(
+        "A x² + B xy + C y² + D x + E y + F with (A, B, C, D, E, F) = ({a}, {b}, {cc}, {d}, {e}, {f}): \
+         B² − 4AC = {disc}, the 3×3 matrix of the conic is {}singular ⇒ {kind}",
+        if kind == "degenerate" { "" } else { "non-" }
+    );
+    if kind == printed {
+        Ok(Checked::new(Verdict::Proved, format!("{cert}: proof")))
+    } else {
+        Ok(Checked::new(Verdict::Fails, format!("{cert}, not {printed}")))
+    }
+}
+
+/// `weight_type`: the type of the conic of a quadratic rational curve (`curves`, one curve
+/// with weights), by the library's [`classify_conic`] (`w1² / (w0 w2)` against 1), compared
+/// with the printed `conic`.
+fn check_weight_type(ctx: &Ctx<'_>) -> Result<Checked> {
+    let c = ctx.claim;
+    let printed = c.need(&c.conic, "conic")?;
+    let (name, spec) = c
+        .curves
+        .as_ref()
+        .and_then(|m| m.iter().next())
+        .ok_or_else(|| Error::Parse(format!("claim {}: weight_type needs one curve with weights", c.id)))?;
+    let w = spec
+        .weights
+        .as_ref()
+        .ok_or_else(|| Error::Parse(format!("claim {}: the curve {name} needs weights", c.id)))?;
+    let verdict = |kind: &str, detail: String| {
+        if kind == printed {
+            Checked::new(Verdict::Proved, format!("{detail} ⇒ {kind}: proof"))
+        } else {
+            Checked::new(Verdict::Fails, format!("{detail} ⇒ {kind}, not {printed}"))
+        }
+    };
+    if uses_sqrt(c) {
+        let pts = points::<QuadraticIrrational>(&spec.points)?;
+        let ws = w
+            .iter()
+            .map(|x| super::engine::constant(&x.text()?))
+            .collect::<Result<Vec<QuadraticIrrational>>>()?;
+        let curve = RationalBezierCurve::new(pts, ws.clone())?;
+        let kind = classify_conic(&curve)?;
+        return Ok(verdict(
+            kind.as_str(),
+            format!("weights {}, {}, {}", ws[0], ws[1], ws[2]),
+        ));
+    }
+    let pts = points::<BigRational>(&spec.points)?;
+    let ws = w
+        .iter()
+        .map(|x| super::engine::constant(&x.text()?))
+        .collect::<Result<Vec<BigRational>>>()?;
+    let curve = RationalBezierCurve::new(pts, ws.clone())?;
+    let kind = classify_conic(&curve)?;
+    let ratio = if ws.len() == 3 && !ws[0].is_zero() && !ws[2].is_zero() {
+        format!(", w1²/(w0 w2) = {}", &ws[1] * &ws[1] / (&ws[0] * &ws[2]))
+    } else {
+        String::new()
+    };
+    Ok(verdict(
+        kind.as_str(),
+        format!(
+            "classify_conic: weights ({}){ratio}",
+            ws.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", ")
+        ),
+    ))
+}
+
+/// `enneper`: the surface (`surfaces`, one) is Enneper's surface
+/// `E(u, v) = (u − u³/3 + uv², v − v³/3 + vu², u² − v²)` up to an affine change of parameters
+/// and a scale. The library's power-form match ([`BezierSurface::enneper_matches`]) finds the
+/// parameters; the identity `x(s, t) = λ E(αs + β, γt + δ)` is then proved independently on a
+/// 4×4 grid (bicubic: degree ≤ 3 in each parameter).
+fn check_enneper(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
+    let c = ctx.claim;
+    let (name, spec) = c
+        .surfaces
+        .as_ref()
+        .and_then(|m| m.iter().next())
+        .ok_or_else(|| Error::Parse(format!("claim {}: enneper needs one surface", c.id)))?;
+    let net = super::engine::net_from_spec::<BigRational>(spec)?;
+    let surface = BezierSurface::new(net)?;
+    let found = surface.enneper_matches()?;
+    let Some(m) = found.first() else {
+        let power = surface.to_power()?;
+        return Ok(Checked::new(
+            Verdict::Fails,
+            format!(
+                "the power form of {name} (coefficients of s^k t^l, e.g. s³: {}, t³: {}) is not λ E(αs+β, γt+δ) for any α, β, γ, δ, λ, nor with s and t exchanged (the parameters are forced by a few coefficients, then every coefficient is compared exactly)",
+                power.get(3).and_then(|r| r.first()).map(|p| p.to_string()).unwrap_or_default(),
+                power.first().and_then(|r| r.get(3)).map(|p| p.to_string()).unwrap_or_default()
+            ),
+        ));
+    };
+    let (u, v) = if m.swapped {
+        (
+            format!("({})*t + ({})", m.gamma, m.delta),
+            format!("({})*s + ({})", m.alpha, m.beta),
+        )
+    } else {
+        (
+            format!("({})*s + ({})", m.alpha, m.beta),
+            format!("({})*t + ({})", m.gamma, m.delta),
+        )
+    };
+    let mut cl = c.clone();
+    cl.kind = "identity".into();
+    cl.vars = Some(vec!["s".into(), "t".into()]);
+    cl.defs = Some(vec![
+        "E(u, v) = (u - u^3/3 + u*v^2, v - v^3/3 + v*u^2, u^2 - v^2)".into()
+    ]);
+    let sub = Ctx::new(&cl)?;
+    let lhs = sub.expr(&format!("{name}(s, t)"))?;
+    let rhs = sub.expr(&format!("({})*E({u}, {v})", m.lambda))?;
+    let out = check_chain::<BigRational>(&sub, &[lhs, rhs], detail)?;
+    if out.verdict != Verdict::Proved {
+        return Ok(Checked::new(
+            Verdict::Fails,
+            format!("the library's match does not hold: {}", out.certificate),
+        ));
+    }
+    let mut res = Checked::new(
+        Verdict::Proved,
+        format!(
+            "power-form match: {name}(s, t) = {} · E({u}, {v}){}; verified independently: {}",
+            m.lambda,
+            if m.swapped { " (parameters exchanged)" } else { "" },
+            out.certificate
+        ),
+    );
+    res.steps = out.steps;
+    Ok(res)
+}

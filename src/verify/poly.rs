@@ -1,0 +1,302 @@
+//! Exact multivariate rational functions with rational coefficients, for claims about
+//! arbitrary vectors and unknowns (text 004): both sides are expanded and compared, which is
+//! a proof by algebra rather than by sampling.
+
+use super::eval::{rational_sqrt, Alg};
+use crate::error::{Error, Result};
+use num_rational::BigRational;
+use num_traits::{One, Zero};
+use std::collections::BTreeMap;
+use std::fmt;
+use std::rc::Rc;
+
+/// Largest number of terms a polynomial may reach before the claim is refused.
+pub const MAX_TERMS: usize = 200_000;
+
+/// A polynomial: monomial exponents (one per variable) → coefficient, no zero coefficients.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Poly {
+    names: Rc<[String]>,
+    terms: BTreeMap<Vec<u16>, BigRational>,
+}
+
+impl Poly {
+    /// The constant `c` over the variables `names`.
+    pub fn constant(names: &Rc<[String]>, c: &BigRational) -> Poly {
+        let mut terms = BTreeMap::new();
+        if !c.is_zero() {
+            terms.insert(vec![0; names.len()], c.clone());
+        }
+        Poly {
+            names: names.clone(),
+            terms,
+        }
+    }
+    /// The variable number `k`.
+    pub fn var(names: &Rc<[String]>, k: usize) -> Poly {
+        let mut e = vec![0; names.len()];
+        e[k] = 1;
+        let mut terms = BTreeMap::new();
+        terms.insert(e, BigRational::one());
+        Poly {
+            names: names.clone(),
+            terms,
+        }
+    }
+    /// Whether this is the zero polynomial.
+    pub fn is_zero(&self) -> bool {
+        self.terms.is_empty()
+    }
+    /// The number of terms.
+    pub fn len(&self) -> usize {
+        self.terms.len()
+    }
+    /// Whether there are no terms.
+    pub fn is_empty(&self) -> bool {
+        self.terms.is_empty()
+    }
+    /// The constant value, when the polynomial is constant.
+    pub fn as_constant(&self) -> Option<BigRational> {
+        match self.terms.len() {
+            0 => Some(BigRational::zero()),
+            1 => {
+                let (e, c) = self.terms.iter().next().expect("one term");
+                e.iter().all(|&x| x == 0).then(|| c.clone())
+            }
+            _ => None,
+        }
+    }
+    fn add_scaled(&self, o: &Poly, sign: bool) -> Poly {
+        let mut terms = self.terms.clone();
+        for (e, c) in &o.terms {
+            let entry = terms.entry(e.clone()).or_insert_with(BigRational::zero);
+            if sign {
+                *entry += c;
+            } else {
+                *entry -= c;
+            }
+            if entry.is_zero() {
+                terms.remove(e);
+            }
+        }
+        Poly {
+            names: self.names.clone(),
+            terms,
+        }
+    }
+    fn mul(&self, o: &Poly) -> Poly {
+        let mut terms: BTreeMap<Vec<u16>, BigRational> = BTreeMap::new();
+        for (e1, c1) in &self.terms {
+            for (e2, c2) in &o.terms {
+                let e: Vec<u16> = e1.iter().zip(e2).map(|(a, b)| a.saturating_add(*b)).collect();
+                let entry = terms.entry(e.clone()).or_insert_with(BigRational::zero);
+                *entry += c1 * c2;
+                if entry.is_zero() {
+                    terms.remove(&e);
+                }
+            }
+        }
+        Poly {
+            names: self.names.clone(),
+            terms,
+        }
+    }
+    fn scale(&self, c: &BigRational) -> Poly {
+        if c.is_zero() {
+            return Poly::constant(&self.names, c);
+        }
+        Poly {
+            names: self.names.clone(),
+            terms: self.terms.iter().map(|(e, x)| (e.clone(), x * c)).collect(),
+        }
+    }
+    /// The terms (exponents, coefficient), in increasing monomial order.
+    pub fn terms_list(&self) -> Vec<(Vec<u16>, BigRational)> {
+        self.terms.iter().map(|(e, c)| (e.clone(), c.clone())).collect()
+    }
+
+    /// The value at `point` (one rational per variable).
+    pub fn eval(&self, point: &[BigRational]) -> BigRational {
+        let mut acc = BigRational::zero();
+        for (e, c) in &self.terms {
+            let mut term = c.clone();
+            for (x, &k) in point.iter().zip(e) {
+                for _ in 0..k {
+                    term *= x;
+                }
+            }
+            acc += term;
+        }
+        acc
+    }
+}
+
+impl fmt::Display for Poly {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.terms.is_empty() {
+            return write!(f, "0");
+        }
+        let mut first = true;
+        for (e, c) in self.terms.iter().rev() {
+            let mono: Vec<String> = e
+                .iter()
+                .enumerate()
+                .filter(|(_, &k)| k > 0)
+                .map(|(i, &k)| {
+                    if k == 1 {
+                        self.names[i].clone()
+                    } else {
+                        format!("{}^{k}", self.names[i])
+                    }
+                })
+                .collect();
+            let neg = c < &BigRational::zero();
+            let mag = if neg { -c } else { c.clone() };
+            if first {
+                if neg {
+                    write!(f, "-")?;
+                }
+            } else {
+                write!(f, "{}", if neg { " - " } else { " + " })?;
+            }
+            first = false;
+            if mono.is_empty() {
+                write!(f, "{mag}")?;
+            } else if mag.is_one() {
+                write!(f, "{}", mono.join("*"))?;
+            } else {
+                write!(f, "{mag}*{}", mono.join("*"))?;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// A rational function `num / den` (the denominator is never the zero polynomial).
+#[derive(Clone, Debug)]
+pub struct RatFunc {
+    /// The numerator.
+    pub num: Poly,
+    /// The denominator.
+    pub den: Poly,
+}
+
+impl RatFunc {
+    /// The polynomial `p`.
+    pub fn poly(p: Poly) -> RatFunc {
+        let one = Poly::constant(&p.names, &BigRational::one());
+        RatFunc { num: p, den: one }
+    }
+    fn normal(num: Poly, den: Poly) -> RatFunc {
+        // A constant denominator is folded into the numerator, keeping most values polynomials.
+        match den.as_constant() {
+            Some(c) if !c.is_zero() && !c.is_one() => {
+                let inv = BigRational::one() / c;
+                RatFunc::poly(num.scale(&inv))
+            }
+            _ => RatFunc { num, den },
+        }
+    }
+    /// `num1 · den2 − num2 · den1`: zero exactly when the two functions are equal.
+    pub fn cleared_difference(&self, o: &RatFunc) -> Poly {
+        self.num.mul(&o.den).add_scaled(&o.num.mul(&self.den), false)
+    }
+    fn size_check(&self) -> Result<()> {
+        if self.num.len() > MAX_TERMS || self.den.len() > MAX_TERMS {
+            return Err(Error::TooLarge {
+                what: "symbolic expansion",
+                value: format!("{} terms", self.num.len().max(self.den.len())),
+                limit: MAX_TERMS.to_string(),
+            });
+        }
+        Ok(())
+    }
+}
+
+impl fmt::Display for RatFunc {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.den.as_constant().is_some_and(|c| c.is_one()) {
+            write!(f, "{}", self.num)
+        } else {
+            write!(f, "({}) / ({})", self.num, self.den)
+        }
+    }
+}
+
+thread_local! {
+    static NAMES: std::cell::RefCell<Rc<[String]>> = std::cell::RefCell::new(Rc::from(Vec::new()));
+}
+
+/// Sets the variable names that constants created by [`Alg::from_rat`] are built over
+/// (all polynomials of one check share one variable list).
+pub fn set_names(names: &Rc<[String]>) {
+    NAMES.with(|n| *n.borrow_mut() = names.clone());
+}
+
+fn names() -> Rc<[String]> {
+    NAMES.with(|n| n.borrow().clone())
+}
+
+impl Alg for RatFunc {
+    fn from_rat(r: &BigRational) -> Self {
+        RatFunc::poly(Poly::constant(&names(), r))
+    }
+    fn add(&self, o: &Self) -> Self {
+        if self.den == o.den {
+            return RatFunc::normal(self.num.add_scaled(&o.num, true), self.den.clone());
+        }
+        RatFunc::normal(
+            self.num.mul(&o.den).add_scaled(&o.num.mul(&self.den), true),
+            self.den.mul(&o.den),
+        )
+    }
+    fn sub(&self, o: &Self) -> Self {
+        self.add(&o.neg())
+    }
+    fn mul(&self, o: &Self) -> Self {
+        RatFunc::normal(self.num.mul(&o.num), self.den.mul(&o.den))
+    }
+    fn neg(&self) -> Self {
+        RatFunc {
+            num: self.num.scale(&-BigRational::one()),
+            den: self.den.clone(),
+        }
+    }
+    fn div(&self, o: &Self) -> Result<Self> {
+        if o.num.is_zero() {
+            return Err(Error::DivisionByZero(format!(
+                "division by the zero polynomial ({self} / 0)"
+            )));
+        }
+        let r = RatFunc::normal(self.num.mul(&o.den), self.den.mul(&o.num));
+        r.size_check()?;
+        Ok(r)
+    }
+    fn sqrt_rat(r: &BigRational) -> Result<Self> {
+        Ok(Self::from_rat(&rational_sqrt(r)?))
+    }
+    fn equals(&self, o: &Self) -> Option<bool> {
+        Some(self.cleared_difference(o).is_zero())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn expands_and_compares() {
+        let names: Rc<[String]> = Rc::from(vec!["x".to_string(), "y".to_string()]);
+        set_names(&names);
+        let x = RatFunc::poly(Poly::var(&names, 0));
+        let y = RatFunc::poly(Poly::var(&names, 1));
+        let lhs = x.add(&y).mul(&x.add(&y));
+        let rhs = x.mul(&x).add(&RatFunc::from_int(2).mul(&x).mul(&y)).add(&y.mul(&y));
+        assert_eq!(lhs.equals(&rhs), Some(true));
+        assert_eq!(lhs.equals(&x.mul(&x)), Some(false));
+        let q = x.div(&y).unwrap();
+        assert_eq!(q.mul(&y).equals(&x), Some(true));
+        assert!(x.div(&x.sub(&x)).is_err());
+        assert_eq!(lhs.to_string(), "x^2 + 2*x*y + y^2");
+    }
+}

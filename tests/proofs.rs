@@ -1,0 +1,73 @@
+//! The report over proofs/ matches every `expect`; the failing claims are pinned.
+
+use casteljau::verify::{prove_paths, Verdict};
+use std::path::PathBuf;
+
+#[test]
+fn every_verdict_is_as_expected() {
+    let report = prove_paths(&[PathBuf::from("proofs")], &mut |_, _, _| {}).unwrap();
+    let bad: Vec<String> = report
+        .outcomes
+        .iter()
+        .filter(|o| o.verdict != o.expect)
+        .map(|o| {
+            format!(
+                "{}: {} (expected {}): {}",
+                o.id,
+                o.verdict.as_str(),
+                o.expect.as_str(),
+                o.certificate
+            )
+        })
+        .collect();
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
+    assert_eq!(report.mismatches(), 0);
+    let fails: Vec<&str> = report
+        .outcomes
+        .iter()
+        .filter(|o| o.verdict == Verdict::Fails)
+        .map(|o| o.id.as_str())
+        .collect();
+    // The misprints of the texts, each with its proved correction beside it.
+    assert_eq!(fails, ["000-ex4-y", "003-two-stage", "004-8", "004-10"]);
+    for id in &fails {
+        let fixed = report.outcomes.iter().find(|o| o.corrects.as_deref() == Some(*id));
+        assert!(
+            fixed.is_some_and(|o| o.verdict == Verdict::Proved),
+            "{id} has no proved correction"
+        );
+    }
+    let counts: Vec<(String, usize, usize, usize)> = report
+        .summaries()
+        .iter()
+        .map(|s| (s.text.clone(), s.proved, s.verified, s.fails))
+        .collect();
+    assert_eq!(
+        counts,
+        [
+            ("000_ef6a3958c7d702f5.txt".to_string(), 36, 1, 1),
+            ("001_d6775559ddbdd5b2.txt".to_string(), 29, 0, 0),
+            ("003_bd67d8bed055bcf9.txt".to_string(), 14, 0, 1),
+            ("004_658c519a4aef48a5.txt".to_string(), 13, 0, 2),
+        ]
+    );
+}
+
+/// `cargo test --release --test proofs -- --ignored --nocapture` prints the report and the time.
+#[test]
+#[ignore]
+fn print_report() {
+    let start = std::time::Instant::now();
+    let mut last = std::time::Instant::now();
+    let paths: Vec<PathBuf> = match std::env::var("PROOFS") {
+        Ok(p) => vec![PathBuf::from(p)],
+        Err(_) => vec![PathBuf::from("proofs")],
+    };
+    let report = prove_paths(&paths, &mut |_, _, id| {
+        eprintln!("{:>8.3}s {id}", last.elapsed().as_secs_f64());
+        last = std::time::Instant::now();
+    })
+    .unwrap();
+    println!("{}", report.to_text());
+    println!("prove over proofs/ took {:?}", start.elapsed());
+}

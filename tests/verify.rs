@@ -1,0 +1,156 @@
+//! The engine: false claims are caught with exact counterexamples, true ones proved, the
+//! convergence bound is true, reports and explain say what was checked.
+
+use casteljau::verify::claims::parse_file;
+use casteljau::verify::kinds::check_claim;
+use casteljau::verify::theorems::elevation_bound;
+use casteljau::verify::{explain, prove_paths, Verdict};
+use casteljau::{BezierCurve, BigRational, Point, Scalar};
+use proptest::prelude::*;
+use std::path::{Path, PathBuf};
+
+fn check(toml: &str) -> casteljau::Result<(Verdict, String)> {
+    let f = parse_file(toml, Path::new("test.toml"))?;
+    let out = check_claim(&f.claim[0], false)?;
+    Ok((out.verdict, out.certificate))
+}
+
+fn identity(lhs: &str, rhs: &str, extra: &str) -> casteljau::Result<(Verdict, String)> {
+    check(&format!(
+        "[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\nlhs = \"{lhs}\"\nrhs = \"{rhs}\"\n{extra}"
+    ))
+}
+
+#[test]
+fn a_wrong_coefficient_fails_with_a_counterexample() {
+    let (v, c) = identity("-(2t-1)^2 + 1", "4/3 B(1,3,t) + 5/3 B(2,3,t)", "").unwrap();
+    assert_eq!(v, Verdict::Fails);
+    assert!(
+        c.contains("t = ") && c.contains("left side = ") && c.contains("right side = "),
+        "{c}"
+    );
+    let (v, _) = identity("-(2t-1)^2 + 1", "4/3 B(1,3,t) + 4/3 B(2,3,t)", "").unwrap();
+    assert_eq!(v, Verdict::Proved);
+}
+
+#[test]
+fn agreeing_at_a_few_points_is_not_a_proof() {
+    // t³ = t at t = 0, 1, −1: the derived degree 3 needs four points.
+    let (v, c) = identity("t^3", "t", "").unwrap();
+    assert_eq!(v, Verdict::Fails, "{c}");
+    // (t − 0)(t − 1/2)(t − 1)… vanishes at the first candidates; degree 4 needs five points.
+    let (v, _) = identity("t(t - 1/4)(t - 1/2)(t - 3/4)", "0", "").unwrap();
+    assert_eq!(v, Verdict::Fails);
+}
+
+#[test]
+fn rational_functions_skip_poles_and_zero_denominators_are_errors() {
+    let (v, c) = identity("(t^2 - 1)/(t - 1)", "t + 1", "").unwrap();
+    assert_eq!(v, Verdict::Proved, "{c}");
+    assert!(c.contains("denominator"), "{c}");
+    let err = identity("1/(t - t)", "1", "").unwrap_err().to_string();
+    assert!(err.contains("zero polynomial") || err.contains("denominator"), "{err}");
+}
+
+#[test]
+fn ranges_and_polygons() {
+    let (v, c) = identity(
+        "sum(i, 0, n, b[i]*B(i, n, t))",
+        "sum(i, 0, n+1, (i/(n+1)*b[i-1] + (1 - i/(n+1))*b[i])*B(i, n+1, t))",
+        "polygon = { name = \"b\", degree = \"n\" }\nfor = [\"n = 0..=5\"]",
+    )
+    .unwrap();
+    assert_eq!(v, Verdict::Proved, "{c}");
+    assert!(c.contains("n = 0..=5") && c.contains("basis polygons"), "{c}");
+    // a wrong elevation weight is caught on some unit polygon
+    let (v, c) = identity(
+        "sum(i, 0, n, b[i]*B(i, n, t))",
+        "sum(i, 0, n+1, (i/(n+2)*b[i-1] + (1 - i/(n+2))*b[i])*B(i, n+1, t))",
+        "polygon = { name = \"b\", degree = \"n\" }\nfor = [\"n = 0..=5\"]",
+    )
+    .unwrap();
+    assert_eq!(v, Verdict::Fails);
+    assert!(c.contains("b[") && c.contains("n = "), "{c}");
+    // a product of control points is refused, not mis-proved
+    let err = identity("b[0]*b[1]", "0", "polygon = { name = \"b\", degree = \"2\" }").unwrap_err();
+    assert!(err.to_string().contains("affine"), "{err}");
+}
+
+#[test]
+fn symbolic_claims() {
+    let (v, _) = identity(
+        "dot(a + b, a + b)",
+        "dot(a, a) + 2 dot(a, b) + dot(b, b)",
+        "vectors = { a = 3, b = 3 }",
+    )
+    .unwrap();
+    assert_eq!(v, Verdict::Proved);
+    let (v, c) = identity(
+        "dot(a + b, a + b)",
+        "dot(a, a) + dot(b, b)",
+        "vectors = { a = 3, b = 3 }",
+    )
+    .unwrap();
+    assert_eq!(v, Verdict::Fails);
+    assert!(c.contains("left side"), "{c}");
+}
+
+#[test]
+fn conic_types_and_misnamed_conics() {
+    let conic = |eq: &str, kind: &str| {
+        check(&format!(
+            "[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"conic_type\"\nequation = \"{eq}\"\nconic = \"{kind}\""
+        ))
+        .unwrap()
+        .0
+    };
+    assert_eq!(conic("4x^2 + 3y^2 - 10y + 3 = 0", "ellipse"), Verdict::Proved);
+    assert_eq!(conic("4x^2 + 3y^2 - 10y + 3 = 0", "hyperbola"), Verdict::Fails);
+    assert_eq!(conic("y = x^2", "parabola"), Verdict::Proved);
+}
+
+#[test]
+fn bad_claim_files_are_clear_errors() {
+    let err = parse_file("[[claim]]\nid = \"x\"\n", Path::new("t.toml"))
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("missing field"), "{err}");
+    let err = identity("t", "t", "colour = 1").unwrap_err().to_string();
+    assert!(err.contains("unknown field"), "{err}");
+    let err = identity("t", "t", "expect = \"maybe\"").unwrap_err().to_string();
+    assert!(err.contains("expect"), "{err}");
+    let err = check("[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"magic\"").unwrap_err();
+    assert!(err.to_string().contains("unknown kind"));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    /// The O(1/r) bound used for Theorem 1.2 holds for random exact curves.
+    #[test]
+    fn elevation_bound_is_true(coords in prop::collection::vec((-20i64..20, -20i64..20), 1..7), r in 0usize..12) {
+        let pts: Vec<Point<BigRational>> = coords.iter().map(|&(x, y)| Point::from_ints(&[x, y]).unwrap()).collect();
+        let curve = BezierCurve::new(pts).unwrap();
+        let d = curve.elevation_distance(r).unwrap();
+        let bound = elevation_bound(&curve, r).unwrap();
+        prop_assert!(d.max_norm <= bound, "r = {}: {} > {}", r, d.max_norm, bound);
+    }
+}
+
+#[test]
+fn report_and_explain() {
+    let report = prove_paths(&[PathBuf::from("proofs/000_ef6a3958c7d702f5.toml")], &mut |_, _, _| {}).unwrap();
+    let text = report.to_text();
+    assert!(text.contains("000-ex4-y") && text.contains("counterexample") && text.contains("summary"));
+    let json = report.to_json();
+    assert_eq!(json["summary"]["texts"][0]["text"], "000_ef6a3958c7d702f5.txt");
+    assert!(json["claims"][0]["certificate"].is_string());
+    let ex = explain(&[PathBuf::from("proofs")], "000-ex4-curve").unwrap();
+    assert!(
+        ex.contains("de Casteljau scheme (9)") && ex.contains("both sides ="),
+        "{ex}"
+    );
+    assert!(explain(&[PathBuf::from("proofs")], "no-such-id").is_err());
+    let one = BigRational::from_i64(1);
+    assert_eq!(Scalar::to_f64(&one), 1.0);
+}
