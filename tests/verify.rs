@@ -154,3 +154,27 @@ fn report_and_explain() {
     let one = BigRational::from_i64(1);
     assert_eq!(Scalar::to_f64(&one), 1.0);
 }
+
+#[test]
+fn fit_claims_check_the_printed_numbers_exactly() {
+    let claim = |extra: &str| {
+        check(&format!(
+            "[[claim]]\nid = \"f\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"fit\"\n\
+             curves = {{ x = {{ points = [[0, 1, 0], [\"1/4\", 1, 0], [\"1/2\", \"7/6\", 0], [\"3/4\", \"3/2\", 0], [1, 2, 1]] }} }}\n{extra}"
+        ))
+    };
+    // x(t) = (t, 1 + t², t⁴): k = l = 3/10, δ² = 1/1280.
+    let (v, c) = claim("k = \"3/10\"\nl = \"3/10\"\ndelta2 = \"1/1280\"").unwrap();
+    assert_eq!(v, Verdict::Proved, "{c}");
+    let (v, c) = claim("delta2 = \"1/1281\"").unwrap();
+    assert_eq!(v, Verdict::Fails, "{c}");
+    assert!(c.contains("printed δ² = 1/1281, computed δ² = 1/1280"), "{c}");
+    // Parallel end tangents: the normal equations are singular, a clear error, not a verdict.
+    let err = check(
+        "[[claim]]\nid = \"f\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"fit\"\n\
+         curves = { x = { points = [[0, 0, 0], [1, 0, 0], [2, 1, 0], [3, 1, 0]] } }",
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(err.contains("singular") || err.contains("parallel"), "{err}");
+}

@@ -171,6 +171,13 @@ pub struct Claim {
     pub degrees: Option<String>,
     /// convergence: the largest number of elevation steps.
     pub steps: Option<usize>,
+
+    /// fit: the printed (or stated) tangent length `k` of text 004's cubic, if any.
+    pub k: Option<Number>,
+    /// fit: the printed tangent length `l`, if any.
+    pub l: Option<Number>,
+    /// fit: the printed `δ²`, if any.
+    pub delta2: Option<Number>,
 }
 
 impl Claim {

@@ -9,9 +9,10 @@
 //! | `implies`       | `equation` follows from `premise`: their difference is `factor · premise` |
 //! | `theorem`       | a general theorem of the texts for every degree in `degrees`          |
 //! | `convergence`   | Theorem 1.2 (bounded evidence: `verified`)                            |
+//! | `fit`           | text 004's cubic fit of a concrete curve: (11) = (13), ∇δ² = 0, printed k, l, δ² |
 
 use super::claims::{Claim, CurveSpec, Number};
-use super::engine::{check_chain, check_chain_symbolic, check_implies, points, Checked, Ctx};
+use super::engine::{check_chain, check_chain_symbolic, check_implies, points, Checked, Ctx, CurveObj};
 use super::eval::{Alg, Evaluator, Value};
 use super::expr::{substitute, Expr};
 use super::poly::{set_names, Poly, RatFunc};
@@ -41,8 +42,9 @@ pub fn check_claim(claim: &Claim, detail: bool) -> Result<Checked> {
         "enneper" => check_enneper(&ctx, detail),
         "weight_type" => check_weight_type(&ctx),
         "convergence" => theorems::check_convergence(&ctx, detail),
+        "fit" => check_fit(&ctx),
         other => Err(Error::Parse(format!(
-            "claim {}: unknown kind '{other}' (identity, implicit, bezier_points, conic_type, weight_type, enneper, implies, theorem, convergence)",
+            "claim {}: unknown kind '{other}' (identity, implicit, bezier_points, conic_type, weight_type, enneper, implies, theorem, convergence, fit)",
             claim.id
         ))),
     }
@@ -292,6 +294,77 @@ fn check_conic_type(ctx: &Ctx<'_>) -> Result<Checked> {
 /// `weight_type`: the type of the conic of a quadratic rational curve (`curves`, one curve
 /// with weights), by the library's [`classify_conic`] (`w1² / (w0 w2)` against 1), compared
 /// with the printed `conic`.
+/// Text 004's method on one concrete curve, decided exactly: the library solves the normal
+/// equations (11); the closed form (13) must give the same `(k, l)`; the gradient of `δ²` must
+/// vanish there (δ² is a convex quadratic in `k, l` with the Gram matrix as Hessian, so a zero
+/// gradient is the global minimum when the tangents are independent); the printed `k`, `l`,
+/// `δ²` (when given) must be equal to the computed ones. A plane curve must give `δ² = 0`.
+fn check_fit(ctx: &Ctx<'_>) -> Result<Checked> {
+    use crate::fit::{delta_squared, delta_squared_gradient, fit_cubic, fit_cubic_closed_form, CubicFitSource};
+    let c = ctx.claim;
+    let (name, spec) = c
+        .curves
+        .as_ref()
+        .filter(|m| m.len() == 1)
+        .and_then(|m| m.iter().next())
+        .ok_or_else(|| Error::Parse(format!("claim {}: fit needs exactly one curve", c.id)))?;
+    let data = match CurveObj::<BigRational>::from_spec(spec)? {
+        CurveObj::Polynomial(curve) => curve.cubic_fit_data()?,
+        CurveObj::Rational(curve) => curve.cubic_fit_data()?,
+    };
+    let fit = fit_cubic(&data)?;
+    let (k13, l13) = fit_cubic_closed_form(&data)?;
+    let (gk, gl) = delta_squared_gradient(&data, &fit.k, &fit.l);
+    let d2 = delta_squared(&data, &fit.k, &fit.l);
+    let computed = format!("{name}: k = {}, l = {}, δ² = {}", fit.k, fit.l, fit.delta2);
+    let mut wrong: Vec<String> = Vec::new();
+    if (&k13, &l13) != (&fit.k, &fit.l) {
+        wrong.push(format!(
+            "(13) gives k = {k13}, l = {l13} but (11) gives k = {}, l = {}",
+            fit.k, fit.l
+        ));
+    }
+    if !gk.is_zero() || !gl.is_zero() {
+        wrong.push(format!("∇δ² = ({gk}, {gl}) ≠ 0 at the solution"));
+    }
+    if d2 != fit.delta2 {
+        wrong.push(format!("δ² by its definition is {d2}, not {}", fit.delta2));
+    }
+    if data.x0.dim() == 2 && !fit.delta2.is_zero() {
+        wrong.push(format!("a plane curve, yet δ² = {} ≠ 0", fit.delta2));
+    }
+    for (label, printed, value) in [("k", &c.k, &fit.k), ("l", &c.l, &fit.l), ("δ²", &c.delta2, &fit.delta2)] {
+        if let Some(p) = printed {
+            let p: BigRational = super::engine::constant(&p.text()?)?;
+            if &p != value {
+                wrong.push(format!("printed {label} = {p}, computed {label} = {value}"));
+            }
+        }
+    }
+    for w in &fit.warnings {
+        wrong.push(format!("warning: {w}"));
+    }
+    if wrong.iter().any(|w| !w.starts_with("warning")) {
+        return Ok(Checked::new(
+            Verdict::Fails,
+            format!("{computed}; {}", wrong.join("; ")),
+        ));
+    }
+    let notes = if wrong.is_empty() {
+        String::new()
+    } else {
+        format!(" ({})", wrong.join("; "))
+    };
+    Ok(Checked::new(
+        Verdict::Proved,
+        format!(
+            "{computed}, exactly: the normal equations (11) solved by exact elimination agree with the closed form (13), \
+             ∇δ² = (0, 0) there and the Gram matrix is non-singular (det {}), so this is the unique minimum{notes}: proof",
+            fit.gram_determinant
+        ),
+    ))
+}
+
 fn check_weight_type(ctx: &Ctx<'_>) -> Result<Checked> {
     let c = ctx.claim;
     let printed = c.need(&c.conic, "conic")?;
