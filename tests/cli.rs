@@ -174,17 +174,53 @@ fn usage_errors_exit_2_and_help_exits_0() {
 
 #[test]
 fn prove_reports_and_sets_the_status() {
-    let dir = std::env::temp_dir().join(format!("casteljau-cli-test-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let out = casteljau(&["prove", dir.to_str().unwrap(), "--format", "json"]);
-    let code = out.status.code();
-    assert!(code == Some(0) || code == Some(1), "prove exits 0 or 1, got {code:?}");
+    // The real claim files: every verdict as expected, exit 0, the misprints listed.
+    let out = casteljau(&["prove", "proofs", "--format", "json"]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
     let report: Value = serde_json::from_slice(&out.stdout).expect("prove --format json prints one JSON object");
-    let mismatches = report["summary"]["mismatches"].as_u64().unwrap();
-    assert_eq!(code == Some(1), mismatches > 0);
+    assert_eq!(report["summary"]["mismatches"].as_u64(), Some(0));
+    let failing: Vec<&str> = report["summary"]["failing"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_str().unwrap())
+        .collect();
+    assert_eq!(failing, ["000-ex4-y", "003-two-stage", "004-8", "004-10"]);
+    for claim in report["claims"].as_array().unwrap() {
+        for field in ["id", "source", "statement", "verdict", "certificate", "expect"] {
+            assert!(claim[field].is_string(), "claim without {field}: {claim}");
+        }
+    }
     // progress goes to stderr only on a terminal, never into a piped run
     assert!(out.stderr.is_empty());
+
+    // A claim file whose claim does not get its expected verdict: exit 1, the mismatch named.
+    let dir = std::env::temp_dir().join(format!("casteljau-cli-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(
+        dir.join("wrong.toml"),
+        "[[claim]]\nid = \"wrong\"\nsource = \"test\"\nstatement = \"t^2 = t\"\nkind = \"identity\"\nlhs = \"t^2\"\nrhs = \"t\"\n",
+    )
+    .unwrap();
+    let out = casteljau(&["prove", dir.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("[fails] wrong") && text.contains("MISMATCH"), "{text}");
+    assert!(text.contains("counterexample"), "{text}");
+
+    // --explain: the step-by-step proof, and a clear error for an unknown id.
+    let out = casteljau(&["prove", "--explain", "000-ex4-points"]);
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("t = 1/3: both sides = (8/9, -8/27)"), "{text}");
     let err = fails(&["prove", dir.to_str().unwrap(), "--explain", "no-such-claim"]);
     assert!(err.contains("no-such-claim"), "{err}");
     std::fs::remove_dir_all(&dir).unwrap();
+
+    // No claim files at all is a usage error, not an empty success.
+    let empty = std::env::temp_dir().join(format!("casteljau-cli-empty-{}", std::process::id()));
+    std::fs::create_dir_all(&empty).unwrap();
+    let err = fails(&["prove", empty.to_str().unwrap()]);
+    assert!(err.contains("no claim files"), "{err}");
+    std::fs::remove_dir_all(&empty).unwrap();
 }
