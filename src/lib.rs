@@ -69,3 +69,8 @@ pub use fit::{
 pub use verify::{explain, prove_paths, ClaimOutcome, Report, Verdict};
 
 // --- end of re-exports
+
+/// The README's Rust examples, compiled and run as doctests so that they stay true.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
