@@ -462,26 +462,24 @@ where
 /// Casteljau on the control points (4), not by the text's (5)/(6), so that those formulas
 /// can be checked against it.
 ///
-/// # Panics
-/// If the five vectors of `data` differ in dimension (a programming error, as in [`Point`]
-/// arithmetic; [`CubicFitData::new`] and [`CubicFitData::validate`] check it).
-pub fn delta_squared<T: Scalar>(data: &CubicFitData<T>, k: &T, l: &T) -> T
+/// The fields of [`CubicFitData`] are public, so the data is validated first: vectors of
+/// different dimensions are an error, not a panic.
+pub fn delta_squared<T: Scalar>(data: &CubicFitData<T>, k: &T, l: &T) -> Result<T>
 where
     for<'a> &'a T: RefOps<T>,
 {
-    midpoint_residual(data, k, l).norm_squared()
+    Ok(midpoint_residual(data, k, l)?.norm_squared())
 }
 
-fn midpoint_residual<T: Scalar>(data: &CubicFitData<T>, k: &T, l: &T) -> Vector<T>
+fn midpoint_residual<T: Scalar>(data: &CubicFitData<T>, k: &T, l: &T) -> Result<Vector<T>>
 where
     for<'a> &'a T: RefOps<T>,
 {
+    data.validate()?;
     let a1 = data.x0.add(&data.d0.scale(k));
     let a2 = data.x1.sub(&data.d1.scale(l));
-    // Same dimension for all four points: the arithmetic above would have panicked otherwise.
-    let curve = BezierCurve::new(vec![data.x0.clone(), a1, a2, data.x1.clone()])
-        .expect("four points of one dimension make a cubic");
-    curve.eval(&half()).sub(&data.xh)
+    let curve = BezierCurve::new(vec![data.x0.clone(), a1, a2, data.x1.clone()])?;
+    Ok(curve.eval(&half()).sub(&data.xh))
 }
 
 fn half<T: Scalar>() -> T
@@ -499,18 +497,18 @@ where
 ///
 /// # Panics
 /// If the five vectors of `data` differ in dimension (see [`delta_squared`]).
-pub fn delta_squared_gradient<T: Scalar>(data: &CubicFitData<T>, k: &T, l: &T) -> (T, T)
+pub fn delta_squared_gradient<T: Scalar>(data: &CubicFitData<T>, k: &T, l: &T) -> Result<(T, T)>
 where
     for<'a> &'a T: RefOps<T>,
 {
-    let r = midpoint_residual(data, k, l);
+    let r = midpoint_residual(data, k, l)?;
     let h = half::<T>();
     let two = T::from_i64(2);
     let b1 = bernstein(1, 3, &h).expect("small binomials fit every scalar");
     let b2 = bernstein(2, 3, &h).expect("small binomials fit every scalar");
     let dk = &(&two * &b1) * &data.d0.dot(&r);
     let dl = -&(&(&two * &b2) * &data.d1.dot(&r));
-    (dk, dl)
+    Ok((dk, dl))
 }
 
 // ---------------------------------------------------------------------------------------

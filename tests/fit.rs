@@ -110,7 +110,7 @@ proptest! {
         // (6), second line: (X/2 + 3k/8 ẋ(0) − 3l/8 ẋ(1))·(same)
         let v = d.x_vector().scale(&q(1, 2)).add(&d.d0.scale(&k38)).sub(&d.d1.scale(&l38));
         let line2 = v.dot(&v);
-        let defined = delta_squared(&d, &k, &l);
+        let defined = delta_squared(&d, &k, &l).unwrap();
         prop_assert_eq!(&line1, &defined);
         prop_assert_eq!(&line2, &defined);
     }
@@ -119,7 +119,7 @@ proptest! {
     /// definition (the library's gradient), at arbitrary (k, l). (9) differentiates by −l.
     #[test]
     fn equations_7_and_9_hold(d in data(), k in rat(), l in rat()) {
-        let (dk, dl) = delta_squared_gradient(&d, &k, &l);
+        let (dk, dl) = delta_squared_gradient(&d, &k, &l).unwrap();
         let x = d.x_vector();
         let v = x.scale(&q(1, 2)).add(&d.d0.scale(&(&q(3, 8) * &k))).sub(&d.d1.scale(&(&q(3, 8) * &l)));
         let (g00, g01, g11) = (d.d0.dot(&d.d0), d.d0.dot(&d.d1), d.d1.dot(&d.d1));
@@ -134,8 +134,8 @@ proptest! {
         // And the gradient itself is the derivative: δ² is quadratic, so central differences
         // with any step are exact.
         let h = q(1, 5);
-        let fd_k = (&delta_squared(&d, &(&k + &h), &l) - &delta_squared(&d, &(&k - &h), &l)).checked_div(&(&q(2, 1) * &h)).unwrap();
-        let fd_l = (&delta_squared(&d, &k, &(&l + &h)) - &delta_squared(&d, &k, &(&l - &h))).checked_div(&(&q(2, 1) * &h)).unwrap();
+        let fd_k = (&delta_squared(&d, &(&k + &h), &l).unwrap() - &delta_squared(&d, &(&k - &h), &l).unwrap()).checked_div(&(&q(2, 1) * &h)).unwrap();
+        let fd_l = (&delta_squared(&d, &k, &(&l + &h)).unwrap() - &delta_squared(&d, &k, &(&l - &h)).unwrap()).checked_div(&(&q(2, 1) * &h)).unwrap();
         prop_assert_eq!(fd_k, dk);
         prop_assert_eq!(fd_l, dl);
     }
@@ -180,15 +180,15 @@ proptest! {
         let (k, l) = fit_cubic_closed_form(&d).unwrap();
         prop_assert_eq!(&k, &fit.k);
         prop_assert_eq!(&l, &fit.l);
-        let (gk, gl) = delta_squared_gradient(&d, &k, &l);
+        let (gk, gl) = delta_squared_gradient(&d, &k, &l).unwrap();
         prop_assert!(gk.is_zero() && gl.is_zero());
-        prop_assert_eq!(&fit.delta2, &delta_squared(&d, &k, &l));
+        prop_assert_eq!(&fit.delta2, &delta_squared(&d, &k, &l).unwrap());
         prop_assert!(d.d0.dot(&fit.residual).is_zero() && d.d1.dot(&fit.residual).is_zero());
         // G is positive definite here, so any other (k, l) has a larger δ² and a non-zero gradient.
         if !(dk.is_zero() && dl.is_zero()) {
             let (k2, l2) = (&k + &dk, &l + &dl);
-            prop_assert!(delta_squared(&d, &k2, &l2) > fit.delta2);
-            let (gk2, gl2) = delta_squared_gradient(&d, &k2, &l2);
+            prop_assert!(delta_squared(&d, &k2, &l2).unwrap() > fit.delta2);
+            let (gk2, gl2) = delta_squared_gradient(&d, &k2, &l2).unwrap();
             prop_assert!(!(gk2.is_zero() && gl2.is_zero()));
         }
         // Diagnostics are exactly the sign conditions the text assumes.
@@ -278,9 +278,9 @@ fn printed_equations_8_and_10_fail_corrected_hold() {
     let (m, _) = d.normal_equations();
     let printed = solve(&m, &[x.dot(&d.x0), x.dot(&d.x1)]).unwrap();
     let (kp, lp) = (-&printed[0], printed[1].clone());
-    let (gk, gl) = delta_squared_gradient(&d, &kp, &lp);
+    let (gk, gl) = delta_squared_gradient(&d, &kp, &lp).unwrap();
     assert!(!(gk.is_zero() && gl.is_zero()));
-    assert!(delta_squared(&d, &kp, &lp) > fit.delta2);
+    assert!(delta_squared(&d, &kp, &lp).unwrap() > fit.delta2);
 
     // And the printed version is not even translation invariant, while δ² is: moving the
     // curve by (0, 5, 0) changes the printed solution but not the true one.
@@ -563,4 +563,22 @@ fn rational_quarter_circle_is_fitted_exactly_in_the_plane() {
     // A plane curve with independent end tangents: δ = 0 exactly (text 004's remark).
     assert_eq!(fit.delta2, q(0, 1));
     assert_eq!(fit.curve.eval(&q(1, 2)), data.xh);
+}
+
+#[test]
+fn hand_built_data_of_mixed_dimensions_is_an_error_not_a_panic() {
+    // CubicFitData's fields are public: delta_squared and its gradient validate them.
+    let d = CubicFitData {
+        x0: p(&[0, 0]),
+        x1: p(&[1, 0, 0]),
+        xh: p(&[0, 1]),
+        d0: p(&[1, 0]),
+        d1: p(&[0, 1]),
+    };
+    assert!(matches!(
+        delta_squared(&d, &q(1, 1), &q(1, 1)),
+        Err(casteljau::Error::DimensionMismatch { .. })
+    ));
+    assert!(delta_squared_gradient(&d, &q(1, 1), &q(1, 1)).is_err());
+    assert!(fit_cubic(&d).is_err());
 }

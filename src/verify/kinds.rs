@@ -314,8 +314,8 @@ fn check_fit(ctx: &Ctx<'_>) -> Result<Checked> {
     };
     let fit = fit_cubic(&data)?;
     let (k13, l13) = fit_cubic_closed_form(&data)?;
-    let (gk, gl) = delta_squared_gradient(&data, &fit.k, &fit.l);
-    let d2 = delta_squared(&data, &fit.k, &fit.l);
+    let (gk, gl) = delta_squared_gradient(&data, &fit.k, &fit.l)?;
+    let d2 = delta_squared(&data, &fit.k, &fit.l)?;
     let computed = format!("{name}: k = {}, l = {}, δ² = {}", fit.k, fit.l, fit.delta2);
     let mut wrong: Vec<String> = Vec::new();
     if (&k13, &l13) != (&fit.k, &fit.l) {
