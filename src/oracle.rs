@@ -991,6 +991,13 @@ pub fn ulp_distance(a: f64, b: f64) -> u64 {
 pub fn ulp_error(approx: f64, exact: &BigRational) -> Result<UlpError> {
     let a = <BigRational as Scalar>::from_f64(approx)?;
     let nearest = nearest_f64(exact);
+    if !nearest.is_finite() {
+        // Round-to-nearest overflows to ±inf: there is no finite f64 to count steps from.
+        return Err(Error::Domain(
+            "an exact coordinate is beyond the largest f64 (about 1.8e308): it has no finite nearest f64, so no error in ulps"
+                .into(),
+        ));
+    }
     let err = Signed::abs(&(&a - exact));
     let error_ulps = (&err * &pow2_exact(-ulp_exponent(exact))).to_f64();
     Ok(UlpError {
@@ -1132,6 +1139,16 @@ mod tests {
 
     fn q(s: &str) -> BigRational {
         parse_exact(s).unwrap()
+    }
+
+    #[test]
+    fn ulps_of_a_value_beyond_the_f64_range_is_a_clear_error() {
+        let r = ask(r#"{"id":3,"op":"eval","points":[["1e400"]],"t":0,"approx":[1e308]}"#);
+        assert_eq!(r["ok"], json!(false), "{r}");
+        assert!(r["error"].as_str().unwrap().contains("beyond the largest f64"), "{r}");
+        // Just inside the range it is measured.
+        let r = ask(r#"{"op":"eval","points":[["1e308"]],"t":0,"approx":[1e308]}"#);
+        assert_eq!(r["ulps"], json!([0]), "{r}");
     }
 
     #[test]
