@@ -892,17 +892,8 @@ fn describe_deg(d: &Value<Deg>, v: &str) -> String {
 }
 
 fn needed_degree(l: &Value<Deg>, r: &Value<Deg>, v: &str) -> Result<u64> {
-    let le = l.entries();
-    let re = r.entries();
-    if le.len() != re.len() {
-        return Err(Error::Domain(format!(
-            "the two sides have different shapes ({} and {})",
-            l.shape(),
-            r.shape()
-        )));
-    }
     let mut need = 0;
-    for (a, b) in le.iter().zip(&re) {
+    for (a, b) in l.paired_entries(r)? {
         let (na, da) = a.get(v);
         let (nb, db) = b.get(v);
         let d = if da == 0 && db == 0 {
@@ -1395,17 +1386,8 @@ pub fn symbolic_equal(ctx: &Ctx<'_>, lhs: &Expr, rhs: &Expr, ints: &BTreeMap<Str
     let env = sym_env(&names, &layout);
     let l = Evaluator::new(&env, ints.clone()).eval(lhs)?;
     let r = Evaluator::new(&env, ints.clone()).eval(rhs)?;
-    let le = l.entries();
-    let re = r.entries();
-    if le.len() != re.len() {
-        return Err(Error::Domain(format!(
-            "the two sides have different shapes ({} and {})",
-            l.shape(),
-            r.shape()
-        )));
-    }
     let mut terms = 0;
-    for (a, b) in le.iter().zip(&re) {
+    for (a, b) in l.paired_entries(&r)? {
         let d = a.cleared_difference(b);
         if !d.is_zero() {
             let point = nonzero_point(&d, names.len());

@@ -311,6 +311,19 @@ impl<A: Alg> Value<A> {
             Value::M(m) => m.iter().flatten().collect(),
         }
     }
+    /// The entries of two sides of an equation, paired; sides of different sizes (a number
+    /// against a vector, vectors of different lengths) are an error.
+    pub fn paired_entries<'v>(&'v self, other: &'v Value<A>) -> Result<Vec<(&'v A, &'v A)>> {
+        let (l, r) = (self.entries(), other.entries());
+        if l.len() != r.len() {
+            return Err(Error::Domain(format!(
+                "the two sides have different shapes ({} and {})",
+                self.shape(),
+                other.shape()
+            )));
+        }
+        Ok(l.into_iter().zip(r).collect())
+    }
     /// A description of the shape, for error messages.
     pub fn shape(&self) -> String {
         match self {
