@@ -1018,8 +1018,8 @@ where
     })
 }
 
-/// `E = Σ_j |b(t_j) − y_j|²` for any curve: the quantity [`fit_least_squares`] minimises.
-pub fn least_squares_residual<T: Scalar>(samples: &[Point<T>], params: &[T], curve: &BezierCurve<T>) -> Result<T>
+/// [`check_samples`], and the samples must have the curve's dimension.
+fn check_samples_of<T: Scalar>(samples: &[Point<T>], params: &[T], curve: &BezierCurve<T>, what: &str) -> Result<()>
 where
     for<'a> &'a T: RefOps<T>,
 {
@@ -1028,9 +1028,18 @@ where
         return Err(Error::DimensionMismatch {
             expected: curve.dim(),
             found: dim,
-            context: "samples of a least-squares residual".into(),
+            context: what.into(),
         });
     }
+    Ok(())
+}
+
+/// `E = Σ_j |b(t_j) − y_j|²` for any curve: the quantity [`fit_least_squares`] minimises.
+pub fn least_squares_residual<T: Scalar>(samples: &[Point<T>], params: &[T], curve: &BezierCurve<T>) -> Result<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    check_samples_of(samples, params, curve, "samples of a least-squares residual")?;
     let mut acc = T::zero();
     for (t, y) in params.iter().zip(samples) {
         acc += &curve.eval(t).distance_squared(y);
@@ -1050,15 +1059,8 @@ pub fn least_squares_gradient<T: Scalar>(
 where
     for<'a> &'a T: RefOps<T>,
 {
-    let dim = check_samples(samples, params)?;
-    if dim != curve.dim() {
-        return Err(Error::DimensionMismatch {
-            expected: curve.dim(),
-            found: dim,
-            context: "samples of a least-squares gradient".into(),
-        });
-    }
-    let design = Design::new(curve.degree(), dim, constraints)?;
+    check_samples_of(samples, params, curve, "samples of a least-squares gradient")?;
+    let design = Design::new(curve.degree(), curve.dim(), constraints)?;
     let residuals: Vec<Vector<T>> = params.iter().zip(samples).map(|(t, y)| curve.eval(t).sub(y)).collect();
     Ok(design.gradient(params, &residuals))
 }
