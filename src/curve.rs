@@ -251,15 +251,25 @@ where
     /// `c2(t) = b(t0 + (1 - t0) t)`, whose control points are the two boundaries of the
     /// scheme (9). Any `t0` works; outside `(0, 1)` the pieces extrapolate.
     pub fn split_at(&self, t0: &T) -> (Self, Self) {
+        let dim = self.dim();
         let n = self.degree();
+        // One flat buffer updated in place, as in `eval`: after level r it holds column r of
+        // the scheme, whose first point is b_0^r (left) and whose last is b_{n-r}^r (right).
+        let mut buf: Vec<T> = self.points.iter().flat_map(|p| p.coords().iter().cloned()).collect();
+        let point = |buf: &[T], i: usize| Point::from_valid(buf[i * dim..(i + 1) * dim].to_vec());
         let mut left = Vec::with_capacity(n + 1);
-        let mut right = vec![self.points[n].clone()];
-        let mut col = self.points.clone();
-        left.push(col[0].clone());
-        for _ in 1..=n {
-            col = col.windows(2).map(|w| w[0].lerp(&w[1], t0)).collect();
-            left.push(col[0].clone());
-            right.push(col[col.len() - 1].clone());
+        let mut right = Vec::with_capacity(n + 1);
+        left.push(self.points[0].clone());
+        right.push(self.points[n].clone());
+        for r in 1..=n {
+            for i in 0..=n - r {
+                for k in 0..dim {
+                    let d = &buf[(i + 1) * dim + k] - &buf[i * dim + k];
+                    buf[i * dim + k] += &(t0 * &d);
+                }
+            }
+            left.push(point(&buf, 0));
+            right.push(point(&buf, n - r));
         }
         right.reverse();
         (BezierCurve { points: left }, BezierCurve { points: right })

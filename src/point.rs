@@ -41,6 +41,12 @@ where
         Ok(Point { coords })
     }
 
+    /// A point from coordinates already known to be valid (taken from validated points).
+    pub(crate) fn from_valid(coords: Vec<T>) -> Self {
+        debug_assert!(!coords.is_empty() && coords.len() <= MAX_DIMENSION);
+        Point { coords }
+    }
+
     /// A point with integer coordinates, convenient for literals.
     ///
     /// ```
