@@ -18,7 +18,7 @@
 use crate::bernstein::{bernstein_all, bernstein_to_power, binomial_row, power_to_bernstein, reparametrize};
 use crate::error::{check_degree, Error, Result};
 use crate::hull::convex_weights;
-use crate::point::{common_dimension, AffineMap, Point};
+use crate::point::{common_dimension, AffineMap, Point, PointList};
 use crate::scalar::{RefOps, Scalar};
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -534,13 +534,7 @@ impl<T: fmt::Display> fmt::Display for DeCasteljauScheme<T> {
 
 impl<T: fmt::Display> fmt::Display for BezierCurve<T> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        for (i, p) in self.points.iter().enumerate() {
-            if i > 0 {
-                write!(f, "; ")?;
-            }
-            write!(f, "{p}")?;
-        }
-        Ok(())
+        PointList(&self.points).fmt(f)
     }
 }
 

@@ -348,7 +348,7 @@ pub fn points_to_json(points: &[Point<BigRational>]) -> Value {
 
 /// Points as text that [`parse_points`] reads back: `(0, 0); (4/3, -4/3)`.
 pub fn format_points(points: &[Point<BigRational>]) -> String {
-    points.iter().map(|p| p.to_string()).collect::<Vec<_>>().join("; ")
+    crate::point::PointList(points).to_string()
 }
 
 #[cfg(test)]

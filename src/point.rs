@@ -200,6 +200,22 @@ impl<T: fmt::Display> fmt::Display for Point<T> {
     }
 }
 
+/// Displays a list of points as `(x0, y0); (x1, y1); …`, the form the command line reads
+/// back: one format for control polygons, net rows and answers.
+pub struct PointList<'a, T>(pub &'a [Point<T>]);
+
+impl<T: fmt::Display> fmt::Display for PointList<'_, T> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (i, p) in self.0.iter().enumerate() {
+            if i > 0 {
+                write!(f, "; ")?;
+            }
+            write!(f, "{p}")?;
+        }
+        Ok(())
+    }
+}
+
 /// Checks that `points` is non-empty and all of one dimension; returns that dimension.
 pub fn common_dimension<T: Scalar>(points: &[Point<T>], what: &'static str) -> Result<usize>
 where

@@ -731,12 +731,7 @@ impl<T: fmt::Display> fmt::Display for BezierSurface<T> {
             if i > 0 {
                 writeln!(f)?;
             }
-            for (j, p) in row.iter().enumerate() {
-                if j > 0 {
-                    write!(f, "; ")?;
-                }
-                write!(f, "{p}")?;
-            }
+            write!(f, "{}", crate::point::PointList(row))?;
         }
         Ok(())
     }
