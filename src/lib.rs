@@ -26,7 +26,9 @@
 pub mod bernstein;
 pub mod curve;
 pub mod error;
+pub mod figure;
 pub mod fit;
+pub mod html;
 pub mod hull;
 pub mod input;
 pub mod linalg;

@@ -3,6 +3,7 @@
 //! Exit status: 0 on success, 1 when `prove` finds a verdict other than the expected one,
 //! 2 for usage errors, bad input and I/O errors (one clear line on stderr, never a panic).
 
+use casteljau::figure::FigureRequest;
 use casteljau::fit::CubicFitData;
 use casteljau::input::{parse_count, parse_net, parse_number, parse_numbers, parse_point, parse_points};
 use casteljau::oracle::{self, check_weight_count, Answer, Op};
@@ -11,7 +12,7 @@ use casteljau::{BezierCurve, BezierSurface, BigRational, Error, Point, RationalB
 use clap::{Parser, Subcommand, ValueEnum};
 use serde_json::{json, Value};
 use std::io::{self, IsTerminal, Write};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 #[derive(Parser)]
@@ -49,6 +50,9 @@ enum Command {
         /// Print the step-by-step proof of one claim instead.
         #[arg(long, value_name = "ID")]
         explain: Option<String>,
+        /// Also write a static HTML report (index, one page per text, figures) into DIR.
+        #[arg(long, value_name = "DIR", conflicts_with = "explain")]
+        html: Option<PathBuf>,
     },
     /// Evaluate b(t) exactly by de Casteljau's algorithm (a rational curve with --weights).
     Eval {
@@ -142,6 +146,38 @@ enum Command {
     },
     /// Serve exact answers to JSON requests, one per line on stdin (see docs).
     Oracle,
+    /// Draw a figure from exact data as SVG (defaults: the texts' examples).
+    #[command(
+        after_help = "Figures: construction, subdivision (--t), elevation (--steps), hodograph, \
+                            hull (--point), conics (--weights: middle weights), net (--iso), enneper, \
+                            fit (--weights: a rational curve's weights).\nInput: control points \
+                            \"0,0; 1,2; 3,0\", or a net with rows separated by '|'."
+    )]
+    Figure {
+        /// construction, subdivision, elevation, hodograph, hull, conics, net, enneper or fit.
+        what: String,
+        /// Control points or a control net (default: the texts' example).
+        #[arg(allow_hyphen_values = true)]
+        input: Option<String>,
+        /// The parameter (construction, subdivision; default 1/2).
+        #[arg(long, allow_hyphen_values = true)]
+        t: Option<String>,
+        /// Elevation steps, e.g. "1, 2, 4, 8" (elevation).
+        #[arg(long)]
+        steps: Option<String>,
+        /// The point whose hull weights are drawn (hull; default b(1/3)).
+        #[arg(long, allow_hyphen_values = true)]
+        point: Option<String>,
+        /// Middle weights (conics) or a rational curve's weights (fit).
+        #[arg(long, allow_hyphen_values = true)]
+        weights: Option<String>,
+        /// Iso-curves per direction (net; default 4).
+        #[arg(long)]
+        iso: Option<String>,
+        /// Write the SVG here (default: standard output).
+        #[arg(short, long, value_name = "FILE")]
+        output: Option<PathBuf>,
+    },
 }
 
 fn main() -> ExitCode {
@@ -168,7 +204,39 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
     let format = cli.format;
     let e = |e: Error| e.to_string();
     match cli.command {
-        Command::Prove { paths, explain: id } => prove(&paths, id.as_deref(), format),
+        Command::Prove {
+            paths,
+            explain: id,
+            html,
+        } => prove(&paths, id.as_deref(), html.as_deref(), format),
+        Command::Figure {
+            what,
+            input,
+            t,
+            steps,
+            point,
+            weights,
+            iso,
+            output: out,
+        } => {
+            let request = FigureRequest {
+                kind: what.parse().map_err(e)?,
+                input,
+                t,
+                steps,
+                point,
+                weights,
+                iso,
+            };
+            let svg = request.figure().and_then(|f| f.to_svg()).map_err(e)?;
+            match out {
+                Some(path) => {
+                    std::fs::write(&path, svg).map_err(|err| format!("cannot write {}: {err}", path.display()))?
+                }
+                None => output(&svg)?,
+            }
+            Ok(ExitCode::SUCCESS)
+        }
         Command::Oracle => {
             let stdin = io::stdin();
             match oracle::serve(stdin.lock(), io::stdout().lock()) {
@@ -328,7 +396,7 @@ fn output(text: &str) -> Result<(), String> {
     }
 }
 
-fn prove(paths: &[PathBuf], id: Option<&str>, format: Format) -> Result<ExitCode, String> {
+fn prove(paths: &[PathBuf], id: Option<&str>, html: Option<&Path>, format: Format) -> Result<ExitCode, String> {
     if let Some(missing) = paths.iter().find(|p| !p.exists()) {
         return Err(format!(
             "no such file or directory: {} (give claim files or directories)",
@@ -357,6 +425,14 @@ fn prove(paths: &[PathBuf], id: Option<&str>, format: Format) -> Result<ExitCode
         eprint!("\r\x1b[2K");
     }
     let report = report.map_err(|e| e.to_string())?;
+    if let Some(dir) = html {
+        let files = casteljau::verify::claims::load_paths(paths).map_err(|e| e.to_string())?;
+        let written = casteljau::html::write_report(&report, &files, dir).map_err(|e| e.to_string())?;
+        eprintln!(
+            "casteljau: wrote the HTML report ({written} pages) to {}",
+            dir.join("index.html").display()
+        );
+    }
     match format {
         Format::Text => output(&report.to_text())?,
         Format::Json => output(&format!("{}\n", report.to_json()))?,

@@ -1,0 +1,139 @@
+//! Figures for teaching, computed from exact data: the de Casteljau construction, subdivision,
+//! degree elevation, the hodograph, the convex hull, conic arcs, control nets, Enneper's net
+//! and text 004's fit, each written as a standalone SVG.
+//!
+//! Every figure is computed in exact arithmetic with the library's own operations (`scheme`,
+//! `split_at`, `elevate_by`, `derivative`, `hull_weights`, `classify_conic`, `iso_u`/`iso_v`,
+//! `enneper_net`, `fit_cubic_to`); values become `f64` pixel coordinates only when the SVG is
+//! written ([`svg`]). Each drawn point carries its exact value as a `<title>` tooltip, and
+//! the figure's notes print the exact numbers the figure is about, so a printed copy keeps
+//! them. Space curves and surfaces are drawn in one fixed projection ([`projection`]).
+//!
+//! ```
+//! use casteljau::{figure, BezierCurve, BigRational, Scalar};
+//! let c: BezierCurve<BigRational> = BezierCurve::from_ints(&[&[0, 0], &[1, 2], &[3, 2], &[4, 0]]).unwrap();
+//! let fig = figure::construction(&c, &BigRational::from_ratio(1, 2).unwrap()).unwrap();
+//! let svg = fig.to_svg().unwrap();
+//! assert!(svg.contains("b₀³(1/2) = (2, 3/2)"));
+//! ```
+
+mod conics;
+mod construction;
+mod elevation;
+mod enneper;
+mod fit;
+mod hodograph;
+mod hull;
+mod net;
+mod request;
+mod subdivision;
+pub mod svg;
+
+pub use conics::conics;
+pub use construction::construction;
+pub use elevation::{elevation, MAX_FIGURE_ELEVATION};
+pub use enneper::{enneper, text003_example5};
+pub use fit::fit;
+pub use hodograph::hodograph;
+pub use hull::hull;
+pub use net::net;
+pub use request::{FigureKind, FigureRequest, DEFAULT_CONIC_POLYGON, DEFAULT_CURVE, DEFAULT_FIT_CURVE, DEFAULT_NET};
+pub use subdivision::subdivision;
+pub use svg::{Figure, Layout, Panel, PanelMap};
+
+use crate::error::{Error, Result};
+use crate::point::{AffineMap, Point};
+use crate::rational::RationalBezierCurve;
+use crate::scalar::{RefOps, Scalar};
+use crate::BezierCurve;
+
+/// The fixed projection of space figures: the orthographic view from the direction
+/// `(16, 12, 15)/25` (azimuth and elevation both `atan(3/4)`, about 37°), whose matrix is
+/// rational: `X = (−3x + 4y)/5`, `Y = (−12x − 9y + 20z)/25`. The map is exact, so projected
+/// curves and nets are exactly the projections of the exact ones.
+pub fn projection<T: Scalar>() -> Result<AffineMap<T>>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    let r = |p, q| T::from_ratio(p, q);
+    AffineMap::new(
+        vec![
+            vec![r(-3, 5)?, r(4, 5)?, T::zero()],
+            vec![r(-12, 25)?, r(-9, 25)?, r(4, 5)?],
+        ],
+        vec![T::zero(), T::zero()],
+    )
+}
+
+/// The heading of panels drawn in the [`projection`].
+pub(crate) const PROJECTION_HEADING: &str = "view from (16, 12, 15): X = (−3x + 4y)/5, Y = (−12x − 9y + 20z)/25";
+
+/// The point as drawn: planar points as they are, space points projected.
+pub fn planar<T: Scalar>(p: &Point<T>) -> Result<Point<T>>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    match p.dim() {
+        2 => Ok(p.clone()),
+        3 => projection()?.apply(p),
+        d => Err(Error::Domain(format!(
+            "a figure draws planar or space points (2 or 3 coordinates), not {d}"
+        ))),
+    }
+}
+
+/// A curve as drawn (see [`planar`]).
+pub fn planar_curve<T: Scalar>(c: &BezierCurve<T>) -> Result<BezierCurve<T>>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    BezierCurve::new(c.points().iter().map(planar).collect::<Result<Vec<_>>>()?)
+}
+
+/// A polynomial or a rational Bézier curve, as claims and the `fit` figure take them.
+#[derive(Clone, Debug)]
+pub enum AnyCurve<T> {
+    /// `Σ b_i B_i^n(t)`.
+    Polynomial(BezierCurve<T>),
+    /// `Σ w_i b_i B_i^n(t) / Σ w_i B_i^n(t)`.
+    Rational(RationalBezierCurve<T>),
+}
+
+impl<T: Scalar> AnyCurve<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    /// The point at `t`.
+    pub fn eval(&self, t: &T) -> Result<Point<T>> {
+        match self {
+            AnyCurve::Polynomial(c) => Ok(c.eval(t)),
+            AnyCurve::Rational(c) => c.eval(t),
+        }
+    }
+
+    /// The control points.
+    pub fn points(&self) -> &[Point<T>] {
+        match self {
+            AnyCurve::Polynomial(c) => c.points(),
+            AnyCurve::Rational(c) => c.points(),
+        }
+    }
+
+    /// The dimension.
+    pub fn dim(&self) -> usize {
+        self.points()[0].dim()
+    }
+
+    /// `k/n` samples, exactly, projected for drawing.
+    pub(crate) fn planar_samples(&self, n: usize) -> Result<Vec<Point<T>>> {
+        svg::sample_params::<T>(n)?
+            .iter()
+            .map(|t| planar(&self.eval(t)?))
+            .collect()
+    }
+}
+
+/// `(p0; p1; …)` for tooltips and notes.
+pub(crate) fn list<T: std::fmt::Display>(points: &[Point<T>]) -> String {
+    crate::point::PointList(points).to_string()
+}

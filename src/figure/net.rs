@@ -1,0 +1,134 @@
+//! A tensor-product control net with iso-curves and boundary curves (text 003).
+
+use super::svg::{Figure, Panel, Style, CURVE, POINT, POLYGON};
+use super::{planar, planar_curve, projection};
+use crate::error::{Error, Result};
+use crate::point::Point;
+use crate::scalar::{RefOps, Scalar};
+use crate::surface::BezierSurface;
+
+/// The largest number of iso-curves per direction a net figure draws.
+pub const MAX_ISO: usize = 64;
+
+/// The net `b_{i,j}` (rows `i` and columns `j` joined), `iso` iso-curves `x(u_k, v)` and
+/// `x(u, v_k)` at `u_k, v_k = k/(iso+1)` ([`BezierSurface::iso_u`], [`BezierSurface::iso_v`]),
+/// the four boundary curves ([`BezierSurface::boundary`]) and the corners. Space nets are
+/// drawn in the fixed [`projection`], with a small axis tripod.
+pub fn net<T: Scalar>(surface: &BezierSurface<T>, iso: usize, title: &str) -> Result<Figure>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    if iso > MAX_ISO {
+        return Err(Error::TooLarge {
+            what: "iso-curves per direction",
+            value: iso.to_string(),
+            limit: MAX_ISO.to_string(),
+        });
+    }
+    let (m, n) = surface.degrees();
+    let mut fig = Figure::new(format!("{title} (degree ({m}, {n}))"));
+    let mut panel = Panel::new(if surface.dim() == 3 {
+        super::PROJECTION_HEADING
+    } else {
+        ""
+    });
+    let net = surface.net();
+    let drawn: Vec<Vec<Point<T>>> = net
+        .iter()
+        .map(|row| row.iter().map(planar).collect::<Result<Vec<_>>>())
+        .collect::<Result<_>>()?;
+    for row in &drawn {
+        panel.polyline(row, false, Style::line(POLYGON, 1.0), "net", None)?;
+    }
+    for j in 0..=n {
+        let column: Vec<Point<T>> = drawn.iter().map(|row| row[j].clone()).collect();
+        panel.polyline(&column, false, Style::line(POLYGON, 1.0), "net", None)?;
+    }
+    for k in 1..=iso {
+        let s = T::from_ratio(k as i64, iso as i64 + 1)?;
+        let along_v = surface.iso_u(&s);
+        let along_u = surface.iso_v(&s);
+        panel.curve(
+            &planar_curve(&along_v)?,
+            Style::line("#7fa7d9", 1.1),
+            "iso",
+            Some(format!("iso-curve u = {s}: x({s}, v)")),
+        )?;
+        panel.curve(
+            &planar_curve(&along_u)?,
+            Style::line("#7fa7d9", 1.1),
+            "iso",
+            Some(format!("iso-curve v = {s}: x(u, {s})")),
+        )?;
+    }
+    let names = ["x(u, 0)", "x(1, v)", "x(u, 1)", "x(0, v)"];
+    for (b, name) in surface.boundary().iter().zip(names) {
+        panel.curve(
+            &planar_curve(b)?,
+            Style::line(CURVE, 2.4),
+            "curve",
+            Some(format!("boundary {name}: control points {}", super::list(b.points()))),
+        )?;
+    }
+    for (i, row) in net.iter().enumerate() {
+        for (j, p) in row.iter().enumerate() {
+            let corner = (i == 0 || i == m) && (j == 0 || j == n);
+            let name = format!("b{}{}", sub(i), sub(j));
+            panel.dot(
+                &drawn[i][j],
+                if corner { 4.0 } else { 2.8 },
+                if corner { POINT } else { POLYGON },
+                format!("b_{{{i},{j}}} = {p}"),
+            )?;
+            if m + n <= 6 || corner {
+                panel.label(&drawn[i][j], name, "#222222", 6.0, -6.0)?;
+            }
+        }
+    }
+    fig.add_panel(panel);
+    if surface.dim() == 3 {
+        fig.add_panel(tripod::<T>()?);
+    }
+    fig.note(
+        Some(CURVE),
+        "boundary curves: the Bézier curves of the net's boundary rows and columns (property c)",
+    );
+    fig.note(
+        Some("#7fa7d9"),
+        format!("iso-curves at u, v = k/{} for k = 1..{iso}", iso + 1),
+    );
+    let corners = surface.corners();
+    fig.note(
+        Some(POINT),
+        format!("corners x(0,0), x(1,0), x(0,1), x(1,1): {}", super::list(&corners)),
+    );
+    Ok(fig)
+}
+
+fn sub(k: usize) -> String {
+    super::svg::indexed("", &k.to_string(), None)
+}
+
+/// The unit axes in the projection, so a reader can tell x, y and z apart.
+fn tripod<T: Scalar>() -> Result<Panel>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    let map = projection::<T>()?;
+    let mut panel = Panel::new("axes").with_max_size(90.0, 90.0);
+    let o = map.apply(&Point::origin(3))?;
+    for (k, name) in ["x", "y", "z"].iter().enumerate() {
+        let mut e = vec![T::zero(); 3];
+        e[k] = T::one();
+        let tip = map.apply(&Point::new(e)?)?;
+        panel.arrow(
+            &o,
+            &tip,
+            Style::line("#333333", 1.4),
+            "axis",
+            Some(format!("the {name} axis")),
+        )?;
+        panel.label(&tip, *name, "#333333", 4.0, -4.0)?;
+    }
+    Ok(panel)
+}

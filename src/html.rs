@@ -1,0 +1,807 @@
+//! The static HTML report of a `prove` run, for reading on screen and handing out on paper.
+//!
+//! [`write_report`] writes `index.html` (what the verdicts mean, the summary table, the
+//! misprints found) and one page per text with every claim: its statement as printed, the
+//! verdict and its scope, the certificate or counterexample, misprints highlighted beside their
+//! corrections, and the figure the claim is about ([`claim_figure`]), inlined as SVG. Pages
+//! are self-contained (styles inline, no scripts, no network) and well-formed XML, and carry a
+//! print stylesheet.
+
+use crate::error::{Error, Result};
+use crate::figure::{self, svg::esc, AnyCurve, Figure};
+use crate::point::Point;
+use crate::quadratic::QuadraticIrrational;
+use crate::rational::RationalBezierCurve;
+use crate::scalar::Scalar;
+use crate::surface::BezierSurface;
+use crate::verify::claims::{Claim, ClaimFile, CurveSpec, Number, SurfaceSpec};
+use crate::verify::{ClaimOutcome, Report, TextSummary, Verdict};
+use crate::BezierCurve;
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// The exact scalar of claim figures: claim files may write `2*sqrt(2)`.
+type Q = QuadraticIrrational;
+
+/// How a verdict reads in the report: a CSS class, its word, and what it covers.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct VerdictText {
+    /// `proved`, `verified` or `fails` (a CSS class).
+    pub class: &'static str,
+    /// The word shown.
+    pub label: &'static str,
+    /// What the verdict covers, in one sentence.
+    pub scope: String,
+}
+
+/// The one place that turns a verdict into words.
+pub fn verdict_text(outcome: &ClaimOutcome) -> VerdictText {
+    match outcome.verdict {
+        Verdict::Proved => VerdictText {
+            class: "proved",
+            label: "proved",
+            scope: "for every value of every variable of the statement; the certificate says why the finite check is a proof"
+                .into(),
+        },
+        Verdict::Verified => VerdictText {
+            class: "verified",
+            label: "verified",
+            scope: "bounded evidence, not a proof: the certificate says exactly what was checked".into(),
+        },
+        Verdict::Fails => VerdictText {
+            class: "fails",
+            label: "fails",
+            scope: "false as stated: the certificate is an exact counterexample".into(),
+        },
+    }
+}
+
+/// A figure for a claim, with a caption saying what it shows.
+#[derive(Clone, Debug)]
+pub struct ClaimFigure {
+    /// The figure.
+    pub figure: Figure,
+    /// Whether it draws the claim's own data (`false`: an illustration on a text's example).
+    pub own_data: bool,
+    /// One line under the figure.
+    pub caption: String,
+}
+
+/// The page of a text: `000_ef6a3958c7d702f5.txt` → `000_ef6a3958c7d702f5.html`.
+pub fn page_name(text: &str) -> String {
+    let stem = text.strip_suffix(".txt").unwrap_or(text);
+    let safe: String = stem
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    format!("{safe}.html")
+}
+
+/// The anchor of a claim on its page.
+pub fn claim_anchor(id: &str) -> String {
+    let safe: String = id
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '-' || c == '_' || c == '.' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    format!("claim-{safe}")
+}
+
+/// Writes the report into `dir` (created if needed): `index.html` and one page per text.
+/// Returns the number of pages written.
+pub fn write_report(report: &Report, files: &[ClaimFile], dir: &Path) -> Result<usize> {
+    let pages = render_pages(report, files)?;
+    std::fs::create_dir_all(dir)
+        .map_err(|e| Error::Domain(format!("cannot create the report directory {}: {e}", dir.display())))?;
+    for (name, html) in &pages {
+        let path = dir.join(name);
+        std::fs::write(&path, html).map_err(|e| Error::Domain(format!("cannot write {}: {e}", path.display())))?;
+    }
+    Ok(pages.len())
+}
+
+/// The pages as `(file name, HTML)`, `index.html` first.
+pub fn render_pages(report: &Report, files: &[ClaimFile]) -> Result<Vec<(String, String)>> {
+    let sums = report.summaries();
+    let titles: BTreeMap<String, String> = files
+        .iter()
+        .filter_map(|f| {
+            f.text
+                .as_ref()
+                .map(|t| (t.file.clone(), t.title.clone().unwrap_or_default()))
+        })
+        .collect();
+    let mut pages = vec![("index.html".to_string(), index_page(report, &sums, &titles))];
+    for sum in &sums {
+        let outcomes: Vec<&ClaimOutcome> = report.outcomes.iter().filter(|o| o.text == sum.text).collect();
+        let title = titles.get(&sum.text).cloned().unwrap_or_default();
+        pages.push((page_name(&sum.text), text_page(sum, &title, &outcomes, files)?));
+    }
+    Ok(pages)
+}
+
+/// The claim an outcome came from.
+fn find_claim<'a>(files: &'a [ClaimFile], o: &ClaimOutcome) -> Option<&'a Claim> {
+    files
+        .iter()
+        .filter(|f| f.path.display().to_string() == o.file)
+        .flat_map(|f| &f.claim)
+        .find(|c| c.id == o.id)
+}
+
+const STYLE: &str = r#"
+:root { --proved: #1e7b34; --verified: #9a6700; --fails: #b42318; --ink: #1d1d1f; --muted: #5f6368; --rule: #d0d4d9; }
+* { box-sizing: border-box; }
+body { font-family: "DejaVu Sans", "Noto Sans", "Noto Sans CJK JP", Arial, sans-serif; color: var(--ink); line-height: 1.45;
+       max-width: 62rem; margin: 0 auto; padding: 1.2rem 1.5rem 3rem; font-size: 15px; }
+h1 { font-size: 1.6rem; margin: 0.3rem 0 0.2rem; }
+h2 { font-size: 1.05rem; margin: 0 0 0.4rem; display: flex; flex-wrap: wrap; gap: 0.5rem; align-items: baseline; }
+a { color: #1a56a8; }
+.crumbs { margin: 0; font-size: 0.9rem; color: var(--muted); }
+.lead { color: var(--muted); margin-top: 0.2rem; }
+table { border-collapse: collapse; margin: 0.8rem 0 1.2rem; width: 100%; }
+th, td { border-bottom: 1px solid var(--rule); padding: 0.35rem 0.6rem; text-align: left; vertical-align: top; }
+th { background: #f3f5f7; }
+td.n { text-align: right; font-variant-numeric: tabular-nums; }
+tr.total td { font-weight: bold; border-top: 2px solid var(--ink); }
+.chip { display: inline-block; border-radius: 0.7rem; padding: 0 0.55rem; font-size: 0.8rem; font-weight: bold;
+        color: #fff; text-transform: uppercase; letter-spacing: 0.03em; }
+.chip.proved { background: var(--proved); } .chip.verified { background: var(--verified); } .chip.fails { background: var(--fails); }
+.chip.mismatch { background: #000; }
+.claim { border: 1px solid var(--rule); border-left: 6px solid var(--proved); border-radius: 4px; padding: 0.8rem 1rem;
+         margin: 1rem 0; }
+.claim.verified { border-left-color: var(--verified); }
+.claim.fails { border-left-color: var(--fails); }
+.claim.misprint { background: #fff5f4; }
+.claim.correction { background: #f3fbf4; }
+.claim .id { font-family: "DejaVu Sans Mono", monospace; font-size: 0.95rem; }
+.claim .source { color: var(--muted); font-weight: normal; font-size: 0.9rem; }
+.statement { font-size: 1.1rem; margin: 0.3rem 0 0.5rem; padding: 0.4rem 0.7rem; background: #f7f7f9; border-radius: 3px; }
+.scope { margin: 0.2rem 0; font-size: 0.92rem; }
+.banner { margin: 0.4rem 0; padding: 0.4rem 0.7rem; border-radius: 3px; font-size: 0.95rem; }
+.banner.misprint { background: #fde2df; border: 1px solid #f4a79d; }
+.banner.correction { background: #dcf2e0; border: 1px solid #9bd3a6; }
+.banner.mismatch { background: #000; color: #fff; }
+dl { margin: 0.4rem 0 0; display: grid; grid-template-columns: max-content 1fr; gap: 0.25rem 0.8rem; }
+dt { color: var(--muted); font-size: 0.88rem; }
+dd { margin: 0; }
+pre { margin: 0; white-space: pre-wrap; overflow-wrap: anywhere; font-family: "DejaVu Sans Mono", monospace; font-size: 0.85rem; }
+figure { margin: 0.7rem 0 0; }
+figure svg { max-width: 100%; height: auto; border: 1px solid var(--rule); }
+figcaption { color: var(--muted); font-size: 0.85rem; }
+nav.toc { columns: 2; font-size: 0.88rem; margin: 0.5rem 0 1rem; }
+nav.toc a { text-decoration: none; }
+nav.toc div { break-inside: avoid; }
+footer { margin-top: 2rem; color: var(--muted); font-size: 0.85rem; }
+@media print {
+  @page { margin: 14mm 12mm; }
+  body { max-width: none; padding: 0; font-size: 10.5pt; }
+  nav.toc, .noprint { display: none; }
+  a { color: inherit; text-decoration: none; }
+  .claim { break-inside: avoid; page-break-inside: avoid; border-color: #999; }
+  figure { break-inside: avoid; page-break-inside: avoid; }
+  figure svg { max-height: 120mm; border: none; }
+  .chip { color: #000 !important; background: none !important; border: 1.5px solid #000; }
+  .claim.misprint, .claim.correction, .statement { background: none; }
+  .banner.misprint { border: 2px solid #000; background: none; }
+  .banner.correction { border: 1px dashed #000; background: none; }
+  h2 { break-after: avoid; }
+}
+"#;
+
+fn head(title: &str) -> String {
+    format!(
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n\
+         <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"/>\n\
+         <title>{}</title>\n<style>{STYLE}</style>\n</head>\n<body>\n",
+        esc(title)
+    )
+}
+
+const FOOT: &str = "<footer>Written by <code>casteljau prove --html</code>. Every verdict is decided in exact \
+                    arithmetic; figures are computed exactly and drawn at the end (hover a point for its exact \
+                    value).</footer>\n</body>\n</html>\n";
+
+fn index_page(report: &Report, sums: &[TextSummary], titles: &BTreeMap<String, String>) -> String {
+    let mut s = head("casteljau: the texts' claims, checked exactly");
+    s.push_str("<header>\n<h1>The texts' claims, checked exactly</h1>\n");
+    let _ = writeln!(
+        s,
+        "<p class=\"lead\">{} claims from {} texts. Each claim is printed as the text states it, with a verdict \
+         decided in exact arithmetic and what the verdict rests on.</p>\n</header>",
+        report.outcomes.len(),
+        sums.len()
+    );
+    s.push_str("<h2>What the verdicts mean</h2>\n<table>\n");
+    for v in [Verdict::Proved, Verdict::Verified, Verdict::Fails] {
+        let probe = ClaimOutcome {
+            id: String::new(),
+            source: String::new(),
+            statement: String::new(),
+            verdict: v,
+            certificate: String::new(),
+            expect: v,
+            file: String::new(),
+            text: String::new(),
+            corrects: None,
+            note: None,
+        };
+        let vt = verdict_text(&probe);
+        let _ = writeln!(
+            s,
+            "<tr><td><span class=\"chip {}\">{}</span></td><td>{}</td></tr>",
+            vt.class,
+            vt.label,
+            esc(&vt.scope)
+        );
+    }
+    s.push_str("</table>\n<h2>Summary</h2>\n<table class=\"summary\">\n");
+    s.push_str(
+        "<tr><th>text</th><th>title</th><th>claims</th><th>proved</th><th>verified</th><th>fails</th><th>as expected</th></tr>\n",
+    );
+    let mut total = [0usize; 5];
+    for sum in sums {
+        let title = titles.get(&sum.text).map(String::as_str).unwrap_or("");
+        let _ = writeln!(
+            s,
+            "<tr><td><a href=\"{}\">{}</a></td><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td>\
+             <td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}/{}</td></tr>",
+            page_name(&sum.text),
+            esc(&sum.text),
+            esc(title),
+            sum.claims,
+            sum.proved,
+            sum.verified,
+            sum.fails,
+            sum.as_expected,
+            sum.claims
+        );
+        for (t, v) in total
+            .iter_mut()
+            .zip([sum.claims, sum.proved, sum.verified, sum.fails, sum.as_expected])
+        {
+            *t += v;
+        }
+    }
+    let _ = writeln!(
+        s,
+        "<tr class=\"total\"><td>total</td><td></td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td>\
+         <td class=\"n\">{}</td><td class=\"n\">{}/{}</td></tr>\n</table>",
+        total[0], total[1], total[2], total[3], total[4], total[0]
+    );
+    let mismatches = report.mismatches();
+    if mismatches == 0 {
+        s.push_str("<p>Every verdict is the one the claim files expect.</p>\n");
+    } else {
+        let _ = writeln!(
+            s,
+            "<p class=\"banner mismatch\">{mismatches} verdicts differ from what the claim files expect.</p>"
+        );
+    }
+    let misprints: Vec<&ClaimOutcome> = report
+        .outcomes
+        .iter()
+        .filter(|o| o.verdict == Verdict::Fails && o.expect == Verdict::Fails)
+        .collect();
+    if !misprints.is_empty() {
+        s.push_str("<h2>Misprints found</h2>\n<table class=\"misprints\">\n<tr><th>claim</th><th>as printed</th><th>correction</th></tr>\n");
+        for m in misprints {
+            let fix = report
+                .outcomes
+                .iter()
+                .find(|o| o.corrects.as_deref() == Some(m.id.as_str()));
+            let page = page_name(&m.text);
+            let fix_html = match fix {
+                Some(f) => format!(
+                    "<a href=\"{page}#{}\">{}</a>: {} <span class=\"chip {}\">{}</span>",
+                    claim_anchor(&f.id),
+                    esc(&f.id),
+                    formula(&f.statement),
+                    verdict_text(f).class,
+                    verdict_text(f).label
+                ),
+                None => "—".into(),
+            };
+            let _ = writeln!(
+                s,
+                "<tr><td><a href=\"{page}#{}\">{}</a></td><td>{}</td><td>{fix_html}</td></tr>",
+                claim_anchor(&m.id),
+                esc(&m.id),
+                formula(&m.statement)
+            );
+        }
+        s.push_str("</table>\n");
+    }
+    s.push_str(FOOT);
+    s
+}
+
+fn text_page(sum: &TextSummary, title: &str, outcomes: &[&ClaimOutcome], files: &[ClaimFile]) -> Result<String> {
+    let heading = if title.is_empty() {
+        sum.text.clone()
+    } else {
+        format!("{} — {title}", sum.text)
+    };
+    let mut s = head(&heading);
+    let _ = writeln!(
+        s,
+        "<header>\n<p class=\"crumbs noprint\"><a href=\"index.html\">← all texts</a></p>\n<h1>{}</h1>\n\
+         <p class=\"lead\">{} claims: {} proved, {} verified, {} fail{}.</p>\n</header>",
+        esc(&heading),
+        sum.claims,
+        sum.proved,
+        sum.verified,
+        sum.fails,
+        if sum.mismatches == 0 {
+            "; every verdict as the claim file expects".to_string()
+        } else {
+            format!("; {} NOT as expected", sum.mismatches)
+        }
+    );
+    s.push_str("<nav class=\"toc\">\n");
+    for o in outcomes {
+        let vt = verdict_text(o);
+        let _ = writeln!(
+            s,
+            "<div><span class=\"chip {}\">{}</span> <a href=\"#{}\">{}</a></div>",
+            vt.class,
+            vt.label,
+            claim_anchor(&o.id),
+            esc(&o.id)
+        );
+    }
+    s.push_str("</nav>\n<main>\n");
+    // a figure drawn once is referred to by later claims on the same data
+    let mut drawn: Vec<(String, String)> = Vec::new();
+    for o in outcomes {
+        claim_section(&mut s, o, outcomes, find_claim(files, o), &mut drawn)?;
+    }
+    s.push_str("</main>\n");
+    s.push_str(FOOT);
+    Ok(s)
+}
+
+fn claim_section(
+    s: &mut String,
+    o: &ClaimOutcome,
+    all: &[&ClaimOutcome],
+    claim: Option<&Claim>,
+    drawn: &mut Vec<(String, String)>,
+) -> Result<()> {
+    let vt = verdict_text(o);
+    let misprint = o.verdict == Verdict::Fails && o.expect == Verdict::Fails;
+    let correction_of = o.corrects.as_ref();
+    let corrected_by = all.iter().find(|c| c.corrects.as_deref() == Some(o.id.as_str()));
+    let mut classes = vec!["claim", vt.class];
+    if misprint {
+        classes.push("misprint");
+    }
+    if correction_of.is_some() {
+        classes.push("correction");
+    }
+    let _ = writeln!(
+        s,
+        "<section class=\"{}\" id=\"{}\" data-claim=\"{}\">",
+        classes.join(" "),
+        claim_anchor(&o.id),
+        esc(&o.id)
+    );
+    let _ = writeln!(
+        s,
+        "<h2><span class=\"chip {}\">{}</span> <span class=\"id\">{}</span> <span class=\"source\">{}</span></h2>",
+        vt.class,
+        vt.label,
+        esc(&o.id),
+        esc(&o.source)
+    );
+    let _ = writeln!(
+        s,
+        "<p class=\"statement\" lang=\"ja\" title=\"{}\">{}</p>",
+        esc(&o.statement),
+        formula(&o.statement)
+    );
+    if o.verdict != o.expect {
+        let _ = writeln!(
+            s,
+            "<p class=\"banner mismatch\">MISMATCH: the claim file expects “{}”, the check says “{}”.</p>",
+            o.expect.as_str(),
+            o.verdict.as_str()
+        );
+    }
+    if misprint {
+        let fix = match corrected_by {
+            Some(c) => format!(
+                " Corrected in <a href=\"#{}\">{}</a>: {}",
+                claim_anchor(&c.id),
+                esc(&c.id),
+                formula(&c.statement)
+            ),
+            None => String::new(),
+        };
+        let _ = writeln!(
+            s,
+            "<p class=\"banner misprint\"><strong>Misprint.</strong> As printed the statement is false (the \
+             counterexample is below).{fix}</p>"
+        );
+    }
+    if let Some(target) = correction_of {
+        let printed = all
+            .iter()
+            .find(|c| &c.id == target)
+            .map(|c| format!(" (printed: {})", formula(&c.statement)))
+            .unwrap_or_default();
+        let _ = writeln!(
+            s,
+            "<p class=\"banner correction\"><strong>Correction</strong> of the misprint \
+             <a href=\"#{}\">{}</a>{printed}.</p>",
+            claim_anchor(target),
+            esc(target)
+        );
+    }
+    let _ = writeln!(
+        s,
+        "<p class=\"scope\"><strong>{}</strong>: {}</p>",
+        vt.label,
+        esc(&vt.scope)
+    );
+    s.push_str("<dl>\n");
+    let label = if o.verdict == Verdict::Fails {
+        "counterexample"
+    } else {
+        "certificate"
+    };
+    let _ = writeln!(
+        s,
+        "<dt>{label}</dt><dd><pre class=\"certificate\">{}</pre></dd>",
+        esc(&o.certificate)
+    );
+    if let Some(n) = &o.note {
+        let _ = writeln!(s, "<dt>note</dt><dd>{}</dd>", esc(n));
+    }
+    let _ = writeln!(s, "<dt>expected</dt><dd>{}</dd>", o.expect.as_str());
+    s.push_str("</dl>\n");
+    if let Some(c) = claim {
+        match claim_figure(c) {
+            Ok(Some(cf)) => {
+                let svg = cf.figure.to_svg()?;
+                let key = svg.clone();
+                match drawn.iter().find(|(k, _)| *k == key) {
+                    Some((_, first)) => {
+                        let _ = writeln!(
+                            s,
+                            "<p class=\"figref\">Figure: the same as for <a href=\"#{}\">{}</a> above ({}).</p>",
+                            claim_anchor(first),
+                            esc(first),
+                            esc(&cf.caption)
+                        );
+                    }
+                    None => {
+                        let _ = writeln!(
+                            s,
+                            "<figure class=\"{}\">\n{}<figcaption>{}</figcaption>\n</figure>",
+                            if cf.own_data { "own" } else { "illustration" },
+                            svg.trim_end()
+                                .replacen("<svg ", &format!("<svg id=\"fig-{}\" ", claim_anchor(&o.id)), 1),
+                            esc(&cf.caption)
+                        );
+                        drawn.push((key, o.id.clone()));
+                    }
+                }
+            }
+            Ok(None) => {}
+            Err(e) => {
+                let _ = writeln!(
+                    s,
+                    "<p class=\"banner mismatch\">The figure could not be drawn: {}</p>",
+                    esc(&e.to_string())
+                );
+            }
+        }
+    }
+    s.push_str("</section>\n");
+    Ok(())
+}
+
+/// A statement as HTML: `_x`, `_{…}` become subscripts and `^x`, `^{…}`, `^(…)` superscripts
+/// (the texts' and claim files' notation); everything else is escaped text.
+pub fn formula(text: &str) -> String {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = String::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let c = chars[i];
+        if (c == '_' || c == '^') && i + 1 < chars.len() && i > 0 && !chars[i - 1].is_whitespace() {
+            let tag = if c == '_' { "sub" } else { "sup" };
+            let (body, next) = script_body(&chars, i + 1);
+            if !body.is_empty() {
+                let _ = write!(out, "<{tag}>{}</{tag}>", formula(&body));
+                i = next;
+                continue;
+            }
+        }
+        out.push_str(&esc(&c.to_string()));
+        i += 1;
+    }
+    out
+}
+
+/// The script after `_` or `^` at `start`: a braced group (braces dropped), a parenthesised
+/// group (kept), or one run of digits / one letter. Returns it and the index after it.
+fn script_body(chars: &[char], start: usize) -> (String, usize) {
+    let close = |open: char, shut: char| -> Option<usize> {
+        let mut depth = 0;
+        for (k, &c) in chars.iter().enumerate().skip(start) {
+            if c == open {
+                depth += 1;
+            } else if c == shut {
+                depth -= 1;
+                if depth == 0 {
+                    return Some(k);
+                }
+            }
+        }
+        None
+    };
+    match chars[start] {
+        '{' => match close('{', '}') {
+            Some(end) => (chars[start + 1..end].iter().collect(), end + 1),
+            None => (String::new(), start),
+        },
+        '(' => match close('(', ')') {
+            Some(end) if end - start <= 8 => (chars[start..=end].iter().collect(), end + 1),
+            _ => (String::new(), start),
+        },
+        c if c.is_ascii_digit() => {
+            let end = chars[start..]
+                .iter()
+                .position(|c| !c.is_ascii_digit())
+                .map_or(chars.len(), |k| start + k);
+            (chars[start..end].iter().collect(), end)
+        }
+        c if c.is_alphabetic() => (c.to_string(), start + 1),
+        _ => (String::new(), start),
+    }
+}
+
+fn number(n: &Number) -> Result<Q> {
+    Q::parse(&n.text()?)
+}
+
+fn points(rows: &[Vec<Number>]) -> Result<Vec<Point<Q>>> {
+    rows.iter()
+        .map(|p| Point::new(p.iter().map(number).collect::<Result<Vec<_>>>()?))
+        .collect()
+}
+
+fn curve_of(spec: &CurveSpec) -> Result<AnyCurve<Q>> {
+    let pts = points(&spec.points)?;
+    Ok(match &spec.weights {
+        None => AnyCurve::Polynomial(BezierCurve::new(pts)?),
+        Some(w) => AnyCurve::Rational(RationalBezierCurve::new(
+            pts,
+            w.iter().map(number).collect::<Result<_>>()?,
+        )?),
+    })
+}
+
+fn surface_of(spec: &SurfaceSpec) -> Result<BezierSurface<Q>> {
+    BezierSurface::new(spec.net.iter().map(|row| points(row)).collect::<Result<_>>()?)
+}
+
+fn q(p: i64, d: i64) -> Q {
+    Q::from_ratio(p, d).expect("nonzero denominator")
+}
+
+/// Text 000's example 4), the curve the illustrations of general statements are drawn on.
+fn example_curve() -> Result<BezierCurve<Q>> {
+    BezierCurve::new(vec![
+        Point::new(vec![q(0, 1), q(0, 1)])?,
+        Point::new(vec![q(4, 3), q(-4, 3)])?,
+        Point::new(vec![q(4, 3), q(4, 3)])?,
+        Point::new(vec![q(0, 1), q(0, 1)])?,
+    ])
+}
+
+const ON_EXAMPLE: &str = "illustration on text 000's example 4), b = (0, 0), (4/3, −4/3), (4/3, 4/3), (0, 0)";
+
+/// Which illustration a general statement about curves gets, by its theorem or its source.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Topic {
+    Construction,
+    Subdivision,
+    Elevation,
+    Hodograph,
+    Hull,
+}
+
+fn topic(c: &Claim) -> Option<Topic> {
+    if let Some(t) = &c.theorem {
+        return match t.as_str() {
+            "de_casteljau_bernstein" => Some(Topic::Construction),
+            "subdivision" => Some(Topic::Subdivision),
+            "elevation_7" | "elevation_8" => Some(Topic::Elevation),
+            "derivative" | "derivative_k" | "endpoint_tangent" | "tangent_at_t0" => Some(Topic::Hodograph),
+            "convex_hull" => Some(Topic::Hull),
+            _ => None,
+        };
+    }
+    c.polygon.as_ref()?;
+    // statements about a symbolic polygon: the section of the text they come from
+    let src = c.source.as_str();
+    let table: [(&str, Topic); 10] = [
+        ("補題1.3", Topic::Subdivision),
+        ("(9)", Topic::Construction),
+        ("(7)", Topic::Elevation),
+        ("(8)", Topic::Elevation),
+        ("定理1.2", Topic::Elevation),
+        ("導関数", Topic::Hodograph),
+        ("前進差分", Topic::Hodograph),
+        ("凸包", Topic::Hull),
+        ("内分", Topic::Hull),
+        ("重心", Topic::Hull),
+    ];
+    table.iter().find(|(k, _)| src.contains(k)).map(|(_, t)| *t)
+}
+
+fn illustrate(t: Topic) -> Result<Figure> {
+    let c = example_curve()?;
+    let half = q(1, 2);
+    match t {
+        Topic::Construction => figure::construction(&c, &half),
+        Topic::Subdivision => figure::subdivision(&c, &q(1, 3)),
+        Topic::Elevation => figure::elevation(&c, &[1, 2, 4, 8, 16]),
+        Topic::Hodograph => figure::hodograph(&c),
+        Topic::Hull => figure::hull(&c, &c.eval(&q(1, 3))),
+    }
+}
+
+/// The figure a claim is about: the claim's own curves or surfaces when it has them (a
+/// conic arc family for a rational quadratic, the fit for a `fit` claim, the net with
+/// iso-curves for a surface, Enneper's net, the elevation for Theorem 1.2, the construction
+/// for a polynomial curve), otherwise an illustration of the statement's topic on a text's
+/// example (by the theorem, or the text section a statement about a symbolic polygon or net
+/// comes from). `None` for claims with no geometric object (scalar identities, text 004's
+/// vector algebra).
+pub fn claim_figure(c: &Claim) -> Result<Option<ClaimFigure>> {
+    let own = |figure: Figure, caption: String| {
+        Ok(Some(ClaimFigure {
+            figure,
+            own_data: true,
+            caption,
+        }))
+    };
+    if let Some(surfaces) = &c.surfaces {
+        if let Some((name, spec)) = surfaces.iter().next() {
+            let surface = surface_of(spec)?;
+            if c.kind == "enneper" {
+                return own(
+                    figure::enneper(&surface)?,
+                    format!("the claim's net {name}, with iso-curves"),
+                );
+            }
+            return own(
+                figure::net(&surface, 4, &format!("The net of {name}"))?,
+                format!("the claim's net {name}: iso-curves and boundary curves"),
+            );
+        }
+    }
+    if let Some(curves) = &c.curves {
+        let objs: Vec<(&String, AnyCurve<Q>)> = curves
+            .iter()
+            .map(|(n, spec)| Ok((n, curve_of(spec)?)))
+            .collect::<Result<_>>()?;
+        if c.kind == "fit" {
+            if let Some((name, x)) = objs.first() {
+                return own(figure::fit(x)?, format!("text 004's fit of the claim's curve {name}"));
+            }
+        }
+        if c.kind == "convergence" {
+            if let Some((name, AnyCurve::Polynomial(b))) =
+                objs.iter().find(|(_, o)| matches!(o, AnyCurve::Polynomial(_)))
+            {
+                return own(
+                    figure::elevation(b, &[1, 2, 4, 8, 16])?,
+                    format!("the claim's curve {name} elevated r = 1, 2, 4, 8, 16 times"),
+                );
+            }
+        }
+        // a planar rational quadratic: the family of arcs of its polygon
+        let conic = objs.iter().find_map(|(name, o)| match o {
+            AnyCurve::Rational(r) if r.dim() == 2 && r.degree() == 2 => Some((name, r.clone())),
+            _ => None,
+        });
+        // a homogeneous quadratic in space: the rational arc it projects to
+        let conic = match conic {
+            Some(found) => Some(found),
+            None => objs.iter().find_map(|(name, o)| match o {
+                AnyCurve::Polynomial(p) if p.dim() == 3 && p.degree() == 2 => {
+                    RationalBezierCurve::from_homogeneous(p).ok().map(|r| (name, r))
+                }
+                _ => None,
+            }),
+        };
+        if let Some((name, arc)) = conic {
+            let w = arc.weights();
+            let mut middles = vec![w[1].clone()];
+            if w[0] == Q::one() && w[2] == Q::one() {
+                for m in [q(1, 2), q(1, 1), q(2, 1)] {
+                    if !middles.contains(&m) {
+                        middles.push(m);
+                    }
+                }
+            }
+            middles.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
+            return own(
+                figure::conics(arc.points(), &w[0], &w[2], &middles)?,
+                format!(
+                    "the claim's arc {name} (w₁ = {}) among arcs of its control polygon",
+                    w[1]
+                ),
+            );
+        }
+        if let Some((name, AnyCurve::Polynomial(b))) = objs.iter().find(|(_, o)| matches!(o, AnyCurve::Polynomial(_))) {
+            return own(
+                figure::construction(b, &q(1, 2))?,
+                format!("the claim's curve {name}: de Casteljau's construction at t = 1/2"),
+            );
+        }
+    }
+    if c.kind == "bezier_points" {
+        if let Some(p) = &c.points {
+            let b = BezierCurve::new(points(p)?)?;
+            return own(
+                figure::construction(&b, &q(1, 2))?,
+                "the claimed Bézier points and their curve, constructed at t = 1/2".into(),
+            );
+        }
+    }
+    if let Some(t) = topic(c) {
+        return Ok(Some(ClaimFigure {
+            figure: illustrate(t)?,
+            own_data: false,
+            caption: ON_EXAMPLE.into(),
+        }));
+    }
+    if let Some(net) = &c.net {
+        // a symbolic net: illustrated on text 003's nets
+        let (spec, what) = if net.degree == ["1", "1"] {
+            (
+                "0,0,0; 0,1,0 | 1,0,0; 1,1,1",
+                "illustration on text 003's bilinear patch (a hyperbolic paraboloid)",
+            )
+        } else {
+            (
+                figure::DEFAULT_NET,
+                "illustration on text 003's Ex. 2 net (degree (2, 2))",
+            )
+        };
+        let rows = crate::input::parse_net(spec)?;
+        let surface: BezierSurface<Q> = BezierSurface::new(
+            rows.iter()
+                .map(|r| {
+                    r.iter()
+                        .map(|p| p.try_map(|x| Ok(Q::rational(x.clone()))))
+                        .collect::<Result<Vec<_>>>()
+                })
+                .collect::<Result<_>>()?,
+        )?;
+        return Ok(Some(ClaimFigure {
+            figure: figure::net(&surface, 4, "A tensor-product net")?,
+            own_data: false,
+            caption: what.into(),
+        }));
+    }
+    Ok(None)
+}
