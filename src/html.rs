@@ -154,6 +154,7 @@ a { color: #1a56a8; }
 table { border-collapse: collapse; margin: 0.8rem 0 1.2rem; width: 100%; }
 th, td { border-bottom: 1px solid var(--rule); padding: 0.35rem 0.6rem; text-align: left; vertical-align: top; }
 th { background: #f3f5f7; }
+table.misprints td:first-child { white-space: nowrap; }
 td.n { text-align: right; font-variant-numeric: tabular-nums; }
 tr.total td { font-weight: bold; border-top: 2px solid var(--ink); }
 .chip { display: inline-block; border-radius: 0.7rem; padding: 0 0.55rem; font-size: 0.8rem; font-weight: bold;
@@ -468,7 +469,7 @@ fn claim_section(
         esc(&o.certificate)
     );
     if let Some(n) = &o.note {
-        let _ = writeln!(s, "<dt>note</dt><dd>{}</dd>", esc(n));
+        let _ = writeln!(s, "<dt>note</dt><dd>{}</dd>", formula(n));
     }
     let _ = writeln!(s, "<dt>expected</dt><dd>{}</dd>", o.expect.as_str());
     s.push_str("</dl>\n");

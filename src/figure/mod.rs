@@ -47,26 +47,26 @@ use crate::rational::RationalBezierCurve;
 use crate::scalar::{RefOps, Scalar};
 use crate::BezierCurve;
 
-/// The fixed projection of space figures: the orthographic view from the direction
-/// `(16, 12, 15)/25` (azimuth and elevation both `atan(3/4)`, about 37°), whose matrix is
-/// rational: `X = (−3x + 4y)/5`, `Y = (−12x − 9y + 20z)/25`. The map is exact, so projected
-/// curves and nets are exactly the projections of the exact ones.
+/// The fixed projection of space figures: the oblique (cabinet-like) view of textbooks, with
+/// the x axis towards the reader drawn down-left at a third of its length:
+/// `X = y − x/3`, `Y = z − x/3`. The map is exact, so projected curves and nets are exactly
+/// the projections of the exact ones.
 pub fn projection<T: Scalar>() -> Result<AffineMap<T>>
 where
     for<'a> &'a T: RefOps<T>,
 {
-    let r = |p, q| T::from_ratio(p, q);
+    let third = T::from_ratio(-1, 3)?;
     AffineMap::new(
         vec![
-            vec![r(-3, 5)?, r(4, 5)?, T::zero()],
-            vec![r(-12, 25)?, r(-9, 25)?, r(4, 5)?],
+            vec![third.clone(), T::one(), T::zero()],
+            vec![third, T::zero(), T::one()],
         ],
         vec![T::zero(), T::zero()],
     )
 }
 
 /// The heading of panels drawn in the [`projection`].
-pub(crate) const PROJECTION_HEADING: &str = "view from (16, 12, 15): X = (−3x + 4y)/5, Y = (−12x − 9y + 20z)/25";
+pub(crate) const PROJECTION_HEADING: &str = "oblique view, x towards the reader: X = y − x/3, Y = z − x/3";
 
 /// The point as drawn: planar points as they are, space points projected.
 pub fn planar<T: Scalar>(p: &Point<T>) -> Result<Point<T>>

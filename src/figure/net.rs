@@ -115,7 +115,7 @@ where
     for<'a> &'a T: RefOps<T>,
 {
     let map = projection::<T>()?;
-    let mut panel = Panel::new("axes").with_max_size(90.0, 90.0);
+    let mut panel = Panel::new("").with_max_size(90.0, 90.0);
     let o = map.apply(&Point::origin(3))?;
     for (k, name) in ["x", "y", "z"].iter().enumerate() {
         let mut e = vec![T::zero(); 3];
