@@ -625,6 +625,7 @@ enum Topic {
     Elevation,
     Hodograph,
     Hull,
+    Fit,
 }
 
 fn topic(c: &Claim) -> Option<Topic> {
@@ -637,6 +638,14 @@ fn topic(c: &Claim) -> Option<Topic> {
             "convex_hull" => Some(Topic::Hull),
             _ => None,
         };
+    }
+    // text 004's notation: the end tangents ẋ(0), ẋ(1) as vectors d0, d1, the cubic a
+    let tangents = c
+        .vectors
+        .as_ref()
+        .is_some_and(|v| v.contains_key("d0") && v.contains_key("d1"));
+    if tangents || c.polygon.as_ref().is_some_and(|p| p.name == "a") {
+        return Some(Topic::Fit);
     }
     c.polygon.as_ref()?;
     // statements about a symbolic polygon: the section of the text they come from
@@ -665,6 +674,14 @@ fn illustrate(t: Topic) -> Result<Figure> {
         Topic::Elevation => figure::elevation(&c, &[1, 2, 4, 8, 16]),
         Topic::Hodograph => figure::hodograph(&c),
         Topic::Hull => figure::hull(&c, &c.eval(&q(1, 3))),
+        Topic::Fit => {
+            let rows = crate::input::parse_points(figure::DEFAULT_FIT_CURVE)?;
+            let pts = rows
+                .iter()
+                .map(|p| p.try_map(|x| Ok(Q::rational(x.clone()))))
+                .collect::<Result<Vec<_>>>()?;
+            figure::fit(&AnyCurve::Polynomial(BezierCurve::new(pts)?))
+        }
     }
 }
 
@@ -769,10 +786,15 @@ pub fn claim_figure(c: &Claim) -> Result<Option<ClaimFigure>> {
         }
     }
     if let Some(t) = topic(c) {
+        let caption = if t == Topic::Fit {
+            "illustration of text 004's method on our worked example x(t) = (t, 1 + t², t⁴)"
+        } else {
+            ON_EXAMPLE
+        };
         return Ok(Some(ClaimFigure {
             figure: illustrate(t)?,
             own_data: false,
-            caption: ON_EXAMPLE.into(),
+            caption: caption.into(),
         }));
     }
     if let Some(net) = &c.net {

@@ -89,9 +89,9 @@ fn construction_labels_are_the_scheme() {
     let scheme = c.scheme(&t);
     let sub = ['₀', '₁', '₂', '₃', '₄'];
     let sup = ['⁰', '¹', '²', '³', '⁴'];
-    for r in 1..=4 {
-        for i in 0..=4 - r {
-            let shown = titled(&titles, &format!("b{}{}(2/7) = ", sub[i], sup[r]));
+    for (r, sup) in sup.iter().enumerate().skip(1) {
+        for (i, sub) in sub.iter().enumerate().take(5 - r) {
+            let shown = titled(&titles, &format!("b{sub}{sup}(2/7) = "));
             assert_eq!(shown, scheme.get(r, i).unwrap().to_string());
         }
     }
@@ -329,4 +329,21 @@ fn the_command_writes_the_svg() {
     assert_eq!(bad.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&bad.stderr).contains("unknown figure 'spiral'"));
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn committed_figures_are_what_the_command_draws() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/figures");
+    for kind in FigureKind::ALL {
+        let path = dir.join(format!("{}.svg", kind.name()));
+        let committed = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let drawn = FigureRequest::new(kind).figure().unwrap().to_svg().unwrap();
+        assert!(
+            committed == drawn,
+            "{} is stale: run `casteljau figure {} -o {}`",
+            path.display(),
+            kind.name(),
+            path.display()
+        );
+    }
 }
