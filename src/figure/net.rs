@@ -117,7 +117,11 @@ where
     let map = projection::<T>()?;
     let mut panel = Panel::new("").with_max_size(90.0, 90.0);
     let o = map.apply(&Point::origin(3))?;
-    for (k, name) in ["x", "y", "z"].iter().enumerate() {
+    // label offsets: x points down-left, y right, z up
+    for (k, (name, dx, dy)) in [("x", -8.0, 12.0), ("y", 6.0, -4.0), ("z", 6.0, 4.0)]
+        .into_iter()
+        .enumerate()
+    {
         let mut e = vec![T::zero(); 3];
         e[k] = T::one();
         let tip = map.apply(&Point::new(e)?)?;
@@ -128,7 +132,7 @@ where
             "axis",
             Some(format!("the {name} axis")),
         )?;
-        panel.label(&tip, *name, "#333333", 4.0, -4.0)?;
+        panel.label(&tip, name, "#333333", dx, dy)?;
     }
     Ok(panel)
 }
