@@ -39,7 +39,8 @@ where
         panel.dot(q, 3.5, POLYGON, format!("{name} = {p}"))?;
         panel.label(q, name, POLYGON, 6.0, -7.0)?;
     }
-    for w1 in middles {
+    let mut seen: Vec<&'static str> = Vec::new();
+    for (k, w1) in middles.iter().enumerate() {
         let arc = RationalBezierCurve::new(points.to_vec(), vec![w0.clone(), w1.clone(), w2.clone()])?;
         if conic_arc_passes_infinity(&arc)? {
             return Err(Error::Domain(format!(
@@ -51,10 +52,18 @@ where
         let ratio = (w1 * w1).checked_div(&(w0 * w2))?;
         let samples = AnyCurve::Rational(arc.clone()).planar_samples(160)?;
         let what = format!("w₁ = {w1}: {kind} (w₁²/(w₀w₂) = {ratio})");
-        panel.polyline(&samples, false, Style::line(color, 2.3), "curve", Some(what.clone()))?;
+        // a second arc of the same kind (two hyperbolas) is dashed to tell them apart
+        let style = if seen.contains(&color) {
+            Style::dashed(color, 2.3)
+        } else {
+            Style::line(color, 2.3)
+        };
+        seen.push(color);
+        panel.polyline(&samples, false, style, "curve", Some(what.clone()))?;
         let mid = arc.eval(&T::from_ratio(1, 2)?)?;
         panel.dot(&planar(&mid)?, 3.0, color, format!("x(1/2) = {mid} for w₁ = {w1}"))?;
-        panel.label(&planar(&mid)?, format!("w₁ = {w1}"), color, 8.0, 4.0)?;
+        // labels are staggered so that midpoints on one line (a symmetric polygon) stay legible
+        panel.label(&planar(&mid)?, format!("w₁ = {w1}"), color, 8.0, 4.0 - 15.0 * k as f64)?;
         fig.note(Some(color), format!("{what}; x(1/2) = {mid}"));
     }
     fig.add_panel(panel);

@@ -1,6 +1,6 @@
 //! Subdivision at `t` (Lemma 1.3): both halves' control polygons, read off the scheme.
 
-use super::svg::{indexed, Figure, Panel, Style, CURVE, PALETTE, POINT, POLYGON};
+use super::svg::{indexed, Figure, Panel, Style, PALETTE, POINT, POLYGON};
 use super::{list, planar, planar_curve};
 use crate::error::Result;
 use crate::scalar::{RefOps, Scalar};
@@ -64,7 +64,7 @@ where
         format!("b({t}) = {split}: the last point of the left piece, the first of the right"),
     );
     fig.note(
-        Some(CURVE),
+        None,
         format!("left(s) = b({t}·s), right(s) = b({t} + (1 − {t})·s) for 0 ≤ s ≤ 1"),
     );
     Ok(fig)
