@@ -242,6 +242,11 @@ fn bad_requests_are_clear_errors() {
     let mut r = FigureRequest::new(FigureKind::Net);
     r.iso = Some("1000".into());
     assert!(r.figure().is_err());
+    // bounded work: a degree beyond the figure limit is refused before anything is computed
+    let mut r = FigureRequest::new(FigureKind::Construction);
+    r.input = Some(vec!["0,0"; figure::MAX_FIGURE_DEGREE + 2].join("; "));
+    let e = r.figure().unwrap_err().to_string();
+    assert!(e.contains("degree in a figure") && e.contains("limit 64"), "{e}");
 }
 
 /// Rasterises the figure and checks that the pixels of the curve's colour are exactly where

@@ -13,6 +13,7 @@ pub fn construction<T: Scalar>(curve: &BezierCurve<T>, t: &T) -> Result<Figure>
 where
     for<'a> &'a T: RefOps<T>,
 {
+    super::check_figure_degree(curve.degree())?;
     let scheme = curve.scheme(t);
     let n = scheme.degree();
     let mut fig = Figure::new(format!("de Casteljau's construction of b({t}), degree {n}"));

@@ -24,6 +24,7 @@ where
             limit: MAX_FIGURE_ELEVATION.to_string(),
         });
     }
+    super::check_figure_degree(curve.degree())?;
     let n = curve.degree();
     let mut fig = Figure::new(format!(
         "Degree elevation r = {} converging to the curve (Theorem 1.2)",

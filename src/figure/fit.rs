@@ -14,6 +14,7 @@ pub fn fit<T: Scalar>(curve: &AnyCurve<T>) -> Result<Figure>
 where
     for<'a> &'a T: RefOps<T>,
 {
+    super::check_figure_degree(curve.points().len() - 1)?;
     let result = match curve {
         AnyCurve::Polynomial(c) => fit_cubic_to(c)?,
         AnyCurve::Rational(c) => fit_cubic_to(c)?,

@@ -15,6 +15,7 @@ pub fn hodograph<T: Scalar>(curve: &BezierCurve<T>) -> Result<Figure>
 where
     for<'a> &'a T: RefOps<T>,
 {
+    super::check_figure_degree(curve.degree())?;
     let n = curve.degree();
     if n == 0 {
         return Err(Error::Domain("a hodograph needs a curve of degree at least 1".into()));

@@ -15,6 +15,7 @@ pub fn hull<T: Scalar>(curve: &BezierCurve<T>, p: &Point<T>) -> Result<Figure>
 where
     for<'a> &'a T: RefOps<T>,
 {
+    super::check_figure_degree(curve.degree())?;
     let weights = curve.hull_weights(p)?;
     let mut fig = Figure::new(match &weights {
         Some(_) => format!("The convex hull contains {p}: its certificate weights"),

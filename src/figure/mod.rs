@@ -47,6 +47,23 @@ use crate::rational::RationalBezierCurve;
 use crate::scalar::{RefOps, Scalar};
 use crate::BezierCurve;
 
+/// The largest degree (of a curve, or of a net in either direction) a figure draws: the
+/// construction alone draws `(n + 1)(n + 2)/2` labelled points, and beyond this no figure is
+/// readable.
+pub const MAX_FIGURE_DEGREE: usize = 64;
+
+/// [`MAX_FIGURE_DEGREE`] as an error.
+pub(crate) fn check_figure_degree(degree: usize) -> Result<()> {
+    if degree > MAX_FIGURE_DEGREE {
+        return Err(Error::TooLarge {
+            what: "degree in a figure",
+            value: degree.to_string(),
+            limit: MAX_FIGURE_DEGREE.to_string(),
+        });
+    }
+    Ok(())
+}
+
 /// The fixed projection of space figures: the oblique (cabinet-like) view of textbooks, with
 /// the x axis towards the reader drawn down-left at a third of its length:
 /// `X = y − x/3`, `Y = z − x/3`. The map is exact, so projected curves and nets are exactly

@@ -25,6 +25,7 @@ where
             limit: MAX_ISO.to_string(),
         });
     }
+    super::check_figure_degree(surface.degrees().0.max(surface.degrees().1))?;
     let (m, n) = surface.degrees();
     let mut fig = Figure::new(format!("{title} (degree ({m}, {n}))"));
     let mut panel = Panel::new(if surface.dim() == 3 {

@@ -13,6 +13,7 @@ pub fn subdivision<T: Scalar>(curve: &BezierCurve<T>, t: &T) -> Result<Figure>
 where
     for<'a> &'a T: RefOps<T>,
 {
+    super::check_figure_degree(curve.degree())?;
     let (left, right) = curve.split_at(t);
     let n = curve.degree();
     let mut fig = Figure::new(format!("Subdivision at t = {t} (Lemma 1.3), degree {n}"));
