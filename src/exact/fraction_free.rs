@@ -112,8 +112,10 @@ impl Int for i128 {
         // g ≤ |den| ≤ 2^127; |num|/g and |den|/g fit u128, the sign goes separately.
         let (n, d) = (num.unsigned_abs() / g, den.unsigned_abs() / g);
         let negative = (num < 0) != (den < 0);
-        let n = if negative { -BigInt::from(n) } else { BigInt::from(n) };
-        BigRational::new_raw(n, BigInt::from(d))
+        // Through u64 when it fits: BigInt's u128 conversion builds its digits one by one.
+        let big = |x: u128| u64::try_from(x).map_or_else(|_| BigInt::from(x), BigInt::from);
+        let n = if negative { -big(n) } else { big(n) };
+        BigRational::new_raw(n, big(d))
     }
     fn into_big(self) -> BigInt {
         BigInt::from(self)
@@ -188,23 +190,30 @@ struct OverDenominator<I> {
 }
 
 /// Writes `values` over their least common denominator.
-fn common_denominator<'a, I: Int>(values: impl Iterator<Item = &'a BigRational> + Clone) -> Option<OverDenominator<I>> {
+fn common_denominator<'a, I: Int>(values: impl Iterator<Item = &'a BigRational>) -> Option<OverDenominator<I>> {
+    let mut nums = Vec::with_capacity(values.size_hint().0);
+    let mut dens = Vec::new();
     let mut den = I::one();
-    for v in values.clone() {
-        if !v.denom().is_one() {
-            den = den.lcm(&I::from_big(v.denom())?)?;
+    for (i, v) in values.enumerate() {
+        nums.push(I::from_big(v.numer())?);
+        // Denominators are positive; `bits() == 1` is the allocation-free test for 1.
+        if v.denom().bits() != 1 {
+            let d = I::from_big(v.denom())?;
+            den = den.lcm(&d)?;
+            dens.push((i, d));
         }
     }
-    let nums = values
-        .map(|v| {
-            let n = I::from_big(v.numer())?;
-            if v.denom().is_one() {
-                n.mul(&den)
-            } else {
-                n.mul(&den.div_exact(&I::from_big(v.denom())?))
-            }
-        })
-        .collect::<Option<Vec<I>>>()?;
+    if !dens.is_empty() {
+        // x = n/d becomes n (den/d); `dens` lists the d ≠ 1 in index order.
+        let mut others = dens.iter().peekable();
+        for (i, x) in nums.iter_mut().enumerate() {
+            let factor = match others.next_if(|(j, _)| *j == i) {
+                Some((_, d)) => den.div_exact(d),
+                None => den.clone(),
+            };
+            *x = x.mul(&factor)?;
+        }
+    }
     Some(OverDenominator { nums, den })
 }
 
@@ -259,7 +268,7 @@ fn point_over<I: Int>(nums: Vec<I>, den: &I) -> Point<BigRational> {
 }
 
 /// The flat control coordinates of a curve.
-fn coordinates(points: &[Point<BigRational>]) -> impl Iterator<Item = &BigRational> + Clone {
+fn coordinates(points: &[Point<BigRational>]) -> impl Iterator<Item = &BigRational> {
     points.iter().flat_map(|p| p.coords())
 }
 
