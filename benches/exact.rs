@@ -28,7 +28,7 @@ fn exact_eval(c: &mut Criterion) {
         .warm_up_time(Duration::from_millis(300));
     for n in [3usize, 10, 20, 50, 200] {
         let exact = curve(n);
-        let small = exact.try_map(|x| SmallRational::from_rational(x)).expect("exact");
+        let small = exact.try_map(SmallRational::from_rational).expect("exact");
         // The naive path at degree 200 takes about half a second per call: skip it there.
         if n <= 50 {
             group.bench_with_input(BenchmarkId::new("naive", n), &exact, |b, c| {

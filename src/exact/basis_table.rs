@@ -118,7 +118,24 @@ impl<K: Eq + Hash + Clone, V> Cache<K, V> {
 pub struct BernsteinTable {
     binomials: Cache<usize, Vec<BigInt>>,
     integer: Cache<(usize, i64), Vec<BigInt>>,
-    rational: Cache<(usize, BigRational), RationalBasisRow>,
+    rational: Cache<RationalKey, RationalBasisRow>,
+}
+
+/// The key of a rational row: degree and `t`, as words when they fit (no allocation and no
+/// continued-fraction hash of a [`BigRational`] per lookup).
+#[derive(Clone, PartialEq, Eq, Hash)]
+enum RationalKey {
+    Words(usize, i64, i64),
+    Big(usize, BigInt, BigInt),
+}
+
+impl RationalKey {
+    fn new(n: usize, t: &BigRational) -> Self {
+        match (i64::try_from(t.numer()), i64::try_from(t.denom())) {
+            (Ok(p), Ok(q)) => RationalKey::Words(n, p, q),
+            _ => RationalKey::Big(n, t.numer().clone(), t.denom().clone()),
+        }
+    }
 }
 
 impl Default for BernsteinTable {
@@ -219,7 +236,7 @@ impl BernsteinTable {
     pub fn at_rational(&self, n: usize, t: &BigRational) -> Result<Arc<RationalBasisRow>> {
         check_table_degree(n)?;
         let binomials = self.binomials(n)?;
-        Ok(self.rational.get_or(&(n, t.clone()), || {
+        Ok(self.rational.get_or(&RationalKey::new(n, t), || {
             let (p, q) = (t.numer(), t.denom());
             let numerators = bernstein_products(&binomials, p, &(q - p));
             let denominator = num_traits::pow(q.clone(), n);

@@ -33,7 +33,7 @@ use crate::surface::BezierSurface;
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
-use num_traits::{One, ToPrimitive, Zero};
+use num_traits::{ToPrimitive, Zero};
 
 /// The integers a kernel runs on: `i128` with checked arithmetic (`None` on overflow) or
 /// [`BigInt`] (never `None`).
@@ -217,6 +217,9 @@ fn common_denominator<'a, I: Int>(values: impl Iterator<Item = &'a BigRational>)
     Some(OverDenominator { nums, den })
 }
 
+/// Exact points, the output of the kernels.
+type Points = Vec<Point<BigRational>>;
+
 /// `(p, q, s = q − p)` for `t = p/q`.
 fn parameter<I: Int>(t: &BigRational) -> Option<(I, I, I)> {
     let p = I::from_big(t.numer())?;
@@ -349,10 +352,7 @@ fn casteljau_columns<I: Int>(
     Some(())
 }
 
-fn curve_split<I: Int>(
-    c: &BezierCurve<BigRational>,
-    t: &BigRational,
-) -> Option<(Vec<Point<BigRational>>, Vec<Point<BigRational>>)> {
+fn curve_split<I: Int>(c: &BezierCurve<BigRational>, t: &BigRational) -> Option<(Points, Points)> {
     let (n, dim) = (c.degree(), c.dim());
     let mut left = Vec::with_capacity(n + 1);
     let mut right = Vec::with_capacity(n + 1);
