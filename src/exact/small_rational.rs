@@ -537,6 +537,17 @@ mod tests {
             BigRational::new(BigInt::from(-1), BigInt::from(i64::MAX) * i64::MIN.unsigned_abs())
         );
         assert!(s(1, 2).checked_div(&SmallRational::from_int(0)).is_err());
+        let huge = SmallRational::from_i128_pair(i128::MIN, -1).unwrap();
+        assert!(huge.invariant_holds());
+        assert_eq!(huge.to_big(), BigRational::from_integer(BigInt::from(1) << 127));
+        assert_eq!(
+            SmallRational::from_i128_pair(i128::MIN, i128::MIN).unwrap(),
+            SmallRational::from_int(1)
+        );
+        assert_eq!(
+            SmallRational::from_i128_pair(i128::MIN, 2).unwrap().to_big(),
+            BigRational::from_integer(-(BigInt::from(1) << 126u32))
+        );
         assert_eq!(s(-4, -6).to_string(), "2/3");
     }
 }
