@@ -102,5 +102,75 @@ fn prove_hot(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, exact_eval, prove_hot);
+/// The nested kernel on big integers only (as at degree 200), num-bigint against dashu:
+/// the same loop, `acc ← s·acc + C(n,i) pⁱ x_i`, then one gcd per coordinate.
+macro_rules! nested_on_big {
+    ($name:ident, $Int:ty, $gcd:expr) => {
+        fn $name(x: &[$Int], dim: usize, p: &$Int, s: &$Int, den: &$Int) -> Vec<($Int, $Int)> {
+            let n = x.len() / dim - 1;
+            let mut acc: Vec<$Int> = x[..dim].to_vec();
+            let mut coefficient = <$Int>::from(1u8);
+            for i in 1..=n {
+                coefficient = coefficient * <$Int>::from((n - i + 1) as u64) / <$Int>::from(i as u64) * p;
+                for (a, xi) in acc.iter_mut().zip(&x[i * dim..(i + 1) * dim]) {
+                    *a *= s;
+                    *a += &coefficient * xi;
+                }
+            }
+            acc.into_iter()
+                .map(|a| {
+                    let g: $Int = $gcd(&a, den);
+                    (a / &g, den / &g)
+                })
+                .collect()
+        }
+    };
+}
+
+nested_on_big!(
+    nested_num_bigint,
+    casteljau::BigInt,
+    |a: &casteljau::BigInt, b: &casteljau::BigInt| { num_integer::Integer::gcd(a, b) }
+);
+nested_on_big!(
+    nested_dashu,
+    dashu_int::IBig,
+    |a: &dashu_int::IBig, b: &dashu_int::IBig| { dashu_int::IBig::from(dashu_int::ops::Gcd::gcd(a, b)) }
+);
+
+fn exact_backend(c: &mut Criterion) {
+    let mut group = c.benchmark_group("exact_backend");
+    group
+        .sample_size(10)
+        .measurement_time(Duration::from_secs(2))
+        .warm_up_time(Duration::from_millis(300));
+    for n in [50usize, 200] {
+        let coords: Vec<i64> = curve(n)
+            .points()
+            .iter()
+            .flat_map(|p| p.coords().iter().map(|x| i64::try_from(x.numer()).expect("small")))
+            .collect();
+        let den = num_traits::pow(casteljau::BigInt::from(3), n);
+        let x: Vec<casteljau::BigInt> = coords.iter().map(|&v| v.into()).collect();
+        let (p, s) = (casteljau::BigInt::from(1), casteljau::BigInt::from(2));
+        group.bench_with_input(BenchmarkId::new("num_bigint", n), &n, |b, _| {
+            b.iter(|| nested_num_bigint(black_box(&x), 2, &p, &s, &den))
+        });
+        let xd: Vec<dashu_int::IBig> = coords.iter().map(|&v| v.into()).collect();
+        let dend = dashu_int::IBig::from(3).pow(n);
+        let (pd, sd) = (dashu_int::IBig::from(1), dashu_int::IBig::from(2));
+        group.bench_with_input(BenchmarkId::new("dashu", n), &n, |b, _| {
+            b.iter(|| nested_dashu(black_box(&xd), 2, &pd, &sd, &dend))
+        });
+        // Same values from both backends.
+        let ours = nested_num_bigint(&x, 2, &p, &s, &den);
+        let theirs = nested_dashu(&xd, 2, &pd, &sd, &dend);
+        for ((a, b), (c, d)) in ours.iter().zip(&theirs) {
+            assert_eq!((a.to_string(), b.to_string()), (c.to_string(), d.to_string()));
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(benches, exact_eval, prove_hot, exact_backend);
 criterion_main!(benches);
