@@ -74,6 +74,15 @@ proptest! {
     }
 
     #[test]
+    fn ratios_of_words(p in word(), q in word()) {
+        match (SmallRational::from_ratio(p, q), BigRational::from_ratio(p, q)) {
+            (Ok(s), Ok(r)) => check(s, r)?,
+            (Err(_), Err(_)) => prop_assert_eq!(q, 0),
+            (s, r) => prop_assert!(false, "{:?} vs {:?}", s, r),
+        }
+    }
+
+    #[test]
     fn words_are_used_exactly_when_the_value_fits(a in value()) {
         let fits = i64::try_from(a.numer()).is_ok() && i64::try_from(a.denom()).is_ok();
         prop_assert_eq!(small(&a).is_small(), fits);

@@ -419,6 +419,10 @@ impl Scalar for SmallRational {
     fn from_rational(r: &BigRational) -> Result<Self> {
         Ok(SmallRational::from(r))
     }
+    fn from_ratio(p: i64, q: i64) -> Result<Self> {
+        // On words: the default goes through a BigRational.
+        SmallRational::from_i128_pair(p.into(), q.into())
+    }
     fn from_f64(x: f64) -> Result<Self> {
         BigRational::from_float(x)
             .map(SmallRational::from_big)
