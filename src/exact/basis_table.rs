@@ -7,7 +7,8 @@
 //! cached: a table is `Sync`, held across claims and read by parallel workers (a read lock
 //! per lookup; a row is computed outside any lock and shared as an [`Arc`]).
 //!
-//! Limits: a row's degree is at most [`MAX_TABLE_DEGREE`]; the table keeps at most
+//! Limits: a row's degree is at most [`MAX_TABLE_DEGREE`] and its estimated size at most
+//! [`MAX_ROW_BITS`] (larger requests are [`Error::TooLarge`]); the table keeps at most
 //! [`MAX_TABLE_BITS`] bits of integers and hands out rows computed beyond that budget
 //! without keeping them, so memory stays bounded whatever the claims ask.
 //!
@@ -35,6 +36,10 @@ use std::sync::{Arc, OnceLock, RwLock};
 
 /// Largest degree of a cached Bernstein row (the proof engine's exponent limit).
 pub const MAX_TABLE_DEGREE: usize = 4_096;
+
+/// Largest size of one row, estimated before computing it: `(n + 1)` entries of at most
+/// `n (1 + max(bits(a), bits(b)))` bits for `C(n,j) aʲ b^(n−j)` (64 MiB of integers).
+pub const MAX_ROW_BITS: u64 = 1 << 29;
 
 /// Largest number of integer bits a [`BernsteinTable`] keeps (32 MiB); rows computed past
 /// it are returned but not kept.
@@ -167,6 +172,20 @@ fn check_table_degree(n: usize) -> Result<()> {
     Ok(())
 }
 
+/// Checks the size estimate of a row `C(n,j) aʲ b^(n−j)` against [`MAX_ROW_BITS`].
+fn check_row_size(n: usize, a: &BigInt, b: &BigInt) -> Result<()> {
+    let n = n as u128;
+    let estimate = (n + 1) * n * (1 + a.bits().max(b.bits()) as u128);
+    if estimate > MAX_ROW_BITS as u128 {
+        return Err(Error::TooLarge {
+            what: "size of a Bernstein row (bits, estimated)",
+            value: estimate.to_string(),
+            limit: MAX_ROW_BITS.to_string(),
+        });
+    }
+    Ok(())
+}
+
 fn bits(row: &[BigInt]) -> u64 {
     row.iter().map(|x| x.bits() + 64).sum()
 }
@@ -219,9 +238,11 @@ impl BernsteinTable {
     /// `B_j^n(k) = C(n,j) kʲ (1−k)^(n−j)`, `j = 0..=n`: integers.
     pub fn at_integer(&self, n: usize, k: i64) -> Result<Arc<Vec<BigInt>>> {
         check_table_degree(n)?;
+        let (a, b) = (BigInt::from(k), BigInt::one() - k);
+        check_row_size(n, &a, &b)?;
         let binomials = self.binomials(n)?;
         Ok(self.integer.get_or(&(n, k), || {
-            let row = bernstein_products(&binomials, &BigInt::from(k), &(BigInt::one() - k));
+            let row = bernstein_products(&binomials, &a, &b);
             let b = bits(&row);
             (row, b)
         }))
@@ -235,10 +256,12 @@ impl BernsteinTable {
     /// `B_j^n(t)`, `j = 0..=n`, at a rational `t`, over the common denominator `qⁿ`.
     pub fn at_rational(&self, n: usize, t: &BigRational) -> Result<Arc<RationalBasisRow>> {
         check_table_degree(n)?;
+        let (p, q) = (t.numer(), t.denom());
+        let s = q - p;
+        check_row_size(n, p, &s)?;
         let binomials = self.binomials(n)?;
         Ok(self.rational.get_or(&RationalKey::new(n, t), || {
-            let (p, q) = (t.numer(), t.denom());
-            let numerators = bernstein_products(&binomials, p, &(q - p));
+            let numerators = bernstein_products(&binomials, p, &s);
             let denominator = num_traits::pow(q.clone(), n);
             let values = numerators
                 .iter()
