@@ -26,6 +26,7 @@
 pub mod bernstein;
 pub mod curve;
 pub mod error;
+pub mod exact;
 pub mod figure;
 pub mod fit;
 pub mod html;
@@ -69,6 +70,9 @@ pub use fit::{
 
 // --- verification (issue 6)
 pub use verify::{explain, prove_paths, ClaimOutcome, Report, Verdict};
+
+// --- exact arithmetic at integer speed (issue 12)
+pub use exact::{BernsteinTable, SmallRational};
 
 // --- end of re-exports
 

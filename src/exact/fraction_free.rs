@@ -1,0 +1,603 @@
+//! Fraction-free exact kernels: integers over one common denominator, one reduction at the end.
+//!
+//! The generic algorithms run on [`BigRational`] and reduce a fraction (a big-integer gcd) at
+//! every step. Here the control points are first written over one common denominator `D`, a
+//! parameter `t = p/q` stays the pair of integers `(p, q)`, and every step is integer
+//! arithmetic; each output coordinate is reduced once. The integers are machine words
+//! (`i128`, every operation overflow-checked) while they fit; on the first overflow the whole
+//! kernel runs again on [`BigInt`]. Results are the same values as the generic path, so they
+//! are compared with `==` against it in the tests.
+//!
+//! | kernel | here | generic reference |
+//! |---|---|---|
+//! | one point, O(n) nested Bernstein sum | [`BezierCurve::eval_nested`] | [`BezierCurve::eval`] |
+//! | derivative vector at `t` | [`BezierCurve::derivative_at_nested`] | [`BezierCurve::derivative_at`] |
+//! | de Casteljau triangle, subdivision | [`BezierCurve::scheme_fraction_free`], [`BezierCurve::split_fraction_free`] | [`BezierCurve::scheme`], [`BezierCurve::split_at`] |
+//! | degree elevation (7), (8) | [`BezierCurve::elevate_fraction_free`], [`BezierCurve::elevate_by_fraction_free`] | [`BezierCurve::elevate`], [`BezierCurve::elevate_by`] |
+//! | derivative curve | [`BezierCurve::derivative_fraction_free`] | [`BezierCurve::derivative`] |
+//! | rational curve point | [`RationalBezierCurve::eval_nested`] | [`RationalBezierCurve::eval`] |
+//! | surface point | [`BezierSurface::eval_nested`] | [`BezierSurface::eval`] |
+//!
+//! The nested evaluation (Volk–Schumaker, Horner in Bernstein form) of `t = p/q`, `s = q − p`:
+//! `qⁿ D b(t) = Σ_i C(n,i) pⁱ s^(n−i) (D b_i)`, accumulated as `acc ← s·acc + C(n,i) pⁱ (D b_i)`
+//! with the coefficient `C(n,i) pⁱ` carried along — `n` steps instead of de Casteljau's
+//! `n(n+1)/2`, and no gcd until the end. In exact arithmetic every algorithm gives the same
+//! value, so the cheapest one wins.
+
+use crate::curve::{BezierCurve, DeCasteljauScheme};
+use crate::error::{check_degree, Error, Result};
+use crate::exact::small_rational::gcd_u128;
+use crate::point::Point;
+use crate::rational::RationalBezierCurve;
+use crate::surface::BezierSurface;
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{ToPrimitive, Zero};
+
+/// The integers a kernel runs on: `i128` with checked arithmetic (`None` on overflow) or
+/// [`BigInt`] (never `None`).
+pub(crate) trait Int: Clone + Sized {
+    fn from_big(x: &BigInt) -> Option<Self>;
+    fn from_u64(x: u64) -> Self;
+    fn zero() -> Self {
+        Self::from_u64(0)
+    }
+    fn one() -> Self {
+        Self::from_u64(1)
+    }
+    fn is_zero(&self) -> bool;
+    fn add(&self, o: &Self) -> Option<Self>;
+    fn sub(&self, o: &Self) -> Option<Self>;
+    fn mul(&self, o: &Self) -> Option<Self>;
+    /// `self / o` for an `o` known to divide `self`.
+    fn div_exact(&self, o: &Self) -> Self;
+    /// The least common multiple of two positive integers.
+    fn lcm(&self, o: &Self) -> Option<Self>;
+    /// `self ← s·self + c·x`, the step of both the nested and the de Casteljau kernels.
+    fn step(&mut self, s: &Self, c: &Self, x: &Self) -> Option<()> {
+        *self = self.mul(s)?.add(&c.mul(x)?)?;
+        Some(())
+    }
+    /// The reduced rational `num / den`, `den ≠ 0`.
+    fn ratio(num: Self, den: Self) -> BigRational;
+    fn into_big(self) -> BigInt;
+}
+
+impl Int for i128 {
+    fn from_big(x: &BigInt) -> Option<Self> {
+        x.to_i128()
+    }
+    fn from_u64(x: u64) -> Self {
+        x as i128
+    }
+    fn is_zero(&self) -> bool {
+        *self == 0
+    }
+    #[inline]
+    fn add(&self, o: &Self) -> Option<Self> {
+        self.checked_add(*o)
+    }
+    #[inline]
+    fn sub(&self, o: &Self) -> Option<Self> {
+        self.checked_sub(*o)
+    }
+    #[inline]
+    fn mul(&self, o: &Self) -> Option<Self> {
+        // Products of two values below 2^63 in magnitude cannot overflow: skip the check.
+        if (*self as i64 as i128 == *self) && (*o as i64 as i128 == *o) {
+            Some(self * o)
+        } else {
+            self.checked_mul(*o)
+        }
+    }
+    fn div_exact(&self, o: &Self) -> Self {
+        // Small operands divide in one machine instruction instead of a 128-bit routine.
+        match (i64::try_from(*self), i64::try_from(*o)) {
+            (Ok(a), Ok(b)) if b != -1 => (a / b) as i128,
+            _ => self / o,
+        }
+    }
+    fn lcm(&self, o: &Self) -> Option<Self> {
+        let g = gcd_u128(self.unsigned_abs(), o.unsigned_abs()) as i128;
+        (self / g).checked_mul(*o)
+    }
+    #[inline]
+    fn step(&mut self, s: &Self, c: &Self, x: &Self) -> Option<()> {
+        *self = Int::mul(self, s)?.checked_add(Int::mul(c, x)?)?;
+        Some(())
+    }
+    fn ratio(num: Self, den: Self) -> BigRational {
+        let g = gcd_u128(num.unsigned_abs(), den.unsigned_abs());
+        // g ≤ |den| ≤ 2^127; |num|/g and |den|/g fit u128, the sign goes separately.
+        let (n, d) = (num.unsigned_abs() / g, den.unsigned_abs() / g);
+        let negative = (num < 0) != (den < 0);
+        // Through u64 when it fits: BigInt's u128 conversion builds its digits one by one.
+        let big = |x: u128| u64::try_from(x).map_or_else(|_| BigInt::from(x), BigInt::from);
+        let n = if negative { -big(n) } else { big(n) };
+        BigRational::new_raw(n, big(d))
+    }
+    fn into_big(self) -> BigInt {
+        BigInt::from(self)
+    }
+}
+
+impl Int for BigInt {
+    fn from_big(x: &BigInt) -> Option<Self> {
+        Some(x.clone())
+    }
+    fn from_u64(x: u64) -> Self {
+        BigInt::from(x)
+    }
+    fn is_zero(&self) -> bool {
+        Zero::is_zero(self)
+    }
+    fn add(&self, o: &Self) -> Option<Self> {
+        Some(self + o)
+    }
+    fn sub(&self, o: &Self) -> Option<Self> {
+        Some(self - o)
+    }
+    fn mul(&self, o: &Self) -> Option<Self> {
+        Some(self * o)
+    }
+    fn div_exact(&self, o: &Self) -> Self {
+        self / o
+    }
+    fn lcm(&self, o: &Self) -> Option<Self> {
+        Some(Integer::lcm(self, o))
+    }
+    fn step(&mut self, s: &Self, c: &Self, x: &Self) -> Option<()> {
+        // In place: one temporary for c·x instead of three fresh integers.
+        *self *= s;
+        *self += c * x;
+        Some(())
+    }
+    fn ratio(num: Self, den: Self) -> BigRational {
+        BigRational::new(num, den)
+    }
+    fn into_big(self) -> BigInt {
+        self
+    }
+}
+
+/// Runs `kernel` on machine words and, if they overflow, on big integers.
+fn words_then_big<R>(kernel: impl Fn(Tier) -> Option<R>) -> R {
+    kernel(Tier::Words).unwrap_or_else(|| kernel(Tier::Big).expect("big integers do not overflow"))
+}
+
+/// Which integers a kernel runs on (see [`words_then_big`]).
+#[derive(Clone, Copy)]
+enum Tier {
+    Words,
+    Big,
+}
+
+/// Calls the generic `$f::<i128>(args)` or `$f::<BigInt>(args)` for a tier.
+macro_rules! on_tier {
+    ($tier:expr, $f:ident ( $($arg:expr),* )) => {
+        match $tier {
+            Tier::Words => $f::<i128>($($arg),*),
+            Tier::Big => $f::<BigInt>($($arg),*),
+        }
+    };
+}
+
+/// Exact coordinates over one common denominator: `values[i] = nums[i] / den`, `den > 0`.
+struct OverDenominator<I> {
+    nums: Vec<I>,
+    den: I,
+}
+
+/// Writes `values` over their least common denominator.
+fn common_denominator<'a, I: Int>(values: impl Iterator<Item = &'a BigRational>) -> Option<OverDenominator<I>> {
+    let mut nums = Vec::with_capacity(values.size_hint().0);
+    let mut dens = Vec::new();
+    let mut den = I::one();
+    for (i, v) in values.enumerate() {
+        nums.push(I::from_big(v.numer())?);
+        // Denominators are positive; `bits() == 1` is the allocation-free test for 1.
+        if v.denom().bits() != 1 {
+            let d = I::from_big(v.denom())?;
+            den = den.lcm(&d)?;
+            dens.push((i, d));
+        }
+    }
+    if !dens.is_empty() {
+        // x = n/d becomes n (den/d); `dens` lists the d ≠ 1 in index order.
+        let mut others = dens.iter().peekable();
+        for (i, x) in nums.iter_mut().enumerate() {
+            let factor = match others.next_if(|(j, _)| *j == i) {
+                Some((_, d)) => den.div_exact(d),
+                None => den.clone(),
+            };
+            *x = x.mul(&factor)?;
+        }
+    }
+    Some(OverDenominator { nums, den })
+}
+
+/// Exact points, the output of the kernels.
+type Points = Vec<Point<BigRational>>;
+
+/// `(p, q, s = q − p)` for `t = p/q`.
+fn parameter<I: Int>(t: &BigRational) -> Option<(I, I, I)> {
+    let p = I::from_big(t.numer())?;
+    let q = I::from_big(t.denom())?;
+    let s = q.sub(&p)?;
+    Some((p, q, s))
+}
+
+/// `Σ_i C(n,i) pⁱ s^(n−i) x_i` for `n + 1` vectors of `dim` integers stored flat in `x`,
+/// by the nested (Horner) scheme; the result has `dim` integers.
+fn nested_sum<I: Int>(x: &[I], dim: usize, p: &I, s: &I) -> Option<Vec<I>> {
+    let n = x.len() / dim - 1;
+    let mut acc: Vec<I> = x[..dim].to_vec();
+    // coefficient = C(n, i) pⁱ, updated by C(n,i) = C(n,i−1) (n−i+1) / i before the factor p.
+    let mut coefficient = I::one();
+    for (i, row) in x.chunks_exact(dim).enumerate().skip(1) {
+        coefficient = coefficient
+            .mul(&I::from_u64((n - i + 1) as u64))?
+            .div_exact(&I::from_u64(i as u64))
+            .mul(p)?;
+        for (a, xi) in acc.iter_mut().zip(row) {
+            a.step(s, &coefficient, xi)?;
+        }
+    }
+    Some(acc)
+}
+
+/// `base^e`, checked.
+fn power<I: Int>(base: &I, e: usize) -> Option<I> {
+    let mut acc = I::one();
+    let mut b = base.clone();
+    let mut e = e;
+    while e > 0 {
+        if e & 1 == 1 {
+            acc = acc.mul(&b)?;
+        }
+        e >>= 1;
+        if e > 0 {
+            b = b.mul(&b)?;
+        }
+    }
+    Some(acc)
+}
+
+/// The point `nums / den` (one reduction per coordinate).
+fn point_over<I: Int>(nums: Vec<I>, den: &I) -> Point<BigRational> {
+    Point::new(nums.into_iter().map(|c| I::ratio(c, den.clone())).collect())
+        .expect("as many coordinates as a valid point")
+}
+
+/// The flat control coordinates of a curve.
+fn coordinates(points: &[Point<BigRational>]) -> impl Iterator<Item = &BigRational> {
+    points.iter().flat_map(|p| p.coords())
+}
+
+fn curve_eval<I: Int>(c: &BezierCurve<BigRational>, t: &BigRational) -> Option<Point<BigRational>> {
+    let (p, q, s) = parameter::<I>(t)?;
+    let x = common_denominator::<I>(coordinates(c.points()))?;
+    let acc = nested_sum(&x.nums, c.dim(), &p, &s)?;
+    let den = x.den.mul(&power(&q, c.degree())?)?;
+    Some(point_over(acc, &den))
+}
+
+/// The `k`-th forward differences of the flat vectors `x` (`dim` integers each).
+fn differences<I: Int>(mut x: Vec<I>, dim: usize, k: usize) -> Option<Vec<I>> {
+    for _ in 0..k {
+        for j in 0..x.len() - dim {
+            x[j] = x[j + dim].sub(&x[j])?;
+        }
+        x.truncate(x.len() - dim);
+    }
+    Some(x)
+}
+
+/// `n!/(n−k)!`.
+fn falling_factorial<I: Int>(n: usize, k: usize) -> Option<I> {
+    (n - k + 1..=n).try_fold(I::one(), |acc, m| acc.mul(&I::from_u64(m as u64)))
+}
+
+fn curve_derivative_at<I: Int>(c: &BezierCurve<BigRational>, k: usize, t: &BigRational) -> Option<Point<BigRational>> {
+    let (n, dim) = (c.degree(), c.dim());
+    let (p, q, s) = parameter::<I>(t)?;
+    let x = common_denominator::<I>(coordinates(c.points()))?;
+    let diffs = differences(x.nums, dim, k)?;
+    let factor = falling_factorial::<I>(n, k)?;
+    let acc = nested_sum(&diffs, dim, &p, &s)?
+        .iter()
+        .map(|a| a.mul(&factor))
+        .collect::<Option<Vec<_>>>()?;
+    let den = x.den.mul(&power(&q, n - k)?)?;
+    Some(point_over(acc, &den))
+}
+
+fn curve_derivative<I: Int>(c: &BezierCurve<BigRational>, k: usize) -> Option<Vec<Point<BigRational>>> {
+    let (n, dim) = (c.degree(), c.dim());
+    let x = common_denominator::<I>(coordinates(c.points()))?;
+    let factor = falling_factorial::<I>(n, k)?;
+    let diffs = differences(x.nums, dim, k)?;
+    diffs
+        .chunks_exact(dim)
+        .map(|d| {
+            let scaled = d.iter().map(|v| v.mul(&factor)).collect::<Option<Vec<_>>>()?;
+            Some(point_over(scaled, &x.den))
+        })
+        .collect()
+}
+
+/// The columns of the fraction-free de Casteljau triangle: calls `visit(r, column, den)` for
+/// `r = 0..=n`, where `column` holds the `n − r + 1` points `b_i^r(t)` as numerators over
+/// `den = D q^r`.
+fn casteljau_columns<I: Int>(
+    c: &BezierCurve<BigRational>,
+    t: &BigRational,
+    mut visit: impl FnMut(usize, &[I], &I),
+) -> Option<()> {
+    let (n, dim) = (c.degree(), c.dim());
+    let (p, q, s) = parameter::<I>(t)?;
+    let x = common_denominator::<I>(coordinates(c.points()))?;
+    let mut buf = x.nums;
+    let mut den = x.den;
+    visit(0, &buf, &den);
+    for r in 1..=n {
+        for j in 0..(n + 1 - r) * dim {
+            let next = buf[j + dim].clone();
+            buf[j].step(&s, &p, &next)?;
+        }
+        den = den.mul(&q)?;
+        visit(r, &buf[..(n + 1 - r) * dim], &den);
+    }
+    Some(())
+}
+
+fn curve_split<I: Int>(c: &BezierCurve<BigRational>, t: &BigRational) -> Option<(Points, Points)> {
+    let (n, dim) = (c.degree(), c.dim());
+    let mut left = Vec::with_capacity(n + 1);
+    let mut right = Vec::with_capacity(n + 1);
+    casteljau_columns::<I>(c, t, |r, column, den| {
+        left.push(point_over(column[..dim].to_vec(), den));
+        right.push(point_over(column[(n - r) * dim..].to_vec(), den));
+    })?;
+    right.reverse();
+    Some((left, right))
+}
+
+fn curve_scheme<I: Int>(c: &BezierCurve<BigRational>, t: &BigRational) -> Option<Vec<Vec<Point<BigRational>>>> {
+    let dim = c.dim();
+    let mut columns = Vec::with_capacity(c.degree() + 1);
+    casteljau_columns::<I>(c, t, |_, column, den| {
+        columns.push(column.chunks_exact(dim).map(|v| point_over(v.to_vec(), den)).collect());
+    })?;
+    Some(columns)
+}
+
+/// `C(m, 0), …, C(m, m)`, checked.
+fn binomials<I: Int>(m: usize) -> Option<Vec<I>> {
+    let mut row = Vec::with_capacity(m + 1);
+    let mut c = I::one();
+    row.push(c.clone());
+    for k in 0..m {
+        c = c
+            .mul(&I::from_u64((m - k) as u64))?
+            .div_exact(&I::from_u64(k as u64 + 1));
+        row.push(c.clone());
+    }
+    Some(row)
+}
+
+fn curve_elevate_by<I: Int>(c: &BezierCurve<BigRational>, r: usize) -> Option<Vec<Point<BigRational>>> {
+    let (n, dim) = (c.degree(), c.dim());
+    let x = common_denominator::<I>(coordinates(c.points()))?;
+    let (cn, cr, ct) = (binomials::<I>(n)?, binomials::<I>(r)?, binomials::<I>(n + r)?);
+    let mut out = Vec::with_capacity(n + r + 1);
+    for (i, total) in ct.iter().enumerate() {
+        // (8): b_i^(r) = Σ_j C(n,j) C(r,i−j) b_j / C(n+r,i), over D C(n+r,i).
+        let mut acc = vec![I::zero(); dim];
+        for j in i.saturating_sub(r)..=i.min(n) {
+            let w = cn[j].mul(&cr[i - j])?;
+            for (a, xj) in acc.iter_mut().zip(&x.nums[j * dim..(j + 1) * dim]) {
+                *a = a.add(&w.mul(xj)?)?;
+            }
+        }
+        out.push(point_over(acc, &x.den.mul(total)?));
+    }
+    Some(out)
+}
+
+fn curve_elevate<I: Int>(c: &BezierCurve<BigRational>) -> Option<Vec<Point<BigRational>>> {
+    let (n, dim) = (c.degree(), c.dim());
+    let x = common_denominator::<I>(coordinates(c.points()))?;
+    let n1 = I::from_u64(n as u64 + 1);
+    let den = x.den.mul(&n1)?;
+    let row = |j: usize| &x.nums[j * dim..(j + 1) * dim];
+    let mut out = Vec::with_capacity(n + 2);
+    for i in 0..=n + 1 {
+        // (7): b_i' = (i b_{i−1} + (n+1−i) b_i) / (n+1).
+        let coords = (0..dim)
+            .map(|k| {
+                let left = if i > 0 {
+                    row(i - 1)[k].mul(&I::from_u64(i as u64))?
+                } else {
+                    I::zero()
+                };
+                let right = if i <= n {
+                    row(i)[k].mul(&I::from_u64((n + 1 - i) as u64))?
+                } else {
+                    I::zero()
+                };
+                left.add(&right)
+            })
+            .collect::<Option<Vec<_>>>()?;
+        out.push(point_over(coords, &den));
+    }
+    Some(out)
+}
+
+/// Homogeneous coordinates `(w_i b_i, w_i)` as integers over one denominator: the points
+/// over `D1`, the weights over `D2`, so `(W_i B_i, W_i D1)` is `(w_i b_i, w_i)` times `D1 D2`.
+fn homogeneous<I: Int>(c: &RationalBezierCurve<BigRational>) -> Option<Vec<I>> {
+    let dim = c.dim();
+    let points = common_denominator::<I>(coordinates(c.points()))?;
+    let weights = common_denominator::<I>(c.weights().iter())?;
+    let mut h = Vec::with_capacity(c.weights().len() * (dim + 1));
+    for (b, w) in points.nums.chunks_exact(dim).zip(&weights.nums) {
+        for x in b {
+            h.push(x.mul(w)?);
+        }
+        h.push(w.mul(&points.den)?);
+    }
+    Some(h)
+}
+
+fn rational_eval<I: Int>(c: &RationalBezierCurve<BigRational>, t: &BigRational) -> Option<Result<Point<BigRational>>> {
+    let (p, _, s) = parameter::<I>(t)?;
+    let h = homogeneous::<I>(c)?;
+    let mut acc = nested_sum(&h, c.dim() + 1, &p, &s)?;
+    // Both the common denominators and qⁿ cancel in the projection x = X / W.
+    let w = acc.pop().expect("dim + 1 ≥ 2 homogeneous coordinates");
+    if w.is_zero() {
+        return Some(Err(Error::DivisionByZero(format!(
+            "the denominator w(t) = Σ w_i B_i(t) of the rational curve vanishes at t = {t}, where the curve has no point"
+        ))));
+    }
+    Some(Ok(point_over(acc, &w)))
+}
+
+fn surface_eval<I: Int>(
+    sf: &BezierSurface<BigRational>,
+    u: &BigRational,
+    v: &BigRational,
+) -> Option<Point<BigRational>> {
+    let (m, n) = sf.degrees();
+    let dim = sf.dim();
+    let (pu, qu, su) = parameter::<I>(u)?;
+    let (pv, qv, sv) = parameter::<I>(v)?;
+    let x = common_denominator::<I>(sf.net().iter().flatten().flat_map(|p| p.coords()))?;
+    // Each row b_{i,·} at v (over D q_v^n), then the curve of those points at u.
+    let row_len = (n + 1) * dim;
+    let mut rows = Vec::with_capacity((m + 1) * dim);
+    for row in x.nums.chunks_exact(row_len) {
+        rows.extend(nested_sum(row, dim, &pv, &sv)?);
+    }
+    let acc = nested_sum(&rows, dim, &pu, &su)?;
+    let den = x.den.mul(&power(&qv, n)?)?.mul(&power(&qu, m)?)?;
+    Some(point_over(acc, &den))
+}
+
+impl BezierCurve<BigRational> {
+    /// `b(t)` exactly by the nested (Horner) Bernstein sum over integers: the same value as
+    /// [`BezierCurve::eval`], in `n` steps on machine words while they fit (see the
+    /// [module documentation](self)).
+    ///
+    /// ```
+    /// use casteljau::{BezierCurve, BigRational, Scalar};
+    /// let c: BezierCurve<BigRational> = BezierCurve::from_ints(&[&[0, 0], &[1, 2], &[3, 2], &[4, 0]]).unwrap();
+    /// let t = BigRational::from_ratio(-1, 3).unwrap();
+    /// assert_eq!(c.eval_nested(&t), c.eval(&t));
+    /// ```
+    pub fn eval_nested(&self, t: &BigRational) -> Point<BigRational> {
+        words_then_big(|tier| on_tier!(tier, curve_eval(self, t)))
+    }
+
+    /// The `k`-th derivative vector at `t` (zero when `k` exceeds the degree), by forward
+    /// differences and the nested sum over integers; equals [`BezierCurve::derivative_at`].
+    pub fn derivative_at_nested(&self, k: usize, t: &BigRational) -> Point<BigRational> {
+        if k > self.degree() {
+            return Point::origin(self.dim());
+        }
+        words_then_big(|tier| on_tier!(tier, curve_derivative_at(self, k, t)))
+    }
+
+    /// The `k`-th derivative curve over integers; equals [`BezierCurve::derivative`] (and
+    /// `k > n` is the same error).
+    pub fn derivative_fraction_free(&self, k: usize) -> Result<Self> {
+        if k > self.degree() {
+            return Err(Error::DerivativeOrder {
+                order: k,
+                degree: self.degree(),
+            });
+        }
+        BezierCurve::new(words_then_big(|tier| on_tier!(tier, curve_derivative(self, k))))
+    }
+
+    /// The de Casteljau triangle (9) at `t` over integers; equals [`BezierCurve::scheme`].
+    pub fn scheme_fraction_free(&self, t: &BigRational) -> DeCasteljauScheme<BigRational> {
+        DeCasteljauScheme {
+            t: t.clone(),
+            columns: words_then_big(|tier| on_tier!(tier, curve_scheme(self, t))),
+        }
+    }
+
+    /// Subdivision at `t0` over integers; equals [`BezierCurve::split_at`].
+    pub fn split_fraction_free(&self, t0: &BigRational) -> (Self, Self) {
+        let (left, right) = words_then_big(|tier| on_tier!(tier, curve_split(self, t0)));
+        let valid = "the points of a valid curve's scheme";
+        (
+            BezierCurve::new(left).expect(valid),
+            BezierCurve::new(right).expect(valid),
+        )
+    }
+
+    /// One degree elevation step (7) over integers; equals [`BezierCurve::elevate`].
+    pub fn elevate_fraction_free(&self) -> Result<Self> {
+        check_degree("degree after elevation", self.degree() as u128 + 1)?;
+        BezierCurve::new(words_then_big(|tier| on_tier!(tier, curve_elevate(self))))
+    }
+
+    /// `r` elevation steps by the closed form (8) over integers; equals
+    /// [`BezierCurve::elevate_by`].
+    pub fn elevate_by_fraction_free(&self, r: usize) -> Result<Self> {
+        check_degree("degree after elevation", self.degree() as u128 + r as u128)?;
+        BezierCurve::new(words_then_big(|tier| on_tier!(tier, curve_elevate_by(self, r))))
+    }
+}
+
+impl RationalBezierCurve<BigRational> {
+    /// `x(t)` by the nested sum on the homogeneous points over integers (their common
+    /// denominator cancels in the projection); equals [`RationalBezierCurve::eval`], and a
+    /// vanishing denominator `w(t) = 0` is the same error.
+    ///
+    /// ```
+    /// use casteljau::{BigRational, RationalBezierCurve, Scalar};
+    /// let arc = RationalBezierCurve::<BigRational>::from_ints(&[&[1, 0], &[1, 1], &[0, 1]], &[1, 1, 2]).unwrap();
+    /// let t = BigRational::from_ratio(2, 5).unwrap();
+    /// assert_eq!(arc.eval_nested(&t).unwrap(), arc.eval(&t).unwrap());
+    /// ```
+    pub fn eval_nested(&self, t: &BigRational) -> Result<Point<BigRational>> {
+        words_then_big(|tier| on_tier!(tier, rational_eval(self, t)))
+    }
+}
+
+impl BezierSurface<BigRational> {
+    /// `b(u, v)` by nested sums over integers, rows at `v` then the column at `u`, one
+    /// reduction per coordinate; equals [`BezierSurface::eval`].
+    pub fn eval_nested(&self, u: &BigRational, v: &BigRational) -> Point<BigRational> {
+        words_then_big(|tier| on_tier!(tier, surface_eval(self, u, v)))
+    }
+}
+
+/// `Σ_i C(n,i) pⁱ (q−p)^(n−i) x_i` for integer `x_0..x_n` and `t = p/q`, exactly: the
+/// numerator of `Σ x_i B_i^n(t)` over `qⁿ`. On machine words while they fit.
+///
+/// ```
+/// use casteljau::exact::fraction_free::bernstein_numerator;
+/// use casteljau::BigInt;
+/// // at t = 2 (p = 2, q = 1): Σ x_i B_i^2(2) = 1·1 + 0·(−4) + 1·4
+/// let x: Vec<BigInt> = [1, 0, 1].into_iter().map(BigInt::from).collect();
+/// assert_eq!(bernstein_numerator(&x, &2.into(), &1.into()), BigInt::from(5));
+/// ```
+pub fn bernstein_numerator(x: &[BigInt], p: &BigInt, q: &BigInt) -> BigInt {
+    if x.is_empty() {
+        return <BigInt as Zero>::zero();
+    }
+    fn run<I: Int>(x: &[BigInt], p: &BigInt, q: &BigInt) -> Option<BigInt> {
+        let xs = x.iter().map(I::from_big).collect::<Option<Vec<I>>>()?;
+        let (p, q) = (I::from_big(p)?, I::from_big(q)?);
+        let s = q.sub(&p)?;
+        let acc = nested_sum(&xs, 1, &p, &s)?.pop()?;
+        Some(acc.into_big())
+    }
+    words_then_big(|tier| on_tier!(tier, run(x, p, q)))
+}

@@ -1,0 +1,17 @@
+//! Exact arithmetic at integer speed: what runs inside the exact hot loops.
+//!
+//! [`BigRational`](num_rational::BigRational) is the exact type users exchange; inside, the
+//! cheapest representation wins, chosen by measurement (`benches/exact.rs`):
+//! - [`small_rational`]: [`SmallRational`], an exact [`Scalar`](crate::Scalar) on machine
+//!   words that moves to big integers only when a value does not fit;
+//! - [`fraction_free`]: eval, derivatives, scheme, split, elevation, rational curves and
+//!   surfaces over integers with one common denominator and one reduction at the end;
+//! - [`basis_table`]: [`BernsteinTable`], Bernstein rows at integer and rational parameters,
+//!   computed once and shared across threads.
+
+pub mod basis_table;
+pub mod fraction_free;
+pub mod small_rational;
+
+pub use basis_table::{BernsteinTable, RationalBasisRow};
+pub use small_rational::SmallRational;
