@@ -626,6 +626,7 @@ enum Topic {
     Hodograph,
     Hull,
     Fit,
+    Conics,
 }
 
 fn topic(c: &Claim) -> Option<Topic> {
@@ -646,6 +647,13 @@ fn topic(c: &Claim) -> Option<Topic> {
         .is_some_and(|v| v.contains_key("d0") && v.contains_key("d1"));
     if tangents || c.polygon.as_ref().is_some_and(|p| p.name == "a") {
         return Some(Topic::Fit);
+    }
+    // text 001's notation: a symbolic middle weight w1 of a rational quadratic
+    if c.symbols
+        .as_ref()
+        .is_some_and(|s| s.iter().any(|x| x == "w1" || x == "w"))
+    {
+        return Some(Topic::Conics);
     }
     c.polygon.as_ref()?;
     // statements about a symbolic polygon: the section of the text they come from
@@ -674,6 +682,14 @@ fn illustrate(t: Topic) -> Result<Figure> {
         Topic::Elevation => figure::elevation(&c, &[1, 2, 4, 8, 16]),
         Topic::Hodograph => figure::hodograph(&c),
         Topic::Hull => figure::hull(&c, &c.eval(&q(1, 3))),
+        Topic::Conics => {
+            let rows = crate::input::parse_points(figure::DEFAULT_CONIC_POLYGON)?;
+            let pts = rows
+                .iter()
+                .map(|p| p.try_map(|x| Ok(Q::rational(x.clone()))))
+                .collect::<Result<Vec<_>>>()?;
+            figure::conics(&pts, &q(1, 1), &q(1, 1), &[q(1, 2), q(1, 1), q(2, 1)])
+        }
         Topic::Fit => {
             let rows = crate::input::parse_points(figure::DEFAULT_FIT_CURVE)?;
             let pts = rows
@@ -786,10 +802,10 @@ pub fn claim_figure(c: &Claim) -> Result<Option<ClaimFigure>> {
         }
     }
     if let Some(t) = topic(c) {
-        let caption = if t == Topic::Fit {
-            "illustration of text 004's method on our worked example x(t) = (t, 1 + t², t⁴)"
-        } else {
-            ON_EXAMPLE
+        let caption = match t {
+            Topic::Fit => "illustration of text 004's method on our worked example x(t) = (t, 1 + t², t⁴)",
+            Topic::Conics => "illustration on the control polygon of text 001's Ex. 3 and Ex. 4, w₀ = w₂ = 1",
+            _ => ON_EXAMPLE,
         };
         return Ok(Some(ClaimFigure {
             figure: illustrate(t)?,
