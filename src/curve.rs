@@ -87,6 +87,15 @@ pub struct ElevationDistance<T> {
     pub max_squared: T,
 }
 
+/// A copy of `points`; a cubic's four are written at once rather than pushed one by one.
+#[inline(always)]
+fn copy_points<P: Clone>(points: &[P]) -> SmallVec<[P; INLINE_POINTS]> {
+    match points {
+        [a, b, c, d] => SmallVec::from_buf([a.clone(), b.clone(), c.clone(), d.clone()]),
+        _ => points.iter().cloned().collect(),
+    }
+}
+
 /// Checks that `points` is non-empty and of one dimension; returns that dimension.
 pub(crate) fn common_dim<P: VectorSpace>(points: &[P], what: &'static str) -> Result<usize> {
     let first = points.first().ok_or(Error::Empty(what))?;
@@ -167,6 +176,15 @@ where
         let n = self.degree();
         check_degree("degree after elevation", n as u128 + 1)?;
         let n1 = T::from_usize(n + 1);
+        if let [b0, b1, b2] = &self.points[..] {
+            // Quadratic to cubic: the four points written at once, by the same steps.
+            let three = T::from_usize(3);
+            let (a1, a2) = (T::one().checked_div(&three)?, T::from_usize(2).checked_div(&three)?);
+            let points = [b0.clone(), b1.lerp_to(b0, &a1), b2.lerp_to(b1, &a2), b2.clone()];
+            return Ok(Bezier {
+                points: SmallVec::from_buf(points),
+            });
+        }
         let mut out = SmallVec::with_capacity(n + 2);
         out.push(self.points[0].clone());
         for i in 1..=n {
@@ -224,10 +242,13 @@ where
     pub fn split_at(&self, t0: &T) -> (Self, Self) {
         // In place, level by level, the column ends as b_0^n, b_1^{n-1}, …, b_n^0: the right
         // boundary of the scheme; the left one is its first point after each level.
-        let mut right = self.points.clone();
-        let mut left = SmallVec::with_capacity(right.len());
-        left.push(right[0].clone());
-        de_casteljau(&mut right, t0, |level| left.push(level[0].clone()));
+        let mut right = copy_points(&self.points);
+        let mut left = copy_points(&self.points);
+        let mut r = 0;
+        de_casteljau(&mut right, t0, |level| {
+            r += 1;
+            left[r] = level[0].clone();
+        });
         (Bezier { points: left }, Bezier { points: right })
     }
 

@@ -6,7 +6,6 @@
 //! buffer on the stack for the polygons met in practice.
 
 use crate::space::VectorSpace;
-use smallvec::SmallVec;
 
 /// Points kept on the stack by [`with_column`]; longer polygons use one heap buffer.
 pub const STACK_POINTS: usize = 24;
@@ -15,11 +14,9 @@ pub const STACK_POINTS: usize = 24;
 /// for every `i` but the last, which is left as it was.
 #[inline(always)]
 pub fn casteljau_step<P: VectorSpace>(column: &mut [P], t: &P::Scalar) {
-    let mut rest = column;
-    while let [first, tail @ ..] = rest {
-        let Some(next) = tail.first() else { break };
-        first.lerp_assign(next, t);
-        rest = tail;
+    for i in 1..column.len() {
+        let (done, rest) = column.split_at_mut(i);
+        done[i - 1].lerp_assign(&rest[0], t);
     }
 }
 
@@ -34,23 +31,25 @@ pub fn de_casteljau<P: VectorSpace>(column: &mut [P], t: &P::Scalar, mut each_le
     }
 }
 
-/// Runs `f` on a mutable copy of `points`, on the stack for up to [`STACK_POINTS`] points
-/// (in an array of the exact length up to four, so a cubic's loops unroll).
+/// Runs `f` on a mutable copy of `points`, on the stack for up to [`STACK_POINTS`] points:
+/// in an array of the exact length up to four (so a cubic's loops unroll), else in an array
+/// of 8, 16 or 24 whose tail repeats the last point (at most twice the points needed).
 #[inline(always)]
 pub fn with_column<P: Clone, R>(points: &[P], f: impl FnOnce(&mut [P]) -> R) -> R {
     #[inline(always)]
     fn fixed<P: Clone, R, const N: usize>(points: &[P], f: impl FnOnce(&mut [P]) -> R) -> R {
-        let mut column: [P; N] = std::array::from_fn(|i| points[i].clone());
-        f(&mut column)
+        let last = points.len() - 1;
+        let mut column: [P; N] = std::array::from_fn(|i| points[i.min(last)].clone());
+        f(&mut column[..=last])
     }
     match points.len() {
         1 => fixed::<P, R, 1>(points, f),
         2 => fixed::<P, R, 2>(points, f),
         3 => fixed::<P, R, 3>(points, f),
         4 => fixed::<P, R, 4>(points, f),
-        _ => {
-            let mut column: SmallVec<[P; STACK_POINTS]> = points.iter().cloned().collect();
-            f(&mut column)
-        }
+        5..=8 => fixed::<P, R, 8>(points, f),
+        9..=16 => fixed::<P, R, 16>(points, f),
+        17..=STACK_POINTS => fixed::<P, R, STACK_POINTS>(points, f),
+        _ => f(&mut points.to_vec()),
     }
 }
