@@ -537,15 +537,21 @@ impl BezierCurve<f64> {
                 context: "eval_array: the array size must be the curve's dimension".into(),
             });
         }
-        let fixed: SmallVec<[PointN<f64, D>; crate::kernel::STACK_POINTS]> = self
-            .points
-            .iter()
-            .map(|p| PointN(std::array::from_fn(|k| p.coords()[k])))
-            .collect();
-        Ok(with_column(&fixed, |column| {
+        let len = self.points.len();
+        let point = |i: usize| PointN(std::array::from_fn(|k| self.points[i.min(len - 1)].coords()[k]));
+        let eval = |column: &mut [PointN<f64, D>]| {
             de_casteljau(column, &t, |_| {});
             column[0].0
-        }))
+        };
+        // Cubics and below get a small buffer: filling the large one would cost as much as
+        // the work.
+        Ok(if len <= 4 {
+            eval(&mut std::array::from_fn::<_, 4, _>(point)[..len])
+        } else if len <= crate::kernel::STACK_POINTS {
+            eval(&mut std::array::from_fn::<_, { crate::kernel::STACK_POINTS }, _>(point)[..len])
+        } else {
+            eval(&mut (0..len).map(point).collect::<Vec<_>>())
+        })
     }
 }
 
