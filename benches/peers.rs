@@ -41,8 +41,9 @@ fn array_casteljau(points: &[[f64; 2]; 21], t: f64) -> [f64; 2] {
     let mut b = *points;
     for len in (1..21).rev() {
         for i in 0..len {
-            for k in 0..2 {
-                b[i][k] += t * (b[i + 1][k] - b[i][k]);
+            let next = b[i + 1];
+            for (a, c) in b[i].iter_mut().zip(next) {
+                *a += t * (c - *a);
             }
         }
     }

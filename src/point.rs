@@ -34,18 +34,6 @@ const INLINE_COORDS: usize = 4;
 /// assert_eq!(p.to_string().parse::<Point<BigRational>>().unwrap(), p);
 /// ```
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize),
-    serde(
-        into = "Vec<T>",
-        try_from = "Vec<T>",
-        bound(
-            serialize = "T: Scalar + serde::Serialize",
-            deserialize = "T: Scalar + serde::Deserialize<'de>"
-        )
-    )
-)]
 pub struct Point<T> {
     coords: SmallVec<[T; INLINE_COORDS]>,
 }
@@ -324,6 +312,24 @@ where
     type Err = Error;
     fn from_str(s: &str) -> Result<Self> {
         Point::new(parse_tuple(s)?)
+    }
+}
+
+#[cfg(feature = "serde")]
+impl<T: serde::Serialize> serde::Serialize for Point<T> {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
+        serializer.collect_seq(&self.coords)
+    }
+}
+
+/// A list of coordinates, checked as [`Point::new`] checks it.
+#[cfg(feature = "serde")]
+impl<'de, T: Scalar + serde::Deserialize<'de>> serde::Deserialize<'de> for Point<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> std::result::Result<Self, D::Error> {
+        Point::new(Vec::<T>::deserialize(deserializer)?).map_err(serde::de::Error::custom)
     }
 }
 

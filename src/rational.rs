@@ -902,6 +902,91 @@ where
     conic.normalized()
 }
 
+impl<T: Scalar> crate::param::ParamCurve for RationalBezierCurve<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    type Scalar = T;
+    type Point = Point<T>;
+
+    fn eval(&self, t: &T) -> Result<Point<T>> {
+        RationalBezierCurve::eval(self, t)
+    }
+    fn split_at(&self, t0: &T) -> Result<(Self, Self)> {
+        RationalBezierCurve::split_at(self, t0)
+    }
+    fn degree(&self) -> usize {
+        RationalBezierCurve::degree(self)
+    }
+}
+
+/// The derivative of a rational curve of degree `n` is rational of degree `2n`:
+/// `ẋ = (Ẋ W − X Ẇ) / W²` with `(X, W)` the homogeneous form.
+impl<T: Scalar> crate::param::ParamCurveDeriv for RationalBezierCurve<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    type Deriv = Self;
+
+    /// An error when a Bernstein coefficient of `W²` vanishes where the numerator's does not
+    /// (a control point at infinity, see [`RationalBezierCurve::from_homogeneous`]).
+    fn deriv(&self) -> Result<Self> {
+        let n = self.degree();
+        let dim = self.dim();
+        if n == 0 {
+            return Self::new(vec![Point::origin(dim)], vec![T::one()]);
+        }
+        let h = self.homogeneous.points();
+        let x: Vec<Point<T>> = h
+            .iter()
+            .map(|p| Point::from_valid(p.coords()[..dim].iter().cloned()))
+            .collect();
+        let w: Vec<T> = h.iter().map(|p| p.coords()[dim].clone()).collect();
+        let nn = T::from_usize(n);
+        let dx: Vec<Point<T>> = x.windows(2).map(|p| p[1].sub(&p[0]).scale(&nn)).collect();
+        let dw: Vec<T> = w.windows(2).map(|p| &nn * &(&p[1] - &p[0])).collect();
+        // Ẋ W − X Ẇ has degree 2n − 1; one elevation brings it to W²'s degree 2n.
+        let first = bernstein_product(&dx, &w)?;
+        let second = bernstein_product(&x, &dw)?;
+        let numerator: Vec<Point<T>> = first.iter().zip(&second).map(|(a, b)| a.sub(b)).collect();
+        let numerator = BezierCurve::new(numerator)?.elevate()?;
+        let w_points: Vec<Point<T>> = w.iter().map(|c| Point::from_valid([c.clone()])).collect();
+        let denominator = bernstein_product(&w_points, &w)?;
+        let lifted = numerator
+            .points()
+            .iter()
+            .zip(&denominator)
+            .map(|(a, d)| Point::from_valid(a.coords().iter().chain(d.coords()).cloned()))
+            .collect();
+        Self::from_homogeneous_owned(BezierCurve::new(lifted)?)
+    }
+
+    fn deriv_at(&self, t: &T) -> Result<Point<T>> {
+        self.derivative_at(t)
+    }
+}
+
+/// The Bernstein coefficients of the product of `Σ a_i B_i^m` and `Σ b_j B_j^p`:
+/// `c_k = Σ_{i+j=k} C(m,i) C(p,j) / C(m+p,k) b_j a_i`.
+fn bernstein_product<T: Scalar>(a: &[Point<T>], b: &[T]) -> Result<Vec<Point<T>>>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    let (m, p) = (a.len() - 1, b.len() - 1);
+    let (cm, cp, cmp) = (binomial_row(m), binomial_row(p), binomial_row(m + p));
+    (0..=m + p)
+        .map(|k| {
+            let mut acc = Point::origin(a[0].dim());
+            for i in k.saturating_sub(p)..=k.min(m) {
+                let j = k - i;
+                let c = T::from_rational(&BigRational::new(&cm[i] * &cp[j], cmp[k].clone()))?;
+                acc.add_scaled_assign(&(&c * &b[j]), &a[i]);
+            }
+            Ok(acc)
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -991,89 +1076,4 @@ mod tests {
         ]);
         assert_eq!(k.to_string(), "x^2 + (1 - sqrt(2))*y^2 - sqrt(2) = 0");
     }
-}
-
-impl<T: Scalar> crate::param::ParamCurve for RationalBezierCurve<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
-    type Scalar = T;
-    type Point = Point<T>;
-
-    fn eval(&self, t: &T) -> Result<Point<T>> {
-        RationalBezierCurve::eval(self, t)
-    }
-    fn split_at(&self, t0: &T) -> Result<(Self, Self)> {
-        RationalBezierCurve::split_at(self, t0)
-    }
-    fn degree(&self) -> usize {
-        RationalBezierCurve::degree(self)
-    }
-}
-
-/// The derivative of a rational curve of degree `n` is rational of degree `2n`:
-/// `ẋ = (Ẋ W − X Ẇ) / W²` with `(X, W)` the homogeneous form.
-impl<T: Scalar> crate::param::ParamCurveDeriv for RationalBezierCurve<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
-    type Deriv = Self;
-
-    /// An error when a Bernstein coefficient of `W²` vanishes where the numerator's does not
-    /// (a control point at infinity, see [`RationalBezierCurve::from_homogeneous`]).
-    fn deriv(&self) -> Result<Self> {
-        let n = self.degree();
-        let dim = self.dim();
-        if n == 0 {
-            return Self::new(vec![Point::origin(dim)], vec![T::one()]);
-        }
-        let h = self.homogeneous.points();
-        let x: Vec<Point<T>> = h
-            .iter()
-            .map(|p| Point::from_valid(p.coords()[..dim].iter().cloned()))
-            .collect();
-        let w: Vec<T> = h.iter().map(|p| p.coords()[dim].clone()).collect();
-        let nn = T::from_usize(n);
-        let dx: Vec<Point<T>> = x.windows(2).map(|p| p[1].sub(&p[0]).scale(&nn)).collect();
-        let dw: Vec<T> = w.windows(2).map(|p| &nn * &(&p[1] - &p[0])).collect();
-        // Ẋ W − X Ẇ has degree 2n − 1; one elevation brings it to W²'s degree 2n.
-        let first = bernstein_product(&dx, &w)?;
-        let second = bernstein_product(&x, &dw)?;
-        let numerator: Vec<Point<T>> = first.iter().zip(&second).map(|(a, b)| a.sub(b)).collect();
-        let numerator = BezierCurve::new(numerator)?.elevate()?;
-        let w_points: Vec<Point<T>> = w.iter().map(|c| Point::from_valid([c.clone()])).collect();
-        let denominator = bernstein_product(&w_points, &w)?;
-        let lifted = numerator
-            .points()
-            .iter()
-            .zip(&denominator)
-            .map(|(a, d)| Point::from_valid(a.coords().iter().chain(d.coords()).cloned()))
-            .collect();
-        Self::from_homogeneous_owned(BezierCurve::new(lifted)?)
-    }
-
-    fn deriv_at(&self, t: &T) -> Result<Point<T>> {
-        self.derivative_at(t)
-    }
-}
-
-/// The Bernstein coefficients of the product of `Σ a_i B_i^m` and `Σ b_j B_j^p`:
-/// `c_k = Σ_{i+j=k} C(m,i) C(p,j) / C(m+p,k) b_j a_i`.
-fn bernstein_product<T: Scalar>(a: &[Point<T>], b: &[T]) -> Result<Vec<Point<T>>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
-    let (m, p) = (a.len() - 1, b.len() - 1);
-    let (cm, cp, cmp) = (binomial_row(m), binomial_row(p), binomial_row(m + p));
-    (0..=m + p)
-        .map(|k| {
-            let mut acc = Point::origin(a[0].dim());
-            for i in k.saturating_sub(p)..=k.min(m) {
-                let j = k - i;
-                let c = T::from_rational(&BigRational::new(&cm[i] * &cp[j], cmp[k].clone()))?;
-                acc.add_scaled_assign(&(&c * &b[j]), &a[i]);
-            }
-            Ok(acc)
-        })
-        .collect()
 }
