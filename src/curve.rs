@@ -173,9 +173,6 @@ where
     /// One step of degree elevation (7): the same curve with `n + 2` control points.
     #[inline]
     pub fn elevate(&self) -> Result<Self> {
-        let n = self.degree();
-        check_degree("degree after elevation", n as u128 + 1)?;
-        let n1 = T::from_usize(n + 1);
         if let [b0, b1, b2] = &self.points[..] {
             // Quadratic to cubic: the four points written at once, by the same steps.
             let three = T::from_usize(3);
@@ -185,6 +182,9 @@ where
                 points: SmallVec::from_buf(points),
             });
         }
+        let n = self.degree();
+        check_degree("degree after elevation", n as u128 + 1)?;
+        let n1 = T::from_usize(n + 1);
         let mut out = SmallVec::with_capacity(n + 2);
         out.push(self.points[0].clone());
         for i in 1..=n {
