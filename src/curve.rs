@@ -18,13 +18,39 @@
 use crate::bernstein::{bernstein_all, bernstein_to_power, binomial_row, power_to_bernstein, reparametrize};
 use crate::error::{check_degree, Error, Result};
 use crate::hull::convex_weights;
+use crate::kernel::{de_casteljau, with_column};
 use crate::point::{common_dimension, AffineMap, Point, PointList};
 use crate::scalar::{RefOps, Scalar};
+use crate::space::{PointN, VectorSpace};
 use num_bigint::BigInt;
 use num_rational::BigRational;
+use smallvec::SmallVec;
 use std::fmt;
 
-/// A Bézier curve: its control points `b_0, …, b_n` (all of one dimension, at least one).
+/// Control points kept inline by a curve: a cubic needs no heap allocation.
+const INLINE_POINTS: usize = 4;
+
+/// A Bézier curve with control points `b_0, …, b_n` of type `P` (all of one dimension, at
+/// least one point). Up to four control points are stored inline.
+///
+/// `P` is any [`VectorSpace`]: [`crate::Point2`] and other [`PointN`] for a dimension fixed
+/// at compile time (the fast `f64` path), [`Point`] for one known at run time
+/// ([`BezierCurve`]).
+///
+/// ```
+/// use casteljau::{Bezier, Point2};
+/// let c = Bezier::from_points([Point2::new(0.0, 0.0), Point2::new(1.0, 2.0), Point2::new(3.0, 2.0), Point2::new(4.0, 0.0)]).unwrap();
+/// assert_eq!(c.eval(&0.5), Point2::new(2.0, 1.5));
+/// let (left, right) = c.split_at(&0.5);
+/// assert_eq!(left.points()[3], right.points()[0]);
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Bezier<P> {
+    points: SmallVec<[P; INLINE_POINTS]>,
+}
+
+/// A Bézier curve whose dimension is known at run time: what the command line, the oracle
+/// and the claims build.
 ///
 /// ```
 /// use casteljau::{BezierCurve, BigRational, Scalar};
@@ -38,10 +64,7 @@ use std::fmt;
 /// assert_eq!(p.coords()[0], &q(1, 1) - &(&u * &u));
 /// assert_eq!(p.coords()[1], &u - &(&(&u * &u) * &u));
 /// ```
-#[derive(Clone, Debug, PartialEq)]
-pub struct BezierCurve<T> {
-    points: Vec<Point<T>>,
-}
+pub type BezierCurve<T> = Bezier<Point<T>>;
 
 /// The triangular de Casteljau scheme (9) at one parameter: `column(r)[i] = b_i^r(t)`.
 #[derive(Clone, Debug, PartialEq)]
@@ -64,26 +87,268 @@ pub struct ElevationDistance<T> {
     pub max_squared: T,
 }
 
-impl<T: Scalar> BezierCurve<T>
+/// A copy of `points`; a cubic's four are written at once rather than pushed one by one.
+#[inline(always)]
+fn copy_points<P: Clone>(points: &[P]) -> SmallVec<[P; INLINE_POINTS]> {
+    match points {
+        [a, b, c, d] => SmallVec::from_buf([a.clone(), b.clone(), c.clone(), d.clone()]),
+        _ => points.iter().cloned().collect(),
+    }
+}
+
+/// Checks that `points` is non-empty and of one dimension; returns that dimension.
+pub(crate) fn common_dim<P: VectorSpace>(points: &[P], what: &'static str) -> Result<usize> {
+    let first = points.first().ok_or(Error::Empty(what))?;
+    let dim = first.dim();
+    for (i, p) in points.iter().enumerate() {
+        if p.dim() != dim {
+            return Err(Error::DimensionMismatch {
+                expected: dim,
+                found: p.dim(),
+                context: format!("{what}, point {i}"),
+            });
+        }
+    }
+    Ok(dim)
+}
+
+impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P>
 where
     for<'a> &'a T: RefOps<T>,
 {
     /// A curve from its control points; empty polygons, mixed dimensions and degrees above
     /// [`crate::MAX_DEGREE`] are errors.
-    pub fn new(points: Vec<Point<T>>) -> Result<Self> {
-        common_dimension(&points, "a Bézier curve")?;
-        check_degree("degree", points.len() as u128 - 1)?;
-        Ok(BezierCurve { points })
+    pub fn new(points: Vec<P>) -> Result<Self> {
+        Self::from_points(points)
     }
 
+    /// [`Self::new`] from any collection of points, such as an array (stored inline up to a
+    /// cubic, without a heap allocation).
+    pub fn from_points(points: impl IntoIterator<Item = P>) -> Result<Self> {
+        let points: SmallVec<[P; INLINE_POINTS]> = points.into_iter().collect();
+        common_dim(&points, "a Bézier curve")?;
+        check_degree("degree", points.len() as u128 - 1)?;
+        Ok(Bezier { points })
+    }
+
+    /// The degree `n`.
+    pub fn degree(&self) -> usize {
+        self.points.len() - 1
+    }
+
+    /// The dimension of the control points.
+    pub fn dim(&self) -> usize {
+        self.points[0].dim()
+    }
+
+    /// The control points.
+    pub fn points(&self) -> &[P] {
+        &self.points
+    }
+
+    /// The control points, by value.
+    pub fn into_points(self) -> Vec<P> {
+        self.points.into_vec()
+    }
+
+    /// `b(t)` by de Casteljau's algorithm (1). Defined for every `t`, not only `[0, 1]`.
+    #[inline]
+    pub fn eval(&self, t: &T) -> P {
+        with_column(&self.points, |column| {
+            de_casteljau(column, t, |_| {});
+            column[0].clone()
+        })
+    }
+
+    /// `b(t) = Σ b_i B_i^n(t)`, the Bernstein sum.
+    pub fn eval_bernstein(&self, t: &T) -> P {
+        let basis = bernstein_all(self.degree(), t);
+        let mut acc = self.points[0].zero_like();
+        for (b, p) in basis.iter().zip(&self.points) {
+            acc.add_scaled_assign(b, p);
+        }
+        acc
+    }
+
+    /// One step of degree elevation (7): the same curve with `n + 2` control points.
+    #[inline]
+    pub fn elevate(&self) -> Result<Self> {
+        if let [b0, b1, b2] = &self.points[..] {
+            // Quadratic to cubic: the four points written at once, by the same steps.
+            let three = T::from_usize(3);
+            let (a1, a2) = (T::one().checked_div(&three)?, T::from_usize(2).checked_div(&three)?);
+            let points = [b0.clone(), b1.lerp_to(b0, &a1), b2.lerp_to(b1, &a2), b2.clone()];
+            return Ok(Bezier {
+                points: SmallVec::from_buf(points),
+            });
+        }
+        let n = self.degree();
+        check_degree("degree after elevation", n as u128 + 1)?;
+        let n1 = T::from_usize(n + 1);
+        let mut out = SmallVec::with_capacity(n + 2);
+        out.push(self.points[0].clone());
+        for i in 1..=n {
+            let a = T::from_usize(i).checked_div(&n1)?;
+            // (i/(n+1)) b_{i-1} + (1 - i/(n+1)) b_i
+            out.push(self.points[i].lerp_to(&self.points[i - 1], &a));
+        }
+        out.push(self.points[n].clone());
+        Ok(Bezier { points: out })
+    }
+
+    /// `r` steps of elevation by the closed form (8):
+    /// `b_i^{(r)} = Σ_j C(n,j) C(r,i-j) / C(n+r,i) b_j`.
+    ///
+    /// ```
+    /// use casteljau::{BezierCurve, BigRational};
+    /// let c: BezierCurve<BigRational> = BezierCurve::from_ints(&[&[0, 0], &[1, 2], &[3, 1]]).unwrap();
+    /// assert_eq!(c.elevate_by(3).unwrap(), c.elevate().unwrap().elevate().unwrap().elevate().unwrap());
+    /// assert!(c.elevate_by(1_000_000_000_000).is_err());
+    /// ```
+    pub fn elevate_by(&self, r: usize) -> Result<Self> {
+        let n = self.degree();
+        let total = check_degree("degree after elevation", n as u128 + r as u128)?;
+        // Whole rows, not one binomial at a time: C(n+r, i) for every i separately costs
+        // O((n+r)^2) big multiplications, hours at the degree limit.
+        let cn = binomial_row(n);
+        let cr = binomial_row(r);
+        let ct = binomial_row(total);
+        let mut out = SmallVec::with_capacity(total + 1);
+        for (i, denom) in ct.iter().enumerate() {
+            let mut acc = self.points[0].zero_like();
+            for j in i.saturating_sub(r)..=i.min(n) {
+                let w = T::from_rational(&BigRational::new(&cn[j] * &cr[i - j], denom.clone()))?;
+                acc.add_scaled_assign(&w, &self.points[j]);
+            }
+            out.push(acc);
+        }
+        Ok(Bezier { points: out })
+    }
+
+    /// `r` single steps of (7), one after another.
+    pub fn elevate_steps(&self, r: usize) -> Result<Self> {
+        check_degree("degree after elevation", self.degree() as u128 + r as u128)?;
+        let mut c = self.clone();
+        for _ in 0..r {
+            c = c.elevate()?;
+        }
+        Ok(c)
+    }
+
+    /// Subdivision at `t0` (Lemma 1.3): the curves `c1(t) = b(t0 t)` and
+    /// `c2(t) = b(t0 + (1 - t0) t)`, whose control points are the two boundaries of the
+    /// scheme (9). Any `t0` works; outside `(0, 1)` the pieces extrapolate.
+    #[inline]
+    pub fn split_at(&self, t0: &T) -> (Self, Self) {
+        // In place, level by level, the column ends as b_0^n, b_1^{n-1}, …, b_n^0: the right
+        // boundary of the scheme; the left one is its first point after each level.
+        let mut right = copy_points(&self.points);
+        let mut left = copy_points(&self.points);
+        let mut r = 0;
+        de_casteljau(&mut right, t0, |level| {
+            r += 1;
+            left[r] = level[0].clone();
+        });
+        (Bezier { points: left }, Bezier { points: right })
+    }
+
+    /// The forward differences `Δ^k b_j`, `j = 0..=n-k`; `k > n` is an error.
+    pub fn forward_differences(&self, k: usize) -> Result<Vec<P>> {
+        let n = self.degree();
+        if k > n {
+            return Err(Error::DerivativeOrder { order: k, degree: n });
+        }
+        let mut d = self.points.to_vec();
+        for _ in 0..k {
+            d = d.windows(2).map(|w| w[1].minus(&w[0])).collect();
+        }
+        Ok(d)
+    }
+
+    /// The `k`-th derivative curve `n!/(n-k)! Σ_j Δ^k b_j B_j^{n-k}(t)`, of degree `n - k`.
+    /// `k > n` is an error (the derivative is zero, but no curve of degree `n - k` exists).
+    pub fn derivative(&self, k: usize) -> Result<Self> {
+        let n = self.degree();
+        let diffs = self.forward_differences(k)?;
+        let mut factor = BigInt::from(1);
+        for m in n - k + 1..=n {
+            factor *= m;
+        }
+        let f = T::from_bigint(&factor)?;
+        Ok(Bezier {
+            points: diffs
+                .into_iter()
+                .map(|mut d| {
+                    d.scale_assign(&f);
+                    d
+                })
+                .collect(),
+        })
+    }
+
+    /// The hodograph: the first derivative curve `n Σ Δb_j B_j^{n-1}(t)`.
+    pub fn hodograph(&self) -> Result<Self> {
+        self.derivative(1)
+    }
+
+    /// The `k`-th derivative vector at `t`: zero when `k` exceeds the degree.
+    pub fn derivative_at(&self, k: usize, t: &T) -> Result<P> {
+        if k > self.degree() {
+            return Ok(self.points[0].zero_like());
+        }
+        Ok(self.derivative(k)?.eval(t))
+    }
+}
+
+impl<P> TryFrom<Vec<P>> for Bezier<P>
+where
+    P: VectorSpace,
+    P::Scalar: Scalar,
+    for<'a> &'a P::Scalar: RefOps<P::Scalar>,
+{
+    type Error = Error;
+    fn try_from(points: Vec<P>) -> Result<Self> {
+        Bezier::new(points)
+    }
+}
+
+impl<P> From<Bezier<P>> for Vec<P> {
+    fn from(c: Bezier<P>) -> Vec<P> {
+        c.points.into_vec()
+    }
+}
+
+#[cfg(feature = "serde")]
+impl<P: serde::Serialize> serde::Serialize for Bezier<P> {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
+        serializer.collect_seq(&self.points)
+    }
+}
+
+#[cfg(feature = "serde")]
+impl<'de, P> serde::Deserialize<'de> for Bezier<P>
+where
+    P: VectorSpace + serde::Deserialize<'de>,
+    P::Scalar: Scalar,
+    for<'a> &'a P::Scalar: RefOps<P::Scalar>,
+{
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> std::result::Result<Self, D::Error> {
+        Bezier::new(Vec::<P>::deserialize(deserializer)?).map_err(serde::de::Error::custom)
+    }
+}
+
+impl<T: Scalar> BezierCurve<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
     /// A curve from coordinate lists.
     pub fn from_coords(coords: Vec<Vec<T>>) -> Result<Self> {
-        Self::new(coords.into_iter().map(Point::new).collect::<Result<_>>()?)
+        Self::new(coords.into_iter().map(Point::new).collect::<Result<Vec<_>>>()?)
     }
 
     /// A curve with integer control points.
     pub fn from_ints(coords: &[&[i64]]) -> Result<Self> {
-        Self::new(coords.iter().map(|c| Point::from_ints(c)).collect::<Result<_>>()?)
+        Self::new(coords.iter().map(|c| Point::from_ints(c)).collect::<Result<Vec<_>>>()?)
     }
 
     /// The Bézier form of `Σ_k a_k t^k` on `[0, 1]`; `coeffs[k]` is the vector `a_k`.
@@ -125,195 +390,20 @@ where
             .collect()
     }
 
-    /// The degree `n`.
-    pub fn degree(&self) -> usize {
-        self.points.len() - 1
-    }
-
-    /// The dimension of the control points.
-    pub fn dim(&self) -> usize {
-        self.points[0].dim()
-    }
-
-    /// The control points.
-    pub fn points(&self) -> &[Point<T>] {
-        &self.points
-    }
-
-    /// The control points, by value.
-    pub fn into_points(self) -> Vec<Point<T>> {
-        self.points
-    }
-
     /// Converts the coordinates to another scalar type (e.g. exact → `f64`).
     pub fn try_map<U: Scalar>(&self, f: impl Fn(&T) -> Result<U> + Copy) -> Result<BezierCurve<U>>
     where
         for<'a> &'a U: RefOps<U>,
     {
-        BezierCurve::new(self.points.iter().map(|p| p.try_map(f)).collect::<Result<_>>()?)
-    }
-
-    /// `b(t)` by de Casteljau's algorithm (1). Defined for every `t`, not only `[0, 1]`.
-    pub fn eval(&self, t: &T) -> Point<T> {
-        let dim = self.dim();
-        let n = self.degree();
-        // One flat buffer, updated in place column by column: b_i ← b_i + t (b_{i+1} - b_i).
-        let mut buf: Vec<T> = self.points.iter().flat_map(|p| p.coords().iter().cloned()).collect();
-        for r in 1..=n {
-            for i in 0..=n - r {
-                for k in 0..dim {
-                    let d = &buf[(i + 1) * dim + k] - &buf[i * dim + k];
-                    buf[i * dim + k] += &(t * &d);
-                }
-            }
-        }
-        buf.truncate(dim);
-        Point::new(buf).expect("dimension checked at construction")
+        BezierCurve::new(self.points.iter().map(|p| p.try_map(f)).collect::<Result<Vec<_>>>()?)
     }
 
     /// The whole triangular scheme (9) at `t`.
     pub fn scheme(&self, t: &T) -> DeCasteljauScheme<T> {
-        let mut columns = vec![self.points.clone()];
-        for r in 1..=self.degree() {
-            let prev = &columns[r - 1];
-            let next: Vec<Point<T>> = prev.windows(2).map(|w| w[0].lerp(&w[1], t)).collect();
-            columns.push(next);
-        }
+        let mut columns = vec![self.points.to_vec()];
+        let mut column = self.points.to_vec();
+        de_casteljau(&mut column, t, |level| columns.push(level.to_vec()));
         DeCasteljauScheme { t: t.clone(), columns }
-    }
-
-    /// `b(t) = Σ b_i B_i^n(t)`, the Bernstein sum.
-    pub fn eval_bernstein(&self, t: &T) -> Point<T> {
-        let basis = bernstein_all(self.degree(), t);
-        let mut acc = Point::origin(self.dim());
-        for (b, p) in basis.iter().zip(&self.points) {
-            acc.add_scaled_assign(b, p);
-        }
-        acc
-    }
-
-    /// One step of degree elevation (7): the same curve with `n + 2` control points.
-    pub fn elevate(&self) -> Result<Self> {
-        let n = self.degree();
-        check_degree("degree after elevation", n as u128 + 1)?;
-        let n1 = T::from_usize(n + 1);
-        let mut out = Vec::with_capacity(n + 2);
-        out.push(self.points[0].clone());
-        for i in 1..=n {
-            let a = T::from_usize(i).checked_div(&n1)?;
-            // (i/(n+1)) b_{i-1} + (1 - i/(n+1)) b_i
-            out.push(self.points[i].lerp(&self.points[i - 1], &a));
-        }
-        out.push(self.points[n].clone());
-        Ok(BezierCurve { points: out })
-    }
-
-    /// `r` steps of elevation by the closed form (8):
-    /// `b_i^{(r)} = Σ_j C(n,j) C(r,i-j) / C(n+r,i) b_j`.
-    ///
-    /// ```
-    /// use casteljau::{BezierCurve, BigRational};
-    /// let c: BezierCurve<BigRational> = BezierCurve::from_ints(&[&[0, 0], &[1, 2], &[3, 1]]).unwrap();
-    /// assert_eq!(c.elevate_by(3).unwrap(), c.elevate().unwrap().elevate().unwrap().elevate().unwrap());
-    /// assert!(c.elevate_by(1_000_000_000_000).is_err());
-    /// ```
-    pub fn elevate_by(&self, r: usize) -> Result<Self> {
-        let n = self.degree();
-        let total = check_degree("degree after elevation", n as u128 + r as u128)?;
-        // Whole rows, not one binomial at a time: C(n+r, i) for every i separately costs
-        // O((n+r)^2) big multiplications, hours at the degree limit.
-        let cn = binomial_row(n);
-        let cr = binomial_row(r);
-        let ct = binomial_row(total);
-        let mut out = Vec::with_capacity(total + 1);
-        for (i, denom) in ct.iter().enumerate() {
-            let mut acc = Point::origin(self.dim());
-            for j in i.saturating_sub(r)..=i.min(n) {
-                let w = T::from_rational(&BigRational::new(&cn[j] * &cr[i - j], denom.clone()))?;
-                acc.add_scaled_assign(&w, &self.points[j]);
-            }
-            out.push(acc);
-        }
-        Ok(BezierCurve { points: out })
-    }
-
-    /// `r` single steps of (7), one after another.
-    pub fn elevate_steps(&self, r: usize) -> Result<Self> {
-        check_degree("degree after elevation", self.degree() as u128 + r as u128)?;
-        let mut c = self.clone();
-        for _ in 0..r {
-            c = c.elevate()?;
-        }
-        Ok(c)
-    }
-
-    /// Subdivision at `t0` (Lemma 1.3): the curves `c1(t) = b(t0 t)` and
-    /// `c2(t) = b(t0 + (1 - t0) t)`, whose control points are the two boundaries of the
-    /// scheme (9). Any `t0` works; outside `(0, 1)` the pieces extrapolate.
-    pub fn split_at(&self, t0: &T) -> (Self, Self) {
-        let dim = self.dim();
-        let n = self.degree();
-        // One flat buffer updated in place, as in `eval`: after level r it holds column r of
-        // the scheme, whose first point is b_0^r (left) and whose last is b_{n-r}^r (right).
-        let mut buf: Vec<T> = self.points.iter().flat_map(|p| p.coords().iter().cloned()).collect();
-        let point = |buf: &[T], i: usize| Point::from_valid(buf[i * dim..(i + 1) * dim].to_vec());
-        let mut left = Vec::with_capacity(n + 1);
-        let mut right = Vec::with_capacity(n + 1);
-        left.push(self.points[0].clone());
-        right.push(self.points[n].clone());
-        for r in 1..=n {
-            for i in 0..=n - r {
-                for k in 0..dim {
-                    let d = &buf[(i + 1) * dim + k] - &buf[i * dim + k];
-                    buf[i * dim + k] += &(t0 * &d);
-                }
-            }
-            left.push(point(&buf, 0));
-            right.push(point(&buf, n - r));
-        }
-        right.reverse();
-        (BezierCurve { points: left }, BezierCurve { points: right })
-    }
-
-    /// The forward differences `Δ^k b_j`, `j = 0..=n-k`; `k > n` is an error.
-    pub fn forward_differences(&self, k: usize) -> Result<Vec<Point<T>>> {
-        let n = self.degree();
-        if k > n {
-            return Err(Error::DerivativeOrder { order: k, degree: n });
-        }
-        let mut d = self.points.clone();
-        for _ in 0..k {
-            d = d.windows(2).map(|w| w[1].sub(&w[0])).collect();
-        }
-        Ok(d)
-    }
-
-    /// The `k`-th derivative curve `n!/(n-k)! Σ_j Δ^k b_j B_j^{n-k}(t)`, of degree `n - k`.
-    /// `k > n` is an error (the derivative is zero, but no curve of degree `n - k` exists).
-    pub fn derivative(&self, k: usize) -> Result<Self> {
-        let n = self.degree();
-        let diffs = self.forward_differences(k)?;
-        let mut factor = BigInt::from(1);
-        for m in n - k + 1..=n {
-            factor *= m;
-        }
-        let f = T::from_bigint(&factor)?;
-        Ok(BezierCurve {
-            points: diffs.iter().map(|d| d.scale(&f)).collect(),
-        })
-    }
-
-    /// The hodograph: the first derivative curve `n Σ Δb_j B_j^{n-1}(t)`.
-    pub fn hodograph(&self) -> Result<Self> {
-        self.derivative(1)
-    }
-
-    /// The `k`-th derivative vector at `t`: zero when `k` exceeds the degree.
-    pub fn derivative_at(&self, k: usize, t: &T) -> Result<Point<T>> {
-        if k > self.degree() {
-            return Ok(Point::origin(self.dim()));
-        }
-        Ok(self.derivative(k)?.eval(t))
     }
 
     /// The image of the curve under an affine map: the curve of the mapped control points.
@@ -380,10 +470,6 @@ where
     }
 }
 
-/// Control points kept on the stack by [`BezierCurve::eval_array`]; higher degrees use one
-/// heap buffer.
-const STACK_POINTS: usize = 16;
-
 impl BezierCurve<BigRational> {
     /// `b(t)` exactly, by a fraction-free de Casteljau algorithm: the same value as
     /// [`BezierCurve::eval`], much faster at high degree.
@@ -433,10 +519,8 @@ impl BezierCurve<BigRational> {
 
 impl BezierCurve<f64> {
     /// `b(t)` as a fixed-size array, by exactly the de Casteljau steps of
-    /// [`BezierCurve::eval`] (so the result is bit-for-bit the same), without allocating for
-    /// degrees below 16. The generic `eval` builds a `Vec` and a [`Point`]; this is the
-    /// fast path for float code evaluating many parameters. A dimension other than `D` is an
-    /// error.
+    /// [`BezierCurve::eval`] (so the result is bit-for-bit the same), on the stack for
+    /// degrees below [`crate::kernel::STACK_POINTS`]. A dimension other than `D` is an error.
     ///
     /// ```
     /// use casteljau::BezierCurve;
@@ -453,45 +537,22 @@ impl BezierCurve<f64> {
                 context: "eval_array: the array size must be the curve's dimension".into(),
             });
         }
-        let n = self.degree();
-        // Cubics and below get a small buffer: filling 16 slots would cost as much as the work.
-        Ok(if n < 4 {
-            self.eval_on_stack::<D, 4>(t)
-        } else if n < STACK_POINTS {
-            self.eval_on_stack::<D, STACK_POINTS>(t)
+        let len = self.points.len();
+        let point = |i: usize| PointN(std::array::from_fn(|k| self.points[i.min(len - 1)].coords()[k]));
+        let eval = |column: &mut [PointN<f64, D>]| {
+            de_casteljau(column, &t, |_| {});
+            column[0].0
+        };
+        // Cubics and below get a small buffer: filling the large one would cost as much as
+        // the work.
+        Ok(if len <= 4 {
+            eval(&mut std::array::from_fn::<_, 4, _>(point)[..len])
+        } else if len <= crate::kernel::STACK_POINTS {
+            eval(&mut std::array::from_fn::<_, { crate::kernel::STACK_POINTS }, _>(point)[..len])
         } else {
-            let mut buf = vec![[0.0; D]; n + 1];
-            for (slot, p) in buf.iter_mut().zip(&self.points) {
-                slot.copy_from_slice(p.coords());
-            }
-            casteljau_in_place(&mut buf, t)
+            eval(&mut (0..len).map(point).collect::<Vec<_>>())
         })
     }
-
-    /// [`Self::eval_array`] with an `S`-point stack buffer; needs `degree < S`, `dim == D`.
-    fn eval_on_stack<const D: usize, const S: usize>(&self, t: f64) -> [f64; D] {
-        let mut buf = [[0.0; D]; S];
-        for (slot, p) in buf.iter_mut().zip(&self.points) {
-            slot.copy_from_slice(p.coords());
-        }
-        casteljau_in_place(&mut buf[..self.points.len()], t)
-    }
-}
-
-/// de Casteljau (1) in place on `D`-dimensional points, the same operations in the same
-/// order as the generic [`BezierCurve::eval`]: `b_i ← b_i + t (b_{i+1} - b_i)`.
-fn casteljau_in_place<const D: usize>(buf: &mut [[f64; D]], t: f64) -> [f64; D] {
-    // Column r lives in buf[..len]; slicing to it lets the compiler drop bounds checks.
-    for len in (2..=buf.len()).rev() {
-        let column = &mut buf[..len];
-        for i in 0..len - 1 {
-            let next = column[i + 1];
-            for (a, b) in column[i].iter_mut().zip(next) {
-                *a += t * (b - *a);
-            }
-        }
-    }
-    buf[0]
 }
 
 impl<T: Scalar> DeCasteljauScheme<T>

@@ -6,11 +6,12 @@
 
 use thiserror::Error as ThisError;
 
-/// Largest degree any curve or surface may reach (after elevation too).
+/// Largest degree any curve or surface may reach (after elevation too), in the library, the
+/// command line and the oracle alike.
 ///
 /// Bernstein algorithms are quadratic in the degree and exact binomials grow linearly in
 /// bits, so past this size a request is far more likely a typo than an intent.
-pub const MAX_DEGREE: usize = 65_536;
+pub const MAX_DEGREE: usize = 4_096;
 
 /// Largest number of coordinates a point may have.
 pub const MAX_DIMENSION: usize = 1_024;
@@ -90,6 +91,7 @@ pub enum Error {
 pub type Result<T> = std::result::Result<T, Error>;
 
 /// Checks that a degree (or a degree after elevation) stays within [`MAX_DEGREE`].
+#[inline]
 pub fn check_degree(what: &'static str, degree: u128) -> Result<usize> {
     if degree > MAX_DEGREE as u128 {
         return Err(Error::TooLarge {

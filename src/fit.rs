@@ -57,6 +57,7 @@ use crate::bernstein::{bernstein, bernstein_all, eval_power};
 use crate::curve::BezierCurve;
 use crate::error::{check_degree, Error, Result};
 use crate::linalg::{solve, solve_many, Matrix};
+use crate::param::ParamCurveDeriv;
 use crate::point::{common_dimension, Point, Vector};
 use crate::scalar::{RefOps, Scalar};
 
@@ -82,8 +83,8 @@ pub struct CubicFitData<T> {
     pub d1: Vector<T>,
 }
 
-/// Anything that can supply [`CubicFitData`]: a polynomial Bézier curve, the data itself,
-/// and (later) rational curves. [`fit_cubic_to`] accepts any of them.
+/// Anything that can supply [`CubicFitData`]: the data itself and every curve with a
+/// derivative ([`ParamCurveDeriv`]). [`fit_cubic_to`] accepts any of them.
 pub trait CubicFitSource<T> {
     /// `x(0), x(1), x(1/2), ẋ(0), ẋ(1)` of this curve, exactly for exact scalars.
     fn cubic_fit_data(&self) -> Result<CubicFitData<T>>;
@@ -245,30 +246,23 @@ where
     }
 }
 
-impl<T: Scalar> CubicFitSource<T> for BezierCurve<T>
+/// Any curve with a derivative — polynomial ([`BezierCurve`], iso-curves of surfaces),
+/// rational ([`crate::RationalBezierCurve`], by the homogeneous de Casteljau algorithm and
+/// the quotient rule) or a user's own: `x(t)` and `ẋ(t)` through [`ParamCurveDeriv`],
+/// exactly for exact scalars. A curve without a point at 0, 1/2 or 1 is an error.
+impl<T: Scalar, C> CubicFitSource<T> for C
 where
+    C: ParamCurveDeriv<Scalar = T, Point = Point<T>>,
     for<'a> &'a T: RefOps<T>,
 {
     fn cubic_fit_data(&self) -> Result<CubicFitData<T>> {
-        CubicFitData::from_curve(self)
-    }
-}
-
-/// A rational curve: `x(t)` and `ẋ(t)` by the homogeneous de Casteljau algorithm and the
-/// quotient rule, exactly for exact scalars. A weight sum vanishing at 0, 1/2 or 1 is an error.
-impl<T: Scalar> CubicFitSource<T> for crate::rational::RationalBezierCurve<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
-    fn cubic_fit_data(&self) -> Result<CubicFitData<T>> {
-        let (zero, one) = (T::zero(), T::one());
-        let half = one.checked_div(&T::from_i64(2))?;
+        let (zero, one, half) = (T::zero(), T::one(), T::from_ratio(1, 2)?);
         CubicFitData::new(
             self.eval(&zero)?,
             self.eval(&one)?,
             self.eval(&half)?,
-            self.derivative_at(&zero)?,
-            self.derivative_at(&one)?,
+            self.deriv_at(&zero)?,
+            self.deriv_at(&one)?,
         )
     }
 }

@@ -15,10 +15,12 @@
 //! assert_eq!(right.eval(&BigRational::from_i64(0)), curve.eval(&half));
 //! ```
 //!
-//! Modules, one concept each: [`scalar`] (the number trait, exact parsing), [`point`]
-//! (points, barycentric combinations, affine maps), [`bernstein`] (binomials, the Bernstein
-//! basis, power ↔ Bernstein), [`curve`] (Bézier curves), [`hull`] (exact convex-hull
-//! membership), [`linalg`] (exact elimination).
+//! Modules, one concept each: [`scalar`] (the number trait, exact parsing), [`space`] (the
+//! point trait the algorithms are generic over, fixed-dimension points), [`point`]
+//! (run-time-dimension points, barycentric combinations, affine maps), [`kernel`] (the one
+//! de Casteljau kernel), [`bernstein`] (binomials, the Bernstein basis, power ↔ Bernstein),
+//! [`curve`] (Bézier curves), [`param`] (traits over curve kinds), [`hull`] (exact
+//! convex-hull membership), [`linalg`] (exact elimination).
 
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
@@ -32,43 +34,46 @@ pub mod fit;
 pub mod html;
 pub mod hull;
 pub mod input;
+pub mod kernel;
 pub mod linalg;
 pub mod oracle;
+pub mod param;
 pub mod point;
 pub mod quadratic;
 pub mod rational;
 pub mod scalar;
+pub mod space;
 #[cfg(feature = "strategies")]
 pub mod strategies;
 pub mod surface;
 pub mod verify;
 
-pub use curve::{BezierCurve, DeCasteljauScheme, ElevationDistance};
+pub use curve::{Bezier, BezierCurve, DeCasteljauScheme, ElevationDistance};
 pub use error::{Error, Result, MAX_DEGREE, MAX_DIMENSION};
 pub use num_bigint::BigInt;
 pub use num_rational::BigRational;
+pub use param::{ParamCurve, ParamCurveDeriv};
 pub use point::{AffineMap, Point, Vector};
 pub use scalar::{RefOps, Scalar};
+pub use space::{Point2, Point3, PointN, VectorSpace};
 
-// Re-exports of the later modules, one block each so that their work merges cleanly.
-
-// --- rational curves, conics, quadratic irrationals (issue 3)
+// --- rational curves, conics, quadratic irrationals
 pub use quadratic::QuadraticIrrational;
 pub use rational::{
     classify_conic, conic_arc_passes_infinity, conic_shape_factor, implicit_conic, ConicKind, ExactSqrt, ImplicitConic,
     RationalBezierCurve,
 };
 
-// --- surfaces (issue 4)
+// --- surfaces
 pub use surface::{enneper_net, BezierSurface, EnneperMatch};
 
-// --- fitting (issue 5)
+// --- fitting
 pub use fit::{
     fit_cubic, fit_cubic_closed_form, fit_cubic_to, fit_least_squares, CubicFit, CubicFitData, CubicFitSource,
     FitConstraints, LeastSquaresFit,
 };
 
-// --- verification (issue 6)
+// --- verification
 pub use verify::{explain, prove_paths, ClaimOutcome, Report, Verdict};
 
 // --- exact arithmetic at integer speed (issue 12)

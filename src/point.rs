@@ -7,16 +7,35 @@
 
 use crate::error::{Error, Result, MAX_DIMENSION};
 use crate::scalar::{RefOps, Scalar};
+use crate::space::{parse_tuple, point_ops, point_ref_ops, write_tuple, VectorSpace};
+use smallvec::SmallVec;
 use std::fmt;
+use std::ops::{Index, IndexMut};
+use std::str::FromStr;
 
-/// A point (or vector) with coordinates of type `T`.
+/// Coordinates kept inline, without a heap allocation: enough for a homogeneous point of
+/// space.
+const INLINE_COORDS: usize = 4;
+
+/// A point (or vector) whose dimension is known at run time, with coordinates of type `T`;
+/// up to four coordinates are stored inline. For a dimension fixed at compile time use
+/// [`crate::PointN`].
 ///
 /// Arithmetic between points of different dimensions is a programming error and panics;
 /// curves, surfaces and nets check dimensions when they are built, so their algorithms
 /// never meet one.
+///
+/// ```
+/// use casteljau::{Point, BigRational};
+/// let p: Point<BigRational> = "(1/2, -3)".parse().unwrap();
+/// let q: Point<BigRational> = Point::from_ints(&[1, 1]).unwrap();
+/// assert_eq!((&q - &p).to_string(), "(1/2, 4)");
+/// assert_eq!(p[0], BigRational::new(1.into(), 2.into()));
+/// assert_eq!(p.to_string().parse::<Point<BigRational>>().unwrap(), p);
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Point<T> {
-    coords: Vec<T>,
+    coords: SmallVec<[T; INLINE_COORDS]>,
 }
 
 /// A difference of two points; the same type as [`Point`].
@@ -38,12 +57,15 @@ where
                 limit: MAX_DIMENSION.to_string(),
             });
         }
-        Ok(Point { coords })
+        Ok(Point {
+            coords: SmallVec::from_vec(coords),
+        })
     }
 
     /// A point from coordinates already known to be valid (taken from validated points).
-    pub(crate) fn from_valid(coords: Vec<T>) -> Self {
-        debug_assert!(!coords.is_empty() && coords.len() <= MAX_DIMENSION);
+    pub(crate) fn from_valid(coords: impl IntoIterator<Item = T>) -> Self {
+        let coords: SmallVec<_> = coords.into_iter().collect();
+        debug_assert!(!coords.is_empty());
         Point { coords }
     }
 
@@ -61,7 +83,7 @@ where
     /// The origin of dimension `dim`.
     pub fn origin(dim: usize) -> Self {
         Point {
-            coords: vec![T::zero(); dim],
+            coords: SmallVec::from_elem(T::zero(), dim),
         }
     }
 
@@ -77,7 +99,7 @@ where
 
     /// The coordinates, by value.
     pub fn into_coords(self) -> Vec<T> {
-        self.coords
+        self.coords.into_vec()
     }
 
     /// Converts every coordinate to another scalar type.
@@ -169,10 +191,7 @@ where
     }
 
     pub(crate) fn add_scaled_assign(&mut self, s: &T, v: &Vector<T>) {
-        self.check_dim(v);
-        for (a, b) in self.coords.iter_mut().zip(&v.coords) {
-            *a += &(s * b);
-        }
+        VectorSpace::add_scaled_assign(self, s, v);
     }
 
     fn zip(&self, other: &Point<T>, f: impl Fn(&T, &T) -> T) -> Point<T> {
@@ -187,16 +206,136 @@ where
     }
 }
 
+impl<T: Scalar> VectorSpace for Point<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    type Scalar = T;
+
+    fn dim(&self) -> usize {
+        self.coords.len()
+    }
+    fn coords(&self) -> &[T] {
+        &self.coords
+    }
+    fn zero_like(&self) -> Self {
+        Point::origin(self.dim())
+    }
+    #[inline]
+    fn lerp_assign(&mut self, other: &Self, t: &T) {
+        self.check_dim(other);
+        for (a, b) in self.coords.iter_mut().zip(&other.coords) {
+            let d = b - &*a;
+            *a += &(t * &d);
+        }
+    }
+    fn add_scaled_assign(&mut self, s: &T, v: &Self) {
+        self.check_dim(v);
+        for (a, b) in self.coords.iter_mut().zip(&v.coords) {
+            *a += &(s * b);
+        }
+    }
+    fn scale_assign(&mut self, s: &T) {
+        for a in &mut self.coords {
+            *a = &*a * s;
+        }
+    }
+    fn add_assign_ref(&mut self, other: &Self) {
+        self.check_dim(other);
+        for (a, b) in self.coords.iter_mut().zip(&other.coords) {
+            *a += b;
+        }
+    }
+    fn sub_assign_ref(&mut self, other: &Self) {
+        self.check_dim(other);
+        for (a, b) in self.coords.iter_mut().zip(&other.coords) {
+            *a -= b;
+        }
+    }
+}
+
+point_ops!([T: Scalar] Point<T>, T);
+point_ref_ops!([] Point<f64>, f64);
+point_ref_ops!([] Point<num_rational::BigRational>, num_rational::BigRational);
+point_ref_ops!([] Point<crate::QuadraticIrrational>, crate::QuadraticIrrational);
+
+impl<T> Index<usize> for Point<T> {
+    type Output = T;
+    fn index(&self, k: usize) -> &T {
+        &self.coords[k]
+    }
+}
+
+impl<T> IndexMut<usize> for Point<T> {
+    fn index_mut(&mut self, k: usize) -> &mut T {
+        &mut self.coords[k]
+    }
+}
+
+impl<T: Scalar, const N: usize> From<[T; N]> for Point<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    /// The point with these coordinates; `N` must be at least 1 (a zero-dimensional point
+    /// is a programming error and panics).
+    fn from(coords: [T; N]) -> Self {
+        assert!(
+            N > 0 && N <= MAX_DIMENSION,
+            "a point needs 1 to {MAX_DIMENSION} coordinates"
+        );
+        Point::from_valid(coords)
+    }
+}
+
+impl<T: Scalar> TryFrom<Vec<T>> for Point<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    type Error = Error;
+    fn try_from(coords: Vec<T>) -> Result<Self> {
+        Point::new(coords)
+    }
+}
+
+impl<T> From<Point<T>> for Vec<T> {
+    fn from(p: Point<T>) -> Vec<T> {
+        p.coords.into_vec()
+    }
+}
+
+/// Reads what `Display` prints: `(a, b, …)`, each coordinate by `T`'s `FromStr` (for
+/// [`crate::BigRational`]: integers and fractions `p/q`).
+impl<T: Scalar + FromStr> FromStr for Point<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self> {
+        Point::new(parse_tuple(s)?)
+    }
+}
+
+#[cfg(feature = "serde")]
+impl<T: serde::Serialize> serde::Serialize for Point<T> {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
+        serializer.collect_seq(&self.coords)
+    }
+}
+
+/// A list of coordinates, checked as [`Point::new`] checks it.
+#[cfg(feature = "serde")]
+impl<'de, T: Scalar + serde::Deserialize<'de>> serde::Deserialize<'de> for Point<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> std::result::Result<Self, D::Error> {
+        Point::new(Vec::<T>::deserialize(deserializer)?).map_err(serde::de::Error::custom)
+    }
+}
+
 impl<T: fmt::Display> fmt::Display for Point<T> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "(")?;
-        for (i, c) in self.coords.iter().enumerate() {
-            if i > 0 {
-                write!(f, ", ")?;
-            }
-            write!(f, "{c}")?;
-        }
-        write!(f, ")")
+        write_tuple(f, &self.coords)
     }
 }
 
@@ -373,19 +512,14 @@ where
                 context: "affine map input".into(),
             });
         }
-        let coords = self
-            .matrix
-            .iter()
-            .zip(&self.translation)
-            .map(|(row, c)| {
-                let mut acc = c.clone();
-                for (a, x) in row.iter().zip(p.coords()) {
-                    acc += &(a * x);
-                }
-                acc
-            })
-            .collect();
-        Ok(Point { coords })
+        let coords = self.matrix.iter().zip(&self.translation).map(|(row, c)| {
+            let mut acc = c.clone();
+            for (a, x) in row.iter().zip(p.coords()) {
+                acc += &(a * x);
+            }
+            acc
+        });
+        Ok(Point::from_valid(coords))
     }
 
     /// Applies the map to every point.
@@ -418,9 +552,7 @@ where
             })
             .collect();
         let translation = self
-            .apply(&Point {
-                coords: inner.translation.clone(),
-            })?
+            .apply(&Point::from_valid(inner.translation.iter().cloned()))?
             .into_coords();
         Ok(AffineMap { matrix, translation })
     }

@@ -35,8 +35,10 @@
 //! assert_eq!(classify_conic(&arc).unwrap(), ConicKind::Ellipse);
 //! ```
 
+use crate::bernstein::binomial_row;
 use crate::curve::BezierCurve;
 use crate::error::{check_degree, Error, Result, MAX_DIMENSION};
+use crate::kernel::{casteljau_step, with_column};
 use crate::point::{common_dimension, Point};
 use crate::quadratic::QuadraticIrrational;
 use crate::scalar::{RefOps, Scalar};
@@ -48,10 +50,21 @@ use std::fmt;
 
 /// A rational Bézier curve: control points `b_0..b_n` (one dimension, at least one point)
 /// and weights `w_0..w_n`, not all zero.
-#[derive(Clone, Debug, PartialEq)]
+///
+/// It keeps its homogeneous form `(w_i b_i, w_i)` beside the points and weights, so that
+/// evaluation, subdivision and elevation run the polynomial algorithms on it directly.
+/// Two curves are equal when their points and weights are.
+#[derive(Clone, Debug)]
 pub struct RationalBezierCurve<T> {
     points: Vec<Point<T>>,
     weights: Vec<T>,
+    homogeneous: BezierCurve<T>,
+}
+
+impl<T: PartialEq> PartialEq for RationalBezierCurve<T> {
+    fn eq(&self, other: &Self) -> bool {
+        self.points == other.points && self.weights == other.weights
+    }
 }
 
 impl<T: Scalar> RationalBezierCurve<T>
@@ -63,7 +76,18 @@ where
     /// [`crate::MAX_DEGREE`], a dimension that leaves no room for the homogeneous
     /// coordinate, or an invalid scalar ([`Scalar::check`]).
     pub fn new(points: Vec<Point<T>>, weights: Vec<T>) -> Result<Self> {
-        let dim = common_dimension(&points, "a rational Bézier curve")?;
+        Self::validate(&points, &weights)?;
+        let homogeneous = Self::homogeneous_of(&points, &weights);
+        Ok(RationalBezierCurve {
+            points,
+            weights,
+            homogeneous,
+        })
+    }
+
+    /// The checks of [`Self::new`].
+    fn validate(points: &[Point<T>], weights: &[T]) -> Result<()> {
+        let dim = common_dimension(points, "a rational Bézier curve")?;
         check_degree("degree", points.len() as u128 - 1)?;
         if weights.len() != points.len() {
             return Err(Error::WrongCount {
@@ -79,10 +103,10 @@ where
                 limit: (MAX_DIMENSION - 1).to_string(),
             });
         }
-        for w in &weights {
+        for w in weights {
             w.check()?;
         }
-        for p in &points {
+        for p in points {
             for c in p.coords() {
                 c.check()?;
             }
@@ -92,7 +116,17 @@ where
                 "all weights of a rational Bézier curve are zero: its denominator vanishes everywhere".into(),
             ));
         }
-        Ok(RationalBezierCurve { points, weights })
+        Ok(())
+    }
+
+    /// The homogeneous control points `(w_i b_i, w_i)` of valid points and weights.
+    fn homogeneous_of(points: &[Point<T>], weights: &[T]) -> BezierCurve<T> {
+        let lifted = points
+            .iter()
+            .zip(weights)
+            .map(|(p, w)| Point::from_valid(p.coords().iter().map(|c| c * w).chain([w.clone()])))
+            .collect();
+        BezierCurve::new(lifted).expect("count, degree and dimension checked in new")
     }
 
     /// A curve with integer control points and integer weights.
@@ -103,10 +137,8 @@ where
 
     /// The polynomial curve `c` as a rational one with all weights 1 (the same curve).
     pub fn polynomial(c: &BezierCurve<T>) -> Self {
-        RationalBezierCurve {
-            points: c.points().to_vec(),
-            weights: vec![T::one(); c.points().len()],
-        }
+        Self::new(c.points().to_vec(), vec![T::one(); c.points().len()])
+            .expect("a valid polynomial curve with unit weights is a valid rational curve")
     }
 
     /// The degree `n`.
@@ -140,45 +172,10 @@ where
         )
     }
 
-    /// The denominator `w(t) = Σ w_i B_i^n(t)`, by de Casteljau on the weights.
+    /// The denominator `w(t) = Σ w_i B_i^n(t)`, by de Casteljau on the homogeneous points.
     pub fn weight_at(&self, t: &T) -> T {
-        let mut w = self.weights.clone();
-        let n = self.degree();
-        for r in 1..=n {
-            for i in 0..=n - r {
-                let d = &w[i + 1] - &w[i];
-                w[i] += &(t * &d);
-            }
-        }
-        w.swap_remove(0)
-    }
-
-    /// The flat homogeneous control points `(w_i b_i, w_i)`, `dim + 1` scalars each.
-    fn homogeneous_buffer(&self) -> Vec<T> {
-        let mut buf = Vec::with_capacity(self.points.len() * (self.dim() + 1));
-        for (p, w) in self.points.iter().zip(&self.weights) {
-            buf.extend(p.coords().iter().map(|c| c * w));
-            buf.push(w.clone());
-        }
-        buf
-    }
-
-    /// Runs de Casteljau on the homogeneous points down to `levels` columns from the end:
-    /// returns the first `points` entries of that column (flat, `dim + 1` per point).
-    fn homogeneous_casteljau(&self, t: &T, stop_at: usize) -> Vec<T> {
-        let h = self.dim() + 1;
-        let n = self.degree();
-        let mut buf = self.homogeneous_buffer();
-        for r in 1..=n.saturating_sub(stop_at) {
-            for i in 0..=n - r {
-                for k in 0..h {
-                    let d = &buf[(i + 1) * h + k] - &buf[i * h + k];
-                    buf[i * h + k] += &(t * &d);
-                }
-            }
-        }
-        buf.truncate((stop_at.min(n) + 1) * h);
-        buf
+        let h = self.homogeneous.eval(t);
+        h.coords()[self.dim()].clone()
     }
 
     fn vanishing(&self, t: &T) -> Error {
@@ -190,24 +187,30 @@ where
     /// `x(t) = Σ w_i b_i B_i(t) / Σ w_i B_i(t)` by de Casteljau on the homogeneous points,
     /// then projection. An error when `w(t) = 0`. Defined for every `t`, not only `[0, 1]`.
     pub fn eval(&self, t: &T) -> Result<Point<T>> {
-        let mut h = self.homogeneous_casteljau(t, 0);
-        let w = h.pop().expect("the homogeneous point has dim + 1 ≥ 2 coordinates");
+        self.project(&self.homogeneous.eval(t), t)
+    }
+
+    /// The central projection `(x, w) ↦ x / w` of a homogeneous point of this curve at `t`.
+    fn project(&self, h: &Point<T>, t: &T) -> Result<Point<T>> {
+        let (w, x) = h
+            .coords()
+            .split_last()
+            .expect("the homogeneous point has dim + 1 ≥ 2 coordinates");
         if w.is_zero() {
             return Err(self.vanishing(t));
         }
-        Point::new(h.iter().map(|c| c.checked_div(&w)).collect::<Result<_>>()?)
+        Point::new(x.iter().map(|c| c.checked_div(w)).collect::<Result<_>>()?)
     }
 
     /// The polynomial curve one dimension up with control points `p_i = (w_i b_i, w_i)`
     /// (the text's proof of (10)); its central projection is `self`.
     pub fn lift(&self) -> BezierCurve<T> {
-        let h = self.dim() + 1;
-        let buf = self.homogeneous_buffer();
-        let points = buf
-            .chunks(h)
-            .map(|c| Point::new(c.to_vec()).expect("dimension below MAX_DIMENSION checked in new"))
-            .collect();
-        BezierCurve::new(points).expect("same count and degree as self, checked in new")
+        self.homogeneous.clone()
+    }
+
+    /// The homogeneous form, borrowed.
+    pub fn homogeneous(&self) -> &BezierCurve<T> {
+        &self.homogeneous
     }
 
     /// The rational curve whose homogeneous form is `c`: the last coordinate of each control
@@ -215,6 +218,11 @@ where
     /// `b_i = 0` with weight 0; `(v, 0)` with `v ≠ 0` (a point at infinity) is an error, as
     /// are fewer than two coordinates and all weights zero.
     pub fn from_homogeneous(c: &BezierCurve<T>) -> Result<Self> {
+        Self::from_homogeneous_owned(c.clone())
+    }
+
+    /// [`Self::from_homogeneous`], keeping `c` itself as the homogeneous form.
+    fn from_homogeneous_owned(c: BezierCurve<T>) -> Result<Self> {
         if c.dim() < 2 {
             return Err(Error::Domain(format!(
                 "a homogeneous curve needs at least 2 coordinates (point and weight), it has {}",
@@ -237,28 +245,36 @@ where
             }
             weights.push(w.clone());
         }
-        Self::new(points, weights)
+        Self::validate(&points, &weights)?;
+        Ok(RationalBezierCurve {
+            points,
+            weights,
+            homogeneous: c,
+        })
     }
 
     /// One step of degree elevation, done on the homogeneous form: the same curve with
     /// `n + 2` control points.
     pub fn elevate(&self) -> Result<Self> {
-        Self::from_homogeneous(&self.lift().elevate()?)
+        Self::from_homogeneous_owned(self.homogeneous.elevate()?)
     }
 
     /// `r` steps of degree elevation at once, on the homogeneous form.
     pub fn elevate_by(&self, r: usize) -> Result<Self> {
-        Self::from_homogeneous(&self.lift().elevate_by(r)?)
+        Self::from_homogeneous_owned(self.homogeneous.elevate_by(r)?)
     }
 
     /// Subdivision at `t0` on the homogeneous form: the pieces `x(t0 t)` and
     /// `x(t0 + (1 - t0) t)`. An error when `w(t0) = 0` (the shared end point does not exist).
     pub fn split_at(&self, t0: &T) -> Result<(Self, Self)> {
-        if self.weight_at(t0).is_zero() {
+        let (left, right) = self.homogeneous.split_at(t0);
+        if left.points()[self.degree()].coords()[self.dim()].is_zero() {
             return Err(self.vanishing(t0));
         }
-        let (left, right) = self.lift().split_at(t0);
-        Ok((Self::from_homogeneous(&left)?, Self::from_homogeneous(&right)?))
+        Ok((
+            Self::from_homogeneous_owned(left)?,
+            Self::from_homogeneous_owned(right)?,
+        ))
     }
 
     /// The first derivative `x'(t) = (P'(t) w(t) - P(t) w'(t)) / w(t)²`, with `P = w x` and
@@ -273,11 +289,18 @@ where
             }
             return Ok(Point::origin(self.dim()));
         }
-        let col = self.homogeneous_casteljau(t, 1);
+        // The last-but-one column of the scheme: h0, h1 with H(t) = (1 - t) h0 + t h1 and
+        // H'(t) = n (h1 - h0).
+        let (h0, h1) = with_column(self.homogeneous.points(), |column| {
+            for len in (2..column.len()).rev() {
+                casteljau_step(&mut column[..=len], t);
+            }
+            (column[0].clone(), column[1].clone())
+        });
+        let (col0, col1) = (h0.coords(), h1.coords());
         let nn = T::from_usize(n);
-        // H(t) = (1 - t) h0 + t h1 and H'(t) = n (h1 - h0).
-        let value: Vec<T> = (0..h).map(|k| &col[k] + &(t * &(&col[h + k] - &col[k]))).collect();
-        let slope: Vec<T> = (0..h).map(|k| &nn * &(&col[h + k] - &col[k])).collect();
+        let value: Vec<T> = (0..h).map(|k| &col0[k] + &(t * &(&col1[k] - &col0[k]))).collect();
+        let slope: Vec<T> = (0..h).map(|k| &nn * &(&col1[k] - &col0[k])).collect();
         let (w, dw) = (&value[h - 1], &slope[h - 1]);
         if w.is_zero() {
             return Err(self.vanishing(t));
@@ -448,7 +471,7 @@ where
         // c² w2 / w0 = 1 in exact arithmetic; pin the end weight to 1 so f64 rounding does
         // not leave 0.9999999999999999 behind.
         out.weights[2] = T::one();
-        Ok(out)
+        Self::new(out.points, out.weights)
     }
 }
 
@@ -877,6 +900,91 @@ where
         ));
     }
     conic.normalized()
+}
+
+impl<T: Scalar> crate::param::ParamCurve for RationalBezierCurve<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    type Scalar = T;
+    type Point = Point<T>;
+
+    fn eval(&self, t: &T) -> Result<Point<T>> {
+        RationalBezierCurve::eval(self, t)
+    }
+    fn split_at(&self, t0: &T) -> Result<(Self, Self)> {
+        RationalBezierCurve::split_at(self, t0)
+    }
+    fn degree(&self) -> usize {
+        RationalBezierCurve::degree(self)
+    }
+}
+
+/// The derivative of a rational curve of degree `n` is rational of degree `2n`:
+/// `ẋ = (Ẋ W − X Ẇ) / W²` with `(X, W)` the homogeneous form.
+impl<T: Scalar> crate::param::ParamCurveDeriv for RationalBezierCurve<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    type Deriv = Self;
+
+    /// An error when a Bernstein coefficient of `W²` vanishes where the numerator's does not
+    /// (a control point at infinity, see [`RationalBezierCurve::from_homogeneous`]).
+    fn deriv(&self) -> Result<Self> {
+        let n = self.degree();
+        let dim = self.dim();
+        if n == 0 {
+            return Self::new(vec![Point::origin(dim)], vec![T::one()]);
+        }
+        let h = self.homogeneous.points();
+        let x: Vec<Point<T>> = h
+            .iter()
+            .map(|p| Point::from_valid(p.coords()[..dim].iter().cloned()))
+            .collect();
+        let w: Vec<T> = h.iter().map(|p| p.coords()[dim].clone()).collect();
+        let nn = T::from_usize(n);
+        let dx: Vec<Point<T>> = x.windows(2).map(|p| p[1].sub(&p[0]).scale(&nn)).collect();
+        let dw: Vec<T> = w.windows(2).map(|p| &nn * &(&p[1] - &p[0])).collect();
+        // Ẋ W − X Ẇ has degree 2n − 1; one elevation brings it to W²'s degree 2n.
+        let first = bernstein_product(&dx, &w)?;
+        let second = bernstein_product(&x, &dw)?;
+        let numerator: Vec<Point<T>> = first.iter().zip(&second).map(|(a, b)| a.sub(b)).collect();
+        let numerator = BezierCurve::new(numerator)?.elevate()?;
+        let w_points: Vec<Point<T>> = w.iter().map(|c| Point::from_valid([c.clone()])).collect();
+        let denominator = bernstein_product(&w_points, &w)?;
+        let lifted = numerator
+            .points()
+            .iter()
+            .zip(&denominator)
+            .map(|(a, d)| Point::from_valid(a.coords().iter().chain(d.coords()).cloned()))
+            .collect();
+        Self::from_homogeneous_owned(BezierCurve::new(lifted)?)
+    }
+
+    fn deriv_at(&self, t: &T) -> Result<Point<T>> {
+        self.derivative_at(t)
+    }
+}
+
+/// The Bernstein coefficients of the product of `Σ a_i B_i^m` and `Σ b_j B_j^p`:
+/// `c_k = Σ_{i+j=k} C(m,i) C(p,j) / C(m+p,k) b_j a_i`.
+fn bernstein_product<T: Scalar>(a: &[Point<T>], b: &[T]) -> Result<Vec<Point<T>>>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    let (m, p) = (a.len() - 1, b.len() - 1);
+    let (cm, cp, cmp) = (binomial_row(m), binomial_row(p), binomial_row(m + p));
+    (0..=m + p)
+        .map(|k| {
+            let mut acc = Point::origin(a[0].dim());
+            for i in k.saturating_sub(p)..=k.min(m) {
+                let j = k - i;
+                let c = T::from_rational(&BigRational::new(&cm[i] * &cp[j], cmp[k].clone()))?;
+                acc.add_scaled_assign(&(&c * &b[j]), &a[i]);
+            }
+            Ok(acc)
+        })
+        .collect()
 }
 
 #[cfg(test)]

@@ -144,30 +144,39 @@ impl Scalar for f64 {
     const EXACT: bool = false;
     const NAME: &'static str = "f64";
 
+    #[inline]
     fn zero() -> Self {
         0.0
     }
+    #[inline]
     fn one() -> Self {
         1.0
     }
+    #[inline]
     fn is_zero(&self) -> bool {
         *self == 0.0
     }
+    #[inline]
     fn from_i64(n: i64) -> Self {
         n as f64
     }
+    #[inline]
     fn from_bigint(n: &BigInt) -> Result<Self> {
         finite(n.to_f64().unwrap_or(f64::INFINITY), || n.to_string())
     }
+    #[inline]
     fn from_rational(r: &BigRational) -> Result<Self> {
         finite(ToPrimitive::to_f64(r).unwrap_or(f64::NAN), || r.to_string())
     }
+    #[inline]
     fn from_f64(x: f64) -> Result<Self> {
         finite(x, || x.to_string())
     }
+    #[inline]
     fn to_f64(&self) -> f64 {
         *self
     }
+    #[inline]
     fn checked_div(&self, rhs: &Self) -> Result<Self> {
         if *rhs == 0.0 {
             return Err(Error::DivisionByZero(format!("{self} / 0")));

@@ -29,8 +29,10 @@ use crate::bernstein::{bernstein_all, bernstein_to_power, power_to_bernstein, re
 use crate::curve::BezierCurve;
 use crate::error::{check_degree, Error, Result};
 use crate::hull::convex_weights;
+use crate::kernel::{de_casteljau, STACK_POINTS};
 use crate::point::{common_dimension, AffineMap, Point};
 use crate::scalar::{RefOps, Scalar};
+use smallvec::SmallVec;
 use std::fmt;
 
 /// A tensor-product Bézier surface of degrees `(m, n)`: its control net `b_{i,j}`,
@@ -238,39 +240,14 @@ where
     /// reduced at `u` (giving the control points of the `u = u0` curve), then that curve is
     /// evaluated at `v`. Defined for every `(u, v)`, not only the unit square.
     pub fn eval(&self, u: &T, v: &T) -> Point<T> {
-        let dim = self.dim();
-        // Row-major flat net: de Casteljau in u acts on whole rows at once (every column
-        // reduced in lockstep), leaving the control points of the u = u0 curve in row 0.
-        let mut buf: Vec<T> = self
-            .net
-            .iter()
-            .flatten()
-            .flat_map(|p| p.coords().iter().cloned())
-            .collect();
-        let row_len = buf.len() / self.net.len();
-        casteljau_in_place(&mut buf, row_len, u);
-        buf.truncate(row_len);
-        casteljau_in_place(&mut buf, dim, v);
-        buf.truncate(dim);
-        Point::new(buf).expect("dimension checked at construction")
+        self.iso_u(u).eval(v)
     }
 
     /// `b(u, v)` by the tensor de Casteljau algorithm, `v` first: each row `b_{i,·}` is
     /// reduced at `v` (the control points of the `v = v0` curve of the text), then that curve
     /// is evaluated at `u`. Equal to [`Self::eval`] exactly for exact scalars.
     pub fn eval_v_first(&self, u: &T, v: &T) -> Point<T> {
-        let dim = self.dim();
-        let (_, n) = self.degrees();
-        // Column-major flat net, so that de Casteljau in v acts on whole columns at once.
-        let mut buf: Vec<T> = (0..=n)
-            .flat_map(|j| self.net.iter().flat_map(move |row| row[j].coords().iter().cloned()))
-            .collect();
-        let col_len = buf.len() / (n + 1);
-        casteljau_in_place(&mut buf, col_len, v);
-        buf.truncate(col_len);
-        casteljau_in_place(&mut buf, dim, u);
-        buf.truncate(dim);
-        Point::new(buf).expect("dimension checked at construction")
+        self.iso_v(v).eval(u)
     }
 
     /// `b(u, v) = Σ_i Σ_j b_{i,j} B_i^m(u) B_j^n(v)`, the double Bernstein sum.
@@ -290,14 +267,17 @@ where
     /// The isoparametric curve `v = v0`: a curve in `u` of degree `m` whose control points
     /// are `Σ_j b_{i,j} B_j^n(v0)`, `i = 0..=m` (text 003).
     pub fn iso_v(&self, v0: &T) -> BezierCurve<T> {
-        let points = self.net.iter().map(|row| reduce(row, v0)).collect();
+        let points = self.net.iter().map(|row| reduce(row.iter().cloned(), v0)).collect();
         BezierCurve::new(points).expect("rows are non-empty and of one dimension")
     }
 
     /// The isoparametric curve `u = u0`: a curve in `v` of degree `n` with control points
     /// `Σ_i b_{i,j} B_i^m(u0)`, `j = 0..=n`.
     pub fn iso_u(&self, u0: &T) -> BezierCurve<T> {
-        let points = transpose(&self.net).iter().map(|col| reduce(col, u0)).collect();
+        let n = self.degrees().1;
+        let points = (0..=n)
+            .map(|j| reduce(self.net.iter().map(|row| row[j].clone()), u0))
+            .collect();
         BezierCurve::new(points).expect("columns are non-empty and of one dimension")
     }
 
@@ -645,38 +625,17 @@ where
     Ok((m, n, dim))
 }
 
-/// De Casteljau on a flat buffer of `buf.len() / block` "points" of `block` scalars each
-/// (a point's coordinates, or a whole row of a net); the result ends in `buf[..block]`.
-fn casteljau_in_place<T: Scalar>(buf: &mut [T], block: usize, t: &T)
+/// `Σ_i p_i B_i^m(t)` for the `m + 1` points given: de Casteljau's algorithm (1) on a
+/// column of the net, on the stack.
+fn reduce<T: Scalar>(points: impl IntoIterator<Item = Point<T>>, t: &T) -> Point<T>
 where
     for<'a> &'a T: RefOps<T>,
 {
-    let count = buf.len() / block;
-    for r in 1..count {
-        for i in 0..count - r {
-            // b_i ← b_i + t (b_{i+1} − b_i), the step of (1) in text 000
-            let (lo, hi) = buf.split_at_mut((i + 1) * block);
-            for (x, y) in lo[i * block..].iter_mut().zip(&hi[..block]) {
-                let d = y - &*x;
-                *x += &(t * &d);
-            }
-        }
-    }
+    let mut column: SmallVec<[Point<T>; STACK_POINTS]> = points.into_iter().collect();
+    de_casteljau(&mut column, t, |_| {});
+    column.swap_remove(0)
 }
 
-/// The point at `t` of the curve with control points `points` (non-empty, one dimension).
-fn reduce<T: Scalar>(points: &[Point<T>], t: &T) -> Point<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
-    let dim = points[0].dim();
-    let mut buf: Vec<T> = points.iter().flat_map(|p| p.coords().iter().cloned()).collect();
-    casteljau_in_place(&mut buf, dim, t);
-    buf.truncate(dim);
-    Point::new(buf).expect("dimension of a valid point")
-}
-
-/// A row or column of a valid net as a curve.
 fn curve_of<T: Scalar>(points: Vec<Point<T>>) -> BezierCurve<T>
 where
     for<'a> &'a T: RefOps<T>,

@@ -1,0 +1,112 @@
+//! casteljau's generic `f64` code beside the float libraries people use, in one group per
+//! operation so the ratios come from a single run: kurbo, lyon_geom and, at degree 20, a
+//! hand-written de Casteljau on `[[f64; 2]; 21]`. All planar, at t = 0.3.
+//!
+//! `cargo bench --bench peers`
+
+use casteljau::{Bezier, Point2};
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use kurbo::{CubicBez, ParamCurve as _, QuadBez};
+use lyon_geom::{point, CubicBezierSegment, QuadraticBezierSegment};
+
+const T: f64 = 0.3;
+const CUBIC: [[f64; 2]; 4] = [[0.0, 0.0], [1.0, 2.0], [3.0, 2.5], [4.0, 0.5]];
+const QUAD: [[f64; 2]; 3] = [[0.0, 0.0], [1.0, 2.0], [3.0, 0.5]];
+
+fn cubic() -> Bezier<Point2<f64>> {
+    Bezier::from_points(CUBIC.map(Point2::from)).unwrap()
+}
+
+fn kurbo_cubic() -> CubicBez {
+    let [a, b, c, d] = CUBIC.map(|[x, y]| (x, y));
+    CubicBez::new(a, b, c, d)
+}
+
+fn lyon_cubic() -> CubicBezierSegment<f64> {
+    let [a, b, c, d] = CUBIC.map(|[x, y]| point(x, y));
+    CubicBezierSegment {
+        from: a,
+        ctrl1: b,
+        ctrl2: c,
+        to: d,
+    }
+}
+
+fn degree_20() -> [[f64; 2]; 21] {
+    std::array::from_fn(|i| [3.0 * i as f64 / 7.0, ((i * i) % 11) as f64 / 7.0 - 5.0 / 7.0])
+}
+
+/// de Casteljau by hand on a fixed array: the floor for the generic code.
+fn array_casteljau(points: &[[f64; 2]; 21], t: f64) -> [f64; 2] {
+    let mut b = *points;
+    for len in (1..21).rev() {
+        for i in 0..len {
+            let next = b[i + 1];
+            for (a, c) in b[i].iter_mut().zip(next) {
+                *a += t * (c - *a);
+            }
+        }
+    }
+    b[0]
+}
+
+fn peers(c: &mut Criterion) {
+    let (ours, theirs, lyon) = (cubic(), kurbo_cubic(), lyon_cubic());
+    let mut g = c.benchmark_group("cubic_eval");
+    g.bench_function("casteljau", |b| b.iter(|| black_box(&ours).eval(black_box(&T))));
+    g.bench_function("kurbo", |b| b.iter(|| black_box(&theirs).eval(black_box(T))));
+    g.bench_function("lyon", |b| b.iter(|| black_box(&lyon).sample(black_box(T))));
+    g.finish();
+
+    // kurbo has no split at a parameter: its two subsegments are the same curves.
+    let mut g = c.benchmark_group("cubic_split");
+    g.bench_function("casteljau", |b| b.iter(|| black_box(&ours).split_at(black_box(&T))));
+    g.bench_function("kurbo", |b| {
+        b.iter(|| {
+            let (c, t) = (black_box(&theirs), black_box(T));
+            (c.subsegment(0.0..t), c.subsegment(t..1.0))
+        })
+    });
+    g.bench_function("lyon", |b| b.iter(|| black_box(&lyon).split(black_box(T))));
+    g.finish();
+
+    let quad = Bezier::from_points(QUAD.map(Point2::from)).unwrap();
+    let [a, b, c2] = QUAD.map(|[x, y]| (x, y));
+    let kquad = QuadBez::new(a, b, c2);
+    let [a, b, c2] = QUAD.map(|[x, y]| point(x, y));
+    let lquad = QuadraticBezierSegment {
+        from: a,
+        ctrl: b,
+        to: c2,
+    };
+    let mut g = c.benchmark_group("quad_elevate");
+    g.bench_function("casteljau", |b| b.iter(|| black_box(&quad).elevate().unwrap()));
+    g.bench_function("kurbo", |b| b.iter(|| black_box(&kquad).raise()));
+    g.bench_function("lyon", |b| b.iter(|| black_box(&lquad).to_cubic()));
+    g.finish();
+
+    let array = degree_20();
+    let ours = Bezier::from_points(array.map(Point2::from)).unwrap();
+    let lyon_points = array.map(|[x, y]| point(x, y));
+    let mut g = c.benchmark_group("deg20_eval");
+    g.bench_function("casteljau", |b| b.iter(|| black_box(&ours).eval(black_box(&T))));
+    g.bench_function("array", |b| b.iter(|| array_casteljau(black_box(&array), black_box(T))));
+    // Neither kurbo nor lyon_geom has curves above degree 3: lyon's point lerp in the same
+    // de Casteljau loop stands in for them.
+    g.bench_function("lyon", |b| {
+        b.iter(|| {
+            let mut p = *black_box(&lyon_points);
+            let t = black_box(T);
+            for len in (1..21).rev() {
+                for i in 0..len {
+                    p[i] = p[i].lerp(p[i + 1], t);
+                }
+            }
+            p[0]
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, peers);
+criterion_main!(benches);

@@ -1,0 +1,55 @@
+//! The de Casteljau kernel every algorithm runs on: curve evaluation, the scheme (9),
+//! subdivision, rational curves (on their homogeneous points) and both directions of
+//! surfaces (whole rows or columns of the net as one point each).
+//!
+//! It works in place on a column of points and never allocates; [`with_column`] gives it a
+//! buffer on the stack for the polygons met in practice.
+
+use crate::space::VectorSpace;
+
+/// Points kept on the stack by [`with_column`]; longer polygons use one heap buffer.
+pub const STACK_POINTS: usize = 24;
+
+/// One level of the scheme in place: `column[i] ← column[i] + t (column[i+1] − column[i])`
+/// for every `i` but the last, which is left as it was.
+#[inline(always)]
+pub fn casteljau_step<P: VectorSpace>(column: &mut [P], t: &P::Scalar) {
+    for i in 1..column.len() {
+        let (done, rest) = column.split_at_mut(i);
+        done[i - 1].lerp_assign(&rest[0], t);
+    }
+}
+
+/// de Casteljau's algorithm (1) in place on the `n + 1` points of `column`: after it,
+/// `column[0]` is `b(t)`. `each_level` sees column `r` of the scheme (9), `b_0^r … b_{n-r}^r`,
+/// after each level `r = 1..=n`.
+#[inline(always)]
+pub fn de_casteljau<P: VectorSpace>(column: &mut [P], t: &P::Scalar, mut each_level: impl FnMut(&[P])) {
+    for len in (1..column.len()).rev() {
+        casteljau_step(&mut column[..=len], t);
+        each_level(&column[..len]);
+    }
+}
+
+/// Runs `f` on a mutable copy of `points`, on the stack for up to [`STACK_POINTS`] points:
+/// in an array of the exact length up to four (so a cubic's loops unroll), else in an array
+/// of 8, 16 or 24 whose tail repeats the last point (at most twice the points needed).
+#[inline(always)]
+pub fn with_column<P: Clone, R>(points: &[P], f: impl FnOnce(&mut [P]) -> R) -> R {
+    #[inline(always)]
+    fn fixed<P: Clone, R, const N: usize>(points: &[P], f: impl FnOnce(&mut [P]) -> R) -> R {
+        let last = points.len() - 1;
+        let mut column: [P; N] = std::array::from_fn(|i| points[i.min(last)].clone());
+        f(&mut column[..=last])
+    }
+    match points.len() {
+        1 => fixed::<P, R, 1>(points, f),
+        2 => fixed::<P, R, 2>(points, f),
+        3 => fixed::<P, R, 3>(points, f),
+        4 => fixed::<P, R, 4>(points, f),
+        5..=8 => fixed::<P, R, 8>(points, f),
+        9..=16 => fixed::<P, R, 16>(points, f),
+        17..=STACK_POINTS => fixed::<P, R, STACK_POINTS>(points, f),
+        _ => f(&mut points.to_vec()),
+    }
+}

@@ -1,0 +1,75 @@
+//! The `f64` fast path allocates nothing: a counting global allocator around cubic
+//! evaluation, subdivision and elevation.
+
+use casteljau::{Bezier, Point2};
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+
+struct Counting;
+
+thread_local! {
+    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
+}
+
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        ALLOCATIONS.with(|n| n.set(n.get() + 1));
+        System.alloc(layout)
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        System.dealloc(ptr, layout)
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+/// Allocations made by `f` on this thread.
+fn allocations<R>(f: impl FnOnce() -> R) -> (usize, R) {
+    let before = ALLOCATIONS.with(Cell::get);
+    let r = f();
+    (ALLOCATIONS.with(Cell::get) - before, r)
+}
+
+fn cubic() -> Bezier<Point2<f64>> {
+    Bezier::from_points([[0.0, 0.0], [1.0, 2.0], [3.0, 2.5], [4.0, 0.5]].map(Point2::from)).unwrap()
+}
+
+#[test]
+fn cubic_eval_and_split_allocate_nothing() {
+    let c = cubic();
+    let (n, p) = allocations(|| c.eval(&0.3));
+    assert_eq!(n, 0, "eval allocated");
+    let (n, (left, right)) = allocations(|| c.split_at(&0.3));
+    assert_eq!(n, 0, "split_at allocated");
+    assert_eq!(left.points()[3], p);
+    assert_eq!(right.points()[0], p);
+    let quad = Bezier::from_points([[0.0, 0.0], [1.0, 2.0], [3.0, 0.5]].map(Point2::from)).unwrap();
+    let (n, cubic) = allocations(|| quad.elevate().unwrap());
+    assert_eq!(n, 0, "elevate allocated");
+    assert_eq!(cubic.degree(), 3);
+}
+
+#[test]
+fn high_degree_eval_allocates_nothing_below_the_stack_limit() {
+    let c = Bezier::from_points((0..21).map(|i| Point2::new(i as f64, (i * i % 11) as f64))).unwrap();
+    let (n, _) = allocations(|| c.eval(&0.3));
+    assert_eq!(n, 0);
+}
+
+#[test]
+fn the_counter_counts() {
+    let (n, v) = allocations(|| vec![1u8; 100]);
+    assert!(n >= 1);
+    drop(v);
+}
+
+#[test]
+fn runtime_dimension_points_are_inline() {
+    let c: casteljau::BezierCurve<f64> =
+        casteljau::BezierCurve::from_ints(&[&[0, 0], &[1, 2], &[3, 2], &[4, 0]]).unwrap();
+    let (n, _) = allocations(|| c.eval(&0.3));
+    assert_eq!(n, 0, "BezierCurve<f64>::eval allocated");
+    let (n, _) = allocations(|| c.split_at(&0.3));
+    assert_eq!(n, 0, "BezierCurve<f64>::split_at allocated");
+}
