@@ -49,14 +49,50 @@ pub const THEOREMS: &[(&str, &str)] = &[
     ),
 ];
 
+/// Largest degree a theorem is checked for.
+pub const MAX_THEOREM_DEGREE: i64 = 64;
+
+/// The number of elevation steps `r = 0..=R` that `elevation_8` checks for each degree.
+const ELEVATION_STEPS: i64 = 4;
+
+/// The degree range `lo..=hi` of a theorem claim: non-empty, from 0, at most
+/// [`MAX_THEOREM_DEGREE`].
 fn degrees(ctx: &Ctx<'_>) -> Result<(i64, i64)> {
     let text = ctx.claim.degrees.as_deref().unwrap_or("0..=10");
     let r = super::expr::parse_range(&format!("n = {text}"))?;
     let empty = Default::default();
-    Ok((
+    let (lo, hi) = (
         super::expr::eval_int(&r.from, &empty)?,
         super::expr::eval_int(&r.to, &empty)?,
-    ))
+    );
+    if lo < 0 || hi < lo {
+        return Err(Error::Domain(format!(
+            "the degree range {lo}..={hi} is {}: write degrees = \"a..=b\" with 0 ≤ a ≤ b",
+            if lo < 0 { "negative" } else { "empty" }
+        )));
+    }
+    if hi > MAX_THEOREM_DEGREE {
+        return Err(Error::TooLarge {
+            what: "theorem degree",
+            value: format!("{lo}..={hi}"),
+            limit: format!("degrees up to {MAX_THEOREM_DEGREE}"),
+        });
+    }
+    Ok((lo, hi))
+}
+
+/// The finite ranges a theorem claim is checked over, e.g. `n = 0..=10` (and the elevation
+/// steps of `elevation_8`): the scope of its `proved_in_range`.
+pub fn scope(ctx: &Ctx<'_>) -> Result<String> {
+    let (lo, hi) = degrees(ctx)?;
+    let mut s = format!("n = {lo}..={hi}");
+    match ctx.claim.theorem.as_deref() {
+        Some("elevation_8") => s.push_str(&format!(", r = 0..={ELEVATION_STEPS}")),
+        Some("derivative_k") => s.push_str(", k = 1..=n"),
+        Some("affine_invariance") => s.push_str(", in the plane"),
+        _ => {}
+    }
+    Ok(s)
 }
 
 /// One identity over the symbolic polygon `b` of degree `n`.
@@ -197,13 +233,6 @@ pub fn check_theorem(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
     let c = ctx.claim;
     let name = c.need(&c.theorem, "theorem")?;
     let (lo, hi) = degrees(ctx)?;
-    if hi - lo > 64 || hi > 64 {
-        return Err(Error::TooLarge {
-            what: "theorem degree range",
-            value: format!("{lo}..={hi}"),
-            limit: "degrees up to 64".into(),
-        });
-    }
     match name {
         "affine_invariance" => return affine_invariance(lo, hi),
         "convex_hull" => return convex_hull(lo, hi, detail),
