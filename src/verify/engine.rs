@@ -1292,6 +1292,29 @@ pub fn pair_summary(p: &PairProof) -> String {
     s
 }
 
+/// The estimated work of checking the chain `sides` for every instance of the claim's
+/// ranges, added to `before` (the work of earlier parts of the same claim); an error naming
+/// [`MAX_WORK`] as soon as the sum exceeds it, before anything is evaluated.
+pub fn chain_work<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], before: u128) -> Result<u128>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    let mut work = before;
+    for inst in &ctx.instances()? {
+        for pair in sides.windows(2) {
+            work = work.saturating_add(estimate_work::<T>(ctx, &pair[0], &pair[1], inst)?);
+            if work > MAX_WORK {
+                return Err(Error::TooLarge {
+                    what: "estimated work of the claim",
+                    value: format!("more than {work} units"),
+                    limit: format!("MAX_WORK = {MAX_WORK} units: exact evaluations × (1 + degree)²"),
+                });
+            }
+        }
+    }
+    Ok(work)
+}
+
 /// Checks a chain `e0 = e1 = …` for every instance of the integer ranges.
 pub fn check_chain<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Result<Checked>
 where
@@ -1306,22 +1329,7 @@ where
     let instances = ctx.instances()?;
     // Bounded work: the whole claim's work is estimated (from the derived degrees) before
     // anything is evaluated.
-    let mut work: u128 = 0;
-    for inst in &instances {
-        for pair in sides.windows(2) {
-            work = work.saturating_add(estimate_work::<T>(ctx, &pair[0], &pair[1], inst)?);
-            if work > MAX_WORK {
-                return Err(Error::TooLarge {
-                    what: "estimated work of the claim",
-                    value: format!("more than {work} units"),
-                    limit: format!("MAX_WORK = {MAX_WORK} units: exact evaluations × (1 + degree)²"),
-                });
-            }
-        }
-    }
-    if std::env::var_os("CASTELJAU_WORK").is_some() {
-        eprintln!("work {} {work}", ctx.claim.id);
-    }
+    chain_work::<T>(ctx, sides, 0)?;
     let mut steps = Vec::new();
     let mut max_need: BTreeMap<String, u64> = BTreeMap::new();
     let mut evaluations = 0;

@@ -8,7 +8,7 @@
 //! invariance, the convex hull property, Theorem 1.2) have their own exact checks here.
 
 use super::claims::{Claim, PolygonSpec};
-use super::engine::{check_chain, Checked, Ctx};
+use super::engine::{chain_work, check_chain, Checked, Ctx, MAX_WORK};
 use super::Verdict;
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
@@ -228,6 +228,10 @@ fn parts_of(name: &str, kmax: i64) -> Option<Vec<(i64, Part)>> {
     })
 }
 
+fn sub_sides(sub: &Ctx<'_>, cl: &Claim) -> Result<Vec<super::expr::Expr>> {
+    cl.chain.iter().flatten().map(|s| sub.expr(s)).collect()
+}
+
 /// `kind = "theorem"`.
 pub fn check_theorem(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
     let c = ctx.claim;
@@ -245,8 +249,10 @@ pub fn check_theorem(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
             THEOREMS.iter().map(|t| t.0).collect::<Vec<_>>().join(", ")
         ))
     })?;
-    let mut certs = Vec::new();
-    let mut steps = Vec::new();
+    // Every part as an identity claim over the symbolic polygon `b` of degree `n`; the work
+    // of all parts is estimated before any is checked.
+    let mut prepared = Vec::new();
+    let mut work = 0;
     for (min_n, p) in parts {
         let from = lo.max(min_n);
         if from > hi {
@@ -263,8 +269,19 @@ pub fn check_theorem(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
         ranges.extend(p.ranges.iter().cloned());
         cl.ranges = Some(ranges);
         cl.vars = Some(p.vars.iter().map(|s| s.to_string()).collect());
-        let sub = Ctx::new(&cl)?;
-        let sides = p.chain.iter().map(|s| sub.expr(s)).collect::<Result<Vec<_>>>()?;
+        cl.chain = Some(p.chain.clone());
+        prepared.push((p, cl));
+    }
+    for (_, cl) in &prepared {
+        let sub = Ctx::new(cl)?;
+        let sides = sub_sides(&sub, cl)?;
+        work = chain_work::<Q>(&sub, &sides, work)?;
+    }
+    let mut certs = Vec::new();
+    let mut steps = Vec::new();
+    for (p, cl) in &prepared {
+        let sub = Ctx::new(cl)?;
+        let sides = sub_sides(&sub, cl)?;
         let out = check_chain::<Q>(&sub, &sides, detail)?;
         if detail {
             steps.push(format!("{}: {}", p.label, p.chain.join(" = ")));
@@ -291,6 +308,19 @@ pub fn check_theorem(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
     Ok(out)
 }
 
+/// The sum of the estimated work of each degree, or an error naming [`MAX_WORK`].
+fn within_work_limit(per_degree: impl Iterator<Item = u128>) -> Result<()> {
+    let work = per_degree.fold(0u128, u128::saturating_add);
+    if work > MAX_WORK {
+        return Err(Error::TooLarge {
+            what: "estimated work of the claim",
+            value: format!("{work} units"),
+            limit: format!("MAX_WORK = {MAX_WORK} units"),
+        });
+    }
+    Ok(())
+}
+
 fn unit_polygon(n: usize, dim: usize, k: usize, coord: usize) -> Result<BezierCurve<Q>> {
     let pts = (0..=n)
         .map(|i| {
@@ -315,6 +345,11 @@ fn params(d: usize) -> Vec<Q> {
 /// in `c`, so it suffices to check matrix units `A = E_rs` with `c = 0` on the unit polygons,
 /// and `A = 0` with translations `c = e_r` (on the zero polygon), each at `n + 1` parameters.
 fn affine_invariance(lo: i64, hi: i64) -> Result<Checked> {
+    // 4 matrix units × 2(n+1) unit polygons and 2 translations, at n+1 parameters, 2 sides.
+    within_work_limit((lo..=hi).map(|n| {
+        let k = n as u128 + 1;
+        (8 * k * k + 2 * k) * 2 * k * k
+    }))?;
     let mut evaluations = 0;
     let dim = 2;
     for n in lo.max(0) as usize..=hi as usize {
@@ -372,6 +407,8 @@ fn affine_invariance(lo: i64, hi: i64) -> Result<Checked> {
 /// points), so `b(t) = Σ B_i^n(t) b_i` is a convex combination; and the library's exact hull
 /// test finds convex weights for sample curve points.
 fn convex_hull(lo: i64, hi: i64, detail: bool) -> Result<Checked> {
+    // The exact hull tests dominate: about (n+1)⁴ units each (measured).
+    within_work_limit((lo..=hi).map(|n| 4 * (n as u128 + 1).pow(4)))?;
     let mut steps = Vec::new();
     let mut hull_checks = 0;
     for n in lo.max(0) as usize..=hi as usize {
