@@ -11,6 +11,8 @@
 //!   denominator vanishes; identities affine in the control points on the zero and unit
 //!   polygons; two parameters on a grid; claims about arbitrary vectors by exact symbolic
 //!   expansion ([`poly`]).
+//! - **proved_in_range**: every case of the claim's finite integer ranges (`for`, a theorem's
+//!   `degrees`) proved as above; the ranges are reported with the verdict. Never "proved".
 //! - **verified**: bounded evidence for a statement about a limit, saying exactly what was checked.
 //! - **fails**: an exact counterexample (the parameters and both sides' values).
 //!
