@@ -1801,3 +1801,58 @@ pub fn check_implies(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::claims::parse_file;
+    use super::*;
+    use std::path::Path;
+
+    fn claim(body: &str) -> Claim {
+        parse_file(
+            &format!("[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\nlhs = \"1\"\nrhs = \"1\"\n{body}"),
+            Path::new("t.toml"),
+        )
+        .unwrap()
+        .claim[0]
+            .clone()
+    }
+
+    #[test]
+    fn ranges_enumerate_every_case_and_refuse_empty_ones() {
+        let c = claim("for = [\"n = 0..=2\", \"j = 0..=n\"]");
+        let ctx = Ctx::new(&c).unwrap();
+        assert_eq!(ctx.instances().unwrap().len(), 6);
+        assert_eq!(ctx.range_text(), "n = 0..=2, j = 0..=n");
+        let c = claim("for = [\"n = 0..=2\", \"j = 1..=n\"]");
+        let err = Ctx::new(&c).unwrap().instances().unwrap_err().to_string();
+        assert!(err.contains("j = 1..=0 is empty (at n = 0)"), "{err}");
+    }
+
+    #[test]
+    fn unknown_names_are_errors_when_the_parameters_are_listed() {
+        let c = claim("vars = [\"t\"]\nsymbols = [\"k\"]");
+        let ctx = Ctx::new(&c).unwrap();
+        assert!(ctx.expr("t + k").is_ok());
+        assert!(ctx.expr("sum(j, 0, 2, j t)").is_ok());
+        let err = ctx.expr("t + q").unwrap_err().to_string();
+        assert!(err.contains("unknown name 'q'"), "{err}");
+        // Without `vars`, free names are the parameters (documented).
+        let c = claim("");
+        assert!(Ctx::new(&c).unwrap().expr("t + q").is_ok());
+    }
+
+    #[test]
+    fn the_work_estimate_grows_with_degree_and_basis() {
+        let c = claim("polygon = { name = \"b\", degree = \"3\" }");
+        let ctx = Ctx::new(&c).unwrap();
+        let (l, r) = (ctx.expr("b(t)").unwrap(), ctx.expr("bsum(b, t)").unwrap());
+        let ints = BTreeMap::new();
+        let w = estimate_work::<BigRational>(&ctx, &l, &r, &ints).unwrap();
+        // 4 points × 5 basis polygons × 2 sides × (1 + 3 + 3)²
+        assert_eq!(w, 4 * 5 * 2 * 49);
+        let big = ctx.expr("(1 + t)^4096").unwrap();
+        let w = estimate_work::<BigRational>(&ctx, &big, &big, &ints).unwrap();
+        assert!(w > MAX_WORK, "{w}");
+    }
+}

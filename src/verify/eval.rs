@@ -927,6 +927,25 @@ mod tests {
     }
 
     #[test]
+    fn composed_bounds_keep_the_control_point_degree() {
+        let cp = Deg::control_point();
+        // A polynomial of degree 3 at a value of degree 1 in the control points: degree 3.
+        assert_eq!(cp.compose(3).poly, 3);
+        assert_eq!(cp.compose(3).times_control_point().poly, 4);
+        assert_eq!(Deg::var("t").compose(3).poly, 0);
+        assert_eq!(Deg::var("t").compose(3).times_control_point().poly, 1);
+        // Composition multiplies the inner bounds; it never resets them.
+        let g = Deg::var("t").mul(&cp);
+        let c = g.compose(2);
+        assert_eq!((c.get("t"), c.poly), ((2, 0), 2));
+        assert!(
+            Deg::var("t").div(&cp).is_err(),
+            "dividing by control points is not affine"
+        );
+        assert_eq!(cp.pow(3).unwrap().poly, 3);
+    }
+
+    #[test]
     fn degree_bounds() {
         assert_eq!(deg("(2t-1)^3 + 2t").get("t"), (3, 0));
         assert_eq!(deg("B(2, 5, t)").get("t"), (5, 0));

@@ -858,7 +858,7 @@ pub fn dependency_order(defs: Vec<Definition>) -> Result<Vec<Definition>> {
     while !left.is_empty() {
         let ready = left
             .iter()
-            .position(|d| left.iter().all(|o| std::ptr::eq(o, d) || !uses(d, o)))
+            .position(|d| left.iter().all(|o| !uses(d, o)))
             .ok_or_else(|| {
                 let names: Vec<&str> = left.iter().map(|d| d.name.as_str()).collect();
                 Error::Domain(format!(
@@ -1269,6 +1269,59 @@ mod tests {
         assert_eq!(e.to_string(), "2/(n + 1)*b[2 - 1] + j/(n + 1)*b[j - 1]");
         let dd = expand_diffs(&p("diff(t^3, t)")).unwrap();
         assert!(dd.to_string().contains("__dpow(t, 3, 1)"), "{dd}");
+    }
+
+    #[test]
+    fn substitution_renames_a_binder_instead_of_capturing() {
+        // e(x) = sum(j, 0, 1, x) applied to j: the inner j must not capture the argument.
+        let body = p("sum(j, 0, 1, x)");
+        let out = substitute(&body, &["x".to_string()], &[p("j")]);
+        assert_eq!(out.to_string(), "sum(j_1, 0, 1, j)");
+        // A binder the argument does not mention is kept; a shadowed parameter is not replaced.
+        assert_eq!(
+            substitute(&body, &["x".to_string()], &[p("k")]).to_string(),
+            "sum(j, 0, 1, k)"
+        );
+        assert_eq!(
+            substitute(&p("sum(x, 0, 1, x)"), &["x".to_string()], &[p("j")]).to_string(),
+            "sum(x, 0, 1, x)"
+        );
+        // The fresh name avoids every name in sight.
+        let out = substitute(&p("sum(j, 0, j_1, x + j_1)"), &["x".to_string()], &[p("j")]);
+        assert_eq!(out.to_string(), "sum(j_2, 0, j_1, j + j_1)");
+    }
+
+    #[test]
+    fn expansion_renames_a_binder_a_definition_uses() {
+        let known = ["D".to_string()];
+        let d = parse_definition("D = t + 1", &known).unwrap();
+        let e = expand(&parse("sum(t, 0, 1, D)", &known).unwrap(), &[d]).unwrap();
+        assert_eq!(e.to_string(), "sum(t_1, 0, 1, t + 1)");
+    }
+
+    #[test]
+    fn definitions_are_ordered_by_dependency() {
+        let known: Vec<String> = ["D", "F", "G"].iter().map(|s| s.to_string()).collect();
+        let defs = vec![
+            parse_definition("D = diff(F, t)", &known).unwrap(),
+            parse_definition("F = G^2", &known).unwrap(),
+            parse_definition("G = t + 1", &known).unwrap(),
+        ];
+        let names: Vec<String> = dependency_order(defs).unwrap().into_iter().map(|d| d.name).collect();
+        assert_eq!(names, ["G", "F", "D"]);
+        let cyclic = vec![
+            parse_definition("F = G", &known).unwrap(),
+            parse_definition("G = F + 1", &known).unwrap(),
+        ];
+        assert!(dependency_order(cyclic).unwrap_err().to_string().contains("circular"));
+        let selfref = vec![parse_definition("F = F + 1", &known).unwrap()];
+        assert!(dependency_order(selfref).is_err());
+        // A parameter named like another definition is the parameter.
+        let defs = vec![
+            parse_definition("e(F) = F + 1", &known).unwrap(),
+            parse_definition("F = e(2)", &known).unwrap(),
+        ];
+        assert!(dependency_order(defs).is_ok());
     }
 
     #[test]

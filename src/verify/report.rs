@@ -275,3 +275,54 @@ pub(super) fn explain_text(f: &ClaimFile, c: &Claim, checked: &Checked) -> Strin
     }
     s
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn outcome(id: &str, verdict: Verdict, range: Option<&str>, expect: Verdict) -> ClaimOutcome {
+        ClaimOutcome {
+            id: id.into(),
+            source: "s".into(),
+            statement: "s".into(),
+            verdict,
+            range: range.map(String::from),
+            certificate: "c".into(),
+            expect,
+            file: "f.toml".into(),
+            text: "t.txt".into(),
+            corrects: None,
+            note: None,
+        }
+    }
+
+    #[test]
+    fn every_report_shows_the_scope() {
+        let r = Report {
+            outcomes: vec![
+                outcome("a", Verdict::Proved, None, Verdict::Proved),
+                outcome("b", Verdict::ProvedInRange, Some("n = 0..=10"), Verdict::ProvedInRange),
+                outcome("c", Verdict::ProvedInRange, Some("n = 0..=3"), Verdict::Proved),
+                outcome("d", Verdict::Fails, None, Verdict::Fails),
+            ],
+        };
+        let text = r.to_text();
+        assert!(text.contains("[proved] a\n"), "{text}");
+        assert!(text.contains("[proved for n = 0..=10] b\n"), "{text}");
+        assert!(
+            text.contains("[proved for n = 0..=3] c  !! MISMATCH: expected proved"),
+            "{text}"
+        );
+        assert!(
+            text.contains("1 proved, 2 proved in range, 0 verified, 1 fail"),
+            "{text}"
+        );
+        let s = &r.summaries()[0];
+        assert_eq!((s.proved, s.proved_in_range, s.fails, s.mismatches), (1, 2, 1, 1));
+        let json = r.to_json();
+        assert_eq!(json["claims"][1]["verdict"], "proved_in_range");
+        assert_eq!(json["claims"][1]["range"], "n = 0..=10");
+        assert!(json["claims"][0].get("range").is_none());
+        assert_eq!(json["summary"]["proved_in_range"], 2);
+    }
+}

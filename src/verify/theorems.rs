@@ -560,3 +560,51 @@ pub fn check_convergence(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
     out.steps = lines;
     Ok(out)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::claims::parse_file;
+    use super::*;
+    use std::path::Path;
+
+    fn claim(degrees: &str, theorem: &str) -> Claim {
+        parse_file(
+            &format!(
+                "[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"theorem\"\ntheorem = \"{theorem}\"\ndegrees = \"{degrees}\""
+            ),
+            Path::new("t.toml"),
+        )
+        .unwrap()
+        .claim[0]
+            .clone()
+    }
+
+    #[test]
+    fn the_scope_names_every_range_checked() {
+        let c = claim("0..=6", "elevation_8");
+        assert_eq!(scope(&Ctx::new(&c).unwrap()).unwrap(), "n = 0..=6, r = 0..=4");
+        let c = claim("2..=5", "derivative");
+        assert_eq!(scope(&Ctx::new(&c).unwrap()).unwrap(), "n = 2..=5");
+    }
+
+    #[test]
+    fn degree_ranges_are_checked() {
+        for (bad, want) in [
+            ("5..=3", "empty"),
+            ("-2..=3", "negative"),
+            ("0..=-1", "empty"),
+            ("0..=65", "64"),
+        ] {
+            let c = claim(bad, "convex_hull");
+            let err = degrees(&Ctx::new(&c).unwrap()).unwrap_err().to_string();
+            assert!(err.contains(want), "{bad}: {err}");
+        }
+    }
+
+    #[test]
+    fn work_beyond_the_limit_is_refused_before_computing() {
+        assert!(within_work_limit([MAX_WORK].into_iter()).is_ok());
+        let err = within_work_limit([MAX_WORK, 1].into_iter()).unwrap_err().to_string();
+        assert!(err.contains("MAX_WORK"), "{err}");
+    }
+}
