@@ -5,6 +5,7 @@
 use super::claims::{Claim, CurveSpec, Number, SurfaceSpec};
 use super::eval::{Alg, Deg, Env, Evaluator, Value, VarEnv};
 use super::expr::{self, check_index, parse, parse_definition, parse_range, Definition, Expr, IntRange};
+use super::methods::{NetMethod, PolygonMethod};
 use super::poly::{set_names, Poly, RatFunc};
 use super::Verdict;
 use crate::curve::BezierCurve;
@@ -66,7 +67,8 @@ impl<'c> Ctx<'c> {
     /// Parses the claim's shared fields.
     pub fn new(claim: &'c Claim) -> Result<Self> {
         let mut known = claim.known_names();
-        known.extend(POLYGON_METHODS.iter().chain(NET_METHODS).map(|s| s.to_string()));
+        known.extend(PolygonMethod::ALL.iter().map(|m| m.name().to_string()));
+        known.extend(NetMethod::ALL.iter().map(|m| m.name().to_string()));
         let parsed = claim
             .defs
             .iter()
@@ -394,8 +396,8 @@ where
             return Ok(Some(Value::V(eval_net(net, &u, &v)?.into_coords())));
         }
         if let Some((pname, coeffs)) = &self.polygon {
-            if let Some(v) = polygon_method(pname, coeffs, name, args, ev)? {
-                return Ok(Some(v));
+            if let Some(m) = PolygonMethod::of_call(name, args, pname)? {
+                return Ok(Some(Value::S(m.value(coeffs, args, ev)?)));
             }
             if pname == base {
                 let pts = coeffs
@@ -409,8 +411,8 @@ where
             }
         }
         if let Some((nname, net)) = &self.net {
-            if let Some(v) = net_method(nname, net, name, args, ev)? {
-                return Ok(Some(v));
+            if let Some(m) = NetMethod::of_call(name, args, nname)? {
+                return Ok(Some(Value::S(m.value(net, args, ev)?)));
             }
             if nname == base {
                 if args.len() != 2 || order > 0 {
@@ -476,170 +478,6 @@ where
         }
         Ok(None)
     }
-}
-
-/// The library's operations on the symbolic polygon, callable in theorem identities:
-/// `elev(b, r, t)` (elevate_by(r), evaluated), `elevp(b, r, i)` (its i-th point),
-/// `steps(b, r, t)` (elevate_steps), `left(b, t0, t)`, `right(b, t0, t)` (split_at),
-/// `leftp(b, t0, r)`, `rightp(b, t0, r)` (their points), `deriv(b, k, t)` (derivative(k)),
-/// `derivp(b, k, j)`, `bsum(b, t)` (eval_bernstein).
-pub const POLYGON_METHODS: &[&str] = &[
-    "elev", "elevp", "steps", "left", "right", "leftp", "rightp", "deriv", "derivp", "bsum",
-];
-
-fn polygon_method<T: Exact>(
-    pname: &str,
-    coeffs: &[T],
-    name: &str,
-    args: &[Expr],
-    ev: &mut Evaluator<'_, T>,
-) -> Result<Option<Value<T>>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
-    if !POLYGON_METHODS.contains(&name) || !matches!(args.first(), Some(Expr::Var(v)) if v == pname) {
-        return Ok(None);
-    }
-    if args.len() != 3 && name != "bsum" || name == "bsum" && args.len() != 2 {
-        return Err(Error::Domain(format!("wrong number of arguments to {name}")));
-    }
-    let pts = coeffs
-        .iter()
-        .map(|c| Point::new(vec![c.clone()]))
-        .collect::<Result<_>>()?;
-    let c = BezierCurve::new(pts)?;
-    let pick = |curve: &BezierCurve<T>, i: i64| -> T {
-        usize::try_from(i)
-            .ok()
-            .and_then(|i| curve.points().get(i))
-            .map_or_else(T::zero, |p| p.coords()[0].clone())
-    };
-    let nonneg = |k: i64| -> Result<usize> {
-        usize::try_from(k).map_err(|_| Error::Domain(format!("{name}: negative order {k}")))
-    };
-    let v = match name {
-        "bsum" => c.eval_bernstein(&ev.scalar(&args[1])?).coords()[0].clone(),
-        "elev" | "steps" | "elevp" => {
-            let r = nonneg(ev.int(&args[1])?)?;
-            let e = if name == "steps" {
-                c.elevate_steps(r)?
-            } else {
-                c.elevate_by(r)?
-            };
-            if name == "elevp" {
-                pick(&e, ev.int(&args[2])?)
-            } else {
-                e.eval(&ev.scalar(&args[2])?).coords()[0].clone()
-            }
-        }
-        "left" | "right" | "leftp" | "rightp" => {
-            let t0 = ev.scalar(&args[1])?;
-            let (l, r) = c.split_at(&t0);
-            let part = if name.starts_with("left") { l } else { r };
-            if name.ends_with('p') {
-                pick(&part, ev.int(&args[2])?)
-            } else {
-                part.eval(&ev.scalar(&args[2])?).coords()[0].clone()
-            }
-        }
-        _ => {
-            let k = nonneg(ev.int(&args[1])?)?;
-            if k > c.degree() {
-                T::zero()
-            } else {
-                let d = c.derivative(k)?;
-                if name == "derivp" {
-                    pick(&d, ev.int(&args[2])?)
-                } else {
-                    d.eval(&ev.scalar(&args[2])?).coords()[0].clone()
-                }
-            }
-        }
-    };
-    Ok(Some(Value::S(v)))
-}
-
-/// Degree bounds of [`POLYGON_METHODS`] for a polygon of degree `n`: the library's results are
-/// Bézier curves whose degree is read off the library itself (on the zero polygon), evaluated
-/// by de Casteljau (degree ≤ that degree in `t`); split points are de Casteljau points of
-/// `t0` (degree ≤ n in `t0`).
-fn polygon_method_deg(n: u64, name: &str, args: &[Expr], ev: &mut Evaluator<'_, Deg>) -> Result<Deg> {
-    if args.len() != 3 && name != "bsum" || name == "bsum" && args.len() != 2 {
-        return Err(Error::Domain(format!("wrong number of arguments to {name}")));
-    }
-    let zero: BezierCurve<BigRational> = BezierCurve::new(vec![Point::origin(1); n as usize + 1])?;
-    let d = match name {
-        "bsum" => ev.scalar(&args[1])?.compose(n),
-        "elev" | "steps" => {
-            let r = ev.int(&args[1])?.max(0) as usize;
-            let deg = zero.elevate_by(r)?.degree() as u64;
-            ev.scalar(&args[2])?.compose(deg)
-        }
-        "elevp" | "derivp" => Deg::default(),
-        "left" | "right" => {
-            let t0 = ev.scalar(&args[1])?.compose(n);
-            let deg = zero.split_at(&BigRational::zero()).0.degree() as u64;
-            t0.mul(&ev.scalar(&args[2])?.compose(deg))
-        }
-        "leftp" | "rightp" => ev.scalar(&args[1])?.compose(n),
-        _ => {
-            let k = ev.int(&args[1])?.max(0) as u64;
-            if k > n {
-                Deg::default()
-            } else {
-                let deg = zero.derivative(k as usize)?.degree() as u64;
-                ev.scalar(&args[2])?.compose(deg)
-            }
-        }
-    };
-    Ok(d.times_control_point())
-}
-
-/// The library's operations on the symbolic net: `vfirst(b, u, v)` (eval_v_first),
-/// `sbsum(b, u, v)` (eval_bernstein), `isou(b, u0, v)` (iso_u(u0) at v), `isov(b, v0, u)`
-/// (iso_v(v0) at u), `bnd(b, k, s)` (boundary curve k = 0..3 at s), `corner(b, k, 0)`.
-pub const NET_METHODS: &[&str] = &["vfirst", "sbsum", "isou", "isov", "bnd", "corner"];
-
-fn net_method<T: Exact>(
-    nname: &str,
-    net: &[Vec<T>],
-    name: &str,
-    args: &[Expr],
-    ev: &mut Evaluator<'_, T>,
-) -> Result<Option<Value<T>>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
-    if !NET_METHODS.contains(&name) || !matches!(args.first(), Some(Expr::Var(v)) if v == nname) {
-        return Ok(None);
-    }
-    if args.len() != 3 {
-        return Err(Error::Domain(format!("{name} takes 3 arguments")));
-    }
-    let pts: Vec<Vec<Point<T>>> = net
-        .iter()
-        .map(|r| r.iter().map(|c| Point::new(vec![c.clone()])).collect::<Result<_>>())
-        .collect::<Result<_>>()?;
-    let s = BezierSurface::new(pts)?;
-    let p = match name {
-        "vfirst" => s.eval_v_first(&ev.scalar(&args[1])?, &ev.scalar(&args[2])?),
-        "sbsum" => s.eval_bernstein(&ev.scalar(&args[1])?, &ev.scalar(&args[2])?),
-        "isou" => s.iso_u(&ev.scalar(&args[1])?).eval(&ev.scalar(&args[2])?),
-        "isov" => s.iso_v(&ev.scalar(&args[1])?).eval(&ev.scalar(&args[2])?),
-        "bnd" | "corner" => {
-            let k = usize::try_from(ev.int(&args[1])?)
-                .ok()
-                .filter(|k| *k < 4)
-                .ok_or_else(|| Error::Domain(format!("{name}: k must be 0, 1, 2 or 3")))?;
-            if name == "bnd" {
-                s.boundary()[k].eval(&ev.scalar(&args[2])?)
-            } else {
-                s.corners()[k].clone()
-            }
-        }
-        _ => unreachable!("checked against NET_METHODS"),
-    };
-    Ok(Some(Value::S(p.coords()[0].clone())))
 }
 
 fn one_index(name: &str, idx: &[i64]) -> Result<()> {
@@ -772,8 +610,8 @@ impl Env<Deg> for DegEnv {
             return Ok(Some(Value::V(vec![d; dim])));
         }
         if let Some((pname, n)) = &self.polygon {
-            if POLYGON_METHODS.contains(&name) && matches!(args.first(), Some(Expr::Var(v)) if v == pname) {
-                return Ok(Some(Value::S(polygon_method_deg(*n, name, args, ev)?)));
+            if let Some(m) = PolygonMethod::of_call(name, args, pname)? {
+                return Ok(Some(Value::S(m.degree(*n, args, ev)?)));
             }
             if pname == base {
                 let d = match args.len() {
@@ -798,28 +636,8 @@ impl Env<Deg> for DegEnv {
             return Ok(Some(Value::V(vec![d; dim])));
         }
         if let Some((nname, m, n)) = &self.net {
-            if NET_METHODS.contains(&name) && matches!(args.first(), Some(Expr::Var(v)) if v == nname) {
-                if args.len() != 3 {
-                    return Err(Error::Domain(format!("{name} takes 3 arguments")));
-                }
-                let (m, n) = (*m, *n);
-                let d = match name {
-                    "vfirst" | "sbsum" => {
-                        let (u, v) = (ev.scalar(&args[1])?, ev.scalar(&args[2])?);
-                        u.compose(m).mul(&v.compose(n))
-                    }
-                    "isou" => {
-                        let (u0, v) = (ev.scalar(&args[1])?, ev.scalar(&args[2])?);
-                        u0.compose(m).mul(&v.compose(n))
-                    }
-                    "isov" => {
-                        let (v0, u) = (ev.scalar(&args[1])?, ev.scalar(&args[2])?);
-                        v0.compose(n).mul(&u.compose(m))
-                    }
-                    "bnd" => ev.scalar(&args[2])?.compose(m.max(n)),
-                    _ => Deg::default(),
-                };
-                return Ok(Some(Value::S(d.times_control_point())));
+            if let Some(meth) = NetMethod::of_call(name, args, nname)? {
+                return Ok(Some(Value::S(meth.degree(*m, *n, args, ev)?)));
             }
             if nname == base {
                 return Ok(Some(Value::S(surface(ev, *m, *n)?.times_control_point())));

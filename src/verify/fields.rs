@@ -7,8 +7,8 @@
 //! claim about Bernstein polynomials into a claim about something else.
 
 use super::claims::Claim;
-use super::engine::{NET_METHODS, POLYGON_METHODS};
 use super::expr::FUNCTIONS;
+use super::methods::{NetMethod, PolygonMethod};
 use crate::error::{Error, Result};
 
 /// The fields every kind has.
@@ -87,8 +87,8 @@ fn present(c: &Claim) -> Vec<&'static str> {
 /// Whether `name` is reserved: a built-in function, a library operation, or internal.
 pub fn is_reserved(name: &str) -> bool {
     FUNCTIONS.contains(&name)
-        || POLYGON_METHODS.contains(&name)
-        || NET_METHODS.contains(&name)
+        || PolygonMethod::parse(name).is_some()
+        || NetMethod::parse(name).is_some()
         || INTERNAL.contains(&name)
 }
 

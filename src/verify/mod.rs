@@ -38,6 +38,7 @@ pub mod eval;
 pub mod expr;
 pub mod fields;
 pub mod kinds;
+pub mod methods;
 pub mod poly;
 mod report;
 pub mod theorems;

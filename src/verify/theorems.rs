@@ -4,7 +4,7 @@
 //! Most theorems are identities that are affine in the control points; they are written as
 //! identity claims over a symbolic polygon `b` (so the prover checks them on the zero and unit
 //! polygons, at enough parameters for the degree it derives) and call the library through
-//! `elev`, `left`, `deriv`, … (see [`super::engine::POLYGON_METHODS`]). The others (affine
+//! `elev`, `left`, `deriv`, … (see [`super::methods::PolygonMethod`]). The others (affine
 //! invariance, the convex hull property, Theorem 1.2) have their own exact checks here.
 
 use super::claims::{Claim, PolygonSpec};
