@@ -795,6 +795,21 @@ pub fn prove_equal<T: Exact>(
 where
     for<'a> &'a T: RefOps<T>,
 {
+    let prepared = prepare::<T>(ctx, lhs, rhs, ints, detail)?;
+    prove_prepared(ctx, lhs, rhs, ints, detail, prepared)
+}
+
+fn prove_prepared<T: Exact>(
+    ctx: &Ctx<'_>,
+    lhs: &Expr,
+    rhs: &Expr,
+    ints: &BTreeMap<String, i64>,
+    detail: bool,
+    prepared: Prepared<T>,
+) -> Result<PairResult>
+where
+    for<'a> &'a T: RefOps<T>,
+{
     let Prepared {
         params,
         mut num,
@@ -802,7 +817,7 @@ where
         needs,
         mut proof,
         ..
-    } = prepare::<T>(ctx, lhs, rhs, ints, detail)?;
+    } = prepared;
 
     // Choose the parameter sets and check on the grid; a point where some denominator
     // vanishes is replaced by the next candidate of its (last) parameter.
@@ -1122,15 +1137,19 @@ where
         for pair in sides.windows(2) {
             work = work.saturating_add(estimate_work::<T>(ctx, &pair[0], &pair[1], inst)?);
             if work > MAX_WORK {
-                return Err(Error::TooLarge {
-                    what: "estimated work of the claim",
-                    value: format!("more than {work} units"),
-                    limit: format!("MAX_WORK = {MAX_WORK} units: exact evaluations × (1 + degree)²"),
-                });
+                return Err(too_much_work(work));
             }
         }
     }
     Ok(work)
+}
+
+fn too_much_work(work: u128) -> Error {
+    Error::TooLarge {
+        what: "estimated work of the claim",
+        value: format!("more than {work} units"),
+        limit: format!("MAX_WORK = {MAX_WORK} units: exact evaluations × (1 + degree)²"),
+    }
 }
 
 /// Checks a chain `e0 = e1 = …` for every instance of the integer ranges.
@@ -1145,9 +1164,21 @@ where
         )));
     }
     let instances = ctx.instances()?;
-    // Bounded work: the whole claim's work is estimated (from the derived degrees) before
-    // anything is evaluated.
-    chain_work::<T>(ctx, sides, 0)?;
+    // Bounded work: every pair of every case is prepared (degrees derived, basis chosen) and
+    // the whole claim's work estimated before anything is evaluated.
+    let mut plans = Vec::with_capacity(instances.len() * (sides.len() - 1));
+    let mut work: u128 = 0;
+    for inst in &instances {
+        for pair in sides.windows(2) {
+            let plan = prepare::<T>(ctx, &pair[0], &pair[1], inst, detail)?;
+            work = work.saturating_add(plan.work);
+            if work > MAX_WORK {
+                return Err(too_much_work(work));
+            }
+            plans.push(plan);
+        }
+    }
+    let mut plans = plans.into_iter();
     let mut steps = Vec::new();
     let mut max_need: BTreeMap<String, u64> = BTreeMap::new();
     let mut evaluations = 0;
@@ -1157,7 +1188,8 @@ where
     let mut polygons = (usize::MAX, 0usize);
     for inst in &instances {
         for (k, pair) in sides.windows(2).enumerate() {
-            match prove_equal::<T>(ctx, &pair[0], &pair[1], inst, detail)? {
+            let plan = plans.next().expect("one plan per case and pair");
+            match prove_prepared::<T>(ctx, &pair[0], &pair[1], inst, detail, plan)? {
                 PairResult::Fails(cx) => {
                     let which = if sides.len() > 2 {
                         format!("step {} ('{}' = '{}') ", k + 1, pair[0], pair[1])
