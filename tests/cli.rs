@@ -190,7 +190,15 @@ fn prove_reports_and_sets_the_status() {
         for field in ["id", "source", "statement", "verdict", "certificate", "expect"] {
             assert!(claim[field].is_string(), "claim without {field}: {claim}");
         }
+        // Exactly one of four verdicts; a range exactly on proved_in_range.
+        let verdict = claim["verdict"].as_str().unwrap();
+        assert!(
+            ["proved", "proved_in_range", "verified", "fails"].contains(&verdict),
+            "{claim}"
+        );
+        assert_eq!(claim["range"].is_string(), verdict == "proved_in_range", "{claim}");
     }
+    assert_eq!(report["summary"]["proved_in_range"].as_u64(), Some(37));
     // progress goes to stderr only on a terminal, never into a piped run
     assert!(out.stderr.is_empty());
 
@@ -223,4 +231,42 @@ fn prove_reports_and_sets_the_status() {
     let err = fails(&["prove", empty.to_str().unwrap()]);
     assert!(err.contains("no claim files"), "{err}");
     std::fs::remove_dir_all(&empty).unwrap();
+}
+
+#[test]
+fn prove_refuses_endless_empty_and_unbounded_claim_files() {
+    // An endless file is refused before it is read whole; an empty one is not an empty success.
+    let err = fails(&["prove", "/dev/zero"]);
+    assert!(err.contains("claim file is too large"), "{err}");
+    let err = fails(&["prove", "/dev/null"]);
+    assert!(err.contains("no claims"), "{err}");
+    let dir = std::env::temp_dir().join(format!("casteljau-cli-bounds-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let empty = dir.join("empty.toml");
+    std::fs::write(&empty, "").unwrap();
+    let err = fails(&["prove", empty.to_str().unwrap()]);
+    assert!(err.contains("no claims"), "{err}");
+    // Unbounded work is refused at once, naming the limit.
+    let big = dir.join("big.toml");
+    std::fs::write(
+        &big,
+        "[[claim]]\nid = \"big\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\nlhs = \"((1+t)^4096)^24\"\nrhs = \"((1+t)^4096)^24\"\n",
+    )
+    .unwrap();
+    let err = fails(&["prove", big.to_str().unwrap()]);
+    assert!(err.contains("MAX_WORK") && err.lines().count() == 1, "{err}");
+    // A range claim is reported with its scope, in text and JSON.
+    let range = dir.join("range.toml");
+    std::fs::write(
+        &range,
+        "[[claim]]\nid = \"r\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\nfor = [\"n = 0..=10\"]\nlhs = \"sum(i, 0, n, B(i, n, t))\"\nrhs = \"1 + C(n, 11)\"\n",
+    )
+    .unwrap();
+    let text = ok(&["prove", range.to_str().unwrap()]);
+    assert!(text.contains("[proved for n = 0..=10] r"), "{text}");
+    let json = json_out(&["prove", range.to_str().unwrap(), "--format", "json"]);
+    assert_eq!(json["claims"][0]["verdict"], "proved_in_range");
+    assert_eq!(json["claims"][0]["range"], "n = 0..=10");
+    assert_eq!(json["summary"]["proved_in_range"], 1);
+    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -37,20 +37,37 @@ fn every_verdict_is_as_expected() {
             "{id} has no proved correction"
         );
     }
-    let counts: Vec<(String, usize, usize, usize)> = report
+    let counts: Vec<(String, usize, usize, usize, usize)> = report
         .summaries()
         .iter()
-        .map(|s| (s.text.clone(), s.proved, s.verified, s.fails))
+        .map(|s| (s.text.clone(), s.proved, s.proved_in_range, s.verified, s.fails))
         .collect();
     assert_eq!(
         counts,
         [
-            ("000_ef6a3958c7d702f5.txt".to_string(), 36, 1, 1),
-            ("001_d6775559ddbdd5b2.txt".to_string(), 32, 0, 0),
-            ("003_bd67d8bed055bcf9.txt".to_string(), 36, 0, 1),
-            ("004_658c519a4aef48a5.txt".to_string(), 16, 0, 2),
+            ("000_ef6a3958c7d702f5.txt".to_string(), 7, 29, 1, 1),
+            ("001_d6775559ddbdd5b2.txt".to_string(), 32, 0, 0, 0),
+            ("003_bd67d8bed055bcf9.txt".to_string(), 28, 8, 0, 1),
+            ("004_658c519a4aef48a5.txt".to_string(), 16, 0, 0, 2),
         ]
     );
+    // Exactly the claims over finite ranges (`for`, a theorem's `degrees`) are proved in
+    // range, each with its range; nothing over a range is called `proved`.
+    for o in &report.outcomes {
+        let over_range = o.range.is_some();
+        match o.verdict {
+            Verdict::ProvedInRange => assert!(over_range, "{}: proved_in_range without a range", o.id),
+            _ => assert!(!over_range, "{}: a range on a {} verdict", o.id, o.verdict.as_str()),
+        }
+    }
+    let in_range = report
+        .outcomes
+        .iter()
+        .filter(|o| o.verdict == Verdict::ProvedInRange)
+        .count();
+    assert_eq!(in_range, 37);
+    let partition = report.outcomes.iter().find(|o| o.id == "000-7").unwrap();
+    assert_eq!(partition.verdict_text(), "proved for n = 0..=10");
 }
 
 /// `cargo test --release --test proofs -- --ignored --nocapture` prints the report and the time.

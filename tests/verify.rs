@@ -60,7 +60,7 @@ fn ranges_and_polygons() {
         "polygon = { name = \"b\", degree = \"n\" }\nfor = [\"n = 0..=5\"]",
     )
     .unwrap();
-    assert_eq!(v, Verdict::Proved, "{c}");
+    assert_eq!(v, Verdict::ProvedInRange, "{c}");
     assert!(c.contains("n = 0..=5") && c.contains("basis polygons"), "{c}");
     // a wrong elevation weight is caught on some unit polygon
     let (v, c) = identity(

@@ -181,14 +181,23 @@ pub struct Claim {
 }
 
 impl Claim {
-    /// The expected verdict.
+    /// Whether the claim is checked over finite integer ranges (`for`, or a theorem's
+    /// `degrees`): then the strongest verdict it can get is `proved_in_range`.
+    pub fn has_ranges(&self) -> bool {
+        self.ranges.as_ref().is_some_and(|r| !r.is_empty()) || self.kind == "theorem"
+    }
+
+    /// The expected verdict: `expect`, or by default the strongest verdict the claim can get
+    /// (`proved_in_range` for a claim over ranges, `proved` otherwise).
     pub fn expected(&self) -> Result<Verdict> {
         match self.expect.as_deref() {
+            None if self.has_ranges() => Ok(Verdict::ProvedInRange),
             None | Some("proved") => Ok(Verdict::Proved),
+            Some("proved_in_range") => Ok(Verdict::ProvedInRange),
             Some("verified") => Ok(Verdict::Verified),
             Some("fails") => Ok(Verdict::Fails),
             Some(other) => Err(Error::Parse(format!(
-                "claim {}: expect must be \"proved\", \"verified\" or \"fails\", not \"{other}\"",
+                "claim {}: expect must be \"proved\", \"proved_in_range\", \"verified\" or \"fails\", not \"{other}\"",
                 self.id
             ))),
         }
@@ -233,6 +242,12 @@ pub fn parse_file(text: &str, path: &Path) -> Result<ClaimFile> {
     let mut f: ClaimFile =
         toml::from_str(text).map_err(|e| Error::Parse(format!("{}: {}", path.display(), e.to_string().trim())))?;
     f.path = path.to_path_buf();
+    if f.claim.is_empty() {
+        return Err(Error::Parse(format!(
+            "{}: no claims (a claim file lists [[claim]] tables; see proofs/README.md)",
+            path.display()
+        )));
+    }
     let mut seen = std::collections::BTreeSet::new();
     for c in &f.claim {
         if !seen.insert(c.id.clone()) {
@@ -258,10 +273,28 @@ pub fn parse_file(text: &str, path: &Path) -> Result<ClaimFile> {
     Ok(f)
 }
 
+/// Largest claim file accepted, in bytes (checked while reading: a larger file, or an endless
+/// one like `/dev/zero`, is refused without being read whole).
+pub const MAX_CLAIM_FILE_BYTES: u64 = 1 << 20;
+
 /// Loads one claim file.
 pub fn load_file(path: &Path) -> Result<ClaimFile> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| Error::Domain(format!("cannot read claim file {}: {e}", path.display())))?;
+    use std::io::Read as _;
+    let cannot = |e: std::io::Error| Error::Domain(format!("cannot read claim file {}: {e}", path.display()));
+    let file = std::fs::File::open(path).map_err(cannot)?;
+    let mut bytes = Vec::new();
+    file.take(MAX_CLAIM_FILE_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(cannot)?;
+    if bytes.len() as u64 > MAX_CLAIM_FILE_BYTES {
+        return Err(Error::TooLarge {
+            what: "claim file",
+            value: format!("{} (more than {MAX_CLAIM_FILE_BYTES} bytes)", path.display()),
+            limit: format!("{MAX_CLAIM_FILE_BYTES} bytes"),
+        });
+    }
+    let text = String::from_utf8(bytes)
+        .map_err(|_| Error::Parse(format!("{}: a claim file must be UTF-8 text", path.display())))?;
     parse_file(&text, path)
 }
 

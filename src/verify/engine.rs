@@ -5,6 +5,7 @@
 use super::claims::{Claim, CurveSpec, Number, SurfaceSpec};
 use super::eval::{Alg, Deg, Env, Evaluator, Value, VarEnv};
 use super::expr::{self, check_index, parse, parse_definition, parse_range, Definition, Expr, IntRange};
+use super::methods::{NetMethod, PolygonMethod};
 use super::poly::{set_names, Poly, RatFunc};
 use super::Verdict;
 use crate::curve::BezierCurve;
@@ -22,6 +23,8 @@ use std::rc::Rc;
 pub struct Checked {
     /// The verdict.
     pub verdict: Verdict,
+    /// The finite ranges a [`Verdict::ProvedInRange`] covers.
+    pub range: Option<String>,
     /// The certificate (one line).
     pub certificate: String,
     /// The step-by-step account (filled when asked for).
@@ -34,6 +37,7 @@ impl Checked {
     pub(crate) fn new(verdict: Verdict, certificate: String) -> Self {
         Checked {
             verdict,
+            range: None,
             certificate,
             steps: Vec::new(),
             params: Vec::new(),
@@ -63,31 +67,70 @@ impl<'c> Ctx<'c> {
     /// Parses the claim's shared fields.
     pub fn new(claim: &'c Claim) -> Result<Self> {
         let mut known = claim.known_names();
-        known.extend(POLYGON_METHODS.iter().chain(NET_METHODS).map(|s| s.to_string()));
-        let mut defs: Vec<Definition> = Vec::new();
-        for d in claim.defs.iter().flatten() {
-            let mut def = parse_definition(d, &known)?;
-            def.body = expr::expand_diffs(&expr::expand(&def.body, &defs)?)?;
-            defs.push(def);
-        }
+        known.extend(PolygonMethod::ALL.iter().map(|m| m.name().to_string()));
+        known.extend(NetMethod::ALL.iter().map(|m| m.name().to_string()));
+        let parsed = claim
+            .defs
+            .iter()
+            .flatten()
+            .map(|d| parse_definition(d, &known))
+            .collect::<Result<Vec<_>>>()?;
         let ranges = claim
             .ranges
             .iter()
             .flatten()
             .map(|r| parse_range(r))
             .collect::<Result<Vec<_>>>()?;
-        Ok(Ctx {
+        let mut ctx = Ctx {
             claim,
             known,
-            defs,
+            defs: Vec::new(),
             ranges,
-        })
+        };
+        // In dependency order, each body expanded with the definitions it uses (so `diff`
+        // sees the whole expression, never an undefined name).
+        for mut def in expr::dependency_order(parsed)? {
+            let expanded = expr::expand(&def.body, &ctx.defs)?;
+            ctx.check_names(&expanded, &def.params)?;
+            def.body = expr::expand_diffs(&expanded)?;
+            ctx.defs.push(def);
+        }
+        Ok(ctx)
     }
 
     /// Parses an expression of the claim, with definitions and `diff` expanded.
     pub fn expr(&self, text: &str) -> Result<Expr> {
         let e = parse(text, &self.known)?;
-        expr::expand_diffs(&expr::expand(&e, &self.defs)?)
+        let e = expr::expand(&e, &self.defs)?;
+        self.check_names(&e, &[])?;
+        expr::expand_diffs(&e)
+    }
+
+    /// When the claim lists its parameters (`vars`), every free name must be declared: an
+    /// unknown name is an error, never silently a constant (whose derivative would be 0).
+    fn check_names(&self, e: &Expr, local: &[String]) -> Result<()> {
+        let Some(vars) = &self.claim.vars else {
+            return Ok(());
+        };
+        let coords = self
+            .claim
+            .coords
+            .clone()
+            .unwrap_or_else(|| vec!["x".into(), "y".into(), "z".into()]);
+        for v in e.free_vars() {
+            let known = vars.contains(&v)
+                || local.contains(&v)
+                || self.is_bound(&v)
+                || (self.claim.kind == "implicit" && coords.contains(&v))
+                || (self.claim.kind == "bezier_points" && v == self.claim.param.as_deref().unwrap_or("u"))
+                || self.defs.iter().any(|d| d.name == v);
+            if !known {
+                return Err(Error::Domain(format!(
+                    "unknown name '{v}' in '{e}' (declare it: vars, symbols, for, let, …)"
+                )));
+            }
+        }
+        Ok(())
     }
 
     /// Parses `A = B` into `(A, B)`, or `A` into `(A, 0)`.
@@ -107,6 +150,18 @@ impl<'c> Ctx<'c> {
                 let (a, b) = (expr::eval_int(&r.from, inst)?, expr::eval_int(&r.to, inst)?);
                 check_index(a)?;
                 check_index(b)?;
+                if b < a {
+                    let at: Vec<String> = inst.iter().map(|(k, v)| format!("{k} = {v}")).collect();
+                    return Err(Error::Domain(format!(
+                        "the range {} = {a}..={b} is empty{}: a claim over an empty range says nothing",
+                        r.var,
+                        if at.is_empty() {
+                            String::new()
+                        } else {
+                            format!(" (at {})", at.join(", "))
+                        }
+                    )));
+                }
                 for k in a..=b {
                     let mut i = inst.clone();
                     i.insert(r.var.clone(), k);
@@ -341,8 +396,8 @@ where
             return Ok(Some(Value::V(eval_net(net, &u, &v)?.into_coords())));
         }
         if let Some((pname, coeffs)) = &self.polygon {
-            if let Some(v) = polygon_method(pname, coeffs, name, args, ev)? {
-                return Ok(Some(v));
+            if let Some(m) = PolygonMethod::of_call(name, args, pname)? {
+                return Ok(Some(Value::S(m.value(coeffs, args, ev)?)));
             }
             if pname == base {
                 let pts = coeffs
@@ -356,8 +411,8 @@ where
             }
         }
         if let Some((nname, net)) = &self.net {
-            if let Some(v) = net_method(nname, net, name, args, ev)? {
-                return Ok(Some(v));
+            if let Some(m) = NetMethod::of_call(name, args, nname)? {
+                return Ok(Some(Value::S(m.value(net, args, ev)?)));
             }
             if nname == base {
                 if args.len() != 2 || order > 0 {
@@ -423,168 +478,6 @@ where
         }
         Ok(None)
     }
-}
-
-/// The library's operations on the symbolic polygon, callable in theorem identities:
-/// `elev(b, r, t)` (elevate_by(r), evaluated), `elevp(b, r, i)` (its i-th point),
-/// `steps(b, r, t)` (elevate_steps), `left(b, t0, t)`, `right(b, t0, t)` (split_at),
-/// `leftp(b, t0, r)`, `rightp(b, t0, r)` (their points), `deriv(b, k, t)` (derivative(k)),
-/// `derivp(b, k, j)`, `bsum(b, t)` (eval_bernstein).
-pub const POLYGON_METHODS: &[&str] = &[
-    "elev", "elevp", "steps", "left", "right", "leftp", "rightp", "deriv", "derivp", "bsum",
-];
-
-fn polygon_method<T: Exact>(
-    pname: &str,
-    coeffs: &[T],
-    name: &str,
-    args: &[Expr],
-    ev: &mut Evaluator<'_, T>,
-) -> Result<Option<Value<T>>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
-    if !POLYGON_METHODS.contains(&name) || !matches!(args.first(), Some(Expr::Var(v)) if v == pname) {
-        return Ok(None);
-    }
-    if args.len() != 3 && name != "bsum" || name == "bsum" && args.len() != 2 {
-        return Err(Error::Domain(format!("wrong number of arguments to {name}")));
-    }
-    let pts = coeffs
-        .iter()
-        .map(|c| Point::new(vec![c.clone()]))
-        .collect::<Result<_>>()?;
-    let c = BezierCurve::new(pts)?;
-    let pick = |curve: &BezierCurve<T>, i: i64| -> T {
-        usize::try_from(i)
-            .ok()
-            .and_then(|i| curve.points().get(i))
-            .map_or_else(T::zero, |p| p.coords()[0].clone())
-    };
-    let nonneg = |k: i64| -> Result<usize> {
-        usize::try_from(k).map_err(|_| Error::Domain(format!("{name}: negative order {k}")))
-    };
-    let v = match name {
-        "bsum" => c.eval_bernstein(&ev.scalar(&args[1])?).coords()[0].clone(),
-        "elev" | "steps" | "elevp" => {
-            let r = nonneg(ev.int(&args[1])?)?;
-            let e = if name == "steps" {
-                c.elevate_steps(r)?
-            } else {
-                c.elevate_by(r)?
-            };
-            if name == "elevp" {
-                pick(&e, ev.int(&args[2])?)
-            } else {
-                e.eval(&ev.scalar(&args[2])?).coords()[0].clone()
-            }
-        }
-        "left" | "right" | "leftp" | "rightp" => {
-            let t0 = ev.scalar(&args[1])?;
-            let (l, r) = c.split_at(&t0);
-            let part = if name.starts_with("left") { l } else { r };
-            if name.ends_with('p') {
-                pick(&part, ev.int(&args[2])?)
-            } else {
-                part.eval(&ev.scalar(&args[2])?).coords()[0].clone()
-            }
-        }
-        _ => {
-            let k = nonneg(ev.int(&args[1])?)?;
-            if k > c.degree() {
-                T::zero()
-            } else {
-                let d = c.derivative(k)?;
-                if name == "derivp" {
-                    pick(&d, ev.int(&args[2])?)
-                } else {
-                    d.eval(&ev.scalar(&args[2])?).coords()[0].clone()
-                }
-            }
-        }
-    };
-    Ok(Some(Value::S(v)))
-}
-
-/// Degree bounds of [`POLYGON_METHODS`] for a polygon of degree `n`: the library's results are
-/// Bézier curves whose degree is read off the library itself (on the zero polygon), evaluated
-/// by de Casteljau (degree ≤ that degree in `t`); split points are de Casteljau points of
-/// `t0` (degree ≤ n in `t0`).
-fn polygon_method_deg(n: u64, name: &str, args: &[Expr], ev: &mut Evaluator<'_, Deg>) -> Result<Deg> {
-    let zero: BezierCurve<BigRational> = BezierCurve::new(vec![Point::origin(1); n as usize + 1])?;
-    let mut d = match name {
-        "bsum" => ev.scalar(&args[1])?.compose(n),
-        "elev" | "steps" => {
-            let r = ev.int(&args[1])?.max(0) as usize;
-            let deg = zero.elevate_by(r)?.degree() as u64;
-            ev.scalar(&args[2])?.compose(deg)
-        }
-        "elevp" | "derivp" => Deg::default(),
-        "left" | "right" => {
-            let t0 = ev.scalar(&args[1])?.compose(n);
-            let deg = zero.split_at(&BigRational::zero()).0.degree() as u64;
-            t0.mul(&ev.scalar(&args[2])?.compose(deg))
-        }
-        "leftp" | "rightp" => ev.scalar(&args[1])?.compose(n),
-        _ => {
-            let k = ev.int(&args[1])?.max(0) as u64;
-            if k > n {
-                Deg::default()
-            } else {
-                let deg = zero.derivative(k as usize)?.degree() as u64;
-                ev.scalar(&args[2])?.compose(deg)
-            }
-        }
-    };
-    d.poly = 1;
-    Ok(d)
-}
-
-/// The library's operations on the symbolic net: `vfirst(b, u, v)` (eval_v_first),
-/// `sbsum(b, u, v)` (eval_bernstein), `isou(b, u0, v)` (iso_u(u0) at v), `isov(b, v0, u)`
-/// (iso_v(v0) at u), `bnd(b, k, s)` (boundary curve k = 0..3 at s), `corner(b, k, 0)`.
-pub const NET_METHODS: &[&str] = &["vfirst", "sbsum", "isou", "isov", "bnd", "corner"];
-
-fn net_method<T: Exact>(
-    nname: &str,
-    net: &[Vec<T>],
-    name: &str,
-    args: &[Expr],
-    ev: &mut Evaluator<'_, T>,
-) -> Result<Option<Value<T>>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
-    if !NET_METHODS.contains(&name) || !matches!(args.first(), Some(Expr::Var(v)) if v == nname) {
-        return Ok(None);
-    }
-    if args.len() != 3 {
-        return Err(Error::Domain(format!("{name} takes 3 arguments")));
-    }
-    let pts: Vec<Vec<Point<T>>> = net
-        .iter()
-        .map(|r| r.iter().map(|c| Point::new(vec![c.clone()])).collect::<Result<_>>())
-        .collect::<Result<_>>()?;
-    let s = BezierSurface::new(pts)?;
-    let p = match name {
-        "vfirst" => s.eval_v_first(&ev.scalar(&args[1])?, &ev.scalar(&args[2])?),
-        "sbsum" => s.eval_bernstein(&ev.scalar(&args[1])?, &ev.scalar(&args[2])?),
-        "isou" => s.iso_u(&ev.scalar(&args[1])?).eval(&ev.scalar(&args[2])?),
-        "isov" => s.iso_v(&ev.scalar(&args[1])?).eval(&ev.scalar(&args[2])?),
-        "bnd" | "corner" => {
-            let k = usize::try_from(ev.int(&args[1])?)
-                .ok()
-                .filter(|k| *k < 4)
-                .ok_or_else(|| Error::Domain(format!("{name}: k must be 0, 1, 2 or 3")))?;
-            if name == "bnd" {
-                s.boundary()[k].eval(&ev.scalar(&args[2])?)
-            } else {
-                s.corners()[k].clone()
-            }
-        }
-        _ => unreachable!("checked against NET_METHODS"),
-    };
-    Ok(Some(Value::S(p.coords()[0].clone())))
 }
 
 fn one_index(name: &str, idx: &[i64]) -> Result<()> {
@@ -695,7 +588,10 @@ impl Env<Deg> for DegEnv {
     fn call(&self, name: &str, args: &[Expr], ev: &mut Evaluator<'_, Deg>) -> Result<Option<Value<Deg>>> {
         let (base, order) = split_primes(name);
         let composed = |ev: &mut Evaluator<'_, Deg>, n: u64, rational: bool| -> Result<Deg> {
-            let g = ev.scalar(args.last().expect("args checked"))?;
+            let g = ev.scalar(
+                args.last()
+                    .ok_or_else(|| Error::Domain(format!("{name}() needs a parameter, e.g. {base}(t)")))?,
+            )?;
             let c = g.compose(n);
             if rational {
                 c.div(&c)
@@ -714,19 +610,18 @@ impl Env<Deg> for DegEnv {
             return Ok(Some(Value::V(vec![d; dim])));
         }
         if let Some((pname, n)) = &self.polygon {
-            if POLYGON_METHODS.contains(&name) && matches!(args.first(), Some(Expr::Var(v)) if v == pname) {
-                return Ok(Some(Value::S(polygon_method_deg(*n, name, args, ev)?)));
+            if let Some(m) = PolygonMethod::of_call(name, args, pname)? {
+                return Ok(Some(Value::S(m.degree(*n, args, ev)?)));
             }
             if pname == base {
-                let mut d = match args.len() {
+                let d = match args.len() {
                     3 => {
                         let r = ev.int(&args[1])?;
                         composed(ev, r.max(0) as u64, false)?
                     }
                     _ => composed(ev, n.saturating_sub(order as u64), false)?,
                 };
-                d.poly = 1;
-                return Ok(Some(Value::S(d)));
+                return Ok(Some(Value::S(d.times_control_point())));
             }
         }
         let surface = |ev: &mut Evaluator<'_, Deg>, m: u64, n: u64| -> Result<Deg> {
@@ -741,31 +636,11 @@ impl Env<Deg> for DegEnv {
             return Ok(Some(Value::V(vec![d; dim])));
         }
         if let Some((nname, m, n)) = &self.net {
-            if NET_METHODS.contains(&name) && matches!(args.first(), Some(Expr::Var(v)) if v == nname) {
-                let (m, n) = (*m, *n);
-                let mut d = match name {
-                    "vfirst" | "sbsum" => {
-                        let (u, v) = (ev.scalar(&args[1])?, ev.scalar(&args[2])?);
-                        u.compose(m).mul(&v.compose(n))
-                    }
-                    "isou" => {
-                        let (u0, v) = (ev.scalar(&args[1])?, ev.scalar(&args[2])?);
-                        u0.compose(m).mul(&v.compose(n))
-                    }
-                    "isov" => {
-                        let (v0, u) = (ev.scalar(&args[1])?, ev.scalar(&args[2])?);
-                        v0.compose(n).mul(&u.compose(m))
-                    }
-                    "bnd" => ev.scalar(&args[2])?.compose(m.max(n)),
-                    _ => Deg::default(),
-                };
-                d.poly = 1;
-                return Ok(Some(Value::S(d)));
+            if let Some(meth) = NetMethod::of_call(name, args, nname)? {
+                return Ok(Some(Value::S(meth.degree(*m, *n, args, ev)?)));
             }
             if nname == base {
-                let mut d = surface(ev, *m, *n)?;
-                d.poly = 1;
-                return Ok(Some(Value::S(d)));
+                return Ok(Some(Value::S(surface(ev, *m, *n)?.times_control_point())));
             }
         }
         Ok(None)
@@ -848,7 +723,10 @@ impl Basis {
         let n = ctx.claim.net.as_ref().map(|p| p.name.as_str());
         match self {
             Basis::None => String::new(),
-            Basis::Zero => format!("{} = 0 (all control points zero)", p.or(n).unwrap_or("b")),
+            Basis::Zero => {
+                let names: Vec<&str> = p.into_iter().chain(n).collect();
+                format!("{} = 0 (all control points zero)", names.join(" = "))
+            }
             Basis::Unit(k) => format!("{0}[{k}] = 1, other {0}[j] = 0", p.unwrap_or("b")),
             Basis::NetUnit(i, j) => format!("{0}[{i}, {j}] = 1, other {0}[k, l] = 0", n.unwrap_or("b")),
         }
@@ -917,92 +795,29 @@ pub fn prove_equal<T: Exact>(
 where
     for<'a> &'a T: RefOps<T>,
 {
-    let params = ctx.params(&[lhs, rhs]);
-    let mut num: NumEnv<T> = NumEnv::new(ctx.claim)?;
-    // Shape the symbolic polygon/net for this instance.
-    let mut basis = vec![Basis::None];
-    if let Some(p) = &ctx.claim.polygon {
-        let n = expr::eval_int(&parse(&p.degree, &[])?, ints)?;
-        check_index(n)?;
-        if n < 0 {
-            return Err(Error::Domain(format!("polygon {} of negative degree {n}", p.name)));
-        }
-        num.polygon = Some((p.name.clone(), vec![T::zero(); n as usize + 1]));
-        basis = std::iter::once(Basis::Zero)
-            .chain((0..=n as usize).map(Basis::Unit))
-            .collect();
-    }
-    if let Some(p) = &ctx.claim.net {
-        let m = expr::eval_int(&parse(&p.degree[0], &[])?, ints)?;
-        let n = expr::eval_int(&parse(&p.degree[1], &[])?, ints)?;
-        check_index(m)?;
-        check_index(n)?;
-        if m < 0 || n < 0 {
-            return Err(Error::Domain(format!("net {} of negative degree", p.name)));
-        }
-        num.net = Some((p.name.clone(), vec![vec![T::zero(); n as usize + 1]; m as usize + 1]));
-        basis = std::iter::once(Basis::Zero)
-            .chain((0..=m as usize).flat_map(|i| (0..=n as usize).map(move |j| Basis::NetUnit(i, j))))
-            .collect();
-    }
+    let prepared = prepare::<T>(ctx, lhs, rhs, ints, detail)?;
+    prove_prepared(ctx, lhs, rhs, ints, detail, prepared)
+}
 
-    // Degree bounds, derived by evaluating both sides in the algebra of degree bounds.
-    let degenv = DegEnv::new(&num, &params);
-    let dl = Evaluator::new(&degenv, ints.clone()).eval(lhs)?;
-    let dr = Evaluator::new(&degenv, ints.clone()).eval(rhs)?;
-    for (side, d) in [("left", &dl), ("right", &dr)] {
-        if d.entries().iter().any(|x| x.poly > 1) {
-            return Err(Error::Domain(format!(
-                "the {side} side is not affine in the symbolic control points (it multiplies two of them)"
-            )));
-        }
-    }
-    let uses_polygon = dl.entries().iter().chain(dr.entries().iter()).any(|x| x.poly > 0);
-    if !uses_polygon {
-        basis = vec![Basis::None];
-    }
-    let mut proof = PairProof {
-        polygons: basis.len(),
-        ..Default::default()
-    };
-    let mut needs = Vec::new();
-    for v in &params {
-        let need = needed_degree(&dl, &dr, v)?;
-        if need > 100_000 {
-            return Err(Error::TooLarge {
-                what: "degree of the identity",
-                value: need.to_string(),
-                limit: "100000".into(),
-            });
-        }
-        needs.push(need as usize);
-        proof.degrees.push((
-            v.clone(),
-            need,
-            dl.entries().first().map(|x| (*x).clone()).unwrap_or_default(),
-            dr.entries().first().map(|x| (*x).clone()).unwrap_or_default(),
-        ));
-        if detail {
-            proof.lines.push(format!(
-                "degree in {v}: left side {}, right side {} (num/den bounds from the expression) ⇒ the cleared difference has degree ≤ {need}, so {} points suffice",
-                describe_deg(&dl, v),
-                describe_deg(&dr, v),
-                need + 1
-            ));
-        }
-    }
-    let total: usize = needs
-        .iter()
-        .map(|d| d + 1)
-        .product::<usize>()
-        .saturating_mul(basis.len());
-    if total.saturating_mul(2) > MAX_EVALUATIONS {
-        return Err(Error::TooLarge {
-            what: "number of exact evaluations",
-            value: total.to_string(),
-            limit: MAX_EVALUATIONS.to_string(),
-        });
-    }
+fn prove_prepared<T: Exact>(
+    ctx: &Ctx<'_>,
+    lhs: &Expr,
+    rhs: &Expr,
+    ints: &BTreeMap<String, i64>,
+    detail: bool,
+    prepared: Prepared<T>,
+) -> Result<PairResult>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    let Prepared {
+        params,
+        mut num,
+        basis,
+        needs,
+        mut proof,
+        ..
+    } = prepared;
 
     // Choose the parameter sets and check on the grid; a point where some denominator
     // vanishes is replaced by the next candidate of its (last) parameter.
@@ -1053,8 +868,14 @@ where
                             lines.push(format!("{at}: both sides = {l}"));
                         }
                     }
-                    _ => {
+                    Some(false) => {
                         return Ok(PairResult::Fails(format!("at {at}: left side = {l}, right side = {r}")));
+                    }
+                    None => {
+                        return Err(Error::Domain(format!(
+                            "at {at} the sides are {l} and {r}: the claim mixes square roots of different fields \
+                             (exact arithmetic here is in one Q(√d) per claim), so it cannot be decided"
+                        )));
                     }
                 }
             }
@@ -1076,6 +897,138 @@ where
             }
         }
     }
+}
+
+/// A pair of sides ready to be checked at one integer instance.
+struct Prepared<T> {
+    params: Vec<String>,
+    num: NumEnv<T>,
+    basis: Vec<Basis>,
+    needs: Vec<usize>,
+    proof: PairProof,
+    /// The estimated work, in units of [`MAX_WORK`].
+    work: u128,
+}
+
+/// Largest estimated work of one claim, in units of one exact evaluation of an expression of
+/// degree `d` counted as `(1 + d)²` (d: the identity's degree plus the degree of the symbolic
+/// polygon or net), summed over every case, pair of sides, basis polygon and sample point.
+pub const MAX_WORK: u128 = 50_000_000;
+
+/// The work of checking `lhs = rhs` at one instance, estimated before computing.
+pub fn estimate_work<T: Exact>(ctx: &Ctx<'_>, lhs: &Expr, rhs: &Expr, ints: &BTreeMap<String, i64>) -> Result<u128>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    Ok(prepare::<T>(ctx, lhs, rhs, ints, false)?.work)
+}
+
+fn prepare<T: Exact>(
+    ctx: &Ctx<'_>,
+    lhs: &Expr,
+    rhs: &Expr,
+    ints: &BTreeMap<String, i64>,
+    detail: bool,
+) -> Result<Prepared<T>>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    let params = ctx.params(&[lhs, rhs]);
+    let mut num: NumEnv<T> = NumEnv::new(ctx.claim)?;
+    // Shape the symbolic polygon/net for this instance. Both sides are affine in all their
+    // control points together, so one basis covers every declared polygon and net at once:
+    // all zero, then each single control point of each object set to 1.
+    let mut basis = vec![Basis::Zero];
+    if let Some(p) = &ctx.claim.polygon {
+        let n = expr::eval_int(&parse(&p.degree, &[])?, ints)?;
+        check_index(n)?;
+        if n < 0 {
+            return Err(Error::Domain(format!("polygon {} of negative degree {n}", p.name)));
+        }
+        num.polygon = Some((p.name.clone(), vec![T::zero(); n as usize + 1]));
+        basis.extend((0..=n as usize).map(Basis::Unit));
+    }
+    if let Some(p) = &ctx.claim.net {
+        let m = expr::eval_int(&parse(&p.degree[0], &[])?, ints)?;
+        let n = expr::eval_int(&parse(&p.degree[1], &[])?, ints)?;
+        check_index(m)?;
+        check_index(n)?;
+        if m < 0 || n < 0 {
+            return Err(Error::Domain(format!("net {} of negative degree", p.name)));
+        }
+        num.net = Some((p.name.clone(), vec![vec![T::zero(); n as usize + 1]; m as usize + 1]));
+        basis.extend((0..=m as usize).flat_map(|i| (0..=n as usize).map(move |j| Basis::NetUnit(i, j))));
+    }
+
+    // Degree bounds, derived by evaluating both sides in the algebra of degree bounds.
+    let degenv = DegEnv::new(&num, &params);
+    let dl = Evaluator::new(&degenv, ints.clone()).eval(lhs)?;
+    let dr = Evaluator::new(&degenv, ints.clone()).eval(rhs)?;
+    for (side, d) in [("left", &dl), ("right", &dr)] {
+        if d.entries().iter().any(|x| x.poly > 1) {
+            return Err(Error::Domain(format!(
+                "the {side} side is not affine in the symbolic control points (it multiplies two of them)"
+            )));
+        }
+    }
+    let uses_polygon = dl.entries().iter().chain(dr.entries().iter()).any(|x| x.poly > 0);
+    if !uses_polygon {
+        basis = vec![Basis::None];
+    }
+    let mut proof = PairProof {
+        polygons: basis.len(),
+        ..Default::default()
+    };
+    let mut needs = Vec::new();
+    for v in &params {
+        let need = needed_degree(&dl, &dr, v)?;
+        if need > 100_000 {
+            return Err(Error::TooLarge {
+                what: "degree of the identity",
+                value: need.to_string(),
+                limit: "100000".into(),
+            });
+        }
+        needs.push(need as usize);
+        proof.degrees.push((
+            v.clone(),
+            need,
+            dl.entries().first().map(|x| (*x).clone()).unwrap_or_default(),
+            dr.entries().first().map(|x| (*x).clone()).unwrap_or_default(),
+        ));
+        if detail {
+            proof.lines.push(format!(
+                "degree in {v}: left side {}, right side {} (num/den bounds from the expression) ⇒ the cleared difference has degree ≤ {need}, so {} points suffice",
+                describe_deg(&dl, v),
+                describe_deg(&dr, v),
+                need + 1
+            ));
+        }
+    }
+    let object_degree = num.polygon.as_ref().map_or(0, |p| p.1.len() - 1)
+        + num.net.as_ref().map_or(0, |n| n.1.len() + n.1[0].len() - 2);
+    let total: usize = needs
+        .iter()
+        .map(|d| d + 1)
+        .product::<usize>()
+        .saturating_mul(basis.len());
+    if total.saturating_mul(2) > MAX_EVALUATIONS {
+        return Err(Error::TooLarge {
+            what: "number of exact evaluations",
+            value: total.to_string(),
+            limit: MAX_EVALUATIONS.to_string(),
+        });
+    }
+    let size = 1 + needs.iter().copied().max().unwrap_or(0) as u128 + object_degree as u128;
+    let work = (total as u128).saturating_mul(2).saturating_mul(size * size);
+    Ok(Prepared {
+        params,
+        num,
+        basis,
+        needs,
+        proof,
+        work,
+    })
 }
 
 fn set_basis<T: Exact>(num: &mut NumEnv<T>, b: &Basis)
@@ -1172,6 +1125,33 @@ pub fn pair_summary(p: &PairProof) -> String {
     s
 }
 
+/// The estimated work of checking the chain `sides` for every instance of the claim's
+/// ranges, added to `before` (the work of earlier parts of the same claim); an error naming
+/// [`MAX_WORK`] as soon as the sum exceeds it, before anything is evaluated.
+pub fn chain_work<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], before: u128) -> Result<u128>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    let mut work = before;
+    for inst in &ctx.instances()? {
+        for pair in sides.windows(2) {
+            work = work.saturating_add(estimate_work::<T>(ctx, &pair[0], &pair[1], inst)?);
+            if work > MAX_WORK {
+                return Err(too_much_work(work));
+            }
+        }
+    }
+    Ok(work)
+}
+
+fn too_much_work(work: u128) -> Error {
+    Error::TooLarge {
+        what: "estimated work of the claim",
+        value: format!("more than {work} units"),
+        limit: format!("MAX_WORK = {MAX_WORK} units: exact evaluations × (1 + degree)²"),
+    }
+}
+
 /// Checks a chain `e0 = e1 = …` for every instance of the integer ranges.
 pub fn check_chain<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Result<Checked>
 where
@@ -1184,6 +1164,21 @@ where
         )));
     }
     let instances = ctx.instances()?;
+    // Bounded work: every pair of every case is prepared (degrees derived, basis chosen) and
+    // the whole claim's work estimated before anything is evaluated.
+    let mut plans = Vec::with_capacity(instances.len() * (sides.len() - 1));
+    let mut work: u128 = 0;
+    for inst in &instances {
+        for pair in sides.windows(2) {
+            let plan = prepare::<T>(ctx, &pair[0], &pair[1], inst, detail)?;
+            work = work.saturating_add(plan.work);
+            if work > MAX_WORK {
+                return Err(too_much_work(work));
+            }
+            plans.push(plan);
+        }
+    }
+    let mut plans = plans.into_iter();
     let mut steps = Vec::new();
     let mut max_need: BTreeMap<String, u64> = BTreeMap::new();
     let mut evaluations = 0;
@@ -1193,7 +1188,8 @@ where
     let mut polygons = (usize::MAX, 0usize);
     for inst in &instances {
         for (k, pair) in sides.windows(2).enumerate() {
-            match prove_equal::<T>(ctx, &pair[0], &pair[1], inst, detail)? {
+            let plan = plans.next().expect("one plan per case and pair");
+            match prove_prepared::<T>(ctx, &pair[0], &pair[1], inst, detail, plan)? {
                 PairResult::Fails(cx) => {
                     let which = if sides.len() > 2 {
                         format!("step {} ('{}' = '{}') ", k + 1, pair[0], pair[1])
@@ -1378,11 +1374,55 @@ fn sym_assignment(
     (parts.join(", "), vars)
 }
 
+/// Largest degree, in any one variable, of the numerators and denominators a symbolic
+/// expansion may build (checked on the derived bounds before expanding).
+pub const MAX_SYMBOLIC_DEGREE: u64 = 4_096;
+
+/// Checks, before expanding, that `exprs` expand to degrees at most [`MAX_SYMBOLIC_DEGREE`]
+/// in each of the variables `vars` (scalars and vector coordinates, as degree bounds).
+pub fn check_symbolic_degrees(
+    vars: BTreeMap<String, Value<Deg>>,
+    ints: &BTreeMap<String, i64>,
+    exprs: &[&Expr],
+) -> Result<()> {
+    let env = VarEnv(vars);
+    for e in exprs {
+        let d = Evaluator::new(&env, ints.clone()).eval(e)?;
+        for x in d.entries() {
+            for (v, &(num, den)) in &x.vars {
+                if num.max(den) > MAX_SYMBOLIC_DEGREE {
+                    return Err(Error::TooLarge {
+                        what: "degree of a symbolic expansion",
+                        value: format!("{} in {v}", num.max(den)),
+                        limit: format!("MAX_SYMBOLIC_DEGREE = {MAX_SYMBOLIC_DEGREE} per variable"),
+                    });
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+fn layout_degrees(layout: &[(String, usize)]) -> BTreeMap<String, Value<Deg>> {
+    layout
+        .iter()
+        .map(|(v, dim)| {
+            let d = if *dim == 0 {
+                Value::S(Deg::var(v))
+            } else {
+                Value::V((1..=*dim).map(|k| Deg::var(&format!("{v}_{k}"))).collect())
+            };
+            (v.clone(), d)
+        })
+        .collect()
+}
+
 /// Proves or refutes `lhs = rhs` by exact symbolic expansion in the claim's symbols.
 pub fn symbolic_equal(ctx: &Ctx<'_>, lhs: &Expr, rhs: &Expr, ints: &BTreeMap<String, i64>) -> Result<PairResult> {
     let extra = ctx.params(&[lhs, rhs]);
     let extra: Vec<String> = extra.into_iter().filter(|v| !ctx.is_bound(v)).collect();
     let (names, layout) = sym_names(ctx, &extra);
+    check_symbolic_degrees(layout_degrees(&layout), ints, &[lhs, rhs])?;
     let env = sym_env(&names, &layout);
     let l = Evaluator::new(&env, ints.clone()).eval(lhs)?;
     let r = Evaluator::new(&env, ints.clone()).eval(rhs)?;
@@ -1459,6 +1499,54 @@ pub fn check_chain_symbolic(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Resu
     Ok(c)
 }
 
+/// Why `conclusion = factor · premise` (an identity of rational functions) may not make the
+/// premise imply the conclusion, or `None` when it does: at a point where the premise holds
+/// (its numerator `P_n` vanishes) and the conclusion is defined (its formal denominator
+/// `D_c ≠ 0`), `D_c · conclusion = Σ_j (F_ij D_c / P_dj) · P_n,j`, which is 0 when every
+/// `F_ij D_c / P_dj` is a polynomial. So the factor's denominator may only vanish where the
+/// conclusion is undefined anyway (e.g. `inv(M)` on both sides); otherwise the claim is refused.
+fn factor_pole(ctx: &Ctx<'_>, concl: &Expr, factor: &Expr, prem: &Expr) -> Result<Option<String>> {
+    let extra: Vec<String> = ctx
+        .params(&[concl, factor, prem])
+        .into_iter()
+        .filter(|v| !ctx.is_bound(v))
+        .collect();
+    let (names, layout) = sym_names(ctx, &extra);
+    let env = sym_env(&names, &layout);
+    let c = Evaluator::new(&env, BTreeMap::new()).eval(concl)?;
+    let f = Evaluator::new(&env, BTreeMap::new()).eval(factor)?;
+    let p = Evaluator::new(&env, BTreeMap::new()).eval(prem)?;
+    let (cs, ps) = (c.entries(), p.entries());
+    let entries: Vec<(usize, usize, &RatFunc)> = match &f {
+        Value::S(x) => (0..cs.len()).map(|i| (i, i, x)).collect(),
+        Value::M(m) => m
+            .iter()
+            .enumerate()
+            .flat_map(|(i, r)| r.iter().enumerate().map(move |(j, x)| (i, j, x)))
+            .collect(),
+        Value::V(_) => {
+            return Err(Error::Domain(
+                "the factor of implies must be a number or a matrix".into(),
+            ))
+        }
+    };
+    for (i, j, fij) in entries {
+        let (Some(ci), Some(pj)) = (cs.get(i), ps.get(j)) else {
+            continue;
+        };
+        if fij.num.is_zero() {
+            continue;
+        }
+        if fij.num.mul(&ci.den).exact_div(&fij.den.mul(&pj.den)).is_none() {
+            return Ok(Some(format!(
+                "the factor '{factor}' has the denominator {}, which may vanish where the equation is defined",
+                fij.den
+            )));
+        }
+    }
+    Ok(None)
+}
+
 /// `implies`: `conclusion_lhs − conclusion_rhs = factor · (premise_lhs − premise_rhs)` identically,
 /// so the premise implies the conclusion. When it is not an identity, an exact counterexample
 /// is searched where the premise holds and the conclusion does not.
@@ -1478,6 +1566,12 @@ pub fn check_implies(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
     let inst = BTreeMap::new();
     match symbolic_equal(ctx, &concl, &rhs, &inst)? {
         PairResult::Proved(pp) => {
+            if let Some(reason) = factor_pole(ctx, &concl, &factor, &prem)? {
+                return Err(Error::Domain(format!(
+                    "the equation is factor × premise identically, but {reason}: where it vanishes and the premise holds, \
+                     nothing follows, so the implication is not proved (refused)"
+                )));
+            }
             let mut out = Checked::new(
                 Verdict::Proved,
                 format!(
@@ -1555,5 +1649,60 @@ pub fn check_implies(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
                 c.id
             )))
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::claims::parse_file;
+    use super::*;
+    use std::path::Path;
+
+    fn claim(body: &str) -> Claim {
+        parse_file(
+            &format!("[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\nlhs = \"1\"\nrhs = \"1\"\n{body}"),
+            Path::new("t.toml"),
+        )
+        .unwrap()
+        .claim[0]
+            .clone()
+    }
+
+    #[test]
+    fn ranges_enumerate_every_case_and_refuse_empty_ones() {
+        let c = claim("for = [\"n = 0..=2\", \"j = 0..=n\"]");
+        let ctx = Ctx::new(&c).unwrap();
+        assert_eq!(ctx.instances().unwrap().len(), 6);
+        assert_eq!(ctx.range_text(), "n = 0..=2, j = 0..=n");
+        let c = claim("for = [\"n = 0..=2\", \"j = 1..=n\"]");
+        let err = Ctx::new(&c).unwrap().instances().unwrap_err().to_string();
+        assert!(err.contains("j = 1..=0 is empty (at n = 0)"), "{err}");
+    }
+
+    #[test]
+    fn unknown_names_are_errors_when_the_parameters_are_listed() {
+        let c = claim("vars = [\"t\"]\nsymbols = [\"k\"]");
+        let ctx = Ctx::new(&c).unwrap();
+        assert!(ctx.expr("t + k").is_ok());
+        assert!(ctx.expr("sum(j, 0, 2, j t)").is_ok());
+        let err = ctx.expr("t + q").unwrap_err().to_string();
+        assert!(err.contains("unknown name 'q'"), "{err}");
+        // Without `vars`, free names are the parameters (documented).
+        let c = claim("");
+        assert!(Ctx::new(&c).unwrap().expr("t + q").is_ok());
+    }
+
+    #[test]
+    fn the_work_estimate_grows_with_degree_and_basis() {
+        let c = claim("polygon = { name = \"b\", degree = \"3\" }");
+        let ctx = Ctx::new(&c).unwrap();
+        let (l, r) = (ctx.expr("b(t)").unwrap(), ctx.expr("bsum(b, t)").unwrap());
+        let ints = BTreeMap::new();
+        let w = estimate_work::<BigRational>(&ctx, &l, &r, &ints).unwrap();
+        // 4 points × 5 basis polygons × 2 sides × (1 + 3 + 3)²
+        assert_eq!(w, 4 * 5 * 2 * 49);
+        let big = ctx.expr("(1 + t)^4096").unwrap();
+        let w = estimate_work::<BigRational>(&ctx, &big, &big, &ints).unwrap();
+        assert!(w > MAX_WORK, "{w}");
     }
 }

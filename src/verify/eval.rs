@@ -189,13 +189,30 @@ impl Deg {
         }
         Deg { vars, poly }
     }
-    /// The bound of `g ↦ p(g)` for a polynomial `p` of degree `n` (`Σ c_k P^k Q^(n-k) / Q^n`).
+    /// The bound of `g ↦ p(g)` for a polynomial `p` of degree `n` with constant coefficients
+    /// (`Σ c_k P^k Q^(n-k) / Q^n`). The bound is a function of the inner bound in every
+    /// component: a `g` of degree `d` in the control points gives degree `n·d` in them.
     pub fn compose(&self, n: u64) -> Deg {
         let mut vars = BTreeMap::new();
         for (k, &(num, den)) in &self.vars {
-            vars.insert(k.clone(), ((n * num.max(den)).min(DEG_LIMIT), (n * den).min(DEG_LIMIT)));
+            vars.insert(
+                k.clone(),
+                (
+                    n.saturating_mul(num.max(den)).min(DEG_LIMIT),
+                    n.saturating_mul(den).min(DEG_LIMIT),
+                ),
+            );
         }
-        Deg { vars, poly: 0 }
+        Deg {
+            vars,
+            poly: n.saturating_mul(self.poly).min(DEG_LIMIT),
+        }
+    }
+    /// The bound of a value affine in the symbolic control points with coefficients bounded
+    /// by `self` (a control point times `self`).
+    pub fn times_control_point(mut self) -> Deg {
+        self.poly = self.poly.saturating_add(1);
+        self
     }
     /// Whether the value is a polynomial in every parameter (no parameter in a denominator).
     pub fn is_polynomial(&self) -> bool {
@@ -234,7 +251,7 @@ impl Alg for Deg {
             if da == 0 && db == 0 {
                 (na.max(nb), 0)
             } else {
-                ((na + db).max(nb + da), da + db)
+                (na.saturating_add(db).max(nb.saturating_add(da)), da.saturating_add(db))
             }
         })
     }
@@ -242,7 +259,11 @@ impl Alg for Deg {
         self.add(o)
     }
     fn mul(&self, o: &Self) -> Self {
-        self.zip(o, self.poly + o.poly, |(na, da), (nb, db)| (na + nb, da + db))
+        self.zip(
+            o,
+            self.poly.saturating_add(o.poly).min(DEG_LIMIT),
+            |(na, da), (nb, db)| (na.saturating_add(nb), da.saturating_add(db)),
+        )
     }
     fn neg(&self) -> Self {
         self.clone()
@@ -253,7 +274,9 @@ impl Alg for Deg {
                 "division by an expression in the symbolic control points (not affine in them)".into(),
             ));
         }
-        Ok(self.zip(o, self.poly, |(na, da), (nb, db)| (na + db, da + nb)))
+        Ok(self.zip(o, self.poly, |(na, da), (nb, db)| {
+            (na.saturating_add(db), da.saturating_add(nb))
+        }))
     }
     fn sqrt_rat(_: &BigRational) -> Result<Self> {
         Ok(Deg::default())
@@ -268,9 +291,14 @@ impl Alg for Deg {
             vars: self
                 .vars
                 .iter()
-                .map(|(v, &(n, d))| (v.clone(), ((n * m).min(DEG_LIMIT), (d * m).min(DEG_LIMIT))))
+                .map(|(v, &(n, d))| {
+                    (
+                        v.clone(),
+                        (n.saturating_mul(m).min(DEG_LIMIT), d.saturating_mul(m).min(DEG_LIMIT)),
+                    )
+                })
                 .collect(),
-            poly: self.poly * m,
+            poly: self.poly.saturating_mul(m).min(DEG_LIMIT),
         };
         if k < 0 {
             Deg::default().div(&scaled)
@@ -896,6 +924,25 @@ mod tests {
                 .unwrap(),
             q(1, 1)
         );
+    }
+
+    #[test]
+    fn composed_bounds_keep_the_control_point_degree() {
+        let cp = Deg::control_point();
+        // A polynomial of degree 3 at a value of degree 1 in the control points: degree 3.
+        assert_eq!(cp.compose(3).poly, 3);
+        assert_eq!(cp.compose(3).times_control_point().poly, 4);
+        assert_eq!(Deg::var("t").compose(3).poly, 0);
+        assert_eq!(Deg::var("t").compose(3).times_control_point().poly, 1);
+        // Composition multiplies the inner bounds; it never resets them.
+        let g = Deg::var("t").mul(&cp);
+        let c = g.compose(2);
+        assert_eq!((c.get("t"), c.poly), ((2, 0), 2));
+        assert!(
+            Deg::var("t").div(&cp).is_err(),
+            "dividing by control points is not affine"
+        );
+        assert_eq!(cp.pow(3).unwrap().poly, 3);
     }
 
     #[test]

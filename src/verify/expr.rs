@@ -727,6 +727,9 @@ pub fn parse_definition(text: &str, known: &[String]) -> Result<Definition> {
 }
 
 /// Replaces every use of a definition by its body, with the arguments substituted.
+///
+/// Hygienic: a `sum` variable of `e` that a definition's body (or an argument) uses freely is
+/// renamed first, so no substitution is ever captured by a binder.
 pub fn expand(e: &Expr, defs: &[Definition]) -> Result<Expr> {
     expand_depth(e, defs, 0)
 }
@@ -760,11 +763,54 @@ fn expand_depth(e: &Expr, defs: &[Definition], depth: usize) -> Result<Expr> {
                 None => Expr::Call(name.clone(), args),
             }
         }
+        Expr::Sum(v, a, b, body) => {
+            // A definition used in the body refers to the claim's `v`, not to this binder:
+            // rename the binder when some definition mentions (or is named) `v`.
+            let clash = defs
+                .iter()
+                .any(|d| d.name == *v || (!d.params.contains(v) && d.body.mentions(v)));
+            let (v, body) = if clash {
+                let fresh = fresh_name(v, &[body.as_ref()], defs);
+                let renamed = substitute(body, std::slice::from_ref(v), &[Expr::Var(fresh.clone())]);
+                (fresh, renamed)
+            } else {
+                (v.clone(), (**body).clone())
+            };
+            Expr::Sum(v, Box::new(rec(a)?), Box::new(rec(b)?), Box::new(rec(&body)?))
+        }
         _ => map_children(e, &mut |x| rec(x))?,
     })
 }
 
-/// Substitutes `args[k]` for the free variable `params[k]`.
+/// Every name that occurs in `e` (free or bound, variables and calls).
+fn all_names(e: &Expr, out: &mut Vec<String>) {
+    e.visit(&mut |x| match x {
+        Expr::Var(v) | Expr::Call(v, _) | Expr::Index(v, _) | Expr::Sum(v, ..) if !out.contains(v) => {
+            out.push(v.clone())
+        }
+        _ => {}
+    });
+}
+
+/// A name `v_1`, `v_2`, … that occurs nowhere in `exprs` nor in the definitions.
+fn fresh_name(v: &str, exprs: &[&Expr], defs: &[Definition]) -> String {
+    let mut used = Vec::new();
+    for e in exprs {
+        all_names(e, &mut used);
+    }
+    for d in defs {
+        used.push(d.name.clone());
+        used.extend(d.params.iter().cloned());
+        all_names(&d.body, &mut used);
+    }
+    (1..)
+        .map(|k| format!("{v}_{k}"))
+        .find(|n| !used.contains(n))
+        .expect("a fresh name exists")
+}
+
+/// Substitutes `args[k]` for the free variable `params[k]`, capture-avoiding: a `sum` whose
+/// variable occurs free in an argument substituted into its body is renamed first.
 pub fn substitute(e: &Expr, params: &[String], args: &[Expr]) -> Expr {
     match e {
         Expr::Var(v) => match params.iter().position(|p| p == v) {
@@ -776,18 +822,53 @@ pub fn substitute(e: &Expr, params: &[String], args: &[Expr]) -> Expr {
             let (p2, a2): (Vec<String>, Vec<Expr>) = params
                 .iter()
                 .zip(args)
-                .filter(|(p, _)| *p != v)
+                .filter(|(p, _)| *p != v && body.mentions(p))
                 .map(|(p, a)| (p.clone(), a.clone()))
                 .unzip();
+            let (v, body) = if a2.iter().any(|x| x.mentions(v)) {
+                let mut exprs: Vec<&Expr> = vec![body.as_ref()];
+                exprs.extend(a2.iter());
+                let fresh = fresh_name(v, &exprs, &[]);
+                let renamed = substitute(body, std::slice::from_ref(v), &[Expr::Var(fresh.clone())]);
+                (fresh, renamed)
+            } else {
+                (v.clone(), (**body).clone())
+            };
             Expr::Sum(
-                v.clone(),
+                v,
                 Box::new(substitute(a, params, args)),
                 Box::new(substitute(b, params, args)),
-                Box::new(substitute(body, &p2, &a2)),
+                Box::new(substitute(&body, &p2, &a2)),
             )
         }
         _ => map_children(e, &mut |x| Ok(substitute(x, params, args))).expect("substitution cannot fail"),
     }
+}
+
+/// Orders definitions so that each comes after the definitions it uses (any order may be
+/// written); a definition that uses itself, directly or through others, is an error.
+pub fn dependency_order(defs: Vec<Definition>) -> Result<Vec<Definition>> {
+    let uses = |d: &Definition, other: &Definition| {
+        let mut names = Vec::new();
+        all_names(&d.body, &mut names);
+        names.contains(&other.name) && !d.params.contains(&other.name)
+    };
+    let mut done: Vec<Definition> = Vec::new();
+    let mut left = defs;
+    while !left.is_empty() {
+        let ready = left
+            .iter()
+            .position(|d| left.iter().all(|o| !uses(d, o)))
+            .ok_or_else(|| {
+                let names: Vec<&str> = left.iter().map(|d| d.name.as_str()).collect();
+                Error::Domain(format!(
+                    "the definitions of {} are circular (each uses another)",
+                    names.join(", ")
+                ))
+            })?;
+        done.push(left.remove(ready));
+    }
+    Ok(done)
 }
 
 fn map_children(e: &Expr, f: &mut dyn FnMut(&Expr) -> Result<Expr>) -> Result<Expr> {
@@ -1188,6 +1269,59 @@ mod tests {
         assert_eq!(e.to_string(), "2/(n + 1)*b[2 - 1] + j/(n + 1)*b[j - 1]");
         let dd = expand_diffs(&p("diff(t^3, t)")).unwrap();
         assert!(dd.to_string().contains("__dpow(t, 3, 1)"), "{dd}");
+    }
+
+    #[test]
+    fn substitution_renames_a_binder_instead_of_capturing() {
+        // e(x) = sum(j, 0, 1, x) applied to j: the inner j must not capture the argument.
+        let body = p("sum(j, 0, 1, x)");
+        let out = substitute(&body, &["x".to_string()], &[p("j")]);
+        assert_eq!(out.to_string(), "sum(j_1, 0, 1, j)");
+        // A binder the argument does not mention is kept; a shadowed parameter is not replaced.
+        assert_eq!(
+            substitute(&body, &["x".to_string()], &[p("k")]).to_string(),
+            "sum(j, 0, 1, k)"
+        );
+        assert_eq!(
+            substitute(&p("sum(x, 0, 1, x)"), &["x".to_string()], &[p("j")]).to_string(),
+            "sum(x, 0, 1, x)"
+        );
+        // The fresh name avoids every name in sight.
+        let out = substitute(&p("sum(j, 0, j_1, x + j_1)"), &["x".to_string()], &[p("j")]);
+        assert_eq!(out.to_string(), "sum(j_2, 0, j_1, j + j_1)");
+    }
+
+    #[test]
+    fn expansion_renames_a_binder_a_definition_uses() {
+        let known = ["D".to_string()];
+        let d = parse_definition("D = t + 1", &known).unwrap();
+        let e = expand(&parse("sum(t, 0, 1, D)", &known).unwrap(), &[d]).unwrap();
+        assert_eq!(e.to_string(), "sum(t_1, 0, 1, t + 1)");
+    }
+
+    #[test]
+    fn definitions_are_ordered_by_dependency() {
+        let known: Vec<String> = ["D", "F", "G"].iter().map(|s| s.to_string()).collect();
+        let defs = vec![
+            parse_definition("D = diff(F, t)", &known).unwrap(),
+            parse_definition("F = G^2", &known).unwrap(),
+            parse_definition("G = t + 1", &known).unwrap(),
+        ];
+        let names: Vec<String> = dependency_order(defs).unwrap().into_iter().map(|d| d.name).collect();
+        assert_eq!(names, ["G", "F", "D"]);
+        let cyclic = vec![
+            parse_definition("F = G", &known).unwrap(),
+            parse_definition("G = F + 1", &known).unwrap(),
+        ];
+        assert!(dependency_order(cyclic).unwrap_err().to_string().contains("circular"));
+        let selfref = vec![parse_definition("F = F + 1", &known).unwrap()];
+        assert!(dependency_order(selfref).is_err());
+        // A parameter named like another definition is the parameter.
+        let defs = vec![
+            parse_definition("e(F) = F + 1", &known).unwrap(),
+            parse_definition("F = e(2)", &known).unwrap(),
+        ];
+        assert!(dependency_order(defs).is_ok());
     }
 
     #[test]

@@ -13,7 +13,7 @@
 
 use super::claims::{Claim, CurveSpec, Number};
 use super::engine::{check_chain, check_chain_symbolic, check_implies, points, Checked, Ctx, CurveObj};
-use super::eval::{Alg, Evaluator, Value};
+use super::eval::{Alg, Deg, Evaluator, Value};
 use super::expr::{substitute, Expr};
 use super::poly::{set_names, Poly, RatFunc};
 use super::{theorems, Verdict};
@@ -30,19 +30,42 @@ use std::collections::BTreeMap;
 use std::rc::Rc;
 
 /// Checks one claim; `detail` also records the steps for `explain`.
+///
+/// A `proved` over finite ranges (`for`, a theorem's `degrees`) is reported as
+/// `proved_in_range` with the ranges: the scope is decided here, once, for every kind.
 pub fn check_claim(claim: &Claim, detail: bool) -> Result<Checked> {
+    super::fields::check_fields(claim)?;
     let ctx = Ctx::new(claim)?;
+    let mut out = check_kind(&ctx, detail)?;
+    if out.verdict == Verdict::Proved {
+        let scope = if claim.kind == "theorem" {
+            Some(theorems::scope(&ctx)?)
+        } else if claim.has_ranges() {
+            Some(ctx.range_text())
+        } else {
+            None
+        };
+        if let Some(range) = scope {
+            out.verdict = Verdict::ProvedInRange;
+            out.range = Some(range);
+        }
+    }
+    Ok(out)
+}
+
+fn check_kind(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
+    let claim = ctx.claim;
     match claim.kind.as_str() {
-        "identity" => check_identity(&ctx, detail),
-        "implicit" => check_implicit(&ctx, detail),
+        "identity" => check_identity(ctx, detail),
+        "implicit" => check_implicit(ctx, detail),
         "bezier_points" => check_bezier_points(claim, detail),
-        "conic_type" => check_conic_type(&ctx),
-        "implies" => check_implies(&ctx, detail),
-        "theorem" => theorems::check_theorem(&ctx, detail),
-        "enneper" => check_enneper(&ctx, detail),
-        "weight_type" => check_weight_type(&ctx),
-        "convergence" => theorems::check_convergence(&ctx, detail),
-        "fit" => check_fit(&ctx),
+        "conic_type" => check_conic_type(ctx),
+        "implies" => check_implies(ctx, detail),
+        "theorem" => theorems::check_theorem(ctx, detail),
+        "enneper" => check_enneper(ctx, detail),
+        "weight_type" => check_weight_type(ctx),
+        "convergence" => theorems::check_convergence(ctx, detail),
+        "fit" => check_fit(ctx),
         other => Err(Error::Parse(format!(
             "claim {}: unknown kind '{other}' (identity, implicit, bezier_points, conic_type, weight_type, enneper, implies, theorem, convergence, fit)",
             claim.id
@@ -166,6 +189,8 @@ fn library_power_on(
     b: &Number,
 ) -> Result<BezierCurve<BigRational>> {
     let names: Rc<[String]> = Rc::from(vec![param.to_string()]);
+    let degrees = std::iter::once((param.to_string(), Value::S(Deg::var(param)))).collect();
+    super::engine::check_symbolic_degrees(degrees, &BTreeMap::new(), &[power])?;
     set_names(&names);
     let mut vars = BTreeMap::new();
     vars.insert(param.to_string(), Value::S(RatFunc::poly(Poly::var(&names, 0))));
@@ -251,6 +276,11 @@ fn check_conic_type(ctx: &Ctx<'_>) -> Result<Checked> {
     let (l, r) = ctx.equation(c.need(&c.equation, "equation")?)?;
     let printed = c.need(&c.conic, "conic")?;
     let names: Rc<[String]> = Rc::from(vec!["x".to_string(), "y".to_string()]);
+    let degrees = ["x", "y"]
+        .iter()
+        .map(|v| (v.to_string(), Value::S(Deg::var(v))))
+        .collect();
+    super::engine::check_symbolic_degrees(degrees, &BTreeMap::new(), &[&l, &r])?;
     set_names(&names);
     let mut vars = BTreeMap::new();
     vars.insert("x".into(), Value::S(RatFunc::poly(Poly::var(&names, 0))));

@@ -11,6 +11,8 @@
 //!   denominator vanishes; identities affine in the control points on the zero and unit
 //!   polygons; two parameters on a grid; claims about arbitrary vectors by exact symbolic
 //!   expansion ([`poly`]).
+//! - **proved_in_range**: every case of the claim's finite integer ranges (`for`, a theorem's
+//!   `degrees`) proved as above; the ranges are reported with the verdict. Never "proved".
 //! - **verified**: bounded evidence for a statement about a limit, saying exactly what was checked.
 //! - **fails**: an exact counterexample (the parameters and both sides' values).
 //!
@@ -34,7 +36,9 @@ pub mod claims;
 pub mod engine;
 pub mod eval;
 pub mod expr;
+pub mod fields;
 pub mod kinds;
+pub mod methods;
 pub mod poly;
 mod report;
 pub mod theorems;
@@ -45,12 +49,17 @@ use std::path::PathBuf;
 
 pub use report::TextSummary;
 
-/// How strong a verdict is.
+/// How strong a verdict is, and so what it covers (its scope).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
+#[serde(rename_all = "snake_case")]
 pub enum Verdict {
-    /// The finite check is a proof (e.g. a polynomial identity of degree ≤ d checked exactly at d+1 points).
+    /// A proof for every value of every variable of the statement (e.g. a polynomial identity
+    /// of degree ≤ d checked exactly at d+1 points).
     Proved,
+    /// Every case of the stated finite integer ranges is proved (each case for every value of
+    /// its continuous parameters); the ranges are in [`ClaimOutcome::range`]. Not a proof for
+    /// values outside them.
+    ProvedInRange,
     /// Bounded evidence (e.g. a limit checked up to some r), saying exactly what was checked.
     Verified,
     /// The claim is false; the certificate holds an exact counterexample.
@@ -62,6 +71,7 @@ impl Verdict {
     pub fn as_str(self) -> &'static str {
         match self {
             Verdict::Proved => "proved",
+            Verdict::ProvedInRange => "proved_in_range",
             Verdict::Verified => "verified",
             Verdict::Fails => "fails",
         }
@@ -79,6 +89,10 @@ pub struct ClaimOutcome {
     pub statement: String,
     /// The verdict, decided in exact arithmetic.
     pub verdict: Verdict,
+    /// The finite ranges a `proved_in_range` verdict covers, e.g. `n = 0..=10, j = 0..=n`
+    /// (absent for every other verdict).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub range: Option<String>,
     /// What was checked: the proof's certificate or the exact counterexample.
     pub certificate: String,
     /// The verdict the claim file expects.
@@ -93,6 +107,14 @@ pub struct ClaimOutcome {
     /// The claim file's note, if any.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub note: Option<String>,
+}
+
+impl ClaimOutcome {
+    /// The verdict with its scope, as the text report shows it: `proved`,
+    /// `proved for n = 0..=10`, `verified`, `fails`.
+    pub fn verdict_text(&self) -> String {
+        report::verdict_text(self.verdict, self.range.as_deref())
+    }
 }
 
 /// The outcomes of a whole run.
@@ -142,6 +164,7 @@ pub fn prove_paths(paths: &[PathBuf], progress: &mut dyn FnMut(usize, usize, &st
                 source: c.source.clone(),
                 statement: c.statement.clone(),
                 verdict: checked.verdict,
+                range: checked.range,
                 certificate: checked.certificate,
                 expect: c.expected()?,
                 file: f.path.display().to_string(),

@@ -84,7 +84,8 @@ impl Poly {
             terms,
         }
     }
-    fn mul(&self, o: &Poly) -> Poly {
+    /// `self · o`.
+    pub fn mul(&self, o: &Poly) -> Poly {
         let mut terms: BTreeMap<Vec<u16>, BigRational> = BTreeMap::new();
         for (e1, c1) in &self.terms {
             for (e2, c2) in &o.terms {
@@ -113,6 +114,37 @@ impl Poly {
     /// The terms (exponents, coefficient), in increasing monomial order.
     pub fn terms_list(&self) -> Vec<(Vec<u16>, BigRational)> {
         self.terms.iter().map(|(e, c)| (e.clone(), c.clone())).collect()
+    }
+
+    /// `self / d` when the polynomial `d` divides `self` exactly, else `None` (also `None`
+    /// when the division would take more than [`MAX_TERMS`] steps: a refusal, never a guess).
+    ///
+    /// Division by leading terms in the lexicographic monomial order: if `self = q·d` then the
+    /// leading term of `self` is that of `q` times that of `d`, so a leading term that the
+    /// leading term of `d` does not divide proves that `d` does not divide `self`.
+    pub fn exact_div(&self, d: &Poly) -> Option<Poly> {
+        let (ed, cd) = d.terms.iter().next_back()?;
+        let mut rem = self.clone();
+        let mut q = Poly::constant(&self.names, &BigRational::zero());
+        for _ in 0..MAX_TERMS {
+            let Some((er, cr)) = rem.terms.iter().next_back() else {
+                return Some(q);
+            };
+            if er.iter().zip(ed).any(|(a, b)| a < b) {
+                return None;
+            }
+            let mono: Vec<u16> = er.iter().zip(ed).map(|(a, b)| a - b).collect();
+            let c = cr / cd;
+            let mut t = BTreeMap::new();
+            t.insert(mono, c);
+            let term = Poly {
+                names: self.names.clone(),
+                terms: t,
+            };
+            rem = rem.add_scaled(&term.mul(d), false);
+            q = q.add_scaled(&term, true);
+        }
+        None
     }
 
     /// The value at `point` (one rational per variable).
@@ -283,6 +315,21 @@ impl Alg for RatFunc {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn exact_division() {
+        let names: Rc<[String]> = Rc::from(vec!["x".to_string(), "y".to_string()]);
+        set_names(&names);
+        let x = RatFunc::poly(Poly::var(&names, 0));
+        let y = RatFunc::poly(Poly::var(&names, 1));
+        let a = x.add(&y).mul(&x.sub(&y)).mul(&x); // x³ − x y²
+        let d = x.add(&y);
+        let q = a.num.exact_div(&d.num).unwrap();
+        assert_eq!(q.to_string(), "x^2 - x*y");
+        assert!(a.num.exact_div(&y.add(&RatFunc::from_int(1)).num).is_none());
+        assert!(x.num.exact_div(&y.num).is_none());
+        assert_eq!(x.num.exact_div(&x.num).unwrap().as_constant(), Some(BigRational::one()));
+    }
 
     #[test]
     fn expands_and_compares() {

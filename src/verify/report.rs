@@ -14,8 +14,10 @@ pub struct TextSummary {
     pub text: String,
     /// Claims checked.
     pub claims: usize,
-    /// Verdict `proved`.
+    /// Verdict `proved` (for every value of every variable).
     pub proved: usize,
+    /// Verdict `proved_in_range` (every case of finite ranges).
+    pub proved_in_range: usize,
     /// Verdict `verified`.
     pub verified: usize,
     /// Verdict `fails`.
@@ -26,6 +28,16 @@ pub struct TextSummary {
     pub mismatches: usize,
     /// Ids of the claims that fail (misprints, when expected).
     pub failing: Vec<String>,
+}
+
+/// A verdict with its scope, as the text reports show it: `proved`, `proved for n = 0..=10`,
+/// `verified`, `fails`.
+pub(super) fn verdict_text(v: Verdict, range: Option<&str>) -> String {
+    match (v, range) {
+        (Verdict::ProvedInRange, Some(r)) => format!("proved for {r}"),
+        (Verdict::ProvedInRange, None) => "proved in range".into(),
+        _ => v.as_str().into(),
+    }
 }
 
 pub(super) fn summaries(outcomes: &[ClaimOutcome]) -> Vec<TextSummary> {
@@ -45,6 +57,7 @@ pub(super) fn summaries(outcomes: &[ClaimOutcome]) -> Vec<TextSummary> {
         s.claims += 1;
         match o.verdict {
             Verdict::Proved => s.proved += 1,
+            Verdict::ProvedInRange => s.proved_in_range += 1,
             Verdict::Verified => s.verified += 1,
             Verdict::Fails => {
                 s.fails += 1;
@@ -68,6 +81,7 @@ fn total(sums: &[TextSummary]) -> TextSummary {
     for s in sums {
         t.claims += s.claims;
         t.proved += s.proved;
+        t.proved_in_range += s.proved_in_range;
         t.verified += s.verified;
         t.fails += s.fails;
         t.as_expected += s.as_expected;
@@ -97,7 +111,7 @@ pub(super) fn to_text(r: &Report) -> String {
             } else {
                 format!("  !! MISMATCH: expected {}", o.expect.as_str())
             };
-            let _ = writeln!(s, "[{}] {}{flag}", o.verdict.as_str(), o.id);
+            let _ = writeln!(s, "[{}] {}{flag}", o.verdict_text(), o.id);
             let _ = writeln!(s, "    source:      {}", o.source);
             let _ = writeln!(s, "    statement:   {}", o.statement);
             if let Some(c) = &o.corrects {
@@ -118,17 +132,18 @@ pub(super) fn to_text(r: &Report) -> String {
     let _ = writeln!(s, "=== summary ===");
     let _ = writeln!(
         s,
-        "{:<28} {:>6} {:>7} {:>9} {:>6} {:>12}",
-        "text", "claims", "proved", "verified", "fails", "as expected"
+        "{:<28} {:>6} {:>7} {:>15} {:>9} {:>6} {:>12}",
+        "text", "claims", "proved", "proved in range", "verified", "fails", "as expected"
     );
     let t = total(&sums);
     for sum in sums.iter().chain(std::iter::once(&t)) {
         let _ = writeln!(
             s,
-            "{:<28} {:>6} {:>7} {:>9} {:>6} {:>12}",
+            "{:<28} {:>6} {:>7} {:>15} {:>9} {:>6} {:>12}",
             sum.text,
             sum.claims,
             sum.proved,
+            sum.proved_in_range,
             sum.verified,
             sum.fails,
             format!("{}/{}", sum.as_expected, sum.claims)
@@ -136,6 +151,12 @@ pub(super) fn to_text(r: &Report) -> String {
     }
     if !t.failing.is_empty() {
         let _ = writeln!(s, "\nclaims that fail: {}", t.failing.join(", "));
+    }
+    if t.proved_in_range > 0 {
+        let _ = writeln!(
+            s,
+            "proved in range: proved for every case of the stated finite ranges, not for values outside them"
+        );
     }
     if t.mismatches == 0 {
         let _ = writeln!(s, "every verdict is as the claim files expect");
@@ -163,8 +184,8 @@ fn counts(sum: &TextSummary) -> String {
         format!("{} NOT as expected", sum.mismatches)
     };
     format!(
-        "{} claims: {} proved, {} verified, {} fail; {exp}",
-        sum.claims, sum.proved, sum.verified, sum.fails
+        "{} claims: {} proved, {} proved in range, {} verified, {} fail; {exp}",
+        sum.claims, sum.proved, sum.proved_in_range, sum.verified, sum.fails
     )
 }
 
@@ -176,6 +197,7 @@ pub(super) fn to_json(r: &Report) -> serde_json::Value {
         "summary": {
             "claims": t.claims,
             "proved": t.proved,
+            "proved_in_range": t.proved_in_range,
             "verified": t.verified,
             "fails": t.fails,
             "as_expected": t.as_expected,
@@ -214,7 +236,11 @@ pub(super) fn explain_text(f: &ClaimFile, c: &Claim, checked: &Checked) -> Strin
     if let Some(r) = &c.ranges {
         let _ = writeln!(s, "for:       {}", r.join(", "));
     }
-    let _ = writeln!(s, "\nverdict: {}", checked.verdict.as_str());
+    let _ = writeln!(
+        s,
+        "\nverdict: {}",
+        verdict_text(checked.verdict, checked.range.as_deref())
+    );
     let _ = writeln!(
         s,
         "{}: {}\n",
@@ -248,4 +274,55 @@ pub(super) fn explain_text(f: &ClaimFile, c: &Claim, checked: &Checked) -> Strin
         }
     }
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn outcome(id: &str, verdict: Verdict, range: Option<&str>, expect: Verdict) -> ClaimOutcome {
+        ClaimOutcome {
+            id: id.into(),
+            source: "s".into(),
+            statement: "s".into(),
+            verdict,
+            range: range.map(String::from),
+            certificate: "c".into(),
+            expect,
+            file: "f.toml".into(),
+            text: "t.txt".into(),
+            corrects: None,
+            note: None,
+        }
+    }
+
+    #[test]
+    fn every_report_shows_the_scope() {
+        let r = Report {
+            outcomes: vec![
+                outcome("a", Verdict::Proved, None, Verdict::Proved),
+                outcome("b", Verdict::ProvedInRange, Some("n = 0..=10"), Verdict::ProvedInRange),
+                outcome("c", Verdict::ProvedInRange, Some("n = 0..=3"), Verdict::Proved),
+                outcome("d", Verdict::Fails, None, Verdict::Fails),
+            ],
+        };
+        let text = r.to_text();
+        assert!(text.contains("[proved] a\n"), "{text}");
+        assert!(text.contains("[proved for n = 0..=10] b\n"), "{text}");
+        assert!(
+            text.contains("[proved for n = 0..=3] c  !! MISMATCH: expected proved"),
+            "{text}"
+        );
+        assert!(
+            text.contains("1 proved, 2 proved in range, 0 verified, 1 fail"),
+            "{text}"
+        );
+        let s = &r.summaries()[0];
+        assert_eq!((s.proved, s.proved_in_range, s.fails, s.mismatches), (1, 2, 1, 1));
+        let json = r.to_json();
+        assert_eq!(json["claims"][1]["verdict"], "proved_in_range");
+        assert_eq!(json["claims"][1]["range"], "n = 0..=10");
+        assert!(json["claims"][0].get("range").is_none());
+        assert_eq!(json["summary"]["proved_in_range"], 2);
+    }
 }

@@ -4,11 +4,11 @@
 //! Most theorems are identities that are affine in the control points; they are written as
 //! identity claims over a symbolic polygon `b` (so the prover checks them on the zero and unit
 //! polygons, at enough parameters for the degree it derives) and call the library through
-//! `elev`, `left`, `deriv`, … (see [`super::engine::POLYGON_METHODS`]). The others (affine
+//! `elev`, `left`, `deriv`, … (see [`super::methods::PolygonMethod`]). The others (affine
 //! invariance, the convex hull property, Theorem 1.2) have their own exact checks here.
 
 use super::claims::{Claim, PolygonSpec};
-use super::engine::{check_chain, Checked, Ctx};
+use super::engine::{chain_work, check_chain, Checked, Ctx, MAX_WORK};
 use super::Verdict;
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
@@ -49,14 +49,50 @@ pub const THEOREMS: &[(&str, &str)] = &[
     ),
 ];
 
+/// Largest degree a theorem is checked for.
+pub const MAX_THEOREM_DEGREE: i64 = 64;
+
+/// The number of elevation steps `r = 0..=R` that `elevation_8` checks for each degree.
+const ELEVATION_STEPS: i64 = 4;
+
+/// The degree range `lo..=hi` of a theorem claim: non-empty, from 0, at most
+/// [`MAX_THEOREM_DEGREE`].
 fn degrees(ctx: &Ctx<'_>) -> Result<(i64, i64)> {
     let text = ctx.claim.degrees.as_deref().unwrap_or("0..=10");
     let r = super::expr::parse_range(&format!("n = {text}"))?;
     let empty = Default::default();
-    Ok((
+    let (lo, hi) = (
         super::expr::eval_int(&r.from, &empty)?,
         super::expr::eval_int(&r.to, &empty)?,
-    ))
+    );
+    if lo < 0 || hi < lo {
+        return Err(Error::Domain(format!(
+            "the degree range {lo}..={hi} is {}: write degrees = \"a..=b\" with 0 ≤ a ≤ b",
+            if lo < 0 { "negative" } else { "empty" }
+        )));
+    }
+    if hi > MAX_THEOREM_DEGREE {
+        return Err(Error::TooLarge {
+            what: "theorem degree",
+            value: format!("{lo}..={hi}"),
+            limit: format!("degrees up to {MAX_THEOREM_DEGREE}"),
+        });
+    }
+    Ok((lo, hi))
+}
+
+/// The finite ranges a theorem claim is checked over, e.g. `n = 0..=10` (and the elevation
+/// steps of `elevation_8`): the scope of its `proved_in_range`.
+pub fn scope(ctx: &Ctx<'_>) -> Result<String> {
+    let (lo, hi) = degrees(ctx)?;
+    let mut s = format!("n = {lo}..={hi}");
+    match ctx.claim.theorem.as_deref() {
+        Some("elevation_8") => s.push_str(&format!(", r = 0..={ELEVATION_STEPS}")),
+        Some("derivative_k") => s.push_str(", k = 1..=n"),
+        Some("affine_invariance") => s.push_str(", in the plane"),
+        _ => {}
+    }
+    Ok(s)
 }
 
 /// One identity over the symbolic polygon `b` of degree `n`.
@@ -192,18 +228,15 @@ fn parts_of(name: &str, kmax: i64) -> Option<Vec<(i64, Part)>> {
     })
 }
 
+fn sub_sides(sub: &Ctx<'_>, cl: &Claim) -> Result<Vec<super::expr::Expr>> {
+    cl.chain.iter().flatten().map(|s| sub.expr(s)).collect()
+}
+
 /// `kind = "theorem"`.
 pub fn check_theorem(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
     let c = ctx.claim;
     let name = c.need(&c.theorem, "theorem")?;
     let (lo, hi) = degrees(ctx)?;
-    if hi - lo > 64 || hi > 64 {
-        return Err(Error::TooLarge {
-            what: "theorem degree range",
-            value: format!("{lo}..={hi}"),
-            limit: "degrees up to 64".into(),
-        });
-    }
     match name {
         "affine_invariance" => return affine_invariance(lo, hi),
         "convex_hull" => return convex_hull(lo, hi, detail),
@@ -216,8 +249,10 @@ pub fn check_theorem(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
             THEOREMS.iter().map(|t| t.0).collect::<Vec<_>>().join(", ")
         ))
     })?;
-    let mut certs = Vec::new();
-    let mut steps = Vec::new();
+    // Every part as an identity claim over the symbolic polygon `b` of degree `n`; the work
+    // of all parts is estimated before any is checked.
+    let mut prepared = Vec::new();
+    let mut work = 0;
     for (min_n, p) in parts {
         let from = lo.max(min_n);
         if from > hi {
@@ -234,8 +269,19 @@ pub fn check_theorem(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
         ranges.extend(p.ranges.iter().cloned());
         cl.ranges = Some(ranges);
         cl.vars = Some(p.vars.iter().map(|s| s.to_string()).collect());
-        let sub = Ctx::new(&cl)?;
-        let sides = p.chain.iter().map(|s| sub.expr(s)).collect::<Result<Vec<_>>>()?;
+        cl.chain = Some(p.chain.clone());
+        prepared.push((p, cl));
+    }
+    for (_, cl) in &prepared {
+        let sub = Ctx::new(cl)?;
+        let sides = sub_sides(&sub, cl)?;
+        work = chain_work::<Q>(&sub, &sides, work)?;
+    }
+    let mut certs = Vec::new();
+    let mut steps = Vec::new();
+    for (p, cl) in &prepared {
+        let sub = Ctx::new(cl)?;
+        let sides = sub_sides(&sub, cl)?;
         let out = check_chain::<Q>(&sub, &sides, detail)?;
         if detail {
             steps.push(format!("{}: {}", p.label, p.chain.join(" = ")));
@@ -262,6 +308,19 @@ pub fn check_theorem(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
     Ok(out)
 }
 
+/// The sum of the estimated work of each degree, or an error naming [`MAX_WORK`].
+fn within_work_limit(per_degree: impl Iterator<Item = u128>) -> Result<()> {
+    let work = per_degree.fold(0u128, u128::saturating_add);
+    if work > MAX_WORK {
+        return Err(Error::TooLarge {
+            what: "estimated work of the claim",
+            value: format!("{work} units"),
+            limit: format!("MAX_WORK = {MAX_WORK} units"),
+        });
+    }
+    Ok(())
+}
+
 fn unit_polygon(n: usize, dim: usize, k: usize, coord: usize) -> Result<BezierCurve<Q>> {
     let pts = (0..=n)
         .map(|i| {
@@ -286,6 +345,11 @@ fn params(d: usize) -> Vec<Q> {
 /// in `c`, so it suffices to check matrix units `A = E_rs` with `c = 0` on the unit polygons,
 /// and `A = 0` with translations `c = e_r` (on the zero polygon), each at `n + 1` parameters.
 fn affine_invariance(lo: i64, hi: i64) -> Result<Checked> {
+    // 4 matrix units × 2(n+1) unit polygons and 2 translations, at n+1 parameters, 2 sides.
+    within_work_limit((lo..=hi).map(|n| {
+        let k = n as u128 + 1;
+        (8 * k * k + 2 * k) * 2 * k * k
+    }))?;
     let mut evaluations = 0;
     let dim = 2;
     for n in lo.max(0) as usize..=hi as usize {
@@ -343,6 +407,8 @@ fn affine_invariance(lo: i64, hi: i64) -> Result<Checked> {
 /// points), so `b(t) = Σ B_i^n(t) b_i` is a convex combination; and the library's exact hull
 /// test finds convex weights for sample curve points.
 fn convex_hull(lo: i64, hi: i64, detail: bool) -> Result<Checked> {
+    // The exact hull tests dominate: about (n+1)⁴ units each (measured).
+    within_work_limit((lo..=hi).map(|n| 4 * (n as u128 + 1).pow(4)))?;
     let mut steps = Vec::new();
     let mut hull_checks = 0;
     for n in lo.max(0) as usize..=hi as usize {
@@ -493,4 +559,52 @@ pub fn check_convergence(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
     );
     out.steps = lines;
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::claims::parse_file;
+    use super::*;
+    use std::path::Path;
+
+    fn claim(degrees: &str, theorem: &str) -> Claim {
+        parse_file(
+            &format!(
+                "[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"theorem\"\ntheorem = \"{theorem}\"\ndegrees = \"{degrees}\""
+            ),
+            Path::new("t.toml"),
+        )
+        .unwrap()
+        .claim[0]
+            .clone()
+    }
+
+    #[test]
+    fn the_scope_names_every_range_checked() {
+        let c = claim("0..=6", "elevation_8");
+        assert_eq!(scope(&Ctx::new(&c).unwrap()).unwrap(), "n = 0..=6, r = 0..=4");
+        let c = claim("2..=5", "derivative");
+        assert_eq!(scope(&Ctx::new(&c).unwrap()).unwrap(), "n = 2..=5");
+    }
+
+    #[test]
+    fn degree_ranges_are_checked() {
+        for (bad, want) in [
+            ("5..=3", "empty"),
+            ("-2..=3", "negative"),
+            ("0..=-1", "empty"),
+            ("0..=65", "64"),
+        ] {
+            let c = claim(bad, "convex_hull");
+            let err = degrees(&Ctx::new(&c).unwrap()).unwrap_err().to_string();
+            assert!(err.contains(want), "{bad}: {err}");
+        }
+    }
+
+    #[test]
+    fn work_beyond_the_limit_is_refused_before_computing() {
+        assert!(within_work_limit([MAX_WORK].into_iter()).is_ok());
+        let err = within_work_limit([MAX_WORK, 1].into_iter()).unwrap_err().to_string();
+        assert!(err.contains("MAX_WORK"), "{err}");
+    }
 }
