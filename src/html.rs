@@ -37,12 +37,25 @@ pub struct VerdictText {
 
 /// The one place that turns a verdict into words.
 pub fn verdict_text(outcome: &ClaimOutcome) -> VerdictText {
-    match outcome.verdict {
+    verdict_words(outcome.verdict, outcome.range.as_deref())
+}
+
+/// The words for a verdict; `range` is the finite range a `proved_in_range` covers.
+fn verdict_words(verdict: Verdict, range: Option<&str>) -> VerdictText {
+    match verdict {
         Verdict::Proved => VerdictText {
             class: "proved",
             label: "proved",
             scope: "for every value of every variable of the statement; the certificate says why the finite check is a proof"
                 .into(),
+        },
+        Verdict::ProvedInRange => VerdictText {
+            class: "proved-in-range",
+            label: "proved in range",
+            scope: match range {
+                Some(r) => format!("every case of {r} proved; not a proof beyond that range"),
+                None => "every case of the stated finite ranges proved; not a proof beyond them".into(),
+            },
         },
         Verdict::Verified => VerdictText {
             class: "verified",
@@ -142,7 +155,7 @@ fn find_claim<'a>(files: &'a [ClaimFile], o: &ClaimOutcome) -> Option<&'a Claim>
 }
 
 const STYLE: &str = r#"
-:root { --proved: #1e7b34; --verified: #9a6700; --fails: #b42318; --ink: #1d1d1f; --muted: #5f6368; --rule: #d0d4d9; }
+:root { --proved: #1e7b34; --proved-in-range: #2f6f9f; --verified: #9a6700; --fails: #b42318; --ink: #1d1d1f; --muted: #5f6368; --rule: #d0d4d9; }
 * { box-sizing: border-box; }
 body { font-family: "DejaVu Sans", "Noto Sans", "Noto Sans CJK JP", Arial, sans-serif; color: var(--ink); line-height: 1.45;
        max-width: 62rem; margin: 0 auto; padding: 1.2rem 1.5rem 3rem; font-size: 15px; }
@@ -159,11 +172,11 @@ td.n { text-align: right; font-variant-numeric: tabular-nums; }
 tr.total td { font-weight: bold; border-top: 2px solid var(--ink); }
 .chip { display: inline-block; border-radius: 0.7rem; padding: 0 0.55rem; font-size: 0.8rem; font-weight: bold;
         color: #fff; text-transform: uppercase; letter-spacing: 0.03em; }
-.chip.proved { background: var(--proved); } .chip.verified { background: var(--verified); } .chip.fails { background: var(--fails); }
+.chip.proved { background: var(--proved); } .chip.proved-in-range { background: var(--proved-in-range); } .chip.verified { background: var(--verified); } .chip.fails { background: var(--fails); }
 .chip.mismatch { background: #000; }
 .claim { border: 1px solid var(--rule); border-left: 6px solid var(--proved); border-radius: 4px; padding: 0.8rem 1rem;
          margin: 1rem 0; }
-.claim.verified { border-left-color: var(--verified); }
+.claim.verified { border-left-color: var(--verified); } .claim.proved-in-range { border-left-color: var(--proved-in-range); }
 .claim.fails { border-left-color: var(--fails); }
 .claim.misprint { background: #fff5f4; }
 .claim.correction { background: #f3fbf4; }
@@ -226,20 +239,13 @@ fn index_page(report: &Report, sums: &[TextSummary], titles: &BTreeMap<String, S
         sums.len()
     );
     s.push_str("<h2>What the verdicts mean</h2>\n<table>\n");
-    for v in [Verdict::Proved, Verdict::Verified, Verdict::Fails] {
-        let probe = ClaimOutcome {
-            id: String::new(),
-            source: String::new(),
-            statement: String::new(),
-            verdict: v,
-            certificate: String::new(),
-            expect: v,
-            file: String::new(),
-            text: String::new(),
-            corrects: None,
-            note: None,
-        };
-        let vt = verdict_text(&probe);
+    for v in [
+        Verdict::Proved,
+        Verdict::ProvedInRange,
+        Verdict::Verified,
+        Verdict::Fails,
+    ] {
+        let vt = verdict_words(v, None);
         let _ = writeln!(
             s,
             "<tr><td><span class=\"chip {}\">{}</span></td><td>{}</td></tr>",
@@ -250,37 +256,42 @@ fn index_page(report: &Report, sums: &[TextSummary], titles: &BTreeMap<String, S
     }
     s.push_str("</table>\n<h2>Summary</h2>\n<table class=\"summary\">\n");
     s.push_str(
-        "<tr><th>text</th><th>title</th><th>claims</th><th>proved</th><th>verified</th><th>fails</th><th>as expected</th></tr>\n",
+        "<tr><th>text</th><th>title</th><th>claims</th><th>proved</th><th>proved in range</th><th>verified</th><th>fails</th><th>as expected</th></tr>\n",
     );
-    let mut total = [0usize; 5];
+    let mut total = [0usize; 6];
     for sum in sums {
         let title = titles.get(&sum.text).map(String::as_str).unwrap_or("");
         let _ = writeln!(
             s,
             "<tr><td><a href=\"{}\">{}</a></td><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td>\
-             <td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}/{}</td></tr>",
+             <td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}/{}</td></tr>",
             page_name(&sum.text),
             esc(&sum.text),
             esc(title),
             sum.claims,
             sum.proved,
+            sum.proved_in_range,
             sum.verified,
             sum.fails,
             sum.as_expected,
             sum.claims
         );
-        for (t, v) in total
-            .iter_mut()
-            .zip([sum.claims, sum.proved, sum.verified, sum.fails, sum.as_expected])
-        {
+        for (t, v) in total.iter_mut().zip([
+            sum.claims,
+            sum.proved,
+            sum.proved_in_range,
+            sum.verified,
+            sum.fails,
+            sum.as_expected,
+        ]) {
             *t += v;
         }
     }
     let _ = writeln!(
         s,
         "<tr class=\"total\"><td>total</td><td></td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td>\
-         <td class=\"n\">{}</td><td class=\"n\">{}/{}</td></tr>\n</table>",
-        total[0], total[1], total[2], total[3], total[4], total[0]
+         <td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}/{}</td></tr>\n</table>",
+        total[0], total[1], total[2], total[3], total[4], total[5], total[0]
     );
     let mismatches = report.mismatches();
     if mismatches == 0 {
@@ -339,10 +350,11 @@ fn text_page(sum: &TextSummary, title: &str, outcomes: &[&ClaimOutcome], files: 
     let _ = writeln!(
         s,
         "<header>\n<p class=\"crumbs noprint\"><a href=\"index.html\">← all texts</a></p>\n<h1>{}</h1>\n\
-         <p class=\"lead\">{} claims: {} proved, {} verified, {} fail{}.</p>\n</header>",
+         <p class=\"lead\">{} claims: {} proved, {} proved in range, {} verified, {} fail{}.</p>\n</header>",
         esc(&heading),
         sum.claims,
         sum.proved,
+        sum.proved_in_range,
         sum.verified,
         sum.fails,
         if sum.mismatches == 0 {
