@@ -224,11 +224,11 @@ fn the_index_table_is_the_reports_summary() {
     assert_eq!(rows.len(), 1 + sums.len() + 1);
     for (row, s) in rows[1..].iter().zip(&sums) {
         assert_eq!(row[0], s.text);
-        let numbers = [s.claims, s.proved, s.verified, s.fails];
-        for (cell, n) in row[2..6].iter().zip(numbers) {
+        let numbers = [s.claims, s.proved, s.proved_in_range, s.verified, s.fails];
+        for (cell, n) in row[2..7].iter().zip(numbers) {
             assert_eq!(cell, &n.to_string(), "{}", s.text);
         }
-        assert_eq!(row[6], format!("{}/{}", s.as_expected, s.claims));
+        assert_eq!(row[7], format!("{}/{}", s.as_expected, s.claims));
     }
     assert_eq!(rows.last().unwrap()[2], report.outcomes.len().to_string());
 }
