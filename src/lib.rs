@@ -27,6 +27,7 @@ pub mod bernstein;
 pub mod curve;
 pub mod error;
 pub mod fit;
+pub mod float;
 pub mod hull;
 pub mod input;
 pub mod linalg;
