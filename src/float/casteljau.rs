@@ -151,10 +151,8 @@ pub fn de_casteljau_running(b: &[f64], t: f64) -> (f64, f64) {
             let (a, bb) = (val[i], val[i + 1]);
             let (x, y) = (s * a, t * bb);
             let c = x + y;
-            err[i] = u * (c.abs() + x.abs() + y.abs())
-                + abs_s * err[i]
-                + abs_t * err[i + 1]
-                + abs_rho * (a.abs() + err[i]);
+            err[i] =
+                u * (c.abs() + x.abs() + y.abs()) + abs_s * err[i] + abs_t * err[i + 1] + abs_rho * (a.abs() + err[i]);
             val[i] = c;
         }
     }
@@ -231,7 +229,10 @@ pub fn compensated_derivative(b: &[f64], t: f64) -> (f64, f64) {
     let m = n - 1;
     let extra = 2.0 * UNIT_ROUNDOFF * gamma(3 * m + 3);
     let scaled: Vec<f64> = hi.iter().map(|x| x * nf).collect();
-    (res, compensated_bound(res, &scaled, extra + 4.0 * UNIT_ROUNDOFF * UNIT_ROUNDOFF, t))
+    (
+        res,
+        compensated_bound(res, &scaled, extra + 4.0 * UNIT_ROUNDOFF * UNIT_ROUNDOFF, t),
+    )
 }
 
 #[cfg(test)]
