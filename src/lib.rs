@@ -30,12 +30,14 @@ pub mod fit;
 pub mod float;
 pub mod hull;
 pub mod input;
+pub mod interval;
 pub mod linalg;
 pub mod oracle;
 pub mod point;
 pub mod quadratic;
 pub mod rational;
 pub mod scalar;
+pub mod shadow;
 #[cfg(feature = "strategies")]
 pub mod strategies;
 pub mod surface;
