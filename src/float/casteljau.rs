@@ -236,6 +236,48 @@ pub fn compensated_derivative(b: &[f64], t: f64) -> (f64, f64) {
     )
 }
 
+/// The a priori bound for a rational curve evaluated in floats as de Casteljau on the
+/// homogeneous points `(w_i b_i, w_i)` (the products `w_i b_i` rounded first), then one
+/// division per coordinate: per coordinate `k`, with `e_N = γ_{K+1} Σ|w_i b_ik||B_i|`,
+/// `e_D = γ_K Σ|w_i||B_i|` and the exact value `x`,
+/// `|x̂_k − x_k| ≤ β + u(|x_k| + β)`, `β = (e_N + |x_k| e_D) / (|D̂| − 2e_D)`.
+/// `coords[k]` holds coordinate `k` of every control point; `x[k]` is an `f64` within one
+/// ulp of the exact value. `+∞` when the denominator may vanish (`|D̂| ≤ 2e_D`).
+pub fn rational_a_priori_bound(coords: &[Vec<f64>], weights: &[f64], t: f64, x: &[f64]) -> Vec<f64> {
+    let n = weights.len() - 1;
+    let k = a_priori_index(n, t);
+    let u = UNIT_ROUNDOFF;
+    let e_d = next_up(gamma(k) * abs_bernstein_sum(weights, t));
+    let d = de_casteljau(weights, t).abs();
+    let room = d - 2.0 * e_d * (1.0 + 4.0 * u);
+    coords
+        .iter()
+        .zip(x)
+        .map(|(c, xk)| {
+            if room <= 0.0 {
+                return f64::INFINITY;
+            }
+            let products: Vec<f64> = c.iter().zip(weights).map(|(b, w)| b * w).collect();
+            let e_n = next_up(gamma(k + 1) * abs_bernstein_sum(&products, t) * (1.0 + 2.0 * u));
+            let xa = next_up(xk.abs() * (1.0 + 2.0 * u));
+            let beta = (e_n + xa * e_d) / room;
+            inflate(beta + u * (xa + beta), 8)
+        })
+        .collect()
+}
+
+/// The a priori bound `γ_{K_u + K_v} Σ_i Σ_j |b_ij| |B_i^m(u)| |B_j^n(v)|` for a tensor-product
+/// surface evaluated by de Casteljau in one direction, then the other (either order);
+/// `net[i][j]` is one coordinate of the control point `b_ij`.
+pub fn surface_a_priori_bound(net: &[Vec<f64>], u: f64, v: f64) -> f64 {
+    let (m, n) = (net.len() - 1, net[0].len() - 1);
+    let columns: Vec<f64> = (0..=n)
+        .map(|j| abs_bernstein_sum(&net.iter().map(|row| row[j]).collect::<Vec<_>>(), u))
+        .collect();
+    let sum = abs_bernstein_sum(&columns, v);
+    next_up(gamma(a_priori_index(m, u) + a_priori_index(n, v)) * sum)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -11,11 +11,12 @@ mod eft;
 mod ulp;
 
 pub use casteljau::{
-    a_priori_bound, a_priori_index, abs_bernstein_sum, compensated_de_casteljau, compensated_derivative, de_casteljau,
-    de_casteljau_running, gamma, next_down, next_up, UNIT_ROUNDOFF,
+    a_priori_bound, a_priori_index, abs_bernstein_sum, compensated_de_casteljau, compensated_derivative,
+    de_casteljau, de_casteljau_running, gamma, next_down, next_up, rational_a_priori_bound, surface_a_priori_bound,
+    UNIT_ROUNDOFF,
 };
 pub use eft::{fast_two_sum, two_product, two_sum};
 pub use ulp::{
-    decompose, nearest_f64, pow2_exact, round_scaled, ulp, ulp_distance, ulp_error, ulp_exponent, ulp_exponent_f64,
-    UlpError,
+    decompose, error_at_most, exact_f64, nearest_f64, pow2_exact, round_scaled, scale_pow2_up, ulp, ulp_distance,
+    ulp_error, ulp_exponent, ulp_exponent_f64, UlpError,
 };

@@ -259,6 +259,69 @@ pub fn ulp_error(approx: f64, exact: &BigRational) -> Result<UlpError> {
     })
 }
 
+/// `x` when it is exactly an `f64` (every finite float is a dyadic rational), else `None`.
+pub fn exact_f64(x: &BigRational) -> Option<f64> {
+    let k = power_of_two(x.denom())?;
+    let f = nearest_f64(x);
+    if !f.is_finite() {
+        return None;
+    }
+    let (_, m, e) = decompose(f);
+    // f = m·2^e equals n/2^k iff n·2^e... compare n with m·2^(e+k) by shifting
+    let n = x.numer().magnitude();
+    let shift = e + k as i64;
+    let same = if shift >= 0 {
+        *n == BigUint::from(m) << shift as u64
+    } else {
+        n << shift.unsigned_abs() == BigUint::from(m)
+    };
+    same.then_some(f)
+}
+
+/// `x · 2^k` rounded up in magnitude (exact unless it leaves the normal range).
+pub fn scale_pow2_up(x: f64, k: i64) -> f64 {
+    let mut y = x;
+    let mut k = k;
+    while k != 0 {
+        let step = k.clamp(-600, 600);
+        y *= f64::from_bits(((step + 1023) as u64) << 52);
+        k -= step;
+    }
+    if y.is_finite() && y != x * 0.0 && y.abs() >= f64::MIN_POSITIVE {
+        y
+    } else if y == 0.0 && x != 0.0 {
+        f64::from_bits(1).copysign(x)
+    } else {
+        // subnormal or overflowed: one float outward covers the lost bits
+        let up = f64::from_bits(y.abs().to_bits() + u64::from(y.is_finite()));
+        up.copysign(y)
+    }
+}
+
+/// Whether `|approx − exact| ≤ bound`, decided exactly (`bound` a nonnegative float or `+∞`).
+pub fn error_at_most(approx: f64, exact: &BigRational, bound: f64) -> bool {
+    if bound == f64::INFINITY {
+        return true;
+    }
+    if !approx.is_finite() || bound.is_nan() || bound < 0.0 {
+        return false;
+    }
+    let (neg, m, e) = decompose(approx);
+    let (_, bm, be) = decompose(bound);
+    let a = BigInt::from_biguint(if neg { Sign::Minus } else { Sign::Plus }, BigUint::from(m));
+    match power_of_two(exact.denom()) {
+        Some(k) => {
+            let low = e.min(-(k as i64)).min(be);
+            let diff = (a << ((e - low) as u64)) - (exact.numer() << ((-(k as i64) - low) as u64));
+            *diff.magnitude() <= BigUint::from(bm) << ((be - low) as u64)
+        }
+        None => {
+            let err = Signed::abs(&(BigRational::from_float(approx).expect("finite") - exact));
+            err <= BigRational::from_float(bound).expect("finite")
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -302,6 +365,26 @@ mod tests {
         // dyadic ties: 2^53 + 1 is halfway, rounds to even 2^53; 2^53 + 3 rounds up
         assert_eq!(nearest_f64(&q("9007199254740993")), 9007199254740992.0);
         assert_eq!(nearest_f64(&q("9007199254740995")), 9007199254740996.0);
+    }
+
+    #[test]
+    fn exactness_scaling_and_error_comparison() {
+        assert_eq!(exact_f64(&q("0.5")), Some(0.5));
+        assert_eq!(exact_f64(&q("0.1")), None);
+        assert_eq!(exact_f64(&q("1/3")), None);
+        assert_eq!(exact_f64(&q("9007199254740993")), None);
+        assert_eq!(exact_f64(&BigRational::from_f64(0.1).unwrap()), Some(0.1));
+        assert_eq!(scale_pow2_up(3.0, 4), 48.0);
+        assert!(scale_pow2_up(1.0, -1074) >= f64::from_bits(1));
+        assert_eq!(scale_pow2_up(1.0, -1080), f64::from_bits(1));
+        assert_eq!(scale_pow2_up(1.0, 1030), f64::INFINITY);
+        let third = q("1/3");
+        let x = 1.0 / 3.0;
+        let err = Signed::abs(&(BigRational::from_f64(x).unwrap() - &third));
+        let e = Scalar::to_f64(&err);
+        assert!(error_at_most(x, &third, e * 1.0000001) && !error_at_most(x, &third, e * 0.9999999));
+        assert!(error_at_most(0.5, &q("0.5"), 0.0) && !error_at_most(0.5, &q("0.25"), 0.2));
+        assert!(error_at_most(0.5, &q("0.25"), 0.25) && error_at_most(0.5, &q("0.25"), f64::INFINITY));
     }
 
     #[test]
