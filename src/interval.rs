@@ -264,7 +264,9 @@ impl Scalar for Interval {
     /// An error when the divisor contains 0.
     fn checked_div(&self, rhs: &Self) -> Result<Self> {
         if rhs.lo <= 0.0 && rhs.hi >= 0.0 {
-            return Err(Error::DivisionByZero(format!("{self} / {rhs} (the divisor contains 0)")));
+            return Err(Error::DivisionByZero(format!(
+                "{self} / {rhs} (the divisor contains 0)"
+            )));
         }
         let mut lo = f64::INFINITY;
         let mut hi = f64::NEG_INFINITY;
@@ -273,7 +275,11 @@ impl Scalar for Interval {
                 let q = a / b;
                 // the remainder a − q·b is exact (fma), and its sign over b's is the error's
                 let r = (-q).mul_add(b, a);
-                let e = if q.is_finite() && b.is_finite() { r * b.signum() } else { 0.0 };
+                let e = if q.is_finite() && b.is_finite() {
+                    r * b.signum()
+                } else {
+                    0.0
+                };
                 lo = lo.min(down(q, e));
                 hi = hi.max(up(q, e));
             }
@@ -433,5 +439,9 @@ pub fn filtered_hull_contains(points: &[[f64; 2]], p: [f64; 2]) -> bool {
 /// Whether the exact point lies in the box of intervals (decided exactly).
 pub fn point_contains(boxes: &Point<Interval>, exact_point: &Point<BigRational>) -> bool {
     boxes.coords().len() == exact_point.coords().len()
-        && boxes.coords().iter().zip(exact_point.coords()).all(|(b, x)| b.contains(x))
+        && boxes
+            .coords()
+            .iter()
+            .zip(exact_point.coords())
+            .all(|(b, x)| b.contains(x))
 }

@@ -11,9 +11,8 @@ mod eft;
 mod ulp;
 
 pub use casteljau::{
-    a_priori_bound, a_priori_index, abs_bernstein_sum, compensated_de_casteljau, compensated_derivative,
-    de_casteljau, de_casteljau_running, gamma, next_down, next_up, rational_a_priori_bound, surface_a_priori_bound,
-    UNIT_ROUNDOFF,
+    a_priori_bound, a_priori_index, abs_bernstein_sum, compensated_de_casteljau, compensated_derivative, de_casteljau,
+    de_casteljau_running, gamma, next_down, next_up, rational_a_priori_bound, surface_a_priori_bound, UNIT_ROUNDOFF,
 };
 pub use eft::{fast_two_sum, two_product, two_sum};
 pub use ulp::{

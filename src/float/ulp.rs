@@ -280,6 +280,9 @@ pub fn exact_f64(x: &BigRational) -> Option<f64> {
 
 /// `x · 2^k` rounded up in magnitude (exact unless it leaves the normal range).
 pub fn scale_pow2_up(x: f64, k: i64) -> f64 {
+    if x == 0.0 || x.is_nan() {
+        return x;
+    }
     let mut y = x;
     let mut k = k;
     while k != 0 {

@@ -119,7 +119,7 @@ impl Op {
     /// at once.
     pub fn work(&self) -> f64 {
         match self {
-            Op::Eval { curve, t, .. } => fraction_free_work(curve, t),
+            Op::Eval { curve, t, .. } | Op::FloatEval { curve, t, .. } => fraction_free_work(curve, t),
             Op::Split { curve, t } => triangle_work(
                 curve.degree(),
                 curve.dim(),

@@ -1,10 +1,12 @@
 //! Reading requests: JSON fields into exact inputs, with errors that name the field.
 
+use super::judge::{not_a_float, FloatMethod};
 use super::protocol::{too_large, truncate};
 use super::{check_weight_count, Op, MAX_DIMENSION, MAX_POINTS, OPS};
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::fit::CubicFitData;
+use crate::float::exact_f64;
 use crate::input::{
     count_from_json, describe, in_context, net_from_json, number_from_json, numbers_from_json, point_from_json,
     points_from_json,
@@ -40,6 +42,7 @@ impl Op {
             "conic" => &["points", "weights"],
             "surface_eval" => &["net", "u", "v", "approx"],
             "fit_cubic" => &["x0", "x1", "xh", "d0", "d1"],
+            "float_eval" => &["points", "t", "method"],
             other => {
                 return Err(Error::Parse(format!(
                     "unknown op {:?} (known ops: {})",
@@ -128,6 +131,32 @@ impl Op {
                 Op::FitCubic {
                     data: CubicFitData::new(point("x0")?, point("x1")?, point("xh")?, point("d0")?, point("d1")?)?,
                 }
+            }
+            "float_eval" => {
+                let curve = req.curve("points")?;
+                let t = req.number("t")?;
+                if exact_f64(&t).is_none() {
+                    return Err(not_a_float("t", &t));
+                }
+                if let Some(x) = curve
+                    .points()
+                    .iter()
+                    .flat_map(|p| p.coords())
+                    .find(|x| exact_f64(x).is_none())
+                {
+                    return Err(not_a_float("points", x));
+                }
+                let method = match obj.get("method") {
+                    None => FloatMethod::Compensated,
+                    Some(Value::String(s)) => req.in_field("method", FloatMethod::parse(s))?,
+                    Some(other) => {
+                        return Err(Error::Parse(format!(
+                            "field 'method' must be a string (de_casteljau, compensated or interval), got {}",
+                            describe(other)
+                        )))
+                    }
+                };
+                Op::FloatEval { curve, t, method }
             }
             _ => unreachable!("op names were matched above"),
         };

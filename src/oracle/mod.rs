@@ -66,11 +66,13 @@
 mod cost;
 mod io;
 mod json;
+mod judge;
 mod protocol;
 mod text;
 
 pub use crate::float::{nearest_f64, ulp, ulp_distance, ulp_error, UlpError};
-pub use io::{read_line_bounded, serve, Line};
+pub use io::{read_line_bounded, serve, skip_line, Line};
+pub use judge::{BoundCheck, FloatEvalAnswer, FloatMethod};
 pub use protocol::{check_weight_count, Answer, Op, OPS};
 pub use text::conic_polynomial;
 
@@ -105,14 +107,14 @@ pub const MAX_WORK: f64 = 5.0e11;
 pub fn handle_line(line: &str) -> String {
     let outcome = std::panic::catch_unwind(|| respond(line));
     match outcome {
-        Ok(v) => v.to_string(),
+        Ok(v) => v,
         Err(_) => {
             json!({"ok": false, "error": "internal error (a bug in casteljau: please report the request)"}).to_string()
         }
     }
 }
 
-fn respond(line: &str) -> Value {
+fn respond(line: &str) -> String {
     let request: Value = match serde_json::from_str(line) {
         Ok(v) => v,
         Err(e) => {
@@ -121,10 +123,9 @@ fn respond(line: &str) -> Value {
             } else {
                 format!("not valid JSON: {e}")
             };
-            return json!({"ok": false, "error": msg});
+            return json!({"ok": false, "error": msg}).to_string();
         }
     };
-    let id = request.get("id").cloned();
     let mut out = match Op::from_json(&request).and_then(|op| op.run()) {
         Ok(answer) => {
             let mut m = answer.to_json();
@@ -138,10 +139,41 @@ fn respond(line: &str) -> Value {
             m
         }
     };
-    if let Some(id) = id {
-        out.insert("id".into(), id);
+    match request.get("id") {
+        None => Value::Object(out).to_string(),
+        Some(id) if !has_inexact_number(id) => {
+            out.insert("id".into(), id.clone());
+            Value::Object(out).to_string()
+        }
+        Some(id) => {
+            // A number that is not a 64-bit integer would be re-printed from its f64
+            // (1e+29 for a 30-digit id): echo the id's own text instead, verbatim.
+            #[derive(serde::Deserialize)]
+            struct RawId<'a> {
+                #[serde(borrow)]
+                id: &'a serde_json::value::RawValue,
+            }
+            let raw = serde_json::from_str::<RawId>(line).map(|r| r.id.get().to_string());
+            let rest = Value::Object(out.clone()).to_string();
+            match raw {
+                Ok(raw) => format!("{{\"id\":{raw},{}", &rest[1..]),
+                Err(_) => {
+                    out.insert("id".into(), id.clone());
+                    Value::Object(out).to_string()
+                }
+            }
+        }
     }
-    Value::Object(out)
+}
+
+/// Whether a JSON value holds a number that serde_json keeps only as an `f64`.
+fn has_inexact_number(v: &Value) -> bool {
+    match v {
+        Value::Number(n) => !(n.is_i64() || n.is_u64()),
+        Value::Array(items) => items.iter().any(has_inexact_number),
+        Value::Object(m) => m.values().any(has_inexact_number),
+        _ => false,
+    }
 }
 
 #[cfg(test)]
@@ -171,6 +203,96 @@ mod tests {
         // Just inside the range it is measured.
         let r = ask(r#"{"op":"eval","points":[["1e308"]],"t":0,"approx":[1e308]}"#);
         assert_eq!(r["ulps"], json!([0]), "{r}");
+    }
+
+    #[test]
+    fn eval_judges_the_callers_float_against_the_a_priori_bound() {
+        // fl(fl(0.5·0.1) + fl(0.5·0.7)) = 0.39999999999999997 vs exact 0.4 + tiny: within
+        let r = ask(r#"{"op":"eval","points":[[0.1],[0.7]],"t":0.5,"approx":[0.39999999999999997]}"#);
+        assert_eq!(r["within_bound"], json!([true]), "{r}");
+        let b = r["bound"][0].as_f64().unwrap();
+        assert!(b > 0.0 && b < 3.0, "{r}");
+        // 5 ulps off is beyond the bound of a degree-1 evaluation
+        let r = ask(r#"{"op":"eval","points":[[0.1],[0.7]],"t":0.5,"approx":[0.4000000000000002]}"#);
+        assert_eq!(r["within_bound"], json!([false]), "{r}");
+        // a parameter that is no float: no bound
+        let r = ask(r#"{"op":"eval","points":[[0.1],[0.7]],"t":"1/3","approx":[0.3]}"#);
+        assert!(r.get("bound").is_none() && r["ok"] == json!(true), "{r}");
+        let r =
+            ask(r#"{"op":"rational_eval","points":[[1,0],[1,1],[0,1]],"weights":[1,1,2],"t":0.5,"approx":[0.6,0.8]}"#);
+        assert_eq!(r["within_bound"], json!([true, true]), "{r}");
+        let r = ask(
+            r#"{"op":"surface_eval","net":[[[0,0,0],[0,1,0]],[[1,0,0],[1,1,1]]],"u":0.1,"v":0.7,"approx":[0.1,0.7,0.07]}"#,
+        );
+        assert_eq!(r["within_bound"], json!([true, true, true]), "{r}");
+    }
+
+    #[test]
+    fn float_eval_runs_each_method_and_judges_it() {
+        let pts = r#"[[-0.421875],[0.140625],[-0.046875],[0.015625]]"#;
+        for method in ["de_casteljau", "compensated", "interval"] {
+            let r = ask(&format!(
+                r#"{{"op":"float_eval","points":{pts},"t":0.7500001,"method":"{method}"}}"#
+            ));
+            assert_eq!(r["ok"], json!(true), "{r}");
+            assert_eq!(r["within_bound"], json!([true]), "{method}: {r}");
+            if method == "compensated" {
+                assert!(r["ulps"][0].as_u64().unwrap() <= 1, "{r}");
+            }
+            if method == "de_casteljau" {
+                assert!(r["error_ulps"][0].as_f64().unwrap() > 1000.0, "{r}");
+                assert_eq!(r["within_running_bound"], json!([true]), "{r}");
+            }
+            if method == "interval" {
+                assert_eq!(r["encloses"], json!([true]), "{r}");
+            }
+        }
+        let r = ask(r#"{"op":"float_eval","points":[[0],[1]],"t":"1/3"}"#);
+        assert!(r["error"].as_str().unwrap().contains("must be a float"), "{r}");
+        let r = ask(r#"{"op":"float_eval","points":[[0],["0.1"]],"t":0.5}"#);
+        assert!(r["error"].as_str().unwrap().contains("must be a float"), "{r}");
+        let r = ask(r#"{"op":"float_eval","points":[[0],[1]],"t":0.5,"method":"horner"}"#);
+        assert!(r["error"].as_str().unwrap().contains("unknown method"), "{r}");
+    }
+
+    #[test]
+    fn encodings_never_lose_information() {
+        // an error beyond the f64 range of ulps is the string "inf", never null
+        let r = ask(r#"{"op":"eval","points":[[0]],"t":0,"approx":[1e-15]}"#);
+        assert_eq!(r["error_ulps"], json!(["inf"]), "{r}");
+        assert_eq!(r["ulps"], json!([1e-15f64.to_bits().to_string()]), "{r}");
+        assert_eq!(r["bound"], json!([0.0]), "{r}");
+        // ids are echoed verbatim, big integers included
+        let line = r#"{"id":123456789012345678901234567890,"op":"eval","points":[[1]],"t":0}"#;
+        assert_eq!(
+            handle_line(line),
+            r#"{"id":123456789012345678901234567890,"ok":true,"point":["1"]}"#
+        );
+        let line = r#"{"id":[0.1, 1e400],"op":"eval","points":[[1]],"t":0}"#;
+        assert!(handle_line(line).contains("not valid JSON"));
+        let line = r#"{"id":[0.10, 2],"op":"eval","points":[[1]],"t":0}"#;
+        assert_eq!(handle_line(line), r#"{"id":[0.10, 2],"ok":true,"point":["1"]}"#);
+    }
+
+    #[test]
+    fn an_over_long_line_is_answered_before_its_end_arrives() {
+        // a reader that fails after the limit + 1 bytes: the answer must already be out
+        struct Failing(usize);
+        impl io::Read for Failing {
+            fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+                if self.0 == 0 {
+                    return Err(io::Error::other("the rest of the line never comes"));
+                }
+                let n = buf.len().min(self.0);
+                buf[..n].fill(b'x');
+                self.0 -= n;
+                Ok(n)
+            }
+        }
+        let mut out = Vec::new();
+        let result = serve(io::BufReader::new(Failing(MAX_LINE_BYTES + 1)), &mut out);
+        assert!(result.is_err());
+        assert!(String::from_utf8(out).unwrap().contains("longer than"));
     }
 
     #[test]
@@ -379,12 +501,22 @@ mod tests {
         let input = format!("{}\nshort\n{}", "x".repeat(100), "y".repeat(5));
         let mut r = io::BufReader::with_capacity(7, input.as_bytes());
         assert_eq!(read_line_bounded(&mut r, 10).unwrap(), Line::TooLong);
+        skip_line(&mut r).unwrap();
         assert_eq!(read_line_bounded(&mut r, 10).unwrap(), Line::Text(b"short".to_vec()));
         assert_eq!(read_line_bounded(&mut r, 10).unwrap(), Line::Text(b"yyyyy".to_vec()));
         assert_eq!(read_line_bounded(&mut r, 10).unwrap(), Line::Eof);
         let mut r = io::BufReader::new(&b"\n\n"[..]);
         assert_eq!(read_line_bounded(&mut r, 10).unwrap(), Line::Text(vec![]));
         assert_eq!(read_line_bounded(&mut r, 10).unwrap(), Line::Text(vec![]));
+        assert_eq!(read_line_bounded(&mut r, 10).unwrap(), Line::Eof);
+        // exactly the limit is fine; one more byte is too long, even without a newline
+        let mut r = io::BufReader::new(&b"0123456789\n0123456789a"[..]);
+        assert_eq!(
+            read_line_bounded(&mut r, 10).unwrap(),
+            Line::Text(b"0123456789".to_vec())
+        );
+        assert_eq!(read_line_bounded(&mut r, 10).unwrap(), Line::TooLong);
+        skip_line(&mut r).unwrap();
         assert_eq!(read_line_bounded(&mut r, 10).unwrap(), Line::Eof);
     }
 

@@ -1,5 +1,9 @@
 //! The oracle's requests ([`Op`]) and answers ([`Answer`]): limits checked, exact work run.
 
+use super::judge::{
+    curve_bounds, float_eval, float_json, rational_bounds, surface_bounds, ulps_json, BoundCheck, FloatEvalAnswer,
+    FloatMethod,
+};
 use super::{MAX_DEGREE, MAX_DIMENSION, MAX_POINTS, MAX_WORK};
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
@@ -84,6 +88,15 @@ pub enum Op {
         /// `x(0), x(1), x(1/2), ẋ(0), ẋ(1)`
         data: CubicFitData<BigRational>,
     },
+    /// casteljau's own float evaluation of `b(t)` by `method`, judged exactly (float inputs).
+    FloatEval {
+        /// the curve (every coordinate a float exactly)
+        curve: BezierCurve<BigRational>,
+        /// the parameter (a float exactly)
+        t: BigRational,
+        /// the evaluator
+        method: FloatMethod,
+    },
 }
 
 /// The exact result of an [`Op`].
@@ -96,7 +109,12 @@ pub enum Answer {
         point: Point<BigRational>,
         /// per coordinate, when `approx` was given
         ulps: Option<Vec<UlpError>>,
+        /// per coordinate, the caller's result judged against the a priori de Casteljau
+        /// bound (when `approx` was given and the parameters are floats)
+        bound: Option<Vec<BoundCheck>>,
     },
+    /// casteljau's own float evaluation, judged exactly.
+    FloatEval(Box<FloatEvalAnswer>),
     /// Control points.
     Points(Vec<Point<BigRational>>),
     /// A vector (a derivative at a parameter).
@@ -125,12 +143,27 @@ impl Answer {
     pub fn to_json(&self) -> Map<String, Value> {
         let mut m = Map::new();
         match self {
-            Answer::Point { point, ulps } => {
+            Answer::Point { point, ulps, bound } => {
                 m.insert("point".into(), point_to_json(point));
                 if let Some(u) = ulps {
-                    m.insert("ulps".into(), u.iter().map(|e| json!(e.ulps)).collect());
-                    m.insert("error_ulps".into(), u.iter().map(|e| json!(e.error_ulps)).collect());
-                    m.insert("nearest".into(), u.iter().map(|e| json!(e.nearest)).collect());
+                    insert_errors(&mut m, u);
+                }
+                if let Some(b) = bound {
+                    insert_bound(&mut m, "bound", "within_bound", b);
+                }
+            }
+            Answer::FloatEval(f) => {
+                m.insert("method".into(), json!(f.method.as_str()));
+                m.insert("point".into(), point_to_json(&f.point));
+                m.insert("value".into(), f.values.iter().map(|v| json!(v)).collect());
+                insert_errors(&mut m, &f.errors);
+                insert_bound(&mut m, "bound", "within_bound", &f.bound);
+                if let Some(r) = &f.running {
+                    insert_bound(&mut m, "running_bound", "within_running_bound", r);
+                }
+                if let Some(e) = &f.enclosure {
+                    m.insert("interval".into(), e.iter().map(|(lo, hi, _)| json!([lo, hi])).collect());
+                    m.insert("encloses".into(), e.iter().map(|(_, _, ok)| json!(ok)).collect());
                 }
             }
             Answer::Points(p) => {
@@ -162,6 +195,22 @@ impl Answer {
     }
 }
 
+/// `ulps`, `error_ulps` and `nearest`, one entry per coordinate.
+fn insert_errors(m: &mut Map<String, Value>, errors: &[UlpError]) {
+    m.insert("ulps".into(), errors.iter().map(|e| ulps_json(e.ulps)).collect());
+    m.insert(
+        "error_ulps".into(),
+        errors.iter().map(|e| float_json(e.error_ulps)).collect(),
+    );
+    m.insert("nearest".into(), errors.iter().map(|e| json!(e.nearest)).collect());
+}
+
+/// A bound in ulps and the verdicts, one entry per coordinate.
+fn insert_bound(m: &mut Map<String, Value>, bound: &str, within: &str, checks: &[BoundCheck]) {
+    m.insert(bound.into(), checks.iter().map(|c| float_json(c.bound_ulps)).collect());
+    m.insert(within.into(), checks.iter().map(|c| json!(c.within)).collect());
+}
+
 impl Op {
     /// Checks the size limits and the work estimate.
     pub fn check_limits(&self) -> Result<()> {
@@ -175,7 +224,10 @@ impl Op {
             Ok(())
         };
         match self {
-            Op::Eval { curve, .. } | Op::Split { curve, .. } | Op::Derivative { curve, .. } => degree(curve)?,
+            Op::Eval { curve, .. }
+            | Op::FloatEval { curve, .. }
+            | Op::Split { curve, .. }
+            | Op::Derivative { curve, .. } => degree(curve)?,
             Op::Elevate { curve, by } => {
                 degree(curve)?;
                 let total = curve.degree() as u128 + *by as u128;
@@ -252,11 +304,15 @@ impl Op {
         self.check_limits()?;
         Ok(match self {
             Op::Eval { curve, t, approx } => {
-                // Same value as `curve.eval(t)` (a property test pins it), without a gcd per step;
-                // the work estimate above stays that of the generic algorithm, conservatively.
+                // Same value as `curve.eval(t)` (a property test pins it), without a gcd per step.
                 let point = curve.eval_fraction_free(t);
                 let ulps = ulps_of(approx.as_deref(), &point)?;
-                Answer::Point { point, ulps }
+                let bound = approx.as_deref().and_then(|a| curve_bounds(curve, t, a, &point));
+                Answer::Point { point, ulps, bound }
+            }
+            Op::FloatEval { curve, t, method } => {
+                let point = curve.eval_fraction_free(t);
+                Answer::FloatEval(Box::new(float_eval(curve, t, *method, point)?))
             }
             Op::Elevate { curve, by } => Answer::Points(curve.elevate_by(*by)?.into_points()),
             Op::Split { curve, t } => {
@@ -275,7 +331,8 @@ impl Op {
             Op::RationalEval { curve, t, approx } => {
                 let point = curve.eval(t)?;
                 let ulps = ulps_of(approx.as_deref(), &point)?;
-                Answer::Point { point, ulps }
+                let bound = approx.as_deref().and_then(|a| rational_bounds(curve, t, a, &point));
+                Answer::Point { point, ulps, bound }
             }
             Op::Conic { curve } => {
                 if curve.points().len() != 3 {
@@ -303,7 +360,8 @@ impl Op {
             Op::SurfaceEval { surface, u, v, approx } => {
                 let point = surface.eval(u, v);
                 let ulps = ulps_of(approx.as_deref(), &point)?;
-                Answer::Point { point, ulps }
+                let bound = approx.as_deref().and_then(|a| surface_bounds(surface, u, v, a, &point));
+                Answer::Point { point, ulps, bound }
             }
             Op::FitCubic { data } => Answer::Fit(Box::new(fit_cubic(data)?)),
             Op::ToBezier { power } => {
@@ -355,6 +413,7 @@ pub const OPS: &[&str] = &[
     "conic",
     "surface_eval",
     "fit_cubic",
+    "float_eval",
 ];
 
 pub(super) fn too_large(what: &'static str, value: usize, limit: usize) -> Error {

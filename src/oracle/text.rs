@@ -11,6 +11,32 @@ impl Answer {
     pub fn to_text(&self) -> String {
         match self {
             Answer::Point { point, .. } => point.to_string(),
+            Answer::FloatEval(f) => {
+                let list = |items: Vec<String>| items.join(", ");
+                let mut text = format!(
+                    "method: {}\nvalue: {}\nexact: {}\nulps: {}\nerror_ulps: {}\nbound_ulps: {}\nwithin_bound: {}",
+                    f.method.as_str(),
+                    list(f.values.iter().map(|v| format!("{v:?}")).collect()),
+                    f.point,
+                    list(f.errors.iter().map(|e| e.ulps.to_string()).collect()),
+                    list(f.errors.iter().map(|e| format!("{:?}", e.error_ulps)).collect()),
+                    list(f.bound.iter().map(|b| format!("{:?}", b.bound_ulps)).collect()),
+                    list(f.bound.iter().map(|b| b.within.to_string()).collect()),
+                );
+                if let Some(r) = &f.running {
+                    text.push_str(&format!(
+                        "\nrunning_bound_ulps: {}",
+                        list(r.iter().map(|b| format!("{:?}", b.bound_ulps)).collect())
+                    ));
+                }
+                if let Some(e) = &f.enclosure {
+                    text.push_str(&format!(
+                        "\ninterval: {}",
+                        list(e.iter().map(|(lo, hi, _)| format!("[{lo:?}, {hi:?}]")).collect())
+                    ));
+                }
+                text
+            }
             Answer::Points(p) => format_points(p),
             Answer::Vector(v) => v.to_string(),
             Answer::Split { left, right } => {
