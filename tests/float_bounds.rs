@@ -41,8 +41,14 @@ fn gamma_exact(k: usize) -> BigRational {
 /// The exact `p(t)` and `Σ|b_i| B_i(t)` (t in [0, 1]).
 fn exact_value_and_sum(b: &[f64], t: f64) -> (BigRational, BigRational) {
     let curve = |c: Vec<BigRational>| BezierCurve::from_coords(c.into_iter().map(|x| vec![x]).collect()).unwrap();
-    let p = curve(b.iter().map(|x| q(*x)).collect()).eval_fraction_free(&q(t)).coords()[0].clone();
-    let s = curve(b.iter().map(|x| q(f64::abs(*x))).collect()).eval_fraction_free(&q(t)).coords()[0].clone();
+    let p = curve(b.iter().map(|x| q(*x)).collect())
+        .eval_fraction_free(&q(t))
+        .coords()[0]
+        .clone();
+    let s = curve(b.iter().map(|x| q(f64::abs(*x))).collect())
+        .eval_fraction_free(&q(t))
+        .coords()[0]
+        .clone();
     (p, s)
 }
 
@@ -58,7 +64,10 @@ fn check_case(b: &[f64], t: f64) {
     assert!(error_at_most(plain, &p, a_priori_bound(b, t)), "{b:?} at {t}");
     let (value, running) = de_casteljau_running(b, t);
     assert_eq!(value.to_bits(), plain.to_bits());
-    assert!(error_at_most(plain, &p, running), "running bound violated: {b:?} at {t}");
+    assert!(
+        error_at_most(plain, &p, running),
+        "running bound violated: {b:?} at {t}"
+    );
     // compensated: u|p| + γ_{3n}² Σ|b_i|B_i (the constant, without the paper's 2)
     let (comp, comp_bound) = compensated_de_casteljau(b, t);
     let g = gamma_exact(3 * n);
@@ -125,7 +134,10 @@ fn compensated_is_within_one_ulp_on_random_curves() {
             worse += 1;
         }
     }
-    assert!(worse == 0, "{worse} of {total} more than 1 ulp from the correctly rounded value");
+    assert!(
+        worse == 0,
+        "{worse} of {total} more than 1 ulp from the correctly rounded value"
+    );
 }
 
 #[test]
@@ -172,7 +184,12 @@ fn intervals_enclose_split_and_derivatives_too() {
         let ti = Interval::from_f64(t).unwrap();
         let (l, r) = iv.split_at(&ti);
         let (el, er) = exact.split_at(&q(t));
-        for (a, e) in l.points().iter().chain(r.points()).zip(el.points().iter().chain(er.points())) {
+        for (a, e) in l
+            .points()
+            .iter()
+            .chain(r.points())
+            .zip(el.points().iter().chain(er.points()))
+        {
             assert!(a.coords()[0].contains(&e.coords()[0]));
         }
         let d = iv.derivative_at(2, &ti).unwrap().coords()[0];

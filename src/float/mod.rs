@@ -7,6 +7,7 @@
 //! the correctly rounded value. Every bound is checked exactly, in rationals, by the tests.
 
 mod casteljau;
+mod dyadic;
 mod eft;
 mod ulp;
 
@@ -14,8 +15,9 @@ pub use casteljau::{
     a_priori_bound, a_priori_index, abs_bernstein_sum, compensated_de_casteljau, compensated_derivative, de_casteljau,
     de_casteljau_running, gamma, next_down, next_up, rational_a_priori_bound, surface_a_priori_bound, UNIT_ROUNDOFF,
 };
+pub use dyadic::{dyadic_ratio, eval_dyadic};
 pub use eft::{fast_two_sum, two_product, two_sum};
 pub use ulp::{
-    decompose, error_at_most, exact_f64, nearest_f64, pow2_exact, round_scaled, scale_pow2_up, ulp, ulp_distance,
-    ulp_error, ulp_exponent, ulp_exponent_f64, UlpError,
+    decompose, error_at_most, exact_f64, f64_to_rational, nearest_f64, pow2_exact, round_scaled, scale_pow2_up, ulp,
+    ulp_distance, ulp_error, ulp_exponent, ulp_exponent_f64, UlpError,
 };

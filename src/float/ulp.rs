@@ -259,6 +259,33 @@ pub fn ulp_error(approx: f64, exact: &BigRational) -> Result<UlpError> {
     })
 }
 
+/// The exact value of a finite float, in lowest terms without a gcd (strip the mantissa's
+/// trailing zeros); `None` for NaN and infinities.
+///
+/// ```
+/// use casteljau::{float::f64_to_rational, BigRational};
+/// assert_eq!(f64_to_rational(0.375), Some(BigRational::new(3.into(), 8.into())));
+/// assert_eq!(f64_to_rational(f64::NAN), None);
+/// ```
+pub fn f64_to_rational(x: f64) -> Option<BigRational> {
+    if !x.is_finite() {
+        return None;
+    }
+    let (negative, m, e) = decompose(x);
+    if m == 0 {
+        return Some(BigRational::zero());
+    }
+    let z = (m.trailing_zeros() as i64).min(-e.min(0));
+    let (m, e) = (m >> z, e + z);
+    let n = BigInt::from(m);
+    let n = if negative { -n } else { n };
+    Some(if e >= 0 {
+        BigRational::from_integer(n << e as u64)
+    } else {
+        BigRational::new_raw(n, BigInt::from(1) << e.unsigned_abs())
+    })
+}
+
 /// `x` when it is exactly an `f64` (every finite float is a dyadic rational), else `None`.
 pub fn exact_f64(x: &BigRational) -> Option<f64> {
     let k = power_of_two(x.denom())?;
@@ -434,6 +461,7 @@ mod tests {
             prop_assume!(x.is_finite());
             let exact = BigRational::from_f64(x).unwrap();
             prop_assert_eq!(nearest_f64(&exact), x);
+            prop_assert_eq!(&exact, &BigRational::from_float(x).unwrap());
             prop_assert_eq!(ulp_exponent(&exact), ulp_exponent_f64(x));
             let e = ulp_error(x, &exact).unwrap();
             prop_assert_eq!((e.ulps, e.error_ulps), (0, 0.0));

@@ -8,7 +8,7 @@ use super::{MAX_DEGREE, MAX_DIMENSION, MAX_POINTS, MAX_WORK};
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::fit::{fit_cubic, CubicFit, CubicFitData};
-use crate::float::{ulp_error, UlpError};
+use crate::float::{eval_dyadic, ulp_error, UlpError};
 use crate::input::{number_to_json, point_to_json, points_to_json};
 use crate::point::Point;
 use crate::rational::{classify_conic, implicit_conic, ConicKind, RationalBezierCurve};
@@ -304,14 +304,15 @@ impl Op {
         self.check_limits()?;
         Ok(match self {
             Op::Eval { curve, t, approx } => {
-                // Same value as `curve.eval(t)` (a property test pins it), without a gcd per step.
-                let point = curve.eval_fraction_free(t);
+                // Same value as `curve.eval(t)` (property tests pin both), without a gcd per step;
+                // float inputs need no gcd at all.
+                let point = eval_dyadic(curve, t).unwrap_or_else(|| curve.eval_fraction_free(t));
                 let ulps = ulps_of(approx.as_deref(), &point)?;
                 let bound = approx.as_deref().and_then(|a| curve_bounds(curve, t, a, &point));
                 Answer::Point { point, ulps, bound }
             }
             Op::FloatEval { curve, t, method } => {
-                let point = curve.eval_fraction_free(t);
+                let point = eval_dyadic(curve, t).unwrap_or_else(|| curve.eval_fraction_free(t));
                 Answer::FloatEval(Box::new(float_eval(curve, t, *method, point)?))
             }
             Op::Elevate { curve, by } => Answer::Points(curve.elevate_by(*by)?.into_points()),
