@@ -105,7 +105,7 @@ fn main() {
                     (multiple_root(n, r), r + delta)
                 };
                 let p = exact_eval(&b, t);
-                let abs: Vec<f64> = b.iter().map(|x| x.abs()).collect();
+                let abs: Vec<f64> = b.iter().map(|x| f64::abs(*x)).collect();
                 let sum = exact_eval(&abs, t);
                 let err = |x: f64| Signed::abs(&(q(x) - &p));
                 // plain de Casteljau and its bounds
