@@ -299,6 +299,14 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             if !scheme {
                 return emit(&answer, format, None);
             }
+            // the scheme is the whole triangle of exact lerps, as in a subdivision: the same
+            // work limit applies (this also bounds the printed size)
+            Op::Split {
+                curve: curve.clone(),
+                t: t.clone(),
+            }
+            .check_limits()
+            .map_err(|err| format!("--scheme: {err}"))?;
             let scheme = curve.scheme(&t);
             match format {
                 Format::Text => {

@@ -53,3 +53,16 @@ fn usage_errors_are_one_line() {
     let err = String::from_utf8(casteljau(&["eval", "0,0", "--t", "1", "--method", "interval"]).stderr).unwrap();
     assert!(err.contains("--f64"), "{err}");
 }
+
+#[test]
+fn the_scheme_has_a_work_limit() {
+    let points: Vec<String> = (0..=1000).map(|i| format!("{}", (i * 7919) % 1000)).collect();
+    let out = casteljau(&["eval", &points.join(";"), "--t", "1/3", "--scheme"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.contains("--scheme") && err.contains("estimated exact work"),
+        "{err}"
+    );
+    assert!(out.stdout.is_empty());
+}

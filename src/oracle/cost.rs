@@ -63,7 +63,9 @@ fn op_cost(b_in: f64, shared: f64, mixed: f64) -> f64 {
 
 /// Relative cost of numbers grown by a dyadic parameter (powers of two in the
 /// denominators reduce by shifts, but the numerators still grow).
-const DYADIC_WEIGHT: f64 = 3.0;
+/// Calibrated by `examples/work_calibration.rs`: `split` of 64-D floats of degree 53 at
+/// `t = 0.1` took 6.8 s at weight 3, so the weight is 6.
+const DYADIC_WEIGHT: f64 = 6.0;
 
 /// Work of the de Casteljau triangle on `n + 1` points of dimension `dim` whose
 /// coordinates have `b` bits, at the parameter `t`, with inputs whose denominators add
@@ -130,10 +132,14 @@ impl Op {
             Op::Elevate { curve, by } => {
                 let (n, total) = (curve.degree(), curve.degree() + by);
                 // every output point combines up to n + 1 inputs with weights C(n,j)C(r,i−j)/C(n+r,i)
-                // of about 2·total bits; each term is a multiplication and an addition
+                // of about 2·total bits; each term is a multiplication and an addition, of an input
+                // number by a weight: linear in the weight's size (calibrated by
+                // `examples/work_calibration.rs`: a cubic elevated by 1717 takes 0.04 s)
                 let terms = (total + 1) as f64 * (n.min(*by) + 1) as f64 * curve.dim() as f64;
                 let mixed = (n.min(*by) + 1) as f64 * curve_den_growth(curve);
-                3.0 * terms * op_cost(curve_bits(curve), 2.0 * total as f64, mixed) + (total as f64).powi(3)
+                let weight_bits = 2.0 * total as f64;
+                let b = curve_bits(curve) + mixed + 64.0;
+                3.0 * terms * (INPUT_WEIGHT * b * b + 64.0 * weight_bits + b * weight_bits) + (total as f64).powi(3)
             }
             Op::Derivative { curve, order, at } => {
                 let (n, k) = (curve.degree(), (*order).min(curve.degree()));
@@ -172,8 +178,10 @@ impl Op {
                 let d = &data;
                 let numbers = [&d.x0, &d.x1, &d.xh, &d.d0, &d.d1].into_iter().flat_map(|p| p.coords());
                 // Gram matrix, right-hand side, a 2×2 solve and δ²: a few dozen operations per
-                // coordinate on products of up to about ten input numbers
-                (60 * d.x0.dim() + 100) as f64 * op_cost(10.0 * max_bits(numbers), 0.0, 0.0)
+                // coordinate on products of up to about ten input numbers; calibrated by
+                // `examples/work_calibration.rs` (64-D points of 32-digit fractions took 14–48 s
+                // at weight 1 on a busy machine, so the weight is 15)
+                15.0 * (60 * d.x0.dim() + 100) as f64 * op_cost(10.0 * max_bits(numbers), 0.0, 0.0)
             }
             Op::ToBezier { power } => {
                 let n = power.first().map_or(0, |c| c.len().saturating_sub(1));
