@@ -24,8 +24,9 @@ fn requests(count: usize) -> Vec<String> {
             let mut b = pts.clone();
             for r in 1..4 {
                 for i in 0..4 - r {
-                    for k in 0..2 {
-                        b[i][k] = (1.0 - t) * b[i][k] + t * b[i + 1][k];
+                    let next = b[i + 1];
+                    for (x, y) in b[i].iter_mut().zip(next) {
+                        *x = (1.0 - t) * *x + t * y;
                     }
                 }
             }

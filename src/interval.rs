@@ -348,8 +348,8 @@ pub fn filtered_conic_kind(c: &RationalBezierCurve<f64>) -> Result<ConicKind> {
     let u = p[1].sub(&p[0]);
     let v = p[2].sub(&p[0]);
     let uv = u.dot(&v);
-    let gram = &u.norm_squared() * &v.norm_squared() - &uv * &uv;
-    let excess = &w[1] * &w[1] - &w[0] * &w[2];
+    let gram = u.norm_squared() * v.norm_squared() - uv * uv;
+    let excess = w[1] * w[1] - w[0] * w[2];
     let weights_known = w.iter().all(|x| x.sign().is_some());
     if let (Some(g), Some(e), true) = (gram.sign(), excess.sign(), weights_known) {
         count(true);

@@ -207,7 +207,7 @@ pub fn float_eval(
     let mut running = Vec::new();
     let mut enclosure = Vec::new();
     let intervals = if method == FloatMethod::Interval {
-        let c = curve.try_map(|x| Interval::from_rational(x))?;
+        let c = curve.try_map(Interval::from_rational)?;
         Some(c.eval(&Interval::from_rational(t)?))
     } else {
         None
