@@ -23,7 +23,7 @@
 //!
 //! | op           | fields                                   | answer                     |
 //! |--------------|------------------------------------------|----------------------------|
-//! | `eval`       | `points`, `t`, optional `approx`         | `point` (+ `ulps`, `error_ulps`, `nearest`) |
+//! | `eval`       | `points`, `t`, optional `approx`         | `point` (+ `ulps`, `error_ulps`, `nearest`, `bound`, `within_bound`) |
 //! | `elevate`    | `points`, `by`                           | `points`                   |
 //! | `split`      | `points`, `t`                            | `left`, `right`            |
 //! | `derivative` | `points`, `order`, optional `t`          | `points`, or `vector` with `t` |
@@ -32,6 +32,7 @@
 //! | `conic`      | `points` (three 2D points), `weights` (three) | `type`, `implicit`    |
 //! | `surface_eval` | `net` (rows `i = 0..m` of points `j = 0..n`), `u`, `v`, optional `approx` | `point` (+ ulps) |
 //! | `fit_cubic`  | `x0`, `x1`, `xh` = x(1/2), `d0` = ẋ(0), `d1` = ẋ(1) | `k`, `l`, `points`, `delta2`, `warnings` |
+//! | `float_eval` | `points`, `t` (floats), optional `method` (`de_casteljau`, `compensated`, `interval`) | `value`, `point`, ulps, `bound`, `within_bound` (+ `running_bound`, or `interval`, `encloses`) |
 //!
 //! `conic`'s `type` is `"ellipse"`, `"parabola"`, `"hyperbola"` or `"degenerate (…)"`;
 //! `implicit` is `[A, B, C, D, E, F]` of `A x² + B xy + C y² + D x + E y + F = 0` scaled to
@@ -49,12 +50,21 @@
 //! - `error_ulps`: `|a − x| / ulp(x)` computed exactly, then rounded to a JSON number, where
 //!   `ulp(x) = 2^(e−52)` for `2^e ≤ |x| < 2^(e+1)` and `e ≥ −1022`, and `ulp(x) = 2^−1074`
 //!   for `|x| < 2^−1022` (subnormal range, exact 0 included). A correctly rounded `a` has
-//!   `error_ulps ≤ 0.5`.
+//!   `error_ulps ≤ 0.5`;
+//! - `bound` (when the parameters are floats): the a priori bound of f64 de Casteljau for
+//!   the request's float inputs, in ulps of `x` rounded up, and `within_bound`: whether
+//!   `|a − x|` is at most that bound, decided exactly (see [`crate::float`]).
+//!
+//! Encodings: `ulps` is a JSON integer up to 2^53, a decimal string beyond; `error_ulps` and
+//! `bound` are JSON numbers, or `"inf"` beyond the largest f64 (never `null`). The `id` is
+//! echoed as the JSON value it is; an id holding a number that is not a 64-bit integer is
+//! echoed verbatim, as its own text, first in the response.
 //!
 //! # Limits
 //!
 //! No request can exhaust memory or time: lines are read at most [`MAX_LINE_BYTES`] at a
-//! time (longer lines are answered with an error and skipped without being stored); curves
+//! time (a longer line is answered with an error as soon as the limit is crossed, then
+//! skipped without being stored); curves
 //! have at most [`MAX_POINTS`] points, degrees stay at most [`MAX_DEGREE`] (after elevation
 //! too), points at most [`MAX_DIMENSION`] coordinates; numbers at most
 //! [`crate::scalar::MAX_NUMBER_LEN`] characters and decimal exponents within
