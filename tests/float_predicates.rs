@@ -39,7 +39,8 @@ fn orientation_is_exact_and_mostly_filtered() {
     }
     let after = filter_stats();
     let (filtered, exact) = (after.filtered - before.filtered, after.exact - before.exact);
-    assert_eq!(filtered + exact, 2000);
+    // (the counters are global: the other tests of this file may add to them meanwhile)
+    assert!(filtered + exact >= 2000);
     assert!(filtered >= 1000 && exact > 0, "filtered {filtered}, exact {exact}");
 }
 
