@@ -95,7 +95,7 @@ pub const MAX_LINE_BYTES: usize = 1 << 20;
 pub const MAX_POINTS: usize = 4097;
 
 /// Highest degree of any input or result (after elevation too).
-pub use crate::error::MAX_DEGREE;
+pub const MAX_DEGREE: usize = 4096;
 
 /// Most coordinates per point.
 pub const MAX_DIMENSION: usize = 64;
