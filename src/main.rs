@@ -1,12 +1,14 @@
 //! The `casteljau` command: prove the texts' claims, compute on exact data, serve the oracle.
 //!
 //! Exit status: 0 on success, 1 when `prove` finds a verdict other than the expected one,
-//! 2 for usage errors, bad input and I/O errors (one clear line on stderr, never a panic).
+//! 2 for usage errors, bad input and I/O errors (one clear line on stderr, never a panic: a
+//! message of several lines, such as a TOML error with its snippet, is joined with ` | `).
 
 use casteljau::figure::FigureRequest;
 use casteljau::fit::CubicFitData;
+use casteljau::float::nearest_f64;
 use casteljau::input::{parse_count, parse_net, parse_number, parse_numbers, parse_point, parse_points};
-use casteljau::oracle::{self, check_weight_count, Answer, Op};
+use casteljau::oracle::{self, check_weight_count, Answer, FloatMethod, Op};
 use casteljau::verify::{explain, prove_paths};
 use casteljau::{BezierCurve, BezierSurface, BigRational, Error, Point, RationalBezierCurve};
 use clap::{Parser, Subcommand, ValueEnum};
@@ -40,6 +42,16 @@ enum Format {
     Json,
 }
 
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum MethodArg {
+    /// Plain de Casteljau, with its a priori and running bounds.
+    DeCasteljau,
+    /// Compensated de Casteljau (about twice the working precision), with its bound.
+    Compensated,
+    /// Interval arithmetic: an enclosure of the exact value.
+    Interval,
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Check every claim in the claim files (default: proofs/); exit 1 on a mismatch.
@@ -68,6 +80,12 @@ enum Command {
         /// Weights of a rational curve, one per control point, e.g. "1, 1/2, 1".
         #[arg(long, allow_hyphen_values = true)]
         weights: Option<String>,
+        /// Evaluate in f64 (every number read as its nearest f64) and judge the result exactly.
+        #[arg(long = "f64", conflicts_with_all = ["scheme", "weights"])]
+        float: bool,
+        /// The f64 evaluator (with --f64; default compensated).
+        #[arg(long, value_enum, requires = "float")]
+        method: Option<MethodArg>,
     },
     /// The type and implicit equation of the conic through a rational quadratic arc.
     Conic {
@@ -183,13 +201,34 @@ enum Command {
 fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
-        // clap prints help and version to stdout with status 0, usage errors to stderr with 2
-        Err(e) => e.exit(),
+        // clap prints help and version to stdout with status 0; a usage error is one line
+        Err(e) if !e.use_stderr() => e.exit(),
+        Err(e) => {
+            let text = e.render().to_string();
+            // the first paragraph is the message (a list of missing arguments follows it)
+            let message: Vec<&str> = text
+                .lines()
+                .take_while(|l| !l.trim().is_empty())
+                .map(str::trim)
+                .collect();
+            let message = message.join(" ");
+            eprintln!(
+                "casteljau: {} (see casteljau --help)",
+                message.trim_start_matches("error: ")
+            );
+            return ExitCode::from(2);
+        }
     };
     match std::panic::catch_unwind(|| run(cli)) {
         Ok(Ok(code)) => code,
         Ok(Err(message)) => {
-            eprintln!("casteljau: {message}");
+            // one line, whatever the message holds (a TOML snippet, an input with a newline)
+            let one_line: Vec<&str> = message
+                .lines()
+                .map(str::trim_end)
+                .filter(|l| !l.trim().is_empty())
+                .collect();
+            eprintln!("casteljau: {}", one_line.join(" | "));
             ExitCode::from(2)
         }
         Err(_) => {
@@ -259,6 +298,36 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             };
             emit(&op.run().map_err(e)?, format, None)
         }
+        Command::Eval {
+            points,
+            t,
+            float: true,
+            method,
+            ..
+        } => {
+            let nearest = |x: &BigRational| {
+                BigRational::from_float(nearest_f64(x)).ok_or_else(|| format!("{x} is beyond the f64 range"))
+            };
+            let curve = curve_arg(&points)?;
+            let curve = BezierCurve::new(
+                curve
+                    .points()
+                    .iter()
+                    .map(|p| Point::new(p.coords().iter().map(nearest).collect::<Result<_, _>>()?).map_err(e))
+                    .collect::<Result<_, _>>()?,
+            )
+            .map_err(e)?;
+            let op = Op::FloatEval {
+                curve,
+                t: nearest(&number_arg("--t", &t)?)?,
+                method: match method.unwrap_or(MethodArg::Compensated) {
+                    MethodArg::DeCasteljau => FloatMethod::DeCasteljau,
+                    MethodArg::Compensated => FloatMethod::Compensated,
+                    MethodArg::Interval => FloatMethod::Interval,
+                },
+            };
+            emit(&op.run().map_err(e)?, format, None)
+        }
         Command::Conic { points, weights } => {
             let op = Op::Conic {
                 curve: rational_arg(&points, &weights)?,
@@ -298,6 +367,14 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             if !scheme {
                 return emit(&answer, format, None);
             }
+            // the scheme is the whole triangle of exact lerps, as in a subdivision: the same
+            // work limit applies (this also bounds the printed size)
+            Op::Split {
+                curve: curve.clone(),
+                t: t.clone(),
+            }
+            .check_limits()
+            .map_err(|err| format!("--scheme: {err}"))?;
             let scheme = curve.scheme(&t);
             match format {
                 Format::Text => {

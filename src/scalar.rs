@@ -216,7 +216,7 @@ impl Scalar for BigRational {
         Ok(r.clone())
     }
     fn from_f64(x: f64) -> Result<Self> {
-        BigRational::from_float(x).ok_or_else(|| Error::NotFinite(x.to_string()))
+        crate::float::f64_to_rational(x).ok_or_else(|| Error::NotFinite(x.to_string()))
     }
     fn to_f64(&self) -> f64 {
         ToPrimitive::to_f64(self).unwrap_or(f64::NAN)

@@ -1,0 +1,23 @@
+//! Certified floating point: ulps measured exactly, error-free transformations, de Casteljau
+//! with a priori and running error bounds, and compensated de Casteljau.
+//!
+//! The exact side of casteljau judges float code: [`ulp_error`] measures a float against an
+//! exact value; [`a_priori_bound`] and [`de_casteljau_running`] say how large the error of
+//! de Casteljau's algorithm may be; [`compensated_de_casteljau`] makes it about as accurate as
+//! the correctly rounded value. Every bound is checked exactly, in rationals, by the tests.
+
+mod casteljau;
+mod dyadic;
+mod eft;
+mod ulp;
+
+pub use casteljau::{
+    a_priori_bound, a_priori_index, abs_bernstein_sum, compensated_de_casteljau, compensated_derivative, de_casteljau,
+    de_casteljau_running, gamma, next_down, next_up, rational_a_priori_bound, surface_a_priori_bound, UNIT_ROUNDOFF,
+};
+pub use dyadic::{dyadic_ratio, eval_dyadic};
+pub use eft::{fast_two_sum, two_product, two_sum};
+pub use ulp::{
+    decompose, error_at_most, exact_f64, f64_to_rational, nearest_f64, pow2_exact, round_scaled, scale_pow2_up, ulp,
+    ulp_distance, ulp_error, ulp_exponent, ulp_exponent_f64, UlpError,
+};

@@ -1,0 +1,447 @@
+//! [`Interval`]: a scalar that encloses the exact result, for certified float computations.
+//!
+//! An `Interval` is a pair of `f64` endpoints `lo ≤ hi`. Every operation rounds its lower
+//! endpoint down and its upper endpoint up — exactly, not by a blanket ulp: the error-free
+//! transformations give the sign of each rounding error, and an endpoint moves one float
+//! outward only when the rounding went inward. So any generic algorithm of the crate (eval,
+//! split, elevate, derivatives, surfaces, rational curves, fit) run on `Interval` returns an
+//! enclosure of the exact result on the exact inputs.
+//!
+//! Comparisons are certain or absent: `a < b` holds only when `a.hi < b.lo`; overlapping
+//! intervals are unordered (`partial_cmp` is `None`, so `<`, `>` are false). The filtered
+//! predicates below decide signs with intervals and fall back to exact rationals only when an
+//! interval straddles zero; [`filter_stats`] counts both.
+//!
+//! ```
+//! use casteljau::{interval::Interval, BezierCurve, Scalar};
+//! let c: BezierCurve<Interval> = BezierCurve::from_coords(vec![vec![Interval::from_f64(0.1).unwrap()],
+//!     vec![Interval::from_f64(0.2).unwrap()], vec![Interval::from_f64(0.7).unwrap()]]).unwrap();
+//! let p = c.eval(&Interval::from_ratio(1, 3).unwrap());
+//! let x = p.coords()[0];
+//! assert!(x.lo() < x.hi() && x.hi() - x.lo() < 1e-15);
+//! ```
+
+use crate::error::{Error, Result};
+use crate::float::{nearest_f64, next_down, next_up, two_product, two_sum};
+use crate::point::Point;
+use crate::rational::{classify_conic, ConicKind, RationalBezierCurve};
+use crate::scalar::Scalar;
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{Signed, Zero};
+use std::cmp::Ordering;
+use std::fmt;
+use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+use std::sync::atomic::{AtomicU64, Ordering as AtomicOrdering};
+
+/// A closed interval `[lo, hi]` of reals with `f64` endpoints.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Interval {
+    lo: f64,
+    hi: f64,
+}
+
+/// `x` rounded down, given the exact error `e` of its rounding (`exact = x + e`).
+fn down(x: f64, e: f64) -> f64 {
+    if x == f64::INFINITY {
+        f64::MAX
+    } else if x.is_infinite() || e >= 0.0 {
+        x
+    } else {
+        next_down(x)
+    }
+}
+
+/// `x` rounded up, given the exact error `e` (`exact = x + e`).
+fn up(x: f64, e: f64) -> f64 {
+    -down(-x, -e)
+}
+
+impl Interval {
+    /// `[lo, hi]`; an error when `lo > hi` or either is NaN.
+    pub fn new(lo: f64, hi: f64) -> Result<Self> {
+        if lo.is_nan() || hi.is_nan() || lo > hi {
+            return Err(Error::Domain(format!("[{lo}, {hi}] is not an interval")));
+        }
+        Ok(Interval { lo, hi })
+    }
+
+    /// The degenerate interval `[x, x]` (NaN is an error).
+    pub fn point(x: f64) -> Result<Self> {
+        Self::new(x, x)
+    }
+
+    /// The lower endpoint.
+    pub fn lo(&self) -> f64 {
+        self.lo
+    }
+
+    /// The upper endpoint.
+    pub fn hi(&self) -> f64 {
+        self.hi
+    }
+
+    /// `hi − lo`, rounded up.
+    pub fn width(&self) -> f64 {
+        let (d, e) = two_sum(self.hi, -self.lo);
+        up(d, e)
+    }
+
+    /// Whether the exact value `x` lies in the interval (decided exactly).
+    pub fn contains(&self, x: &BigRational) -> bool {
+        let at_least_lo = self.lo == f64::NEG_INFINITY || exact(self.lo) <= *x;
+        let at_most_hi = self.hi == f64::INFINITY || *x <= exact(self.hi);
+        at_least_lo && at_most_hi
+    }
+
+    /// The sign of every member, when they share one: `Some(Less)`, `Some(Greater)`, or
+    /// `Some(Equal)` for `[0, 0]`; `None` when the interval straddles or touches zero.
+    pub fn sign(&self) -> Option<Ordering> {
+        if self.lo > 0.0 {
+            Some(Ordering::Greater)
+        } else if self.hi < 0.0 {
+            Some(Ordering::Less)
+        } else if self.lo == 0.0 && self.hi == 0.0 {
+            Some(Ordering::Equal)
+        } else {
+            None
+        }
+    }
+
+    fn mul_bounds(&self, o: &Interval) -> Interval {
+        let products = [(self.lo, o.lo), (self.lo, o.hi), (self.hi, o.lo), (self.hi, o.hi)];
+        let mut lo = f64::INFINITY;
+        let mut hi = f64::NEG_INFINITY;
+        for (a, b) in products {
+            if a == 0.0 || b == 0.0 {
+                // 0 · ∞ is 0 for the enclosure of a product of reals
+                lo = lo.min(0.0);
+                hi = hi.max(0.0);
+                continue;
+            }
+            let (p, e) = two_product(a, b);
+            let e = if p.is_finite() { e } else { 0.0 };
+            lo = lo.min(down(p, e));
+            hi = hi.max(up(p, e));
+        }
+        Interval { lo, hi }
+    }
+}
+
+fn exact(x: f64) -> BigRational {
+    BigRational::from_float(x).expect("finite endpoint")
+}
+
+fn sum_bounds(a: &Interval, b: &Interval) -> Interval {
+    let (l, el) = two_sum(a.lo, b.lo);
+    let (h, eh) = two_sum(a.hi, b.hi);
+    let clean = |x: f64, e: f64| if x.is_finite() { e } else { 0.0 };
+    Interval {
+        lo: down(l, clean(l, el)),
+        hi: up(h, clean(h, eh)),
+    }
+}
+
+impl fmt::Display for Interval {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "[{:?}, {:?}]", self.lo, self.hi)
+    }
+}
+
+impl PartialOrd for Interval {
+    /// Certain order only: `Less` when `hi < other.lo`, `Greater` when `lo > other.hi`,
+    /// `Equal` for two equal points; `None` when they overlap otherwise.
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        if self.hi < other.lo {
+            Some(Ordering::Less)
+        } else if self.lo > other.hi {
+            Some(Ordering::Greater)
+        } else if self == other && self.lo == self.hi {
+            Some(Ordering::Equal)
+        } else {
+            None
+        }
+    }
+}
+
+macro_rules! forward_binop {
+    ($Op:ident, $op:ident, $OpAssign:ident, $op_assign:ident, $body:expr) => {
+        impl $Op<&Interval> for &Interval {
+            type Output = Interval;
+            fn $op(self, rhs: &Interval) -> Interval {
+                let f: fn(&Interval, &Interval) -> Interval = $body;
+                f(self, rhs)
+            }
+        }
+        impl $Op<Interval> for Interval {
+            type Output = Interval;
+            fn $op(self, rhs: Interval) -> Interval {
+                (&self).$op(&rhs)
+            }
+        }
+        impl $Op<&Interval> for Interval {
+            type Output = Interval;
+            fn $op(self, rhs: &Interval) -> Interval {
+                (&self).$op(rhs)
+            }
+        }
+        impl $OpAssign<&Interval> for Interval {
+            fn $op_assign(&mut self, rhs: &Interval) {
+                *self = (&*self).$op(rhs);
+            }
+        }
+    };
+}
+
+forward_binop!(Add, add, AddAssign, add_assign, |a, b| sum_bounds(a, b));
+forward_binop!(Sub, sub, SubAssign, sub_assign, |a, b| sum_bounds(a, &-b));
+forward_binop!(Mul, mul, MulAssign, mul_assign, |a, b| a.mul_bounds(b));
+
+impl Neg for &Interval {
+    type Output = Interval;
+    fn neg(self) -> Interval {
+        Interval {
+            lo: -self.hi,
+            hi: -self.lo,
+        }
+    }
+}
+
+impl Neg for Interval {
+    type Output = Interval;
+    fn neg(self) -> Interval {
+        -&self
+    }
+}
+
+impl Scalar for Interval {
+    const EXACT: bool = false;
+    const NAME: &'static str = "interval";
+
+    fn zero() -> Self {
+        Interval { lo: 0.0, hi: 0.0 }
+    }
+    fn one() -> Self {
+        Interval { lo: 1.0, hi: 1.0 }
+    }
+    /// Only `[0, 0]` is zero (an interval that merely contains 0 is not known to be zero).
+    fn is_zero(&self) -> bool {
+        self.lo == 0.0 && self.hi == 0.0
+    }
+    fn from_i64(n: i64) -> Self {
+        Self::from_rational(&BigRational::from_integer(n.into())).expect("every i64 is below f64::MAX")
+    }
+    fn from_bigint(n: &BigInt) -> Result<Self> {
+        Self::from_rational(&BigRational::from_integer(n.clone()))
+    }
+    /// The float nearest to `r` when it is `r`, else the two floats around it.
+    fn from_rational(r: &BigRational) -> Result<Self> {
+        let x = nearest_f64(r);
+        if !x.is_finite() {
+            return Err(Error::NotFinite(r.to_string()));
+        }
+        if exact(x) == *r {
+            return Ok(Interval { lo: x, hi: x });
+        }
+        Ok(Interval {
+            lo: next_down(x),
+            hi: next_up(x),
+        })
+    }
+    fn from_f64(x: f64) -> Result<Self> {
+        if !x.is_finite() {
+            return Err(Error::NotFinite(x.to_string()));
+        }
+        Ok(Interval { lo: x, hi: x })
+    }
+    /// The midpoint.
+    fn to_f64(&self) -> f64 {
+        if self.lo == self.hi {
+            return self.lo;
+        }
+        self.lo / 2.0 + self.hi / 2.0
+    }
+    /// An error when the divisor contains 0.
+    fn checked_div(&self, rhs: &Self) -> Result<Self> {
+        if rhs.lo <= 0.0 && rhs.hi >= 0.0 {
+            return Err(Error::DivisionByZero(format!(
+                "{self} / {rhs} (the divisor contains 0)"
+            )));
+        }
+        let mut lo = f64::INFINITY;
+        let mut hi = f64::NEG_INFINITY;
+        for a in [self.lo, self.hi] {
+            for b in [rhs.lo, rhs.hi] {
+                let q = a / b;
+                // the remainder a − q·b is exact (fma), and its sign over b's is the error's
+                let r = (-q).mul_add(b, a);
+                let e = if q.is_finite() && b.is_finite() {
+                    r * b.signum()
+                } else {
+                    0.0
+                };
+                lo = lo.min(down(q, e));
+                hi = hi.max(up(q, e));
+            }
+        }
+        Ok(Interval { lo, hi })
+    }
+    fn abs(&self) -> Self {
+        if self.lo >= 0.0 {
+            *self
+        } else if self.hi <= 0.0 {
+            -self
+        } else {
+            Interval {
+                lo: 0.0,
+                hi: self.hi.max(-self.lo),
+            }
+        }
+    }
+}
+
+/// Decisions of the filtered predicates: how many signs the intervals decided, and how many
+/// needed the exact fallback.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FilterStats {
+    /// decided with intervals
+    pub filtered: u64,
+    /// decided exactly (an interval straddled zero)
+    pub exact: u64,
+}
+
+static FILTERED: AtomicU64 = AtomicU64::new(0);
+static EXACT_FALLBACKS: AtomicU64 = AtomicU64::new(0);
+
+/// The counts since the start of the process (all threads).
+pub fn filter_stats() -> FilterStats {
+    FilterStats {
+        filtered: FILTERED.load(AtomicOrdering::Relaxed),
+        exact: EXACT_FALLBACKS.load(AtomicOrdering::Relaxed),
+    }
+}
+
+fn count(filtered: bool) {
+    let counter = if filtered { &FILTERED } else { &EXACT_FALLBACKS };
+    counter.fetch_add(1, AtomicOrdering::Relaxed);
+}
+
+/// The type of the conic carrying a rational quadratic arc with `f64` data, decided as
+/// [`classify_conic`] decides it in exact arithmetic on the same floats: first with
+/// intervals, exactly only when a sign is uncertain. Always the exact answer.
+///
+/// ```
+/// use casteljau::{interval::filtered_conic_kind, classify_conic, ConicKind, Point, RationalBezierCurve};
+/// let w1 = 0.1 * 3.0; // 0.30000000000000004
+/// let points = [[-1.0, 1.0], [0.0, -1.0], [1.0, 1.0]].iter().map(|c| Point::new(c.to_vec()).unwrap()).collect();
+/// let arc = RationalBezierCurve::new(points, vec![1.0, w1, w1 * w1]).unwrap();
+/// // w1² − w0 w2 is the rounding error of w1·w1: plain floats see 0, exactly it is positive
+/// assert_eq!(classify_conic(&arc).unwrap(), ConicKind::Parabola);
+/// assert_eq!(filtered_conic_kind(&arc).unwrap(), ConicKind::Hyperbola);
+/// ```
+pub fn filtered_conic_kind(c: &RationalBezierCurve<f64>) -> Result<ConicKind> {
+    let iv = c.try_map(|x| Interval::from_f64(*x))?;
+    let (w, p) = (iv.weights(), iv.points());
+    if w.len() != 3 {
+        return classify_conic(c);
+    }
+    let u = Point::sub(&p[1], &p[0]);
+    let v = Point::sub(&p[2], &p[0]);
+    let uv = u.dot(&v);
+    let gram = u.norm_squared() * v.norm_squared() - uv * uv;
+    let excess = w[1] * w[1] - w[0] * w[2];
+    let weights_known = w.iter().all(|x| x.sign().is_some());
+    if let (Some(g), Some(e), true) = (gram.sign(), excess.sign(), weights_known) {
+        count(true);
+        return Ok(if g == Ordering::Equal {
+            ConicKind::DegenerateCollinear
+        } else if w.iter().any(Scalar::is_zero) {
+            ConicKind::DegenerateZeroWeight
+        } else {
+            match e {
+                Ordering::Equal => ConicKind::Parabola,
+                Ordering::Greater => ConicKind::Hyperbola,
+                Ordering::Less => ConicKind::Ellipse,
+            }
+        });
+    }
+    count(false);
+    classify_conic(&c.try_map(|x| BigRational::from_f64(*x))?)
+}
+
+/// The orientation of `p, q, r` in the plane (the sign of `(q − p) × (r − p)`), decided with
+/// intervals and exactly only when the interval straddles zero: `Greater` counter-clockwise,
+/// `Less` clockwise, `Equal` collinear.
+pub fn filtered_orientation(p: [f64; 2], q: [f64; 2], r: [f64; 2]) -> Ordering {
+    let i = |x: f64| Interval { lo: x, hi: x };
+    let det = (i(q[0]) - i(p[0])) * (i(r[1]) - i(p[1])) - (i(q[1]) - i(p[1])) * (i(r[0]) - i(p[0]));
+    if let Some(s) = det.sign() {
+        count(true);
+        return s;
+    }
+    count(false);
+    let e = |x: f64| exact(x);
+    let det = (e(q[0]) - e(p[0])) * (e(r[1]) - e(p[1])) - (e(q[1]) - e(p[1])) * (e(r[0]) - e(p[0]));
+    if Zero::is_zero(&det) {
+        Ordering::Equal
+    } else if det.is_positive() {
+        Ordering::Greater
+    } else {
+        Ordering::Less
+    }
+}
+
+/// Whether the planar point `p` lies in the (closed) convex hull of `points`, decided
+/// exactly on the given floats with filtered orientations.
+///
+/// `p` (not itself a control point) is outside iff the directions `b_j − p` fit in an open
+/// half-plane, i.e. iff for the clockwise-most of them, `b`, every point lies strictly left
+/// of the line `p b` or on the ray from `p` through `b`.
+///
+/// ```
+/// use casteljau::interval::filtered_hull_contains;
+/// let tri = [[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]];
+/// assert!(filtered_hull_contains(&tri, [1.0, 1.0]));
+/// assert!(filtered_hull_contains(&tri, [2.0, 2.0])); // on the edge, decided exactly
+/// assert!(!filtered_hull_contains(&tri, [2.0, 2.0000000000000004]));
+/// ```
+pub fn filtered_hull_contains(points: &[[f64; 2]], p: [f64; 2]) -> bool {
+    if points.contains(&p) {
+        return true;
+    }
+    for &b in points {
+        let mut all_left = true;
+        for &c in points {
+            match filtered_orientation(p, b, c) {
+                Ordering::Greater => {}
+                Ordering::Less => {
+                    all_left = false;
+                    break;
+                }
+                Ordering::Equal => {
+                    // on the line p b: allowed only on the ray from p through b
+                    let d = |k: usize, x: [f64; 2]| exact(x[k]) - exact(p[k]);
+                    let dot = d(0, c) * d(0, b) + d(1, c) * d(1, b);
+                    if !dot.is_positive() {
+                        all_left = false;
+                        break;
+                    }
+                }
+            }
+        }
+        if all_left {
+            return false;
+        }
+    }
+    true
+}
+
+/// Whether the exact point lies in the box of intervals (decided exactly).
+pub fn point_contains(boxes: &Point<Interval>, exact_point: &Point<BigRational>) -> bool {
+    boxes.coords().len() == exact_point.coords().len()
+        && boxes
+            .coords()
+            .iter()
+            .zip(exact_point.coords())
+            .all(|(b, x)| b.contains(x))
+}

@@ -1,0 +1,194 @@
+//! The work model: a rough count of each request's exact work, so that absurd requests are
+//! refused before any computation.
+
+use super::Op;
+use crate::curve::BezierCurve;
+use num_rational::BigRational;
+
+fn bits(r: &BigRational) -> f64 {
+    (r.numer().bits() + r.denom().bits()) as f64
+}
+
+/// How many bits each de Casteljau level adds when the parameter is `t`.
+fn growth_bits(t: &BigRational) -> f64 {
+    t.numer().bits().max(t.denom().bits()) as f64
+}
+
+/// Whether `t`'s denominator is a power of two (gcds against its powers are cheap shifts).
+fn is_dyadic(t: &BigRational) -> bool {
+    t.denom().trailing_zeros().is_none_or(|z| z + 1 == t.denom().bits())
+}
+
+fn max_bits<'a>(numbers: impl IntoIterator<Item = &'a BigRational>) -> f64 {
+    numbers.into_iter().map(bits).fold(0.0, f64::max)
+}
+
+fn curve_bits(c: &BezierCurve<BigRational>) -> f64 {
+    max_bits(c.points().iter().flat_map(|p| p.coords()))
+}
+
+/// How many bits a combination of several inputs may add to the denominator: none when
+/// every denominator is a power of two (their lcm is the largest), else the largest.
+fn den_growth<'a>(numbers: impl IntoIterator<Item = &'a BigRational>) -> f64 {
+    let mut dyadic = true;
+    let mut most = 0u64;
+    for r in numbers {
+        let d = r.denom();
+        most = most.max(d.bits());
+        dyadic &= is_dyadic(r);
+    }
+    if dyadic {
+        0.0
+    } else {
+        most as f64
+    }
+}
+
+fn curve_den_growth(c: &BezierCurve<BigRational>) -> f64 {
+    den_growth(c.points().iter().flat_map(|p| p.coords()))
+}
+
+/// Relative cost of the gcds on the input numbers: unrelated denominators make every
+/// reduction a full gcd, while numbers grown inside one algorithm mostly share theirs.
+const INPUT_WEIGHT: f64 = 25.0;
+
+/// Cost of one exact operation on input numbers of `b_in` bits, grown inside the
+/// algorithm by `shared` bits (powers of a common denominator: cheap reductions) and by
+/// `mixed` bits (products of unrelated denominators: every gcd is a full one). Gcd
+/// reduction is quadratic in the size.
+fn op_cost(b_in: f64, shared: f64, mixed: f64) -> f64 {
+    let b = b_in + mixed + 64.0;
+    INPUT_WEIGHT * b * b + shared * shared
+}
+
+/// Relative cost of numbers grown by a dyadic parameter (powers of two in the
+/// denominators reduce by shifts, but the numerators still grow).
+/// Calibrated by `examples/work_calibration.rs`: `split` of 64-D floats of degree 53 at
+/// `t = 0.1` took 6.8 s at weight 3, so the weight is 6.
+const DYADIC_WEIGHT: f64 = 6.0;
+
+/// Work of the de Casteljau triangle on `n + 1` points of dimension `dim` whose
+/// coordinates have `b` bits, at the parameter `t`, with inputs whose denominators add
+/// `den` bits per level: level `r` has `n − r + 1` lerps on numbers grown by `r` times
+/// the parameter's and the denominators' bits. Measured on unstructured data, where
+/// nothing cancels; a parameter that is not dyadic makes every reduction a full gcd.
+fn triangle_work(n: usize, dim: usize, b: f64, t: &BigRational, den: f64) -> f64 {
+    let bt = growth_bits(t);
+    let (dyadic, full) = if is_dyadic(t) { (bt, 0.0) } else { (0.0, bt) };
+    (1..=n)
+        .map(|r| {
+            let r_f = r as f64;
+            let dyadic_growth = r_f * dyadic;
+            (n - r + 1) as f64 * (op_cost(b, 0.0, r_f * (den + full)) + DYADIC_WEIGHT * dyadic_growth * dyadic_growth)
+        })
+        .sum::<f64>()
+        * dim as f64
+}
+
+/// Work of [`BezierCurve::eval_fraction_free`]: integers over one common denominator (its
+/// size bounded by the sum of the distinct denominators' bits, without computing it), each
+/// of the `n(n+1)/2` steps per coordinate two products of a number grown by `r` times the
+/// parameter's bits with the parameter's numerator or denominator, then one reduction.
+fn fraction_free_work(curve: &BezierCurve<BigRational>, t: &BigRational) -> f64 {
+    let mut denominators: Vec<&num_bigint::BigInt> = curve
+        .points()
+        .iter()
+        .flat_map(|p| p.coords())
+        .map(|c| c.denom())
+        .collect();
+    denominators.sort();
+    denominators.dedup();
+    let common = denominators.iter().map(|d| d.bits() as f64).sum::<f64>();
+    let numerators = max_bits(curve.points().iter().flat_map(|p| p.coords()));
+    // Numbers grow by the parameter's bits per level; a product with the parameter's
+    // numerator or denominator costs at least a machine word.
+    let (n, grow) = (curve.degree(), growth_bits(t));
+    let start = numerators + common + 64.0;
+    let word = grow.max(64.0);
+    let steps: f64 = (1..=n)
+        .map(|r| (n - r + 1) as f64 * 2.0 * (start + r as f64 * grow) * word)
+        .sum();
+    let last = start + n as f64 * grow;
+    // Calibrated like the rest (MAX_WORK ≈ a few seconds): these word-sized products run
+    // about eight times faster per unit than the gcd-bound operations the units are set by
+    // (degree 3000 at t = 1/3: 0.9 s; degree 500 with unrelated 50-bit denominators: 1.5 s).
+    curve.dim() as f64 * (steps / 8.0 + INPUT_WEIGHT * last * last)
+}
+
+impl Op {
+    /// A rough count of the work this request needs (Σ bits² over its rational operations,
+    /// see [`MAX_WORK`]), computed before anything else so that absurd requests are refused
+    /// at once.
+    pub fn work(&self) -> f64 {
+        match self {
+            Op::Eval { curve, t, .. } | Op::FloatEval { curve, t, .. } => fraction_free_work(curve, t),
+            Op::Split { curve, t } => triangle_work(
+                curve.degree(),
+                curve.dim(),
+                curve_bits(curve),
+                t,
+                curve_den_growth(curve),
+            ),
+            Op::Elevate { curve, by } => {
+                let (n, total) = (curve.degree(), curve.degree() + by);
+                // every output point combines up to n + 1 inputs with weights C(n,j)C(r,i−j)/C(n+r,i)
+                // of about 2·total bits; each term is a multiplication and an addition, of an input
+                // number by a weight: linear in the weight's size (calibrated by
+                // `examples/work_calibration.rs`: a cubic elevated by 1717 takes 0.04 s)
+                let terms = (total + 1) as f64 * (n.min(*by) + 1) as f64 * curve.dim() as f64;
+                let mixed = (n.min(*by) + 1) as f64 * curve_den_growth(curve);
+                let weight_bits = 2.0 * total as f64;
+                let b = curve_bits(curve) + mixed + 64.0;
+                3.0 * terms * (INPUT_WEIGHT * b * b + 64.0 * weight_bits + b * weight_bits) + (total as f64).powi(3)
+            }
+            Op::Derivative { curve, order, at } => {
+                let (n, k) = (curve.degree(), (*order).min(curve.degree()));
+                // Δ^k grows by k bits, the factor n!/(n−k)! has about k·log2(n) bits
+                let shared = k as f64 * (1.0 + (n.max(2) as f64).log2());
+                let mixed = (k + 1) as f64 * curve_den_growth(curve);
+                let diffs =
+                    (k.max(1) * (n + 1)) as f64 * curve.dim() as f64 * op_cost(curve_bits(curve), shared, mixed);
+                let b = curve_bits(curve) + shared + mixed;
+                let level = curve_den_growth(curve);
+                diffs
+                    + at.as_ref()
+                        .map_or(0.0, |t| triangle_work(n - k, curve.dim(), b, t, level))
+            }
+            Op::RationalEval { curve, t, .. } => {
+                let numbers = curve.points().iter().flat_map(|p| p.coords()).chain(curve.weights());
+                let b = 2.0 * max_bits(numbers.clone());
+                triangle_work(curve.degree(), curve.dim() + 1, b, t, den_growth(numbers))
+                    + curve.dim() as f64 * op_cost(b + curve.degree() as f64 * growth_bits(t), 0.0, 0.0)
+            }
+            Op::Conic { curve } => {
+                let numbers = curve.points().iter().flat_map(|p| p.coords()).chain(curve.weights());
+                // a few hundred products of up to about eight input numbers
+                300.0 * op_cost(8.0 * max_bits(numbers), 0.0, 0.0)
+            }
+            Op::SurfaceEval { surface, u, v, .. } => {
+                let (m, n) = surface.degrees();
+                let numbers = || surface.net().iter().flatten().flat_map(|p| p.coords());
+                let (b, den) = (max_bits(numbers()), den_growth(numbers()));
+                // u first: n + 1 columns reduced at u, then one curve in v of grown numbers
+                let columns = (n + 1) as f64 * triangle_work(m, surface.dim(), b, u, den);
+                let grown = b + m as f64 * (growth_bits(u) + den);
+                columns + triangle_work(n, surface.dim(), grown, v, den)
+            }
+            Op::FitCubic { data } => {
+                let d = &data;
+                let numbers = [&d.x0, &d.x1, &d.xh, &d.d0, &d.d1].into_iter().flat_map(|p| p.coords());
+                // Gram matrix, right-hand side, a 2×2 solve and δ²: a few dozen operations per
+                // coordinate on products of up to about ten input numbers; calibrated by
+                // `examples/work_calibration.rs` (64-D points of 32-digit fractions took 14–48 s
+                // at weight 1 on a busy machine, so the weight is 15)
+                15.0 * (60 * d.x0.dim() + 100) as f64 * op_cost(10.0 * max_bits(numbers), 0.0, 0.0)
+            }
+            Op::ToBezier { power } => {
+                let n = power.first().map_or(0, |c| c.len().saturating_sub(1));
+                let b = max_bits(power.iter().flatten());
+                let mixed = (n + 1) as f64 * den_growth(power.iter().flatten());
+                3.0 * (n + 1) as f64 * (n + 1) as f64 * power.len() as f64 * op_cost(b, 2.0 * n as f64, mixed)
+            }
+        }
+    }
+}

@@ -1,0 +1,103 @@
+//! Bounded line I/O: the JSON-lines loop, never storing more than one line's limit.
+
+use super::{handle_line, MAX_LINE_BYTES};
+use serde_json::json;
+use std::io::{self, BufRead, Write};
+
+/// One line read by [`read_line_bounded`].
+#[derive(Debug, PartialEq, Eq)]
+pub enum Line {
+    /// A complete line (without its `\n`), at most the limit long.
+    Text(Vec<u8>),
+    /// A line longer than the limit: returned as soon as the limit is crossed, with the
+    /// rest of the line still unread (skip it with [`skip_line`]).
+    TooLong,
+    /// End of input.
+    Eof,
+}
+
+/// Reads one line of at most `limit` bytes. As soon as a line exceeds the limit it returns
+/// [`Line::TooLong`], having stored nothing beyond the limit, and leaves the rest of the line
+/// unread. The final line needs no `\n`.
+pub fn read_line_bounded<R: BufRead>(reader: &mut R, limit: usize) -> io::Result<Line> {
+    let mut line = Vec::new();
+    let mut seen_any = false;
+    loop {
+        let buf = match reader.fill_buf() {
+            Ok(b) => b,
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(e),
+        };
+        if buf.is_empty() {
+            return Ok(if seen_any { Line::Text(line) } else { Line::Eof });
+        }
+        seen_any = true;
+        let (chunk, found) = match buf.iter().position(|&b| b == b'\n') {
+            Some(i) => (&buf[..i], Some(i)),
+            None => (buf, None),
+        };
+        if line.len() + chunk.len() > limit {
+            // consume only what fits under the limit plus one byte: the line is too long
+            let take = (limit - line.len() + 1).min(chunk.len());
+            reader.consume(take);
+            return Ok(Line::TooLong);
+        }
+        line.extend_from_slice(chunk);
+        let used = found.map_or(buf.len(), |i| i + 1);
+        reader.consume(used);
+        if found.is_some() {
+            return Ok(Line::Text(line));
+        }
+    }
+}
+
+/// Skips the rest of the current line (through its `\n`) in chunks, storing nothing.
+pub fn skip_line<R: BufRead>(reader: &mut R) -> io::Result<()> {
+    loop {
+        let buf = match reader.fill_buf() {
+            Ok(b) => b,
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(e),
+        };
+        if buf.is_empty() {
+            return Ok(());
+        }
+        match buf.iter().position(|&b| b == b'\n') {
+            Some(i) => {
+                reader.consume(i + 1);
+                return Ok(());
+            }
+            None => {
+                let n = buf.len();
+                reader.consume(n);
+            }
+        }
+    }
+}
+
+/// The JSON-lines loop: one response line per request line, flushed after each, until end
+/// of input. An over-long line is answered as soon as the limit is crossed, then skipped.
+/// Only I/O errors (such as a closed output) end it early.
+pub fn serve<R: BufRead, W: Write>(mut reader: R, mut writer: W) -> io::Result<()> {
+    loop {
+        let line = read_line_bounded(&mut reader, MAX_LINE_BYTES)?;
+        let response = match &line {
+            Line::Eof => return Ok(()),
+            Line::TooLong => json!({
+                "ok": false,
+                "error": format!("request line longer than {MAX_LINE_BYTES} bytes; it was skipped")
+            })
+            .to_string(),
+            Line::Text(bytes) => match std::str::from_utf8(bytes) {
+                Ok(s) => handle_line(s.trim_end_matches('\r')),
+                Err(_) => json!({"ok": false, "error": "request line is not valid UTF-8"}).to_string(),
+            },
+        };
+        writer.write_all(response.as_bytes())?;
+        writer.write_all(b"\n")?;
+        writer.flush()?;
+        if line == Line::TooLong {
+            skip_line(&mut reader)?;
+        }
+    }
+}

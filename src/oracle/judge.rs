@@ -1,0 +1,280 @@
+//! The oracle as judge: a priori bounds for the request's float inputs, and casteljau's own
+//! float evaluators (`float_eval`) measured against the exact value.
+
+use crate::curve::BezierCurve;
+use crate::error::{Error, Result};
+use crate::float::{
+    a_priori_bound, abs_bernstein_sum, compensated_de_casteljau, de_casteljau, de_casteljau_running, error_at_most,
+    exact_f64, nearest_f64, rational_a_priori_bound, scale_pow2_up, surface_a_priori_bound, ulp_error, ulp_exponent,
+    UlpError, UNIT_ROUNDOFF,
+};
+use crate::interval::Interval;
+use crate::point::Point;
+use crate::rational::RationalBezierCurve;
+use crate::scalar::Scalar;
+use crate::surface::BezierSurface;
+use num_rational::BigRational;
+use serde_json::{json, Value};
+
+/// A float result judged against an error bound, for one coordinate.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BoundCheck {
+    /// The bound in ulps of the exact value, rounded up (`+∞` when there is none).
+    pub bound_ulps: f64,
+    /// Whether the error is at most the bound (decided exactly).
+    pub within: bool,
+}
+
+impl BoundCheck {
+    /// Judges `approx` against the exact `x` with the absolute bound `bound`.
+    pub fn new(approx: f64, x: &BigRational, bound: f64) -> Self {
+        BoundCheck {
+            bound_ulps: scale_pow2_up(bound, -ulp_exponent(x)),
+            within: error_at_most(approx, x, bound),
+        }
+    }
+}
+
+/// Which of casteljau's float evaluators `float_eval` runs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FloatMethod {
+    /// Plain de Casteljau, `fl(fl(s·a) + fl(t·b))`, with its a priori and running bounds.
+    DeCasteljau,
+    /// Compensated de Casteljau, with its bound.
+    Compensated,
+    /// The generic de Casteljau on [`Interval`]s: an enclosure.
+    Interval,
+}
+
+impl FloatMethod {
+    /// The method's name in requests.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            FloatMethod::DeCasteljau => "de_casteljau",
+            FloatMethod::Compensated => "compensated",
+            FloatMethod::Interval => "interval",
+        }
+    }
+
+    /// Parses a method name.
+    pub fn parse(name: &str) -> Result<Self> {
+        Ok(match name {
+            "de_casteljau" => FloatMethod::DeCasteljau,
+            "compensated" => FloatMethod::Compensated,
+            "interval" => FloatMethod::Interval,
+            other => {
+                return Err(Error::Parse(format!(
+                    "unknown method {other:?} (one of de_casteljau, compensated, interval)"
+                )))
+            }
+        })
+    }
+}
+
+/// What `float_eval` answers: the float results with their exact errors and bounds.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FloatEvalAnswer {
+    /// the evaluator
+    pub method: FloatMethod,
+    /// the exact point
+    pub point: Point<BigRational>,
+    /// the float result per coordinate (the interval's midpoint for `interval`)
+    pub values: Vec<f64>,
+    /// the float result's error per coordinate
+    pub errors: Vec<UlpError>,
+    /// the method's bound per coordinate (for `interval`, the distance to the farther end)
+    pub bound: Vec<BoundCheck>,
+    /// `de_casteljau` only: the running (a posteriori) bound
+    pub running: Option<Vec<BoundCheck>>,
+    /// `interval` only: per coordinate `lo`, `hi` and whether they enclose the exact value
+    pub enclosure: Option<Vec<(f64, f64, bool)>>,
+}
+
+/// The curve's coordinates as floats, coordinate-major, and whether every one was exact.
+fn float_coords(points: &[Point<BigRational>]) -> (Vec<Vec<f64>>, bool) {
+    let dim = points[0].dim();
+    let mut exact = true;
+    let coords = (0..dim)
+        .map(|k| {
+            points
+                .iter()
+                .map(|p| {
+                    let x = &p.coords()[k];
+                    exact_f64(x).unwrap_or_else(|| {
+                        exact = false;
+                        nearest_f64(x)
+                    })
+                })
+                .collect()
+        })
+        .collect();
+    (coords, exact)
+}
+
+/// Adds `u Σ|b_i||B_i|` to a bound when the inputs were rounded to floats first.
+fn rounded_inputs(bound: f64, b: &[f64], t: f64, exact_inputs: bool) -> f64 {
+    if exact_inputs {
+        bound
+    } else {
+        crate::float::next_up(bound + UNIT_ROUNDOFF * abs_bernstein_sum(b, t) * (1.0 + 1e-15))
+    }
+}
+
+/// `approx` judged against the a priori de Casteljau bound for the request's float inputs;
+/// `None` when the parameter is not a float (the float algorithm would not see it).
+pub fn curve_bounds(
+    curve: &BezierCurve<BigRational>,
+    t: &BigRational,
+    approx: &[f64],
+    point: &Point<BigRational>,
+) -> Option<Vec<BoundCheck>> {
+    let t = exact_f64(t)?;
+    let (coords, exact) = float_coords(curve.points());
+    Some(
+        coords
+            .iter()
+            .zip(approx)
+            .zip(point.coords())
+            .map(|((b, a), x)| BoundCheck::new(*a, x, rounded_inputs(a_priori_bound(b, t), b, t, exact)))
+            .collect(),
+    )
+}
+
+/// As [`curve_bounds`] for a rational curve (see [`rational_a_priori_bound`]).
+pub fn rational_bounds(
+    curve: &RationalBezierCurve<BigRational>,
+    t: &BigRational,
+    approx: &[f64],
+    point: &Point<BigRational>,
+) -> Option<Vec<BoundCheck>> {
+    let t = exact_f64(t)?;
+    let weights: Vec<f64> = curve.weights().iter().map(exact_f64).collect::<Option<_>>()?;
+    let (coords, exact) = float_coords(curve.points());
+    if !exact {
+        return None;
+    }
+    let nearest: Vec<f64> = point.coords().iter().map(nearest_f64).collect();
+    let bounds = rational_a_priori_bound(&coords, &weights, t, &nearest);
+    Some(
+        bounds
+            .iter()
+            .zip(approx)
+            .zip(point.coords())
+            .map(|((bound, a), x)| BoundCheck::new(*a, x, *bound))
+            .collect(),
+    )
+}
+
+/// As [`curve_bounds`] for a surface (see [`surface_a_priori_bound`]).
+pub fn surface_bounds(
+    surface: &BezierSurface<BigRational>,
+    u: &BigRational,
+    v: &BigRational,
+    approx: &[f64],
+    point: &Point<BigRational>,
+) -> Option<Vec<BoundCheck>> {
+    let (u, v) = (exact_f64(u)?, exact_f64(v)?);
+    let net = surface.net();
+    (0..surface.dim())
+        .map(|k| {
+            let rows: Vec<Vec<f64>> = net
+                .iter()
+                .map(|row| row.iter().map(|p| exact_f64(&p.coords()[k])).collect::<Option<_>>())
+                .collect::<Option<_>>()?;
+            let x = &point.coords()[k];
+            Some(BoundCheck::new(approx[k], x, surface_a_priori_bound(&rows, u, v)))
+        })
+        .collect()
+}
+
+/// Runs `method` on the curve's floats at `t` and judges it against the exact `point`.
+/// The inputs must be floats exactly (checked when the request is read).
+pub fn float_eval(
+    curve: &BezierCurve<BigRational>,
+    t: &BigRational,
+    method: FloatMethod,
+    point: Point<BigRational>,
+) -> Result<FloatEvalAnswer> {
+    let tf = exact_f64(t).ok_or_else(|| not_a_float("t", t))?;
+    let (coords, exact) = float_coords(curve.points());
+    if !exact {
+        return Err(Error::Parse(
+            "float_eval runs in f64: every control point coordinate must be a float exactly".into(),
+        ));
+    }
+    let mut values = Vec::new();
+    let mut bound = Vec::new();
+    let mut running = Vec::new();
+    let mut enclosure = Vec::new();
+    let intervals = if method == FloatMethod::Interval {
+        let c = curve.try_map(Interval::from_rational)?;
+        Some(c.eval(&Interval::from_rational(t)?))
+    } else {
+        None
+    };
+    for (k, b) in coords.iter().enumerate() {
+        let x = &point.coords()[k];
+        match method {
+            FloatMethod::DeCasteljau => {
+                let value = de_casteljau(b, tf);
+                let (_, run) = de_casteljau_running(b, tf);
+                values.push(value);
+                bound.push(BoundCheck::new(value, x, a_priori_bound(b, tf)));
+                running.push(BoundCheck::new(value, x, run));
+            }
+            FloatMethod::Compensated => {
+                let (value, e) = compensated_de_casteljau(b, tf);
+                values.push(value);
+                bound.push(BoundCheck::new(value, x, e));
+            }
+            FloatMethod::Interval => {
+                let iv = intervals.as_ref().expect("computed above").coords()[k];
+                let mid = iv.to_f64();
+                let reach = crate::float::next_up((iv.hi() - mid).max(mid - iv.lo()));
+                values.push(mid);
+                bound.push(BoundCheck::new(mid, x, reach));
+                enclosure.push((iv.lo(), iv.hi(), iv.contains(x)));
+            }
+        }
+    }
+    let errors = values
+        .iter()
+        .zip(point.coords())
+        .map(|(v, x)| ulp_error(*v, x))
+        .collect::<Result<_>>()?;
+    Ok(FloatEvalAnswer {
+        method,
+        point,
+        values,
+        errors,
+        bound,
+        running: (method == FloatMethod::DeCasteljau).then_some(running),
+        enclosure: (method == FloatMethod::Interval).then_some(enclosure),
+    })
+}
+
+/// The error for an input that `float_eval` needs as a float.
+pub fn not_a_float(what: &str, x: &BigRational) -> Error {
+    Error::Parse(format!(
+        "float_eval runs in f64: '{what}' must be a float exactly (a JSON number, or a string naming a float), got {x}"
+    ))
+}
+
+/// `ulps` as JSON: a number up to 2^53 (exact in every JSON client), a decimal string beyond.
+pub fn ulps_json(ulps: u64) -> Value {
+    if ulps <= 1 << 53 {
+        json!(ulps)
+    } else {
+        json!(ulps.to_string())
+    }
+}
+
+/// A nonnegative float as JSON: a number, or the string `"inf"` when it is beyond the
+/// largest `f64` (JSON has no infinity; `null` would read as "missing").
+pub fn float_json(x: f64) -> Value {
+    if x.is_finite() {
+        json!(x)
+    } else {
+        json!("inf")
+    }
+}

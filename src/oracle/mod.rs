@@ -1,0 +1,608 @@
+//! The JSON-lines oracle: exact answers for other programs (`casteljau oracle`).
+//!
+//! A program that computes Bézier geometry in floating point writes one JSON request per
+//! line and reads back one JSON response per line with the exact answer, so it can measure
+//! its own error. The loop ([`serve`]) never stops on a bad request: every line gets exactly
+//! one response line, in order, flushed at once; only end of input ends it.
+//!
+//! ```
+//! use casteljau::oracle::handle_line;
+//! let out = handle_line(r#"{"id": 7, "op": "eval", "points": [[0, 0], [1, 2], [2, 0]], "t": "1/3"}"#);
+//! assert_eq!(out, r#"{"id":7,"ok":true,"point":["2/3","8/9"]}"#);
+//! let bad = handle_line(r#"{"op": "eval", "points": [], "t": 0}"#);
+//! assert!(bad.starts_with(r#"{"error":"#) && bad.contains(r#""ok":false"#));
+//! ```
+//!
+//! # Protocol
+//!
+//! Requests are JSON objects with an `"op"` and the op's fields; an `"id"` (any JSON value)
+//! is echoed in the response. Numbers follow [`crate::input`]: strings (`"1/3"`, `"0.25"`,
+//! `"1e-3"`) are exact, JSON numbers are exactly the `f64` they parse to. Exact results are
+//! strings in lowest terms. Every response has `"ok"`; failures carry `"error"`. Unknown
+//! fields are errors (a misspelt optional field would otherwise be silently ignored).
+//!
+//! | op           | fields                                   | answer                     |
+//! |--------------|------------------------------------------|----------------------------|
+//! | `eval`       | `points`, `t`, optional `approx`         | `point` (+ `ulps`, `error_ulps`, `nearest`, `bound`, `within_bound`) |
+//! | `elevate`    | `points`, `by`                           | `points`                   |
+//! | `split`      | `points`, `t`                            | `left`, `right`            |
+//! | `derivative` | `points`, `order`, optional `t`          | `points`, or `vector` with `t` |
+//! | `to_bezier`  | `power` (one array per coordinate, `t^0..t^n`) | `points`             |
+//! | `rational_eval` | `points`, `weights`, `t`, optional `approx` | `point` (+ ulps)      |
+//! | `conic`      | `points` (three 2D points), `weights` (three) | `type`, `implicit`    |
+//! | `surface_eval` | `net` (rows `i = 0..m` of points `j = 0..n`), `u`, `v`, optional `approx` | `point` (+ ulps) |
+//! | `fit_cubic`  | `x0`, `x1`, `xh` = x(1/2), `d0` = ẋ(0), `d1` = ẋ(1) | `k`, `l`, `points`, `delta2`, `warnings` |
+//! | `float_eval` | `points`, `t` (floats), optional `method` (`de_casteljau`, `compensated`, `interval`) | `value`, `point`, ulps, `bound`, `within_bound` (+ `running_bound`, or `interval`, `encloses`) |
+//!
+//! `conic`'s `type` is `"ellipse"`, `"parabola"`, `"hyperbola"` or `"degenerate (…)"`;
+//! `implicit` is `[A, B, C, D, E, F]` of `A x² + B xy + C y² + D x + E y + F = 0` scaled to
+//! coprime integers with the first non-zero one positive (`null` when the control points
+//! are collinear: no unique conic carries the arc). `surface_eval` is
+//! `Σ_i Σ_j b_ij B_i^m(u) B_j^n(v)` with `net[i][j] = b_ij`.
+//!
+//! # `ulps`
+//!
+//! For `eval` with `approx` (the caller's float result, one JSON number per coordinate),
+//! per coordinate, with `x` the exact value and `a` the approximation:
+//! - `nearest`: the `f64` nearest to `x` (ties to even), i.e. the correctly rounded result;
+//! - `ulps`: how many `f64` steps `a` is from `nearest` — `0` exactly when `a` is correctly
+//!   rounded (an integer; `+0` and `-0` count as the same);
+//! - `error_ulps`: `|a − x| / ulp(x)` computed exactly, then rounded to a JSON number, where
+//!   `ulp(x) = 2^(e−52)` for `2^e ≤ |x| < 2^(e+1)` and `e ≥ −1022`, and `ulp(x) = 2^−1074`
+//!   for `|x| < 2^−1022` (subnormal range, exact 0 included). A correctly rounded `a` has
+//!   `error_ulps ≤ 0.5`;
+//! - `bound` (when the parameters are floats): the a priori bound of f64 de Casteljau for
+//!   the request's float inputs, in ulps of `x` rounded up, and `within_bound`: whether
+//!   `|a − x|` is at most that bound, decided exactly (see [`crate::float`]).
+//!
+//! Encodings: `ulps` is a JSON integer up to 2^53, a decimal string beyond; `error_ulps` and
+//! `bound` are JSON numbers, or `"inf"` beyond the largest f64 (never `null`). The `id` is
+//! echoed as the JSON value it is; an id holding a number that is not a 64-bit integer is
+//! echoed verbatim, as its own text, first in the response.
+//!
+//! # Limits
+//!
+//! No request can exhaust memory or time: lines are read at most [`MAX_LINE_BYTES`] at a
+//! time (a longer line is answered with an error as soon as the limit is crossed, then
+//! skipped without being stored); curves
+//! have at most [`MAX_POINTS`] points, degrees stay at most [`MAX_DEGREE`] (after elevation
+//! too), points at most [`MAX_DIMENSION`] coordinates; numbers at most
+//! [`crate::scalar::MAX_NUMBER_LEN`] characters and decimal exponents within
+//! ±[`crate::scalar::MAX_DECIMAL_EXPONENT`]. Exact arithmetic grows numbers, so each request
+//! is also given a work estimate ([`Op::work`], roughly Σ bits² over its rational
+//! operations) which must stay below [`MAX_WORK`]; beyond it the request is refused before
+//! any computation.
+
+mod cost;
+mod io;
+mod json;
+mod judge;
+mod protocol;
+mod text;
+
+pub use crate::float::{nearest_f64, ulp, ulp_distance, ulp_error, UlpError};
+pub use io::{read_line_bounded, serve, skip_line, Line};
+pub use judge::{BoundCheck, FloatEvalAnswer, FloatMethod};
+pub use protocol::{check_weight_count, Answer, Op, OPS};
+pub use text::conic_polynomial;
+
+use serde_json::{json, Map, Value};
+
+/// Longest request line, in bytes (1 MiB).
+pub const MAX_LINE_BYTES: usize = 1 << 20;
+
+/// Most control points in one curve (or one row or column of a net).
+pub const MAX_POINTS: usize = 4097;
+
+/// Highest degree of any input or result (after elevation too).
+pub use crate::error::MAX_DEGREE;
+
+/// Most coordinates per point.
+pub const MAX_DIMENSION: usize = 64;
+
+/// Largest work estimate ([`Op::work`]) a request may have.
+///
+/// The unit is one bit² of gcd-reduced rational arithmetic. Calibrated on unstructured
+/// data (where nothing cancels), a release build does 1.5·10^11 to 3·10^11 units per
+/// second on one core of a busy 2-core machine, so the slowest accepted request takes a
+/// few seconds. Typical requests (degree ≤ 50, float or short decimal inputs) are far
+/// below. For scale: a planar curve of degree 300 at `t = 1/3` is accepted (about 1 s),
+/// degree 400 is not; at the float `t = 0.1`, degree 100 is accepted, 130 is not.
+pub const MAX_WORK: f64 = 5.0e11;
+
+/// Answers one request line with one response line (no newline).
+///
+/// Never panics on any input: a panic inside a handler would be a bug, and is caught and
+/// answered with `"internal error"` so that the loop goes on.
+pub fn handle_line(line: &str) -> String {
+    let outcome = std::panic::catch_unwind(|| respond(line));
+    match outcome {
+        Ok(v) => v,
+        Err(_) => {
+            json!({"ok": false, "error": "internal error (a bug in casteljau: please report the request)"}).to_string()
+        }
+    }
+}
+
+fn respond(line: &str) -> String {
+    let request: Value = match serde_json::from_str(line) {
+        Ok(v) => v,
+        Err(e) => {
+            let msg = if line.trim().is_empty() {
+                "empty line: expected one JSON request object per line".to_string()
+            } else {
+                format!("not valid JSON: {e}")
+            };
+            return json!({"ok": false, "error": msg}).to_string();
+        }
+    };
+    let mut out = match Op::from_json(&request).and_then(|op| op.run()) {
+        Ok(answer) => {
+            let mut m = answer.to_json();
+            m.insert("ok".into(), Value::Bool(true));
+            m
+        }
+        Err(e) => {
+            let mut m = Map::new();
+            m.insert("ok".into(), Value::Bool(false));
+            m.insert("error".into(), Value::String(e.to_string()));
+            m
+        }
+    };
+    match request.get("id") {
+        None => Value::Object(out).to_string(),
+        Some(id) if !has_inexact_number(id) => {
+            out.insert("id".into(), id.clone());
+            Value::Object(out).to_string()
+        }
+        Some(id) => {
+            // A number that is not a 64-bit integer would be re-printed from its f64
+            // (1e+29 for a 30-digit id): echo the id's own text instead, verbatim.
+            #[derive(serde::Deserialize)]
+            struct RawId<'a> {
+                #[serde(borrow)]
+                id: &'a serde_json::value::RawValue,
+            }
+            let raw = serde_json::from_str::<RawId>(line).map(|r| r.id.get().to_string());
+            let rest = Value::Object(out.clone()).to_string();
+            match raw {
+                Ok(raw) => format!("{{\"id\":{raw},{}", &rest[1..]),
+                Err(_) => {
+                    out.insert("id".into(), id.clone());
+                    Value::Object(out).to_string()
+                }
+            }
+        }
+    }
+}
+
+/// Whether a JSON value holds a number that serde_json keeps only as an `f64`.
+fn has_inexact_number(v: &Value) -> bool {
+    match v {
+        Value::Number(n) => !(n.is_i64() || n.is_u64()),
+        Value::Array(items) => items.iter().any(has_inexact_number),
+        Value::Object(m) => m.values().any(has_inexact_number),
+        _ => false,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::curve::BezierCurve;
+    use crate::input::number_to_json;
+    use crate::scalar::parse_exact;
+    use num_bigint::BigInt;
+    use num_rational::BigRational;
+    use proptest::prelude::*;
+    use std::io;
+
+    fn ask(line: &str) -> Value {
+        serde_json::from_str(&handle_line(line)).unwrap()
+    }
+
+    fn q(s: &str) -> BigRational {
+        parse_exact(s).unwrap()
+    }
+
+    #[test]
+    fn ulps_of_a_value_beyond_the_f64_range_is_a_clear_error() {
+        let r = ask(r#"{"id":3,"op":"eval","points":[["1e400"]],"t":0,"approx":[1e308]}"#);
+        assert_eq!(r["ok"], json!(false), "{r}");
+        assert!(r["error"].as_str().unwrap().contains("beyond the largest f64"), "{r}");
+        // Just inside the range it is measured.
+        let r = ask(r#"{"op":"eval","points":[["1e308"]],"t":0,"approx":[1e308]}"#);
+        assert_eq!(r["ulps"], json!([0]), "{r}");
+    }
+
+    #[test]
+    fn eval_judges_the_callers_float_against_the_a_priori_bound() {
+        // fl(fl(0.5·0.1) + fl(0.5·0.7)) = 0.39999999999999997 vs exact 0.4 + tiny: within
+        let r = ask(r#"{"op":"eval","points":[[0.1],[0.7]],"t":0.5,"approx":[0.39999999999999997]}"#);
+        assert_eq!(r["within_bound"], json!([true]), "{r}");
+        let b = r["bound"][0].as_f64().unwrap();
+        assert!(b > 0.0 && b < 3.0, "{r}");
+        // 5 ulps off is beyond the bound of a degree-1 evaluation
+        let r = ask(r#"{"op":"eval","points":[[0.1],[0.7]],"t":0.5,"approx":[0.4000000000000002]}"#);
+        assert_eq!(r["within_bound"], json!([false]), "{r}");
+        // a parameter that is no float: no bound
+        let r = ask(r#"{"op":"eval","points":[[0.1],[0.7]],"t":"1/3","approx":[0.3]}"#);
+        assert!(r.get("bound").is_none() && r["ok"] == json!(true), "{r}");
+        let r =
+            ask(r#"{"op":"rational_eval","points":[[1,0],[1,1],[0,1]],"weights":[1,1,2],"t":0.5,"approx":[0.6,0.8]}"#);
+        assert_eq!(r["within_bound"], json!([true, true]), "{r}");
+        let r = ask(
+            r#"{"op":"surface_eval","net":[[[0,0,0],[0,1,0]],[[1,0,0],[1,1,1]]],"u":0.1,"v":0.7,"approx":[0.1,0.7,0.07]}"#,
+        );
+        assert_eq!(r["within_bound"], json!([true, true, true]), "{r}");
+    }
+
+    #[test]
+    fn float_eval_runs_each_method_and_judges_it() {
+        let pts = r#"[[-0.421875],[0.140625],[-0.046875],[0.015625]]"#;
+        for method in ["de_casteljau", "compensated", "interval"] {
+            let r = ask(&format!(
+                r#"{{"op":"float_eval","points":{pts},"t":0.7500001,"method":"{method}"}}"#
+            ));
+            assert_eq!(r["ok"], json!(true), "{r}");
+            assert_eq!(r["within_bound"], json!([true]), "{method}: {r}");
+            if method == "compensated" {
+                assert!(r["error_ulps"][0].as_f64().unwrap() < 1000.0, "{r}");
+            }
+            if method == "de_casteljau" {
+                assert!(r["error_ulps"][0].as_f64().unwrap() > 1000.0, "{r}");
+                assert_eq!(r["within_running_bound"], json!([true]), "{r}");
+            }
+            if method == "interval" {
+                assert_eq!(r["encloses"], json!([true]), "{r}");
+            }
+        }
+        let r = ask(r#"{"op":"float_eval","points":[[0],[1]],"t":"1/3"}"#);
+        assert!(r["error"].as_str().unwrap().contains("must be a float"), "{r}");
+        let r = ask(r#"{"op":"float_eval","points":[[0],["0.1"]],"t":0.5}"#);
+        assert!(r["error"].as_str().unwrap().contains("must be a float"), "{r}");
+        let r = ask(r#"{"op":"float_eval","points":[[0],[1]],"t":0.5,"method":"horner"}"#);
+        assert!(r["error"].as_str().unwrap().contains("unknown method"), "{r}");
+    }
+
+    #[test]
+    fn encodings_never_lose_information() {
+        // an error beyond the f64 range of ulps is the string "inf", never null
+        let r = ask(r#"{"op":"eval","points":[[0]],"t":0,"approx":[1e-15]}"#);
+        assert_eq!(r["error_ulps"], json!(["inf"]), "{r}");
+        assert_eq!(r["ulps"], json!([1e-15f64.to_bits().to_string()]), "{r}");
+        assert_eq!(r["bound"], json!([0.0]), "{r}");
+        // ids are echoed verbatim, big integers included
+        let line = r#"{"id":123456789012345678901234567890,"op":"eval","points":[[1]],"t":0}"#;
+        assert_eq!(
+            handle_line(line),
+            r#"{"id":123456789012345678901234567890,"ok":true,"point":["1"]}"#
+        );
+        let line = r#"{"id":[0.1, 1e400],"op":"eval","points":[[1]],"t":0}"#;
+        assert!(handle_line(line).contains("not valid JSON"));
+        let line = r#"{"id":[0.10, 2],"op":"eval","points":[[1]],"t":0}"#;
+        assert_eq!(handle_line(line), r#"{"id":[0.10, 2],"ok":true,"point":["1"]}"#);
+    }
+
+    #[test]
+    fn an_over_long_line_is_answered_before_its_end_arrives() {
+        // a reader that fails after the limit + 1 bytes: the answer must already be out
+        struct Failing(usize);
+        impl io::Read for Failing {
+            fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+                if self.0 == 0 {
+                    return Err(io::Error::other("the rest of the line never comes"));
+                }
+                let n = buf.len().min(self.0);
+                buf[..n].fill(b'x');
+                self.0 -= n;
+                Ok(n)
+            }
+        }
+        let mut out = Vec::new();
+        let result = serve(io::BufReader::new(Failing(MAX_LINE_BYTES + 1)), &mut out);
+        assert!(result.is_err());
+        assert!(String::from_utf8(out).unwrap().contains("longer than"));
+    }
+
+    #[test]
+    fn eval_is_exact_and_echoes_the_id() {
+        let r = ask(r#"{"id":"a","op":"eval","points":[[0,0],["4/3","-4/3"],["4/3","4/3"],[0,0]],"t":"1/2"}"#);
+        assert_eq!(r, json!({"id": "a", "ok": true, "point": ["1", "0"]}));
+        let r = ask(r#"{"id":[1,{"x":2}],"op":"eval","points":[[1]],"t":5}"#);
+        assert_eq!(r, json!({"id": [1, {"x": 2}], "ok": true, "point": ["1"]}));
+    }
+
+    #[test]
+    fn every_op_answers() {
+        let r = ask(r#"{"op":"elevate","points":[[0,0],[1,2],[2,0]],"by":1}"#);
+        assert_eq!(
+            r["points"],
+            json!([["0", "0"], ["2/3", "4/3"], ["4/3", "4/3"], ["2", "0"]])
+        );
+        let r = ask(r#"{"op":"split","points":[[0],[1],[3]],"t":"1/2"}"#);
+        assert_eq!(r["left"], json!([["0"], ["1/2"], ["5/4"]]));
+        assert_eq!(r["right"], json!([["5/4"], ["2"], ["3"]]));
+        let r = ask(r#"{"op":"derivative","points":[[0],[1],[3]],"order":1}"#);
+        assert_eq!(r["points"], json!([["2"], ["4"]]));
+        let r = ask(r#"{"op":"derivative","points":[[0],[1],[3]],"order":2}"#);
+        assert_eq!(r["points"], json!([["2"]]));
+        let r = ask(r#"{"op":"derivative","points":[[0],[1],[3]],"order":1,"t":"1/2"}"#);
+        assert_eq!(r, json!({"ok": true, "vector": ["3"]}));
+        let r = ask(r#"{"op":"derivative","points":[[0],[1],[3]],"order":5,"t":"1/2"}"#);
+        assert_eq!(r, json!({"ok": true, "vector": ["0"]}));
+        // 4t - 4t² as a quadratic: Bézier points 0, 2, 0
+        let r = ask(r#"{"op":"to_bezier","power":[[0,4,-4],[1,0,0]]}"#);
+        assert_eq!(r["points"], json!([["0", "1"], ["2", "1"], ["0", "1"]]));
+    }
+
+    #[test]
+    fn rational_conic_surface_fit_answer() {
+        // text 001, Example 3: the arc (-1,1), (0,-1), (1,1) with weights 1, 1/2, 1
+        let r = ask(r#"{"op":"conic","points":[[-1,1],[0,-1],[1,1]],"weights":[1,"1/2",1]}"#);
+        assert_eq!(
+            r,
+            json!({"ok": true, "type": "ellipse", "implicit": ["4", "0", "3", "0", "-10", "3"]})
+        );
+        let r = ask(r#"{"op":"conic","points":[[-1,1],[0,-1],[1,1]],"weights":[1,2,1]}"#);
+        assert_eq!(r["type"], json!("hyperbola"));
+        let r = ask(r#"{"op":"conic","points":[[0,0],[1,1],[2,2]],"weights":[1,1,1]}"#);
+        assert_eq!(r["implicit"], Value::Null);
+        assert!(r["type"].as_str().unwrap().starts_with("degenerate"));
+        // the quarter circle: x(1/2) = (3/5, 4/5), and 0.6, 0.8 are its correctly rounded floats
+        let r = ask(
+            r#"{"op":"rational_eval","points":[[1,0],[1,1],[0,1]],"weights":[1,1,2],"t":"1/2","approx":[0.6,0.8]}"#,
+        );
+        assert_eq!(r["point"], json!(["3/5", "4/5"]));
+        assert_eq!(r["ulps"], json!([0, 0]));
+        let r = ask(r#"{"op":"rational_eval","points":[[1,0],[1,1],[0,1]],"weights":[1,-1,1],"t":"1/2"}"#);
+        assert!(r["error"].as_str().unwrap().contains("vanishes"), "{r}");
+        // text 003: the bilinear patch z = xy
+        let r = ask(r#"{"op":"surface_eval","net":[[[0,0,0],[0,1,0]],[[1,0,0],[1,1,1]]],"u":"1/3","v":"3/4"}"#);
+        assert_eq!(r["point"], json!(["1/3", "3/4", "1/4"]));
+        // text 004: a cubic is its own fit, k = l = 1/3, δ² = 0
+        let r = ask(r#"{"op":"fit_cubic","x0":[0,0,0],"x1":[4,0,5],"xh":[2,"3/2",1],"d0":[3,6,0],"d1":[3,-6,12]}"#);
+        assert_eq!(
+            r,
+            json!({"ok": true, "k": "1/3", "l": "1/3", "delta2": "0", "warnings": [],
+                   "points": [["0", "0", "0"], ["1", "2", "0"], ["3", "2", "1"], ["4", "0", "5"]]})
+        );
+        let r = ask(r#"{"op":"fit_cubic","x0":[0,0],"x1":[1,0],"xh":[0,1],"d0":[1,0],"d1":[2,0]}"#);
+        assert!(r["error"].as_str().unwrap().contains("parallel"), "{r}");
+        for (line, needle) in [
+            (
+                r#"{"op":"conic","points":[[-1,1],[0,-1]],"weights":[1,1]}"#,
+                "needs 3 points",
+            ),
+            (
+                r#"{"op":"conic","points":[[-1,1,0],[0,-1,0],[1,1,0]],"weights":[1,1,1]}"#,
+                "planar",
+            ),
+            (
+                r#"{"op":"rational_eval","points":[[1,0],[1,1]],"weights":[1],"t":0}"#,
+                "1 weights for 2",
+            ),
+            (
+                r#"{"op":"rational_eval","points":[[1,0],[1,1]],"weights":[0,0],"t":0}"#,
+                "all weights",
+            ),
+            (
+                r#"{"op":"surface_eval","net":[[[0,0]],[[0,1],[1,1]]],"u":0,"v":0}"#,
+                "ragged",
+            ),
+            (r#"{"op":"surface_eval","net":[],"u":0,"v":0}"#, "empty"),
+            (
+                r#"{"op":"fit_cubic","x0":[0,0],"x1":[1,0],"xh":[0,1],"d0":[1,0]}"#,
+                "'d1'",
+            ),
+            (
+                r#"{"op":"fit_cubic","x0":[0,0],"x1":[1,0,0],"xh":[0,1],"d0":[1,0],"d1":[0,1]}"#,
+                "dimension",
+            ),
+        ] {
+            let r = ask(line);
+            assert_eq!(r["ok"], json!(false), "{line}");
+            assert!(r["error"].as_str().unwrap().contains(needle), "{line}: {r}");
+        }
+    }
+
+    #[test]
+    fn conic_equations_read_like_the_text() {
+        let k = |c: [i64; 6]| conic_polynomial(&c.map(BigInt::from));
+        assert_eq!(k([4, 0, 3, 0, -10, 3]), "4x^2 + 3y^2 - 10y + 3");
+        assert_eq!(k([-1, 1, 0, 0, 0, 0]), "-x^2 + xy");
+        assert_eq!(k([0, 0, 0, 0, 0, -1]), "-1");
+        assert_eq!(k([0, 0, 0, 0, 0, 0]), "0");
+    }
+
+    #[test]
+    fn bad_requests_get_clear_errors() {
+        let cases: &[(&str, &str)] = &[
+            ("not json", "not valid JSON"),
+            ("", "empty line"),
+            ("[1,2]", "must be a JSON object"),
+            (r#"{"points":[[0]]}"#, "missing field 'op'"),
+            (r#"{"op":"frobnicate"}"#, "unknown op"),
+            (r#"{"op":7}"#, "'op' must be a string"),
+            (r#"{"op":"eval","points":[[0]]}"#, "needs the field 't'"),
+            (
+                r#"{"op":"eval","points":[[0]],"t":0,"aprox":[0.5]}"#,
+                "unknown field \"aprox\"",
+            ),
+            (r#"{"op":"eval","points":[],"t":0}"#, "empty"),
+            (r#"{"op":"eval","points":[[0,0],[1]],"t":0}"#, "dimension mismatch"),
+            (r#"{"op":"eval","points":[[0]],"t":"1/0"}"#, "zero denominator"),
+            (r#"{"op":"eval","points":[[0]],"t":"abc"}"#, "not a number"),
+            (r#"{"op":"eval","points":[[0]],"t":"NaN"}"#, "not a number"),
+            (r#"{"op":"eval","points":[[0]],"t":"1e999999999"}"#, "too large"),
+            (r#"{"op":"eval","points":[[0]],"t":null}"#, "field 't'"),
+            (r#"{"op":"eval","points":"0,0","t":0}"#, "field 'points'"),
+            (
+                r#"{"op":"eval","points":[[0]],"t":0,"approx":[1,2]}"#,
+                "dimension mismatch",
+            ),
+            (
+                r#"{"op":"eval","points":[[0]],"t":0,"approx":["0.5"]}"#,
+                "must be a JSON number",
+            ),
+            (
+                r#"{"op":"elevate","points":[[0]],"by":1000000000000}"#,
+                "degree after elevation is too large",
+            ),
+            (r#"{"op":"elevate","points":[[0]],"by":-1}"#, "non-negative integer"),
+            (r#"{"op":"elevate","points":[[0]],"by":"x"}"#, "non-negative integer"),
+            (r#"{"op":"derivative","points":[[0],[1]],"order":2}"#, "order 2"),
+            (r#"{"op":"to_bezier","power":[[0,1],[1]]}"#, "ragged"),
+            (r#"{"op":"to_bezier","power":[]}"#, "empty"),
+            (r#"{"op":"eval","points":[[1e400]],"t":0}"#, "not valid JSON"),
+        ];
+        for (line, needle) in cases {
+            let r = ask(line);
+            assert_eq!(r["ok"], json!(false), "{line} -> {r}");
+            let msg = r["error"].as_str().unwrap();
+            assert!(msg.contains(needle), "{line}: {msg:?} should mention {needle:?}");
+        }
+    }
+
+    #[test]
+    fn huge_requests_are_refused_quickly() {
+        let many: Vec<Value> = (0..5000).map(|i| json!([i])).collect();
+        let r = ask(&json!({"op": "eval", "points": many, "t": "1/3"}).to_string());
+        assert!(
+            r["error"].as_str().unwrap().contains("number of points is too large"),
+            "{r}"
+        );
+        let wide: Vec<Value> = (0..65).map(|i| json!(i)).collect();
+        let r = ask(&json!({"op": "eval", "points": [wide], "t": 0}).to_string());
+        assert!(r["error"].as_str().unwrap().contains("dimension is too large"), "{r}");
+        // degree 4000 at a parameter with 1000-digit numerator: far beyond the work limit
+        let pts: Vec<Value> = (0..4000).map(|i| json!([i])).collect();
+        let t = format!("1/{}", "7".repeat(1000));
+        let r = ask(&json!({"op": "eval", "points": pts, "t": t}).to_string());
+        assert!(r["error"].as_str().unwrap().contains("estimated exact work"), "{r}");
+    }
+
+    #[test]
+    fn work_limit_matches_its_documentation() {
+        let request = |op: &str, n: i64, t: Value| {
+            let points: Vec<Value> = (0..n).map(|i| json!([(i * 7919) % 1000, (i * 104729) % 997])).collect();
+            Op::from_json(&json!({"op": op, "points": points, "t": t}))
+        };
+        let planar = |n: i64, t: Value| request("split", n, t);
+        assert!(planar(301, json!("1/3")).is_ok());
+        assert!(planar(401, json!("1/3"))
+            .unwrap_err()
+            .to_string()
+            .contains("estimated exact work"));
+        assert!(planar(101, json!(0.1)).is_ok());
+        assert!(planar(131, json!(0.1)).is_err());
+        // eval runs the fraction-free algorithm: far higher degrees within the same time
+        assert!(request("eval", 3001, json!("1/3")).is_ok());
+        assert!(request("eval", 4097, json!("1/3")).is_err());
+        assert!(request("eval", 1001, json!(0.1)).is_ok());
+        assert!(request("eval", 2001, json!(0.1)).is_err());
+        // calibrated both ways (examples/work_calibration.rs): 64-D floats of degree 53 at
+        // 0.1 (6.8 s) and 64-D fits of 32-digit fractions (14–48 s) are refused, a cubic
+        // elevated to the documented degree 4096 (0.08 s) is accepted
+        let wide = |n: usize| -> Vec<Value> {
+            (0..n)
+                .map(|i| {
+                    (0..64)
+                        .map(|k| json!(((i * 64 + k) as f64 * 0.618).fract() - 0.5))
+                        .collect()
+                })
+                .collect()
+        };
+        let split = |n: usize| Op::from_json(&json!({"op": "split", "points": wide(n), "t": 0.1}));
+        assert!(split(54).unwrap_err().to_string().contains("estimated exact work"));
+        assert!(split(41).is_ok());
+        // (10^k + 7)/(10^k + 9): k + 1 digits, coprime
+        let fraction = |k: usize| format!("1{}7/1{}9", "0".repeat(k - 1), "0".repeat(k - 1));
+        let point = |k: usize| json!(vec![fraction(k); 64]);
+        let fit = |k: usize| {
+            Op::from_json(
+                &json!({"op": "fit_cubic", "x0": point(k), "x1": point(k), "xh": point(k), "d0": point(k), "d1": point(k)}),
+            )
+        };
+        assert!(fit(32).is_err());
+        assert!(fit(4).is_ok());
+        let cubic = json!([[0, 0], [1, 2], [3, 2], [4, 0]]);
+        assert!(Op::from_json(&json!({"op": "elevate", "points": cubic, "by": 1718})).is_ok());
+        assert!(Op::from_json(&json!({"op": "elevate", "points": cubic, "by": 4093})).is_ok());
+        // the everyday case is far below the limit
+        let op = planar(21, json!(0.1)).unwrap();
+        assert!(op.work() < MAX_WORK / 500.0, "{}", op.work());
+    }
+
+    #[test]
+    fn bounded_reader_skips_long_lines() {
+        let input = format!("{}\nshort\n{}", "x".repeat(100), "y".repeat(5));
+        let mut r = io::BufReader::with_capacity(7, input.as_bytes());
+        assert_eq!(read_line_bounded(&mut r, 10).unwrap(), Line::TooLong);
+        skip_line(&mut r).unwrap();
+        assert_eq!(read_line_bounded(&mut r, 10).unwrap(), Line::Text(b"short".to_vec()));
+        assert_eq!(read_line_bounded(&mut r, 10).unwrap(), Line::Text(b"yyyyy".to_vec()));
+        assert_eq!(read_line_bounded(&mut r, 10).unwrap(), Line::Eof);
+        let mut r = io::BufReader::new(&b"\n\n"[..]);
+        assert_eq!(read_line_bounded(&mut r, 10).unwrap(), Line::Text(vec![]));
+        assert_eq!(read_line_bounded(&mut r, 10).unwrap(), Line::Text(vec![]));
+        assert_eq!(read_line_bounded(&mut r, 10).unwrap(), Line::Eof);
+        // exactly the limit is fine; one more byte is too long, even without a newline
+        let mut r = io::BufReader::new(&b"0123456789\n0123456789a"[..]);
+        assert_eq!(
+            read_line_bounded(&mut r, 10).unwrap(),
+            Line::Text(b"0123456789".to_vec())
+        );
+        assert_eq!(read_line_bounded(&mut r, 10).unwrap(), Line::TooLong);
+        skip_line(&mut r).unwrap();
+        assert_eq!(read_line_bounded(&mut r, 10).unwrap(), Line::Eof);
+    }
+
+    #[test]
+    fn serve_answers_every_line_in_order() {
+        let input = "{\"id\":1,\"op\":\"eval\",\"points\":[[0],[2]],\"t\":\"1/4\"}\nnope\r\n\n\u{FFFD}\n{\"id\":2,\"op\":\"eval\",\"points\":[[0],[2]],\"t\":0.5}";
+        let mut out = Vec::new();
+        serve(input.as_bytes(), &mut out).unwrap();
+        let lines: Vec<Value> = String::from_utf8(out)
+            .unwrap()
+            .lines()
+            .map(|l| serde_json::from_str(l).unwrap())
+            .collect();
+        assert_eq!(lines.len(), 5);
+        assert_eq!(lines[0], json!({"id": 1, "ok": true, "point": ["1/2"]}));
+        assert_eq!(lines[1]["ok"], json!(false));
+        assert_eq!(lines[2]["ok"], json!(false));
+        assert_eq!(lines[3]["ok"], json!(false));
+        assert_eq!(lines[4], json!({"id": 2, "ok": true, "point": ["1"]}));
+        let mut out = Vec::new();
+        serve(&[b'{', 0xff, b'}', b'\n'][..], &mut out).unwrap();
+        assert!(String::from_utf8(out).unwrap().contains("not valid UTF-8"));
+    }
+
+    fn small_rational() -> impl Strategy<Value = BigRational> {
+        (-1000i64..1000, 1i64..100).prop_map(|(p, d)| BigRational::new(p.into(), d.into()))
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        #[test]
+        fn oracle_eval_equals_library_eval(
+            coords in prop::collection::vec(prop::collection::vec(small_rational(), 2), 1..8),
+            t in small_rational(),
+        ) {
+            let curve = BezierCurve::from_coords(coords.clone()).unwrap();
+            let exact = curve.eval(&t);
+            let points: Vec<Value> = coords.iter().map(|p| p.iter().map(number_to_json).collect()).collect();
+            let approx: Vec<f64> = exact.coords().iter().map(nearest_f64).collect();
+            let r = ask(&json!({"op": "eval", "points": points, "t": number_to_json(&t), "approx": approx}).to_string());
+            prop_assert_eq!(&r["ok"], &json!(true));
+            let got: Vec<BigRational> = r["point"].as_array().unwrap().iter().map(|c| q(c.as_str().unwrap())).collect();
+            prop_assert_eq!(got.as_slice(), exact.coords());
+            prop_assert_eq!(&r["ulps"], &json!([0, 0]));
+            for e in r["error_ulps"].as_array().unwrap() {
+                prop_assert!(e.as_f64().unwrap() <= 0.5);
+            }
+        }
+    }
+}

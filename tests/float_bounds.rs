@@ -1,0 +1,202 @@
+//! The float bounds checked exactly: on random curves (degrees 3, 5, 10, 20, coefficients in
+//! [−1, 1], t in [0, 1]) and near multiple roots, every bound is compared with the exact
+//! error in rationals. The full 100,000-case run is `cargo run --release --example
+//! float_errors`; this test runs a smaller sample of the same sets.
+
+use casteljau::float::{
+    a_priori_bound, a_priori_index, compensated_de_casteljau, compensated_derivative, de_casteljau,
+    de_casteljau_running, error_at_most, ulp_error, UNIT_ROUNDOFF,
+};
+use casteljau::interval::Interval;
+use casteljau::shadow::Shadow;
+use casteljau::{BezierCurve, BigRational, Scalar};
+use num_traits::Signed;
+
+/// A small deterministic generator (xorshift64*), so that failures reproduce.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
+    }
+    /// uniform in [0, 1)
+    fn unit(&mut self) -> f64 {
+        (self.next() >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+fn q(x: f64) -> BigRational {
+    BigRational::from_f64(x).unwrap()
+}
+
+/// `γ_k` exactly.
+fn gamma_exact(k: usize) -> BigRational {
+    let ku = BigRational::from_integer(k.into()) * q(UNIT_ROUNDOFF);
+    &ku / (BigRational::from_integer(1.into()) - &ku)
+}
+
+/// The exact `p(t)` and `Σ|b_i| B_i(t)` (t in [0, 1]).
+fn exact_value_and_sum(b: &[f64], t: f64) -> (BigRational, BigRational) {
+    let curve = |c: Vec<BigRational>| BezierCurve::from_coords(c.into_iter().map(|x| vec![x]).collect()).unwrap();
+    let p = curve(b.iter().map(|x| q(*x)).collect())
+        .eval_fraction_free(&q(t))
+        .coords()[0]
+        .clone();
+    let s = curve(b.iter().map(|x| q(f64::abs(*x))).collect())
+        .eval_fraction_free(&q(t))
+        .coords()[0]
+        .clone();
+    (p, s)
+}
+
+/// Checks every bound on one case; panics with the case on a violation.
+fn check_case(b: &[f64], t: f64) {
+    let n = b.len() - 1;
+    let (p, sum) = exact_value_and_sum(b, t);
+    let err = |x: f64| Signed::abs(&(q(x) - &p));
+    let plain = de_casteljau(b, t);
+    // the a priori bound with its exact constant, and the float bound returned
+    let exact_bound = gamma_exact(a_priori_index(n, t)) * &sum;
+    assert!(err(plain) <= exact_bound, "a priori bound violated: {b:?} at {t}");
+    assert!(error_at_most(plain, &p, a_priori_bound(b, t)), "{b:?} at {t}");
+    let (value, running) = de_casteljau_running(b, t);
+    assert_eq!(value.to_bits(), plain.to_bits());
+    assert!(
+        error_at_most(plain, &p, running),
+        "running bound violated: {b:?} at {t}"
+    );
+    // compensated: u|p| + γ_{3n}² Σ|b_i|B_i (the constant, without the paper's 2)
+    let (comp, comp_bound) = compensated_de_casteljau(b, t);
+    let g = gamma_exact(3 * n);
+    let tight = q(UNIT_ROUNDOFF) * Signed::abs(&p) + &g * &g * &sum;
+    assert!(err(comp) <= tight, "compensated bound violated: {b:?} at {t}");
+    assert!(error_at_most(comp, &p, comp_bound), "{b:?} at {t}");
+    // the interval scalar through the generic algorithm encloses the exact value
+    let iv: BezierCurve<Interval> =
+        BezierCurve::from_coords(b.iter().map(|x| vec![Interval::from_f64(*x).unwrap()]).collect()).unwrap();
+    let e = iv.eval(&Interval::from_f64(t).unwrap()).coords()[0];
+    assert!(e.contains(&p), "interval {e} misses the exact value: {b:?} at {t}");
+}
+
+fn random_coefficients(rng: &mut Rng, n: usize) -> Vec<f64> {
+    (0..=n).map(|_| 2.0 * rng.unit() - 1.0).collect()
+}
+
+/// Bernstein coefficients of `(t − r)^n`, rounded to floats: a root of multiplicity `n`.
+fn multiple_root(n: usize, r: f64) -> Vec<f64> {
+    (0..=n)
+        .map(|i| {
+            let v = (-q(r)).pow((n - i) as i32) * (BigRational::from_integer(1.into()) - q(r)).pow(i as i32);
+            Scalar::to_f64(&v)
+        })
+        .collect()
+}
+
+#[test]
+fn bounds_hold_exactly_on_random_curves() {
+    let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+    for &n in &[3usize, 5, 10, 20] {
+        for _ in 0..150 {
+            let b = random_coefficients(&mut rng, n);
+            check_case(&b, rng.unit());
+        }
+    }
+}
+
+#[test]
+fn bounds_hold_exactly_near_multiple_roots() {
+    let mut rng = Rng(42);
+    for &n in &[3usize, 5, 10] {
+        for _ in 0..60 {
+            let r = 0.2 + 0.6 * rng.unit();
+            let b = multiple_root(n, r);
+            let t = r + (rng.unit() - 0.5) * 10f64.powi(-(1 + (rng.next() % 7) as i32));
+            check_case(&b, t);
+        }
+    }
+}
+
+#[test]
+fn compensated_is_within_one_ulp_on_random_curves() {
+    let mut rng = Rng(7);
+    let mut worse = 0;
+    let total = 400;
+    for i in 0..total {
+        let n = [3, 5, 10, 20][i % 4];
+        let b = random_coefficients(&mut rng, n);
+        let t = rng.unit();
+        let (p, _) = exact_value_and_sum(&b, t);
+        let (comp, _) = compensated_de_casteljau(&b, t);
+        if ulp_error(comp, &p).unwrap().ulps > 1 {
+            worse += 1;
+        }
+    }
+    assert!(
+        worse == 0,
+        "{worse} of {total} more than 1 ulp from the correctly rounded value"
+    );
+}
+
+#[test]
+fn compensated_derivative_is_within_its_bound() {
+    let mut rng = Rng(11);
+    for i in 0..200 {
+        let n = [1, 3, 5, 10, 20][i % 5];
+        let b = random_coefficients(&mut rng, n);
+        let t = rng.unit();
+        let curve = BezierCurve::from_coords(b.iter().map(|x| vec![q(*x)]).collect()).unwrap();
+        let exact = curve.derivative_at(1, &q(t)).unwrap().coords()[0].clone();
+        let (d, bound) = compensated_derivative(&b, t);
+        assert!(error_at_most(d, &exact, bound), "{b:?} at {t}");
+    }
+}
+
+#[test]
+fn the_shadow_scalar_reports_the_generic_algorithms_float_error() {
+    let mut rng = Rng(5);
+    for _ in 0..50 {
+        let b = random_coefficients(&mut rng, 10);
+        let t = rng.unit();
+        let shadow: BezierCurve<Shadow> =
+            BezierCurve::from_coords(b.iter().map(|x| vec![Shadow::from_f64(*x).unwrap()]).collect()).unwrap();
+        let s = shadow.eval(&Shadow::from_f64(t).unwrap()).coords()[0].clone();
+        let plain: BezierCurve<f64> = BezierCurve::from_coords(b.iter().map(|x| vec![*x]).collect()).unwrap();
+        // the float side is bit for bit the f64 run; the exact side is the exact value
+        assert_eq!(s.value().to_bits(), plain.eval(&t).coords()[0].to_bits());
+        let (p, _) = exact_value_and_sum(&b, t);
+        assert_eq!(s.exact(), &p);
+        assert_eq!(s.ulp_error().unwrap(), ulp_error(s.value(), &p).unwrap());
+    }
+}
+
+#[test]
+fn intervals_enclose_split_and_derivatives_too() {
+    let mut rng = Rng(3);
+    for _ in 0..40 {
+        let b = random_coefficients(&mut rng, 6);
+        let t = rng.unit();
+        let exact = BezierCurve::from_coords(b.iter().map(|x| vec![q(*x)]).collect()).unwrap();
+        let iv: BezierCurve<Interval> =
+            BezierCurve::from_coords(b.iter().map(|x| vec![Interval::from_f64(*x).unwrap()]).collect()).unwrap();
+        let ti = Interval::from_f64(t).unwrap();
+        let (l, r) = iv.split_at(&ti);
+        let (el, er) = exact.split_at(&q(t));
+        for (a, e) in l
+            .points()
+            .iter()
+            .chain(r.points())
+            .zip(el.points().iter().chain(er.points()))
+        {
+            assert!(a.coords()[0].contains(&e.coords()[0]));
+        }
+        let d = iv.derivative_at(2, &ti).unwrap().coords()[0];
+        assert!(d.contains(&exact.derivative_at(2, &q(t)).unwrap().coords()[0]));
+        // a non-float parameter enters as the two floats around it
+        let third = Interval::from_ratio(1, 3).unwrap();
+        let x = iv.eval(&third).coords()[0];
+        assert!(x.contains(&exact.eval(&BigRational::new(1.into(), 3.into())).coords()[0]));
+    }
+}
