@@ -132,7 +132,7 @@ fn elevate_many(c: &mut Criterion) {
 /// degrees where the difference shows.
 fn exact_eval_naive_vs_fraction_free(c: &mut Criterion) {
     let t = BigRational::from_ratio(2, 7).unwrap();
-    let mut group = c.benchmark_group("exact_eval");
+    let mut group = c.benchmark_group("curve_exact_eval");
     group
         .sample_size(10)
         .measurement_time(Duration::from_secs(2))

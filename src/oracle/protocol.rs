@@ -306,13 +306,13 @@ impl Op {
             Op::Eval { curve, t, approx } => {
                 // Same value as `curve.eval(t)` (property tests pin both), without a gcd per step;
                 // float inputs need no gcd at all.
-                let point = eval_dyadic(curve, t).unwrap_or_else(|| curve.eval_fraction_free(t));
+                let point = eval_dyadic(curve, t).unwrap_or_else(|| curve.eval_nested(t));
                 let ulps = ulps_of(approx.as_deref(), &point)?;
                 let bound = approx.as_deref().and_then(|a| curve_bounds(curve, t, a, &point));
                 Answer::Point { point, ulps, bound }
             }
             Op::FloatEval { curve, t, method } => {
-                let point = eval_dyadic(curve, t).unwrap_or_else(|| curve.eval_fraction_free(t));
+                let point = eval_dyadic(curve, t).unwrap_or_else(|| curve.eval_nested(t));
                 Answer::FloatEval(Box::new(float_eval(curve, t, *method, point)?))
             }
             Op::Elevate { curve, by } => Answer::Points(curve.elevate_by(*by)?.into_points()),
@@ -330,7 +330,7 @@ impl Op {
                 at: Some(t),
             } => Answer::Vector(curve.derivative_at(*order, t)?),
             Op::RationalEval { curve, t, approx } => {
-                let point = curve.eval(t)?;
+                let point = curve.eval_nested(t)?;
                 let ulps = ulps_of(approx.as_deref(), &point)?;
                 let bound = approx.as_deref().and_then(|a| rational_bounds(curve, t, a, &point));
                 Answer::Point { point, ulps, bound }
@@ -359,7 +359,7 @@ impl Op {
                 Answer::Conic { kind, implicit }
             }
             Op::SurfaceEval { surface, u, v, approx } => {
-                let point = surface.eval(u, v);
+                let point = surface.eval_nested(u, v);
                 let ulps = ulps_of(approx.as_deref(), &point)?;
                 let bound = approx.as_deref().and_then(|a| surface_bounds(surface, u, v, a, &point));
                 Answer::Point { point, ulps, bound }
