@@ -8,7 +8,7 @@
 
 use casteljau::float::{
     a_priori_index, compensated_de_casteljau, de_casteljau, de_casteljau_running, error_at_most, eval_dyadic,
-    ulp_error, UNIT_ROUNDOFF,
+    gamma_exact, ulp_error, UNIT_ROUNDOFF,
 };
 use casteljau::interval::Interval;
 use casteljau::{BezierCurve, BigRational, Scalar};
@@ -31,11 +31,6 @@ impl Rng {
 
 fn q(x: f64) -> BigRational {
     BigRational::from_f64(x).unwrap()
-}
-
-fn gamma_exact(k: usize) -> BigRational {
-    let ku = BigRational::from_integer(k.into()) * q(UNIT_ROUNDOFF);
-    &ku / (BigRational::from_integer(1.into()) - &ku)
 }
 
 fn exact_eval(b: &[f64], t: f64) -> BigRational {

@@ -360,18 +360,7 @@ pub fn common_dimension<T: Scalar>(points: &[Point<T>], what: &'static str) -> R
 where
     for<'a> &'a T: RefOps<T>,
 {
-    let first = points.first().ok_or(Error::Empty(what))?;
-    let dim = first.dim();
-    for (i, p) in points.iter().enumerate() {
-        if p.dim() != dim {
-            return Err(Error::DimensionMismatch {
-                expected: dim,
-                found: p.dim(),
-                context: format!("{what}, point {i}"),
-            });
-        }
-    }
-    Ok(dim)
+    crate::curve::common_dim(points, what)
 }
 
 /// `Σ c_i p_i` with arbitrary coefficients: a linear combination, meaningful for vectors.

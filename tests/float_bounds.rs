@@ -5,7 +5,7 @@
 
 use casteljau::float::{
     a_priori_bound, a_priori_index, compensated_de_casteljau, compensated_derivative, de_casteljau,
-    de_casteljau_running, error_at_most, ulp_error, UNIT_ROUNDOFF,
+    de_casteljau_running, error_at_most, gamma_exact, ulp_error, UNIT_ROUNDOFF,
 };
 use casteljau::interval::Interval;
 use casteljau::shadow::Shadow;
@@ -30,12 +30,6 @@ impl Rng {
 
 fn q(x: f64) -> BigRational {
     BigRational::from_f64(x).unwrap()
-}
-
-/// `γ_k` exactly.
-fn gamma_exact(k: usize) -> BigRational {
-    let ku = BigRational::from_integer(k.into()) * q(UNIT_ROUNDOFF);
-    &ku / (BigRational::from_integer(1.into()) - &ku)
 }
 
 /// The exact `p(t)` and `Σ|b_i| B_i(t)` (t in [0, 1]).

@@ -44,6 +44,18 @@ pub fn gamma(k: usize) -> f64 {
     next_up(next_up(ku / next_down(1.0 - ku)))
 }
 
+/// `γ_k = k u / (1 − k u)` exactly, for checking bounds in rationals.
+///
+/// ```
+/// use casteljau::float::{gamma, gamma_exact};
+/// assert!(casteljau::BigRational::from_float(gamma(6)).unwrap() >= gamma_exact(6));
+/// ```
+pub fn gamma_exact(k: usize) -> num_rational::BigRational {
+    use num_rational::BigRational;
+    let ku = BigRational::from_integer(k.into()) * BigRational::new(1.into(), num_bigint::BigInt::from(1u8) << 53);
+    &ku / (BigRational::from_integer(1.into()) - &ku)
+}
+
 /// The next float above `x` (for finite `x`; `+∞` stays).
 pub fn next_up(x: f64) -> f64 {
     if x.is_nan() || x == f64::INFINITY {

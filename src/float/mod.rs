@@ -13,7 +13,8 @@ mod ulp;
 
 pub use casteljau::{
     a_priori_bound, a_priori_index, abs_bernstein_sum, compensated_de_casteljau, compensated_derivative, de_casteljau,
-    de_casteljau_running, gamma, next_down, next_up, rational_a_priori_bound, surface_a_priori_bound, UNIT_ROUNDOFF,
+    de_casteljau_running, gamma, gamma_exact, next_down, next_up, rational_a_priori_bound, surface_a_priori_bound,
+    UNIT_ROUNDOFF,
 };
 pub use dyadic::{dyadic_ratio, eval_dyadic};
 pub use eft::{fast_two_sum, two_product, two_sum};
