@@ -170,7 +170,7 @@ th { background: #f3f5f7; }
 table.misprints td:first-child { white-space: nowrap; }
 td.n { text-align: right; font-variant-numeric: tabular-nums; }
 tr.total td { font-weight: bold; border-top: 2px solid var(--ink); }
-.chip { display: inline-block; border-radius: 0.7rem; padding: 0 0.55rem; font-size: 0.8rem; font-weight: bold;
+.chip { display: inline-block; white-space: nowrap; border-radius: 0.7rem; padding: 0 0.55rem; font-size: 0.8rem; font-weight: bold;
         color: #fff; text-transform: uppercase; letter-spacing: 0.03em; }
 .chip.proved { background: var(--proved); } .chip.proved-in-range { background: var(--proved-in-range); } .chip.verified { background: var(--verified); } .chip.fails { background: var(--fails); }
 .chip.mismatch { background: #000; }
