@@ -88,3 +88,25 @@ fn print_report() {
     println!("{}", report.to_text());
     println!("prove over proofs/ took {:?}", start.elapsed());
 }
+
+/// Claims run in parallel; the progress callback still counts 1, 2, …, total once per claim,
+/// and the report keeps file order whatever order the claims finish in.
+#[test]
+fn progress_counts_every_claim_once() {
+    let mut calls: Vec<(usize, usize, String)> = Vec::new();
+    let report = prove_paths(&[PathBuf::from("proofs")], &mut |done, total, id| {
+        calls.push((done, total, id.to_string()));
+    })
+    .unwrap();
+    let total = report.outcomes.len();
+    let counts: Vec<usize> = calls.iter().map(|c| c.0).collect();
+    assert_eq!(counts, (1..=total).collect::<Vec<_>>());
+    assert!(calls.iter().all(|c| c.1 == total));
+    let mut seen: Vec<String> = calls.into_iter().map(|c| c.2).collect();
+    let mut ids: Vec<String> = report.outcomes.iter().map(|o| o.id.clone()).collect();
+    let files: Vec<String> = report.outcomes.iter().map(|o| o.file.clone()).collect();
+    assert!(files.windows(2).all(|w| w[0] <= w[1]), "report out of file order");
+    seen.sort();
+    ids.sort();
+    assert_eq!(seen, ids);
+}

@@ -34,6 +34,12 @@ pub trait Alg: Clone + fmt::Debug + fmt::Display {
     /// Exact equality (`None` for algebras without one, like degree bounds).
     fn equals(&self, o: &Self) -> Option<bool>;
 
+    /// `B_i^n(self)`, zero outside `0 ≤ i ≤ n` (the formula; an algebra may serve it from a
+    /// cached table).
+    fn bernstein(&self, i: i64, n: i64) -> Result<Self> {
+        bernstein_formula(i, n, self)
+    }
+
     /// The integer `n`.
     fn from_int(n: i64) -> Self {
         Self::from_rat(&BigRational::from_integer(n.into()))
@@ -110,6 +116,13 @@ impl Alg for BigRational {
     }
     fn equals(&self, o: &Self) -> Option<bool> {
         Some(self == o)
+    }
+    fn bernstein(&self, i: i64, n: i64) -> Result<Self> {
+        // Claims sample at the same parameters, so rows are shared across claims; where the
+        // table declines (its size limits), the formula decides as before.
+        crate::exact::BernsteinTable::shared()
+            .bernstein(i, n, self)
+            .or_else(|_| bernstein_formula(i, n, self))
     }
 }
 
@@ -830,6 +843,11 @@ fn bernstein_derivative<A: Alg>(i: i64, n: i64, g: &A, k: i64) -> Result<A> {
 
 /// `B_i^n(g) = C(n,i) g^i (1-g)^(n-i)`, zero outside `0 ≤ i ≤ n`.
 pub fn bernstein<A: Alg>(i: i64, n: i64, g: &A) -> Result<A> {
+    g.bernstein(i, n)
+}
+
+/// `B_i^n(g)` by its formula: the reference every table is checked against.
+pub fn bernstein_formula<A: Alg>(i: i64, n: i64, g: &A) -> Result<A> {
     if i < 0 || i > n {
         return Ok(A::from_int(0));
     }

@@ -148,34 +148,56 @@ impl Report {
 }
 
 /// Loads every claim file under `paths` (files, or directories whose `.toml` files are read in
-/// name order) and checks every claim; `progress(done, total, id)` is called after each claim.
-/// A claim that cannot be checked (a malformed expression, an unknown kind) is an error naming
-/// the file and the claim.
+/// name order) and checks every claim; `progress(done, total, id)` is called after each claim,
+/// on the calling thread, with `done` counting completed claims. Claims are independent and
+/// checked in parallel (rayon); the report keeps file order. A claim that cannot be checked (a
+/// malformed expression, an unknown kind) is an error naming the file and the claim; with
+/// several, the first in file order.
 pub fn prove_paths(paths: &[PathBuf], progress: &mut dyn FnMut(usize, usize, &str)) -> Result<Report> {
+    use rayon::prelude::*;
     let files = claims::load_paths(paths)?;
-    let total: usize = files.iter().map(|f| f.claim.len()).sum();
-    let mut outcomes = Vec::with_capacity(total);
-    for f in &files {
-        let text = text_name(f);
-        for c in &f.claim {
-            let checked = kinds::check_claim(c, false).map_err(|e| in_claim(f, &c.id, e))?;
-            outcomes.push(ClaimOutcome {
-                id: c.id.clone(),
-                source: c.source.clone(),
-                statement: c.statement.clone(),
-                verdict: checked.verdict,
-                range: checked.range,
-                certificate: checked.certificate,
-                expect: c.expected()?,
-                file: f.path.display().to_string(),
-                text: text.clone(),
-                corrects: c.corrects.clone(),
-                note: c.note.clone(),
-            });
-            progress(outcomes.len(), total, &c.id);
+    let jobs: Vec<(&claims::ClaimFile, &claims::Claim)> =
+        files.iter().flat_map(|f| f.claim.iter().map(move |c| (f, c))).collect();
+    let total = jobs.len();
+    let (done_tx, done_rx) = std::sync::mpsc::channel::<usize>();
+    let jobs = &jobs;
+    let results: Vec<Result<ClaimOutcome>> = std::thread::scope(|scope| {
+        let worker = scope.spawn(move || {
+            jobs.par_iter()
+                .enumerate()
+                .map_with(done_tx, |done_tx, (index, &(f, c))| {
+                    let outcome = check_one(f, c);
+                    // The receiver lives until every claim is done; a send cannot fail.
+                    let _ = done_tx.send(index);
+                    outcome
+                })
+                .collect()
+        });
+        // Completions arrive in any order; count them here so `done` rises by one each time.
+        for (done, index) in done_rx.iter().enumerate() {
+            progress(done + 1, total, &jobs[index].1.id);
         }
-    }
+        worker.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic))
+    });
+    let outcomes = results.into_iter().collect::<Result<Vec<_>>>()?;
     Ok(Report { outcomes })
+}
+
+fn check_one(f: &claims::ClaimFile, c: &claims::Claim) -> Result<ClaimOutcome> {
+    let checked = kinds::check_claim(c, false).map_err(|e| in_claim(f, &c.id, e))?;
+    Ok(ClaimOutcome {
+        id: c.id.clone(),
+        source: c.source.clone(),
+        statement: c.statement.clone(),
+        verdict: checked.verdict,
+        range: checked.range,
+        certificate: checked.certificate,
+        expect: c.expected()?,
+        file: f.path.display().to_string(),
+        text: text_name(f),
+        corrects: c.corrects.clone(),
+        note: c.note.clone(),
+    })
 }
 
 fn text_name(f: &claims::ClaimFile) -> String {
