@@ -4,7 +4,7 @@
 use casteljau::verify::claims::parse_file;
 use casteljau::verify::kinds::check_claim;
 use casteljau::verify::theorems::elevation_bound;
-use casteljau::verify::{explain, prove_paths, Verdict};
+use casteljau::verify::{explain, prove_paths, ExplainStyle, Verdict};
 use casteljau::{BezierCurve, BigRational, Point, Scalar};
 use proptest::prelude::*;
 use std::path::{Path, PathBuf};
@@ -145,12 +145,12 @@ fn report_and_explain() {
     let json = report.to_json();
     assert_eq!(json["summary"]["texts"][0]["text"], "000_ef6a3958c7d702f5.txt");
     assert!(json["claims"][0]["certificate"].is_string());
-    let ex = explain(&[PathBuf::from("proofs")], "000-ex4-curve").unwrap();
+    let ex = explain(&[PathBuf::from("proofs")], "000-ex4-curve", ExplainStyle::Verbose).unwrap();
     assert!(
         ex.contains("de Casteljau scheme (9)") && ex.contains("both sides ="),
         "{ex}"
     );
-    assert!(explain(&[PathBuf::from("proofs")], "no-such-id").is_err());
+    assert!(explain(&[PathBuf::from("proofs")], "no-such-id", ExplainStyle::Short).is_err());
     let one = BigRational::from_i64(1);
     assert_eq!(Scalar::to_f64(&one), 1.0);
 }
