@@ -490,8 +490,9 @@ pub(super) fn explain_text(f: &ClaimFile, c: &Claim, checked: &Checked, style: E
             .unwrap_or(0);
         let _ = writeln!(
             s,
-            "\nthe full log ({lines} lines, {} cases; {shown} evaluations in the worked case): --explain {} --verbose",
+            "\nthe full log ({lines} lines, {} case{}; {shown} evaluations in the worked case): --explain {} --verbose",
             all.len(),
+            if all.len() == 1 { "" } else { "s" },
             c.id
         );
     }
@@ -511,6 +512,11 @@ fn latex_escape(t: &str) -> String {
                 }
             }
             '~' => o.push_str("\\textasciitilde{}"),
+            'Σ' => o.push_str("$\\Sigma$"),
+            '≤' => o.push_str("$\\le$"),
+            '·' => o.push_str("$\\cdot$"),
+            '⇒' => o.push_str("$\\Rightarrow$"),
+            '×' => o.push_str("$\\times$"),
             _ => o.push(ch),
         }
     }
@@ -609,5 +615,32 @@ mod tests {
         assert_eq!(json["claims"][1]["range"], "n = 0..=10");
         assert!(json["claims"][0].get("range").is_none());
         assert_eq!(json["summary"]["proved_in_range"], 2);
+    }
+
+    #[test]
+    fn the_worked_case_is_the_last_of_degree_3_with_fractions_first() {
+        let steps: Vec<String> = [
+            "[n = 2] 'a' = 'b': …",
+            "    n = 2, t = 1/2: both sides = 1/4",
+            "[n = 3] 'a' = 'b': …",
+            "    degree in t: … so 4 points suffice",
+            "    n = 3, t = 0: both sides = 0",
+            "[n = 3] 'b' = 'c': …",
+            "    n = 3, t = 0: both sides = 0",
+            "    n = 3, t = 1/3, b[1] = 1, other b[j] = 0: both sides = 4/9",
+            "[n = 13] 'b' = 'c': …",
+        ]
+        .map(String::from)
+        .to_vec();
+        let all = cases(&steps);
+        assert_eq!(all.len(), 4);
+        let case = worked_case(&all).unwrap();
+        assert_eq!(case.header, "[n = 3] 'b' = 'c': …");
+        let evals = sample_evaluations(case, 4);
+        assert_eq!(evals, ["n = 3, t = 1/3, b[1] = 1, other b[j] = 0: both sides = 4/9"]);
+        assert_eq!(value_in(evals[0], "t"), Some(BigRational::new(1.into(), 3.into())));
+        assert_eq!(value_in(evals[0], "n"), Some(BigRational::from_integer(3.into())));
+        assert_eq!(value_in(evals[0], "u"), None);
+        assert_eq!(latex_escape("b_0^n ≤ Σ {x}"), "b\\_0\\^{}n $\\le$ $\\Sigma$ \\{x\\}");
     }
 }
