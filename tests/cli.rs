@@ -304,3 +304,34 @@ fn scheme_as_latex() {
     assert!(fails(&["--format", "latex", "eval", "0,0; 1,1", "--t", "1/2"]).contains("--format latex"));
     assert!(fails(&["--format", "latex", "prove"]).contains("--format latex"));
 }
+
+/// The README's `--explain` and LaTeX examples are what the program prints, byte for byte.
+#[test]
+fn readme_explain_and_latex_examples_are_exact() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let mut checked = 0;
+    for block in readme.split("```console\n").skip(1) {
+        let block = block.split("```").next().unwrap();
+        let (cmd, expected) = block.split_once('\n').unwrap();
+        let Some(cmd) = cmd.strip_prefix("$ casteljau ") else {
+            continue;
+        };
+        if !(cmd.starts_with("prove --explain") || cmd.starts_with("--format latex")) {
+            continue;
+        }
+        // split on spaces outside double quotes
+        let (mut args, mut cur, mut quoted) = (Vec::new(), String::new(), false);
+        for ch in cmd.chars() {
+            match ch {
+                '"' => quoted = !quoted,
+                ' ' if !quoted => args.push(std::mem::take(&mut cur)),
+                _ => cur.push(ch),
+            }
+        }
+        args.push(cur);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        assert_eq!(ok(&args), expected, "README example `casteljau {cmd}`");
+        checked += 1;
+    }
+    assert_eq!(checked, 2, "the README shows one --explain and one LaTeX example");
+}
