@@ -9,7 +9,7 @@ use casteljau::fit::CubicFitData;
 use casteljau::float::nearest_f64;
 use casteljau::input::{parse_count, parse_net, parse_number, parse_numbers, parse_point, parse_points};
 use casteljau::oracle::{self, check_weight_count, Answer, FloatMethod, Op};
-use casteljau::verify::{explain, prove_paths};
+use casteljau::verify::{explain, prove_paths, ExplainStyle};
 use casteljau::{BezierCurve, BezierSurface, BigRational, Error, Point, RationalBezierCurve};
 use clap::{Parser, Subcommand, ValueEnum};
 use serde_json::{json, Value};
@@ -40,6 +40,8 @@ enum Format {
     Text,
     /// One JSON object, the same fields as the oracle's answer.
     Json,
+    /// A LaTeX fragment (`eval --scheme` and `prove --explain` only).
+    Latex,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -59,9 +61,12 @@ enum Command {
         /// Claim files or directories.
         #[arg(default_value = "proofs")]
         paths: Vec<PathBuf>,
-        /// Print the step-by-step proof of one claim instead.
+        /// Print the proof of one claim instead: the argument and one worked case.
         #[arg(long, value_name = "ID")]
         explain: Option<String>,
+        /// With --explain: also the full log of every checked case.
+        #[arg(long, requires = "explain")]
+        verbose: bool,
         /// Also write a static HTML report (index, one page per text, figures) into DIR.
         #[arg(long, value_name = "DIR", conflicts_with = "explain")]
         html: Option<PathBuf>,
@@ -246,8 +251,9 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
         Command::Prove {
             paths,
             explain: id,
+            verbose,
             html,
-        } => prove(&paths, id.as_deref(), html.as_deref(), format),
+        } => prove(&paths, id.as_deref(), verbose, html.as_deref(), format),
         Command::Figure {
             what,
             input,
@@ -381,6 +387,10 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
                     output(&format!("{scheme}b({}) = {}\n", t, answer.to_text()))?;
                     Ok(ExitCode::SUCCESS)
                 }
+                Format::Latex => {
+                    output(&scheme.to_latex())?;
+                    Ok(ExitCode::SUCCESS)
+                }
                 Format::Json => {
                     let columns: Vec<Value> = scheme
                         .columns
@@ -446,9 +456,12 @@ fn number_arg(flag: &str, text: &str) -> Result<BigRational, String> {
     parse_number(text).map_err(|e| format!("{flag}: {e}"))
 }
 
+const LATEX_ONLY: &str = "--format latex is for `eval --scheme` and `prove --explain` only";
+
 /// Prints an answer as text, or as the oracle's JSON object (plus an `extra` field).
 fn emit(answer: &Answer, format: Format, extra: Option<(&str, Value)>) -> Result<ExitCode, String> {
     match format {
+        Format::Latex => return Err(LATEX_ONLY.into()),
         Format::Text => output(&format!("{}\n", answer.to_text()))?,
         Format::Json => {
             let mut m = answer.to_json();
@@ -473,7 +486,13 @@ fn output(text: &str) -> Result<(), String> {
     }
 }
 
-fn prove(paths: &[PathBuf], id: Option<&str>, html: Option<&Path>, format: Format) -> Result<ExitCode, String> {
+fn prove(
+    paths: &[PathBuf],
+    id: Option<&str>,
+    verbose: bool,
+    html: Option<&Path>,
+    format: Format,
+) -> Result<ExitCode, String> {
     if let Some(missing) = paths.iter().find(|p| !p.exists()) {
         return Err(format!(
             "no such file or directory: {} (give claim files or directories)",
@@ -481,12 +500,20 @@ fn prove(paths: &[PathBuf], id: Option<&str>, html: Option<&Path>, format: Forma
         ));
     }
     if let Some(id) = id {
-        let text = explain(paths, id).map_err(|e| e.to_string())?;
+        let style = match (format, verbose) {
+            (Format::Latex, _) => ExplainStyle::Latex,
+            (_, true) => ExplainStyle::Verbose,
+            (_, false) => ExplainStyle::Short,
+        };
+        let text = explain(paths, id, style).map_err(|e| e.to_string())?;
         match format {
-            Format::Text => output(&format!("{}\n", text.trim_end()))?,
+            Format::Text | Format::Latex => output(&format!("{}\n", text.trim_end()))?,
             Format::Json => output(&format!("{}\n", json!({"id": id, "explanation": text})))?,
         }
         return Ok(ExitCode::SUCCESS);
+    }
+    if matches!(format, Format::Latex) {
+        return Err(LATEX_ONLY.into());
     }
     let show_progress = io::stderr().is_terminal();
     let mut progress = |done: usize, total: usize, claim: &str| {
@@ -513,6 +540,7 @@ fn prove(paths: &[PathBuf], id: Option<&str>, html: Option<&Path>, format: Forma
     match format {
         Format::Text => output(&report.to_text())?,
         Format::Json => output(&format!("{}\n", report.to_json()))?,
+        Format::Latex => return Err(LATEX_ONLY.into()),
     }
     Ok(if report.mismatches() > 0 {
         ExitCode::from(1)

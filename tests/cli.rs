@@ -223,6 +223,21 @@ fn prove_reports_and_sets_the_status() {
     assert!(text.contains("t = 1/3: both sides = (8/9, -8/27)"), "{text}");
     let err = fails(&["prove", dir.to_str().unwrap(), "--explain", "no-such-claim"]);
     assert!(err.contains("no-such-claim"), "{err}");
+    // by default one screen (the argument, one worked case); --verbose adds the full log
+    let short = ok(&["prove", "--explain", "000-lemma-1.3-proof"]);
+    assert!(short.lines().count() <= 40, "{short}");
+    assert!(
+        short.contains("why this suffices:") && !short.contains("\nsteps:"),
+        "{short}"
+    );
+    let verbose = ok(&["prove", "--explain", "000-lemma-1.3-proof", "--verbose"]);
+    assert!(verbose.contains("\nsteps:") && verbose.lines().count() > 1000);
+    let latex = ok(&["--format", "latex", "prove", "--explain", "000-lemma-1.3-proof"]);
+    assert!(
+        latex.contains("\\begin{array}{llll}") && latex.contains("\\paragraph{Claim"),
+        "{latex}"
+    );
+    assert!(fails(&["prove", "--verbose"]).contains("--explain"));
     std::fs::remove_dir_all(&dir).unwrap();
 
     // No claim files at all is a usage error, not an empty success.
@@ -269,4 +284,54 @@ fn prove_refuses_endless_empty_and_unbounded_claim_files() {
     assert_eq!(json["claims"][0]["range"], "n = 0..=10");
     assert_eq!(json["summary"]["proved_in_range"], 1);
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn scheme_as_latex() {
+    let out = ok(&["--format", "latex", "eval", "--scheme", "0,0; 1,1; 2,0", "--t", "1/2"]);
+    assert_eq!(
+        out,
+        "\\[ t = \\frac{1}{2} \\]\n\\[\\begin{array}{lll}\n\
+         b_{0} = \\left(0, 0\\right) \\\\\n\
+         b_{1} = \\left(1, 1\\right) & b_{0}^{1} = \\left(\\frac{1}{2}, \\frac{1}{2}\\right) \\\\\n\
+         b_{2} = \\left(2, 0\\right) & b_{1}^{1} = \\left(\\frac{3}{2}, \\frac{1}{2}\\right) & \
+         b_{0}^{2} = \\left(1, \\frac{1}{2}\\right) \\\\\n\\end{array}\\]\n"
+    );
+    // negative fractions keep their sign outside \frac
+    let neg = ok(&["--format", "latex", "eval", "--scheme", "0; -1", "--t", "1/3"]);
+    assert!(neg.contains("b_{0}^{1} = -\\frac{1}{3}"), "{neg}");
+    // LaTeX is only for the scheme and --explain
+    assert!(fails(&["--format", "latex", "eval", "0,0; 1,1", "--t", "1/2"]).contains("--format latex"));
+    assert!(fails(&["--format", "latex", "prove"]).contains("--format latex"));
+}
+
+/// The README's `--explain` and LaTeX examples are what the program prints, byte for byte.
+#[test]
+fn readme_explain_and_latex_examples_are_exact() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let mut checked = 0;
+    for block in readme.split("```console\n").skip(1) {
+        let block = block.split("```").next().unwrap();
+        let (cmd, expected) = block.split_once('\n').unwrap();
+        let Some(cmd) = cmd.strip_prefix("$ casteljau ") else {
+            continue;
+        };
+        if !(cmd.starts_with("prove --explain") || cmd.starts_with("--format latex")) {
+            continue;
+        }
+        // split on spaces outside double quotes
+        let (mut args, mut cur, mut quoted) = (Vec::new(), String::new(), false);
+        for ch in cmd.chars() {
+            match ch {
+                '"' => quoted = !quoted,
+                ' ' if !quoted => args.push(std::mem::take(&mut cur)),
+                _ => cur.push(ch),
+            }
+        }
+        args.push(cur);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        assert_eq!(ok(&args), expected, "README example `casteljau {cmd}`");
+        checked += 1;
+    }
+    assert_eq!(checked, 2, "the README shows one --explain and one LaTeX example");
 }

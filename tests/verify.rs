@@ -4,7 +4,7 @@
 use casteljau::verify::claims::parse_file;
 use casteljau::verify::kinds::check_claim;
 use casteljau::verify::theorems::elevation_bound;
-use casteljau::verify::{explain, prove_paths, Verdict};
+use casteljau::verify::{explain, prove_paths, ExplainStyle, Verdict};
 use casteljau::{BezierCurve, BigRational, Point, Scalar};
 use proptest::prelude::*;
 use std::path::{Path, PathBuf};
@@ -145,12 +145,12 @@ fn report_and_explain() {
     let json = report.to_json();
     assert_eq!(json["summary"]["texts"][0]["text"], "000_ef6a3958c7d702f5.txt");
     assert!(json["claims"][0]["certificate"].is_string());
-    let ex = explain(&[PathBuf::from("proofs")], "000-ex4-curve").unwrap();
+    let ex = explain(&[PathBuf::from("proofs")], "000-ex4-curve", ExplainStyle::Verbose).unwrap();
     assert!(
         ex.contains("de Casteljau scheme (9)") && ex.contains("both sides ="),
         "{ex}"
     );
-    assert!(explain(&[PathBuf::from("proofs")], "no-such-id").is_err());
+    assert!(explain(&[PathBuf::from("proofs")], "no-such-id", ExplainStyle::Short).is_err());
     let one = BigRational::from_i64(1);
     assert_eq!(Scalar::to_f64(&one), 1.0);
 }
@@ -177,4 +177,94 @@ fn fit_claims_check_the_printed_numbers_exactly() {
     .unwrap_err()
     .to_string();
     assert!(err.contains("singular") || err.contains("parallel"), "{err}");
+}
+
+/// `--explain` by default: the argument and one worked case on one screen, the worked case's
+/// numbers being the library's (the scheme (9) from `BezierCurve::scheme`, the sum from it).
+#[test]
+fn explain_fits_one_screen_with_a_case_worked_exactly() {
+    let proofs = [PathBuf::from("proofs")];
+    let id = "000-lemma-1.3-proof";
+    let short = explain(&proofs, id, ExplainStyle::Short).unwrap();
+    let lines: Vec<&str> = short.lines().collect();
+    assert!(lines.len() <= 40, "{} lines:\n{short}", lines.len());
+    assert!(
+        short.contains("why this suffices:") && short.contains("d+1 distinct points"),
+        "{short}"
+    );
+    assert!(!short.contains("\nsteps:"), "{short}");
+    assert!(short.contains(&format!("--explain {id} --verbose")), "{short}");
+
+    // the first shown evaluation of the worked case, n = 3: `… t0 = a, t = s, b[k] = 1 …: both sides = v`
+    let eval = lines
+        .iter()
+        .find(|l| l.trim_start().starts_with("n = 3, t0 = "))
+        .expect(&short);
+    let field = |name: &str| -> BigRational {
+        let head = eval.split(':').next().unwrap();
+        let part = head
+            .split(", ")
+            .find(|p| p.trim().starts_with(&format!("{name} = ")))
+            .unwrap();
+        part.split(" = ").nth(1).unwrap().trim().parse().unwrap()
+    };
+    let (t0, t) = (field("t0"), field("t"));
+    let unit: usize = eval
+        .split("b[")
+        .nth(1)
+        .unwrap()
+        .split(']')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    let value: BigRational = eval.rsplit("both sides = ").next().unwrap().trim().parse().unwrap();
+
+    // the printed scheme is the library's scheme of that unit polygon at t0, byte for byte
+    let polygon: Vec<Point<BigRational>> = (0..=3)
+        .map(|j| Point::from_ints(&[i64::from(j == unit)]).unwrap())
+        .collect();
+    let scheme = BezierCurve::new(polygon).unwrap().scheme(&t0);
+    assert!(short.contains(&scheme.to_string()), "{short}\nexpected:\n{scheme}");
+
+    // the written-out sum Σ_r b_0^r(t0) B_r^3(t) is the library's and equals both sides
+    let sum = (0..=3).fold(BigRational::from_i64(0), |acc, r| {
+        let edge = scheme.get(r, 0).unwrap().coords()[0].clone();
+        acc + edge * casteljau::bernstein::bernstein(r, 3, &t).unwrap()
+    });
+    assert_eq!(sum, value);
+    let sum_line = lines
+        .iter()
+        .find(|l| l.trim_start().starts_with("Σ_r b_0^r(t0)"))
+        .expect(&short);
+    assert!(
+        sum_line.contains(&format!("= {value} (the first evaluation)")),
+        "{sum_line}"
+    );
+
+    // --verbose keeps the whole log; LaTeX has the same scheme as an array
+    let verbose = explain(&proofs, id, ExplainStyle::Verbose).unwrap();
+    assert!(verbose.starts_with(short.split("\nthe full log").next().unwrap()));
+    assert!(verbose.contains("\nsteps:") && verbose.lines().count() > 1000);
+    let latex = explain(&proofs, id, ExplainStyle::Latex).unwrap();
+    assert!(
+        latex.contains(&scheme.to_latex()) && latex.contains("\\begin{array}{llll}"),
+        "{latex}"
+    );
+    assert!(!latex.contains('Σ') && !latex.contains('≤'), "{latex}");
+
+    // other long logs fit on a screen too
+    for id in [
+        "003-tensor",
+        "000-4-proof-ratio",
+        "000-derivative-proof",
+        "000-ex4-curve",
+    ] {
+        let text = explain(&proofs, id, ExplainStyle::Short).unwrap();
+        assert!(
+            text.lines().count() <= 40,
+            "{id}: {} lines\n{text}",
+            text.lines().count()
+        );
+    }
 }

@@ -47,7 +47,7 @@ use crate::error::{Error, Result};
 use serde::Serialize;
 use std::path::PathBuf;
 
-pub use report::TextSummary;
+pub use report::{ExplainStyle, TextSummary};
 
 /// How strong a verdict is, and so what it covers (its scope).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -215,14 +215,15 @@ fn in_claim(f: &claims::ClaimFile, id: &str, e: Error) -> Error {
     Error::Domain(format!("{}: claim {id}: {e}", f.path.display()))
 }
 
-/// The step-by-step proof of claim `id` (searched in `paths`), in exact fractions: each checked
-/// parameter with both sides' values, the de Casteljau scheme (9) of the claim's curves.
-pub fn explain(paths: &[PathBuf], id: &str) -> Result<String> {
+/// The proof of claim `id` (searched in `paths`), in exact fractions: the argument (what is
+/// checked, why it suffices), one worked case with the de Casteljau scheme (9) that goes with it,
+/// and with [`ExplainStyle::Verbose`] every checked case.
+pub fn explain(paths: &[PathBuf], id: &str, style: ExplainStyle) -> Result<String> {
     let files = claims::load_paths(paths)?;
     for f in &files {
         if let Some(c) = f.claim.iter().find(|c| c.id == id) {
             let checked = kinds::check_claim(c, true).map_err(|e| in_claim(f, id, e))?;
-            return Ok(report::explain_text(f, c, &checked));
+            return Ok(report::explain_text(f, c, &checked, style));
         }
     }
     Err(Error::Domain(format!(

@@ -3,7 +3,11 @@
 use super::claims::{Claim, ClaimFile};
 use super::engine::{Checked, CurveObj};
 use super::{ClaimOutcome, Report, Verdict};
+use crate::bernstein::bernstein_all;
+use crate::curve::{BezierCurve, DeCasteljauScheme};
+use crate::point::Point;
 use num_rational::BigRational;
+use num_traits::Zero;
 use serde::Serialize;
 use std::fmt::Write as _;
 
@@ -208,8 +212,106 @@ pub(super) fn to_json(r: &Report) -> serde_json::Value {
     })
 }
 
-pub(super) fn explain_text(f: &ClaimFile, c: &Claim, checked: &Checked) -> String {
-    let mut s = String::new();
+/// How `explain` prints a proof.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ExplainStyle {
+    /// The argument in a few lines and one worked case in exact fractions (one screen).
+    Short,
+    /// The short form, then the full log of every checked case.
+    Verbose,
+    /// The short form as a LaTeX fragment (the scheme as an `array`).
+    Latex,
+}
+
+/// One case of the log: its header line and the lines under it.
+struct Case<'a> {
+    header: &'a str,
+    lines: Vec<&'a str>,
+}
+
+fn cases(steps: &[String]) -> Vec<Case<'_>> {
+    let mut out: Vec<Case<'_>> = Vec::new();
+    for line in steps {
+        match out.last_mut() {
+            Some(case) if line.starts_with(' ') => case.lines.push(line.trim()),
+            _ => out.push(Case {
+                header: line.trim(),
+                lines: Vec::new(),
+            }),
+        }
+    }
+    out
+}
+
+/// The case worked out by default: the last one of degree 3 (the chain's final equality, for a
+/// chain), else the first.
+fn worked_case<'a>(all: &'a [Case<'a>]) -> Option<&'a Case<'a>> {
+    all.iter()
+        .rev()
+        .find(|c| c.header.starts_with('[') && c.header.split(']').next().is_some_and(|h| h.ends_with("n = 3")))
+        .or_else(|| all.first())
+}
+
+/// Up to `k` evaluations of a case, preferring those whose value is a proper fraction.
+fn sample_evaluations<'a>(case: &Case<'a>, k: usize) -> Vec<&'a str> {
+    let evals: Vec<&str> = case
+        .lines
+        .iter()
+        .copied()
+        .filter(|l| l.contains("both sides"))
+        .collect();
+    let mut pick: Vec<&str> = evals
+        .iter()
+        .copied()
+        .filter(|l| l.rsplit('=').next().is_some_and(|v| v.contains('/')))
+        .take(k)
+        .collect();
+    if pick.is_empty() {
+        pick = evals.into_iter().take(k).collect();
+    }
+    pick
+}
+
+/// The argument: what was checked and why it suffices.
+fn argument(c: &Claim, checked: &Checked) -> Vec<String> {
+    let by_points = checked.steps.iter().any(|l| l.contains("points suffice"));
+    let mut a = Vec::new();
+    if by_points {
+        let vars = c
+            .vars
+            .as_ref()
+            .map(|v| v.join(", "))
+            .unwrap_or_else(|| "the parameters".into());
+        a.push(format!(
+            "Each equality, cleared of denominators, is a polynomial identity in {vars}; its degree d in each"
+        ));
+        a.push(
+            "variable is bounded from the expressions. A nonzero polynomial of degree ≤ d in one variable has at"
+                .into(),
+        );
+        a.push(
+            "most d roots, so the identity holds for all values iff it holds at d+1 distinct points per variable"
+                .into(),
+        );
+        if checked.steps.iter().any(|l| l.contains("basis polygons")) {
+            a.push(
+                "(a grid, by induction on the variables). Both sides are affine in the control points, so checking"
+                    .into(),
+            );
+            a.push("the zero polygon and each unit polygon covers every control polygon. All checks are exact.".into());
+        } else {
+            a.push("(a grid, by induction on the variables). All checks are in exact rational arithmetic.".into());
+        }
+    } else {
+        a.push(format!(
+            "A `{}` claim, decided in exact arithmetic; the certificate above says what was established.",
+            c.kind
+        ));
+    }
+    a
+}
+
+fn header(s: &mut String, f: &ClaimFile, c: &Claim, checked: &Checked) {
     let _ = writeln!(s, "claim {} ({})", c.id, f.path.display());
     let _ = writeln!(s, "source:    {}", c.source);
     let _ = writeln!(s, "statement: {}", c.statement);
@@ -243,7 +345,7 @@ pub(super) fn explain_text(f: &ClaimFile, c: &Claim, checked: &Checked) -> Strin
     );
     let _ = writeln!(
         s,
-        "{}: {}\n",
+        "{}: {}",
         if checked.verdict == Verdict::Fails {
             "counterexample"
         } else {
@@ -251,26 +353,215 @@ pub(super) fn explain_text(f: &ClaimFile, c: &Claim, checked: &Checked) -> Strin
         },
         checked.certificate
     );
-    if !checked.steps.is_empty() {
-        let _ = writeln!(s, "steps:");
-        for line in &checked.steps {
-            let _ = writeln!(s, "  {line}");
+}
+
+/// The value of `name` in an evaluation line such as `n = 3, t0 = 1/2, t = 1/3, b[1] = 1, …`.
+fn value_in(line: &str, name: &str) -> Option<BigRational> {
+    let head = line.split(':').next()?;
+    head.split(", ").find_map(|part| {
+        let (k, v) = part.split_once(" = ")?;
+        if k.trim() == name {
+            v.trim().parse().ok()
+        } else {
+            None
+        }
+    })
+}
+
+/// The scheme (9) that goes with the worked case: for a claim about a symbolic polygon whose
+/// expressions use its scheme (`b(i, r, t0)`), the scheme of the case's unit polygon at the case's
+/// first parameter; else the first polynomial curve of the claim at its first nonzero checked
+/// parameter.
+fn worked_scheme(c: &Claim, checked: &Checked, eval: Option<&str>) -> Option<DeCasteljauScheme<BigRational>> {
+    if let (Some(poly), Some(line), Some(var)) = (&c.polygon, eval, c.vars.as_ref().and_then(|v| v.first())) {
+        let uses_scheme = c
+            .chain
+            .iter()
+            .flatten()
+            .chain(c.lhs.iter())
+            .chain(c.rhs.iter())
+            .any(|e| e.contains(&format!("{}(0, ", poly.name)));
+        let n: usize = value_in(line, &poly.degree).and_then(|v| v.to_integer().try_into().ok())?;
+        let t = value_in(line, var)?;
+        let unit = line.split(", ").find_map(|p| {
+            let rest = p.strip_prefix(&format!("{}[", poly.name))?;
+            let (k, v) = rest.split_once("] = ")?;
+            (v.trim() == "1").then(|| k.parse::<usize>().ok()).flatten()
+        })?;
+        if uses_scheme && n <= 6 {
+            let points = (0..=n)
+                .map(|j| Point::from_ints(&[i64::from(j == unit)]))
+                .collect::<crate::error::Result<Vec<_>>>()
+                .ok()?;
+            return Some(BezierCurve::new(points).ok()?.scheme(&t));
+        }
+        return None;
+    }
+    let t = checked
+        .params
+        .iter()
+        .find(|t| !t.is_zero())
+        .cloned()
+        .unwrap_or_else(|| BigRational::new(1.into(), 2.into()));
+    c.curves
+        .as_ref()?
+        .values()
+        .find_map(|spec| match CurveObj::<BigRational>::from_spec(spec) {
+            Ok(CurveObj::Polynomial(curve)) => Some(curve.scheme(&t)),
+            _ => None,
+        })
+}
+
+/// For a claim whose expressions contain `Σ_r b_0^r(t0) B_r^n(t)` (`b(0, r, t0)*B(r, n, t)`):
+/// that sum written out at the worked evaluation, from the scheme's upper edge, and its value.
+fn worked_sum(c: &Claim, scheme: &DeCasteljauScheme<BigRational>, eval: &str) -> Option<String> {
+    let poly = c.polygon.as_ref()?;
+    let vars = c.vars.as_ref()?;
+    let (v0, v1) = (vars.first()?, vars.get(1)?);
+    let pattern = format!("{}(0, r, {v0})*B(r, {}, {v1})", poly.name, poly.degree);
+    if !c
+        .chain
+        .iter()
+        .flatten()
+        .chain(c.lhs.iter())
+        .chain(c.rhs.iter())
+        .any(|e| e.contains(&pattern))
+    {
+        return None;
+    }
+    let t = value_in(eval, v1)?;
+    let n = scheme.degree();
+    let bern = bernstein_all(n, &t);
+    let mut terms = Vec::new();
+    let mut total = BigRational::zero();
+    for (r, b) in bern.iter().enumerate() {
+        let edge = scheme.get(r, 0)?.coords().first()?.clone();
+        terms.push(format!("{edge}·{b}"));
+        total += &edge * b;
+    }
+    Some(format!(
+        "Σ_r {}_0^r({v0}) B_r^{n}({v1}) at {v0} = {}, {v1} = {t}: {} = {total} (the first evaluation)",
+        poly.name,
+        scheme.t,
+        terms.join(" + ")
+    ))
+}
+
+/// The proof of one claim: the argument, one worked case, and (`Verbose`) the whole log.
+pub(super) fn explain_text(f: &ClaimFile, c: &Claim, checked: &Checked, style: ExplainStyle) -> String {
+    if style == ExplainStyle::Latex {
+        return explain_latex(f, c, checked);
+    }
+    let mut s = String::new();
+    header(&mut s, f, c, checked);
+    let _ = writeln!(s, "\nwhy this suffices:");
+    for line in argument(c, checked) {
+        let _ = writeln!(s, "  {line}");
+    }
+    let all = cases(&checked.steps);
+    let case = worked_case(&all);
+    let evals = case.map(|c| sample_evaluations(c, 4)).unwrap_or_default();
+    if let Some(case) = case {
+        let _ = writeln!(s, "\nworked case: {}", case.header);
+        for l in case.lines.iter().filter(|l| !l.contains("both sides")).take(4) {
+            let _ = writeln!(s, "  {l}");
+        }
+        for l in &evals {
+            let _ = writeln!(s, "  {l}");
         }
     }
-    // The de Casteljau scheme (9) of every polynomial curve of the claim, at the first
-    // parameters the proof used.
-    if let Some(curves) = &c.curves {
-        let ts: Vec<BigRational> = if checked.params.is_empty() {
-            vec![BigRational::new(1.into(), 2.into())]
-        } else {
-            checked.params.iter().take(3).cloned().collect()
-        };
-        for (name, spec) in curves {
-            if let Ok(CurveObj::Polynomial(curve)) = CurveObj::<BigRational>::from_spec(spec) {
-                for t in &ts {
-                    let _ = writeln!(s, "\ncurve {name}: {}", curve.scheme(t));
+    if let Some(scheme) = worked_scheme(c, checked, evals.first().copied()) {
+        let _ = write!(s, "\n{scheme}");
+        if let Some(sum) = evals.first().and_then(|e| worked_sum(c, &scheme, e)) {
+            let _ = writeln!(s, "  {sum}");
+        }
+    }
+    let lines = checked.steps.len();
+    if style == ExplainStyle::Verbose {
+        if lines > 0 {
+            let _ = writeln!(s, "\nsteps:");
+            for line in &checked.steps {
+                let _ = writeln!(s, "  {line}");
+            }
+        }
+    } else if lines > 0 {
+        let shown = case
+            .map(|c| c.lines.iter().filter(|l| l.contains("both sides")).count())
+            .unwrap_or(0);
+        let _ = writeln!(
+            s,
+            "\nthe full log ({lines} lines, {} case{}; {shown} evaluations in the worked case): --explain {} --verbose",
+            all.len(),
+            if all.len() == 1 { "" } else { "s" },
+            c.id
+        );
+    }
+    s
+}
+
+fn latex_escape(t: &str) -> String {
+    let mut o = String::new();
+    for ch in t.chars() {
+        match ch {
+            '\\' => o.push_str("\\textbackslash{}"),
+            '{' | '}' | '_' | '^' | '#' | '&' | '%' | '$' => {
+                o.push('\\');
+                o.push(ch);
+                if ch == '^' {
+                    o.push_str("{}");
                 }
             }
+            '~' => o.push_str("\\textasciitilde{}"),
+            'Σ' => o.push_str("$\\Sigma$"),
+            '≤' => o.push_str("$\\le$"),
+            '·' => o.push_str("$\\cdot$"),
+            '⇒' => o.push_str("$\\Rightarrow$"),
+            '×' => o.push_str("$\\times$"),
+            _ => o.push(ch),
+        }
+    }
+    o
+}
+
+/// The short proof as a LaTeX fragment: text in `\texttt`/verbatim-safe escapes, the scheme as
+/// an `array` with exact fractions.
+fn explain_latex(f: &ClaimFile, c: &Claim, checked: &Checked) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "\\paragraph{{Claim {}}} ({})\\\\",
+        latex_escape(&c.id),
+        latex_escape(&f.path.display().to_string())
+    );
+    let _ = writeln!(s, "Statement: {}\\\\", latex_escape(&c.statement));
+    let _ = writeln!(
+        s,
+        "Verdict: \\textbf{{{}}}\\\\",
+        latex_escape(&verdict_text(checked.verdict, checked.range.as_deref()))
+    );
+    let _ = writeln!(s, "Certificate: {}\n", latex_escape(&checked.certificate));
+    let _ = writeln!(
+        s,
+        "\\noindent Why this suffices: {}\n",
+        latex_escape(&argument(c, checked).join(" "))
+    );
+    let all = cases(&checked.steps);
+    let case = worked_case(&all);
+    let evals = case.map(|c| sample_evaluations(c, 4)).unwrap_or_default();
+    if let Some(case) = case {
+        let _ = writeln!(s, "\\noindent Worked case: {}", latex_escape(case.header));
+        if !evals.is_empty() {
+            let _ = writeln!(s, "\\begin{{itemize}}");
+            for l in &evals {
+                let _ = writeln!(s, "\\item {}", latex_escape(l));
+            }
+            let _ = writeln!(s, "\\end{{itemize}}");
+        }
+    }
+    if let Some(scheme) = worked_scheme(c, checked, evals.first().copied()) {
+        s.push_str(&scheme.to_latex());
+        if let Some(sum) = evals.first().and_then(|e| worked_sum(c, &scheme, e)) {
+            let _ = writeln!(s, "{}", latex_escape(&sum));
         }
     }
     s
@@ -324,5 +615,32 @@ mod tests {
         assert_eq!(json["claims"][1]["range"], "n = 0..=10");
         assert!(json["claims"][0].get("range").is_none());
         assert_eq!(json["summary"]["proved_in_range"], 2);
+    }
+
+    #[test]
+    fn the_worked_case_is_the_last_of_degree_3_with_fractions_first() {
+        let steps: Vec<String> = [
+            "[n = 2] 'a' = 'b': …",
+            "    n = 2, t = 1/2: both sides = 1/4",
+            "[n = 3] 'a' = 'b': …",
+            "    degree in t: … so 4 points suffice",
+            "    n = 3, t = 0: both sides = 0",
+            "[n = 3] 'b' = 'c': …",
+            "    n = 3, t = 0: both sides = 0",
+            "    n = 3, t = 1/3, b[1] = 1, other b[j] = 0: both sides = 4/9",
+            "[n = 13] 'b' = 'c': …",
+        ]
+        .map(String::from)
+        .to_vec();
+        let all = cases(&steps);
+        assert_eq!(all.len(), 4);
+        let case = worked_case(&all).unwrap();
+        assert_eq!(case.header, "[n = 3] 'b' = 'c': …");
+        let evals = sample_evaluations(case, 4);
+        assert_eq!(evals, ["n = 3, t = 1/3, b[1] = 1, other b[j] = 0: both sides = 4/9"]);
+        assert_eq!(value_in(evals[0], "t"), Some(BigRational::new(1.into(), 3.into())));
+        assert_eq!(value_in(evals[0], "n"), Some(BigRational::from_integer(3.into())));
+        assert_eq!(value_in(evals[0], "u"), None);
+        assert_eq!(latex_escape("b_0^n ≤ Σ {x}"), "b\\_0\\^{}n $\\le$ $\\Sigma$ \\{x\\}");
     }
 }
