@@ -96,6 +96,32 @@ fn copy_points<P: Clone>(points: &[P]) -> SmallVec<[P; INLINE_POINTS]> {
     }
 }
 
+/// `1/(n+1)`, the step of the weights of (7), divided once: its multiples `i · 1/(n+1)`
+/// are the weights `i/(n+1)`, exactly for exact scalars, with one rounding more for floats.
+#[inline(always)]
+fn elevation_step<T: Scalar>(n: usize) -> Result<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    T::one().checked_div(&T::from_usize(n + 1))
+}
+
+/// Point `i` of the polygon (7) elevated from the `n + 1` `points`, given `step = 1/(n+1)`.
+#[inline(always)]
+fn elevated_point<T: Scalar, P: VectorSpace<Scalar = T>>(points: &[P], i: usize, step: &T) -> P
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    let n = points.len() - 1;
+    if i == 0 {
+        points[0].clone()
+    } else if i > n {
+        points[n].clone()
+    } else {
+        points[i].lerp_to(&points[i - 1], &(&T::from_usize(i) * step))
+    }
+}
+
 /// Checks that `points` is non-empty and of one dimension; returns that dimension.
 pub(crate) fn common_dim<P: VectorSpace>(points: &[P], what: &'static str) -> Result<usize> {
     let first = points.first().ok_or(Error::Empty(what))?;
@@ -170,29 +196,22 @@ where
         acc
     }
 
-    /// One step of degree elevation (7): the same curve with `n + 2` control points.
+    /// One step of degree elevation (7): the same curve with `n + 2` control points,
+    /// `b'_i = i/(n+1) b_{i-1} + (1 − i/(n+1)) b_i`.
     #[inline]
     pub fn elevate(&self) -> Result<Self> {
-        if let [b0, b1, b2] = &self.points[..] {
-            // Quadratic to cubic: the four points written at once, by the same steps.
-            let three = T::from_usize(3);
-            let (a1, a2) = (T::one().checked_div(&three)?, T::from_usize(2).checked_div(&three)?);
-            let points = [b0.clone(), b1.lerp_to(b0, &a1), b2.lerp_to(b1, &a2), b2.clone()];
-            return Ok(Bezier {
-                points: SmallVec::from_buf(points),
-            });
-        }
-        let n = self.degree();
-        check_degree("degree after elevation", n as u128 + 1)?;
-        let n1 = T::from_usize(n + 1);
-        let mut out = SmallVec::with_capacity(n + 2);
-        out.push(self.points[0].clone());
-        for i in 1..=n {
-            let a = T::from_usize(i).checked_div(&n1)?;
-            // (i/(n+1)) b_{i-1} + (1 - i/(n+1)) b_i
-            out.push(self.points[i].lerp_to(&self.points[i - 1], &a));
-        }
-        out.push(self.points[n].clone());
+        let points = &self.points[..];
+        let n = points.len() - 1;
+        let out = if n + 2 == INLINE_POINTS {
+            // The elevated polygon fills the inline buffer exactly: written at once, the
+            // loop unrolls with `n` a constant (and for floats 1/(n+1) folds to a constant).
+            let step = elevation_step::<T>(INLINE_POINTS - 2)?;
+            SmallVec::from_buf(std::array::from_fn(|i| elevated_point(points, i, &step)))
+        } else {
+            check_degree("degree after elevation", n as u128 + 1)?;
+            let step = elevation_step::<T>(n)?;
+            (0..n + 2).map(|i| elevated_point(points, i, &step)).collect()
+        };
         Ok(Bezier { points: out })
     }
 
