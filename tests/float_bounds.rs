@@ -4,8 +4,8 @@
 //! float_errors`; this test runs a smaller sample of the same sets.
 
 use casteljau::float::{
-    a_priori_bound, a_priori_index, compensated_de_casteljau, compensated_derivative, de_casteljau,
-    de_casteljau_running, error_at_most, gamma_exact, ulp_error, UNIT_ROUNDOFF,
+    a_priori_bound, a_priori_index, compensated_de_casteljau, compensated_derivative, compensated_surface,
+    de_casteljau, de_casteljau_running, error_at_most, gamma_exact, ulp_error, UNIT_ROUNDOFF,
 };
 use casteljau::interval::Interval;
 use casteljau::shadow::Shadow;
@@ -193,4 +193,62 @@ fn intervals_enclose_split_and_derivatives_too() {
         let x = iv.eval(&third).coords()[0];
         assert!(x.contains(&exact.eval(&BigRational::new(1.into(), 3.into())).coords()[0]));
     }
+}
+
+/// The exact `s(u, v)` and `T = Σ_i Σ_j |b_ij| B_i^m(u) B_j^n(v)` (u, v in [0, 1]).
+fn exact_surface(net: &[Vec<f64>], u: f64, v: f64) -> (BigRational, BigRational) {
+    let eval = |abs: bool| {
+        let rows: Vec<BigRational> = net
+            .iter()
+            .map(|row| {
+                let coefs = row.iter().map(|x| if abs { q(f64::abs(*x)) } else { q(*x) }).collect();
+                exact_on_curve(coefs, v)
+            })
+            .collect();
+        exact_on_curve(rows, u)
+    };
+    (eval(false), eval(true))
+}
+
+fn exact_on_curve(coefs: Vec<BigRational>, t: f64) -> BigRational {
+    BezierCurve::from_coords(coefs.into_iter().map(|x| vec![x]).collect())
+        .unwrap()
+        .eval_fraction_free(&q(t))
+        .coords()[0]
+        .clone()
+}
+
+#[test]
+fn compensated_surface_is_within_its_bound() {
+    let mut rng = Rng(23);
+    let mut within_one_ulp = 0;
+    let total = 240;
+    for i in 0..total {
+        let (m, n) = [(0, 0), (1, 3), (3, 3), (5, 2), (6, 6), (10, 4)][i % 6];
+        let (mut u, mut v) = (rng.unit(), rng.unit());
+        let net: Vec<Vec<f64>> = if i % 2 == 0 {
+            (0..=m).map(|_| random_coefficients(&mut rng, n)).collect()
+        } else {
+            // (u − 1/4)^m (v − 1/4)^n, whose coefficients 3^k / 4^d are exact floats, near its
+            // multiple roots: heavy cancellation, the second-order terms of the bound matter
+            u = 0.25 + (rng.unit() - 0.5) * 10f64.powi(-(1 + (rng.next() % 5) as i32));
+            v = 0.25 + (rng.unit() - 0.5) * 10f64.powi(-(1 + (rng.next() % 5) as i32));
+            let (a, b) = (multiple_root(m, 0.25), multiple_root(n, 0.25));
+            a.iter().map(|x| b.iter().map(|y| x * y).collect()).collect()
+        };
+        let (p, t_sum) = exact_surface(&net, u, v);
+        let (res, bound) = compensated_surface(&net, u, v);
+        assert!(error_at_most(res, &p, bound), "{net:?} at ({u}, {v})");
+        // the stated constant, exactly: u|p| + (2γ_{3n}² + 2γ_{3m}²(1 + γ_{3n}) + 2γ_{3m+3}·2γ_{3n}) T
+        let (gn, gm) = (gamma_exact(3 * n), gamma_exact(3 * m));
+        let one = BigRational::from_integer(1.into());
+        let two = BigRational::from_integer(2.into());
+        let c = &two * &gn * &gn + &two * &gm * &gm * (&one + &gn) + &two * gamma_exact(3 * m + 3) * &two * &gn;
+        let tight = q(UNIT_ROUNDOFF) * Signed::abs(&p) + c * &t_sum;
+        assert!(Signed::abs(&(q(res) - &p)) <= tight, "{net:?} at ({u}, {v})");
+        if i % 2 == 0 && ulp_error(res, &p).unwrap().ulps <= 1 {
+            within_one_ulp += 1;
+        }
+    }
+    assert_eq!(within_one_ulp, total / 2, "compensated surface more than 1 ulp off");
 }

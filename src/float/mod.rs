@@ -4,7 +4,8 @@
 //! The exact side of casteljau judges float code: [`ulp_error`] measures a float against an
 //! exact value; [`a_priori_bound`] and [`de_casteljau_running`] say how large the error of
 //! de Casteljau's algorithm may be; [`compensated_de_casteljau`] makes it about as accurate as
-//! the correctly rounded value. Every bound is checked exactly, in rationals, by the tests.
+//! the correctly rounded value, for curves, their derivatives and tensor-product surfaces
+//! ([`compensated_surface`]). Every bound is checked exactly, in rationals, by the tests.
 
 mod casteljau;
 mod dyadic;
@@ -12,9 +13,9 @@ mod eft;
 mod ulp;
 
 pub use casteljau::{
-    a_priori_bound, a_priori_index, abs_bernstein_sum, compensated_de_casteljau, compensated_derivative, de_casteljau,
-    de_casteljau_running, gamma, gamma_exact, next_down, next_up, rational_a_priori_bound, surface_a_priori_bound,
-    UNIT_ROUNDOFF,
+    a_priori_bound, a_priori_index, abs_bernstein_sum, compensated_de_casteljau, compensated_derivative,
+    compensated_surface, de_casteljau, de_casteljau_running, gamma, gamma_exact, next_down, next_up,
+    rational_a_priori_bound, surface_a_priori_bound, UNIT_ROUNDOFF,
 };
 pub use dyadic::{dyadic_ratio, eval_dyadic};
 pub use eft::{fast_two_sum, two_product, two_sum};
