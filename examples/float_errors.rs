@@ -15,19 +15,9 @@ use casteljau::{BezierCurve, BigRational, Scalar};
 use kurbo::{CubicBez, ParamCurve};
 use num_traits::Signed;
 
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
+#[path = "../tests/support/rng.rs"]
+mod rng;
+use rng::Rng;
 
 fn q(x: f64) -> BigRational {
     BigRational::from_f64(x).unwrap()
