@@ -18,7 +18,7 @@
 use crate::bernstein::{bernstein_all, bernstein_to_power, binomial_row, power_to_bernstein, reparametrize};
 use crate::error::{check_degree, Error, Result};
 use crate::hull::convex_weights;
-use crate::kernel::{de_casteljau, with_column};
+use crate::kernel::{de_casteljau, split_fixed, with_column};
 use crate::point::{common_dimension, AffineMap, Point, PointList};
 use crate::scalar::{RefOps, Scalar};
 use crate::space::{PointN, VectorSpace};
@@ -87,15 +87,6 @@ pub struct ElevationDistance<T> {
     pub max_squared: T,
 }
 
-/// A copy of `points`; a cubic's four are written at once rather than pushed one by one.
-#[inline(always)]
-fn copy_points<P: Clone>(points: &[P]) -> SmallVec<[P; INLINE_POINTS]> {
-    match points {
-        [a, b, c, d] => SmallVec::from_buf([a.clone(), b.clone(), c.clone(), d.clone()]),
-        _ => points.iter().cloned().collect(),
-    }
-}
-
 /// `1/(n+1)`, the step of the weights of (7), divided once: its multiples `i · 1/(n+1)`
 /// are the weights `i/(n+1)`, exactly for exact scalars, with one rounding more for floats.
 #[inline(always)]
@@ -157,6 +148,17 @@ where
         Ok(Bezier { points })
     }
 
+    /// The control points as an array when there are exactly `N` of them, stored inline.
+    /// Asking for the inline buffer, not only the length, spares the fast paths the test of
+    /// where a `SmallVec` keeps its items: one comparison, on its length, remains.
+    #[inline(always)]
+    fn inline_array<const N: usize>(&self) -> Option<&[P; N]> {
+        if self.points.spilled() {
+            return None;
+        }
+        self.points[..].try_into().ok()
+    }
+
     /// The degree `n`.
     pub fn degree(&self) -> usize {
         self.points.len() - 1
@@ -180,6 +182,19 @@ where
     /// `b(t)` by de Casteljau's algorithm (1). Defined for every `t`, not only `[0, 1]`.
     #[inline]
     pub fn eval(&self, t: &T) -> P {
+        // A cubic, the common case, is tested for first and worked on as an array of
+        // constant length: the levels unroll and no other degree's code is inlined here.
+        if let Some(points) = self.inline_array::<INLINE_POINTS>() {
+            let mut column = points.clone();
+            de_casteljau(&mut column, t, |_| {});
+            let [p, ..] = column;
+            return p;
+        }
+        self.eval_any(t)
+    }
+
+    /// [`Self::eval`] for any number of points.
+    fn eval_any(&self, t: &T) -> P {
         with_column(&self.points, |column| {
             de_casteljau(column, t, |_| {});
             column[0].clone()
@@ -200,19 +215,28 @@ where
     /// `b'_i = i/(n+1) b_{i-1} + (1 − i/(n+1)) b_i`.
     #[inline]
     pub fn elevate(&self) -> Result<Self> {
+        if let Some([a, b, c]) = self.inline_array::<3>() {
+            // A quadratic's cubic fills the inline buffer exactly: written at once, with the
+            // weights 1/3 and 2/3 constants (for floats, folded at compile time).
+            let third = elevation_step::<T>(2)?;
+            let two_thirds = &T::from_usize(2) * &third;
+            let points = [a.clone(), b.lerp_to(a, &third), c.lerp_to(b, &two_thirds), c.clone()];
+            return Ok(Bezier {
+                points: SmallVec::from_buf(points),
+            });
+        }
+        self.elevate_any()
+    }
+
+    /// [`Self::elevate`] for any degree.
+    fn elevate_any(&self) -> Result<Self> {
         let points = &self.points[..];
         let n = points.len() - 1;
-        let out = if n + 2 == INLINE_POINTS {
-            // The elevated polygon fills the inline buffer exactly: written at once, the
-            // loop unrolls with `n` a constant (and for floats 1/(n+1) folds to a constant).
-            let step = elevation_step::<T>(INLINE_POINTS - 2)?;
-            SmallVec::from_buf(std::array::from_fn(|i| elevated_point(points, i, &step)))
-        } else {
-            check_degree("degree after elevation", n as u128 + 1)?;
-            let step = elevation_step::<T>(n)?;
-            (0..n + 2).map(|i| elevated_point(points, i, &step)).collect()
-        };
-        Ok(Bezier { points: out })
+        check_degree("degree after elevation", n as u128 + 1)?;
+        let step = elevation_step::<T>(n)?;
+        Ok(Bezier {
+            points: (0..n + 2).map(|i| elevated_point(points, i, &step)).collect(),
+        })
     }
 
     /// `r` steps of elevation by the closed form (8):
@@ -259,10 +283,29 @@ where
     /// scheme (9). Any `t0` works; outside `(0, 1)` the pieces extrapolate.
     #[inline]
     pub fn split_at(&self, t0: &T) -> (Self, Self) {
-        // In place, level by level, the column ends as b_0^n, b_1^{n-1}, …, b_n^0: the right
-        // boundary of the scheme; the left one is its first point after each level.
-        let mut right = copy_points(&self.points);
-        let mut left = copy_points(&self.points);
+        // A cubic fills the inline buffer: split as an array of constant length, so that
+        // the levels unroll and both halves are written at once.
+        if let Some(points) = self.inline_array::<INLINE_POINTS>() {
+            let mut right = points.clone();
+            let left = split_fixed(&mut right, t0);
+            return (
+                Bezier {
+                    points: SmallVec::from_buf(left),
+                },
+                Bezier {
+                    points: SmallVec::from_buf(right),
+                },
+            );
+        }
+        self.split_any(t0)
+    }
+
+    /// [`Self::split_at`] for any number of points. In place, level by level, the column
+    /// ends as b_0^n, b_1^{n-1}, …, b_n^0: the right boundary of the scheme; the left one is
+    /// its first point after each level.
+    fn split_any(&self, t0: &T) -> (Self, Self) {
+        let mut right = self.points.clone();
+        let mut left = self.points.clone();
         let mut r = 0;
         de_casteljau(&mut right, t0, |level| {
             r += 1;
@@ -712,7 +755,7 @@ mod tests {
     #[test]
     fn elevate_by_many_steps_of_a_line() {
         // The elevated polygon of a segment is the segment divided evenly; r = 2000 also
-        // exercises the binomial rows (C(n+r, i) one at a time took 0.7 s here, rows 40 ms).
+        // exercises the binomial rows at a size where C(n+r, i) one at a time would be slow.
         let c: BezierCurve<Q> = BezierCurve::from_ints(&[&[0, 0], &[2001, -4002]]).unwrap();
         let e = c.elevate_by(2000).unwrap();
         assert_eq!(e.degree(), 2001);

@@ -31,6 +31,20 @@ pub fn de_casteljau<P: VectorSpace>(column: &mut [P], t: &P::Scalar, mut each_le
     }
 }
 
+/// Subdivision (Lemma 1.3) of the `N` points `right` at `t`, in place: `right` becomes the
+/// right boundary of the scheme (9), `b_0^n, b_1^{n-1}, …, b_n^0`, and the array returned
+/// the left one, `b_0^0, b_0^1, …, b_0^n`. The same steps as [`de_casteljau`]; with `N` a
+/// constant the levels unroll into straight-line code.
+#[inline(always)]
+pub fn split_fixed<P: VectorSpace, const N: usize>(right: &mut [P; N], t: &P::Scalar) -> [P; N] {
+    let mut left = right.clone();
+    for len in (1..N).rev() {
+        casteljau_step(&mut right[..=len], t);
+        left[N - len] = right[0].clone();
+    }
+    left
+}
+
 /// Runs `f` on a mutable copy of `points`, on the stack for up to [`STACK_POINTS`] points:
 /// in an array of the exact length up to four (so a cubic's loops unroll), else in an array
 /// of 8, 16 or 24 whose tail repeats the last point (at most twice the points needed).
