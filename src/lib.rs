@@ -79,7 +79,7 @@ pub use fit::{
 // --- verification
 pub use verify::{explain, prove_paths, ClaimOutcome, Report, Verdict};
 
-// --- exact arithmetic at integer speed (issue 12)
+// --- exact arithmetic for the hot loops: a machine-word rational, shared Bernstein rows
 pub use exact::{BernsteinTable, SmallRational};
 
 // --- end of re-exports
