@@ -18,7 +18,7 @@
 use crate::bernstein::{bernstein_all, bernstein_to_power, binomial_row, power_to_bernstein, reparametrize};
 use crate::error::{check_degree, Error, Result};
 use crate::hull::convex_weights;
-use crate::kernel::{de_casteljau, split_fixed, with_column};
+use crate::kernel::{de_casteljau, eval_cubic, split_fixed, with_column};
 use crate::point::{common_dimension, AffineMap, Point, PointList};
 use crate::scalar::{RefOps, Scalar};
 use crate::space::{PointN, VectorSpace};
@@ -113,6 +113,24 @@ where
     }
 }
 
+/// Makes the common point of a float cubic's halves `b(t0)` as [`Bezier::eval`] computes it,
+/// in place of the last de Casteljau step (exact scalars agree already).
+#[inline(always)]
+fn join_at_eval<T: Scalar, P: VectorSpace<Scalar = T>>(
+    points: &[P; INLINE_POINTS],
+    t0: &T,
+    left: &mut [P],
+    right: &mut [P],
+) where
+    for<'a> &'a T: RefOps<T>,
+{
+    if !T::EXACT {
+        let joint = eval_cubic(points, t0);
+        left[INLINE_POINTS - 1] = joint.clone();
+        right[0] = joint;
+    }
+}
+
 /// Checks that `points` is non-empty and of one dimension; returns that dimension.
 pub(crate) fn common_dim<P: VectorSpace>(points: &[P], what: &'static str) -> Result<usize> {
     let first = points.first().ok_or(Error::Empty(what))?;
@@ -180,21 +198,26 @@ where
     }
 
     /// `b(t)` by de Casteljau's algorithm (1). Defined for every `t`, not only `[0, 1]`.
+    ///
+    /// A cubic on floats is evaluated as its nested Bernstein sum instead, fewer operations
+    /// and a smaller error (see [`crate::kernel::eval_cubic`]); [`Self::split_at`] joins its
+    /// halves at that same point.
     #[inline]
     pub fn eval(&self, t: &T) -> P {
         // A cubic, the common case, is tested for first and worked on as an array of
-        // constant length: the levels unroll and no other degree's code is inlined here.
+        // constant length: no loop, and no other degree's code is inlined here.
         if let Some(points) = self.inline_array::<INLINE_POINTS>() {
-            let mut column = points.clone();
-            de_casteljau(&mut column, t, |_| {});
-            let [p, ..] = column;
-            return p;
+            return eval_cubic(points, t);
         }
         self.eval_any(t)
     }
 
     /// [`Self::eval`] for any number of points.
+    #[cold]
     fn eval_any(&self, t: &T) -> P {
+        if let Ok(points) = <&[P; INLINE_POINTS]>::try_from(&self.points[..]) {
+            return eval_cubic(points, t);
+        }
         with_column(&self.points, |column| {
             de_casteljau(column, t, |_| {});
             column[0].clone()
@@ -280,14 +303,16 @@ where
 
     /// Subdivision at `t0` (Lemma 1.3): the curves `c1(t) = b(t0 t)` and
     /// `c2(t) = b(t0 + (1 - t0) t)`, whose control points are the two boundaries of the
-    /// scheme (9). Any `t0` works; outside `(0, 1)` the pieces extrapolate.
+    /// scheme (9). Any `t0` works; outside `(0, 1)` the pieces extrapolate. The halves meet
+    /// at `self.eval(t0)`, bit for bit on floats too.
     #[inline]
     pub fn split_at(&self, t0: &T) -> (Self, Self) {
         // A cubic fills the inline buffer: split as an array of constant length, so that
         // the levels unroll and both halves are written at once.
         if let Some(points) = self.inline_array::<INLINE_POINTS>() {
             let mut right = points.clone();
-            let left = split_fixed(&mut right, t0);
+            let mut left = split_fixed(&mut right, t0);
+            join_at_eval(points, t0, &mut left, &mut right);
             return (
                 Bezier {
                     points: SmallVec::from_buf(left),
@@ -311,6 +336,9 @@ where
             r += 1;
             left[r] = level[0].clone();
         });
+        if let Ok(points) = <&[P; INLINE_POINTS]>::try_from(&self.points[..]) {
+            join_at_eval(points, t0, &mut left, &mut right);
+        }
         (Bezier { points: left }, Bezier { points: right })
     }
 
@@ -580,8 +608,8 @@ impl BezierCurve<BigRational> {
 }
 
 impl BezierCurve<f64> {
-    /// `b(t)` as a fixed-size array, by exactly the de Casteljau steps of
-    /// [`BezierCurve::eval`] (so the result is bit-for-bit the same), on the stack for
+    /// `b(t)` as a fixed-size array, by exactly the steps of [`BezierCurve::eval`] (so the
+    /// result is bit-for-bit the same), on the stack for
     /// degrees below [`crate::kernel::STACK_POINTS`]. A dimension other than `D` is an error.
     ///
     /// ```
@@ -606,8 +634,10 @@ impl BezierCurve<f64> {
             column[0].0
         };
         // Cubics and below get a small buffer: filling the large one would cost as much as
-        // the work.
-        Ok(if len <= 4 {
+        // the work. A cubic takes the form `eval` takes.
+        Ok(if len == INLINE_POINTS {
+            eval_cubic(&std::array::from_fn(point), &t).0
+        } else if len <= 4 {
             eval(&mut std::array::from_fn::<_, 4, _>(point)[..len])
         } else if len <= crate::kernel::STACK_POINTS {
             eval(&mut std::array::from_fn::<_, { crate::kernel::STACK_POINTS }, _>(point)[..len])

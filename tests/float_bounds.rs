@@ -56,6 +56,16 @@ fn check_case(b: &[f64], t: f64) {
     let tight = q(UNIT_ROUNDOFF) * Signed::abs(&p) + &g * &g * &sum;
     assert!(err(comp) <= tight, "compensated bound violated: {b:?} at {t}");
     assert!(error_at_most(comp, &p, comp_bound), "{b:?} at {t}");
+    // the generic f64 evaluation of a cubic, the nested Bernstein sum: every b_i reaches the
+    // result through at most 8 roundings with nonnegative weights, so γ_8 Σ|b_i|B_i bounds it
+    if n == 3 {
+        let curve = BezierCurve::from_coords(b.iter().map(|x| vec![*x]).collect()).unwrap();
+        let value = curve.eval(&t).coords()[0];
+        assert!(
+            err(value) <= gamma_exact(8) * &sum,
+            "generic cubic eval bound violated: {b:?} at {t}"
+        );
+    }
     // the interval scalar through the generic algorithm encloses the exact value
     let iv: BezierCurve<Interval> =
         BezierCurve::from_coords(b.iter().map(|x| vec![Interval::from_f64(*x).unwrap()]).collect()).unwrap();
