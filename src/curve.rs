@@ -212,7 +212,8 @@ where
         self.eval_any(t)
     }
 
-    /// [`Self::eval`] for any number of points.
+    /// [`Self::eval`] for any number of points. Cold, so that the cubic's code is the one
+    /// that falls through at the call site.
     #[cold]
     fn eval_any(&self, t: &T) -> P {
         if let Ok(points) = <&[P; INLINE_POINTS]>::try_from(&self.points[..]) {
@@ -251,7 +252,10 @@ where
         self.elevate_any()
     }
 
-    /// [`Self::elevate`] for any degree.
+    /// [`Self::elevate`] for any degree. Inlined: called out of line, it returns its `Result`
+    /// in memory and the quadratic's points, computed in registers, would be copied through
+    /// that memory too.
+    #[inline(always)]
     fn elevate_any(&self) -> Result<Self> {
         let points = &self.points[..];
         let n = points.len() - 1;
