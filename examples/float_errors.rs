@@ -1,5 +1,6 @@
 //! The error-distribution table of the README: f64 de Casteljau (convex form, with its a
-//! priori and running bounds), casteljau's generic `BezierCurve<f64>::eval` (lerp form),
+//! priori and running bounds), casteljau's generic `BezierCurve<f64>::eval` (the lerp form;
+//! for cubics the nested Bernstein sum),
 //! compensated de Casteljau and kurbo (cubics), every error measured exactly.
 //!
 //! `cargo run --release --example float_errors [cases]` (default 100,000 random cases and
@@ -104,7 +105,7 @@ fn main() {
                 }
                 plain.ulps.push(ulp_error(value, &p).unwrap().ulps);
                 plain.ratio.push(Scalar::to_f64(&(err(value) / &bound)));
-                // the crate's generic f64 eval (b_i + t (b_{i+1} − b_i))
+                // the crate's generic f64 eval (b_i + t (b_{i+1} − b_i); a cubic's nested sum)
                 let curve: BezierCurve<f64> = BezierCurve::from_coords(b.iter().map(|x| vec![*x]).collect()).unwrap();
                 lerp.ulps.push(ulp_error(curve.eval(&t).coords()[0], &p).unwrap().ulps);
                 // compensated

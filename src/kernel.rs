@@ -1,6 +1,7 @@
 //! The de Casteljau kernel every algorithm runs on: curve evaluation, the scheme (9),
 //! subdivision, rational curves (on their homogeneous points) and both directions of
-//! surfaces (whole rows or columns of the net as one point each).
+//! surfaces (whole rows or columns of the net as one point each). A float cubic alone is
+//! evaluated otherwise, by [`eval_cubic`]: fewer operations and a smaller error.
 //!
 //! It works in place on a column of points and never allocates; [`with_column`] gives it a
 //! buffer on the stack for the polygons met in practice.
@@ -42,8 +43,9 @@ pub fn de_casteljau<P: VectorSpace>(column: &mut [P], t: &P::Scalar, mut each_le
 /// with nonnegative weights, so the error is at most `γ_8 Σ |b_i| B_i^3(t)`
 /// (`tests/float_bounds.rs` checks it exactly), below the `γ_9` of the convex form
 /// `s b_i + t b_{i+1}`; the form `b_i + t (b_{i+1} − b_i)` rounds relative to `b_i` rather
-/// than to its share of the result and has no bound of that shape (on random cubics its
-/// error reaches about 100 `u Σ |b_i| B_i^3(t)`, this one's stays below 5). It is exact at
+/// than to its share of the result and has no bound of that shape (its error reached 52
+/// `u Σ |b_i| B_i^3(t)` on 20,000 random cubics and 175 on 20,000 near a triple root; this
+/// form's, 3.8 and 3.1). It is exact at
 /// `t = 0` and `t = 1`, and groups the products as kurbo does, so the two agree bit for bit.
 #[inline(always)]
 pub fn eval_cubic<P: VectorSpace>(b: &[P; 4], t: &P::Scalar) -> P
