@@ -126,6 +126,46 @@ impl Alg for BigRational {
     }
 }
 
+impl Alg for crate::exact::SmallRational {
+    fn from_rat(r: &BigRational) -> Self {
+        r.into()
+    }
+    fn add(&self, o: &Self) -> Self {
+        self + o
+    }
+    fn sub(&self, o: &Self) -> Self {
+        self - o
+    }
+    fn mul(&self, o: &Self) -> Self {
+        self * o
+    }
+    fn neg(&self) -> Self {
+        -self
+    }
+    fn div(&self, o: &Self) -> Result<Self> {
+        crate::scalar::Scalar::checked_div(self, o)
+    }
+    fn sqrt_rat(r: &BigRational) -> Result<Self> {
+        rational_sqrt(r).map(Self::from)
+    }
+    fn equals(&self, o: &Self) -> Option<bool> {
+        Some(self == o)
+    }
+    fn from_int(n: i64) -> Self {
+        Self::from_int(n)
+    }
+    fn from_bigint(n: &BigInt) -> Self {
+        BigRational::from_integer(n.clone()).into()
+    }
+    fn bernstein(&self, i: i64, n: i64) -> Result<Self> {
+        let t = BigRational::from(self);
+        crate::exact::BernsteinTable::shared()
+            .bernstein(i, n, &t)
+            .map(Self::from)
+            .or_else(|_| bernstein_formula(i, n, self))
+    }
+}
+
 impl Alg for crate::quadratic::QuadraticIrrational {
     fn from_rat(r: &BigRational) -> Self {
         crate::quadratic::QuadraticIrrational::rational(r.clone())

@@ -13,6 +13,7 @@ use super::Verdict;
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::point::{AffineMap, Point};
+use crate::exact::SmallRational;
 use crate::scalar::Scalar;
 use num_rational::BigRational;
 
@@ -275,14 +276,14 @@ pub fn check_theorem(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
     for (_, cl) in &prepared {
         let sub = Ctx::new(cl)?;
         let sides = sub_sides(&sub, cl)?;
-        work = chain_work::<Q>(&sub, &sides, work)?;
+        work = chain_work::<SmallRational>(&sub, &sides, work)?;
     }
     let mut certs = Vec::new();
     let mut steps = Vec::new();
     for (p, cl) in &prepared {
         let sub = Ctx::new(cl)?;
         let sides = sub_sides(&sub, cl)?;
-        let out = check_chain::<Q>(&sub, &sides, detail)?;
+        let out = check_chain::<SmallRational>(&sub, &sides, detail)?;
         if detail {
             steps.push(format!("{}: {}", p.label, p.chain.join(" = ")));
             steps.extend(out.steps.iter().map(|s| format!("  {s}")));
