@@ -26,6 +26,7 @@
 //! assert_eq!(table.bernstein(1, 3, &third).unwrap(), casteljau::bernstein::bernstein(1, 3, &third).unwrap());
 //! ```
 
+use super::SmallRational;
 use crate::error::{Error, Result};
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -113,6 +114,11 @@ impl<K: Eq + Hash + Clone, V> Cache<K, V> {
         row
     }
 
+    /// The row for `key` if it is kept.
+    fn get(&self, key: &K) -> Option<Arc<V>> {
+        self.rows.read().unwrap_or_else(|e| e.into_inner()).0.get(key).map(Arc::clone)
+    }
+
     fn len(&self) -> usize {
         self.rows.read().unwrap_or_else(|e| e.into_inner()).0.len()
     }
@@ -124,6 +130,7 @@ pub struct BernsteinTable {
     binomials: Cache<usize, Vec<BigInt>>,
     integer: Cache<(usize, i64), Vec<BigInt>>,
     rational: Cache<RationalKey, RationalBasisRow>,
+    small: Cache<RationalKey, Vec<SmallRational>>,
 }
 
 /// The key of a rational row: degree and `t`, as words when they fit (no allocation and no
@@ -139,6 +146,15 @@ impl RationalKey {
         match (i64::try_from(t.numer()), i64::try_from(t.denom())) {
             (Ok(p), Ok(q)) => RationalKey::Words(n, p, q),
             _ => RationalKey::Big(n, t.numer().clone(), t.denom().clone()),
+        }
+    }
+}
+
+impl RationalKey {
+    fn of_small(n: usize, t: &SmallRational) -> Self {
+        match t.as_words() {
+            Some((p, q)) => RationalKey::Words(n, p, q),
+            None => RationalKey::new(n, &BigRational::from(t)),
         }
     }
 }
@@ -216,6 +232,7 @@ impl BernsteinTable {
             binomials: Cache::new(),
             integer: Cache::new(),
             rational: Cache::new(),
+            small: Cache::new(),
         }
     }
 
@@ -276,6 +293,24 @@ impl BernsteinTable {
                 },
                 b,
             )
+        }))
+    }
+
+    /// The row of [`Self::at_rational`] as [`SmallRational`]s, for evaluators on machine
+    /// words: a lookup costs no conversion and no allocation.
+    pub fn at_small(&self, n: usize, t: &SmallRational) -> Result<Arc<Vec<SmallRational>>> {
+        let key = RationalKey::of_small(n, t);
+        if let Some(row) = self.small.get(&key) {
+            return Ok(row);
+        }
+        let row = self.at_rational(n, &BigRational::from(t))?;
+        Ok(self.small.get_or(&key, || {
+            let values: Vec<SmallRational> = row.values().iter().map(SmallRational::from).collect();
+            let b = values
+                .iter()
+                .map(|v| if v.is_small() { 128 } else { 64 + 2 * BigRational::from(v).denom().bits() })
+                .sum();
+            (values, b)
         }))
     }
 

@@ -158,11 +158,14 @@ impl Alg for crate::exact::SmallRational {
         BigRational::from_integer(n.clone()).into()
     }
     fn bernstein(&self, i: i64, n: i64) -> Result<Self> {
-        let t = BigRational::from(self);
-        crate::exact::BernsteinTable::shared()
-            .bernstein(i, n, &t)
-            .map(Self::from)
-            .or_else(|_| bernstein_formula(i, n, self))
+        // As for BigRational: a shared row, the formula where the table declines.
+        if i < 0 || i > n {
+            return Ok(Self::from_int(0));
+        }
+        match crate::exact::BernsteinTable::shared().at_small(n as usize, self) {
+            Ok(row) => Ok(row[i as usize].clone()),
+            Err(_) => bernstein_formula(i, n, self),
+        }
     }
 }
 
@@ -620,7 +623,12 @@ impl<'e, A: Alg> Evaluator<'e, A> {
 
     /// A scalar sub-expression.
     pub fn scalar(&mut self, e: &Expr) -> Result<A> {
-        self.eval(e)?.scalar(&format!("'{e}'"))
+        match self.eval(e)? {
+            Value::S(a) => Ok(a),
+            // The message names the expression; formatting it only here keeps it off the
+            // hot path (a scalar is asked for at every call argument of every evaluation).
+            other => other.scalar(&format!("'{e}'")),
+        }
     }
 
     /// Evaluates `e`.
