@@ -116,7 +116,12 @@ impl<K: Eq + Hash + Clone, V> Cache<K, V> {
 
     /// The row for `key` if it is kept.
     fn get(&self, key: &K) -> Option<Arc<V>> {
-        self.rows.read().unwrap_or_else(|e| e.into_inner()).0.get(key).map(Arc::clone)
+        self.rows
+            .read()
+            .unwrap_or_else(|e| e.into_inner())
+            .0
+            .get(key)
+            .map(Arc::clone)
     }
 
     fn len(&self) -> usize {
@@ -308,7 +313,13 @@ impl BernsteinTable {
             let values: Vec<SmallRational> = row.values().iter().map(SmallRational::from).collect();
             let b = values
                 .iter()
-                .map(|v| if v.is_small() { 128 } else { 64 + 2 * BigRational::from(v).denom().bits() })
+                .map(|v| {
+                    if v.is_small() {
+                        128
+                    } else {
+                        64 + 2 * BigRational::from(v).denom().bits()
+                    }
+                })
                 .sum();
             (values, b)
         }))
@@ -369,6 +380,32 @@ mod tests {
             Err(Error::TooLarge { .. })
         ));
         assert!(format!("{table:?}").contains("rational rows: 1"));
+    }
+
+    #[test]
+    fn small_rows_are_the_rational_rows_as_words() {
+        let table = BernsteinTable::new();
+        for (p, q) in [(0, 1), (1, 3), (-2, 7), (5, 4)] {
+            let t = BigRational::from_ratio(p, q).unwrap();
+            let small = SmallRational::from(&t);
+            for n in [0usize, 1, 5, 40] {
+                let row = table.at_small(n, &small).unwrap();
+                let values: Vec<SmallRational> = table
+                    .at_rational(n, &t)
+                    .unwrap()
+                    .values()
+                    .iter()
+                    .map(SmallRational::from)
+                    .collect();
+                assert_eq!(*row, values, "n = {n}, t = {t}");
+                assert!(Arc::ptr_eq(&row, &table.at_small(n, &small).unwrap()));
+            }
+        }
+        // A parameter past machine words is a big key, still exact.
+        let t = BigRational::new(1.into(), num_traits::pow(BigInt::from(3), 50));
+        let row = table.at_small(3, &SmallRational::from(&t)).unwrap();
+        assert_eq!(BigRational::from(&row[3]), &t * &t * &t);
+        assert!(!row[3].is_small());
     }
 
     #[test]

@@ -12,8 +12,8 @@ use super::engine::{chain_work, check_chain, Checked, Ctx, MAX_WORK};
 use super::Verdict;
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
-use crate::point::{AffineMap, Point};
 use crate::exact::SmallRational;
+use crate::point::{AffineMap, Point};
 use crate::scalar::Scalar;
 use crate::RefOps;
 
