@@ -5,7 +5,9 @@
 //! integer — no fraction, no gcd; at a rational `t = p/q` the values share the denominator
 //! `qⁿ`. A proof engine checks many claims at the same few parameters, so the rows are
 //! cached: a table is `Sync`, held across claims and read by parallel workers (a read lock
-//! per lookup; a row is computed outside any lock and shared as an [`Arc`]).
+//! per lookup; a row is computed outside any lock and shared as an [`Arc`]). Evaluators on
+//! machine words read the rows as [`SmallRational`]s ([`BernsteinTable::at_small`]), through a
+//! per-thread memo of the last few rows, which spares the lock and the hash.
 //!
 //! Limits: a row's degree is at most [`MAX_TABLE_DEGREE`] and its estimated size at most
 //! [`MAX_ROW_BITS`] (larger requests are [`Error::TooLarge`]); the table keeps at most
@@ -31,6 +33,7 @@ use crate::error::{Error, Result};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
+use std::cell::RefCell;
 use std::collections::HashMap;
 use std::hash::Hash;
 use std::sync::{Arc, OnceLock, RwLock};
@@ -162,6 +165,36 @@ impl RationalKey {
             None => RationalKey::new(n, &BigRational::from(t)),
         }
     }
+}
+
+/// How many small rows each thread keeps at hand.
+const RECENT_SMALL: usize = 4;
+
+thread_local! {
+    /// The small rows this thread read last. A formula reads `B(0..=n, n, t)` at one `t`, often
+    /// beside one or two other degrees, so most lookups need neither the lock (a cache line
+    /// shared by every worker) nor a hash. A row is a function of `(n, t)` alone, so the
+    /// same memo serves every table.
+    static RECENT: RefCell<Vec<(RationalKey, Arc<Vec<SmallRational>>)>> = const { RefCell::new(Vec::new()) };
+}
+
+fn recent_small(key: &RationalKey) -> Option<Arc<Vec<SmallRational>>> {
+    RECENT.with(|r| {
+        r.borrow()
+            .iter()
+            .find(|(k, _)| k == key)
+            .map(|(_, row)| Arc::clone(row))
+    })
+}
+
+fn remember_small(key: RationalKey, row: &Arc<Vec<SmallRational>>) {
+    RECENT.with(|r| {
+        let mut r = r.borrow_mut();
+        if r.len() == RECENT_SMALL {
+            r.remove(0);
+        }
+        r.push((key, Arc::clone(row)));
+    });
 }
 
 impl Default for BernsteinTable {
@@ -305,11 +338,24 @@ impl BernsteinTable {
     /// words: a lookup costs no conversion and no allocation.
     pub fn at_small(&self, n: usize, t: &SmallRational) -> Result<Arc<Vec<SmallRational>>> {
         let key = RationalKey::of_small(n, t);
-        if let Some(row) = self.small.get(&key) {
+        if let Some(row) = recent_small(&key) {
+            return Ok(row);
+        }
+        let row = self.small_row(n, t, &key)?;
+        // Only rows on words: their size is bounded by the degree limit (64 KiB), so the
+        // memo never pins big rows the table itself declined to keep.
+        if row.iter().all(SmallRational::is_small) {
+            remember_small(key, &row);
+        }
+        Ok(row)
+    }
+
+    fn small_row(&self, n: usize, t: &SmallRational, key: &RationalKey) -> Result<Arc<Vec<SmallRational>>> {
+        if let Some(row) = self.small.get(key) {
             return Ok(row);
         }
         let row = self.at_rational(n, &BigRational::from(t))?;
-        Ok(self.small.get_or(&key, || {
+        Ok(self.small.get_or(key, || {
             let values: Vec<SmallRational> = row.values().iter().map(SmallRational::from).collect();
             let b = values
                 .iter()
