@@ -687,7 +687,13 @@ impl<'e, A: Alg> Evaluator<'e, A> {
                 }
                 let mut r = a;
                 while r <= b {
-                    self.ints.insert(v.clone(), r);
+                    // Rebinding in place: no new key (a String) per term.
+                    match self.ints.get_mut(v) {
+                        Some(slot) => *slot = r,
+                        None => {
+                            self.ints.insert(v.clone(), r);
+                        }
+                    }
                     let term = self.eval(body);
                     let term = match term {
                         Ok(t) => t,
