@@ -126,6 +126,8 @@ impl Alg for BigRational {
     }
 }
 
+/// The prover's rationals: the same exact values as `BigRational`, on machine words while
+/// they fit (most sample values do), so no heap and no big gcd per operation.
 impl Alg for crate::exact::SmallRational {
     fn from_rat(r: &BigRational) -> Self {
         r.into()
