@@ -48,9 +48,9 @@ fn exact_eval(c: &mut Criterion) {
     group.finish();
 }
 
-/// One claim of degree `n` checked at `n + 1` points needs `B_j^n` at each: the engine
-/// today rebuilds them as `BigRational`s at `k/n` for every use; a table computes the rows
-/// once (at the integers `k`, or at `k/n`) and hands them out.
+/// One claim of degree `n` checked at `n + 1` points needs `B_j^n` at each: rebuilt as
+/// `BigRational`s at `k/n` for every use, or computed once by a table (at the integers `k`,
+/// or at `k/n`, also as `SmallRational`s, what the engine reads) and handed out.
 fn prove_hot(c: &mut Criterion) {
     let mut group = c.benchmark_group("prove_hot");
     group
@@ -76,6 +76,18 @@ fn prove_hot(c: &mut Criterion) {
                     let row = table.at_rational(n, t).expect("degree within limit");
                     for j in 0..=n {
                         black_box(row.value(j));
+                    }
+                }
+            })
+        });
+        // The engine evaluates in SmallRational: the same rows, as machine words.
+        let small_points: Vec<SmallRational> = points.iter().map(SmallRational::from).collect();
+        group.bench_with_input(BenchmarkId::new("cached_small", n), &n, |b, &n| {
+            b.iter(|| {
+                for t in &small_points {
+                    let row = table.at_small(n, t).expect("degree within limit");
+                    for j in 0..=n {
+                        black_box(&row[j]);
                     }
                 }
             })

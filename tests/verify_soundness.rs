@@ -221,6 +221,30 @@ fn a_vector_side_against_a_number_is_an_error() {
     assert_error(&format!("{IDENTITY}lhs = \"(t, 1)\"\nrhs = \"t\""), "shape");
 }
 
+/// The engine computes on machine words while values fit; past 64 bits a value moves to big
+/// integers exactly, so a difference far below the leading bits is still a counterexample.
+#[test]
+fn values_beyond_machine_words_stay_exact() {
+    let square = "(2^40*t + 3)^2";
+    let expanded = "2^80*t^2 + 6*2^40*t + 9";
+    let true_claim = format!("{IDENTITY}lhs = \"{square}\"\nrhs = \"{expanded}\"");
+    assert_eq!(check(&true_claim).unwrap().0, Verdict::Proved);
+    for wrong in [
+        format!("{expanded} + t/2^70"),
+        format!("{expanded} + 1"),
+        "(2^80 + 1)*t^2 + 6*2^40*t + 9".to_string(),
+        format!("{expanded} + (2^63 - 1)*t*(t - 1)*(t - 1/2)/2^63"),
+    ] {
+        assert_fails(&format!("{IDENTITY}lhs = \"{square}\"\nrhs = \"{wrong}\""));
+    }
+    // Near the edges of i64: (2^63 - 1) t + 1 and its neighbours.
+    let edge = format!("{IDENTITY}lhs = \"(2^63 - 1)*t + 1 - 2^63*t\"\nrhs = \"1 - t\"");
+    assert_eq!(check(&edge).unwrap().0, Verdict::Proved);
+    assert_fails(&format!(
+        "{IDENTITY}lhs = \"(2^63 - 1)*t + 1 - 2^63*t\"\nrhs = \"1 - t + t/(2^63 - 1)\""
+    ));
+}
+
 /// A true identity: `Σ_k c_k B(k, n, t) = Σ_k c_k C(n, k) t^k (1 - t)^(n - k)` written in the
 /// power basis, with one coefficient of the right side changed.
 fn perturbed_identity(coeffs: &[i64], which: usize, delta: (i64, i64)) -> String {

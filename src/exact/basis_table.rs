@@ -5,7 +5,9 @@
 //! integer — no fraction, no gcd; at a rational `t = p/q` the values share the denominator
 //! `qⁿ`. A proof engine checks many claims at the same few parameters, so the rows are
 //! cached: a table is `Sync`, held across claims and read by parallel workers (a read lock
-//! per lookup; a row is computed outside any lock and shared as an [`Arc`]).
+//! per lookup; a row is computed outside any lock and shared as an [`Arc`]). Evaluators on
+//! machine words read the rows as [`SmallRational`]s ([`BernsteinTable::at_small`]), through a
+//! per-thread memo of the last few rows, which spares the lock and the hash.
 //!
 //! Limits: a row's degree is at most [`MAX_TABLE_DEGREE`] and its estimated size at most
 //! [`MAX_ROW_BITS`] (larger requests are [`Error::TooLarge`]); the table keeps at most
@@ -26,10 +28,12 @@
 //! assert_eq!(table.bernstein(1, 3, &third).unwrap(), casteljau::bernstein::bernstein(1, 3, &third).unwrap());
 //! ```
 
+use super::SmallRational;
 use crate::error::{Error, Result};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
+use std::cell::RefCell;
 use std::collections::HashMap;
 use std::hash::Hash;
 use std::sync::{Arc, OnceLock, RwLock};
@@ -113,6 +117,16 @@ impl<K: Eq + Hash + Clone, V> Cache<K, V> {
         row
     }
 
+    /// The row for `key` if it is kept.
+    fn get(&self, key: &K) -> Option<Arc<V>> {
+        self.rows
+            .read()
+            .unwrap_or_else(|e| e.into_inner())
+            .0
+            .get(key)
+            .map(Arc::clone)
+    }
+
     fn len(&self) -> usize {
         self.rows.read().unwrap_or_else(|e| e.into_inner()).0.len()
     }
@@ -124,6 +138,7 @@ pub struct BernsteinTable {
     binomials: Cache<usize, Vec<BigInt>>,
     integer: Cache<(usize, i64), Vec<BigInt>>,
     rational: Cache<RationalKey, RationalBasisRow>,
+    small: Cache<RationalKey, Vec<SmallRational>>,
 }
 
 /// The key of a rational row: degree and `t`, as words when they fit (no allocation and no
@@ -141,6 +156,45 @@ impl RationalKey {
             _ => RationalKey::Big(n, t.numer().clone(), t.denom().clone()),
         }
     }
+}
+
+impl RationalKey {
+    fn of_small(n: usize, t: &SmallRational) -> Self {
+        match t.as_words() {
+            Some((p, q)) => RationalKey::Words(n, p, q),
+            None => RationalKey::new(n, &BigRational::from(t)),
+        }
+    }
+}
+
+/// How many small rows each thread keeps at hand.
+const RECENT_SMALL: usize = 4;
+
+thread_local! {
+    /// The small rows this thread read last. A formula reads `B(0..=n, n, t)` at one `t`, often
+    /// beside one or two other degrees, so most lookups need neither the lock (a cache line
+    /// shared by every worker) nor a hash. A row is a function of `(n, t)` alone, so the
+    /// same memo serves every table.
+    static RECENT: RefCell<Vec<(RationalKey, Arc<Vec<SmallRational>>)>> = const { RefCell::new(Vec::new()) };
+}
+
+fn recent_small(key: &RationalKey) -> Option<Arc<Vec<SmallRational>>> {
+    RECENT.with(|r| {
+        r.borrow()
+            .iter()
+            .find(|(k, _)| k == key)
+            .map(|(_, row)| Arc::clone(row))
+    })
+}
+
+fn remember_small(key: RationalKey, row: &Arc<Vec<SmallRational>>) {
+    RECENT.with(|r| {
+        let mut r = r.borrow_mut();
+        if r.len() == RECENT_SMALL {
+            r.remove(0);
+        }
+        r.push((key, Arc::clone(row)));
+    });
 }
 
 impl Default for BernsteinTable {
@@ -216,6 +270,7 @@ impl BernsteinTable {
             binomials: Cache::new(),
             integer: Cache::new(),
             rational: Cache::new(),
+            small: Cache::new(),
         }
     }
 
@@ -279,6 +334,43 @@ impl BernsteinTable {
         }))
     }
 
+    /// The row of [`Self::at_rational`] as [`SmallRational`]s, for evaluators on machine
+    /// words: a lookup costs no conversion and no allocation.
+    pub fn at_small(&self, n: usize, t: &SmallRational) -> Result<Arc<Vec<SmallRational>>> {
+        let key = RationalKey::of_small(n, t);
+        if let Some(row) = recent_small(&key) {
+            return Ok(row);
+        }
+        let row = self.small_row(n, t, &key)?;
+        // Only rows on words: their size is bounded by the degree limit (64 KiB), so the
+        // memo never pins big rows the table itself declined to keep.
+        if row.iter().all(SmallRational::is_small) {
+            remember_small(key, &row);
+        }
+        Ok(row)
+    }
+
+    fn small_row(&self, n: usize, t: &SmallRational, key: &RationalKey) -> Result<Arc<Vec<SmallRational>>> {
+        if let Some(row) = self.small.get(key) {
+            return Ok(row);
+        }
+        let row = self.at_rational(n, &BigRational::from(t))?;
+        Ok(self.small.get_or(key, || {
+            let values: Vec<SmallRational> = row.values().iter().map(SmallRational::from).collect();
+            let b = values
+                .iter()
+                .map(|v| {
+                    if v.is_small() {
+                        128
+                    } else {
+                        64 + 2 * BigRational::from(v).denom().bits()
+                    }
+                })
+                .sum();
+            (values, b)
+        }))
+    }
+
     /// `B_i^n(t)` with the convention of the formulas: zero outside `0 ≤ i ≤ n`; a negative
     /// `n` is an error.
     pub fn bernstein(&self, i: i64, n: i64, t: &BigRational) -> Result<BigRational> {
@@ -334,6 +426,32 @@ mod tests {
             Err(Error::TooLarge { .. })
         ));
         assert!(format!("{table:?}").contains("rational rows: 1"));
+    }
+
+    #[test]
+    fn small_rows_are_the_rational_rows_as_words() {
+        let table = BernsteinTable::new();
+        for (p, q) in [(0, 1), (1, 3), (-2, 7), (5, 4)] {
+            let t = BigRational::from_ratio(p, q).unwrap();
+            let small = SmallRational::from(&t);
+            for n in [0usize, 1, 5, 40] {
+                let row = table.at_small(n, &small).unwrap();
+                let values: Vec<SmallRational> = table
+                    .at_rational(n, &t)
+                    .unwrap()
+                    .values()
+                    .iter()
+                    .map(SmallRational::from)
+                    .collect();
+                assert_eq!(*row, values, "n = {n}, t = {t}");
+                assert!(Arc::ptr_eq(&row, &table.at_small(n, &small).unwrap()));
+            }
+        }
+        // A parameter past machine words is a big key, still exact.
+        let t = BigRational::new(1.into(), num_traits::pow(BigInt::from(3), 50));
+        let row = table.at_small(3, &SmallRational::from(&t)).unwrap();
+        assert_eq!(BigRational::from(&row[3]), &t * &t * &t);
+        assert!(!row[3].is_small());
     }
 
     #[test]

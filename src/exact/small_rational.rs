@@ -230,8 +230,12 @@ fn add_small_i128(a: i64, b: i64, c: i128, d: i64) -> SmallRational {
     let (bg, dg) = ((b / g) as i128, (d / g) as i128);
     let t = a as i128 * dg + c * bg;
     // gcd(t, b d / g) = gcd(t, g): reduce by it.
-    let g2 = gcd_u64((t.unsigned_abs() % g as u128) as u64, g as u64) as i128;
-    SmallRational::from_reduced_i128(t / g2, bg * (d as i128 / g2))
+    // g2 divides g ≤ d, so d / g2 stays on words; an i128 division only when g2 > 1.
+    let g2 = gcd_u64((t.unsigned_abs() % g as u128) as u64, g as u64) as i64;
+    if g2 == 1 {
+        return SmallRational::from_reduced_i128(t, bg * d as i128);
+    }
+    SmallRational::from_reduced_i128(t / g2 as i128, bg * (d / g2) as i128)
 }
 
 /// `(a/b)(c/d)` for reduced operands: cross-cancel first, so the product is reduced.
@@ -242,11 +246,12 @@ fn mul_small(a: i64, b: i64, c: i64, d: i64) -> SmallRational {
             return SmallRational(Repr::Small { num: p, den: 1 });
         }
     }
-    // Denominators are ≥ 1, so both gcds are ≥ 1.
-    let g1 = gcd_u64(a.unsigned_abs(), d as u64) as i128;
-    let g2 = gcd_u64(c.unsigned_abs(), b as u64) as i128;
-    let num = (a as i128 / g1) * (c as i128 / g2);
-    let den = (b as i128 / g2) * (d as i128 / g1);
+    // Denominators are ≥ 1, so both gcds are ≥ 1; each divides a positive i64 (d or b), so
+    // it is an i64 too and the divisions stay on words (an i128 division is a library call).
+    let g1 = gcd_u64(a.unsigned_abs(), d as u64) as i64;
+    let g2 = gcd_u64(c.unsigned_abs(), b as u64) as i64;
+    let num = (a / g1) as i128 * (c / g2) as i128;
+    let den = (b / g2) as i128 * (d / g1) as i128;
     SmallRational::from_reduced_i128(num, den)
 }
 

@@ -861,17 +861,21 @@ where
                     }
                     (Err(e), _) | (_, Err(e)) => return Err(e),
                 };
-                let at = describe_point(&params, &values, ints, b, ctx);
+                // Described only when it is printed: formatting every point costs more than
+                // evaluating a small claim.
+                let at = || describe_point(&params, &values, ints, b, ctx);
                 match l.equals(&r) {
                     Some(true) => {
                         if detail {
-                            lines.push(format!("{at}: both sides = {l}"));
+                            lines.push(format!("{}: both sides = {l}", at()));
                         }
                     }
                     Some(false) => {
+                        let at = at();
                         return Ok(PairResult::Fails(format!("at {at}: left side = {l}, right side = {r}")));
                     }
                     None => {
+                        let at = at();
                         return Err(Error::Domain(format!(
                             "at {at} the sides are {l} and {r}: the claim mixes square roots of different fields \
                              (exact arithmetic here is in one Q(√d) per claim), so it cannot be decided"

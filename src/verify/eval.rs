@@ -126,6 +126,51 @@ impl Alg for BigRational {
     }
 }
 
+/// The prover's rationals: the same exact values as `BigRational`, on machine words while
+/// they fit (most sample values do), so no heap and no big gcd per operation.
+impl Alg for crate::exact::SmallRational {
+    fn from_rat(r: &BigRational) -> Self {
+        r.into()
+    }
+    fn add(&self, o: &Self) -> Self {
+        self + o
+    }
+    fn sub(&self, o: &Self) -> Self {
+        self - o
+    }
+    fn mul(&self, o: &Self) -> Self {
+        self * o
+    }
+    fn neg(&self) -> Self {
+        -self
+    }
+    fn div(&self, o: &Self) -> Result<Self> {
+        crate::scalar::Scalar::checked_div(self, o)
+    }
+    fn sqrt_rat(r: &BigRational) -> Result<Self> {
+        rational_sqrt(r).map(Self::from)
+    }
+    fn equals(&self, o: &Self) -> Option<bool> {
+        Some(self == o)
+    }
+    fn from_int(n: i64) -> Self {
+        Self::from_int(n)
+    }
+    fn from_bigint(n: &BigInt) -> Self {
+        BigRational::from_integer(n.clone()).into()
+    }
+    fn bernstein(&self, i: i64, n: i64) -> Result<Self> {
+        // As for BigRational: a shared row, the formula where the table declines.
+        if i < 0 || i > n {
+            return Ok(Self::from_int(0));
+        }
+        match crate::exact::BernsteinTable::shared().at_small(n as usize, self) {
+            Ok(row) => Ok(row[i as usize].clone()),
+            Err(_) => bernstein_formula(i, n, self),
+        }
+    }
+}
+
 impl Alg for crate::quadratic::QuadraticIrrational {
     fn from_rat(r: &BigRational) -> Self {
         crate::quadratic::QuadraticIrrational::rational(r.clone())
@@ -580,7 +625,12 @@ impl<'e, A: Alg> Evaluator<'e, A> {
 
     /// A scalar sub-expression.
     pub fn scalar(&mut self, e: &Expr) -> Result<A> {
-        self.eval(e)?.scalar(&format!("'{e}'"))
+        match self.eval(e)? {
+            Value::S(a) => Ok(a),
+            // The message names the expression; formatting it only here keeps it off the
+            // hot path (a scalar is asked for at every call argument of every evaluation).
+            other => other.scalar(&format!("'{e}'")),
+        }
     }
 
     /// Evaluates `e`.
@@ -639,7 +689,13 @@ impl<'e, A: Alg> Evaluator<'e, A> {
                 }
                 let mut r = a;
                 while r <= b {
-                    self.ints.insert(v.clone(), r);
+                    // Rebinding in place: no new key (a String) per term.
+                    match self.ints.get_mut(v) {
+                        Some(slot) => *slot = r,
+                        None => {
+                            self.ints.insert(v.clone(), r);
+                        }
+                    }
                     let term = self.eval(body);
                     let term = match term {
                         Ok(t) => t,

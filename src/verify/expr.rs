@@ -1145,7 +1145,7 @@ pub fn eval_int(e: &Expr, ints: &BTreeMap<String, i64>) -> Result<i64> {
             if !r.is_integer() {
                 return Err(Error::Domain(format!("{r} is not an integer")));
             }
-            i64::try_from(r.to_integer()).map_err(|_| over())?
+            i64::try_from(r.numer()).map_err(|_| over())?
         }
         Expr::Var(v) => *ints
             .get(v)

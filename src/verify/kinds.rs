@@ -104,7 +104,7 @@ fn chain_in_field(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Result<Checked
         out.certificate = format!("{} (exact arithmetic in Q(√d))", out.certificate);
         Ok(out)
     } else {
-        check_chain::<BigRational>(ctx, sides, detail)
+        check_chain::<crate::exact::SmallRational>(ctx, sides, detail)
     }
 }
 

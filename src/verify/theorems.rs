@@ -12,11 +12,14 @@ use super::engine::{chain_work, check_chain, Checked, Ctx, MAX_WORK};
 use super::Verdict;
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
+use crate::exact::SmallRational;
 use crate::point::{AffineMap, Point};
 use crate::scalar::Scalar;
-use num_rational::BigRational;
+use crate::RefOps;
 
-type Q = BigRational;
+/// The exact numbers of these checks: machine words while values fit (most do), big
+/// integers beyond, so the same verdicts at a fraction of the cost of `BigRational`.
+type Q = SmallRational;
 
 /// The theorems known to `kind = "theorem"`, with what each checks.
 pub const THEOREMS: &[(&str, &str)] = &[
@@ -334,10 +337,8 @@ fn unit_polygon(n: usize, dim: usize, k: usize, coord: usize) -> Result<BezierCu
     BezierCurve::new(pts)
 }
 
-fn params(d: usize) -> Vec<Q> {
-    (0..=d)
-        .map(|k| Q::new((k as i64).into(), (d.max(1) as i64).into()))
-        .collect()
+fn params(d: usize) -> Result<Vec<Q>> {
+    (0..=d).map(|k| Q::from_ratio(k as i64, d.max(1) as i64)).collect()
 }
 
 /// Affine invariance: `transform(Φ)(t) = Φ(b(t))` for every affine `Φ(p) = A p + c` (in the
@@ -353,7 +354,7 @@ fn affine_invariance(lo: i64, hi: i64) -> Result<Checked> {
     let mut evaluations = 0;
     let dim = 2;
     for n in lo.max(0) as usize..=hi as usize {
-        let ts = params(n);
+        let ts = params(n)?;
         let mut maps: Vec<(AffineMap<Q>, bool)> = Vec::new();
         for r in 0..dim {
             for s in 0..dim {
@@ -412,7 +413,7 @@ fn convex_hull(lo: i64, hi: i64, detail: bool) -> Result<Checked> {
     let mut steps = Vec::new();
     let mut hull_checks = 0;
     for n in lo.max(0) as usize..=hi as usize {
-        let ts = params(n);
+        let ts = params(n)?;
         for t in &ts {
             let basis: Vec<Q> = crate::bernstein::bernstein_all(n, t);
             let sum = basis.iter().fold(Q::zero(), |a, b| a + b);
@@ -432,7 +433,7 @@ fn convex_hull(lo: i64, hi: i64, detail: bool) -> Result<Checked> {
             .collect::<Result<_>>()?;
         let curve = BezierCurve::new(pts)?;
         for k in 0..=8 {
-            let t = Q::new(k.into(), 8.into());
+            let t = Q::from_ratio(k, 8)?;
             let p = curve.eval(&t);
             match curve.hull_weights(&p)? {
                 Some(w) => {
@@ -474,17 +475,20 @@ fn convex_hull(lo: i64, hi: i64, detail: bool) -> Result<Checked> {
 /// convex order (Hoeffding 1963), so `|E f(K) − E f(J)| ≤ M/2 (Var K − Var J)` with
 /// `M = max|Δ²f|`, and `Var K − Var J = n(n−1) i(N−i) / (N²(N−1)) ≤ n(n−1)/(4(N−1))`,
 /// `N = n + r`. That is at most half the bound stated here (`N ≥ 2`; for `n ≤ 1` both are 0).
-pub fn elevation_bound(curve: &BezierCurve<Q>, r: usize) -> Result<Q> {
+pub fn elevation_bound<T: Scalar>(curve: &BezierCurve<T>, r: usize) -> Result<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
     let n = curve.degree();
     if n < 2 {
-        return Ok(Q::zero());
+        return Ok(T::zero());
     }
     let d2 = curve.forward_differences(2)?;
     let m = d2
         .iter()
         .flat_map(|p| p.coords().iter().map(Scalar::abs))
-        .fold(Q::zero(), |a, b| if b > a { b } else { a });
-    let factor = Q::new(((n * (n - 1)) as i64).into(), (2 * (n + r) as i64).into());
+        .fold(T::zero(), |a, b| if b > a { b } else { a });
+    let factor = T::from_ratio((n * (n - 1)) as i64, (2 * (n + r)) as i64)?;
     Ok(factor * m)
 }
 
