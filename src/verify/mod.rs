@@ -37,10 +37,13 @@ pub mod engine;
 pub mod eval;
 pub mod expr;
 pub mod fields;
+pub mod hyper;
+pub mod inequality;
 pub mod kinds;
 pub mod methods;
 pub mod poly;
 mod report;
+pub mod symbolic;
 pub mod theorems;
 
 use crate::error::{Error, Result};
