@@ -139,3 +139,39 @@ fn what_is_not_supported_is_an_error() {
     // Division by an integer that may vanish on the domain.
     assert_error("for = [\"n = 0..\"]\nlhs = \"n/n\"\nrhs = \"1\"", "division");
 }
+
+#[test]
+fn perturbed_identities_are_never_proved() {
+    // True identities with a perturbation that vanishes for the evaluated n (or is small):
+    // every variant must fail or be refused, none proved.
+    let bases = [
+        ("for = [\"n = 1..\", \"i = 0..=n\"]", "B(i, n, t)", "(1 - t)*B(i, n-1, t) + t*B(i-1, n-1, t)"),
+        ("for = [\"n = 1..\", \"i = 0..=n\"]", "diff(B(i, n, t), t)", "n*(B(i-1, n-1, t) - B(i, n-1, t))"),
+    ];
+    let bumps = [
+        "(n-1)*(n-2)*(n-3)*(n-4)*B(i, n, t)",
+        "(n-1)*(n-2)*(n-3)*(n-4)*t^i",
+        "(n-1)*(n-2)*(n-3)*(n-4)*C(n, i)",
+        "(n-1)*(n-2)*(n-3)*(n-4)*B(i+1, n, t)",
+        "C(i, 5)*t",
+        "C(n, 5)*B(0, n, t)",
+        "B(i, n-5, t)",
+        "t*B(i-1, n-1, t) - t*B(i-1, n-1, t) + B(n+1, n, t) + C(n, 6)",
+    ];
+    for (range, lhs, rhs) in bases {
+        for bump in bumps {
+            let body = format!("{range}\nlhs = \"{lhs}\"\nrhs = \"{rhs} + {bump}\"");
+            if let Ok((v, _, c)) = check(&body) {
+                assert_ne!(v, Verdict::Proved, "{body}: {c}");
+                assert_ne!(v, Verdict::ProvedInRange, "{body}: {c}");
+            }
+        }
+    }
+    // The partition of unity with a bump, and the right certificate.
+    for bump in ["C(n, 4)", "C(n, 4)*t", "(n-1)*(n-2)*(n-3)*n*t^n", "B(4, n, t)"] {
+        let body = format!("{POU}rhs = \"1 + {bump}\"\ncertificate = \"-(1-t)*i/(n+1-i)\"");
+        if let Ok((v, _, c)) = check(&body) {
+            assert_eq!(v, Verdict::Fails, "{body}: {c}");
+        }
+    }
+}
