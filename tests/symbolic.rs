@@ -93,6 +93,22 @@ fn sums_by_wz_certificates() {
 }
 
 #[test]
+fn certificates_are_found_when_not_given() {
+    let c = assert_proved(&format!("{POU}rhs = \"1\""));
+    assert!(c.contains("found by the ansatz search, then checked"), "{c}");
+    assert_proved(
+        "for = [\"j = 0..\", \"n = j..\"]\nlhs = \"B(j, n, s*t)\"\nrhs = \"sum(r, j, n, B(j, r, s)*B(r, n, t))\"",
+    );
+    assert_proved(
+        "for = [\"m = 0..\", \"n = 0..\"]\nlhs = \"sum(i, 0, m, sum(j, 0, n, B(i, m, u)*B(j, n, v)))\"\nrhs = \"1\"",
+    );
+    // A polynomial sum: G = 0 and the new term telescopes against the right side.
+    assert_proved("for = [\"n = 0..\"]\nlhs = \"sum(i, 0, n, i^2)\"\nrhs = \"n*(n+1)*(2n+1)/6\"");
+    // What the search finds is checked like a given certificate: a false claim is still refused.
+    assert_error(&format!("{POU}rhs = \"1 + C(n, 11)\""), "does not hold");
+}
+
+#[test]
 fn a_wrong_certificate_or_claim_is_rejected() {
     // A wrong certificate: the WZ equation does not hold.
     assert_error(
@@ -104,8 +120,11 @@ fn a_wrong_certificate_or_claim_is_rejected() {
         &format!("{POU}rhs = \"1\"\ncertificate = \"-(1-t)/(n+1-i)\""),
         "does not hold",
     );
-    // No certificate: refused, with the reason.
-    assert_error(&format!("{POU}rhs = \"1\""), "needs a WZ certificate");
+    // A sum whose certificate the ansatz cannot find (Σ C(n, i)³ has none of this form): refused.
+    assert_error(
+        "for = [\"n = 0..\"]\nlhs = \"sum(i, 0, n, C(n, i)^3)\"\nrhs = \"sum(j, 0, n, C(n, j)^3)\"",
+        "none found",
+    );
     // True for n ≤ 10 (and so for the evaluated n ≤ 3), false from n = 11 on: never proved.
     assert_error(
         &format!("{POU}rhs = \"1 + C(n, 11)\"\ncertificate = \"-(1-t)*i/(n+1-i)\""),
@@ -145,8 +164,16 @@ fn perturbed_identities_are_never_proved() {
     // True identities with a perturbation that vanishes for the evaluated n (or is small):
     // every variant must fail or be refused, none proved.
     let bases = [
-        ("for = [\"n = 1..\", \"i = 0..=n\"]", "B(i, n, t)", "(1 - t)*B(i, n-1, t) + t*B(i-1, n-1, t)"),
-        ("for = [\"n = 1..\", \"i = 0..=n\"]", "diff(B(i, n, t), t)", "n*(B(i-1, n-1, t) - B(i, n-1, t))"),
+        (
+            "for = [\"n = 1..\", \"i = 0..=n\"]",
+            "B(i, n, t)",
+            "(1 - t)*B(i, n-1, t) + t*B(i-1, n-1, t)",
+        ),
+        (
+            "for = [\"n = 1..\", \"i = 0..=n\"]",
+            "diff(B(i, n, t), t)",
+            "n*(B(i-1, n-1, t) - B(i, n-1, t))",
+        ),
     ];
     let bumps = [
         "(n-1)*(n-2)*(n-3)*(n-4)*B(i, n, t)",

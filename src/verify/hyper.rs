@@ -904,8 +904,8 @@ fn classes_cancel(sym: &Symbols, live: &[&Term], place: &str, log: &mut Vec<Stri
 }
 
 /// `H_t / H_0` (the factorial and power parts; the coefficients are not included), a rational
-/// function valid where every factorial argument is ≥ 0.
-fn ratio(sym: &Symbols, t: &Term, first: &Term) -> Result<Option<RatFunc>> {
+/// function valid where every factorial argument is ≥ 0; `None` when the terms are not similar.
+pub fn ratio(sym: &Symbols, t: &Term, first: &Term) -> Result<Option<RatFunc>> {
     let mut out = RatFunc::from_int(1);
     let mut groups: BTreeMap<BTreeMap<String, i64>, (Vec<i64>, Vec<i64>)> = BTreeMap::new();
     let both = t
@@ -970,6 +970,61 @@ fn ratio(sym: &Symbols, t: &Term, first: &Term) -> Result<Option<RatFunc>> {
         out = out.mul(&b.to_rf().pow(e.c)?);
     }
     Ok(Some(out))
+}
+
+/// The factors of the denominator of `H_t / H_0`: affine forms (from factorials) and
+/// polynomials in the parameters (from powers with negative exponent differences).
+pub fn ratio_denominator(t: &Term, first: &Term) -> (Vec<Aff>, Vec<Poly>) {
+    let mut groups: BTreeMap<BTreeMap<String, i64>, (Vec<i64>, Vec<i64>)> = BTreeMap::new();
+    let both = t
+        .facts
+        .iter()
+        .map(|(a, e)| (a, *e))
+        .chain(first.facts.iter().map(|(a, e)| (a, -*e)));
+    for (a, e) in both {
+        let g = groups.entry(a.linear()).or_default();
+        if e > 0 {
+            g.0.push(a.c);
+        } else {
+            g.1.push(a.c);
+        }
+    }
+    let mut affs = Vec::new();
+    for (lin, (mut up, mut down)) in groups {
+        if lin.is_empty() || up.len() != down.len() {
+            continue;
+        }
+        up.sort_unstable();
+        down.sort_unstable();
+        let l = Aff { c: 0, v: lin };
+        for (p, q) in up.into_iter().zip(down) {
+            for m in p + 1..=q {
+                affs.push(l.shifted(m));
+            }
+        }
+    }
+    let mut polys = Vec::new();
+    let mut bases: Vec<(Base, Aff)> = Vec::new();
+    for (b, e) in t
+        .pows
+        .iter()
+        .map(|(b, e)| (b, e.clone()))
+        .chain(first.pows.iter().map(|(b, e)| (b, e.scaled(-1))))
+    {
+        if let Some(slot) = bases.iter_mut().find(|(x, _)| x == b) {
+            slot.1 = slot.1.plus(&e);
+        } else {
+            bases.push((b.clone(), e));
+        }
+    }
+    for (b, e) in bases {
+        if let (Base::Poly(q), true) = (&b, e.is_const() && e.c < 0) {
+            for _ in 0..e.c.unsigned_abs() {
+                polys.push(q.clone());
+            }
+        }
+    }
+    (affs, polys)
 }
 
 fn factorial(c: i64) -> Result<RatFunc> {

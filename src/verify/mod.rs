@@ -32,6 +32,7 @@
 //! assert!(out.certificate.contains("degree ≤ 3 in t"));
 //! ```
 
+pub mod ansatz;
 pub mod claims;
 pub mod engine;
 pub mod eval;

@@ -543,14 +543,32 @@ impl<'a> Translator<'a> {
                 (f, base, None)
             }
         };
-        let cert = self.certs.get(self.next_cert).cloned().ok_or_else(|| {
-            Error::Domain(format!(
-                "{what}: a sum with a symbolic bound needs a WZ certificate R (certificate = [\"R\"], one per such sum, innermost first)"
-            ))
-        })?;
-        self.next_cert += 1;
+        let (cert, found) = match self.certs.get(self.next_cert).cloned() {
+            Some(c) => {
+                self.next_cert += 1;
+                (c, false)
+            }
+            None => match f.as_slice() {
+                [single] => (
+                    super::ansatz::find(sym, single, &n, k).map_err(|e| Error::Domain(format!("{what}: {e}")))?,
+                    true,
+                ),
+                _ => {
+                    return Err(Error::Domain(format!(
+                        "{what}: a sum with a symbolic bound needs a WZ certificate R (certificate = [\"R\"], one per such sum, innermost first); none is searched for a summand of {} terms",
+                        f.len()
+                    )))
+                }
+            },
+        };
+        let cert_note = if found {
+            " (found by the ansatz search, then checked)"
+        } else {
+            ""
+        };
         let g = self.times_certificate(&cert, &f)?;
-        self.used.push(format!("{what} (induction on {n} ≥ {n0}): R = {cert}"));
+        self.used
+            .push(format!("{what} (induction on {n} ≥ {n0}): R = {cert}{cert_note}"));
         self.log.push(format!(
             "{what} by induction on {n} ≥ {n0}: F = {}; certificate R = {cert}, G = R·F = {}",
             show(&f),
