@@ -448,7 +448,8 @@ impl Term {
     }
     /// A short readable form.
     pub fn show(&self) -> String {
-        let mut parts = vec![format!("{}", self.coef)];
+        let coef = self.coef.to_string();
+        let mut parts = vec![if coef.contains(' ') { format!("({coef})") } else { coef }];
         for (a, e) in &self.facts {
             parts.push(if *e > 0 { format!("({a})!") } else { format!("1/({a})!") });
         }
@@ -850,7 +851,12 @@ fn prove_rec(
                 let sub = lin_subst(sym, &lin, &x, &by);
                 return prove_rec(sym, sub, d.subst(&x, &by), p, log, count, check);
             }
-            let live: Vec<&Term> = lin.iter().zip(&alive).filter(|(_, a)| **a).map(|(t, _)| t).collect();
+            let live: Vec<&Term> = lin
+                .iter()
+                .zip(&alive)
+                .filter(|(t, a)| **a && !t.coef.num.is_zero())
+                .map(|(t, _)| t)
+                .collect();
             let place = if path.is_empty() {
                 d.show()
             } else {

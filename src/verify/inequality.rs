@@ -29,6 +29,21 @@ use num_traits::{Signed, Zero};
 use std::collections::BTreeMap;
 use std::rc::Rc;
 
+/// Why an inequality's certificate suffices, as `--explain` prints it.
+pub const ARGUMENT: &[&str] = &[
+    "On [a, b], P(a + (b − a)s) = Σ_j c_j B_j^d(s) with B_j^d(s) ≥ 0 and Σ_j B_j^d(s) = 1, so P is at least",
+    "its least Bernstein coefficient; halving by de Casteljau's algorithm gives the coefficients of each half.",
+    "All coefficients ≥ 0 on every subinterval prove P ≥ 0 (and > 0 when the end values are > 0); a value",
+    "< 0 at an end or a midpoint, computed exactly, refutes the claim.",
+];
+
+/// The argument for every n (after the first values are checked as above).
+pub const ARGUMENT_FOR_EVERY: &[&str] = &[
+    "For every n: on each piece of the domain every live term of lhs − rhs is a product of factors ≥ 0",
+    "on [a, b] (positive constants and factorials of arguments ≥ 0, powers with exponent ≥ 0 of",
+    "polynomials with Bernstein coefficients ≥ 0), so their sum is ≥ 0.",
+];
+
 /// Most halvings of `[a, b]` (so at most 2^`MAX_DEPTH` subintervals).
 pub const MAX_DEPTH: usize = 12;
 
