@@ -172,6 +172,12 @@ pub struct Claim {
     /// convergence: the largest number of elevation steps.
     pub steps: Option<usize>,
 
+    /// identity with open ranges: WZ certificates `R`, one per sum with a symbolic bound
+    /// (innermost first); a single string or a list.
+    pub certificate: Option<Certificates>,
+    /// inequality: `">="` (default) or `">"`.
+    pub relation: Option<String>,
+
     /// fit: the printed (or stated) tangent length `k` of text 004's cubic, if any.
     pub k: Option<Number>,
     /// fit: the printed tangent length `l`, if any.
@@ -180,7 +186,32 @@ pub struct Claim {
     pub delta2: Option<Number>,
 }
 
+/// One certificate or a list of them.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(untagged)]
+pub enum Certificates {
+    /// One certificate.
+    One(String),
+    /// Several, in order.
+    Many(Vec<String>),
+}
+
 impl Claim {
+    /// The certificates, in order.
+    pub fn certificates(&self) -> Vec<String> {
+        match &self.certificate {
+            None => Vec::new(),
+            Some(Certificates::One(s)) => vec![s.clone()],
+            Some(Certificates::Many(v)) => v.clone(),
+        }
+    }
+
+    /// Whether a range is open (`n = 0..`): the claim is then proved for every value or not at
+    /// all, never in a range.
+    pub fn for_every(&self) -> bool {
+        super::symbolic::is_for_every(self)
+    }
+
     /// Whether the claim is checked over finite integer ranges (`for`, or a theorem's
     /// `degrees`): then the strongest verdict it can get is `proved_in_range`.
     pub fn has_ranges(&self) -> bool {
@@ -191,7 +222,7 @@ impl Claim {
     /// (`proved_in_range` for a claim over ranges, `proved` otherwise).
     pub fn expected(&self) -> Result<Verdict> {
         match self.expect.as_deref() {
-            None if self.has_ranges() => Ok(Verdict::ProvedInRange),
+            None if self.has_ranges() && !self.for_every() => Ok(Verdict::ProvedInRange),
             None | Some("proved") => Ok(Verdict::Proved),
             Some("proved_in_range") => Ok(Verdict::ProvedInRange),
             Some("verified") => Ok(Verdict::Verified),

@@ -796,6 +796,7 @@ impl<'e, A: Alg> Evaluator<'e, A> {
                     .ok_or_else(|| Error::Domain(format!("'{e}': {} has no coordinate {k}", v.shape())))?;
                 Value::S((*x).clone())
             }
+            "integral" => Value::S(integral(self, e, args)?),
             "det" | "inv" => {
                 let m = match self.eval(&args[0])? {
                     Value::M(m) if m.len() == m[0].len() && m.len() <= 4 => m,
@@ -909,6 +910,55 @@ pub fn bernstein_formula<A: Alg>(i: i64, n: i64, g: &A) -> Result<A> {
     }
     let c = A::from_bigint(&binomial_signed(n, i));
     Ok(c.mul(&g.pow(i)?).mul(&A::from_int(1).sub(g).pow(n - i)?))
+}
+
+/// `∫_a^b e dt` for an integrand that is a polynomial in `t` alone (and the integer ranges):
+/// expanded exactly, integrated term by term, its antiderivative evaluated at `b` and `a` in
+/// the evaluator's algebra (so the bounds may be parameters, and degree bounds compose).
+fn integral<A: Alg>(ev: &mut Evaluator<'_, A>, e: &Expr, args: &[Expr]) -> Result<A> {
+    use super::poly::{current_names, set_names, Poly, RatFunc};
+    let Expr::Var(t) = &args[1] else {
+        return Err(Error::Domain(format!(
+            "'{e}': the variable of integration must be a name"
+        )));
+    };
+    let names: std::rc::Rc<[String]> = std::rc::Rc::from(vec![t.clone()]);
+    let degrees = std::iter::once((t.clone(), Value::S(Deg::var(t)))).collect();
+    super::engine::check_symbolic_degrees(degrees, &ev.ints, &[&args[0]])?;
+    let saved = current_names();
+    set_names(&names);
+    let mut vars = BTreeMap::new();
+    vars.insert(t.clone(), Value::S(RatFunc::poly(Poly::var(&names, 0))));
+    let env = VarEnv(vars);
+    let expanded = Evaluator::new(&env, ev.ints.clone()).scalar(&args[0]);
+    set_names(&saved);
+    let f = expanded.map_err(|err| {
+        Error::Domain(format!(
+            "'{e}': the integrand must be a polynomial in {t} (and the integer ranges) only: {err}"
+        ))
+    })?;
+    let den = f
+        .den
+        .as_constant()
+        .filter(|d| !d.is_zero())
+        .ok_or_else(|| Error::Domain(format!("'{e}': the integrand must be a polynomial in {t}")))?;
+    let (a, b) = (ev.scalar(&args[2])?, ev.scalar(&args[3])?);
+    // F(x) = Σ c_k x^(k+1) / (k+1), by Horner on the coefficients of F.
+    let mut coeffs: Vec<BigRational> = Vec::new();
+    for (exp, c) in f.num.terms_list() {
+        let k = exp[0] as usize;
+        if coeffs.len() <= k + 1 {
+            coeffs.resize(k + 2, BigRational::zero());
+        }
+        coeffs[k + 1] = c / (&den * BigRational::from_integer(BigInt::from(k + 1)));
+    }
+    let at = |x: &A| {
+        coeffs
+            .iter()
+            .rev()
+            .fold(A::from_int(0), |acc, c| acc.mul(x).add(&A::from_rat(c)))
+    };
+    Ok(at(&b).sub(&at(&a)))
 }
 
 fn transpose<A: Alg>(v: Value<A>) -> Result<Value<A>> {

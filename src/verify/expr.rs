@@ -22,7 +22,7 @@
 //! (zero outside `0 ≤ k ≤ n`), `sum(r, a, b, body)` (`a ≤ r ≤ b`, empty when `a > b`),
 //! `sqrt(d)` (exact), `diff(e, t)` / `diff(e, t, k)`, `dot(a, b)`, `det(M)`, `inv(M)`,
 //! `rows(v1, v2, …)`, `cols(v1, v2, …)`, `transpose(M)`, `comp(v, k)` (the `k`-th coordinate,
-//! from 1), `delta(b, k, j)` (forward difference
+//! from 1), `integral(e, t, a, b)` (exact, for a polynomial integrand in `t`), `delta(b, k, j)` (forward difference
 //! `Δ^k b_j` of a control polygon). Claim objects are called by name: `b(t)` (a curve),
 //! `b(i, r, t)` (the de Casteljau point `b_i^r(t)`), `b'(t)` (derivative), `b[j]` (a control
 //! point), `x(u, v)` (a surface).
@@ -65,6 +65,7 @@ pub const FUNCTIONS: &[&str] = &[
     "transpose",
     "delta",
     "comp",
+    "integral",
 ];
 
 /// A binary operator.
@@ -157,6 +158,10 @@ impl Expr {
             Expr::Bin(_, a, b) => {
                 a.collect_vars(bound, out);
                 b.collect_vars(bound, out);
+            }
+            Expr::Call(name, args) if name == "integral" && args.len() == 4 && matches!(args[1], Expr::Var(_)) => {
+                // The variable of integration is bound in the integrand, as a sum's is.
+                as_binder(args).collect_vars(bound, out);
             }
             Expr::Call(_, args) | Expr::Index(_, args) | Expr::Tuple(args) => {
                 for a in args {
@@ -663,6 +668,7 @@ fn check_arity(name: &str, n: usize) -> std::result::Result<(), String> {
         "sqrt" | "det" | "inv" | "transpose" => n == 1,
         "diff" => n == 2 || n == 3,
         "delta" => n == 3,
+        "integral" => n == 4,
         "rows" | "cols" => n >= 1,
         _ => true,
     };
@@ -676,6 +682,7 @@ fn check_arity(name: &str, n: usize) -> std::result::Result<(), String> {
             "comp" => "2 arguments: comp(v, k), the k-th coordinate (from 1)",
             "diff" => "2 or 3 arguments: diff(e, t) or diff(e, t, k)",
             "delta" => "3 arguments: delta(b, k, j)",
+            "integral" => "4 arguments: integral(e, t, a, b)",
             "rows" | "cols" => "at least one argument",
             _ => "1 argument",
         };
@@ -841,8 +848,28 @@ pub fn substitute(e: &Expr, params: &[String], args: &[Expr]) -> Expr {
                 Box::new(substitute(&body, &p2, &a2)),
             )
         }
+        Expr::Call(name, cargs) if name == "integral" && cargs.len() == 4 && matches!(cargs[1], Expr::Var(_)) => {
+            // Hygienic like a sum: the variable of integration is renamed rather than capture.
+            match substitute(&as_binder(cargs), params, args) {
+                Expr::Sum(v, a, b, body) => Expr::Call(name.clone(), vec![*body, Expr::Var(v), *a, *b]),
+                other => other,
+            }
+        }
         _ => map_children(e, &mut |x| Ok(substitute(x, params, args))).expect("substitution cannot fail"),
     }
+}
+
+/// `integral(e, t, a, b)` as the binder `sum(t, a, b, e)`, for scoping only.
+fn as_binder(args: &[Expr]) -> Expr {
+    let Expr::Var(v) = &args[1] else {
+        unreachable!("checked by the callers")
+    };
+    Expr::Sum(
+        v.clone(),
+        Box::new(args[2].clone()),
+        Box::new(args[3].clone()),
+        Box::new(args[0].clone()),
+    )
 }
 
 /// Orders definitions so that each comes after the definitions it uses (any order may be
@@ -1069,7 +1096,7 @@ fn derive_call(e: &Expr, name: &str, args: &[Expr], var: &str) -> Result<Expr> {
             Ok(smul(Expr::Call("__dB".into(), a), derive(&args[2], var)?))
         }
         "__dB" | "__dpow" => bump_order(name, args, var, e),
-        "C" | "binom" | "delta" | "sqrt" => {
+        "C" | "binom" | "delta" | "sqrt" | "integral" => {
             if args.iter().any(|a| a.mentions(var)) {
                 return Err(unsupported());
             }

@@ -19,7 +19,19 @@ pub const KIND_FIELDS: &[(&str, &[&str])] = &[
     (
         "identity",
         &[
-            "lhs", "rhs", "chain", "vars", "for", "let", "polygon", "net", "symbols", "vectors", "curves", "surfaces",
+            "lhs",
+            "rhs",
+            "chain",
+            "vars",
+            "for",
+            "let",
+            "polygon",
+            "net",
+            "symbols",
+            "vectors",
+            "curves",
+            "surfaces",
+            "certificate",
         ],
     ),
     (
@@ -39,6 +51,10 @@ pub const KIND_FIELDS: &[(&str, &[&str])] = &[
     ("theorem", &["theorem", "degrees"]),
     ("convergence", &["curves", "steps"]),
     ("fit", &["curves", "k", "l", "delta2"]),
+    (
+        "inequality",
+        &["lhs", "rhs", "relation", "interval", "vars", "for", "let"],
+    ),
 ];
 
 /// Names the parser and evaluator give a meaning of their own (besides [`FUNCTIONS`] and the
@@ -81,6 +97,8 @@ fn present(c: &Claim) -> Vec<&'static str> {
     add(c.k.is_some(), "k");
     add(c.l.is_some(), "l");
     add(c.delta2.is_some(), "delta2");
+    add(c.certificate.is_some(), "certificate");
+    add(c.relation.is_some(), "relation");
     out
 }
 

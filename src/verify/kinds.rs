@@ -10,6 +10,7 @@
 //! | `theorem`       | a general theorem of the texts for every degree in `degrees`          |
 //! | `convergence`   | Theorem 1.2 (bounded evidence: `verified`)                            |
 //! | `fit`           | text 004's cubic fit of a concrete curve: (11) = (13), ∇δ² = 0, printed k, l, δ² |
+//! | `inequality`    | `lhs ≥ rhs` (or `>`) on an interval, by a Bernstein certificate or an exact point |
 
 use super::claims::{Claim, CurveSpec, Number};
 use super::engine::{check_chain, check_chain_symbolic, check_implies, points, Checked, Ctx, CurveObj};
@@ -35,6 +36,22 @@ use std::rc::Rc;
 /// `proved_in_range` with the ranges: the scope is decided here, once, for every kind.
 pub fn check_claim(claim: &Claim, detail: bool) -> Result<Checked> {
     super::fields::check_fields(claim)?;
+    if claim.for_every() {
+        return match claim.kind.as_str() {
+            "identity" if claim.symbols.is_none() && claim.vectors.is_none() => super::symbolic::check(claim, detail),
+            "inequality" => super::inequality::check_for_every(claim, detail),
+            _ => Err(Error::Parse(format!(
+                "claim {}: open ranges (n = 0..) are for identity (without symbols or vectors) and inequality claims",
+                claim.id
+            ))),
+        };
+    }
+    if claim.certificate.is_some() {
+        return Err(Error::Parse(format!(
+            "claim {}: a certificate belongs to a claim with an open range (n = 0..)",
+            claim.id
+        )));
+    }
     let ctx = Ctx::new(claim)?;
     let mut out = check_kind(&ctx, detail)?;
     if out.verdict == Verdict::Proved {
@@ -66,8 +83,9 @@ fn check_kind(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
         "weight_type" => check_weight_type(ctx),
         "convergence" => theorems::check_convergence(ctx, detail),
         "fit" => check_fit(ctx),
+        "inequality" => super::inequality::check_inequality(ctx, detail),
         other => Err(Error::Parse(format!(
-            "claim {}: unknown kind '{other}' (identity, implicit, bezier_points, conic_type, weight_type, enneper, implies, theorem, convergence, fit)",
+            "claim {}: unknown kind '{other}' (identity, implicit, bezier_points, conic_type, weight_type, enneper, implies, theorem, convergence, fit, inequality)",
             claim.id
         ))),
     }

@@ -32,15 +32,19 @@
 //! assert!(out.certificate.contains("degree ≤ 3 in t"));
 //! ```
 
+pub mod ansatz;
 pub mod claims;
 pub mod engine;
 pub mod eval;
 pub mod expr;
 pub mod fields;
+pub mod hyper;
+pub mod inequality;
 pub mod kinds;
 pub mod methods;
 pub mod poly;
 mod report;
+pub mod symbolic;
 pub mod theorems;
 
 use crate::error::{Error, Result};

@@ -269,6 +269,11 @@ fn names() -> Rc<[String]> {
     NAMES.with(|n| n.borrow().clone())
 }
 
+/// The variable names set by [`set_names`] (to restore them after a nested expansion).
+pub fn current_names() -> Rc<[String]> {
+    names()
+}
+
 impl Alg for RatFunc {
     fn from_rat(r: &BigRational) -> Self {
         RatFunc::poly(Poly::constant(&names(), r))

@@ -276,7 +276,14 @@ fn sample_evaluations<'a>(case: &Case<'a>, k: usize) -> Vec<&'a str> {
 fn argument(c: &Claim, checked: &Checked) -> Vec<String> {
     let by_points = checked.steps.iter().any(|l| l.contains("points suffice"));
     let mut a = Vec::new();
-    if by_points {
+    if c.kind == "inequality" {
+        a.extend(super::inequality::ARGUMENT.iter().map(|l| l.to_string()));
+        if checked.certificate.starts_with("for every") {
+            a.extend(super::inequality::ARGUMENT_FOR_EVERY.iter().map(|l| l.to_string()));
+        }
+    } else if checked.certificate.starts_with("for every") {
+        a.extend(super::symbolic::ARGUMENT.iter().map(|l| l.to_string()));
+    } else if by_points {
         let vars = c
             .vars
             .as_ref()

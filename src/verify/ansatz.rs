@@ -1,0 +1,183 @@
+//! Finding a WZ certificate when the claim gives none: an ansatz `R = P / D` solved by exact
+//! linear algebra.
+//!
+//! For one term `F`, the quotients `r1 = F(n+1, k)/F(n, k)` and `r2 = F(n, k+1)/F(n, k)` are
+//! rational functions ([`hyper::ratio`]). The WZ equation divided by `F(n, k)` is
+//! `r1 − 1 = R(k+1)·r2 − R(k)`. The denominator `D` is guessed as the denominator factors of `r1`
+//! (the factorials of `F` that grow with `n`, as in Gosper's algorithm), and the numerator `P` as
+//! a polynomial of total degree ≤ [`MAX_DEGREE`] in every symbol and parameter with unknown
+//! rational coefficients; clearing denominators gives a linear system over `Q`, row-reduced
+//! exactly. A solution is only a candidate: it is returned as an expression and checked like a
+//! given certificate (the WZ equation on the whole range with its boundary pieces, the ends, the
+//! base case), so the search can fail to find a certificate but never proves anything itself.
+
+use super::eval::Alg;
+use super::expr::{self, Expr};
+use super::hyper::{ratio, ratio_denominator, Aff, Symbols, Term};
+use super::poly::{Poly, RatFunc};
+use crate::error::{Error, Result};
+use crate::linalg::row_reduce;
+use num_rational::BigRational;
+use num_traits::{One, Zero};
+use std::collections::BTreeMap;
+
+/// Largest total degree of the numerator tried.
+pub const MAX_DEGREE: u32 = 3;
+/// Most unknown coefficients in one ansatz.
+const MAX_UNKNOWNS: usize = 400;
+
+fn monomials(vars: usize, deg: u32) -> Vec<Vec<u16>> {
+    let mut out = vec![Vec::new()];
+    for _ in 0..vars {
+        let mut next = Vec::new();
+        for m in &out {
+            let used: u32 = m.iter().map(|&x| u32::from(x)).sum();
+            for e in 0..=(deg - used) {
+                let mut m2 = m.clone();
+                m2.push(e as u16);
+                next.push(m2);
+            }
+        }
+        out = next;
+    }
+    out
+}
+
+fn monomial(sym: &Symbols, e: &[u16]) -> RatFunc {
+    let mut m = RatFunc::from_int(1);
+    for (k, &x) in e.iter().enumerate() {
+        for _ in 0..x {
+            m = m.mul(&sym.var(&sym.names[k]));
+        }
+    }
+    m
+}
+
+fn show_monomial(sym: &Symbols, e: &[u16]) -> String {
+    let parts: Vec<String> = e
+        .iter()
+        .enumerate()
+        .filter(|(_, &x)| x > 0)
+        .map(|(k, &x)| {
+            if x == 1 {
+                sym.names[k].clone()
+            } else {
+                format!("{}^{x}", sym.names[k])
+            }
+        })
+        .collect();
+    if parts.is_empty() {
+        "1".into()
+    } else {
+        parts.join("*")
+    }
+}
+
+/// A candidate certificate `R` for `Σ_k F(n, k)` with `F` one term, or an error saying why none
+/// was found.
+pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str) -> Result<Expr> {
+    let none = |why: String| Error::Domain(format!("no WZ certificate given, and none found: {why}"));
+    if f.coef.num.is_zero() {
+        return Err(none("the summand is 0".into()));
+    }
+    let n1 = f.subst(sym, n, &Aff::var(n).shifted(1));
+    let k1 = f.subst(sym, k, &Aff::var(k).shifted(1));
+    let quotient = |g: &Term| -> Result<Option<RatFunc>> {
+        Ok(match ratio(sym, g, f)? {
+            Some(r) => Some(g.coef.mul(&r).div(&f.coef)?),
+            None => None,
+        })
+    };
+    let (Some(r1), Some(r2)) = (quotient(&n1)?, quotient(&k1)?) else {
+        return Err(none("the summand is not hypergeometric in n and k".into()));
+    };
+    let (affs, polys) = ratio_denominator(&n1, f);
+    let mut d = RatFunc::from_int(1);
+    let mut d_text: Vec<String> = Vec::new();
+    for a in &affs {
+        d = d.mul(&a.to_rf(sym));
+        d_text.push(format!("({a})"));
+    }
+    for p in &polys {
+        d = d.mul(&RatFunc::poly(p.clone()));
+        d_text.push(format!("({p})"));
+    }
+    let d1 = sym.subst_rf(&d, k, &Aff::var(k).shifted(1));
+    let e0 = r1.sub(&RatFunc::from_int(1));
+    for deg in 0..=MAX_DEGREE {
+        let monos = monomials(sym.names.len(), deg);
+        if monos.len() > MAX_UNKNOWNS {
+            break;
+        }
+        // E_i = m_i/D − m_i(k+1)/D(k+1) · r2; Σ c_i E_i = −E_0.
+        let es: Vec<RatFunc> = monos
+            .iter()
+            .map(|e| {
+                let m = monomial(sym, e);
+                let m1 = sym.subst_rf(&m, k, &Aff::var(k).shifted(1));
+                let a = m.div(&d)?;
+                let b = m1.div(&d1)?.mul(&r2);
+                Ok(a.sub(&b))
+            })
+            .collect::<Result<_>>()?;
+        let q = es[0].den.clone();
+        if es.iter().any(|x| x.den != q) {
+            return Err(none("the ansatz's denominators differ".into()));
+        }
+        // Σ c_i E_i.num · E0.den = −E0.num · Q, coefficient by coefficient.
+        let cols: Vec<Poly> = es.iter().map(|x| x.num.mul(&e0.den)).collect();
+        let rhs = e0.num.mul(&q);
+        let mut rows: BTreeMap<Vec<u16>, Vec<BigRational>> = BTreeMap::new();
+        let width = cols.len() + 1;
+        for (j, c) in cols.iter().enumerate() {
+            for (e, v) in c.terms_list() {
+                rows.entry(e).or_insert_with(|| vec![BigRational::zero(); width])[j] += v;
+            }
+        }
+        for (e, v) in rhs.terms_list() {
+            rows.entry(e).or_insert_with(|| vec![BigRational::zero(); width])[width - 1] -= v;
+        }
+        let mut a: Vec<Vec<BigRational>> = rows.into_values().collect();
+        let pivots = row_reduce(&mut a)?;
+        if pivots.contains(&(width - 1)) {
+            continue;
+        }
+        let mut c = vec![BigRational::zero(); width - 1];
+        for (r, &p) in pivots.iter().enumerate() {
+            c[p] = a[r][width - 1].clone() / &a[r][p];
+        }
+        if c.iter().all(Zero::is_zero) && !e0.num.is_zero() {
+            continue;
+        }
+        let terms: Vec<String> = monos
+            .iter()
+            .zip(&c)
+            .filter(|(_, x)| !x.is_zero())
+            .map(|(e, x)| {
+                let m = show_monomial(sym, e);
+                if x.is_one() {
+                    m
+                } else if (-x.clone()).is_one() {
+                    format!("-{m}")
+                } else {
+                    format!("({x})*{m}")
+                }
+            })
+            .collect();
+        let p = if terms.is_empty() {
+            "0".to_string()
+        } else {
+            terms.join(" + ")
+        };
+        let text = if d_text.is_empty() {
+            format!("({p})")
+        } else {
+            format!("({p})/({})", d_text.join("*"))
+        };
+        let known: Vec<String> = sym.names.iter().cloned().collect();
+        return expr::parse(&text, &known);
+    }
+    Err(none(format!(
+        "no R = P/D with P of total degree ≤ {MAX_DEGREE} solves the WZ equation (D from the factorials of F that grow with n)"
+    )))
+}

@@ -1,0 +1,1077 @@
+//! Hypergeometric terms in symbolic integers, and exact proofs that a finite sum of them is
+//! zero for every integer point of a polyhedral domain.
+//!
+//! A [`Term`] is `coef · Π (a_m)!^{±1} · Π base_l^{e_l}`, with `coef` a rational function of the
+//! integer symbols and the continuous parameters, `a_m` and `e_l` affine in the integer symbols,
+//! and `base_l` a polynomial in the continuous parameters only. Its value at an integer point:
+//! zero when a *support* condition (`a ≥ 0`, from the conventions `B(i, n, t) = 0` outside
+//! `0 ≤ i ≤ n`, `C(n, k) = 0` outside `0 ≤ k ≤ n`, `b[j] = 0` outside the polygon), a Kronecker
+//! delta (`[a = 0]`, from a unit control polygon) or a reciprocal factorial (`1/a! = 0` for
+//! `a < 0`) says so; otherwise the formula, which must then be defined (numerator factorials of
+//! integers ≥ 0, denominators ≠ 0).
+//!
+//! [`prove_zero`] decides `Σ_j T_j = 0` on every integer point of a domain `{x : A x + c ≥ 0}`:
+//! the domain is split (exactly, by affine conditions) until in each piece every condition of
+//! every term holds throughout or fails throughout — which is decided by Fourier–Motzkin
+//! elimination over the rationals with integer tightening, a sound emptiness test for integer
+//! points. In a piece, the dead terms are dropped and the rest are divided by the first live term
+//! `T_0`: every `T_j / T_0` is then a rational function (factorials with the same linear part
+//! pair into products of affine factors, which are positive because every factorial argument is
+//! ≥ 0 there; powers of the same base with exponents differing by a constant give a power), and
+//! `Σ_j T_j = 0` ⟺ `Σ_j T_j / T_0 = 0`, an identity of rational functions in all the symbols,
+//! checked exactly. An equality piece (`a = 0`) is handled by substituting one variable.
+
+use super::eval::Alg;
+use super::poly::{Poly, RatFunc};
+use crate::error::{Error, Result};
+use num_rational::BigRational;
+use num_traits::{One, Signed, ToPrimitive};
+use std::collections::{BTreeMap, BTreeSet};
+use std::fmt;
+use std::rc::Rc;
+
+/// Most pieces one proof may split its domain into.
+pub const MAX_REGIONS: usize = 20_000;
+/// Most constraints Fourier–Motzkin may hold while eliminating one variable (beyond it the
+/// test answers "maybe feasible", which only costs splits, never soundness).
+const MAX_FM: usize = 4_000;
+
+/// An affine form `c + Σ a_v v` in integer symbols, integer coefficients.
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct Aff {
+    /// The constant.
+    pub c: i64,
+    /// The coefficients (never zero).
+    pub v: BTreeMap<String, i64>,
+}
+
+impl Aff {
+    /// The constant `c`.
+    pub fn constant(c: i64) -> Aff {
+        Aff { c, v: BTreeMap::new() }
+    }
+    /// The variable `name`.
+    pub fn var(name: &str) -> Aff {
+        let mut v = BTreeMap::new();
+        v.insert(name.to_string(), 1);
+        Aff { c: 0, v }
+    }
+    /// The coefficient of `name`.
+    pub fn coef(&self, name: &str) -> i64 {
+        self.v.get(name).copied().unwrap_or(0)
+    }
+    /// Whether the form is a constant.
+    pub fn is_const(&self) -> bool {
+        self.v.is_empty()
+    }
+    /// `self + k·o`.
+    pub fn add_scaled(&self, o: &Aff, k: i64) -> Aff {
+        let mut out = self.clone();
+        out.c += k * o.c;
+        for (name, a) in &o.v {
+            let e = out.v.entry(name.clone()).or_insert(0);
+            *e += k * a;
+            if *e == 0 {
+                out.v.remove(name);
+            }
+        }
+        out
+    }
+    /// `self + o`.
+    pub fn plus(&self, o: &Aff) -> Aff {
+        self.add_scaled(o, 1)
+    }
+    /// `self − o`.
+    pub fn minus(&self, o: &Aff) -> Aff {
+        self.add_scaled(o, -1)
+    }
+    /// `k · self`.
+    pub fn scaled(&self, k: i64) -> Aff {
+        Aff::constant(0).add_scaled(self, k)
+    }
+    /// `self + k`.
+    pub fn shifted(&self, k: i64) -> Aff {
+        let mut out = self.clone();
+        out.c += k;
+        out
+    }
+    /// `self` with `name` replaced by `by`.
+    pub fn subst(&self, name: &str, by: &Aff) -> Aff {
+        let a = self.coef(name);
+        if a == 0 {
+            return self.clone();
+        }
+        let mut out = self.clone();
+        out.v.remove(name);
+        out.add_scaled(by, a)
+    }
+    /// The linear part (the constant dropped).
+    pub fn linear(&self) -> BTreeMap<String, i64> {
+        self.v.clone()
+    }
+    /// As a rational function over the symbol list.
+    pub fn to_rf(&self, sym: &Symbols) -> RatFunc {
+        let mut out = RatFunc::from_int(self.c);
+        for (name, a) in &self.v {
+            out = out.add(&RatFunc::from_int(*a).mul(&sym.var(name)));
+        }
+        out
+    }
+}
+
+impl fmt::Display for Aff {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let mut first = true;
+        for (name, a) in &self.v {
+            let sign = if *a < 0 { "-" } else { "+" };
+            let mag = a.abs();
+            let coef = if mag == 1 { String::new() } else { mag.to_string() };
+            if first {
+                write!(f, "{}{coef}{name}", if *a < 0 { "-" } else { "" })?;
+            } else {
+                write!(f, " {sign} {coef}{name}")?;
+            }
+            first = false;
+        }
+        if first {
+            write!(f, "{}", self.c)
+        } else if self.c != 0 {
+            write!(f, " {} {}", if self.c < 0 { "-" } else { "+" }, self.c.abs())
+        } else {
+            Ok(())
+        }
+    }
+}
+
+/// The variable list every polynomial of one proof is built over: integer symbols, then
+/// continuous parameters.
+#[derive(Clone, Debug)]
+pub struct Symbols {
+    /// All names, integer symbols first.
+    pub names: Rc<[String]>,
+    /// How many of them are integer symbols.
+    pub ints: usize,
+}
+
+impl Symbols {
+    /// Builds the list (and makes it the one rational constants are built over).
+    pub fn new(ints: &[String], conts: &[String]) -> Symbols {
+        let names: Vec<String> = ints.iter().chain(conts).cloned().collect();
+        let names: Rc<[String]> = Rc::from(names);
+        super::poly::set_names(&names);
+        Symbols {
+            names,
+            ints: ints.len(),
+        }
+    }
+    /// The index of a name.
+    pub fn index(&self, name: &str) -> Option<usize> {
+        self.names.iter().position(|n| n == name)
+    }
+    /// Whether `name` is an integer symbol.
+    pub fn is_int(&self, name: &str) -> bool {
+        self.index(name).is_some_and(|k| k < self.ints)
+    }
+    /// Whether `name` is a continuous parameter.
+    pub fn is_cont(&self, name: &str) -> bool {
+        self.index(name).is_some_and(|k| k >= self.ints)
+    }
+    /// The variable `name` as a rational function (0 if unknown: callers check names first).
+    pub fn var(&self, name: &str) -> RatFunc {
+        match self.index(name) {
+            Some(k) => RatFunc::poly(Poly::var(&self.names, k)),
+            None => RatFunc::from_int(0),
+        }
+    }
+    fn poly_from_terms(&self, terms: &[(Vec<u16>, BigRational)]) -> Poly {
+        let mut out = RatFunc::from_int(0);
+        for (e, c) in terms {
+            let mut m = RatFunc::from_rat(c);
+            for (k, &x) in e.iter().enumerate() {
+                for _ in 0..x {
+                    m = m.mul(&RatFunc::poly(Poly::var(&self.names, k)));
+                }
+            }
+            out = out.add(&m);
+        }
+        out.num
+    }
+    /// Whether a polynomial mentions an integer symbol.
+    pub fn poly_has_ints(&self, p: &Poly) -> bool {
+        p.terms_list()
+            .iter()
+            .any(|(e, _)| e[..self.ints].iter().any(|&x| x > 0))
+    }
+    /// Whether a polynomial mentions a continuous parameter.
+    pub fn poly_has_conts(&self, p: &Poly) -> bool {
+        p.terms_list()
+            .iter()
+            .any(|(e, _)| e[self.ints..].iter().any(|&x| x > 0))
+    }
+    /// A polynomial of degree ≤ 1 in the integer symbols with integer coefficients and no
+    /// continuous parameter, as an affine form.
+    pub fn poly_to_aff(&self, p: &Poly) -> Option<Aff> {
+        let mut out = Aff::constant(0);
+        for (e, c) in p.terms_list() {
+            if !c.is_integer() {
+                return None;
+            }
+            let c = c.to_integer().to_i64()?;
+            let deg: u32 = e.iter().map(|&x| u32::from(x)).sum();
+            match deg {
+                0 => out.c += c,
+                1 => {
+                    let k = e.iter().position(|&x| x == 1)?;
+                    if k >= self.ints {
+                        return None;
+                    }
+                    out.v.insert(self.names[k].clone(), c);
+                }
+                _ => return None,
+            }
+        }
+        Some(out)
+    }
+    /// A rational function that is affine in the integer symbols (constant denominator).
+    pub fn rf_to_aff(&self, r: &RatFunc) -> Option<Aff> {
+        let d = r.den.as_constant()?;
+        if !d.is_one() {
+            let scaled = RatFunc::poly(r.num.clone()).div(&RatFunc::from_rat(&d)).ok()?;
+            return self.poly_to_aff(&scaled.num);
+        }
+        self.poly_to_aff(&r.num)
+    }
+    /// `p` with the integer symbol `name` replaced by `by`.
+    pub fn subst_poly(&self, p: &Poly, name: &str, by: &Aff) -> Poly {
+        let Some(k) = self.index(name) else {
+            return p.clone();
+        };
+        let terms = p.terms_list();
+        if terms.iter().all(|(e, _)| e[k] == 0) {
+            return p.clone();
+        }
+        let by = by.to_rf(self);
+        let mut out = RatFunc::from_int(0);
+        for (mut e, c) in terms {
+            let x = e[k];
+            e[k] = 0;
+            let mut m = RatFunc::poly(self.poly_from_terms(&[(e, c)]));
+            for _ in 0..x {
+                m = m.mul(&by);
+            }
+            out = out.add(&m);
+        }
+        out.num
+    }
+    /// `r` with `name` replaced by `by`.
+    pub fn subst_rf(&self, r: &RatFunc, name: &str, by: &Aff) -> RatFunc {
+        RatFunc {
+            num: self.subst_poly(&r.num, name, by),
+            den: self.subst_poly(&r.den, name, by),
+        }
+    }
+}
+
+/// The base of a power with a symbolic exponent: a rational constant or a normalised
+/// non-constant polynomial in the continuous parameters (first coefficient 1).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Base {
+    /// A nonzero rational constant.
+    Const(BigRational),
+    /// A non-constant polynomial with first coefficient 1.
+    Poly(Poly),
+}
+
+impl Base {
+    fn to_rf(&self) -> RatFunc {
+        match self {
+            Base::Const(c) => RatFunc::from_rat(c),
+            Base::Poly(p) => RatFunc::poly(p.clone()),
+        }
+    }
+}
+
+impl fmt::Display for Base {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Base::Const(c) => write!(f, "{c}"),
+            Base::Poly(p) => write!(f, "({p})"),
+        }
+    }
+}
+
+/// Splits a nonzero polynomial in the continuous parameters into `c · Π x^α · q` and returns
+/// the powers `base^(k·e)` of `p^e`.
+pub fn power_of(sym: &Symbols, p: &Poly, e: &Aff) -> Result<Vec<(Base, Aff)>> {
+    let terms = p.terms_list();
+    if terms.is_empty() {
+        return Err(Error::Domain(format!(
+            "the base of the power with symbolic exponent {e} is zero"
+        )));
+    }
+    if sym.poly_has_ints(p) {
+        return Err(Error::Domain(format!(
+            "the base ({p}) of a power with symbolic exponent {e} involves an integer symbol: not a hypergeometric term"
+        )));
+    }
+    let c = terms[0].1.clone();
+    let width = terms[0].0.len();
+    let alpha: Vec<u16> = (0..width)
+        .map(|k| terms.iter().map(|(x, _)| x[k]).min().unwrap_or(0))
+        .collect();
+    let q: Vec<(Vec<u16>, BigRational)> = terms
+        .iter()
+        .map(|(x, a)| (x.iter().zip(&alpha).map(|(u, v)| u - v).collect(), a / &c))
+        .collect();
+    let mut out = Vec::new();
+    if !c.is_one() {
+        out.push((Base::Const(c), e.clone()));
+    }
+    for (k, &a) in alpha.iter().enumerate() {
+        if a > 0 {
+            out.push((Base::Poly(Poly::var(&sym.names, k)), e.scaled(i64::from(a))));
+        }
+    }
+    let qp = sym.poly_from_terms(&q);
+    if qp.as_constant().is_none() {
+        out.push((Base::Poly(qp), e.clone()));
+    }
+    Ok(out)
+}
+
+/// One hypergeometric term (see the module documentation for its value).
+#[derive(Clone, Debug)]
+pub struct Term {
+    /// The rational coefficient.
+    pub coef: RatFunc,
+    /// Factorials `(arg)!^{+1}` (numerator) or `^{-1}` (denominator).
+    pub facts: Vec<(Aff, i8)>,
+    /// Powers with affine exponents.
+    pub pows: Vec<(Base, Aff)>,
+    /// The term is zero unless each is ≥ 0.
+    pub support: Vec<Aff>,
+    /// The term is zero unless each is 0.
+    pub deltas: Vec<Aff>,
+    /// Each must be ≥ 0 for the term to be defined (a divisor that may vanish otherwise).
+    pub defined: Vec<Aff>,
+    /// Each must be ≠ 0 (an affine divisor).
+    pub nonzero: Vec<Aff>,
+    /// The degree in the symbolic control polygon (0 or 1).
+    pub bdeg: u8,
+}
+
+impl Term {
+    /// The term `coef`.
+    pub fn scalar(coef: RatFunc) -> Term {
+        Term {
+            coef,
+            facts: Vec::new(),
+            pows: Vec::new(),
+            support: Vec::new(),
+            deltas: Vec::new(),
+            defined: Vec::new(),
+            nonzero: Vec::new(),
+            bdeg: 0,
+        }
+    }
+    /// The product of two terms.
+    pub fn times(&self, o: &Term) -> Result<Term> {
+        if self.bdeg + o.bdeg > 1 {
+            return Err(Error::Domain(
+                "a product of symbolic control points: the claim is not affine in the control polygon".into(),
+            ));
+        }
+        let mut out = self.clone();
+        out.coef = out.coef.mul(&o.coef);
+        out.facts.extend(o.facts.iter().cloned());
+        out.pows.extend(o.pows.iter().cloned());
+        out.support.extend(o.support.iter().cloned());
+        out.deltas.extend(o.deltas.iter().cloned());
+        out.defined.extend(o.defined.iter().cloned());
+        out.nonzero.extend(o.nonzero.iter().cloned());
+        out.bdeg += o.bdeg;
+        Ok(out)
+    }
+    /// The term with `name` replaced by `by`.
+    pub fn subst(&self, sym: &Symbols, name: &str, by: &Aff) -> Term {
+        let s = |v: &Vec<Aff>| v.iter().map(|a| a.subst(name, by)).collect();
+        Term {
+            coef: sym.subst_rf(&self.coef, name, by),
+            facts: self.facts.iter().map(|(a, e)| (a.subst(name, by), *e)).collect(),
+            pows: self.pows.iter().map(|(b, a)| (b.clone(), a.subst(name, by))).collect(),
+            support: s(&self.support),
+            deltas: s(&self.deltas),
+            defined: s(&self.defined),
+            nonzero: s(&self.nonzero),
+            bdeg: self.bdeg,
+        }
+    }
+    /// Whether any part mentions the integer symbol `name`.
+    pub fn mentions(&self, sym: &Symbols, name: &str) -> bool {
+        let in_aff = |v: &[Aff]| v.iter().any(|a| a.coef(name) != 0);
+        let k = sym.index(name);
+        let in_poly = |p: &Poly| k.is_some_and(|k| p.terms_list().iter().any(|(e, _)| e[k] > 0));
+        in_poly(&self.coef.num)
+            || in_poly(&self.coef.den)
+            || self.facts.iter().any(|(a, _)| a.coef(name) != 0)
+            || self.pows.iter().any(|(_, a)| a.coef(name) != 0)
+            || in_aff(&self.support)
+            || in_aff(&self.deltas)
+            || in_aff(&self.defined)
+            || in_aff(&self.nonzero)
+    }
+    /// `1 / self`, defined only where `self` is nonzero: its zero conditions become
+    /// conditions of definedness.
+    pub fn recip(&self) -> Result<Term> {
+        if !self.deltas.is_empty() || self.bdeg > 0 {
+            return Err(Error::Domain("division by a control point".into()));
+        }
+        if self.coef.num.is_zero() {
+            return Err(Error::DivisionByZero("division by zero".into()));
+        }
+        let mut defined = self.support.clone();
+        defined.extend(self.defined.iter().cloned());
+        defined.extend(self.facts.iter().map(|(a, _)| a.clone()));
+        Ok(Term {
+            coef: RatFunc {
+                num: self.coef.den.clone(),
+                den: self.coef.num.clone(),
+            },
+            facts: self.facts.iter().map(|(a, e)| (a.clone(), -e)).collect(),
+            pows: self.pows.iter().map(|(b, a)| (b.clone(), a.scaled(-1))).collect(),
+            support: Vec::new(),
+            deltas: Vec::new(),
+            defined,
+            nonzero: self.nonzero.clone(),
+            bdeg: 0,
+        })
+    }
+    /// A short readable form.
+    pub fn show(&self) -> String {
+        let coef = self.coef.to_string();
+        let mut parts = vec![if coef.contains(' ') { format!("({coef})") } else { coef }];
+        for (a, e) in &self.facts {
+            parts.push(if *e > 0 { format!("({a})!") } else { format!("1/({a})!") });
+        }
+        for (b, a) in &self.pows {
+            parts.push(format!("{b}^({a})"));
+        }
+        for d in &self.deltas {
+            parts.push(format!("[{d} = 0]"));
+        }
+        for s in &self.support {
+            parts.push(format!("[{s} ≥ 0]"));
+        }
+        parts.join("·")
+    }
+}
+
+/// A finite sum of terms.
+pub type Lin = Vec<Term>;
+
+/// `a · b` for sums of terms.
+pub fn lin_mul(a: &[Term], b: &[Term]) -> Result<Lin> {
+    let mut out = Vec::with_capacity(a.len() * b.len());
+    for x in a {
+        for y in b {
+            out.push(x.times(y)?);
+        }
+    }
+    if out.len() > 10_000 {
+        return Err(Error::TooLarge {
+            what: "symbolic expansion (terms)",
+            value: out.len().to_string(),
+            limit: "10000".into(),
+        });
+    }
+    Ok(out)
+}
+
+/// `−a`.
+pub fn lin_neg(a: &[Term]) -> Lin {
+    a.iter()
+        .map(|t| {
+            let mut t = t.clone();
+            t.coef = t.coef.neg();
+            t
+        })
+        .collect()
+}
+
+/// `a` with `name` replaced by `by`.
+pub fn lin_subst(sym: &Symbols, a: &[Term], name: &str, by: &Aff) -> Lin {
+    a.iter().map(|t| t.subst(sym, name, by)).collect()
+}
+
+// ---------------------------------------------------------------------------------------
+// Domains: integer points of {x : a(x) ≥ 0 for every constraint}.
+
+/// A domain: the integer points where every constraint is ≥ 0.
+#[derive(Clone, Debug, Default)]
+pub struct Domain {
+    /// The constraints `a ≥ 0`.
+    pub cons: Vec<Aff>,
+}
+
+impl Domain {
+    /// The domain with one more constraint.
+    pub fn with(&self, c: Aff) -> Domain {
+        let mut d = self.clone();
+        d.cons.push(c);
+        d
+    }
+    /// The domain with `name` replaced by `by`.
+    pub fn subst(&self, name: &str, by: &Aff) -> Domain {
+        Domain {
+            cons: self.cons.iter().map(|c| c.subst(name, by)).collect(),
+        }
+    }
+    /// Whether the domain may have an integer point (false: it certainly has none).
+    pub fn feasible(&self) -> bool {
+        feasible(&self.cons)
+    }
+    /// Whether `a ≥ 0` at every integer point of the domain (a proof when true).
+    pub fn implies_ge(&self, a: &Aff) -> bool {
+        !self.with(a.scaled(-1).shifted(-1)).feasible()
+    }
+    /// Readable form.
+    pub fn show(&self) -> String {
+        if self.cons.is_empty() {
+            return "every integer point".into();
+        }
+        self.cons
+            .iter()
+            .map(|c| format!("{c} ≥ 0"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+}
+
+fn gcd(a: i128, b: i128) -> i128 {
+    let (mut a, mut b) = (a.abs(), b.abs());
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a
+}
+
+/// Normalises `a·x + c ≥ 0` over the integers: divides by the gcd of `a`, rounding `c` down.
+fn tighten(mut a: Vec<i128>, c: i128) -> (Vec<i128>, i128) {
+    let g = a.iter().fold(0, |g, &x| gcd(g, x));
+    if g > 1 {
+        for x in &mut a {
+            *x /= g;
+        }
+        return (a, c.div_euclid(g));
+    }
+    (a, c)
+}
+
+/// Fourier–Motzkin: false only when the constraints have no rational (so no integer) solution.
+fn feasible(cons: &[Aff]) -> bool {
+    let vars: Vec<String> = cons
+        .iter()
+        .flat_map(|c| c.v.keys().cloned())
+        .collect::<BTreeSet<_>>()
+        .into_iter()
+        .collect();
+    let mut rows: BTreeSet<(Vec<i128>, i128)> = cons
+        .iter()
+        .map(|c| {
+            let a: Vec<i128> = vars.iter().map(|v| i128::from(c.coef(v))).collect();
+            tighten(a, i128::from(c.c))
+        })
+        .collect();
+    for k in 0..vars.len() {
+        let (mut pos, mut neg, mut keep) = (Vec::new(), Vec::new(), BTreeSet::new());
+        for r in rows {
+            match r.0[k].signum() {
+                1 => pos.push(r),
+                -1 => neg.push(r),
+                _ => {
+                    keep.insert(r);
+                }
+            }
+        }
+        if pos.len() * neg.len() + keep.len() > MAX_FM {
+            return true;
+        }
+        for (pa, pc) in &pos {
+            for (na, nc) in &neg {
+                let (x, y) = (pa[k], -na[k]);
+                let a: Vec<i128> = pa.iter().zip(na).map(|(p, q)| y * p + x * q).collect();
+                let c = y * pc + x * nc;
+                if a.iter().chain(std::iter::once(&c)).any(|v| v.abs() > (1i128 << 100)) {
+                    return true;
+                }
+                keep.insert(tighten(a, c));
+            }
+        }
+        rows = keep;
+    }
+    rows.iter().all(|(_, c)| *c >= 0)
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Class {
+    Always,
+    Never,
+    Mixed,
+}
+
+fn class_ge(d: &Domain, a: &Aff) -> Class {
+    if d.implies_ge(a) {
+        Class::Always
+    } else if !d.with(a.clone()).feasible() {
+        Class::Never
+    } else {
+        Class::Mixed
+    }
+}
+
+fn class_eq(d: &Domain, a: &Aff) -> Class {
+    if a.is_const() {
+        return if a.c == 0 { Class::Always } else { Class::Never };
+    }
+    if !d.with(a.clone()).with(a.scaled(-1)).feasible() {
+        Class::Never
+    } else if d.implies_ge(a) && d.implies_ge(&a.scaled(-1)) {
+        Class::Always
+    } else {
+        Class::Mixed
+    }
+}
+
+/// How `a = 0` is substituted: a variable with coefficient ±1 and its value.
+fn solve_for(a: &Aff) -> Result<(String, Aff)> {
+    let (name, k) =
+        a.v.iter()
+            .find(|(_, k)| k.abs() == 1)
+            .map(|(n, k)| (n.clone(), *k))
+            .ok_or_else(|| {
+                Error::Domain(format!(
+                    "cannot split the domain on {a} = 0: no variable has coefficient ±1"
+                ))
+            })?;
+    let mut rest = a.clone();
+    rest.v.remove(&name);
+    // k·x + rest = 0 ⇒ x = −rest / k, with k = ±1.
+    Ok((name, rest.scaled(-k)))
+}
+
+/// What [`prove_zero`] found.
+#[derive(Clone, Debug)]
+pub enum ZeroOutcome {
+    /// Zero at every integer point of the domain; the number of pieces checked.
+    Zero(usize),
+    /// In this piece the quotient by the first live term is a nonzero rational function.
+    NonZero {
+        /// The piece.
+        region: String,
+        /// The nonzero numerator.
+        residue: String,
+    },
+}
+
+enum Split {
+    Ge(Aff),
+    Eq(Aff),
+}
+
+fn pick_split(lin: &[Term], d: &Domain, alive: &mut [bool]) -> Result<Option<Split>> {
+    // What every term needs to be defined at all (a divisor that must not vanish).
+    for t in lin {
+        for a in &t.defined {
+            match class_ge(d, a) {
+                Class::Never => {
+                    return Err(Error::Domain(format!(
+                        "the term {} is undefined where {a} < 0 (on {})",
+                        t.show(),
+                        d.show()
+                    )))
+                }
+                Class::Mixed => return Ok(Some(Split::Ge(a.clone()))),
+                Class::Always => {}
+            }
+        }
+    }
+    // First the conditions that make a term vanish.
+    for (t, live) in lin.iter().zip(alive.iter_mut()) {
+        let zeroing = t
+            .support
+            .iter()
+            .chain(t.facts.iter().filter(|(_, e)| *e < 0).map(|(a, _)| a));
+        for a in zeroing {
+            match class_ge(d, a) {
+                Class::Never => *live = false,
+                Class::Mixed => return Ok(Some(Split::Ge(a.clone()))),
+                Class::Always => {}
+            }
+            if !*live {
+                break;
+            }
+        }
+        if !*live {
+            continue;
+        }
+        for a in &t.deltas {
+            match class_eq(d, a) {
+                Class::Never => {
+                    *live = false;
+                    break;
+                }
+                Class::Mixed => return Ok(Some(Split::Eq(a.clone()))),
+                Class::Always => {}
+            }
+        }
+    }
+    // Then, for the live terms, that their numerator factorials are defined.
+    for (t, live) in lin.iter().zip(alive.iter()) {
+        if !*live {
+            continue;
+        }
+        for a in t.facts.iter().filter(|(_, e)| *e > 0).map(|(a, _)| a) {
+            match class_ge(d, a) {
+                Class::Never => {
+                    return Err(Error::Domain(format!(
+                        "the term {} is undefined where {a} < 0 (on {})",
+                        t.show(),
+                        d.show()
+                    )))
+                }
+                Class::Mixed => return Ok(Some(Split::Ge(a.clone()))),
+                Class::Always => {}
+            }
+        }
+    }
+    for t in lin {
+        for a in &t.nonzero {
+            match class_eq(d, a) {
+                Class::Never => {}
+                Class::Always => {
+                    return Err(Error::DivisionByZero(format!(
+                        "a division by {a}, which is 0 on {}",
+                        d.show()
+                    )))
+                }
+                Class::Mixed => return Ok(Some(Split::Eq(a.clone()))),
+            }
+        }
+    }
+    Ok(None)
+}
+
+/// Proves `Σ lin = 0` at every integer point of `d` (see the module documentation), logging
+/// each piece to `log`.
+pub fn prove_zero(sym: &Symbols, lin: &[Term], d: &Domain, log: &mut Vec<String>) -> Result<ZeroOutcome> {
+    let mut check =
+        |live: &[&Term], _: &Domain, place: &str, log: &mut Vec<String>| classes_cancel(sym, live, place, log);
+    prove_pieces(sym, lin, d, log, &mut check)
+}
+
+/// What a piece must satisfy: given its live terms (every condition decided, every factorial
+/// argument ≥ 0), the piece and its description, `None` when it does, else the reason.
+pub type PieceCheck<'a> = dyn FnMut(&[&Term], &Domain, &str, &mut Vec<String>) -> Result<Option<String>> + 'a;
+
+/// Splits `d` into pieces on which every term of `lin` is decided, and runs `check` on each.
+pub fn prove_pieces(
+    sym: &Symbols,
+    lin: &[Term],
+    d: &Domain,
+    log: &mut Vec<String>,
+    check: &mut PieceCheck<'_>,
+) -> Result<ZeroOutcome> {
+    let mut count = 0usize;
+    let out = prove_rec(sym, lin.to_vec(), d.clone(), Vec::new(), log, &mut count, check)?;
+    Ok(match out {
+        None => ZeroOutcome::Zero(count),
+        Some((region, residue)) => ZeroOutcome::NonZero { region, residue },
+    })
+}
+
+type Found = Option<(String, String)>;
+
+fn prove_rec(
+    sym: &Symbols,
+    lin: Lin,
+    d: Domain,
+    path: Vec<String>,
+    log: &mut Vec<String>,
+    count: &mut usize,
+    check: &mut PieceCheck<'_>,
+) -> Result<Found> {
+    if !d.feasible() {
+        return Ok(None);
+    }
+    *count += 1;
+    if *count > MAX_REGIONS {
+        return Err(Error::TooLarge {
+            what: "domain pieces of a symbolic proof",
+            value: count.to_string(),
+            limit: MAX_REGIONS.to_string(),
+        });
+    }
+    let mut alive = vec![true; lin.len()];
+    match pick_split(&lin, &d, &mut alive)? {
+        Some(Split::Ge(a)) => {
+            for piece in [a.clone(), a.scaled(-1).shifted(-1)] {
+                let mut p = path.clone();
+                p.push(format!("{piece} ≥ 0"));
+                if let Some(found) = prove_rec(sym, lin.clone(), d.with(piece), p, log, count, check)? {
+                    return Ok(Some(found));
+                }
+            }
+            Ok(None)
+        }
+        Some(Split::Eq(a)) => {
+            for piece in [a.shifted(-1), a.scaled(-1).shifted(-1)] {
+                let mut p = path.clone();
+                p.push(format!("{piece} ≥ 0"));
+                if let Some(found) = prove_rec(sym, lin.clone(), d.with(piece), p, log, count, check)? {
+                    return Ok(Some(found));
+                }
+            }
+            let (x, by) = solve_for(&a)?;
+            let mut p = path;
+            p.push(format!("{x} = {by}"));
+            let sub = lin_subst(sym, &lin, &x, &by);
+            prove_rec(sym, sub, d.subst(&x, &by), p, log, count, check)
+        }
+        None => {
+            // A piece that is thinner than it looks (i ≥ 0 and −i ≥ 0): substitute the
+            // equality, so the rational identity is asked only where it must hold.
+            let flat = d
+                .cons
+                .iter()
+                .find(|c| !c.is_const() && d.implies_ge(&c.scaled(-1)) && c.v.values().any(|k| k.abs() == 1));
+            if let Some(c) = flat {
+                let (x, by) = solve_for(c)?;
+                let mut p = path;
+                p.push(format!("{x} = {by}"));
+                let sub = lin_subst(sym, &lin, &x, &by);
+                return prove_rec(sym, sub, d.subst(&x, &by), p, log, count, check);
+            }
+            let live: Vec<&Term> = lin
+                .iter()
+                .zip(&alive)
+                .filter(|(t, a)| **a && !t.coef.num.is_zero())
+                .map(|(t, _)| t)
+                .collect();
+            let place = if path.is_empty() {
+                d.show()
+            } else {
+                format!("{} (piece {})", d.show(), path.join(", "))
+            };
+            if live.is_empty() {
+                log.push(format!("on {place}: every term vanishes"));
+                return Ok(None);
+            }
+            Ok(check(&live, &d, &place, log)?.map(|why| (place, why)))
+        }
+    }
+}
+
+/// The live terms of a piece sum to zero: each class of similar terms (rational quotients)
+/// cancels on its own (enough for the sum to vanish; a class that does not cancel is
+/// reported, never taken as a disproof).
+fn classes_cancel(sym: &Symbols, live: &[&Term], place: &str, log: &mut Vec<String>) -> Result<Option<String>> {
+    let mut classes: Vec<(&Term, RatFunc, usize)> = Vec::new();
+    for t in live {
+        let mut placed = false;
+        for (first, total, size) in classes.iter_mut() {
+            if let Some(r) = ratio(sym, t, first)? {
+                *total = total.add(&t.coef.mul(&r));
+                *size += 1;
+                placed = true;
+                break;
+            }
+        }
+        if !placed {
+            classes.push((t, t.coef.clone(), 1));
+        }
+    }
+    for (first, total, size) in &classes {
+        if !total.num.is_zero() {
+            return Ok(Some(format!(
+                "the quotient's numerator is {} (the {size} terms similar to {})",
+                total.num,
+                first.show()
+            )));
+        }
+    }
+    log.push(format!(
+        "on {place}: {} live term{} in {} class{} of similar terms, each Σ T_j / T_0 = 0 identically",
+        live.len(),
+        if live.len() == 1 { "" } else { "s" },
+        classes.len(),
+        if classes.len() == 1 { "" } else { "es" },
+    ));
+    Ok(None)
+}
+
+/// `H_t / H_0` (the factorial and power parts; the coefficients are not included), a rational
+/// function valid where every factorial argument is ≥ 0; `None` when the terms are not similar.
+pub fn ratio(sym: &Symbols, t: &Term, first: &Term) -> Result<Option<RatFunc>> {
+    let mut out = RatFunc::from_int(1);
+    let mut groups: BTreeMap<BTreeMap<String, i64>, (Vec<i64>, Vec<i64>)> = BTreeMap::new();
+    let both = t
+        .facts
+        .iter()
+        .map(|(a, e)| (a, *e))
+        .chain(first.facts.iter().map(|(a, e)| (a, -*e)));
+    for (a, e) in both {
+        let g = groups.entry(a.linear()).or_default();
+        if e > 0 {
+            g.0.push(a.c);
+        } else {
+            g.1.push(a.c);
+        }
+    }
+    for (lin, (mut up, mut down)) in groups {
+        if lin.is_empty() {
+            for c in up {
+                out = out.mul(&factorial(c)?);
+            }
+            for c in down {
+                out = out.div(&factorial(c)?)?;
+            }
+            continue;
+        }
+        if up.len() != down.len() {
+            // The factorials of this linear part do not pair: not a rational quotient.
+            return Ok(None);
+        }
+        up.sort_unstable();
+        down.sort_unstable();
+        let l = Aff { c: 0, v: lin };
+        for (p, q) in up.into_iter().zip(down) {
+            // (L+p)! / (L+q)!
+            let (lo, hi, inv) = if p >= q { (q, p, false) } else { (p, q, true) };
+            let mut prod = RatFunc::from_int(1);
+            for m in lo + 1..=hi {
+                prod = prod.mul(&l.shifted(m).to_rf(sym));
+            }
+            out = if inv { out.div(&prod)? } else { out.mul(&prod) };
+        }
+    }
+    // Powers: exponents per base must differ by constants.
+    let mut bases: Vec<(Base, Aff)> = Vec::new();
+    let mut add = |b: &Base, e: Aff| {
+        if let Some(slot) = bases.iter_mut().find(|(x, _)| x == b) {
+            slot.1 = slot.1.plus(&e);
+        } else {
+            bases.push((b.clone(), e));
+        }
+    };
+    for (b, e) in &t.pows {
+        add(b, e.clone());
+    }
+    for (b, e) in &first.pows {
+        add(b, e.scaled(-1));
+    }
+    for (b, e) in bases {
+        if !e.is_const() {
+            return Ok(None);
+        }
+        out = out.mul(&b.to_rf().pow(e.c)?);
+    }
+    Ok(Some(out))
+}
+
+/// The factors of the denominator of `H_t / H_0`: affine forms (from factorials) and
+/// polynomials in the parameters (from powers with negative exponent differences).
+pub fn ratio_denominator(t: &Term, first: &Term) -> (Vec<Aff>, Vec<Poly>) {
+    let mut groups: BTreeMap<BTreeMap<String, i64>, (Vec<i64>, Vec<i64>)> = BTreeMap::new();
+    let both = t
+        .facts
+        .iter()
+        .map(|(a, e)| (a, *e))
+        .chain(first.facts.iter().map(|(a, e)| (a, -*e)));
+    for (a, e) in both {
+        let g = groups.entry(a.linear()).or_default();
+        if e > 0 {
+            g.0.push(a.c);
+        } else {
+            g.1.push(a.c);
+        }
+    }
+    let mut affs = Vec::new();
+    for (lin, (mut up, mut down)) in groups {
+        if lin.is_empty() || up.len() != down.len() {
+            continue;
+        }
+        up.sort_unstable();
+        down.sort_unstable();
+        let l = Aff { c: 0, v: lin };
+        for (p, q) in up.into_iter().zip(down) {
+            for m in p + 1..=q {
+                affs.push(l.shifted(m));
+            }
+        }
+    }
+    let mut polys = Vec::new();
+    let mut bases: Vec<(Base, Aff)> = Vec::new();
+    for (b, e) in t
+        .pows
+        .iter()
+        .map(|(b, e)| (b, e.clone()))
+        .chain(first.pows.iter().map(|(b, e)| (b, e.scaled(-1))))
+    {
+        if let Some(slot) = bases.iter_mut().find(|(x, _)| x == b) {
+            slot.1 = slot.1.plus(&e);
+        } else {
+            bases.push((b.clone(), e));
+        }
+    }
+    for (b, e) in bases {
+        if let (Base::Poly(q), true) = (&b, e.is_const() && e.c < 0) {
+            for _ in 0..e.c.unsigned_abs() {
+                polys.push(q.clone());
+            }
+        }
+    }
+    (affs, polys)
+}
+
+fn factorial(c: i64) -> Result<RatFunc> {
+    if !(0..=super::expr::MAX_FACTORIAL).contains(&c) {
+        return Err(Error::Domain(format!("factorial of {c}")));
+    }
+    let mut f = num_bigint::BigInt::one();
+    for k in 2..=c {
+        f *= k;
+    }
+    Ok(RatFunc::from_bigint(&f))
+}
+
+/// Whether a rational constant is ≥ 0 (for callers that classify coefficients).
+pub fn nonneg(r: &BigRational) -> bool {
+    !r.is_negative()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fourier_motzkin_decides_simple_domains() {
+        let n = Aff::var("n");
+        let i = Aff::var("i");
+        // 0 ≤ i ≤ n and i ≥ n + 1: empty.
+        let d = Domain {
+            cons: vec![i.clone(), n.minus(&i), i.minus(&n).shifted(-1)],
+        };
+        assert!(!d.feasible());
+        let d = Domain {
+            cons: vec![i.clone(), n.minus(&i)],
+        };
+        assert!(d.feasible());
+        assert!(d.implies_ge(&n));
+        assert!(!d.implies_ge(&n.shifted(-1)));
+        // 2i = 1 has no integer solution: 2i − 1 ≥ 0 and 1 − 2i ≥ 0 tighten to i ≥ 1, i ≤ 0.
+        let d = Domain {
+            cons: vec![i.scaled(2).shifted(-1), i.scaled(-2).shifted(1)],
+        };
+        assert!(!d.feasible());
+    }
+}
