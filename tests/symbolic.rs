@@ -104,8 +104,9 @@ fn certificates_are_found_when_not_given() {
     );
     // A polynomial sum: G = 0 and the new term telescopes against the right side.
     assert_proved("for = [\"n = 0..\"]\nlhs = \"sum(i, 0, n, i^2)\"\nrhs = \"n*(n+1)*(2n+1)/6\"");
-    // What the search finds is checked like a given certificate: a false claim is still refused.
-    assert_error(&format!("{POU}rhs = \"1 + C(n, 11)\""), "does not hold");
+    // What the search finds is checked like a given certificate: a false claim is never
+    // proved; the counterexample search past the cross-check finds where it fails.
+    assert_fails_at(&format!("{POU}rhs = \"1 + C(n, 11)\""), "n = 11");
 }
 
 #[test]
@@ -125,10 +126,11 @@ fn a_wrong_certificate_or_claim_is_rejected() {
         "for = [\"n = 0..\"]\nlhs = \"sum(i, 0, n, C(n, i)^3)\"\nrhs = \"sum(j, 0, n, C(n, j)^3)\"",
         "none found",
     );
-    // True for n ≤ 10 (and so for the evaluated n ≤ 3), false from n = 11 on: never proved.
-    assert_error(
+    // True for n ≤ 10 (and so for the evaluated n ≤ 3), false from n = 11 on: never proved,
+    // and the search finds n = 11.
+    assert_fails_at(
         &format!("{POU}rhs = \"1 + C(n, 11)\"\ncertificate = \"-(1-t)*i/(n+1-i)\""),
-        "does not hold",
+        "n = 11",
     );
     // False for small n: fails with an exact counterexample, whatever the certificate.
     let (v, _, _) = check(&format!(
@@ -201,4 +203,26 @@ fn perturbed_identities_are_never_proved() {
             assert_eq!(v, Verdict::Fails, "{body}: {c}");
         }
     }
+}
+
+fn assert_fails_at(body: &str, at: &str) {
+    match check(body) {
+        Ok((Verdict::Fails, None, c)) => assert!(c.contains(at), "{body}: counterexample {c:?} should be {at:?}"),
+        other => panic!("{body}: expected fails, got {other:?}"),
+    }
+}
+
+#[test]
+fn false_beyond_the_cross_check_still_fails_with_a_counterexample() {
+    // Wrong only from n = 11, 12, 20 on: past the first values the proof's cross-check
+    // evaluates, and no certificate can exist; the search finds the first wrong case.
+    assert_fails_at(&format!("{POU}rhs = \"1 + C(n, 11)\""), "n = 11");
+    assert_fails_at(
+        "for = [\"n = 0..\"]\nlhs = \"sum(i, 0, n, i*B(i, n, t))\"\nrhs = \"n*t + C(n - 7, 5)*t^3*(1-t)^3\"",
+        "n = 12",
+    );
+    assert_fails_at(
+        "for = [\"n = 1..\"]\nlhs = \"B(2, n, t)\"\nrhs = \"(1 - t)*B(2, n - 1, t) + t*B(1, n - 1, t) + C(n, 20)*t - C(n, 20)\"",
+        "n = 20",
+    );
 }

@@ -67,10 +67,10 @@ impl Aff {
     /// `self + k·o`.
     pub fn add_scaled(&self, o: &Aff, k: i64) -> Aff {
         let mut out = self.clone();
-        out.c += k * o.c;
+        out.c = affine_op(k.checked_mul(o.c).and_then(|x| out.c.checked_add(x)));
         for (name, a) in &o.v {
             let e = out.v.entry(name.clone()).or_insert(0);
-            *e += k * a;
+            *e = affine_op(k.checked_mul(*a).and_then(|x| e.checked_add(x)));
             if *e == 0 {
                 out.v.remove(name);
             }
@@ -92,7 +92,7 @@ impl Aff {
     /// `self + k`.
     pub fn shifted(&self, k: i64) -> Aff {
         let mut out = self.clone();
-        out.c += k;
+        out.c = affine_op(out.c.checked_add(k));
         out
     }
     /// `self` with `name` replaced by `by`.
@@ -117,6 +117,17 @@ impl Aff {
         }
         out
     }
+}
+
+/// Largest integer coefficient an index expression may hold (`n + 100`, `2k − 1`): affine
+/// forms built from such inputs by the few substitutions of a proof stay far inside 64 bits.
+pub const MAX_AFFINE_COEFFICIENT: i64 = 1 << 32;
+
+/// The result of an affine-form operation. Overflow would silently change which terms a proof
+/// keeps, so it stops the claim instead (the command reports it as an error); inputs are held
+/// to [`MAX_AFFINE_COEFFICIENT`], so this is a backstop, not an expected path.
+fn affine_op(value: Option<i64>) -> i64 {
+    value.expect("an index expression's integer coefficient overflowed 64 bits")
 }
 
 impl fmt::Display for Aff {
@@ -216,10 +227,10 @@ impl Symbols {
             if !c.is_integer() {
                 return None;
             }
-            let c = c.to_integer().to_i64()?;
+            let c = c.to_integer().to_i64().filter(|c| c.abs() <= MAX_AFFINE_COEFFICIENT)?;
             let deg: u32 = e.iter().map(|&x| u32::from(x)).sum();
             match deg {
-                0 => out.c += c,
+                0 => out.c = affine_op(out.c.checked_add(c)),
                 1 => {
                     let k = e.iter().position(|&x| x == 1)?;
                     if k >= self.ints {
@@ -599,8 +610,13 @@ fn feasible(cons: &[Aff]) -> bool {
         for (pa, pc) in &pos {
             for (na, nc) in &neg {
                 let (x, y) = (pa[k], -na[k]);
-                let a: Vec<i128> = pa.iter().zip(na).map(|(p, q)| y * p + x * q).collect();
-                let c = y * pc + x * nc;
+                // y·p + x·q, checked: on overflow the test answers "maybe feasible", which
+                // only costs splits, never soundness.
+                let combine = |p: i128, q: i128| y.checked_mul(p)?.checked_add(x.checked_mul(q)?);
+                let a: Option<Vec<i128>> = pa.iter().zip(na).map(|(p, q)| combine(*p, *q)).collect();
+                let (Some(a), Some(c)) = (a, combine(*pc, *nc)) else {
+                    return true;
+                };
                 if a.iter().chain(std::iter::once(&c)).any(|v| v.abs() > (1i128 << 100)) {
                     return true;
                 }

@@ -105,15 +105,25 @@ pub fn is_for_every(claim: &Claim) -> bool {
         .any(|r| !r.contains("..=") && r.trim_end().ends_with(".."))
 }
 
+/// How many values past the first of each open range are searched for a counterexample when
+/// the symbolic proof does not go through: a false claim then gets `fails` with exact values,
+/// not only the reason the proof failed.
+pub const REFUTATION_SEARCH: i64 = 40;
+
 /// The claim with each open range closed after [`CROSS_CHECK`] values (for the evaluation check).
 pub fn closed_claim(claim: &Claim, rs: &[SymRange]) -> Claim {
+    closed_after(claim, rs, CROSS_CHECK)
+}
+
+/// The claim with each open range closed after `extra` values past its first.
+fn closed_after(claim: &Claim, rs: &[SymRange], extra: i64) -> Claim {
     let mut c = claim.clone();
     c.certificate = None;
     c.ranges = Some(
         rs.iter()
             .map(|r| match &r.to {
                 Some(to) => format!("{} = {}..={to}", r.var, r.from),
-                None => format!("{} = {}..=({}) + {}", r.var, r.from, r.from, CROSS_CHECK),
+                None => format!("{} = {}..=({}) + {extra}", r.var, r.from, r.from),
             })
             .collect(),
     );
@@ -903,7 +913,26 @@ pub fn nonneg_for_every(
 }
 
 /// Checks an identity claim with open ranges for every value (see the module documentation).
+/// When no proof is found, the first [`REFUTATION_SEARCH`] values of each open range are
+/// searched for an exact counterexample; without one the claim is an error with the reason.
 pub fn check(claim: &Claim, detail: bool) -> Result<Checked> {
+    prove_for_every(claim, detail).or_else(|reason| refute_in_search(claim, reason))
+}
+
+fn refute_in_search(claim: &Claim, reason: Error) -> Result<Checked> {
+    let Ok(rs) = ranges(claim) else {
+        return Err(reason);
+    };
+    match super::kinds::check_claim(&closed_after(claim, &rs, REFUTATION_SEARCH), false) {
+        Ok(mut out) if out.verdict == Verdict::Fails => {
+            out.range = None;
+            Ok(out)
+        }
+        _ => Err(reason),
+    }
+}
+
+fn prove_for_every(claim: &Claim, detail: bool) -> Result<Checked> {
     let rs = ranges(claim)?;
     let closed = closed_claim(claim, &rs);
     let evaluated = super::kinds::check_claim(&closed, false)?;
