@@ -925,11 +925,12 @@ fn classes_cancel(sym: &Symbols, live: &[&Term], place: &str, log: &mut Vec<Stri
     Ok(None)
 }
 
-/// `H_t / H_0` (the factorial and power parts; the coefficients are not included), a rational
-/// function valid where every factorial argument is ≥ 0; `None` when the terms are not similar.
-pub fn ratio(sym: &Symbols, t: &Term, first: &Term) -> Result<Option<RatFunc>> {
-    let mut out = RatFunc::from_int(1);
-    let mut groups: BTreeMap<BTreeMap<String, i64>, (Vec<i64>, Vec<i64>)> = BTreeMap::new();
+/// The factorials of `H_t / H_0` grouped by linear part: for each, the constants of the
+/// factorials upstairs (from `t`) and downstairs (from `first`).
+type FactorialGroups = BTreeMap<BTreeMap<String, i64>, (Vec<i64>, Vec<i64>)>;
+
+fn factorial_groups(t: &Term, first: &Term) -> FactorialGroups {
+    let mut groups = FactorialGroups::new();
     let both = t
         .facts
         .iter()
@@ -943,6 +944,14 @@ pub fn ratio(sym: &Symbols, t: &Term, first: &Term) -> Result<Option<RatFunc>> {
             g.1.push(a.c);
         }
     }
+    groups
+}
+
+/// `H_t / H_0` (the factorial and power parts; the coefficients are not included), a rational
+/// function valid where every factorial argument is ≥ 0; `None` when the terms are not similar.
+pub fn ratio(sym: &Symbols, t: &Term, first: &Term) -> Result<Option<RatFunc>> {
+    let mut out = RatFunc::from_int(1);
+    let groups = factorial_groups(t, first);
     for (lin, (mut up, mut down)) in groups {
         if lin.is_empty() {
             for c in up {
@@ -997,20 +1006,7 @@ pub fn ratio(sym: &Symbols, t: &Term, first: &Term) -> Result<Option<RatFunc>> {
 /// The factors of the denominator of `H_t / H_0`: affine forms (from factorials) and
 /// polynomials in the parameters (from powers with negative exponent differences).
 pub fn ratio_denominator(t: &Term, first: &Term) -> (Vec<Aff>, Vec<Poly>) {
-    let mut groups: BTreeMap<BTreeMap<String, i64>, (Vec<i64>, Vec<i64>)> = BTreeMap::new();
-    let both = t
-        .facts
-        .iter()
-        .map(|(a, e)| (a, *e))
-        .chain(first.facts.iter().map(|(a, e)| (a, -*e)));
-    for (a, e) in both {
-        let g = groups.entry(a.linear()).or_default();
-        if e > 0 {
-            g.0.push(a.c);
-        } else {
-            g.1.push(a.c);
-        }
-    }
+    let groups = factorial_groups(t, first);
     let mut affs = Vec::new();
     for (lin, (mut up, mut down)) in groups {
         if lin.is_empty() || up.len() != down.len() {

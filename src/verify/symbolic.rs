@@ -539,17 +539,7 @@ impl<'a> Translator<'a> {
             }
             Some(h) => (f, h.clone(), Some(h)),
             None => {
-                let width = b.subst(&n, &n0).minus(a);
-                if !width.is_const() || width.c < -1 || width.c > 10_000 {
-                    return Err(Error::Domain(format!(
-                        "{what}: at {n} = {n0} the sum does not have a fixed number of terms"
-                    )));
-                }
-                let at0 = lin_subst(sym, &f, &n, &n0);
-                let mut base = Vec::new();
-                for m in 0..=width.c {
-                    base.extend(lin_subst(sym, &at0, k, &a.shifted(m)));
-                }
+                let base = base_case_terms(sym, &f, (k, a, b), (&n, &n0), &what)?;
                 (f, base, None)
             }
         };
@@ -611,17 +601,7 @@ impl<'a> Translator<'a> {
         )?;
         // 3. The base case.
         if value.is_some() {
-            let width = b.subst(&n, &n0).minus(a);
-            if !width.is_const() || width.c < -1 || width.c > 10_000 {
-                return Err(Error::Domain(format!(
-                    "{what}: at {n} = {n0} the sum does not have a fixed number of terms"
-                )));
-            }
-            let at0 = lin_subst(sym, &f, &n, &n0);
-            let mut base = Vec::new();
-            for m in 0..=width.c {
-                base.extend(lin_subst(sym, &at0, k, &a.shifted(m)));
-            }
+            let mut base = base_case_terms(sym, &f, (k, a, b), (&n, &n0), &what)?;
             base.extend(lin_neg(&lin_subst(sym, &rhs, &n, &n0)));
             self.expect_zero(&base, &rest, &format!("{what}: the base case {n} = {n0}"))?;
         } else {
@@ -910,6 +890,29 @@ pub fn nonneg_for_every(
             "cannot show the inequality on {region}: {residue} (a product-of-nonnegative-factors argument only)"
         ))),
     }
+}
+
+/// The terms of `Σ_{k=a}^{b} F` at the base case `n = n0`, where the sum must have a fixed
+/// number of terms (at most 10 001).
+fn base_case_terms(
+    sym: &Symbols,
+    f: &[Term],
+    (k, a, b): (&str, &Aff, &Aff),
+    (n, n0): (&str, &Aff),
+    what: &str,
+) -> Result<Lin> {
+    let width = b.subst(n, n0).minus(a);
+    if !width.is_const() || width.c < -1 || width.c > 10_000 {
+        return Err(Error::Domain(format!(
+            "{what}: at {n} = {n0} the sum does not have a fixed number of terms"
+        )));
+    }
+    let at0 = lin_subst(sym, f, n, n0);
+    let mut base = Vec::new();
+    for m in 0..=width.c {
+        base.extend(lin_subst(sym, &at0, k, &a.shifted(m)));
+    }
+    Ok(base)
 }
 
 /// Checks an identity claim with open ranges for every value (see the module documentation).
