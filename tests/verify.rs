@@ -268,3 +268,28 @@ fn explain_fits_one_screen_with_a_case_worked_exactly() {
         );
     }
 }
+
+#[test]
+fn det_and_inv_beyond_four_by_four() {
+    // det(tI + P) for the cyclic shift P of size 5 is t^5 + 1 (Berkowitz beyond 4 × 4).
+    let m = "[t, 1, 0, 0, 0; 0, t, 1, 0, 0; 0, 0, t, 1, 0; 0, 0, 0, t, 1; 1, 0, 0, 0, t]";
+    let vars = "vars = [\"t\"]";
+    assert_eq!(
+        identity(&format!("det({m})"), "t^5 + 1", vars).unwrap().0,
+        Verdict::Proved
+    );
+    let (v, c) = identity(&format!("det({m})"), "t^5 - 1", vars).unwrap();
+    assert_eq!(v, Verdict::Fails);
+    assert!(c.contains("t = 0") && c.contains("left side = 1"), "{c}");
+    // inv of a 6 × 6 matrix (Cayley–Hamilton with Berkowitz's coefficients).
+    let a =
+        "[2, 0, 0, 0, 0, 0; 0, 1, 0, 0, 0, 0; 0, 0, 1, 0, 0, 0; 0, 0, 0, 1, 0, 0; 0, 0, 0, 0, 1, t; 0, 0, 0, 0, 0, 1]";
+    let a_inv = "[1/2, 0, 0, 0, 0, 0; 0, 1, 0, 0, 0, 0; 0, 0, 1, 0, 0, 0; 0, 0, 0, 1, 0, 0; 0, 0, 0, 0, 1, -t; 0, 0, 0, 0, 0, 1]";
+    assert_eq!(identity(&format!("inv({a})"), a_inv, vars).unwrap().0, Verdict::Proved);
+    let wrong = a_inv.replace("-t", "t");
+    assert_eq!(identity(&format!("inv({a})"), &wrong, vars).unwrap().0, Verdict::Fails);
+    // Past the documented size: a clear error.
+    let big = format!("[{}]", vec![vec!["1"; 17].join(", "); 17].join("; "));
+    let e = identity(&format!("det({big})"), "0", "").unwrap_err().to_string();
+    assert!(e.contains("at most 16"), "{e}");
+}
