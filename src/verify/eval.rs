@@ -1145,9 +1145,9 @@ mod tests {
                 let Value::M(inv) = inverse_cayley_hamilton(&m, &det_b).unwrap() else {
                     panic!("a matrix")
                 };
-                for i in 0..n {
+                for (i, row) in m.iter().enumerate() {
                     for j in 0..n {
-                        let entry: BigRational = (0..n).map(|k| &m[i][k] * &inv[k][j]).sum();
+                        let entry: BigRational = row.iter().zip(&inv).map(|(x, r)| x * &r[j]).sum();
                         assert_eq!(entry, q(i64::from(i == j), 1), "M·M⁻¹ at ({i}, {j}), n = {n}");
                     }
                 }
