@@ -293,3 +293,22 @@ fn det_and_inv_beyond_four_by_four() {
     let e = identity(&format!("det({big})"), "0", "").unwrap_err().to_string();
     assert!(e.contains("at most 16"), "{e}");
 }
+
+#[test]
+fn derivatives_of_rational_curve_objects() {
+    // The quarter circle of text 001 Ex. 1 as a rational quadratic: b' and b'' are the
+    // derivatives of ((1 − t²)/(1 + t²), 2t/(1 + t²)), computed by the library's rational
+    // derivative; a wrong denominator fails with a counterexample.
+    let curve = "vars = [\"t\"]\ncurves = { b = { points = [[1, 0], [1, 1], [0, 1]], weights = [1, 1, 2] } }";
+    let d1 = "(-4t/(1+t^2)^2, 2(1-t^2)/(1+t^2)^2)";
+    assert_eq!(identity("b'(t)", d1, curve).unwrap().0, Verdict::Proved);
+    assert_eq!(identity("diff(b(t), t)", d1, curve).unwrap().0, Verdict::Proved);
+    assert_eq!(
+        identity("b''(t)", &format!("diff({d1}, t)"), curve).unwrap().0,
+        Verdict::Proved
+    );
+    let (v, c) = identity("b'(t)", "(-4t/(1+t^2)^2, 2(1-t^2)/(1+t^2))", curve).unwrap();
+    assert_eq!(v, Verdict::Fails, "{c}");
+    let e = identity("b''''(t)", "b''''(t)", curve).unwrap_err().to_string();
+    assert!(e.contains("at most 3 times"), "{e}");
+}

@@ -503,6 +503,19 @@ where
             let t = ev.scalar(&args[0])?;
             Ok(Value::V(curve.derivative_at(order, &t)?.into_coords()))
         }
+        (1, CurveObj::Rational(curve)) => {
+            check_rational_order(name, order)?;
+            let t = ev.scalar(&args[0])?;
+            if order == 1 {
+                return Ok(Value::V(curve.derivative_at(&t)?.into_coords()));
+            }
+            // Each derivative of a rational curve is a rational curve of twice the degree.
+            let mut d = curve.clone();
+            for _ in 0..order {
+                d = crate::param::ParamCurveDeriv::deriv(&d)?;
+            }
+            Ok(Value::V(d.eval(&t)?.into_coords()))
+        }
         (3, CurveObj::Polynomial(curve)) if order == 0 => {
             let (i, r) = (ev.int(&args[0])?, ev.int(&args[1])?);
             let t = ev.scalar(&args[2])?;
@@ -521,10 +534,24 @@ where
             ))
         }
         _ => Err(Error::Domain(format!(
-            "{name}{}: call a curve as {name}(t), {name}'(t) (polynomial) or {name}(i, r, t)",
+            "{name}{}: call a curve as {name}(t), {name}'(t) or {name}(i, r, t) (polynomial curves)",
             "'".repeat(order)
         ))),
     }
+}
+
+/// Highest derivative of a rational curve a claim may take: the `k`-th derivative is a
+/// rational curve of degree `2^k n`.
+pub const MAX_RATIONAL_DERIVATIVE: usize = 3;
+
+fn check_rational_order(name: &str, order: usize) -> Result<()> {
+    if order > MAX_RATIONAL_DERIVATIVE {
+        return Err(Error::Domain(format!(
+            "{name}{}: a rational curve is differentiated at most {MAX_RATIONAL_DERIVATIVE} times",
+            "'".repeat(order)
+        )));
+    }
+    Ok(())
 }
 
 /// The objects of a claim, as degree bounds.
@@ -605,7 +632,13 @@ impl Env<Deg> for DegEnv {
                     let r = ev.int(&args[1])?;
                     composed(ev, r.max(0) as u64, rational)?
                 }
-                _ => composed(ev, n.saturating_sub(order as u64), rational)?,
+                // The k-th derivative of a rational curve of degree n is a rational curve
+                // of degree 2^k n; a polynomial curve's has degree n − k.
+                _ if rational => {
+                    check_rational_order(base, order)?;
+                    composed(ev, n << order, true)?
+                }
+                _ => composed(ev, n.saturating_sub(order as u64), false)?,
             };
             return Ok(Some(Value::V(vec![d; dim])));
         }
