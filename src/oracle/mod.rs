@@ -136,7 +136,7 @@ fn respond(line: &str) -> String {
             return json!({"ok": false, "error": msg}).to_string();
         }
     };
-    let mut out = match Op::from_json(&request).and_then(|op| op.run()) {
+    let mut out = match Op::from_json(&request).and_then(|op| op.run_checked()) {
         Ok(answer) => {
             let mut m = answer.to_json();
             m.insert("ok".into(), Value::Bool(true));
