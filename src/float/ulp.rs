@@ -282,7 +282,14 @@ pub fn f64_to_rational(x: f64) -> Option<BigRational> {
     Some(if e >= 0 {
         BigRational::from_integer(n << e as u64)
     } else {
-        BigRational::new_raw(n, BigInt::from(1) << e.unsigned_abs())
+        let k = e.unsigned_abs();
+        // a denominator below 2^64 is made from one word, without a shift of a BigInt
+        let d = if k < 64 {
+            BigInt::from(1u64 << k)
+        } else {
+            BigInt::from(1) << k
+        };
+        BigRational::new_raw(n, d)
     })
 }
 
