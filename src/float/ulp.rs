@@ -282,13 +282,28 @@ pub fn f64_to_rational(x: f64) -> Option<BigRational> {
     Some(if e >= 0 {
         BigRational::from_integer(n << e as u64)
     } else {
-        BigRational::new_raw(n, BigInt::from(1) << e.unsigned_abs())
+        let k = e.unsigned_abs();
+        // a denominator below 2^64 is made from one word, without a shift of a BigInt
+        let d = if k < 64 {
+            BigInt::from(1u64 << k)
+        } else {
+            BigInt::from(1) << k
+        };
+        BigRational::new_raw(n, d)
     })
 }
 
 /// `x` when it is exactly an `f64` (every finite float is a dyadic rational), else `None`.
 pub fn exact_f64(x: &BigRational) -> Option<f64> {
     let k = power_of_two(x.denom())?;
+    if let (Some(n), true) = (x.numer().magnitude().to_u64(), k <= 1022) {
+        if n < 1 << 53 {
+            // n and 2^−k are floats and the exact product n·2^−k is one too (at most 53
+            // bits from 2^−k up, and 2^−k ≥ 2^−1022), so the multiplication is exact
+            let f = n as f64 * f64::from_bits((1023 - k) << 52);
+            return Some(if x.numer().sign() == Sign::Minus { -f } else { f });
+        }
+    }
     let f = nearest_f64(x);
     if !f.is_finite() {
         return None;
@@ -404,6 +419,22 @@ mod tests {
         assert_eq!(exact_f64(&q("1/3")), None);
         assert_eq!(exact_f64(&q("9007199254740993")), None);
         assert_eq!(exact_f64(&BigRational::from_f64(0.1).unwrap()), Some(0.1));
+        // both sides of the short-numerator path: tiny, subnormal, huge, negative, zero
+        for x in [
+            -0.1,
+            0.0,
+            f64::MIN_POSITIVE,
+            f64::MIN_POSITIVE / 3.0,
+            f64::from_bits(1),
+            2f64.powi(-1022) * 1.5,
+            -1e300,
+            9007199254740991.0,
+            9007199254740992.0,
+            f64::MAX,
+        ] {
+            assert_eq!(exact_f64(&BigRational::from_f64(x).unwrap()), Some(x), "{x:e}");
+        }
+        assert_eq!(exact_f64(&q("9007199254740993/1024")), None);
         assert_eq!(scale_pow2_up(3.0, 4), 48.0);
         assert!(scale_pow2_up(1.0, -1074) >= f64::from_bits(1));
         assert_eq!(scale_pow2_up(1.0, -1080), f64::from_bits(1));

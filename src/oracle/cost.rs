@@ -90,15 +90,19 @@ fn triangle_work(n: usize, dim: usize, b: f64, t: &BigRational, den: f64) -> f64
 /// of the `n(n+1)/2` steps per coordinate two products of a number grown by `r` times the
 /// parameter's bits with the parameter's numerator or denominator, then one reduction.
 fn fraction_free_work(curve: &BezierCurve<BigRational>, t: &BigRational) -> f64 {
-    let mut denominators: Vec<&num_bigint::BigInt> = curve
-        .points()
-        .iter()
-        .flat_map(|p| p.coords())
-        .map(|c| c.denom())
-        .collect();
-    denominators.sort();
-    denominators.dedup();
-    let common = denominators.iter().map(|d| d.bits() as f64).sum::<f64>();
+    let coords = || curve.points().iter().flat_map(|p| p.coords());
+    let common = if coords().all(is_dyadic) {
+        // distinct powers of two are exactly the distinct bit lengths: no big comparisons
+        let mut lengths: Vec<u64> = coords().map(|c| c.denom().bits()).collect();
+        lengths.sort_unstable();
+        lengths.dedup();
+        lengths.iter().map(|&b| b as f64).sum::<f64>()
+    } else {
+        let mut denominators: Vec<&num_bigint::BigInt> = coords().map(|c| c.denom()).collect();
+        denominators.sort();
+        denominators.dedup();
+        denominators.iter().map(|d| d.bits() as f64).sum::<f64>()
+    };
     let numerators = max_bits(curve.points().iter().flat_map(|p| p.coords()));
     // Numbers grow by the parameter's bits per level; a product with the parameter's
     // numerator or denominator costs at least a machine word.

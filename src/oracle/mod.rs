@@ -136,7 +136,14 @@ fn respond(line: &str) -> String {
             return json!({"ok": false, "error": msg}).to_string();
         }
     };
-    let mut out = match Op::from_json(&request).and_then(|op| op.run()) {
+    let answer = Op::from_json(&request).and_then(|op| op.run_checked());
+    let id = request.get("id");
+    if let Ok(Answer::Point { point, ulps, bound }) = &answer {
+        if !id.is_some_and(has_inexact_number) {
+            return point_response(point, ulps.as_deref(), bound.as_deref(), id);
+        }
+    }
+    let mut out = match answer {
         Ok(answer) => {
             let mut m = answer.to_json();
             m.insert("ok".into(), Value::Bool(true));
@@ -149,7 +156,7 @@ fn respond(line: &str) -> String {
             m
         }
     };
-    match request.get("id") {
+    match id {
         None => Value::Object(out).to_string(),
         Some(id) if !has_inexact_number(id) => {
             out.insert("id".into(), id.clone());
@@ -174,6 +181,67 @@ fn respond(line: &str) -> String {
             }
         }
     }
+}
+
+/// The response to a request answered with a point, written directly: byte for byte what
+/// the answer's [`Answer::to_json`] map with `ok` and `id` prints (keys in sorted order, as
+/// serde_json's map keeps them), without building the map.
+fn point_response(
+    point: &crate::point::Point<num_rational::BigRational>,
+    ulps: Option<&[UlpError]>,
+    bound: Option<&[BoundCheck]>,
+    id: Option<&Value>,
+) -> String {
+    fn key(out: &mut Vec<u8>, name: &str) {
+        if out.len() > 1 {
+            out.push(b',');
+        }
+        out.push(b'"');
+        out.extend_from_slice(name.as_bytes());
+        out.extend_from_slice(b"\":");
+    }
+    fn array<T: serde::Serialize>(out: &mut Vec<u8>, items: impl Iterator<Item = T>) {
+        out.push(b'[');
+        for (k, item) in items.enumerate() {
+            if k > 0 {
+                out.push(b',');
+            }
+            serde_json::to_writer(&mut *out, &item).expect("writing JSON to memory");
+        }
+        out.push(b']');
+    }
+    let mut out = Vec::with_capacity(512);
+    out.push(b'{');
+    if let Some(b) = bound {
+        key(&mut out, "bound");
+        array(&mut out, b.iter().map(|c| judge::float_json(c.bound_ulps)));
+    }
+    if let Some(u) = ulps {
+        key(&mut out, "error_ulps");
+        array(&mut out, u.iter().map(|e| judge::float_json(e.error_ulps)));
+    }
+    if let Some(id) = id {
+        key(&mut out, "id");
+        serde_json::to_writer(&mut out, id).expect("writing JSON to memory");
+    }
+    if let Some(u) = ulps {
+        key(&mut out, "nearest");
+        array(&mut out, u.iter().map(|e| e.nearest));
+    }
+    key(&mut out, "ok");
+    out.extend_from_slice(b"true");
+    key(&mut out, "point");
+    array(&mut out, point.coords().iter().map(crate::scalar::format_exact));
+    if let Some(u) = ulps {
+        key(&mut out, "ulps");
+        array(&mut out, u.iter().map(|e| judge::ulps_json(e.ulps)));
+    }
+    if let Some(b) = bound {
+        key(&mut out, "within_bound");
+        array(&mut out, b.iter().map(|c| c.within));
+    }
+    out.push(b'}');
+    String::from_utf8(out).expect("serde_json writes UTF-8")
 }
 
 /// Whether a JSON value holds a number that serde_json keeps only as an `f64`.
@@ -282,6 +350,27 @@ mod tests {
         assert!(handle_line(line).contains("not valid JSON"));
         let line = r#"{"id":[0.10, 2],"op":"eval","points":[[1]],"t":0}"#;
         assert_eq!(handle_line(line), r#"{"id":[0.10, 2],"ok":true,"point":["1"]}"#);
+    }
+
+    #[test]
+    fn point_responses_are_written_as_the_map_prints_them() {
+        for line in [
+            r#"{"id":0,"op":"eval","points":[[0.1,-0.2],[0.7,0.3],[-0.5,1e-300]],"t":0.3,"approx":[0.3,0.1]}"#,
+            r#"{"op":"eval","points":[[0.1],[0.7]],"t":"1/3","approx":[0.3]}"#,
+            r#"{"id":{"b":[1,"x"],"a":null},"op":"eval","points":[[0,0],[1,2],[2,0]],"t":"1/3"}"#,
+            r#"{"id":"q\"\u00e9","op":"eval","points":[[0]],"t":0,"approx":[1e-15]}"#,
+            r#"{"id":-5,"op":"eval","points":[["1/3"],[0.7]],"t":0.5,"approx":[-1e300]}"#,
+            r#"{"op":"rational_eval","points":[[1,0],[1,1],[0,1]],"weights":[1,1,2],"t":0.5,"approx":[0.6,0.8]}"#,
+            r#"{"id":true,"op":"surface_eval","net":[[[0,0,0],[0,1,0]],[[1,0,0],[1,1,1]]],"u":0.1,"v":0.7,"approx":[0.1,0.7,0.07]}"#,
+        ] {
+            let request: Value = serde_json::from_str(line).unwrap();
+            let mut m = Op::from_json(&request).unwrap().run().unwrap().to_json();
+            m.insert("ok".into(), Value::Bool(true));
+            if let Some(id) = request.get("id") {
+                m.insert("id".into(), id.clone());
+            }
+            assert_eq!(handle_line(line), Value::Object(m).to_string(), "{line}");
+        }
     }
 
     #[test]

@@ -302,6 +302,11 @@ impl Op {
     /// Computes the exact answer (after [`Op::check_limits`]).
     pub fn run(&self) -> Result<Answer> {
         self.check_limits()?;
+        self.run_checked()
+    }
+
+    /// [`Op::run`] for an op whose limits were already checked ([`Op::from_json`] does).
+    pub(super) fn run_checked(&self) -> Result<Answer> {
         Ok(match self {
             Op::Eval { curve, t, approx } => {
                 // Same value as `curve.eval(t)` (property tests pin both), without a gcd per step;
