@@ -635,6 +635,20 @@ enum Class {
     Mixed,
 }
 
+/// Whether the term `t`, which is defined only where `a ≥ 0`, is defined on all of `d`: an
+/// error where it never is, a split where it is on part of `d`, `None` where it always is.
+fn defined_split(d: &Domain, t: &Term, a: &Aff) -> Result<Option<Split>> {
+    match class_ge(d, a) {
+        Class::Never => Err(Error::Domain(format!(
+            "the term {} is undefined where {a} < 0 (on {})",
+            t.show(),
+            d.show()
+        ))),
+        Class::Mixed => Ok(Some(Split::Ge(a.clone()))),
+        Class::Always => Ok(None),
+    }
+}
+
 fn class_ge(d: &Domain, a: &Aff) -> Class {
     if d.implies_ge(a) {
         Class::Always
@@ -698,16 +712,8 @@ fn pick_split(lin: &[Term], d: &Domain, alive: &mut [bool]) -> Result<Option<Spl
     // What every term needs to be defined at all (a divisor that must not vanish).
     for t in lin {
         for a in &t.defined {
-            match class_ge(d, a) {
-                Class::Never => {
-                    return Err(Error::Domain(format!(
-                        "the term {} is undefined where {a} < 0 (on {})",
-                        t.show(),
-                        d.show()
-                    )))
-                }
-                Class::Mixed => return Ok(Some(Split::Ge(a.clone()))),
-                Class::Always => {}
+            if let Some(split) = defined_split(d, t, a)? {
+                return Ok(Some(split));
             }
         }
     }
@@ -747,16 +753,8 @@ fn pick_split(lin: &[Term], d: &Domain, alive: &mut [bool]) -> Result<Option<Spl
             continue;
         }
         for a in t.facts.iter().filter(|(_, e)| *e > 0).map(|(a, _)| a) {
-            match class_ge(d, a) {
-                Class::Never => {
-                    return Err(Error::Domain(format!(
-                        "the term {} is undefined where {a} < 0 (on {})",
-                        t.show(),
-                        d.show()
-                    )))
-                }
-                Class::Mixed => return Ok(Some(Split::Ge(a.clone()))),
-                Class::Always => {}
+            if let Some(split) = defined_split(d, t, a)? {
+                return Ok(Some(split));
             }
         }
     }

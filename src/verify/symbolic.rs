@@ -177,6 +177,21 @@ pub struct Translator<'a> {
     pub used: Vec<String>,
 }
 
+impl<'a> Translator<'a> {
+    /// A translator for the zero polygon (or none), with the claim's certificates.
+    fn new(sym: &'a Symbols, certs: &'a [Expr]) -> Self {
+        Translator {
+            sym,
+            polygon: None,
+            unit: false,
+            certs,
+            next_cert: 0,
+            log: Vec::new(),
+            used: Vec::new(),
+        }
+    }
+}
+
 fn is_scalar(t: &Term) -> bool {
     t.facts.is_empty()
         && t.pows.is_empty()
@@ -801,15 +816,7 @@ pub fn nonneg_for_every(
             conts.join(", ")
         )));
     }
-    let mut tr = Translator {
-        sym: &sym,
-        polygon: None,
-        unit: false,
-        certs: &certs,
-        next_cert: 0,
-        log: Vec::new(),
-        used: Vec::new(),
-    };
+    let mut tr = Translator::new(&sym, &certs);
     let dom = tr.domain(claim, &rs)?;
     let lin = tr.lin(p, &dom)?;
     let mut log = Vec::new();
@@ -956,15 +963,7 @@ fn prove_for_every(claim: &Claim, detail: bool) -> Result<Checked> {
         }
     };
     let (certs, sym, conts) = prepare(claim, &ctx, &rs, &sides)?;
-    let mut tr = Translator {
-        sym: &sym,
-        polygon: None,
-        unit: false,
-        certs: &certs,
-        next_cert: 0,
-        log: Vec::new(),
-        used: Vec::new(),
-    };
+    let mut tr = Translator::new(&sym, &certs);
     let dom = tr.domain(claim, &rs)?;
     let modes: Vec<bool> = if claim.polygon.is_some() {
         vec![false, true]
