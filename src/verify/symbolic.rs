@@ -66,6 +66,17 @@ pub struct SymRange {
     pub to: Option<String>,
 }
 
+/// The ranges as a certificate states them: `n = 0..=3`, `every n ≥ 0`, joined by commas.
+fn scope(rs: &[SymRange]) -> String {
+    rs.iter()
+        .map(|r| match &r.to {
+            Some(to) => format!("{} = {}..={to}", r.var, r.from),
+            None => format!("every {} ≥ {}", r.var, r.from),
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
 /// Parses the claim's ranges, allowing open ones.
 pub fn ranges(claim: &Claim) -> Result<Vec<SymRange>> {
     claim
@@ -874,18 +885,12 @@ pub fn nonneg_for_every(
     let out = super::hyper::prove_pieces(&sym, &lin, &dom, &mut log, &mut check)?;
     match out {
         ZeroOutcome::Zero(pieces) => {
-            let open: Vec<String> = rs
-                .iter()
-                .map(|r| match &r.to {
-                    Some(to) => format!("{} = {}..={to}", r.var, r.from),
-                    None => format!("every {} ≥ {}", r.var, r.from),
-                })
-                .collect();
+            let open = scope(&rs);
             let mut out = Checked::new(
                 Verdict::Proved,
                 format!(
                     "for {}: the left side minus the right is a sum of hypergeometric terms; on each piece of the domain ({pieces} in all) every live term is a product of factors ≥ 0 on the interval (positive constants and factorials, powers with exponent ≥ 0 of polynomials with Bernstein coefficients ≥ 0)",
-                    open.join(", ")
+                    open
                 ),
             );
             if detail {
@@ -1001,16 +1006,10 @@ fn prove_for_every(claim: &Claim, detail: bool) -> Result<Checked> {
             tr.expect_zero(&diff, &d, &format!("{} = {}", pair[0], pair[1]))?;
         }
     }
-    let open: Vec<String> = rs
-        .iter()
-        .map(|r| match &r.to {
-            Some(to) => format!("{} = {}..={to}", r.var, r.from),
-            None => format!("every {} ≥ {}", r.var, r.from),
-        })
-        .collect();
+    let open = scope(&rs);
     let mut cert = format!(
         "for {}: both sides are sums of hypergeometric terms; dividing by one term leaves rational identities in the integer symbols and {}, proved exactly on every piece of the domain (the pieces where a term vanishes or a boundary convention applies are split off and proved separately)",
-        open.join(", "),
+        open,
         if conts.is_empty() { "no parameters".to_string() } else { conts.join(", ") }
     );
     if claim.polygon.is_some() {
