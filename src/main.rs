@@ -283,8 +283,8 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             Ok(ExitCode::SUCCESS)
         }
         Command::Oracle => {
-            let stdin = io::stdin();
-            match oracle::serve(stdin.lock(), io::stdout().lock()) {
+            let output = io::BufWriter::with_capacity(oracle::READ_CHUNK_BYTES, io::stdout().lock());
+            match oracle::serve(io::stdin().lock(), output) {
                 Ok(()) => Ok(ExitCode::SUCCESS),
                 // the client closed its end: nobody is left to answer
                 Err(err) if err.kind() == io::ErrorKind::BrokenPipe => Ok(ExitCode::SUCCESS),

@@ -2,7 +2,7 @@
 
 use super::{handle_line, MAX_LINE_BYTES};
 use serde_json::json;
-use std::io::{self, BufRead, Write};
+use std::io::{self, BufRead, BufReader, Read, Write};
 
 /// One line read by [`read_line_bounded`].
 #[derive(Debug, PartialEq, Eq)]
@@ -75,14 +75,25 @@ pub fn skip_line<R: BufRead>(reader: &mut R) -> io::Result<()> {
     }
 }
 
-/// The JSON-lines loop: one response line per request line, flushed after each, until end
-/// of input. An over-long line is answered as soon as the limit is crossed, then skipped.
-/// Only I/O errors (such as a closed output) end it early.
-pub fn serve<R: BufRead, W: Write>(mut reader: R, mut writer: W) -> io::Result<()> {
+/// Bytes read from the input at a time by [`serve`]: a burst of requests this long is
+/// answered with one write.
+pub const READ_CHUNK_BYTES: usize = 64 * 1024;
+
+/// The JSON-lines loop: one response line per request line, until end of input. An
+/// over-long line is answered as soon as the limit is crossed, then skipped. Only I/O errors
+/// (such as a closed output) end it early.
+///
+/// Responses are flushed whenever no complete request is waiting in the input buffer, i.e.
+/// before the loop could block on a read: an interactive client gets every answer before it
+/// has to send the next request, and a piped burst is answered in large writes instead of
+/// one write per line. `writer` should therefore be buffered (`serve` adds no buffer of its
+/// own on the output side).
+pub fn serve<R: Read, W: Write>(reader: R, mut writer: W) -> io::Result<()> {
+    let mut reader = BufReader::with_capacity(READ_CHUNK_BYTES, reader);
     loop {
         let line = read_line_bounded(&mut reader, MAX_LINE_BYTES)?;
         let response = match &line {
-            Line::Eof => return Ok(()),
+            Line::Eof => return writer.flush(),
             Line::TooLong => json!({
                 "ok": false,
                 "error": format!("request line longer than {MAX_LINE_BYTES} bytes; it was skipped")
@@ -95,9 +106,11 @@ pub fn serve<R: BufRead, W: Write>(mut reader: R, mut writer: W) -> io::Result<(
         };
         writer.write_all(response.as_bytes())?;
         writer.write_all(b"\n")?;
-        writer.flush()?;
         if line == Line::TooLong {
+            writer.flush()?;
             skip_line(&mut reader)?;
+        } else if !reader.buffer().contains(&b'\n') {
+            writer.flush()?;
         }
     }
 }

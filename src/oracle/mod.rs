@@ -81,7 +81,7 @@ mod protocol;
 mod text;
 
 pub use crate::float::{nearest_f64, ulp, ulp_distance, ulp_error, UlpError};
-pub use io::{read_line_bounded, serve, skip_line, Line};
+pub use io::{read_line_bounded, serve, skip_line, Line, READ_CHUNK_BYTES};
 pub use judge::{BoundCheck, FloatEvalAnswer, FloatMethod};
 pub use protocol::{check_weight_count, Answer, Op, OPS};
 pub use text::conic_polynomial;
@@ -392,6 +392,80 @@ mod tests {
         let result = serve(io::BufReader::new(Failing(MAX_LINE_BYTES + 1)), &mut out);
         assert!(result.is_err());
         assert!(String::from_utf8(out).unwrap().contains("longer than"));
+    }
+
+    /// A client that sends its requests one at a time, each read returning the next line
+    /// only: every answer must have been flushed to it before the server asks for the next
+    /// request, or the two would wait on each other forever.
+    #[test]
+    fn an_interactive_client_gets_each_answer_before_its_next_request() {
+        use std::cell::RefCell;
+        use std::rc::Rc;
+        struct Client {
+            requests: Vec<&'static [u8]>,
+            sent: usize,
+            delivered: Rc<RefCell<usize>>,
+        }
+        impl io::Read for Client {
+            fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+                assert_eq!(*self.delivered.borrow(), self.sent, "read before the answer was flushed");
+                let Some(line) = self.requests.get(self.sent) else { return Ok(0) };
+                buf[..line.len()].copy_from_slice(line);
+                self.sent += 1;
+                Ok(line.len())
+            }
+        }
+        /// Counts the lines that reach the client: only flushed bytes do.
+        struct Screen {
+            pending: Vec<u8>,
+            delivered: Rc<RefCell<usize>>,
+        }
+        impl io::Write for Screen {
+            fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+                self.pending.extend_from_slice(buf);
+                Ok(buf.len())
+            }
+            fn flush(&mut self) -> io::Result<()> {
+                *self.delivered.borrow_mut() += self.pending.iter().filter(|&&b| b == b'\n').count();
+                self.pending.clear();
+                Ok(())
+            }
+        }
+        let delivered = Rc::new(RefCell::new(0));
+        let eval: &[u8] = b"{\"op\":\"eval\",\"points\":[[0],[2]],\"t\":\"1/4\"}\n";
+        let client = Client {
+            requests: vec![eval, b"nope\n", eval],
+            sent: 0,
+            delivered: delivered.clone(),
+        };
+        let screen = Screen {
+            pending: Vec::new(),
+            delivered: delivered.clone(),
+        };
+        serve(client, screen).unwrap();
+        assert_eq!(*delivered.borrow(), 3);
+    }
+
+    /// A burst already in the buffer is answered without a flush per line, and nothing is
+    /// left unflushed at the end of input.
+    #[test]
+    fn a_piped_burst_is_answered_in_one_flush() {
+        struct Flushes(Vec<u8>, usize);
+        impl io::Write for Flushes {
+            fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+                self.0.extend_from_slice(buf);
+                Ok(buf.len())
+            }
+            fn flush(&mut self) -> io::Result<()> {
+                self.1 += 1;
+                Ok(())
+            }
+        }
+        let input = "{\"op\":\"eval\",\"points\":[[0],[2]],\"t\":\"1/4\"}\n".repeat(100);
+        let mut out = Flushes(Vec::new(), 0);
+        serve(input.as_bytes(), &mut out).unwrap();
+        assert_eq!(out.0.iter().filter(|&&b| b == b'\n').count(), 100);
+        assert!(out.1 <= 2, "{} flushes for one buffered burst", out.1);
     }
 
     #[test]
