@@ -408,8 +408,14 @@ mod tests {
         }
         impl io::Read for Client {
             fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
-                assert_eq!(*self.delivered.borrow(), self.sent, "read before the answer was flushed");
-                let Some(line) = self.requests.get(self.sent) else { return Ok(0) };
+                assert_eq!(
+                    *self.delivered.borrow(),
+                    self.sent,
+                    "read before the answer was flushed"
+                );
+                let Some(line) = self.requests.get(self.sent) else {
+                    return Ok(0);
+                };
                 buf[..line.len()].copy_from_slice(line);
                 self.sent += 1;
                 Ok(line.len())
