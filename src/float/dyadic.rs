@@ -72,7 +72,16 @@ fn bernstein_weights(n: usize, m: &BigInt, s: &BigInt) -> Vec<BigInt> {
     let mut weights = Vec::with_capacity(n + 1);
     let (mut binomial, mut power_of_m) = (BigInt::one(), BigInt::one());
     for i in 0..=n {
-        weights.push(&binomial * &power_of_m * &powers_of_s[n - i]);
+        // the end weights are plain powers: no product to form
+        let mut w = match i {
+            0 => powers_of_s[n].clone(),
+            _ if i == n => power_of_m.clone(),
+            _ => &power_of_m * &powers_of_s[n - i],
+        };
+        if !binomial.is_one() {
+            w *= &binomial;
+        }
+        weights.push(w);
         if i < n {
             binomial = binomial * (n - i) / (i + 1);
             power_of_m *= m;
