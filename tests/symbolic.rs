@@ -63,15 +63,16 @@ fn false_finite_identities_fail_or_are_refused() {
     )
     .unwrap();
     assert_eq!(v, Verdict::Fails, "{c}");
-    // Wrong only from n = 5 on (true for the evaluated n = 1..=4): never proved.
-    assert_error(
+    // Wrong only from n = 5 on (true for the evaluated n = 1..=4): never proved; the search
+    // past the cross-check finds the counterexample.
+    assert_fails_at(
         "for = [\"n = 1..\", \"i = 0..=n\"]\nlhs = \"B(i, n, t)\"\nrhs = \"B(i, n, t) + (n-1)*(n-2)*(n-3)*(n-4)*t\"",
-        "does not hold",
+        "n = 5",
     );
     // The wrong boundary convention at i = n: (1 - t)B(n, n-1, t) is 0, not t^n (1 - t).
-    assert_error(
+    assert_fails_at(
         "for = [\"n = 4..\", \"i = 0..=n\"]\nlhs = \"B(i, n, t)\"\nrhs = \"(1 - t)*B(i, n-1, t) + t*B(i-1, n-1, t) + C(i, n)*(1 - t)*(n-4)*(n-5)*(n-6)*(n-7)*t^n\"",
-        "does not hold",
+        "n = 8",
     );
 }
 
@@ -104,6 +105,17 @@ fn certificates_are_found_when_not_given() {
     );
     // A polynomial sum: G = 0 and the new term telescopes against the right side.
     assert_proved("for = [\"n = 0..\"]\nlhs = \"sum(i, 0, n, i^2)\"\nrhs = \"n*(n+1)*(2n+1)/6\"");
+    // Classical sums whose certificates need a numerator of degree 4 to 6: Σ C(n, k)² = C(2n, n)
+    // and Vandermonde's convolution, in two free integers.
+    assert_proved("for = [\"n = 0..\"]\nlhs = \"sum(k, 0, n, C(n, k)^2)\"\nrhs = \"C(2n, n)\"");
+    assert_proved(
+        "for = [\"a = 0..\", \"n = 0..\"]\nlhs = \"sum(k, 0, n, C(a, k)*C(n, n - k))\"\nrhs = \"C(a + n, n)\"",
+    );
+    // Their false neighbours are not.
+    assert_fails_at(
+        "for = [\"n = 0..\"]\nlhs = \"sum(k, 0, n, C(n, k)^2)\"\nrhs = \"C(2n, n) + C(n, 5)\"",
+        "n = 5",
+    );
     // What the search finds is checked like a given certificate: a false claim is never
     // proved; the counterexample search past the cross-check finds where it fails.
     assert_fails_at(&format!("{POU}rhs = \"1 + C(n, 11)\""), "n = 11");

@@ -22,7 +22,7 @@ use num_traits::{One, Zero};
 use std::collections::BTreeMap;
 
 /// Largest total degree of the numerator tried.
-pub const MAX_DEGREE: u32 = 3;
+pub const MAX_DEGREE: u32 = 6;
 /// Most unknown coefficients in one ansatz.
 const MAX_UNKNOWNS: usize = 400;
 

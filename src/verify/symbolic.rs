@@ -929,7 +929,8 @@ fn base_case_terms(
 
 /// Checks an identity claim with open ranges for every value (see the module documentation).
 /// When no proof is found, the first [`REFUTATION_SEARCH`] values of each open range are
-/// searched for an exact counterexample; without one the claim is an error with the reason.
+/// searched for an exact counterexample (in widening windows, up to the first that cannot be
+/// evaluated); without one the claim is an error with the reason.
 pub fn check(claim: &Claim, detail: bool) -> Result<Checked> {
     prove_for_every(claim, detail).or_else(|reason| refute_in_search(claim, reason))
 }
@@ -938,13 +939,19 @@ fn refute_in_search(claim: &Claim, reason: Error) -> Result<Checked> {
     let Ok(rs) = ranges(claim) else {
         return Err(reason);
     };
-    match super::kinds::check_claim(&closed_after(claim, &rs, REFUTATION_SEARCH), false) {
-        Ok(mut out) if out.verdict == Verdict::Fails => {
-            out.range = None;
-            Ok(out)
+    // Widening windows: the values of a later window may be past what the ordinary engine
+    // evaluates (a binomial beyond 64 bits), which must not hide a counterexample before them.
+    for extra in [REFUTATION_SEARCH / 4, REFUTATION_SEARCH / 2, REFUTATION_SEARCH] {
+        match super::kinds::check_claim(&closed_after(claim, &rs, extra), false) {
+            Ok(mut out) if out.verdict == Verdict::Fails => {
+                out.range = None;
+                return Ok(out);
+            }
+            Ok(_) => {}
+            Err(_) => break,
         }
-        _ => Err(reason),
     }
+    Err(reason)
 }
 
 fn prove_for_every(claim: &Claim, detail: bool) -> Result<Checked> {
