@@ -36,7 +36,9 @@ const INLINE_POINTS: usize = 4;
 ///
 /// `P` is any [`VectorSpace`]: [`crate::Point2`] and other [`PointN`] for a dimension fixed
 /// at compile time (the fast `f64` path), [`Point`] for one known at run time
-/// ([`BezierCurve`]).
+/// ([`BezierCurve`]). A curve whose degree is fixed when the code is written can be held as a
+/// [`crate::BezierN`] ([`crate::Cubic`], [`crate::Quad`]) instead: the same results, without
+/// the length to test; the two convert both ways.
 ///
 /// ```
 /// use casteljau::{Bezier, Point2};
