@@ -2,13 +2,17 @@
 //! operation so the ratios come from a single run: kurbo, lyon_geom and, at degree 20, a
 //! hand-written de Casteljau on `[[f64; 2]; 21]`. All planar, at t = 0.3.
 //!
+//! `casteljau` is the fixed-degree type a user reaches for with a cubic or a quadratic in
+//! hand ([`casteljau::Cubic`], [`casteljau::Quad`]); `casteljau_any_degree` is the same
+//! operation on the any-degree [`casteljau::Bezier`], measured beside it.
+//!
 //! Every function gets its inputs the same way: the curve through `black_box(&curve)` and
 //! the parameter as an opaque value, `black_box(T)` (casteljau then borrows it, as a caller
 //! with a `t` in hand does), never through a pointer only one side has to follow.
 //!
 //! `cargo bench --bench peers`
 
-use casteljau::{Bezier, Point2};
+use casteljau::{Bezier, Cubic, Point2, Quad};
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use kurbo::{CubicBez, ParamCurve as _, QuadBez};
 use lyon_geom::{point, CubicBezierSegment, QuadraticBezierSegment};
@@ -17,8 +21,8 @@ const T: f64 = 0.3;
 const CUBIC: [[f64; 2]; 4] = [[0.0, 0.0], [1.0, 2.0], [3.0, 2.5], [4.0, 0.5]];
 const QUAD: [[f64; 2]; 3] = [[0.0, 0.0], [1.0, 2.0], [3.0, 0.5]];
 
-fn cubic() -> Bezier<Point2<f64>> {
-    Bezier::from_points(CUBIC.map(Point2::from)).unwrap()
+fn cubic() -> Cubic<Point2<f64>> {
+    Cubic::new(CUBIC.map(Point2::from))
 }
 
 fn kurbo_cubic() -> CubicBez {
@@ -56,8 +60,12 @@ fn array_casteljau(points: &[[f64; 2]; 21], t: f64) -> [f64; 2] {
 
 fn peers(c: &mut Criterion) {
     let (ours, theirs, lyon) = (cubic(), kurbo_cubic(), lyon_cubic());
+    let any = Bezier::from(ours);
     let mut g = c.benchmark_group("cubic_eval");
     g.bench_function("casteljau", |b| b.iter(|| black_box(&ours).eval(&black_box(T))));
+    g.bench_function("casteljau_any_degree", |b| {
+        b.iter(|| black_box(&any).eval(&black_box(T)))
+    });
     g.bench_function("kurbo", |b| b.iter(|| black_box(&theirs).eval(black_box(T))));
     g.bench_function("lyon", |b| b.iter(|| black_box(&lyon).sample(black_box(T))));
     g.finish();
@@ -65,6 +73,9 @@ fn peers(c: &mut Criterion) {
     // kurbo has no split at a parameter: its two subsegments are the same curves.
     let mut g = c.benchmark_group("cubic_split");
     g.bench_function("casteljau", |b| b.iter(|| black_box(&ours).split_at(&black_box(T))));
+    g.bench_function("casteljau_any_degree", |b| {
+        b.iter(|| black_box(&any).split_at(&black_box(T)))
+    });
     g.bench_function("kurbo", |b| {
         b.iter(|| {
             let (c, t) = (black_box(&theirs), black_box(T));
@@ -74,7 +85,8 @@ fn peers(c: &mut Criterion) {
     g.bench_function("lyon", |b| b.iter(|| black_box(&lyon).split(black_box(T))));
     g.finish();
 
-    let quad = Bezier::from_points(QUAD.map(Point2::from)).unwrap();
+    let quad = Quad::new(QUAD.map(Point2::from));
+    let any = Bezier::from(quad);
     let [a, b, c2] = QUAD.map(|[x, y]| (x, y));
     let kquad = QuadBez::new(a, b, c2);
     let [a, b, c2] = QUAD.map(|[x, y]| point(x, y));
@@ -84,7 +96,10 @@ fn peers(c: &mut Criterion) {
         to: c2,
     };
     let mut g = c.benchmark_group("quad_elevate");
-    g.bench_function("casteljau", |b| b.iter(|| black_box(&quad).elevate().unwrap()));
+    g.bench_function("casteljau", |b| b.iter(|| black_box(&quad).elevate()));
+    g.bench_function("casteljau_any_degree", |b| {
+        b.iter(|| black_box(&any).elevate().unwrap())
+    });
     g.bench_function("kurbo", |b| b.iter(|| black_box(&kquad).raise()));
     g.bench_function("lyon", |b| b.iter(|| black_box(&lquad).to_cubic()));
     g.finish();

@@ -17,8 +17,9 @@
 
 use crate::bernstein::{bernstein_all, bernstein_to_power, binomial_row, power_to_bernstein, reparametrize};
 use crate::error::{check_degree, Error, Result};
+use crate::fixed::{elevate_points, split_points};
 use crate::hull::convex_weights;
-use crate::kernel::{de_casteljau, eval_cubic, split_fixed, with_column};
+use crate::kernel::{de_casteljau, eval_cubic, with_column};
 use crate::point::{common_dimension, AffineMap, Point, PointList};
 use crate::scalar::{RefOps, Scalar};
 use crate::space::{PointN, VectorSpace};
@@ -35,7 +36,9 @@ const INLINE_POINTS: usize = 4;
 ///
 /// `P` is any [`VectorSpace`]: [`crate::Point2`] and other [`PointN`] for a dimension fixed
 /// at compile time (the fast `f64` path), [`Point`] for one known at run time
-/// ([`BezierCurve`]).
+/// ([`BezierCurve`]). A curve whose degree is fixed when the code is written can be held as a
+/// [`crate::BezierN`] ([`crate::Cubic`], [`crate::Quad`]) instead: the same results, without
+/// the length to test; the two convert both ways.
 ///
 /// ```
 /// use casteljau::{Bezier, Point2};
@@ -90,7 +93,7 @@ pub struct ElevationDistance<T> {
 /// `1/(n+1)`, the step of the weights of (7), divided once: its multiples `i · 1/(n+1)`
 /// are the weights `i/(n+1)`, exactly for exact scalars, with one rounding more for floats.
 #[inline(always)]
-fn elevation_step<T: Scalar>(n: usize) -> Result<T>
+pub(crate) fn elevation_step<T: Scalar>(n: usize) -> Result<T>
 where
     for<'a> &'a T: RefOps<T>,
 {
@@ -99,7 +102,7 @@ where
 
 /// Point `i` of the polygon (7) elevated from the `n + 1` `points`, given `step = 1/(n+1)`.
 #[inline(always)]
-fn elevated_point<T: Scalar, P: VectorSpace<Scalar = T>>(points: &[P], i: usize, step: &T) -> P
+pub(crate) fn elevated_point<T: Scalar, P: VectorSpace<Scalar = T>>(points: &[P], i: usize, step: &T) -> P
 where
     for<'a> &'a T: RefOps<T>,
 {
@@ -116,7 +119,7 @@ where
 /// Makes the common point of a float cubic's halves `b(t0)` as [`Bezier::eval`] computes it,
 /// in place of the last de Casteljau step (exact scalars agree already).
 #[inline(always)]
-fn join_at_eval<T: Scalar, P: VectorSpace<Scalar = T>>(
+pub(crate) fn join_at_eval<T: Scalar, P: VectorSpace<Scalar = T>>(
     points: &[P; INLINE_POINTS],
     t0: &T,
     left: &mut [P],
@@ -164,6 +167,14 @@ where
         common_dim(&points, "a Bézier curve")?;
         check_degree("degree", points.len() as u128 - 1)?;
         Ok(Bezier { points })
+    }
+
+    /// The curve of points known to be valid: non-empty, of one dimension, within the degree
+    /// limit.
+    pub(crate) fn from_valid(points: impl IntoIterator<Item = P>) -> Self {
+        Bezier {
+            points: points.into_iter().collect(),
+        }
     }
 
     /// The control points as an array when there are exactly `N` of them, stored inline.
@@ -239,14 +250,11 @@ where
     /// `b'_i = i/(n+1) b_{i-1} + (1 − i/(n+1)) b_i`.
     #[inline]
     pub fn elevate(&self) -> Result<Self> {
-        if let Some([a, b, c]) = self.inline_array::<3>() {
+        if let Some(points) = self.inline_array::<3>() {
             // A quadratic's cubic fills the inline buffer exactly: written at once, with the
             // weights 1/3 and 2/3 constants (for floats, folded at compile time).
-            let third = elevation_step::<T>(2)?;
-            let two_thirds = &T::from_usize(2) * &third;
-            let points = [a.clone(), b.lerp_to(a, &third), c.lerp_to(b, &two_thirds), c.clone()];
             return Ok(Bezier {
-                points: SmallVec::from_buf(points),
+                points: SmallVec::from_buf(elevate_points(points)),
             });
         }
         self.elevate_any()
@@ -314,9 +322,7 @@ where
         // A cubic fills the inline buffer: split as an array of constant length, so that
         // the levels unroll and both halves are written at once.
         if let Some(points) = self.inline_array::<INLINE_POINTS>() {
-            let mut right = points.clone();
-            let mut left = split_fixed(&mut right, t0);
-            join_at_eval(points, t0, &mut left, &mut right);
+            let (left, right) = split_points(points, t0);
             return (
                 Bezier {
                     points: SmallVec::from_buf(left),

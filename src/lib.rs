@@ -19,7 +19,7 @@
 //! point trait the algorithms are generic over, fixed-dimension points), [`point`]
 //! (run-time-dimension points, barycentric combinations, affine maps), [`kernel`] (the one
 //! de Casteljau kernel), [`bernstein`] (binomials, the Bernstein basis, power ↔ Bernstein),
-//! [`curve`] (Bézier curves), [`param`] (traits over curve kinds), [`hull`] (exact
+//! [`curve`] (Bézier curves), [`fixed`] (curves of a fixed degree), [`param`] (traits over curve kinds), [`hull`] (exact
 //! convex-hull membership), [`linalg`] (exact elimination).
 
 #![forbid(unsafe_code)]
@@ -31,6 +31,7 @@ pub mod error;
 pub mod exact;
 pub mod figure;
 pub mod fit;
+pub mod fixed;
 pub mod float;
 pub mod html;
 pub mod hull;
@@ -53,6 +54,7 @@ pub mod verify;
 
 pub use curve::{Bezier, BezierCurve, DeCasteljauScheme, ElevationDistance};
 pub use error::{Error, Result, MAX_DEGREE, MAX_DIMENSION};
+pub use fixed::{BezierN, Cubic, Line, Quad};
 pub use num_bigint::BigInt;
 pub use num_rational::BigRational;
 pub use param::{ParamCurve, ParamCurveDeriv};

@@ -1,7 +1,7 @@
 //! The `f64` fast path allocates nothing: a counting global allocator around cubic
-//! evaluation, subdivision and elevation.
+//! evaluation, subdivision and elevation, on the any-degree and the fixed-degree curves.
 
-use casteljau::{Bezier, Point2};
+use casteljau::{Bezier, Cubic, ParamCurve, Point2, Quad};
 
 /// Allocations made by `f` on this thread (the counting global allocator is the
 /// `allocation-counter` crate's, so this test needs no `unsafe` of its own).
@@ -28,6 +28,27 @@ fn cubic_eval_and_split_allocate_nothing() {
     let (n, cubic) = allocations(|| quad.elevate().unwrap());
     assert_eq!(n, 0, "elevate allocated");
     assert_eq!(cubic.degree(), 3);
+}
+
+#[test]
+fn fixed_cubic_eval_split_and_elevation_allocate_nothing() {
+    let c = Cubic::try_from(&cubic()).unwrap();
+    let (n, p) = allocations(|| c.eval(&0.3));
+    assert_eq!(n, 0, "eval allocated");
+    let (n, (left, right)) = allocations(|| c.split_at(&0.3));
+    assert_eq!(n, 0, "split_at allocated");
+    assert_eq!((left.points()[3], right.points()[0]), (p, p));
+    let (n, piece) = allocations(|| c.subsegment(&0.2, &0.7));
+    assert_eq!(n, 0, "subsegment allocated");
+    assert!(piece.is_ok());
+    let quad = Quad::new([[0.0, 0.0], [1.0, 2.0], [3.0, 0.5]].map(Point2::from));
+    let (n, elevated) = allocations(|| quad.elevate());
+    assert_eq!(n, 0, "elevate allocated");
+    let (n, quartic) = allocations(|| elevated.elevate());
+    assert_eq!(n, 0, "elevate of a cubic allocated");
+    let (n, hodograph) = allocations(|| c.deriv());
+    assert_eq!(n, 0, "deriv allocated");
+    assert_eq!((quartic.degree(), hodograph.degree()), (4, 2));
 }
 
 #[test]
