@@ -31,6 +31,7 @@ fn fails(body: &str) -> String {
 fn error(body: &str) -> String {
     let err = check(body).expect_err(body).to_string();
     assert!(!err.contains('\n'), "one line: {err}");
+    println!("{err}");
     err
 }
 
@@ -84,4 +85,99 @@ fn false_partials_fail_with_exact_values() {
     assert!(c.contains("left side") && c.contains("right side"), "{c}");
     fails(&format!("{PARABOLOID}lhs = \"diff(x(u, v), v)\"\nrhs = \"(0, 1, v)\""));
     fails(&format!("{EX1}lhs = \"x_uv(u, v)\"\nrhs = \"(0, 0, 1)\""));
+}
+
+#[test]
+fn partials_of_the_symbolic_net_for_every_degree_in_range() {
+    // Corner tangents ∂b/∂u(0, 0) = m(b_{1,0} − b_{0,0}), ∂b/∂v(0, 0) = n(b_{0,1} − b_{0,0}) and
+    // the twist ∂²b/∂u∂v(0, 0) = mn(b_{1,1} − b_{1,0} − b_{0,1} + b_{0,0}).
+    let net = "net = { name = \"b\", degree = [\"m\", \"n\"] }\nfor = [\"m = 1..=4\", \"n = 1..=4\"]\n";
+    for (lhs, rhs) in [
+        ("b_u(0, 0)", "m*(b[1,0] - b[0,0])"),
+        ("diff(b(u, v), v)", "b_v(u, v)"),
+        ("b_v(0, 0)", "n*(b[0,1] - b[0,0])"),
+        ("b_uv(0, 0)", "m*n*(b[1,1] - b[1,0] - b[0,1] + b[0,0])"),
+        ("b_u(1, 1)", "m*(b[m,n] - b[m-1,n])"),
+    ] {
+        let body = format!("{net}vars = [\"u\", \"v\"]\nlhs = \"{lhs}\"\nrhs = \"{rhs}\"");
+        assert_eq!(verdict(&body), Verdict::ProvedInRange, "{lhs} = {rhs}");
+    }
+    let c = fails(&format!("{net}lhs = \"b_u(0, 0)\"\nrhs = \"b[1,0] - b[0,0]\""));
+    assert!(c.contains("m = 2"), "{c}");
+    fails(&format!("{net}lhs = \"b_uv(0, 0)\"\nrhs = \"m*n*(b[1,1] - b[0,0])\""));
+}
+
+#[test]
+fn curve_objects_are_differentiated_by_diff_as_by_primes() {
+    let cubic = "curves = { b = { points = [[0, 0], [1, 2], [3, 3], [4, 0]] } }\nvars = [\"t\"]\n";
+    assert_eq!(
+        verdict(&format!("{cubic}lhs = \"diff(b(t), t)\"\nrhs = \"b'(t)\"")),
+        Verdict::Proved
+    );
+    assert_eq!(
+        verdict(&format!("{cubic}lhs = \"diff(b(t), t, 2)\"\nrhs = \"b''(t)\"")),
+        Verdict::Proved
+    );
+    assert_eq!(
+        verdict(&format!("{cubic}lhs = \"b'(0)\"\nrhs = \"3*(b[1] - b[0])\"")),
+        Verdict::Proved
+    );
+    assert_eq!(
+        verdict(&format!("{cubic}lhs = \"b'(1)\"\nrhs = \"3*(b[3] - b[2])\"")),
+        Verdict::Proved
+    );
+    fails(&format!("{cubic}lhs = \"b'(0)\"\nrhs = \"b[1] - b[0]\""));
+    let conic = "curves = { c = { points = [[1, 0], [1, 1], [0, 1]], weights = [1, 1, 2] } }\nvars = [\"t\"]\n";
+    assert_eq!(
+        verdict(&format!("{conic}lhs = \"diff(c(t), t)\"\nrhs = \"c'(t)\"")),
+        Verdict::Proved
+    );
+    // The end tangent of a rational curve: (w_1/w_0) n (b_1 − b_0).
+    assert_eq!(
+        verdict(&format!("{conic}lhs = \"c'(0)\"\nrhs = \"2*((1, 1) - (1, 0))\"")),
+        Verdict::Proved
+    );
+    fails(&format!("{conic}lhs = \"c'(1)\"\nrhs = \"2*((0, 1) - (1, 1))\""));
+}
+
+#[test]
+fn misuse_is_a_clear_error() {
+    let cubic = "curves = { b = { points = [[0, 0], [1, 2], [3, 3], [4, 0]] } }\n";
+    let cases = [
+        // Primes on a surface, partials of a curve.
+        (format!("{PARABOLOID}lhs = \"x'(u, v)\"\nrhs = \"0\""), "not primes"),
+        (format!("{cubic}vars = [\"t\"]\nlhs = \"b_u(t)\"\nrhs = \"0\""), "b is a curve"),
+        // A partial by a letter other than u and v, a call with the wrong arity.
+        (format!("{PARABOLOID}lhs = \"x_w(u, v)\"\nrhs = \"0\""), "written with u"),
+        (format!("{PARABOLOID}lhs = \"x_u(u)\"\nrhs = \"0\""), "two arguments"),
+        // Beyond the order limit (the derivative itself would be 0).
+        (format!("{PARABOLOID}lhs = \"x_uuuuuuuuuvvvvvvvv(u, v)\"\nrhs = \"0\""), "at most 16"),
+        (format!("{PARABOLOID}lhs = \"diff(diff(x(u, v), u, 9), v, 8)\"\nrhs = \"0\""), "at most 16"),
+        // diff by something that is not a variable.
+        (format!("{PARABOLOID}lhs = \"diff(x(u, v), 2)\"\nrhs = \"0\""), "needs a variable"),
+        // The derivative of something that is not an object.
+        (
+            "polygon = { name = \"b\", degree = \"2\" }\nvars = [\"t\"]\nlhs = \"diff(bsum(b, t), t)\"\nrhs = \"0\"".to_string(),
+            "only claim objects",
+        ),
+        ("vars = [\"t\"]\nlhs = \"diff(foo(t), t)\"\nrhs = \"0\"".to_string(), "only claim objects"),
+        // A surface named like a partial, or a name that hides one.
+        (
+            "surfaces = { x_u = { net = [[[0, 0], [0, 1]], [[1, 0], [1, 1]]] } }\nvars = [\"u\", \"v\"]\nlhs = \"x_u(u, v)\"\nrhs = \"0\"".to_string(),
+            "reads as a partial",
+        ),
+        (format!("{PARABOLOID}let = [\"x_v(a, c) = a\"]\nlhs = \"x_v(u, v)\"\nrhs = \"u\""), "reads as a partial"),
+    ];
+    for (body, want) in cases {
+        let err = error(&body);
+        assert!(err.contains(want), "{body}\n→ {err}");
+    }
+    // A surface has no weights (rational surfaces are not claim objects): the claim file is
+    // refused when read (the TOML reader's message, which shows the line).
+    let err = check(
+        "surfaces = { x = { net = [[[0, 0], [0, 1]], [[1, 0], [1, 1]]], weights = [[1, 1], [1, 1]] } }\nlhs = \"x(u, v)\"\nrhs = \"0\"",
+    )
+    .expect_err("weights")
+    .to_string();
+    assert!(err.contains("unknown field `weights`"), "{err}");
 }

@@ -370,6 +370,11 @@ fn surface_ref<'n>(
                 "{name}: the {what} {primed} has partials {primed}_u(u, v), {primed}_v(u, v), {primed}_uv(u, v), … (or diff({primed}(u, v), u)), not primes"
             )));
         }
+        if let Some((surface, suffix)) = name.rsplit_once('_').filter(|(b, _)| is_surface(b)) {
+            return Err(Error::Domain(format!(
+                "{name}: a partial of the {what} {surface} is written with u (by the first argument) and v (by the second), e.g. {surface}_u, {surface}_uv, not '{suffix}'"
+            )));
+        }
         if let Some((curve, _, _)) = expr::split_partial(name).filter(|(b, _, _)| is_curve(b)) {
             return Err(Error::Domain(format!(
                 "{name}: {curve} is a curve; its derivatives are {curve}'(t), {curve}''(t), … (or diff({curve}(t), t))"
