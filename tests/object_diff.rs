@@ -181,3 +181,15 @@ fn misuse_is_a_clear_error() {
     .to_string();
     assert!(err.contains("unknown field `weights`"), "{err}");
 }
+
+#[test]
+fn a_point_at_infinity_is_skipped_never_a_different_curve() {
+    // Weights 1, −1, 1: the denominator (1 − 2t)² vanishes at t = 1/2 (a point at infinity).
+    // That sample is skipped (the certificate says so); the identity is decided elsewhere.
+    let curve = "curves = { c = { points = [[0, 0], [1, 1], [2, 0]], weights = [1, -1, 1] } }\nvars = [\"t\"]\n";
+    let (v, c) = check(&format!("{curve}lhs = \"diff(c(t), t)\"\nrhs = \"c'(t)\"")).unwrap();
+    assert_eq!(v, Verdict::Proved, "{c}");
+    assert!(c.contains("skipped where a denominator vanishes"), "{c}");
+    let c = fails(&format!("{curve}lhs = \"c'(t)\"\nrhs = \"(2, 0)\""));
+    assert!(c.contains("left side") && !c.contains("t = 1/2:"), "{c}");
+}

@@ -25,7 +25,8 @@
 //! from 1), `integral(e, t, a, b)` (exact, for a polynomial integrand in `t`), `delta(b, k, j)` (forward difference
 //! `Δ^k b_j` of a control polygon). Claim objects are called by name: `b(t)` (a curve),
 //! `b(i, r, t)` (the de Casteljau point `b_i^r(t)`), `b'(t)` (derivative), `b[j]` (a control
-//! point), `x(u, v)` (a surface).
+//! point), `x(u, v)` (a surface), `x_u(u, v)`, `x_uv(u, v)`, … (its partials: `u` by the
+//! first argument, `v` by the second; see [`split_partial`]).
 //!
 //! Limits: exponents and Bernstein/binomial indices at most [`MAX_EXPONENT`]; at most
 //! [`MAX_SUM_TERMS`] terms summed per evaluation; factorials of at most [`MAX_FACTORIAL`];
