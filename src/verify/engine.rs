@@ -329,6 +329,74 @@ where
     Ok(BezierSurface::new(net.to_vec())?.eval(u, v))
 }
 
+/// `∂^{ku+kv} x / ∂u^{ku} ∂v^{kv}` at `(u, v)` by the library: the surface of the derivative
+/// net (`m!/(m-ku)! n!/(n-kv)! Δ_u^{ku} Δ_v^{kv} b_{i,j}`), evaluated
+/// ([`BezierSurface::partial_at`]; zero beyond the degrees).
+pub fn partial_net<T: Exact>(net: &[Vec<Point<T>>], ku: usize, kv: usize, u: &T, v: &T) -> Result<Point<T>>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    let s = BezierSurface::new(net.to_vec())?;
+    if ku + kv == 0 {
+        return Ok(s.eval(u, v));
+    }
+    s.partial_at(ku, kv, u, v)
+}
+
+/// Highest total order of a partial derivative of a surface or net a claim may take
+/// (`x_uuv` has order 3); the same bound as `diff(e, t, k)`.
+pub const MAX_SURFACE_PARTIAL: usize = 16;
+
+/// `name` as a surface or its partial: `x` → `(x, 0, 0)`, `x_uv` → `(x, 1, 1)`, when
+/// `is_surface` holds for the base; `None` for other names. Primes on a surface, partials
+/// of a curve and orders above [`MAX_SURFACE_PARTIAL`] are errors, as is any call other
+/// than with two arguments.
+fn surface_ref<'n>(
+    name: &'n str,
+    args: &[Expr],
+    is_surface: &dyn Fn(&str) -> bool,
+    is_curve: &dyn Fn(&str) -> bool,
+    what: &str,
+) -> Result<Option<(&'n str, usize, usize)>> {
+    let found = if is_surface(name) {
+        Some((name, 0, 0))
+    } else {
+        expr::split_partial(name).filter(|(base, _, _)| is_surface(base))
+    };
+    let Some((base, ku, kv)) = found else {
+        let (primed, order) = split_primes(name);
+        if order > 0 && is_surface(primed) {
+            return Err(Error::Domain(format!(
+                "{name}: the {what} {primed} has partials {primed}_u(u, v), {primed}_v(u, v), {primed}_uv(u, v), … (or diff({primed}(u, v), u)), not primes"
+            )));
+        }
+        if let Some((surface, suffix)) = name.rsplit_once('_').filter(|(b, _)| is_surface(b)) {
+            return Err(Error::Domain(format!(
+                "{name}: a partial of the {what} {surface} is written with u (by the first argument) and v (by the second), e.g. {surface}_u, {surface}_uv, not '{suffix}'"
+            )));
+        }
+        if let Some((curve, _, _)) = expr::split_partial(name).filter(|(b, _, _)| is_curve(b)) {
+            return Err(Error::Domain(format!(
+                "{name}: {curve} is a curve; its derivatives are {curve}'(t), {curve}''(t), … (or diff({curve}(t), t))"
+            )));
+        }
+        return Ok(None);
+    };
+    if ku + kv > MAX_SURFACE_PARTIAL {
+        return Err(Error::Domain(format!(
+            "{name}: a {what} is differentiated at most {MAX_SURFACE_PARTIAL} times in all (this is order {})",
+            ku + kv
+        )));
+    }
+    if args.len() != 2 {
+        return Err(Error::Domain(format!(
+            "the {what} {base} is called as {name}(u, v), with two arguments, not {}",
+            args.len()
+        )));
+    }
+    Ok(Some((base, ku, kv)))
+}
+
 // ---------------------------------------------------------------------------------------
 // Environments
 
@@ -388,12 +456,13 @@ where
         if let Some(c) = self.curves.get(base) {
             return Ok(Some(curve_call(c, base, order, args, ev)?));
         }
-        if let Some(net) = self.surfaces.get(base) {
-            if args.len() != 2 || order > 0 {
-                return Err(Error::Domain(format!("the surface {base} is called as {base}(u, v)")));
-            }
+        let is_curve = |n: &str| self.curves.contains_key(n) || self.polygon.as_ref().is_some_and(|p| p.0 == n);
+        let is_surface = |n: &str| self.surfaces.contains_key(n);
+        if let Some((s, ku, kv)) = surface_ref(name, args, &is_surface, &is_curve, "surface")? {
             let (u, v) = (ev.scalar(&args[0])?, ev.scalar(&args[1])?);
-            return Ok(Some(Value::V(eval_net(net, &u, &v)?.into_coords())));
+            return Ok(Some(Value::V(
+                partial_net(&self.surfaces[s], ku, kv, &u, &v)?.into_coords(),
+            )));
         }
         if let Some((pname, coeffs)) = &self.polygon {
             if let Some(m) = PolygonMethod::of_call(name, args, pname)? {
@@ -414,16 +483,13 @@ where
             if let Some(m) = NetMethod::of_call(name, args, nname)? {
                 return Ok(Some(Value::S(m.value(net, args, ev)?)));
             }
-            if nname == base {
-                if args.len() != 2 || order > 0 {
-                    return Err(Error::Domain(format!("the net {base} is called as {base}(u, v)")));
-                }
+            if let Some((_, ku, kv)) = surface_ref(name, args, &|n| n == nname, &is_curve, "net")? {
                 let (u, v) = (ev.scalar(&args[0])?, ev.scalar(&args[1])?);
                 let pts: Vec<Vec<Point<T>>> = net
                     .iter()
                     .map(|r| r.iter().map(|c| Point::new(vec![c.clone()])).collect::<Result<_>>())
                     .collect::<Result<_>>()?;
-                return Ok(Some(Value::S(eval_net(&pts, &u, &v)?.coords()[0].clone())));
+                return Ok(Some(Value::S(partial_net(&pts, ku, kv, &u, &v)?.coords()[0].clone())));
             }
         }
         Ok(None)
@@ -657,23 +723,25 @@ impl Env<Deg> for DegEnv {
                 return Ok(Some(Value::S(d.times_control_point())));
             }
         }
-        let surface = |ev: &mut Evaluator<'_, Deg>, m: u64, n: u64| -> Result<Deg> {
-            if args.len() != 2 {
-                return Err(Error::Domain(format!("the surface {base} is called as {base}(u, v)")));
-            }
+        // A partial ∂^{ku+kv}/∂u^{ku}∂v^{kv} lowers the degrees to (m − ku, n − kv).
+        let surface = |ev: &mut Evaluator<'_, Deg>, m: u64, n: u64, ku: usize, kv: usize| -> Result<Deg> {
             let (u, v) = (ev.scalar(&args[0])?, ev.scalar(&args[1])?);
-            Ok(u.compose(m).mul(&v.compose(n)))
+            Ok(u.compose(m.saturating_sub(ku as u64))
+                .mul(&v.compose(n.saturating_sub(kv as u64))))
         };
-        if let Some(&(m, n, dim)) = self.surfaces.get(base) {
-            let d = surface(ev, m, n)?;
+        let is_curve = |n: &str| self.curves.contains_key(n) || self.polygon.as_ref().is_some_and(|p| p.0 == n);
+        let is_surface = |n: &str| self.surfaces.contains_key(n);
+        if let Some((s, ku, kv)) = surface_ref(name, args, &is_surface, &is_curve, "surface")? {
+            let (m, n, dim) = self.surfaces[s];
+            let d = surface(ev, m, n, ku, kv)?;
             return Ok(Some(Value::V(vec![d; dim])));
         }
         if let Some((nname, m, n)) = &self.net {
             if let Some(meth) = NetMethod::of_call(name, args, nname)? {
                 return Ok(Some(Value::S(meth.degree(*m, *n, args, ev)?)));
             }
-            if nname == base {
-                return Ok(Some(Value::S(surface(ev, *m, *n)?.times_control_point())));
+            if let Some((_, ku, kv)) = surface_ref(name, args, &|x| x == nname, &is_curve, "net")? {
+                return Ok(Some(Value::S(surface(ev, *m, *n, ku, kv)?.times_control_point())));
             }
         }
         Ok(None)

@@ -899,10 +899,26 @@ impl<'e, A: Alg> Evaluator<'e, A> {
             }
             _ => {
                 let env = self.env;
-                env.call(name, args, self)?
-                    .ok_or_else(|| Error::Domain(format!("unknown function or object '{name}'")))?
+                env.call(name, args, self)?.ok_or_else(|| unknown_call(name))?
             }
         })
+    }
+}
+
+/// The error for a call nothing answers; a derivative (`f'`, `f_u`, as `diff` writes them)
+/// of something that is not a claim object says so.
+fn unknown_call(name: &str) -> Error {
+    let primed = name.trim_end_matches('\'');
+    let base = if primed.len() < name.len() {
+        Some(primed)
+    } else {
+        super::expr::split_partial(name).map(|(b, _, _)| b)
+    };
+    match base {
+        Some(b) => Error::Domain(format!(
+            "cannot differentiate {b}(…): '{name}' is a derivative, and only claim objects have them (a curve's b'(t), a surface's x_u(u, v)); {b} is not a curve or surface of the claim"
+        )),
+        None => Error::Domain(format!("unknown function or object '{name}'")),
     }
 }
 

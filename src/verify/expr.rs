@@ -25,7 +25,8 @@
 //! from 1), `integral(e, t, a, b)` (exact, for a polynomial integrand in `t`), `delta(b, k, j)` (forward difference
 //! `Δ^k b_j` of a control polygon). Claim objects are called by name: `b(t)` (a curve),
 //! `b(i, r, t)` (the de Casteljau point `b_i^r(t)`), `b'(t)` (derivative), `b[j]` (a control
-//! point), `x(u, v)` (a surface).
+//! point), `x(u, v)` (a surface), `x_u(u, v)`, `x_uv(u, v)`, … (its partials: `u` by the
+//! first argument, `v` by the second; see [`split_partial`]).
 //!
 //! Limits: exponents and Bernstein/binomial indices at most [`MAX_EXPONENT`]; at most
 //! [`MAX_SUM_TERMS`] terms summed per evaluation; factorials of at most [`MAX_FACTORIAL`];
@@ -1113,6 +1114,21 @@ fn derive_call(e: &Expr, name: &str, args: &[Expr], var: &str) -> Result<Expr> {
             }
             Ok(zero)
         }
+        _ if args.len() == 2 => {
+            // A surface (or net) x(g, h) → x_u(g, h) g' + x_v(g, h) h' (chain rule; `_u` is
+            // the partial by the first argument, whatever it is called). Partials of a
+            // polynomial surface commute, so the suffix is kept sorted: x_uv = x_vu.
+            if !args.iter().any(|a| a.mentions(var)) {
+                return Ok(zero);
+            }
+            let (base, ku, kv) = split_partial(name).unwrap_or((name, 0, 0));
+            let du = derive(&args[0], var)?;
+            let dv = derive(&args[1], var)?;
+            Ok(sadd(
+                smul(Expr::Call(partial_name(base, ku + 1, kv), args.to_vec()), du),
+                smul(Expr::Call(partial_name(base, ku, kv + 1), args.to_vec()), dv),
+            ))
+        }
         _ => {
             // A claim object: b(g) → b'(g) g' (a curve of one parameter).
             if args.len() != 1 {
@@ -1130,6 +1146,33 @@ fn derive_call(e: &Expr, name: &str, args: &[Expr], var: &str) -> Result<Expr> {
             ))
         }
     }
+}
+
+/// The partial-derivative notation of a surface: `x_u`, `x_vv`, `x_uuv`, … is
+/// `(x, ku, kv)`, `ku` the count of `u` (the first argument) and `kv` of `v` (the second)
+/// after the last `_`; `None` for any other name.
+///
+/// ```
+/// use casteljau::verify::expr::split_partial;
+/// assert_eq!(split_partial("x_uvu"), Some(("x", 2, 1)));
+/// assert_eq!(split_partial("x"), None);
+/// assert_eq!(split_partial("x_w"), None);
+/// ```
+pub fn split_partial(name: &str) -> Option<(&str, usize, usize)> {
+    let (base, suffix) = name.rsplit_once('_')?;
+    if base.is_empty() || suffix.is_empty() || !suffix.chars().all(|c| c == 'u' || c == 'v') {
+        return None;
+    }
+    let ku = suffix.chars().filter(|&c| c == 'u').count();
+    Some((base, ku, suffix.len() - ku))
+}
+
+/// The name of the partial `∂^{ku+kv} x / ∂u^{ku} ∂v^{kv}`: `x_uuv` (`x` itself for 0, 0).
+pub fn partial_name(base: &str, ku: usize, kv: usize) -> String {
+    if ku + kv == 0 {
+        return base.to_string();
+    }
+    format!("{base}_{}{}", "u".repeat(ku), "v".repeat(kv))
 }
 
 /// Integer ranges `var = from..=to` of a claim, in order (later bounds may use earlier vars).

@@ -153,7 +153,22 @@ pub fn check_fields(c: &Claim) -> Result<()> {
             declared.push((name.to_string(), "definition"));
         }
     }
+    let surfaces: Vec<&str> = declared
+        .iter()
+        .filter(|(_, what)| *what == "surface" || *what == "net")
+        .map(|(n, _)| n.as_str())
+        .collect();
     for (k, (name, what)) in declared.iter().enumerate() {
+        // `x_uv` is the notation for a partial of the surface `x`: a name of that form
+        // would be read as a derivative (or hide one).
+        if let Some((base, _, _)) = super::expr::split_partial(name) {
+            if surfaces.contains(&name.as_str()) || surfaces.contains(&base) {
+                return Err(Error::Parse(format!(
+                    "claim {}: the {what} '{name}' reads as a partial derivative ({base}_u, {base}_uv, … are the partials of a surface {base}); choose another name",
+                    c.id
+                )));
+            }
+        }
         if is_reserved(name) {
             return Err(Error::Parse(format!(
                 "claim {}: the {what} '{name}' would shadow a built-in function or library operation of the same name; choose another name",
