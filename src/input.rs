@@ -186,22 +186,26 @@ pub fn check_net(rows: &[Vec<Point<BigRational>>]) -> Result<()> {
 pub fn number_from_json(v: &Value) -> Result<BigRational> {
     match v {
         Value::String(s) => parse_exact(s),
-        Value::Number(n) => {
-            if let Some(i) = n.as_i64() {
-                Ok(BigRational::from_integer(i.into()))
-            } else if let Some(u) = n.as_u64() {
-                Ok(BigRational::from_integer(u.into()))
-            } else {
-                let x = n
-                    .as_f64()
-                    .ok_or_else(|| Error::Parse(format!("the JSON number {n} is not representable")))?;
-                <BigRational as Scalar>::from_f64(x)
-            }
-        }
+        Value::Number(n) => json_number(n),
         other => Err(Error::Parse(format!(
             "expected a number (a JSON number or a string like \"1/3\"), got {}",
             describe(other)
         ))),
+    }
+}
+
+/// A JSON number exactly: an integer as itself, any other number as exactly the f64 it
+/// denotes.
+pub fn json_number(n: &serde_json::Number) -> Result<BigRational> {
+    if let Some(i) = n.as_i64() {
+        Ok(BigRational::from_integer(i.into()))
+    } else if let Some(u) = n.as_u64() {
+        Ok(BigRational::from_integer(u.into()))
+    } else {
+        let x = n
+            .as_f64()
+            .ok_or_else(|| Error::Parse(format!("the JSON number {n} is not representable")))?;
+        <BigRational as Scalar>::from_f64(x)
     }
 }
 

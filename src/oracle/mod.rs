@@ -74,6 +74,7 @@
 //! any computation.
 
 mod cost;
+mod fast;
 mod io;
 mod json;
 mod judge;
@@ -125,6 +126,14 @@ pub fn handle_line(line: &str) -> String {
 }
 
 fn respond(line: &str) -> String {
+    if let Some((op, id)) = fast::eval_request(line) {
+        return answer_line(op.run_checked(), id.as_ref(), line);
+    }
+    respond_in_general(line)
+}
+
+/// [`respond`] without the fast path: what the fast path's answers are tested against.
+fn respond_in_general(line: &str) -> String {
     let request: Value = match serde_json::from_str(line) {
         Ok(v) => v,
         Err(e) => {
@@ -137,7 +146,11 @@ fn respond(line: &str) -> String {
         }
     };
     let answer = Op::from_json(&request).and_then(|op| op.run_checked());
-    let id = request.get("id");
+    answer_line(answer, request.get("id"), line)
+}
+
+/// The response line to `line`, whose request was parsed into `answer` and `id`.
+fn answer_line(answer: crate::Result<Answer>, id: Option<&Value>, line: &str) -> String {
     if let Ok(Answer::Point { point, ulps, bound }) = &answer {
         if !id.is_some_and(has_inexact_number) {
             return point_response(point, ulps.as_deref(), bound.as_deref(), id);
@@ -231,7 +244,17 @@ fn point_response(
     key(&mut out, "ok");
     out.extend_from_slice(b"true");
     key(&mut out, "point");
-    array(&mut out, point.coords().iter().map(crate::scalar::format_exact));
+    out.push(b'[');
+    for (k, c) in point.coords().iter().enumerate() {
+        if k > 0 {
+            out.push(b',');
+        }
+        // digits, '-' and '/': a JSON string with nothing to escape
+        out.push(b'"');
+        out.extend_from_slice(crate::scalar::format_exact(c).as_bytes());
+        out.push(b'"');
+    }
+    out.push(b']');
     if let Some(u) = ulps {
         key(&mut out, "ulps");
         array(&mut out, u.iter().map(|e| judge::ulps_json(e.ulps)));
@@ -746,6 +769,103 @@ mod tests {
         let mut out = Vec::new();
         serve(&[b'{', 0xff, b'}', b'\n'][..], &mut out).unwrap();
         assert!(String::from_utf8(out).unwrap().contains("not valid UTF-8"));
+    }
+
+    /// JSON text of one number-like value, valid or not for a coordinate.
+    fn json_number_text() -> impl Strategy<Value = String> {
+        prop_oneof![
+            40 => (-1e3f64..1e3).prop_map(|x| format!("{x:?}")),
+            10 => (-50i64..50).prop_map(|i| i.to_string()),
+            1 => Just("18446744073709551615".to_string()),
+            1 => Just("1e-310".to_string()),
+            1 => Just("\"1/3\"".to_string()),
+            1 => Just("null".to_string()),
+            1 => Just("1e400".to_string()),
+        ]
+    }
+
+    /// An `eval` request as text, mostly well formed, with the faults the fast path must
+    /// leave to the general one: repeated, unknown or null fields, other ops, string
+    /// numbers, mismatched dimensions, fields in any order.
+    fn eval_line() -> impl Strategy<Value = String> {
+        let list = |len: std::ops::Range<usize>| {
+            prop::collection::vec(json_number_text(), len).prop_map(|c| format!("[{}]", c.join(",")))
+        };
+        let points = (1usize..4).prop_flat_map(move |dim| {
+            let point = prop_oneof![20 => list(dim..dim + 1), 1 => list(1..4)];
+            prop::collection::vec(point, 0..6).prop_map(|p| format!("[{}]", p.join(",")))
+        });
+        let approx = prop_oneof![6 => list(0..4), 1 => Just("null".to_string())];
+        let id = prop_oneof![
+            Just("7".to_string()),
+            Just("\"a\"".to_string()),
+            Just("null".to_string()),
+            Just("1.5".to_string()),
+            Just("[1, {\"b\": 2}]".to_string()),
+        ];
+        let op = prop_oneof![
+            10 => Just("\"eval\"".to_string()),
+            1 => Just("\"split\"".to_string()),
+            1 => Just("\"ev\\u0061l\"".to_string())
+        ];
+        (
+            op,
+            points,
+            json_number_text(),
+            prop::option::of(approx),
+            prop::option::of(id),
+            prop::option::weighted(0.1, prop_oneof![Just("\"t\": 0.5"), Just("\"extra\": 1")]),
+            any::<prop::sample::Index>(),
+        )
+            .prop_map(|(op, points, t, approx, id, more, order)| {
+                let mut fields = vec![
+                    format!("\"op\":{op}"),
+                    format!("\"points\":{points}"),
+                    format!("\"t\": {t}"),
+                ];
+                fields.extend(approx.map(|a| format!("\"approx\":{a}")));
+                fields.extend(id.map(|i| format!("\"id\": {i}")));
+                fields.extend(more.map(str::to_string));
+                let k = order.index(fields.len());
+                fields.rotate_left(k);
+                format!("{{{}}}", fields.join(","))
+            })
+    }
+
+    /// The fast path for `eval` answers every line byte for byte as the general path does,
+    /// and the lines drawn exercise both.
+    #[test]
+    fn the_eval_fast_path_answers_as_the_general_path() {
+        use proptest::test_runner::TestRunner;
+        let mut runner = TestRunner::new(ProptestConfig::with_cases(1024));
+        let taken = std::cell::Cell::new(0usize);
+        runner
+            .run(&eval_line(), |line| {
+                taken.set(taken.get() + usize::from(fast::eval_request(&line).is_some()));
+                prop_assert_eq!(handle_line(&line), respond_in_general(&line), "{}", line);
+                Ok(())
+            })
+            .unwrap();
+        assert!(
+            (100..900).contains(&taken.get()),
+            "fast path taken {} times in 1024",
+            taken.get()
+        );
+    }
+
+    #[test]
+    fn the_eval_fast_path_takes_the_common_requests() {
+        let line = r#"{"id":3,"op":"eval","points":[[0.5,1],[2,-0.25]],"t":0.75,"approx":[1.625,0.0625]}"#;
+        assert!(fast::eval_request(line).is_some());
+        assert_eq!(handle_line(line), respond_in_general(line));
+        for other in [
+            r#"{"op":"eval","points":[[0.5,1],[2,-0.25]],"t":"3/4"}"#,
+            r#"{"op":"eval","points":[[0.5,1],[2,-0.25]],"t":0.75,"approx":null}"#,
+            r#"{"op":"eval","points":[[0.5,1],[2,-0.25]],"t":0.75,"t":0.5}"#,
+            r#"{"op":"eval","points":[[0.5,1],[2]],"t":0.75}"#,
+        ] {
+            assert!(fast::eval_request(other).is_none(), "{other}");
+        }
     }
 
     fn small_rational() -> impl Strategy<Value = BigRational> {
