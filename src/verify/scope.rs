@@ -226,7 +226,7 @@ fn theorem_reason(claim: &Claim) -> String {
         .and_then(|d| d.split("..").next())
         .and_then(|d| d.trim().parse::<i64>().ok())
         .unwrap_or(0);
-    let mut objects: Vec<String> = Vec::new();
+    let mut objects: Vec<(String, String)> = Vec::new();
     let mut formulas = Vec::new();
     for (min_n, ranges, chain, vars) in parts {
         let mut c = claim.clone();
@@ -244,7 +244,7 @@ fn theorem_reason(claim: &Claim) -> String {
         let mut rs = vec![format!("n = {}..", lo.max(min_n))];
         rs.extend(ranges);
         c.ranges = Some(rs);
-        let used = library_objects(&c);
+        let used = objects_of(&c);
         if used.is_empty() {
             // Without control points the identity is over no polygon (a polygon's degree
             // would bound `n` from below by its symbolic index).
@@ -262,7 +262,7 @@ fn theorem_reason(claim: &Claim) -> String {
     if !objects.is_empty() {
         return format!(
             "{head}; it uses {}: library code evaluated per degree, not a formula in n",
-            listed(&objects)
+            listed(&describe(&objects))
         );
     }
     let mut forms = Vec::new();
@@ -362,6 +362,11 @@ fn readable(e: &Error) -> String {
 
 /// The library objects and operations the claim's expressions use, each once, described.
 fn library_objects(claim: &Claim) -> Vec<String> {
+    describe(&objects_of(claim))
+}
+
+/// The `(phrase, name)` of each library object the claim's expressions use.
+fn objects_of(claim: &Claim) -> Vec<(String, String)> {
     let Some(closed) = closed_ctx_claim(claim) else {
         return Vec::new();
     };
@@ -375,12 +380,18 @@ fn library_objects(claim: &Claim) -> Vec<String> {
             objects_in(claim, &e, &mut found);
         }
     }
-    // One phrase per kind of object: `the derivative `deriv` and `b'(t)``.
+    found
+}
+
+/// One phrase per kind of object: "the derivative `deriv` and `b'(t)`".
+fn describe(found: &[(String, String)]) -> Vec<String> {
     let mut kinds: Vec<(&str, Vec<String>)> = Vec::new();
-    for (what, name) in &found {
+    for (what, name) in found {
+        let name = format!("`{name}`");
         match kinds.iter_mut().find(|(w, _)| w == what) {
-            Some((_, names)) => names.push(format!("`{name}`")),
-            None => kinds.push((what, vec![format!("`{name}`")])),
+            Some((_, names)) if names.contains(&name) => {}
+            Some((_, names)) => names.push(name),
+            None => kinds.push((what, vec![name])),
         }
     }
     kinds
