@@ -352,7 +352,7 @@ fn readable(e: &Error) -> String {
         other => other.to_string(),
     };
     // The piece where an identity does not cancel runs to hundreds of characters; the
-    // failing step is the readable part (`--explain` of the open claim shows the piece).
+    // failing step is the readable part (proving the claim written open prints the piece).
     const STOP: &str = " does not hold as an identity";
     match text.find(STOP) {
         Some(at) => format!("{} on a piece of the domain", &text[..at + STOP.len()]),
