@@ -483,6 +483,9 @@ fn claim_section(
     if let Some(n) = &o.note {
         let _ = writeln!(s, "<dt>note</dt><dd>{}</dd>", formula(n));
     }
+    if let Some(r) = &o.range_bound {
+        let _ = writeln!(s, "<dt>range-bound</dt><dd class=\"range-bound\">{}</dd>", esc(r));
+    }
     let _ = writeln!(s, "<dt>expected</dt><dd>{}</dd>", o.expect.as_str());
     s.push_str("</dl>\n");
     if let Some(c) = claim {

@@ -114,6 +114,8 @@ fn every_claim_is_on_its_page_with_statement_verdict_and_certificate() {
         let cert = section.descendants().find(|n| has_class(n, "certificate")).unwrap();
         assert_eq!(text_of(&cert), o.certificate, "{}", o.id);
         assert!(text_of(&section).contains(&vt.scope), "{}", o.id);
+        let note = section.descendants().find(|n| has_class(n, "range-bound"));
+        assert_eq!(note.map(|n| text_of(&n)), o.range_bound.clone(), "{}", o.id);
     }
 }
 

@@ -44,6 +44,7 @@ pub mod kinds;
 pub mod methods;
 pub mod poly;
 mod report;
+pub mod scope;
 pub mod symbolic;
 pub mod theorems;
 
@@ -111,6 +112,10 @@ pub struct ClaimOutcome {
     /// The claim file's note, if any.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub note: Option<String>,
+    /// For a `proved_in_range` verdict: why the claim stays bound to its ranges, or that it is
+    /// also provable for every n and which ranges to write ([`scope::range_bound`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub range_bound: Option<String>,
 }
 
 impl ClaimOutcome {
@@ -189,6 +194,7 @@ pub fn prove_paths(paths: &[PathBuf], progress: &mut dyn FnMut(usize, usize, &st
 
 fn check_one(f: &claims::ClaimFile, c: &claims::Claim) -> Result<ClaimOutcome> {
     let checked = kinds::check_claim(c, false).map_err(|e| in_claim(f, &c.id, e))?;
+    let range_bound = scope::range_bound(c, checked.verdict);
     Ok(ClaimOutcome {
         id: c.id.clone(),
         source: c.source.clone(),
@@ -201,6 +207,7 @@ fn check_one(f: &claims::ClaimFile, c: &claims::Claim) -> Result<ClaimOutcome> {
         text: text_name(f),
         corrects: c.corrects.clone(),
         note: c.note.clone(),
+        range_bound,
     })
 }
 
@@ -227,7 +234,8 @@ pub fn explain(paths: &[PathBuf], id: &str, style: ExplainStyle) -> Result<Strin
     for f in &files {
         if let Some(c) = f.claim.iter().find(|c| c.id == id) {
             let checked = kinds::check_claim(c, true).map_err(|e| in_claim(f, id, e))?;
-            return Ok(report::explain_text(f, c, &checked, style));
+            let range_bound = scope::range_bound(c, checked.verdict);
+            return Ok(report::explain_text(f, c, &checked, range_bound.as_deref(), style));
         }
     }
     Err(Error::Domain(format!(

@@ -130,6 +130,9 @@ pub(super) fn to_text(r: &Report) -> String {
                 "certificate"
             };
             let _ = writeln!(s, "    {label}: {}", o.certificate);
+            if let Some(r) = &o.range_bound {
+                let _ = writeln!(s, "    range-bound: {r}");
+            }
         }
         let _ = writeln!(s, "--- {}: {}\n", sum.text, counts(sum));
     }
@@ -318,7 +321,9 @@ fn argument(c: &Claim, checked: &Checked) -> Vec<String> {
     a
 }
 
-fn header(s: &mut String, f: &ClaimFile, c: &Claim, checked: &Checked) {
+/// The claim and its verdict; the range-bound note shares the verdict's line (the short
+/// explanation fits one screen).
+fn header(s: &mut String, f: &ClaimFile, c: &Claim, checked: &Checked, range_bound: Option<&str>) {
     let _ = writeln!(s, "claim {} ({})", c.id, f.path.display());
     let _ = writeln!(s, "source:    {}", c.source);
     let _ = writeln!(s, "statement: {}", c.statement);
@@ -347,8 +352,9 @@ fn header(s: &mut String, f: &ClaimFile, c: &Claim, checked: &Checked) {
     }
     let _ = writeln!(
         s,
-        "\nverdict: {}",
-        verdict_text(checked.verdict, checked.range.as_deref())
+        "\nverdict: {}{}",
+        verdict_text(checked.verdict, checked.range.as_deref()),
+        range_bound.map(|r| format!("; range-bound: {r}")).unwrap_or_default()
     );
     let _ = writeln!(
         s,
@@ -455,12 +461,18 @@ fn worked_sum(c: &Claim, scheme: &DeCasteljauScheme<BigRational>, eval: &str) ->
 }
 
 /// The proof of one claim: the argument, one worked case, and (`Verbose`) the whole log.
-pub(super) fn explain_text(f: &ClaimFile, c: &Claim, checked: &Checked, style: ExplainStyle) -> String {
+pub(super) fn explain_text(
+    f: &ClaimFile,
+    c: &Claim,
+    checked: &Checked,
+    range_bound: Option<&str>,
+    style: ExplainStyle,
+) -> String {
     if style == ExplainStyle::Latex {
-        return explain_latex(f, c, checked);
+        return explain_latex(f, c, checked, range_bound);
     }
     let mut s = String::new();
-    header(&mut s, f, c, checked);
+    header(&mut s, f, c, checked, range_bound);
     let _ = writeln!(s, "\nwhy this suffices:");
     for line in argument(c, checked) {
         let _ = writeln!(s, "  {line}");
@@ -532,7 +544,7 @@ fn latex_escape(t: &str) -> String {
 
 /// The short proof as a LaTeX fragment: text in `\texttt`/verbatim-safe escapes, the scheme as
 /// an `array` with exact fractions.
-fn explain_latex(f: &ClaimFile, c: &Claim, checked: &Checked) -> String {
+fn explain_latex(f: &ClaimFile, c: &Claim, checked: &Checked, range_bound: Option<&str>) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
@@ -547,6 +559,9 @@ fn explain_latex(f: &ClaimFile, c: &Claim, checked: &Checked) -> String {
         latex_escape(&verdict_text(checked.verdict, checked.range.as_deref()))
     );
     let _ = writeln!(s, "Certificate: {}\n", latex_escape(&checked.certificate));
+    if let Some(r) = range_bound {
+        let _ = writeln!(s, "Range-bound: {}\n", latex_escape(r));
+    }
     let _ = writeln!(
         s,
         "\\noindent Why this suffices: {}\n",
@@ -591,6 +606,7 @@ mod tests {
             text: "t.txt".into(),
             corrects: None,
             note: None,
+            range_bound: None,
         }
     }
 

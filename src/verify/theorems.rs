@@ -118,6 +118,17 @@ fn part(label: &'static str, min_n: i64, extra: &[&str], vars: &[&'static str], 
     )
 }
 
+/// One identity a theorem checks over the symbolic polygon `b` of degree `n`: its least `n`,
+/// its own ranges, the chain, the continuous parameters.
+pub(crate) type Identity = (i64, Vec<String>, Vec<String>, Vec<&'static str>);
+
+/// The identities theorem `name` checks (the k-th derivative for k ≤ 2), or `None` for a
+/// theorem with an exact check of its own (affine invariance, the convex hull).
+pub(crate) fn identities(name: &str) -> Option<Vec<Identity>> {
+    let parts = parts_of(name, 2)?;
+    Some(parts.into_iter().map(|(n, p)| (n, p.ranges, p.chain, p.vars)).collect())
+}
+
 fn parts_of(name: &str, kmax: i64) -> Option<Vec<(i64, Part)>> {
     Some(match name {
         "de_casteljau_bernstein" => vec![part(
