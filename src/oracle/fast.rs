@@ -16,15 +16,11 @@ use serde_json::{Number, Value};
 
 /// A field that may be absent, told apart from one given as `null` (which an
 /// `Option` would read as absent, where the general path reads it as a wrong value).
+#[derive(Default)]
 enum Given<T> {
+    #[default]
     Absent,
     Value(T),
-}
-
-impl<T> Default for Given<T> {
-    fn default() -> Self {
-        Given::Absent
-    }
 }
 
 impl<'de, T: Deserialize<'de>> Deserialize<'de> for Given<T> {
