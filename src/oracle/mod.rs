@@ -3,7 +3,8 @@
 //! A program that computes Bézier geometry in floating point writes one JSON request per
 //! line and reads back one JSON response per line with the exact answer, so it can measure
 //! its own error. The loop ([`serve`]) never stops on a bad request: every line gets exactly
-//! one response line, in order, flushed at once; only end of input ends it.
+//! one response line, in order, flushed before the loop waits for more input; only end of
+//! input ends it.
 //!
 //! ```
 //! use casteljau::oracle::handle_line;
