@@ -1,19 +1,11 @@
 //! `integral(e, t, a, b)`: exact integrals of polynomial integrands, hygienic in `let`, and
 //! false values fail.
 
-use casteljau::verify::claims::parse_file;
-use casteljau::verify::kinds::check_claim;
-use casteljau::verify::Verdict;
-use std::path::Path;
+#[path = "support/identity.rs"]
+mod identity;
 
-fn check(body: &str) -> casteljau::Result<(Verdict, String)> {
-    let f = parse_file(
-        &format!("[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\n{body}"),
-        Path::new("test.toml"),
-    )?;
-    let out = check_claim(&f.claim[0], false)?;
-    Ok((out.verdict, out.certificate))
-}
+use casteljau::verify::Verdict;
+use identity::check;
 
 #[test]
 fn integrals_of_the_basis() {

@@ -2,19 +2,11 @@
 //! derivatives of curve objects (`diff(b(t), t)` = `b'(t)`); false variants fail with exact
 //! values, and misuse is a one-line error.
 
-use casteljau::verify::claims::parse_file;
-use casteljau::verify::kinds::check_claim;
-use casteljau::verify::Verdict;
-use std::path::Path;
+#[path = "support/identity.rs"]
+mod identity;
 
-fn check(body: &str) -> casteljau::Result<(Verdict, String)> {
-    let f = parse_file(
-        &format!("[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\n{body}"),
-        Path::new("test.toml"),
-    )?;
-    let out = check_claim(&f.claim[0], false)?;
-    Ok((out.verdict, out.certificate))
-}
+use casteljau::verify::Verdict;
+use identity::check;
 
 fn verdict(body: &str) -> Verdict {
     let (v, c) = check(body).unwrap_or_else(|e| panic!("{body}: {e}"));
