@@ -14,28 +14,11 @@ use crate::point::Point;
 use serde::{Deserialize, Deserializer};
 use serde_json::{Number, Value};
 
-/// A field that may be absent, told apart from one given as `null` (which an
-/// `Option` would read as absent, where the general path reads it as a wrong value).
-#[derive(Default)]
-enum Given<T> {
-    #[default]
-    Absent,
-    Value(T),
-}
-
-impl<'de, T: Deserialize<'de>> Deserialize<'de> for Given<T> {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        T::deserialize(d).map(Given::Value)
-    }
-}
-
-impl<T> Given<T> {
-    fn into_option(self) -> Option<T> {
-        match self {
-            Given::Absent => None,
-            Given::Value(v) => Some(v),
-        }
-    }
+/// A field that may be absent, told apart from one given as `null`: with `#[serde(default)]`
+/// an absent field is `None`, while `null` must parse as the field's type (and so fails, as
+/// the general path refuses it) instead of reading as absent.
+fn present<'de, D: Deserializer<'de>, T: Deserialize<'de>>(d: D) -> Result<Option<T>, D::Error> {
+    T::deserialize(d).map(Some)
 }
 
 #[derive(Deserialize)]
@@ -45,10 +28,10 @@ struct EvalRequest<'a> {
     op: &'a str,
     points: Vec<Vec<Number>>,
     t: Number,
-    #[serde(default)]
-    approx: Given<Vec<f64>>,
-    #[serde(default)]
-    id: Given<Value>,
+    #[serde(default, deserialize_with = "present")]
+    approx: Option<Vec<f64>>,
+    #[serde(default, deserialize_with = "present")]
+    id: Option<Value>,
 }
 
 /// The request on `line` and its `id` when it is a well-formed `eval` with JSON numbers
@@ -68,7 +51,7 @@ pub fn eval_request(line: &str) -> Option<(Op, Option<Value>)> {
         .map(|p| Point::new(p.iter().map(json_number).collect::<crate::Result<_>>()?))
         .collect::<crate::Result<Vec<_>>>()
         .ok()?;
-    let approx = request.approx.into_option();
+    let approx = request.approx;
     if approx.as_ref().is_some_and(|a| a.len() > MAX_DIMENSION) {
         return None;
     }
@@ -78,5 +61,5 @@ pub fn eval_request(line: &str) -> Option<(Op, Option<Value>)> {
         approx,
     };
     op.check_limits().ok()?;
-    Some((op, request.id.into_option()))
+    Some((op, request.id))
 }

@@ -214,15 +214,20 @@ fn point_response(
         out.extend_from_slice(name.as_bytes());
         out.extend_from_slice(b"\":");
     }
-    fn array<T: serde::Serialize>(out: &mut Vec<u8>, items: impl Iterator<Item = T>) {
+    fn list<T>(out: &mut Vec<u8>, items: impl Iterator<Item = T>, write: impl Fn(&mut Vec<u8>, T)) {
         out.push(b'[');
         for (k, item) in items.enumerate() {
             if k > 0 {
                 out.push(b',');
             }
-            serde_json::to_writer(&mut *out, &item).expect("writing JSON to memory");
+            write(out, item);
         }
         out.push(b']');
+    }
+    fn array<T: serde::Serialize>(out: &mut Vec<u8>, items: impl Iterator<Item = T>) {
+        list(out, items, |out, item| {
+            serde_json::to_writer(out, &item).expect("writing JSON to memory")
+        });
     }
     let mut out = Vec::with_capacity(512);
     out.push(b'{');
@@ -245,17 +250,12 @@ fn point_response(
     key(&mut out, "ok");
     out.extend_from_slice(b"true");
     key(&mut out, "point");
-    out.push(b'[');
-    for (k, c) in point.coords().iter().enumerate() {
-        if k > 0 {
-            out.push(b',');
-        }
+    list(&mut out, point.coords().iter(), |out, c| {
         // digits, '-' and '/': a JSON string with nothing to escape
         out.push(b'"');
         out.extend_from_slice(crate::scalar::format_exact(c).as_bytes());
         out.push(b'"');
-    }
-    out.push(b']');
+    });
     if let Some(u) = ulps {
         key(&mut out, "ulps");
         array(&mut out, u.iter().map(|e| judge::ulps_json(e.ulps)));
