@@ -92,7 +92,7 @@ impl<'c> Ctx<'c> {
         for mut def in expr::dependency_order(parsed)? {
             let expanded = expr::expand(&def.body, &ctx.defs)?;
             ctx.check_names(&expanded, &def.params)?;
-            def.body = expr::expand_diffs(&expanded)?;
+            def.body = expr::expand_diffs(&expanded, &ctx.int_names())?;
             ctx.defs.push(def);
         }
         Ok(ctx)
@@ -103,7 +103,12 @@ impl<'c> Ctx<'c> {
         let e = parse(text, &self.known)?;
         let e = expr::expand(&e, &self.defs)?;
         self.check_names(&e, &[])?;
-        expr::expand_diffs(&e)
+        expr::expand_diffs(&e, &self.int_names())
+    }
+
+    /// The claim's integer names (its range variables), which `diff` may not take.
+    fn int_names(&self) -> Vec<String> {
+        self.ranges.iter().map(|r| r.var.clone()).collect()
     }
 
     /// When the claim lists its parameters (`vars`), every free name must be declared: an

@@ -920,14 +920,37 @@ fn map_children(e: &Expr, f: &mut dyn FnMut(&Expr) -> Result<Expr>) -> Result<Ex
 /// Rewrites every `diff(e, t)` / `diff(e, t, k)` into its derivative, by the rules of
 /// calculus applied to the tree (sum, product, quotient and power rules; `B(i, n, g)` by
 /// the product rule on `C(n,i) g^i (1-g)^(n-i)`; a claim object `b(g)` becomes `b'(g) g'`).
-pub fn expand_diffs(e: &Expr) -> Result<Expr> {
-    let inner = map_children(e, &mut expand_diffs)?;
+///
+/// Differentiation is by a real parameter only: `ints` are the claim's integer names (its
+/// range variables); a summation index in scope is one too. Differentiating by one of them is
+/// an error, and so is any integer position (a factorial, a sum bound, a binomial, an index,
+/// an exponent) that depends on the variable: `d/dn Σ_{k=0}^n k` has no meaning as a
+/// derivative of the sum, and reading `n` as a constant there would prove false claims.
+pub fn expand_diffs(e: &Expr, ints: &[String]) -> Result<Expr> {
+    let mut scope = ints.to_vec();
+    expand_diffs_in(e, &mut scope)
+}
+
+fn expand_diffs_in(e: &Expr, ints: &mut Vec<String>) -> Result<Expr> {
+    if let Expr::Sum(v, a, b, body) = e {
+        let (a, b) = (expand_diffs_in(a, ints)?, expand_diffs_in(b, ints)?);
+        ints.push(v.clone());
+        let body = expand_diffs_in(body, ints);
+        ints.pop();
+        return Ok(Expr::Sum(v.clone(), Box::new(a), Box::new(b), Box::new(body?)));
+    }
+    let inner = map_children(e, &mut |c| expand_diffs_in(c, ints))?;
     if let Expr::Call(name, args) = &inner {
         if name == "diff" {
             let var = match &args[1] {
                 Expr::Var(v) => v.clone(),
                 other => return Err(Error::Domain(format!("diff needs a variable, not '{other}'"))),
             };
+            if ints.contains(&var) {
+                return Err(Error::Domain(format!(
+                    "cannot differentiate by {var}: it is an integer (a range or summation variable); diff takes a real parameter"
+                )));
+            }
             let k = match args.get(2) {
                 None => 1,
                 Some(Expr::Num(r)) if r.is_integer() && !r.is_negative() && *r.numer() <= 16.into() => {
@@ -1037,12 +1060,20 @@ pub fn derive(e: &Expr, var: &str) -> Result<Expr> {
                 derive(a, var)?,
             )
         }
-        Expr::Fact(_) => zero(),
+        Expr::Fact(a) => {
+            if a.mentions(var) {
+                return Err(integer_position(e, var, "a factorial takes an integer"));
+            }
+            zero()
+        }
         Expr::Sum(v, a, b, body) => {
             if v == var {
                 return Err(Error::Domain(format!(
                     "cannot differentiate by the summation variable {var}"
                 )));
+            }
+            if a.mentions(var) || b.mentions(var) {
+                return Err(integer_position(e, var, "the bounds of a sum are integers"));
             }
             let d = derive(body, var)?;
             if is_lit(&d, 0) {
@@ -1059,12 +1090,19 @@ pub fn derive(e: &Expr, var: &str) -> Result<Expr> {
         ),
         Expr::Index(_, args) => {
             if args.iter().any(|a| a.mentions(var)) {
-                return Err(Error::Domain(format!("cannot differentiate '{e}' by {var}")));
+                return Err(integer_position(e, var, "an index is an integer"));
             }
             zero()
         }
         Expr::Call(name, args) => derive_call(e, name, args, var)?,
     })
+}
+
+/// The error for a derivative by `var` of `e`, where `var` stands in an integer position.
+fn integer_position(e: &Expr, var: &str, why: &str) -> Error {
+    Error::Domain(format!(
+        "cannot differentiate '{e}' by {var}: {why}, so it does not depend smoothly on {var}"
+    ))
 }
 
 fn bump_order(name: &str, args: &[Expr], var: &str, e: &Expr) -> Result<Expr> {
@@ -1337,7 +1375,7 @@ mod tests {
         assert_eq!(p("e(2)").to_string(), "e*2");
         let e = expand(&parse("e(2) + e(j)", &["e".to_string()]).unwrap(), &[d]).unwrap();
         assert_eq!(e.to_string(), "2/(n + 1)*b[2 - 1] + j/(n + 1)*b[j - 1]");
-        let dd = expand_diffs(&p("diff(t^3, t)")).unwrap();
+        let dd = expand_diffs(&p("diff(t^3, t)"), &[]).unwrap();
         assert!(dd.to_string().contains("__dpow(t, 3, 1)"), "{dd}");
     }
 

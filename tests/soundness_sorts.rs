@@ -1,0 +1,126 @@
+//! Differentiation is by a real parameter only: a factorial, a sum bound, a binomial or an
+//! index that depends on the variable, directly or through a definition, and a derivative by
+//! an integer range variable, are one-line errors — never `proved` (each of these was once
+//! proved because the integer position was read as a constant).
+
+use casteljau::verify::claims::parse_file;
+use casteljau::verify::kinds::check_claim;
+use casteljau::verify::Verdict;
+use std::path::Path;
+
+fn check(body: &str) -> casteljau::Result<(Verdict, String)> {
+    let f = parse_file(
+        &format!("[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\n{body}"),
+        Path::new("test.toml"),
+    )?;
+    let out = check_claim(&f.claim[0], false)?;
+    Ok((out.verdict, out.certificate))
+}
+
+fn assert_error(body: &str, needle: &str) {
+    match check(body) {
+        Err(e) => {
+            let msg = e.to_string();
+            assert_eq!(msg.lines().count(), 1, "{body}: {msg}");
+            assert!(msg.contains(needle), "{body}: {msg:?} should mention {needle:?}");
+        }
+        Ok(other) => panic!("{body}: expected an error, got {other:?}"),
+    }
+}
+
+fn assert_verdict(body: &str, want: Verdict) {
+    match check(body) {
+        Ok((v, _)) if v == want => {}
+        other => panic!("{body}: expected {want:?}, got {other:?}"),
+    }
+}
+
+#[test]
+fn a_sum_bound_is_not_a_constant_of_diff() {
+    assert_error(
+        "kind = \"identity\"\nfor = [\"n = 0..\"]\nlhs = \"diff(sum(k, 0, n, k), n)\"\nrhs = \"0\"",
+        "cannot differentiate by n: it is an integer",
+    );
+    // The same with a real parameter in the bound, and through a definition.
+    assert_error(
+        "kind = \"identity\"\nvars = [\"t\"]\nlhs = \"diff(sum(k, 0, t, k), t)\"\nrhs = \"0\"",
+        "the bounds of a sum are integers",
+    );
+    assert_error(
+        "kind = \"identity\"\nvars = [\"t\"]\nlet = [\"S(m) = sum(k, 0, m, k^2)\"]\nlhs = \"diff(S(t), t)\"\nrhs = \"0\"",
+        "the bounds of a sum are integers",
+    );
+    // A lower bound, a bound inside a definition that is itself differentiated, a nested sum.
+    assert_error(
+        "kind = \"identity\"\nvars = [\"t\"]\nlhs = \"diff(sum(k, t, 3, k), t)\"\nrhs = \"0\"",
+        "the bounds of a sum are integers",
+    );
+    assert_error(
+        "kind = \"identity\"\nvars = [\"t\"]\nlet = [\"D(m) = diff(sum(k, 0, m, k), m)\"]\nlhs = \"D(t)\"\nrhs = \"0\"",
+        "the bounds of a sum are integers",
+    );
+    assert_error(
+        "kind = \"identity\"\nvars = [\"t\"]\nlhs = \"diff(sum(j, 0, 2, sum(k, 0, t, j*k)), t)\"\nrhs = \"0\"",
+        "the bounds of a sum are integers",
+    );
+}
+
+#[test]
+fn a_factorial_is_not_a_constant_of_diff() {
+    assert_error(
+        "kind = \"identity\"\nvars = [\"t\"]\nlhs = \"diff((t+2)!, t)\"\nrhs = \"0\"",
+        "a factorial takes an integer",
+    );
+    assert_error(
+        "kind = \"identity\"\nvars = [\"t\"]\nlhs = \"diff(((t)!)!, t)\"\nrhs = \"0\"",
+        "a factorial takes an integer",
+    );
+    assert_error(
+        "kind = \"identity\"\nvars = [\"t\"]\nlet = [\"F(m) = (m+1)!\"]\nlhs = \"diff(t*F(t), t)\"\nrhs = \"0\"",
+        "a factorial takes an integer",
+    );
+    assert_error(
+        "kind = \"inequality\"\nfor = [\"n = 0..\"]\nvars = [\"t\"]\ninterval = [0, 1]\nlhs = \"diff(n!, n) + t^2\"",
+        "cannot differentiate by n: it is an integer",
+    );
+}
+
+#[test]
+fn other_integer_positions_and_integer_variables_are_refused() {
+    assert_error(
+        "kind = \"identity\"\nvars = [\"t\"]\nlhs = \"diff(C(t, 2), t)\"\nrhs = \"0\"",
+        "cannot differentiate",
+    );
+    // A summation index is an integer inside its sum.
+    assert_error(
+        "kind = \"identity\"\nvars = [\"t\"]\nlhs = \"sum(k, 0, 3, diff(k^2, k))\"\nrhs = \"12\"",
+        "cannot differentiate by k: it is an integer",
+    );
+    // A polynomial in a range variable: the derivative is refused too (n is an integer).
+    assert_error(
+        "kind = \"identity\"\nfor = [\"n = 0..=5\"]\nlhs = \"diff(n*(n+1)/2, n)\"\nrhs = \"n + 1/2\"",
+        "cannot differentiate by n: it is an integer",
+    );
+}
+
+#[test]
+fn the_consistent_claims_keep_their_verdicts() {
+    assert_verdict(
+        "kind = \"identity\"\nfor = [\"n = 0..\"]\nlhs = \"sum(k, 0, n, k)\"\nrhs = \"n*(n+1)/2\"",
+        Verdict::Proved,
+    );
+    assert_verdict(
+        "kind = \"identity\"\nvars = [\"n\"]\nlhs = \"diff(n*(n+1)/2, n)\"\nrhs = \"n + 1/2\"",
+        Verdict::Proved,
+    );
+    // Integer names stay constants where they are not differentiated.
+    assert_verdict(
+        "kind = \"identity\"\nfor = [\"n = 1..=4\"]\nvars = [\"t\"]\nlhs = \"diff(t^n + sum(k, 0, n, k*t), t)\"\nrhs = \"n*t^(n-1) + n*(n+1)/2\"",
+        Verdict::ProvedInRange,
+    );
+    // ... and a false variant of it is not proved.
+    assert_verdict(
+        "kind = \"identity\"\nfor = [\"n = 1..=4\"]\nvars = [\"t\"]\nlhs = \"diff(t^n + sum(k, 0, n, k*t), t)\"\nrhs = \"n*t^(n-1) + n*(n-1)/2\"",
+        Verdict::Fails,
+    );
+}
