@@ -38,6 +38,7 @@ use super::poly::RatFunc;
 use super::Verdict;
 use crate::error::{Error, Result};
 use num_traits::Zero;
+use std::time::{Duration, Instant};
 
 /// Why a symbolic proof suffices, as `--explain` prints it.
 pub const ARGUMENT: &[&str] = &[
@@ -120,6 +121,13 @@ pub fn is_for_every(claim: &Claim) -> bool {
 /// the symbolic proof does not go through: a false claim then gets `fails` with exact values,
 /// not only the reason the proof failed.
 pub const REFUTATION_SEARCH: i64 = 40;
+
+/// The refutation search's budget per claim: value combinations of the open ranges, over all
+/// its windows (one open range: 73, up to 41 values; two: 189, up to 12 values each).
+pub const REFUTATION_COMBINATIONS: i64 = 200;
+
+/// The refutation search starts no new window after this long.
+pub const REFUTATION_TIME: Duration = Duration::from_secs(4);
 
 /// The claim with each open range closed after [`CROSS_CHECK`] values (for the evaluation check).
 pub fn closed_claim(claim: &Claim, rs: &[SymRange]) -> Claim {
@@ -928,9 +936,10 @@ fn base_case_terms(
 }
 
 /// Checks an identity claim with open ranges for every value (see the module documentation).
-/// When no proof is found, the first [`REFUTATION_SEARCH`] values of each open range are
-/// searched for an exact counterexample (in widening windows, up to the first that cannot be
-/// evaluated); without one the claim is an error with the reason.
+/// When no proof is found, the first values of the open ranges are searched for an exact
+/// counterexample (in widening windows, within [`REFUTATION_COMBINATIONS`] and
+/// [`REFUTATION_TIME`], up to the first window that cannot be evaluated); without one the claim
+/// is an error with the reason and the extent of the search.
 pub fn check(claim: &Claim, detail: bool) -> Result<Checked> {
     prove_for_every(claim, detail).or_else(|reason| refute_in_search(claim, reason))
 }
@@ -939,19 +948,49 @@ fn refute_in_search(claim: &Claim, reason: Error) -> Result<Checked> {
     let Ok(rs) = ranges(claim) else {
         return Err(reason);
     };
+    let open: Vec<&str> = rs.iter().filter(|r| r.to.is_none()).map(|r| r.var.as_str()).collect();
+    let windows = refutation_windows(open.len() as u32);
+    let start = Instant::now();
+    let mut tried = 0;
+    let mut stop = "the search budget";
     // Widening windows: the values of a later window may be past what the ordinary engine
     // evaluates (a binomial beyond 64 bits), which must not hide a counterexample before them.
-    for extra in [REFUTATION_SEARCH / 4, REFUTATION_SEARCH / 2, REFUTATION_SEARCH] {
+    for &extra in &windows {
+        if start.elapsed() > REFUTATION_TIME {
+            stop = "the search time";
+            break;
+        }
         match super::kinds::check_claim(&closed_after(claim, &rs, extra), false) {
             Ok(mut out) if out.verdict == Verdict::Fails => {
                 out.range = None;
                 return Ok(out);
             }
-            Ok(_) => {}
-            Err(_) => break,
+            Ok(_) => tried = extra + 1,
+            Err(_) => {
+                stop = "the values the evaluator reaches";
+                break;
+            }
         }
     }
-    Err(reason)
+    Err(Error::Domain(format!(
+        "{reason}; no counterexample in the first {tried} values of {} ({stop}: at most {REFUTATION_COMBINATIONS} combinations and {} s per claim)",
+        open.join(", "),
+        REFUTATION_TIME.as_secs()
+    )))
+}
+
+/// The windows of the refutation search for `open` open ranges: each `extra` closes every
+/// open range after `extra + 1` values, and all windows together try at most
+/// [`REFUTATION_COMBINATIONS`] combinations (so two open ranges do not multiply the work of one).
+fn refutation_windows(open: u32) -> Vec<i64> {
+    let cost = |e: i64| -> i64 { [e / 4, e / 2, e].iter().map(|w| (w + 1).saturating_pow(open)).sum() };
+    let widest = (0..=REFUTATION_SEARCH)
+        .rev()
+        .find(|&e| cost(e) <= REFUTATION_COMBINATIONS)
+        .unwrap_or(0);
+    let mut w = vec![widest / 4, widest / 2, widest];
+    w.dedup();
+    w
 }
 
 fn prove_for_every(claim: &Claim, detail: bool) -> Result<Checked> {

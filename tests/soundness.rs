@@ -1,12 +1,18 @@
-//! Differentiation is by a real parameter only: a factorial, a sum bound, a binomial or an
-//! index that depends on the variable, directly or through a definition, and a derivative by
-//! an integer range variable, are one-line errors — never `proved` (each of these was once
-//! proved because the integer position was read as a constant).
+//! Soundness at the edges of the engine: each case here was once a wrong verdict or a
+//! needless refusal.
+//! - Differentiation is by a real parameter only: a factorial, a sum bound, a binomial or an
+//!   index that depends on the variable, directly or through a definition, and a derivative by
+//!   an integer range variable, are one-line errors — never `proved`.
+//! - The refutation search after a failed every-n proof has one budget per claim.
+//! - An `implies` whose factor has a pole is refuted at the pole when the premise holds there.
+//! - A divisor's integer zeros are split off: sums whose closed form vanishes at n = 0 are
+//!   proved for every n, and a zero reached by a shift is never a silent comparison.
 
 use casteljau::verify::claims::parse_file;
 use casteljau::verify::kinds::check_claim;
 use casteljau::verify::Verdict;
 use std::path::Path;
+use std::time::Instant;
 
 fn check(body: &str) -> casteljau::Result<(Verdict, String)> {
     let f = parse_file(
@@ -122,5 +128,35 @@ fn the_consistent_claims_keep_their_verdicts() {
     assert_verdict(
         "kind = \"identity\"\nfor = [\"n = 1..=4\"]\nvars = [\"t\"]\nlhs = \"diff(t^n + sum(k, 0, n, k*t), t)\"\nrhs = \"n*t^(n-1) + n*(n-1)/2\"",
         Verdict::Fails,
+    );
+}
+
+fn assert_fails_with(body: &str, needle: &str) {
+    match check(body) {
+        Ok((Verdict::Fails, c)) => assert!(c.contains(needle), "{body}: {c:?} should mention {needle:?}"),
+        other => panic!("{body}: expected fails, got {other:?}"),
+    }
+}
+
+const TWO_OPEN: &str = "kind = \"identity\"\nfor = [\"m = 0..\", \"n = 0..\"]\nvars = [\"u\", \"v\"]\n";
+
+#[test]
+fn the_refutation_search_has_one_budget_across_open_ranges() {
+    // True, but the given certificates are for another sum: no proof, no counterexample, and
+    // the search ends within its budget (it once tried 41 × 41 values: 82 s).
+    let start = Instant::now();
+    assert_error(
+        &format!(
+            "{TWO_OPEN}lhs = \"sum(i, 0, m, sum(j, 0, n, B(m-i, m, u)*B(j, n, v)))\"\nrhs = \"1\"\ncertificate = [\"-(1 - v)*j/(n + 1 - j)\", \"-(1 - u)*i/(m + 1 - i)\"]"
+        ),
+        "no counterexample in the first 12 values of m, n (the search budget: at most 200 combinations",
+    );
+    assert!(start.elapsed().as_secs() < 10, "{:?}", start.elapsed());
+    // A false variant is still refuted inside the budget, also past the first window.
+    assert_fails_with(
+        &format!(
+            "{TWO_OPEN}lhs = \"sum(i, 0, m, sum(j, 0, n, B(i, m, u)*B(j, n, v)))\"\nrhs = \"1 + C(m, 5)*C(n, 4)\"\ncertificate = [\"-(1 - v)*j/(n + 1 - j)\", \"-(1 - u)*i/(m + 1 - i)\"]"
+        ),
+        "m = 5",
     );
 }
