@@ -160,3 +160,20 @@ fn the_refutation_search_has_one_budget_across_open_ranges() {
         "m = 5",
     );
 }
+
+#[test]
+fn an_implies_with_a_pole_is_refuted_at_the_pole() {
+    assert_fails_with(
+        "kind = \"implies\"\nsymbols = [\"k\", \"l\"]\npremise = \"k*l = 0\"\nequation = \"l = 0\"\nfactor = \"1/k\"",
+        "at k = 0, l = 1",
+    );
+    // The pole set of a shifted factor, and a vector unknown.
+    assert_fails_with(
+        "kind = \"implies\"\nsymbols = [\"k\", \"l\"]\npremise = \"(k - 2)*l = 0\"\nequation = \"l = 0\"\nfactor = \"1/(k - 2)\"",
+        "at k = 2, l = 1",
+    );
+    assert_fails_with(
+        "kind = \"implies\"\nsymbols = [\"k\"]\nvectors = { p = 2 }\npremise = \"k*p\"\nequation = \"p = 0*p\"\nfactor = \"1/k\"",
+        "k = 0",
+    );
+}

@@ -89,10 +89,17 @@ fn bug2_a_polygon_and_a_net_share_one_basis() {
 }
 
 #[test]
-fn bug3_an_implies_factor_with_a_pole_on_the_premise_is_refused() {
+fn bug3_an_implies_factor_with_a_pole_on_the_premise_is_refuted_or_refused() {
+    // False, argued with 1/k: refuted at the pole.
     let body =
         "kind = \"implies\"\nsymbols = [\"k\", \"l\"]\npremise = \"k*l\"\nequation = \"l = 0\"\nfactor = \"1/k\"";
-    assert_error(body, "factor");
+    let c = assert_fails(body);
+    assert!(c.contains("at k = 0, l = 1: the premise 'k*l' holds"), "{c}");
+    // True, but the argument divides by k where the premise holds: no counterexample at the
+    // pole, so refused with the reason.
+    let body =
+        "kind = \"implies\"\nsymbols = [\"k\", \"l\"]\npremise = \"k^2*l\"\nequation = \"k*l = 0\"\nfactor = \"1/k\"";
+    assert_error(body, "no counterexample among the first 2401 small rational points");
     // A polynomial factor is a proof.
     let body =
         "kind = \"implies\"\nsymbols = [\"k\", \"l\"]\npremise = \"k - l\"\nequation = \"2k = 2l\"\nfactor = \"2\"";

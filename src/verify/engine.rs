@@ -1657,6 +1657,68 @@ fn factor_pole(ctx: &Ctx<'_>, concl: &Expr, factor: &Expr, prem: &Expr) -> Resul
     Ok(None)
 }
 
+/// How many points the counterexample search of an `implies` with a pole in its factor tries.
+pub const POLE_SEARCH: usize = 2_401;
+
+/// Where `conclusion = factor · premise` holds identically, the premise can hold while the
+/// conclusion fails only where the factor has a pole. Small rational points (coordinates from
+/// 0, ±1, ±2, 1/2, 3, the smallest first) are tried for one where the premise is 0 and the
+/// equation `a = b` is defined and false: an exact counterexample.
+fn refute_at_poles(ctx: &Ctx<'_>, prem: &Expr, (a, b): (&Expr, &Expr)) -> Result<Option<Checked>> {
+    let c = ctx.claim;
+    let extra: Vec<String> = ctx
+        .params(&[prem, a, b])
+        .into_iter()
+        .filter(|v| !ctx.is_bound(v))
+        .collect();
+    let (names, layout) = sym_names(ctx, &extra);
+    let values: Vec<BigRational> = [(0, 1), (1, 1), (-1, 1), (2, 1), (-2, 1), (1, 2), (3, 1)]
+        .iter()
+        .map(|&(p, q)| BigRational::new(p.into(), q.into()))
+        .collect();
+    let inst = BTreeMap::new();
+    let at = |vars: &BTreeMap<String, Value<BigRational>>, e: &Expr| {
+        Evaluator::new(&VarEnv(vars.clone()), inst.clone()).eval(e)
+    };
+    let mut tried = 0;
+    // Points whose largest coordinate rank is `top`, for `top` = 0, 1, …: smallest first.
+    for top in 0..values.len() {
+        let mut digits = vec![0usize; names.len()];
+        loop {
+            if digits.iter().any(|&d| d == top) || (top == 0 && digits.is_empty()) {
+                tried += 1;
+                if tried > POLE_SEARCH {
+                    return Ok(None);
+                }
+                let point: Vec<BigRational> = digits.iter().map(|&d| values[d].clone()).collect();
+                let (shown, vars) = sym_assignment(&names, &layout, &point);
+                let holds = at(&vars, prem).is_ok_and(|p| p.entries().iter().all(|x| x.is_zero()));
+                if holds {
+                    if let (Ok(av), Ok(bv)) = (at(&vars, a), at(&vars, b)) {
+                        if av.equals(&bv) == Some(false) {
+                            return Ok(Some(Checked::new(
+                                Verdict::Fails,
+                                format!(
+                                    "at {shown}: the premise '{}' holds (the factor has a pole there), but the equation '{}' gives left side = {av}, right side = {bv}",
+                                    c.premise.as_deref().unwrap_or_default(),
+                                    c.equation.as_deref().unwrap_or_default()
+                                ),
+                            )));
+                        }
+                    }
+                }
+            }
+            // The next point with every coordinate rank ≤ top.
+            let Some(k) = digits.iter().rposition(|&d| d < top) else {
+                break;
+            };
+            digits[k] += 1;
+            digits[k + 1..].iter_mut().for_each(|d| *d = 0);
+        }
+    }
+    Ok(None)
+}
+
 /// `implies`: `conclusion_lhs − conclusion_rhs = factor · (premise_lhs − premise_rhs)` identically,
 /// so the premise implies the conclusion. When it is not an identity, an exact counterexample
 /// is searched where the premise holds and the conclusion does not.
@@ -1677,9 +1739,12 @@ pub fn check_implies(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
     match symbolic_equal(ctx, &concl, &rhs, &inst)? {
         PairResult::Proved(pp) => {
             if let Some(reason) = factor_pole(ctx, &concl, &factor, &prem)? {
+                if let Some(found) = refute_at_poles(ctx, &prem, (&a, &b))? {
+                    return Ok(found);
+                }
                 return Err(Error::Domain(format!(
                     "the equation is factor × premise identically, but {reason}: where it vanishes and the premise holds, \
-                     nothing follows, so the implication is not proved (refused)"
+                     nothing follows, so the implication is not proved (refused; no counterexample among the first {POLE_SEARCH} small rational points)"
                 )));
             }
             let mut out = Checked::new(
