@@ -177,3 +177,38 @@ fn an_implies_with_a_pole_is_refuted_at_the_pole() {
         "k = 0",
     );
 }
+
+const EVERY_N: &str = "kind = \"identity\"\nfor = [\"n = 0..\"]\n";
+
+#[test]
+fn a_closed_form_that_vanishes_at_n_0_is_proved_with_that_case_apart() {
+    for (lhs, rhs) in [
+        ("sum(i, 0, n, i*B(i, n, t))", "n*t"),
+        ("sum(k, 0, n, k*C(n, k))", "n*2^(n-1)"),
+    ] {
+        match check(&format!("{EVERY_N}lhs = \"{lhs}\"\nrhs = \"{rhs}\"")) {
+            Ok((Verdict::Proved, c)) => assert!(c.contains("n = 0..=0 checked directly"), "{c}"),
+            other => panic!("{lhs} = {rhs}: {other:?}"),
+        }
+    }
+}
+
+#[test]
+fn false_claims_at_a_vanishing_coefficient_are_never_proved() {
+    for (lhs, rhs, at) in [
+        ("sum(i, 0, n, i*B(i, n, t))", "(n-1)*t", "n = 0"),
+        ("sum(k, 0, n, k*C(n, k))", "(n+1)*2^(n-1)", "n = 0"),
+        // Wrong only at n = 2, where the closed form's coefficient vanishes.
+        (
+            "sum(k, 0, n, (n-2)*k*C(n, k)) + C(2, n)*C(n, 2)",
+            "(n-2)*n*2^(n-1)",
+            "n = 2",
+        ),
+    ] {
+        match check(&format!("{EVERY_N}lhs = \"{lhs}\"\nrhs = \"{rhs}\"")) {
+            Ok((Verdict::Fails, c)) => assert!(c.contains(at), "{lhs} = {rhs}: {c}"),
+            Ok((v, c)) => panic!("{lhs} = {rhs}: {v:?} {c}"),
+            Err(_) => {}
+        }
+    }
+}

@@ -24,8 +24,10 @@
 use super::eval::Alg;
 use super::poly::{Poly, RatFunc};
 use crate::error::{Error, Result};
+use num_bigint::BigInt;
+use num_integer::Integer;
 use num_rational::BigRational;
-use num_traits::{One, Signed, ToPrimitive};
+use num_traits::{One, Signed, ToPrimitive, Zero};
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt;
 use std::rc::Rc;
@@ -252,6 +254,92 @@ impl Symbols {
         }
         self.poly_to_aff(&r.num)
     }
+    /// Affine forms in the integer symbols such that `p` is a nonzero polynomial in the
+    /// continuous parameters wherever each of them is ≠ 0 (the integer points where `p`
+    /// vanishes identically are on their zero sets). An error when `p` is zero, or when those
+    /// points are not found to lie on such hyperplanes (then a division by `p` is refused).
+    pub fn integer_zeros(&self, p: &Poly) -> Result<Vec<Aff>> {
+        if p.is_zero() {
+            return Err(Error::DivisionByZero("division by zero".into()));
+        }
+        // p = Σ_α c_α(ints) x^α: p ≢ 0 wherever one c_α ≠ 0; take the simplest c_α.
+        let mut groups: BTreeMap<Vec<u16>, Vec<(Vec<u16>, BigRational)>> = BTreeMap::new();
+        for (mut e, c) in p.terms_list() {
+            let cont = e[self.ints..].to_vec();
+            e[self.ints..].iter_mut().for_each(|x| *x = 0);
+            groups.entry(cont).or_default().push((e, c));
+        }
+        let simplest = groups
+            .values()
+            .min_by_key(|t| (t.len(), t.iter().map(|(e, _)| e.iter().sum::<u16>()).max()))
+            .expect("p is not zero");
+        self.affine_factors(self.poly_from_terms(simplest)).ok_or_else(|| {
+            Error::Domain(format!(
+                "cannot divide by ({p}): the integer points where it vanishes are not known to lie on hyperplanes"
+            ))
+        })
+    }
+
+    /// `p` scaled to integer coefficients (by the lcm of their denominators).
+    fn integral(&self, p: &Poly) -> Poly {
+        let l = p.terms_list().iter().fold(BigInt::one(), |l, (_, c)| l.lcm(c.denom()));
+        p.mul(&Poly::constant(&self.names, &BigRational::from_integer(l)))
+    }
+
+    /// Affine forms whose nonvanishing makes the polynomial `c` in the integer symbols nonzero
+    /// at integer points: its affine factors, the integer roots of a one-symbol factor.
+    fn affine_factors(&self, mut c: Poly) -> Option<Vec<Aff>> {
+        let mut out: Vec<Aff> = Vec::new();
+        'factor: loop {
+            if c.as_constant().is_some() {
+                return Some(out);
+            }
+            if let Some(a) = self.poly_to_aff(&self.integral(&c)) {
+                // Zero at some integer point only when the gcd of the coefficients divides
+                // the constant (2n − 1 never is).
+                let g = a.v.values().fold(0i64, |g, &x| g.gcd(&x));
+                if g != 0 && a.c % g == 0 {
+                    out.push(a);
+                }
+                return Some(out);
+            }
+            let used: Vec<usize> = (0..self.ints)
+                .filter(|&k| c.terms_list().iter().any(|(e, _)| e[k] > 0))
+                .collect();
+            for &k in &used {
+                if let Some(q) = c.exact_div(&Poly::var(&self.names, k)) {
+                    let a = Aff::var(&self.names[k]);
+                    if !out.contains(&a) {
+                        out.push(a);
+                    }
+                    c = q;
+                    continue 'factor;
+                }
+            }
+            let [k] = used[..] else {
+                return None;
+            };
+            // One symbol s, c(0) ≠ 0: an integer root divides the constant of integral(c).
+            let ic = self.integral(&c);
+            let (_, c0) = ic.terms_list().into_iter().find(|(e, _)| e.iter().all(|&x| x == 0))?;
+            let c0 = c0.to_integer().abs();
+            if c0 > BigInt::from(MAX_ROOT_SEARCH) {
+                return None;
+            }
+            let c0 = c0.to_i64()?;
+            let mut point = vec![BigRational::zero(); self.names.len()];
+            for d in (1..=c0).filter(|d| c0 % d == 0) {
+                for r in [d, -d] {
+                    point[k] = BigRational::from_integer(r.into());
+                    if ic.eval(&point).is_zero() {
+                        out.push(Aff::var(&self.names[k]).shifted(-r));
+                    }
+                }
+            }
+            return Some(out);
+        }
+    }
+
     /// `p` with the integer symbol `name` replaced by `by`.
     pub fn subst_poly(&self, p: &Poly, name: &str, by: &Aff) -> Poly {
         let Some(k) = self.index(name) else {
@@ -282,6 +370,9 @@ impl Symbols {
         }
     }
 }
+
+/// Up to this constant term, a one-symbol divisor's integer roots are searched (its divisors).
+const MAX_ROOT_SEARCH: i64 = 1_000_000;
 
 /// The base of a power with a symbolic exponent: a rational constant or a normalised
 /// non-constant polynomial in the continuous parameters (first coefficient 1).
@@ -433,12 +524,16 @@ impl Term {
     }
     /// `1 / self`, defined only where `self` is nonzero: its zero conditions become
     /// conditions of definedness.
-    pub fn recip(&self) -> Result<Term> {
+    /// The integer zeros of the coefficient become `nonzero` conditions (split off as pieces).
+    pub fn recip(&self, sym: &Symbols) -> Result<Term> {
         if !self.deltas.is_empty() || self.bdeg > 0 {
             return Err(Error::Domain("division by a control point".into()));
         }
-        if self.coef.num.is_zero() {
-            return Err(Error::DivisionByZero("division by zero".into()));
+        let mut nonzero = self.nonzero.clone();
+        for a in sym.integer_zeros(&self.coef.num)? {
+            if !nonzero.contains(&a) {
+                nonzero.push(a);
+            }
         }
         let mut defined = self.support.clone();
         defined.extend(self.defined.iter().cloned());
@@ -453,7 +548,7 @@ impl Term {
             support: Vec::new(),
             deltas: Vec::new(),
             defined,
-            nonzero: self.nonzero.clone(),
+            nonzero,
             bdeg: 0,
         })
     }
@@ -865,6 +960,13 @@ fn prove_rec(
                 let sub = lin_subst(sym, &lin, &x, &by);
                 return prove_rec(sym, sub, d.subst(&x, &by), p, log, count, check);
             }
+            if let Some(t) = lin.iter().zip(&alive).find(|(t, a)| **a && t.coef.den.is_zero()) {
+                return Err(Error::DivisionByZero(format!(
+                    "the term {} has the denominator 0 on {}",
+                    t.0.show(),
+                    d.show()
+                )));
+            }
             let live: Vec<&Term> = lin
                 .iter()
                 .zip(&alive)
@@ -1083,5 +1185,29 @@ mod tests {
             cons: vec![i.scaled(2).shifted(-1), i.scaled(-2).shifted(1)],
         };
         assert!(!d.feasible());
+    }
+
+    #[test]
+    fn a_divisor_registers_its_integer_zeros() {
+        let sym = Symbols::new(&["n".into(), "m".into()], &["t".into()]);
+        let v = |x: &str| sym.var(x);
+        let c = |k: i64| RatFunc::from_int(k);
+        let zeros = |r: RatFunc| {
+            sym.integer_zeros(&r.num)
+                .map(|z| z.iter().map(|a| a.to_string()).collect::<Vec<_>>())
+        };
+        // n (n − 1) t + n (n − 1): zero polynomial in t exactly at n = 0 and n = 1.
+        let p = v("n").mul(&v("n").sub(&c(1))).mul(&v("t").add(&c(1)));
+        assert_eq!(zeros(p).unwrap(), ["n", "n - 1"]);
+        // (2n − 4) t: at n = 2; (n² + 1) t and (2n − 1) t: at no integer.
+        assert_eq!(zeros(v("n").mul(&c(2)).sub(&c(4)).mul(&v("t"))).unwrap(), ["2n - 4"]);
+        assert!(zeros(v("n").mul(&v("n")).add(&c(1)).mul(&v("t"))).unwrap().is_empty());
+        assert!(zeros(v("n").mul(&c(2)).sub(&c(1)).mul(&v("t"))).unwrap().is_empty());
+        // n t + m: zero only where n = m = 0 — one of its coefficients is constant-free, the
+        // other (m) is affine: m ≠ 0 suffices.
+        assert_eq!(zeros(v("n").mul(&v("t")).add(&v("m"))).unwrap(), ["m"]);
+        // n m + 1 has no affine description that this finds: refused, never ignored.
+        assert!(zeros(v("n").mul(&v("m")).add(&c(1)).mul(&v("t"))).is_err());
+        assert!(zeros(c(0)).is_err());
     }
 }

@@ -318,7 +318,7 @@ impl<'a> Translator<'a> {
                 let l = self.lin(e, d)?;
                 if let [t] = l.as_slice() {
                     if !is_scalar(t) {
-                        return t.recip();
+                        return t.recip(self.sym);
                     }
                 }
                 let s = self.scalar_of(&l, e)?;
@@ -565,10 +565,31 @@ impl<'a> Translator<'a> {
         if !d.implies_ge(&b.minus(a).shifted(1)) {
             return Err(Error::Domain(format!("{what}: cannot show b − a ≥ −1 on {}", d.show())));
         }
-        // Normalise by a one-term value depending on n.
+        // Normalise by a one-term value depending on n. Where that term's coefficient
+        // vanishes the quotient means nothing: those values of n are checked directly, and the
+        // induction starts past them.
+        let mut n0 = n0;
+        let mut d_ind = d.clone();
+        let mut direct = String::new();
         let (f, rhs, value) = match hint {
             Some(h) if h.len() == 1 && h[0].mentions(sym, &n) => {
-                let r = h[0].recip()?;
+                let start = induction_start(sym, &h[0], &n, &n0, &what)?;
+                for m in 0..start.minus(&n0).c {
+                    let at = n0.shifted(m);
+                    let mut direct = base_case_terms(sym, &f, (k, a, b), (&n, &at), &what)?;
+                    direct.extend(lin_neg(&lin_subst(sym, &h, &n, &at)));
+                    self.expect_zero(
+                        &direct,
+                        &rest,
+                        &format!("{what}: the case {n} = {at}, where the closed form's coefficient vanishes (checked directly)"),
+                    )?;
+                }
+                if start != n0 {
+                    direct = format!("; {n} = {n0}..={} checked directly", start.shifted(-1));
+                    d_ind = rest.with(Aff::var(&n).minus(&start));
+                    n0 = start;
+                }
+                let r = h[0].recip(sym)?;
                 (lin_mul(&f, &[r])?, vec![Term::scalar(RatFunc::from_int(1))], Some(h))
             }
             Some(h) => (f, h.clone(), Some(h)),
@@ -601,8 +622,9 @@ impl<'a> Translator<'a> {
             ""
         };
         let g = self.times_certificate(&cert, &f)?;
-        self.used
-            .push(format!("{what} (induction on {n} ≥ {n0}): R = {cert}{cert_note}"));
+        self.used.push(format!(
+            "{what} (induction on {n} ≥ {n0}{direct}): R = {cert}{cert_note}"
+        ));
         self.log.push(format!(
             "{what} by induction on {n} ≥ {n0}: F = {}; certificate R = {cert}, G = R·F = {}",
             show(&f),
@@ -615,7 +637,7 @@ impl<'a> Translator<'a> {
         wzeq.extend(lin_neg(&f));
         wzeq.extend(lin_neg(&lin_subst(sym, &g, k, &k1)));
         wzeq.extend(g.iter().cloned());
-        let dk = d.with(Aff::var(k).minus(a)).with(b.minus(&Aff::var(k)));
+        let dk = d_ind.with(Aff::var(k).minus(a)).with(b.minus(&Aff::var(k)));
         self.expect_zero(
             &wzeq,
             &dk,
@@ -630,7 +652,7 @@ impl<'a> Translator<'a> {
         ends.extend(rhs.iter().cloned());
         self.expect_zero(
             &ends,
-            d,
+            &d_ind,
             &format!("{what}: G({n}, {b}+1) − G({n}, {a}) + F({n}+1, {b}+1) = rhs({n}+1) − rhs({n})"),
         )?;
         // 3. The base case.
@@ -911,6 +933,42 @@ pub fn nonneg_for_every(
         ))),
     }
 }
+
+/// The first `n ≥ n0` past every integer zero (in `n`) of the coefficient of the closed-form
+/// term `h`, so that dividing by `h` is defined for the whole induction; at most
+/// [`MAX_DIRECT_CASES`] values past `n0`.
+fn induction_start(sym: &Symbols, h: &Term, n: &str, n0: &Aff, what: &str) -> Result<Aff> {
+    let mut start = n0.clone();
+    for z in sym.integer_zeros(&h.coef.num)? {
+        let c = z.coef(n);
+        if c == 0 {
+            continue;
+        }
+        let moving = z.v.keys().any(|x| x != n);
+        if moving || !n0.is_const() {
+            return Err(Error::Domain(format!(
+                "{what}: the closed form's coefficient vanishes where {z} = 0, which moves with the other symbols: the induction cannot start past it"
+            )));
+        }
+        if z.c % c != 0 {
+            continue;
+        }
+        let root = -z.c / c;
+        if root >= start.c {
+            start = Aff::constant(root + 1);
+        }
+    }
+    if start.minus(n0).c > MAX_DIRECT_CASES {
+        return Err(Error::Domain(format!(
+            "{what}: the closed form's coefficient vanishes at {n} = {}, more than {MAX_DIRECT_CASES} values past {n0}",
+            start.c - 1
+        )));
+    }
+    Ok(start)
+}
+
+/// How many values of the induction variable may be checked directly before an induction.
+const MAX_DIRECT_CASES: i64 = 64;
 
 /// The terms of `Σ_{k=a}^{b} F` at the base case `n = n0`, where the sum must have a fixed
 /// number of terms (at most 10 001).
