@@ -7,6 +7,8 @@
 //! - An `implies` whose factor has a pole is refuted at the pole when the premise holds there.
 //! - A divisor's integer zeros are split off: sums whose closed form vanishes at n = 0 are
 //!   proved for every n, and a zero reached by a shift is never a silent comparison.
+//! - Work is bounded before it starts: the size of the numbers counts, and the certificate
+//!   search stops at its budget, saying which degree it reached.
 
 use casteljau::verify::claims::parse_file;
 use casteljau::verify::kinds::check_claim;
@@ -211,4 +213,37 @@ fn false_claims_at_a_vanishing_coefficient_are_never_proved() {
             Err(_) => {}
         }
     }
+}
+
+#[test]
+fn big_numbers_count_in_the_work_estimate() {
+    let x = "7".repeat(4000);
+    let y = "3".repeat(3999) + "1";
+    let claim = |e: u32| {
+        format!("kind = \"identity\"\nvars = [\"t\"]\nlhs = \"({x}/{y} + t)^{e}\"\nrhs = \"({x}/{y} + t)^{e}\"")
+    };
+    assert_verdict(&claim(2), Verdict::Proved);
+    // Once 38 s of CPU; now refused before any evaluation.
+    let start = Instant::now();
+    assert_error(&claim(16), "MAX_WORK");
+    assert!(start.elapsed().as_secs() < 2, "{:?}", start.elapsed());
+}
+
+#[test]
+fn the_certificate_search_stops_at_its_budget_and_says_where() {
+    // Σ_k C(n,k)² = C(2n, n) with spectator symbols: found (degree 4) with five of them ...
+    let spectators = |extra: &str, sum: &str| {
+        format!(
+            "kind = \"identity\"\nfor = [\"a = 0..\", \"b = 0..\", \"c = 0..\", \"d = 0..\", {extra}\"n = 0..\"]\nlhs = \"sum(k, 0, n, C(n, k)^2*C({sum}, a)*C(c + d, c))\"\nrhs = \"C(2*n, n)*C({sum}, a)*C(c + d, c)\""
+        )
+    };
+    assert_verdict(&spectators("", "a + b"), Verdict::Proved);
+    // ... and with seven, degree 4 has more unknowns than the search takes: the error names
+    // the degree reached and the limit (it once claimed "degree ≤ 6" after stopping at 4).
+    let start = Instant::now();
+    assert_error(
+        &spectators("\"e = 0..\", \"f = 0..\", ", "a + b + e + f"),
+        "no R = P/D with P of total degree ≤ 3 solves the WZ equation (D from the factorials of F that grow with n); the search stopped at degree 4: 495 unknowns, more than MAX_UNKNOWNS = 400",
+    );
+    assert!(start.elapsed().as_secs() < 10, "{:?}", start.elapsed());
 }

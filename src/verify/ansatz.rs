@@ -26,6 +26,13 @@ pub const MAX_DEGREE: u32 = 6;
 /// Most unknown coefficients in one ansatz.
 const MAX_UNKNOWNS: usize = 400;
 
+/// The work the search may spend over all degrees: Σ nonzero coefficients × min(rows, columns)
+/// × (64-bit words of the largest coefficient) of its linear systems.
+pub const MAX_ANSATZ_WORK: u128 = 100_000_000;
+
+/// The polynomial terms the equations of one degree may hold (memory).
+pub const MAX_ANSATZ_TERMS: usize = 400_000;
+
 fn monomials(vars: usize, deg: u32) -> Vec<Vec<u16>> {
     let mut out = vec![Vec::new()];
     for _ in 0..vars {
@@ -104,22 +111,36 @@ pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str) -> Result<Expr> {
     }
     let d1 = sym.subst_rf(&d, k, &Aff::var(k).shifted(1));
     let e0 = r1.sub(&RatFunc::from_int(1));
-    for deg in 0..=MAX_DEGREE {
+    let mut work: u128 = 0;
+    let mut searched: Option<u32> = None;
+    let mut stopped = None;
+    'degree: for deg in 0..=MAX_DEGREE {
         let monos = monomials(sym.names.len(), deg);
         if monos.len() > MAX_UNKNOWNS {
+            stopped = Some(format!(
+                "{} unknowns, more than MAX_UNKNOWNS = {MAX_UNKNOWNS}",
+                monos.len()
+            ));
             break;
         }
         // E_i = m_i/D − m_i(k+1)/D(k+1) · r2; Σ c_i E_i = −E_0.
-        let es: Vec<RatFunc> = monos
-            .iter()
-            .map(|e| {
-                let m = monomial(sym, e);
-                let m1 = sym.subst_rf(&m, k, &Aff::var(k).shifted(1));
-                let a = m.div(&d)?;
-                let b = m1.div(&d1)?.mul(&r2);
-                Ok(a.sub(&b))
-            })
-            .collect::<Result<_>>()?;
+        let mut es: Vec<RatFunc> = Vec::with_capacity(monos.len());
+        let mut terms = 0usize;
+        for e in &monos {
+            let m = monomial(sym, e);
+            let m1 = sym.subst_rf(&m, k, &Aff::var(k).shifted(1));
+            let a = m.div(&d)?;
+            let b = m1.div(&d1)?.mul(&r2);
+            let x = a.sub(&b);
+            terms += x.num.len() + x.den.len();
+            if terms > MAX_ANSATZ_TERMS {
+                stopped = Some(format!(
+                    "its equations hold more than MAX_ANSATZ_TERMS = {MAX_ANSATZ_TERMS} polynomial terms"
+                ));
+                break 'degree;
+            }
+            es.push(x);
+        }
         let q = es[0].den.clone();
         if es.iter().any(|x| x.den != q) {
             return Err(none("the ansatz's denominators differ".into()));
@@ -138,7 +159,27 @@ pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str) -> Result<Expr> {
             rows.entry(e).or_insert_with(|| vec![BigRational::zero(); width])[width - 1] -= v;
         }
         let mut a: Vec<Vec<BigRational>> = rows.into_values().collect();
+        // Elimination: each of at most min(rows, columns) pivots updates the nonzero entries,
+        // on numbers of this many words.
+        let nonzero = a.iter().flatten().filter(|x| !x.is_zero()).count() as u128;
+        let words = a
+            .iter()
+            .flatten()
+            .map(|x| x.numer().bits() + x.denom().bits())
+            .max()
+            .unwrap_or(0)
+            / 64
+            + 1;
+        let (h, w) = (a.len(), width);
+        work = work.saturating_add(nonzero * h.min(w) as u128 * u128::from(words));
+        if work > MAX_ANSATZ_WORK {
+            stopped = Some(format!(
+                "its linear system of {h} equations in {w} unknowns ({nonzero} nonzero coefficients) passes MAX_ANSATZ_WORK = {MAX_ANSATZ_WORK} (nonzero coefficients × pivots × words, over all degrees)"
+            ));
+            break;
+        }
         let pivots = row_reduce(&mut a)?;
+        searched = Some(deg);
         if pivots.contains(&(width - 1)) {
             continue;
         }
@@ -177,7 +218,17 @@ pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str) -> Result<Expr> {
         let known: Vec<String> = sym.names.iter().cloned().collect();
         return expr::parse(&text, &known);
     }
-    Err(none(format!(
-        "no R = P/D with P of total degree ≤ {MAX_DEGREE} solves the WZ equation (D from the factorials of F that grow with n)"
-    )))
+    let tried = match searched {
+        Some(deg) => format!(
+            "no R = P/D with P of total degree ≤ {deg} solves the WZ equation (D from the factorials of F that grow with n)"
+        ),
+        None => "no degree of P could be searched".to_string(),
+    };
+    Err(none(match stopped {
+        Some(why) => format!(
+            "{tried}; the search stopped at degree {}: {why}",
+            searched.map_or(0, |d| d + 1)
+        ),
+        None => tried,
+    }))
 }

@@ -1022,8 +1022,20 @@ struct Prepared<T> {
 
 /// Largest estimated work of one claim, in units of one exact evaluation of an expression of
 /// degree `d` counted as `(1 + d)²` (d: the identity's degree plus the degree of the symbolic
-/// polygon or net), summed over every case, pair of sides, basis polygon and sample point.
+/// polygon or net), times `w²` where `w = max(1, (1 + d)·L/64)` words for literals of `L` bits,
+/// summed over every case, pair of sides, basis polygon and sample point.
 pub const MAX_WORK: u128 = 50_000_000;
+
+/// The largest size in bits (numerator and denominator) of a number written in `e`.
+fn literal_bits(e: &Expr) -> u64 {
+    let mut bits = 0;
+    e.visit(&mut |x| {
+        if let Expr::Num(r) = x {
+            bits = bits.max(r.numer().bits() + r.denom().bits());
+        }
+    });
+    bits
+}
 
 /// The work of checking `lhs = rhs` at one instance, estimated before computing.
 pub fn estimate_work<T: Exact>(ctx: &Ctx<'_>, lhs: &Expr, rhs: &Expr, ints: &BTreeMap<String, i64>) -> Result<u128>
@@ -1130,7 +1142,13 @@ where
         });
     }
     let size = 1 + needs.iter().copied().max().unwrap_or(0) as u128 + object_degree as u128;
-    let work = (total as u128).saturating_mul(2).saturating_mul(size * size);
+    // Numbers grow with the degree: a literal of L bits raised to degree d has d·L bits, and
+    // one product of such numbers costs about (d·L/64)² word operations.
+    let words = (size * u128::from(literal_bits(lhs).max(literal_bits(rhs))) / 64).max(1);
+    let work = (total as u128)
+        .saturating_mul(2)
+        .saturating_mul(size * size)
+        .saturating_mul(words.saturating_mul(words));
     Ok(Prepared {
         params,
         num,
@@ -1258,7 +1276,7 @@ fn too_much_work(work: u128) -> Error {
     Error::TooLarge {
         what: "estimated work of the claim",
         value: format!("more than {work} units"),
-        limit: format!("MAX_WORK = {MAX_WORK} units: exact evaluations × (1 + degree)²"),
+        limit: format!("MAX_WORK = {MAX_WORK} units: exact evaluations × (1 + degree)² × (words of the numbers)²"),
     }
 }
 

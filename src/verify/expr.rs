@@ -201,7 +201,8 @@ impl Expr {
         out
     }
 
-    fn visit(&self, f: &mut dyn FnMut(&Expr)) {
+    /// Calls `f` on every node of the tree, this one first.
+    pub fn visit(&self, f: &mut dyn FnMut(&Expr)) {
         f(self);
         match self {
             Expr::Num(_) | Expr::Var(_) => {}
