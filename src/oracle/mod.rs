@@ -74,6 +74,7 @@
 //! operations) which must stay below [`MAX_WORK`]; beyond it the request is refused before
 //! any computation.
 
+mod batch;
 mod cost;
 mod fast;
 mod io;
@@ -83,8 +84,9 @@ mod protocol;
 mod text;
 
 pub use crate::float::{nearest_f64, ulp, ulp_distance, ulp_error, UlpError};
+pub use batch::MAX_BATCH;
 pub use io::{read_line_bounded, serve, skip_line, Line, READ_CHUNK_BYTES};
-pub use judge::{BoundCheck, FloatEvalAnswer, FloatMethod};
+pub use judge::{judge_float, BoundCheck, FloatEvalAnswer, FloatMethod};
 pub use protocol::{check_weight_count, Answer, Op, OPS};
 pub use text::conic_polynomial;
 
@@ -146,20 +148,17 @@ fn respond_in_general(line: &str) -> String {
             return json!({"ok": false, "error": msg}).to_string();
         }
     };
+    if let Some(fields) = batch::respond(&request) {
+        return finish_line(with_ok(fields), request.get("id"), line);
+    }
     let answer = Op::from_json(&request).and_then(|op| op.run_checked());
     answer_line(answer, request.get("id"), line)
 }
 
-/// The response line to `line`, whose request was parsed into `answer` and `id`.
-fn answer_line(answer: crate::Result<Answer>, id: Option<&Value>, line: &str) -> String {
-    if let Ok(Answer::Point { point, ulps, bound }) = &answer {
-        if !id.is_some_and(has_inexact_number) {
-            return point_response(point, ulps.as_deref(), bound.as_deref(), id);
-        }
-    }
-    let mut out = match answer {
-        Ok(answer) => {
-            let mut m = answer.to_json();
+/// The response fields with `ok` (and `error` for a failure).
+fn with_ok(fields: crate::Result<Map<String, Value>>) -> Map<String, Value> {
+    match fields {
+        Ok(mut m) => {
             m.insert("ok".into(), Value::Bool(true));
             m
         }
@@ -169,7 +168,21 @@ fn answer_line(answer: crate::Result<Answer>, id: Option<&Value>, line: &str) ->
             m.insert("error".into(), Value::String(e.to_string()));
             m
         }
-    };
+    }
+}
+
+/// The response line to `line`, whose request was parsed into `answer` and `id`.
+fn answer_line(answer: crate::Result<Answer>, id: Option<&Value>, line: &str) -> String {
+    if let Ok(Answer::Point { point, ulps, bound }) = &answer {
+        if !id.is_some_and(has_inexact_number) {
+            return point_response(point, ulps.as_deref(), bound.as_deref(), id);
+        }
+    }
+    finish_line(with_ok(answer.map(|a| a.to_json())), id, line)
+}
+
+/// The response line with the fields `out` and the request's `id` echoed.
+fn finish_line(mut out: Map<String, Value>, id: Option<&Value>, line: &str) -> String {
     match id {
         None => Value::Object(out).to_string(),
         Some(id) if !has_inexact_number(id) => {
