@@ -19,7 +19,7 @@ use std::cmp::Ordering;
 
 #[test]
 fn ten_thousand_edge_cases_hold_every_bound() {
-    let counts = edges::run(0x5EED_F10A7, 10_000, 10);
+    let counts = edges::run(0x5EED_F10A7, 10_000, 100);
     println!("{}", counts.report());
     assert!(counts.ok(), "{}", counts.report());
     assert_eq!(counts.cases, 10_000);
