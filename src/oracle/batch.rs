@@ -112,7 +112,7 @@ fn approx_point(v: &Value, what: &str) -> Result<Vec<f64>> {
         .map(|(k, x)| {
             float_from_json(x).ok_or_else(|| {
                 Error::Parse(format!(
-                    "{what}, coordinate {k}: a float answer is a JSON number or \"inf\", \"-inf\", \"nan\", got {}",
+                    "{what}, coordinate {k}: a float answer must be a JSON number or one of \"inf\", \"-inf\", \"nan\", got {}",
                     describe(x)
                 ))
             })

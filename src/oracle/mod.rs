@@ -24,7 +24,7 @@
 //!
 //! | op           | fields                                   | answer                     |
 //! |--------------|------------------------------------------|----------------------------|
-//! | `eval`       | `points`, `t`, optional `approx`         | `point` (+ `ulps`, `error_ulps`, `nearest`, `bound`, `within_bound`) |
+//! | `eval`       | `points`, `t`, optional `approx`, `method` | `point` (+ `ulps`, `error_ulps`, `nearest`, `bound`, `within_bound`; with `method` also `condition`) |
 //! | `elevate`    | `points`, `by`                           | `points`                   |
 //! | `split`      | `points`, `t`                            | `left`, `right`            |
 //! | `derivative` | `points`, `order`, optional `t`          | `points`, or `vector` with `t` |
@@ -33,7 +33,13 @@
 //! | `conic`      | `points` (three 2D points), `weights` (three) | `type`, `implicit`    |
 //! | `surface_eval` | `net` (rows `i = 0..m` of points `j = 0..n`), `u`, `v`, optional `approx` | `point` (+ ulps) |
 //! | `fit_cubic`  | `x0`, `x1`, `xh` = x(1/2), `d0` = ẋ(0), `d1` = ẋ(1) | `k`, `l`, `points`, `delta2`, `warnings` |
-//! | `float_eval` | `points`, `t` (floats), optional `method` (`de_casteljau`, `compensated`, `interval`) | `value`, `point`, ulps, `bound`, `within_bound` (+ `running_bound`, or `interval`, `encloses`) |
+//! | `float_eval` | `points`, `t` (floats), optional `method` (`de_casteljau`, `lerp`, `horner`, `bernstein`, `compensated`, `interval`) | `value`, `point`, ulps, `bound`, `within_bound`, `condition` (+ `running_bound`, or `interval`, `encloses`) |
+//!
+//! `eval`'s `method` names the caller's float algorithm, whose own a priori bound judges
+//! `approx` (see [`crate::float`] and `docs/float-bounds.md`); a float answer that overflowed
+//! is sent as `"inf"`, `"-inf"` or `"nan"` and judged, with a `verdict`. For `eval` and
+//! `float_eval`, `"t": [..]` (at most [`MAX_BATCH`]) asks at many parameters in one request,
+//! answered as `results`, one object per parameter; the work limit counts the whole batch.
 //!
 //! `conic`'s `type` is `"ellipse"`, `"parabola"`, `"hyperbola"` or `"degenerate (…)"`;
 //! `implicit` is `[A, B, C, D, E, F]` of `A x² + B xy + C y² + D x + E y + F = 0` scaled to
@@ -366,7 +372,7 @@ mod tests {
         assert!(r["error"].as_str().unwrap().contains("must be a float"), "{r}");
         let r = ask(r#"{"op":"float_eval","points":[[0],["0.1"]],"t":0.5}"#);
         assert!(r["error"].as_str().unwrap().contains("must be a float"), "{r}");
-        let r = ask(r#"{"op":"float_eval","points":[[0],[1]],"t":0.5,"method":"horner"}"#);
+        let r = ask(r#"{"op":"float_eval","points":[[0],[1]],"t":0.5,"method":"bogus"}"#);
         assert!(r["error"].as_str().unwrap().contains("unknown method"), "{r}");
     }
 
