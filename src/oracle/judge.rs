@@ -89,7 +89,8 @@ impl FloatMethod {
         })
     }
 
-    /// Runs the method on one coordinate's coefficients (not for `Interval`).
+    /// Runs the method on one coordinate's coefficients (`Interval`, which has no float
+    /// answer, gives the compensated value).
     pub fn run(self, b: &[f64], t: f64) -> f64 {
         match self {
             FloatMethod::DeCasteljau => de_casteljau(b, t),
