@@ -132,3 +132,26 @@ def test_many_large_requests_do_not_deadlock(casteljau_oracle):
 def test_a_second_oracle_starts_and_closes(casteljau_oracle):
     with Oracle(casteljau_oracle.binary) as o:
         assert o.eval_exact([[2]], 0) == [Fraction(2)]
+
+
+def test_rational_and_surface_answers_at_the_edges_are_within_their_bounds(casteljau_oracle):
+    # homogeneous de Casteljau then one division, and rows then the column, in floats,
+    # on subnormal, tiny and huge data: every correct answer is within the oracle's bound
+    rng = random.Random(5)
+    reqs = []
+    for _ in range(300):
+        n = rng.choice([1, 2, 3, 5])
+        scale = rng.choice([1e-320, 1e-310, 1.0, 1e300])
+        pts = [[rng.uniform(-1, 1) * scale, rng.uniform(-1, 1) * scale] for _ in range(n + 1)]
+        w = [rng.uniform(0.5, 2) for _ in range(n + 1)]
+        t = rng.choice([rng.random(), 5e-324, 1e-300])
+        den = de_casteljau([[x] for x in w], t)[0]
+        num = de_casteljau([[p[0] * wi, p[1] * wi] for p, wi in zip(pts, w)], t)
+        approx = [x / den for x in num]
+        reqs.append({"op": "rational_eval", "points": pts, "weights": w, "t": t, "approx": approx})
+        net = [[[rng.uniform(-1, 1) * scale] for _ in range(n + 1)] for _ in range(3)]
+        u, v = rng.choice([rng.random(), 5e-324]), rng.random()
+        rows = [de_casteljau(row, v) for row in net]
+        reqs.append({"op": "surface_eval", "net": net, "u": u, "v": v, "approx": de_casteljau(rows, u)})
+    answers = casteljau_oracle.requests(reqs)
+    assert all(all(a["within_bound"]) for a in answers)
