@@ -22,7 +22,7 @@
 //! ```
 
 use crate::error::{Error, Result};
-use crate::float::{nearest_f64, next_down, next_up, two_product, two_sum};
+use crate::float::{nearest_f64, next_down, next_up, two_product, two_sum, ulp_exponent_f64};
 use crate::point::Point;
 use crate::rational::{classify_conic, ConicKind, RationalBezierCurve};
 use crate::scalar::Scalar;
@@ -120,12 +120,34 @@ impl Interval {
                 continue;
             }
             let (p, e) = two_product(a, b);
-            let e = if p.is_finite() { e } else { 0.0 };
+            let e = if !p.is_finite() {
+                0.0
+            } else if e == 0.0 && !error_is_exact(a, b) {
+                // the error may have underflowed to 0 (a nonzero error keeps its sign when
+                // rounded). A product rounded to 0 lies on the side of a·b's sign; any other
+                // moves outward both ways.
+                if p == 0.0 {
+                    a.signum() * b.signum()
+                } else {
+                    lo = lo.min(next_down(p));
+                    hi = hi.max(next_up(p));
+                    continue;
+                }
+            } else {
+                e
+            };
             lo = lo.min(down(p, e));
             hi = hi.max(up(p, e));
         }
         Interval { lo, hi }
     }
+}
+
+/// Whether the rounding error of `a·b` (or the remainder of a quotient `a / b ≈ q`, with `q`
+/// for `a`) is a float, so that an FMA returns it exactly: true when the exponents of the two
+/// operands' last bits sum to at least `−1074`, so that `a·b` is a multiple of `2^−1074`.
+fn error_is_exact(a: f64, b: f64) -> bool {
+    ulp_exponent_f64(a) + ulp_exponent_f64(b) >= -1074
 }
 
 fn exact(x: f64) -> BigRational {
@@ -275,6 +297,12 @@ impl Scalar for Interval {
                 let q = a / b;
                 // the remainder a − q·b is exact (fma), and its sign over b's is the error's
                 let r = (-q).mul_add(b, a);
+                if q.is_finite() && b.is_finite() && r == 0.0 && q != 0.0 && !error_is_exact(q, b) {
+                    // the remainder a − q·b may have underflowed to 0: move outward both ways
+                    lo = lo.min(next_down(q));
+                    hi = hi.max(next_up(q));
+                    continue;
+                }
                 let e = if q.is_finite() && b.is_finite() {
                     r * b.signum()
                 } else {
@@ -444,4 +472,32 @@ pub fn point_contains(boxes: &Point<Interval>, exact_point: &Point<BigRational>)
             .iter()
             .zip(exact_point.coords())
             .all(|(b, x)| b.contains(x))
+}
+
+/// An enclosure of `Σ b_i B_i^n(t)` for float coefficients and a float `t`, by de Casteljau
+/// in the convex form `[1 − t]·a + [t]·b` (with `[1 − t]` the two floats around `1 − t`
+/// when it is no float). Unlike the lerp form `a + t·(b − a)` of the generic algorithm, its
+/// intermediate values stay within the coefficients' range for `t ∈ [0, 1]`, so inputs up to
+/// the largest `f64` give finite enclosures. An error for a non-finite input.
+///
+/// ```
+/// use casteljau::interval::interval_de_casteljau;
+/// let e = interval_de_casteljau(&[1e308, -1e308], 0.3).unwrap();
+/// assert!(e.lo() <= 4e307 && 4e307 <= e.hi() && e.hi().is_finite());
+/// ```
+pub fn interval_de_casteljau(b: &[f64], t: f64) -> Result<Interval> {
+    let t = Interval::from_f64(t)?;
+    let (s, rho) = two_sum(1.0, -t.lo);
+    let s = Interval {
+        lo: down(s, rho),
+        hi: up(s, rho),
+    };
+    let mut buf = b.iter().map(|x| Interval::from_f64(*x)).collect::<Result<Vec<_>>>()?;
+    let n = b.len() - 1;
+    for r in 1..=n {
+        for i in 0..=n - r {
+            buf[i] = s * buf[i] + t * buf[i + 1];
+        }
+    }
+    Ok(buf[0])
 }

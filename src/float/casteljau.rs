@@ -9,8 +9,18 @@
 //!
 //! with `k = 2n` when `1 − t` is exactly a float (every `t ∈ [1/2, 1]`, and `0`) and
 //! `k = 3n` otherwise. It holds for every float `t` (with `|B_i^n(t)|` built from `|t|` and
-//! `|1 − t|`), barring underflow, which adds a term of a few subnormals that the bounds
-//! returned here include. The tests check it exactly, in rationals, on random curves.
+//! `|1 − t|`) as long as nothing underflows. Underflow adds an absolute term: a product that
+//! lands below `2^−1022` is off by up to half a subnormal, `η ≤ 2^−1075`, instead of a
+//! relative `u` (a sum never underflows: the sum of two floats in the subnormal range is
+//! exact). Every such `η` reaches the result through the later levels, each multiplying it by
+//! at most `(|s| + |t|)(1 + u)²`; level `r` has `n − r + 1` nodes of two products each, so
+//! the term is at most
+//!
+//! `U_n = 2^−1074 · Σ_{r=1}^{n} (n − r + 1) G^{n−r} (1 + u)^{2n} ≤ 2^−1074 · n(n+1)/2 · G^{n−1} · (1 + 10^−9)`,
+//! `G = max(1, |s| + |t|)`,
+//!
+//! and the bounds returned here add it (see `docs/float-bounds.md` for every method's
+//! bound). The tests check them exactly, in rationals, on random and subnormal curves.
 //!
 //! The running (a posteriori) bound follows the computation node by node; the compensated
 //! algorithm (Jiang, Li, Cheng, Su 2010) carries the rounding error of every operation,
@@ -93,11 +103,39 @@ fn inflate(x: f64, ops: usize) -> f64 {
     next_up(x * (1.0 + 2.0 * gamma(ops + 2)))
 }
 
-/// An absolute term for underflow: every rounding may add half a subnormal, and an error
-/// grows by at most `|s| + |t|` per level.
-fn underflow_term(n: usize, s: f64, t: f64) -> f64 {
-    let growth = (s.abs() + t.abs()).max(1.0);
-    next_up(3.0 * ((n + 1) * (n + 1)) as f64 * ETA * growth.powi(n as i32) * (1.0 + 1e-10))
+/// The absolute term for underflow of a triangle of `n` levels whose nodes each add at most
+/// `per_node` subnormals (`2^−1074` each) and whose levels grow an error by at most
+/// `growth` (times `(1 + u)²`): `per_node · 2^−1074 · n(n+1)/2 · max(1, growth)^{n−1}`,
+/// with a margin of `10^−9` covering the `(1 + u)` factors up to degree `10^6` and the
+/// rounding of this very computation, rounded up. `+∞` when it overflows.
+pub fn underflow_term(n: usize, per_node: f64, growth: f64) -> f64 {
+    if n == 0 {
+        return 0.0;
+    }
+    let g = growth.max(1.0);
+    let nodes = (n as f64) * (n as f64 + 1.0) / 2.0;
+    // a factor at least 1, then one product with 2^−1074: if that lands in the subnormal
+    // range its rounding is absolute, and the step up covers it
+    let factor = per_node * nodes * g.powi(n as i32 - 1) * (1.0 + 1e-9);
+    next_up(factor * ETA)
+}
+
+/// `a + b` rounded up (for nonnegative `a`, `b`): the exact sum lies between the rounded one
+/// and its neighbours, so the next float up is at least the sum.
+pub(crate) fn add_up(a: f64, b: f64) -> f64 {
+    next_up(a + b)
+}
+
+/// `a · b` rounded up (for nonnegative `a`, `b`), subnormal results included.
+pub(crate) fn mul_up(a: f64, b: f64) -> f64 {
+    next_up(a * b)
+}
+
+/// `max(1, |s| + |t|)` rounded up: how much one level of de Casteljau's triangle may grow
+/// an absolute error, for `s = fl(1 − t)`.
+fn level_growth(t: f64) -> f64 {
+    let s = 1.0 - t;
+    add_up(s.abs(), t.abs()).max(1.0)
 }
 
 /// Plain de Casteljau on one coordinate's coefficients (at least one), the convex form
@@ -132,7 +170,7 @@ pub fn abs_bernstein_sum(b: &[f64], t: f64) -> f64 {
             buf[i] = s * buf[i] + t * buf[i + 1];
         }
     }
-    inflate(buf[0], 2 * n) + underflow_term(n, s, t)
+    add_up(inflate(buf[0], 2 * n), underflow_term(n, 1.0, add_up(s, t)))
 }
 
 /// The a priori bound `γ_k Σ |b_i| |B_i^n(t)|` on the error of [`de_casteljau`] (`k` from
@@ -142,14 +180,20 @@ pub fn a_priori_bound(b: &[f64], t: f64) -> f64 {
     if n == 0 {
         return 0.0;
     }
-    next_up(gamma(a_priori_index(n, t)) * abs_bernstein_sum(b, t))
+    add_up(
+        mul_up(gamma(a_priori_index(n, t)), abs_bernstein_sum(b, t)),
+        underflow_term(n, 1.0, level_growth(t)),
+    )
 }
 
 /// Plain de Casteljau with a running error bound: `(p̂, e)` with `|p̂ − p(t)| ≤ e`.
 ///
 /// For one node `c = fl(x + y)`, `x = fl(s a)`, `y = fl(t b)`, with `ŝ − (1 − t) = −ρ`
 /// and the children's bounds `e_a`, `e_b`:
-/// `e_c = u|c| + u|x| + u|y| + |s| e_a + |t| e_b + |ρ| (|a| + e_a)`.
+/// `e_c = u|c| + u|x| + u|y| + |s| e_a + |t| e_b + |ρ| (|a| + e_a) + 2^−1074`,
+/// the last term for the two products' underflow (half a subnormal each). The bound itself
+/// is computed in floats: its relative rounding is covered by a final factor, the underflow
+/// of its own four products by two more subnormals per node.
 /// Usually far tighter than the a priori bound, at about twice the cost.
 pub fn de_casteljau_running(b: &[f64], t: f64) -> (f64, f64) {
     let n = b.len() - 1;
@@ -163,12 +207,15 @@ pub fn de_casteljau_running(b: &[f64], t: f64) -> (f64, f64) {
             let (a, bb) = (val[i], val[i + 1]);
             let (x, y) = (s * a, t * bb);
             let c = x + y;
-            err[i] =
-                u * (c.abs() + x.abs() + y.abs()) + abs_s * err[i] + abs_t * err[i + 1] + abs_rho * (a.abs() + err[i]);
+            err[i] = u * (c.abs() + x.abs() + y.abs())
+                + abs_s * err[i]
+                + abs_t * err[i + 1]
+                + abs_rho * (a.abs() + err[i])
+                + 4.0 * ETA;
             val[i] = c;
         }
     }
-    (val[0], inflate(err[0], 8 * n) + underflow_term(n, s, t))
+    (val[0], inflate(err[0], 8 * n))
 }
 
 /// Compensated de Casteljau (Jiang, Li, Cheng, Su 2010): `(res, e)` with `|res − p(t)| ≤ e`,
@@ -187,21 +234,45 @@ pub fn de_casteljau_running(b: &[f64], t: f64) -> (f64, f64) {
 pub fn compensated_de_casteljau(b: &[f64], t: f64) -> (f64, f64) {
     let (hi, lo) = compensated_parts(b, &vec![0.0; b.len()], t);
     let res = hi + lo;
-    (res, compensated_bound(res, b, 0.0, t))
+    let n = b.len() - 1;
+    (res, compensated_bound(res, b, 0.0, t, compensated_underflow(n, t)))
+}
+
+/// The underflow term of compensated de Casteljau: per node, the two TwoProduct errors may
+/// each be rounded (half a subnormal) and the three products of the low part may underflow
+/// (half a subnormal each): 2.5 subnormals, counted as 3 to cover the second-order effect
+/// of the low triangle's own roundings on them.
+fn compensated_underflow(n: usize, t: f64) -> f64 {
+    underflow_term(n, 3.0, level_growth(t))
 }
 
 /// The bound of [`compensated_de_casteljau`] for a result `res`, plus an input term
-/// `extra · Σ|b_i||B_i|` (second-order input errors).
-fn compensated_bound(res: f64, b: &[f64], extra: f64, t: f64) -> f64 {
+/// `extra · Σ|b_i||B_i|` (second-order input errors) and the absolute underflow term `under`.
+fn compensated_bound(res: f64, b: &[f64], extra: f64, t: f64, under: f64) -> f64 {
     let n = b.len() - 1;
     if n == 0 {
         return 0.0;
     }
     let u = UNIT_ROUNDOFF;
     let g = gamma(3 * n);
-    let second = next_up(next_up(2.0 * g * g + extra) * abs_bernstein_sum(b, t));
+    let second = add_up(mul_up(next_up(2.0 * g * g + extra), abs_bernstein_sum(b, t)), under);
     // |res − p| ≤ u|p| + c  and  |p| ≤ |res| + |res − p|  give  |res − p| ≤ (u|res| + c)/(1 − u)
-    inflate((u * res.abs() + second) / (1.0 - u), 4)
+    inflate(add_up(u * res.abs(), second) / (1.0 - u), 4)
+}
+
+/// The a priori bound of compensated de Casteljau given (a float near) the exact value `p`:
+/// `u|p| + 2γ_{3n}² Σ|b_i||B_i| + U`, for judging another program's compensated evaluation.
+pub fn compensated_a_priori_bound(b: &[f64], t: f64, p: f64) -> f64 {
+    let n = b.len() - 1;
+    if n == 0 {
+        return 0.0;
+    }
+    let g = gamma(3 * n);
+    let second = add_up(
+        mul_up(next_up(2.0 * g * g), abs_bernstein_sum(b, t)),
+        compensated_underflow(n, t),
+    );
+    inflate(add_up(mul_up(UNIT_ROUNDOFF, p.abs()), second), 4)
 }
 
 /// The two parts `(hi, lo)` of compensated de Casteljau on inputs `b_i + d_i` (`d_i` the
@@ -242,9 +313,12 @@ pub fn compensated_derivative(b: &[f64], t: f64) -> (f64, f64) {
     let m = n - 1;
     let extra = 2.0 * UNIT_ROUNDOFF * gamma(3 * m + 3);
     let scaled: Vec<f64> = hi.iter().map(|x| x * nf).collect();
+    // underflow: the low triangle's term times n, then TwoProduct(n, h) and n·l (half a
+    // subnormal each), and the scaled coefficients' own rounding: two subnormals more
+    let under = add_up(mul_up(nf, compensated_underflow(m, t)), 2.0 * ETA);
     (
         res,
-        compensated_bound(res, &scaled, extra + 4.0 * UNIT_ROUNDOFF * UNIT_ROUNDOFF, t),
+        compensated_bound(res, &scaled, extra + 4.0 * UNIT_ROUNDOFF * UNIT_ROUNDOFF, t, under),
     )
 }
 
@@ -279,9 +353,16 @@ pub fn compensated_surface(net: &[Vec<f64>], u: f64, v: f64) -> (f64, f64) {
     let rows: Vec<f64> = net.iter().map(|row| abs_bernstein_sum(row, v)).collect();
     let t_sum = abs_bernstein_sum(&rows, u);
     let (gn, gm) = (gamma(3 * n), gamma(3 * m));
+    // underflow: each row's term carried through the column (growth^m), and the column's own
+    let rows_under = mul_up(
+        compensated_underflow(n, v),
+        level_growth(u).powi(m as i32) * (1.0 + 1e-9),
+    );
+    let under = add_up(rows_under, compensated_underflow(m, u));
     let second = next_up(2.0 * gn * gn * t_sum)
         + next_up(2.0 * gm * gm * abs_bernstein_sum(&h, u))
         + next_up(2.0 * gamma(3 * m + 3) * abs_bernstein_sum(&l, u));
+    let second = add_up(next_up(second), under);
     (
         res,
         inflate((UNIT_ROUNDOFF * res.abs() + second) / (1.0 - UNIT_ROUNDOFF), 6),
@@ -299,7 +380,12 @@ pub fn rational_a_priori_bound(coords: &[Vec<f64>], weights: &[f64], t: f64, x: 
     let n = weights.len() - 1;
     let k = a_priori_index(n, t);
     let u = UNIT_ROUNDOFF;
-    let e_d = next_up(gamma(k) * abs_bernstein_sum(weights, t));
+    // underflow: the triangles' terms, and for the numerator the products w_i b_i (half a
+    // subnormal each, through weights summing to at most growth^n)
+    let growth = level_growth(t);
+    let under = underflow_term(n, 1.0, growth);
+    let products_under = mul_up(ETA, growth.powi(n as i32) * (1.0 + 1e-9));
+    let e_d = add_up(mul_up(gamma(k), abs_bernstein_sum(weights, t)), under);
     let d = de_casteljau(weights, t).abs();
     let room = d - 2.0 * e_d * (1.0 + 4.0 * u);
     coords
@@ -311,9 +397,11 @@ pub fn rational_a_priori_bound(coords: &[Vec<f64>], weights: &[f64], t: f64, x: 
             }
             let products: Vec<f64> = c.iter().zip(weights).map(|(b, w)| b * w).collect();
             let e_n = next_up(gamma(k + 1) * abs_bernstein_sum(&products, t) * (1.0 + 2.0 * u));
+            let e_n = add_up(add_up(e_n, under), products_under);
             let xa = next_up(xk.abs() * (1.0 + 2.0 * u));
             let beta = (e_n + xa * e_d) / room;
-            inflate(beta + u * (xa + beta), 8)
+            // the division may underflow too: half a subnormal, counted as one
+            add_up(inflate(beta + u * (xa + beta), 8), ETA)
         })
         .collect()
 }
@@ -327,7 +415,11 @@ pub fn surface_a_priori_bound(net: &[Vec<f64>], u: f64, v: f64) -> f64 {
         .map(|j| abs_bernstein_sum(&net.iter().map(|row| row[j]).collect::<Vec<_>>(), u))
         .collect();
     let sum = abs_bernstein_sum(&columns, v);
-    next_up(gamma(a_priori_index(m, u) + a_priori_index(n, v)) * sum)
+    // underflow in either order: each direction's term carried through the other's levels
+    let (gu, gv) = (level_growth(u), level_growth(v));
+    let carry = gu.powi(m as i32).max(gv.powi(n as i32)) * (1.0 + 1e-9);
+    let under = mul_up(add_up(underflow_term(m, 1.0, gu), underflow_term(n, 1.0, gv)), carry);
+    add_up(mul_up(gamma(a_priori_index(m, u) + a_priori_index(n, v)), sum), under)
 }
 
 #[cfg(test)]

@@ -5,20 +5,27 @@
 //! exact value; [`a_priori_bound`] and [`de_casteljau_running`] say how large the error of
 //! de Casteljau's algorithm may be; [`compensated_de_casteljau`] makes it about as accurate as
 //! the correctly rounded value, for curves, their derivatives and tensor-product surfaces
-//! ([`compensated_surface`]). Every bound is checked exactly, in rationals, by the tests.
+//! ([`compensated_surface`]). Other programs' evaluation orders have their own a priori
+//! bounds ([`lerp_bound`], [`horner_bound`], [`bernstein_bound`]). Every bound holds on the
+//! whole `f64` range, underflow included, and is checked exactly, in rationals, by the tests.
 
 mod casteljau;
 mod dyadic;
 mod eft;
+mod methods;
 mod ulp;
 
 pub use casteljau::{
-    a_priori_bound, a_priori_index, abs_bernstein_sum, compensated_de_casteljau, compensated_derivative,
-    compensated_surface, de_casteljau, de_casteljau_running, gamma, gamma_exact, next_down, next_up,
-    rational_a_priori_bound, surface_a_priori_bound, UNIT_ROUNDOFF,
+    a_priori_bound, a_priori_index, abs_bernstein_sum, compensated_a_priori_bound, compensated_de_casteljau,
+    compensated_derivative, compensated_surface, de_casteljau, de_casteljau_running, gamma, gamma_exact, next_down,
+    next_up, rational_a_priori_bound, surface_a_priori_bound, underflow_term, UNIT_ROUNDOFF,
 };
 pub use dyadic::{dyadic_ratio, eval_dyadic};
 pub use eft::{fast_two_sum, two_product, two_sum};
+pub use methods::{
+    bernstein_bound, bernstein_sum, binomials, condition_number, horner, horner_bound, lerp_bound, lerp_de_casteljau,
+    power_coefficients,
+};
 pub use ulp::{
     decompose, error_at_most, exact_f64, f64_to_rational, nearest_f64, pow2_exact, round_scaled, scale_pow2_up, ulp,
     ulp_distance, ulp_error, ulp_exponent, ulp_exponent_f64, UlpError,

@@ -343,13 +343,14 @@ pub fn scale_pow2_up(x: f64, k: i64) -> f64 {
     }
 }
 
-/// Whether `|approx − exact| ≤ bound`, decided exactly (`bound` a nonnegative float or `+∞`).
+/// Whether `|approx − exact| ≤ bound`, decided exactly (`bound` a nonnegative float or `+∞`);
+/// never for an `approx` that is `±∞` or NaN.
 pub fn error_at_most(approx: f64, exact: &BigRational, bound: f64) -> bool {
-    if bound == f64::INFINITY {
-        return true;
-    }
     if !approx.is_finite() || bound.is_nan() || bound < 0.0 {
         return false;
+    }
+    if bound == f64::INFINITY {
+        return true;
     }
     let (neg, m, e) = decompose(approx);
     let (_, bm, be) = decompose(bound);

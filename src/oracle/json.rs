@@ -151,7 +151,7 @@ impl Op {
                     Some(Value::String(s)) => req.in_field("method", FloatMethod::parse(s))?,
                     Some(other) => {
                         return Err(Error::Parse(format!(
-                            "field 'method' must be a string (de_casteljau, compensated or interval), got {}",
+                            "field 'method' must be a string (de_casteljau, lerp, horner, bernstein, compensated or interval), got {}",
                             describe(other)
                         )))
                     }

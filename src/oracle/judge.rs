@@ -4,11 +4,12 @@
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::float::{
-    a_priori_bound, abs_bernstein_sum, compensated_de_casteljau, de_casteljau, de_casteljau_running, error_at_most,
-    exact_f64, nearest_f64, rational_a_priori_bound, scale_pow2_up, surface_a_priori_bound, ulp_error, ulp_exponent,
-    UlpError, UNIT_ROUNDOFF,
+    a_priori_bound, abs_bernstein_sum, bernstein_bound, bernstein_sum, compensated_a_priori_bound,
+    compensated_de_casteljau, condition_number, de_casteljau, de_casteljau_running, error_at_most, exact_f64, horner,
+    horner_bound, lerp_bound, lerp_de_casteljau, nearest_f64, power_coefficients, rational_a_priori_bound,
+    scale_pow2_up, surface_a_priori_bound, ulp_distance, ulp_error, ulp_exponent, UlpError, UNIT_ROUNDOFF,
 };
-use crate::interval::Interval;
+use crate::interval::{interval_de_casteljau, Interval};
 use crate::point::Point;
 use crate::rational::RationalBezierCurve;
 use crate::scalar::Scalar;
@@ -35,22 +36,36 @@ impl BoundCheck {
     }
 }
 
-/// Which of casteljau's float evaluators `float_eval` runs.
+/// A float evaluation algorithm: one of casteljau's evaluators (`float_eval`), or the one
+/// a caller used (`eval` with `method`), each with its own a priori bound.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum FloatMethod {
-    /// Plain de Casteljau, `fl(fl(s·a) + fl(t·b))`, with its a priori and running bounds.
+    /// Plain de Casteljau in the convex form `fl(fl(s·a) + fl(t·b))`, `s = fl(1 − t)`, with
+    /// its a priori and running bounds.
     DeCasteljau,
+    /// De Casteljau in the lerp form `a + t·(b − a)`.
+    Lerp,
+    /// Horner's rule on the correctly rounded power-basis coefficients.
+    Horner,
+    /// The Bernstein sum `Σ b_i C(n, i) t^i (1 − t)^{n−i}`.
+    Bernstein,
     /// Compensated de Casteljau, with its bound.
     Compensated,
-    /// The generic de Casteljau on [`Interval`]s: an enclosure.
+    /// The generic de Casteljau on [`Interval`]s: an enclosure (`float_eval` only).
     Interval,
 }
+
+/// The method names, for error messages.
+const METHODS: &str = "de_casteljau, lerp, horner, bernstein, compensated, interval";
 
 impl FloatMethod {
     /// The method's name in requests.
     pub fn as_str(self) -> &'static str {
         match self {
             FloatMethod::DeCasteljau => "de_casteljau",
+            FloatMethod::Lerp => "lerp",
+            FloatMethod::Horner => "horner",
+            FloatMethod::Bernstein => "bernstein",
             FloatMethod::Compensated => "compensated",
             FloatMethod::Interval => "interval",
         }
@@ -60,15 +75,80 @@ impl FloatMethod {
     pub fn parse(name: &str) -> Result<Self> {
         Ok(match name {
             "de_casteljau" => FloatMethod::DeCasteljau,
+            "lerp" => FloatMethod::Lerp,
+            "horner" => FloatMethod::Horner,
+            "bernstein" => FloatMethod::Bernstein,
             "compensated" => FloatMethod::Compensated,
             "interval" => FloatMethod::Interval,
             other => {
                 return Err(Error::Parse(format!(
-                    "unknown method {other:?} (one of de_casteljau, compensated, interval)"
+                    "unknown method {:?} (one of {METHODS})",
+                    super::protocol::truncate(other)
                 )))
             }
         })
     }
+
+    /// Runs the method on one coordinate's coefficients (`Interval`, which has no float
+    /// answer, gives the compensated value).
+    pub fn run(self, b: &[f64], t: f64) -> f64 {
+        match self {
+            FloatMethod::DeCasteljau => de_casteljau(b, t),
+            FloatMethod::Lerp => lerp_de_casteljau(b, t),
+            FloatMethod::Horner => horner(&power_coefficients(b), t),
+            FloatMethod::Bernstein => bernstein_sum(b, t),
+            FloatMethod::Compensated | FloatMethod::Interval => compensated_de_casteljau(b, t).0,
+        }
+    }
+
+    /// The method's a priori bound on one coordinate, `p` a float near the exact value (the
+    /// compensated bound is relative to it); `+∞` for `Interval`, which has no float answer.
+    pub fn bound(self, b: &[f64], t: f64, p: f64) -> f64 {
+        match self {
+            FloatMethod::DeCasteljau => a_priori_bound(b, t),
+            FloatMethod::Lerp => lerp_bound(b, t),
+            FloatMethod::Horner => horner_bound(&power_coefficients(b), t),
+            FloatMethod::Bernstein => bernstein_bound(b, t),
+            FloatMethod::Compensated => compensated_a_priori_bound(b, t, p),
+            FloatMethod::Interval => f64::INFINITY,
+        }
+    }
+}
+
+/// A float answer's error when it may be `±∞` or NaN: `(error, verdict)`, the verdict a
+/// sentence when the float is not finite. An infinity is one step past `±f64::MAX`, so its
+/// `ulps` count from the nearest float; its `error_ulps` is `+∞`. A NaN has `ulps` `u64::MAX`
+/// and `error_ulps` NaN (written `"nan"`).
+pub fn judge_float(approx: f64, exact: &BigRational) -> Result<(UlpError, Option<&'static str>)> {
+    if approx.is_finite() {
+        return Ok((ulp_error(approx, exact)?, None));
+    }
+    let nearest = nearest_f64(exact);
+    if approx.is_nan() {
+        let e = UlpError {
+            nearest,
+            ulps: u64::MAX,
+            error_ulps: f64::NAN,
+        };
+        return Ok((e, Some("nan: the float is NaN, the exact value is a number")));
+    }
+    let verdict = if nearest.is_finite() {
+        if approx > 0.0 {
+            "overflow: the float is inf, the exact value is finite"
+        } else {
+            "overflow: the float is -inf, the exact value is finite"
+        }
+    } else if nearest == approx {
+        "correctly rounded: the exact value is beyond the largest f64"
+    } else {
+        "wrong sign: the exact value is beyond the largest f64 on the other side"
+    };
+    let e = UlpError {
+        nearest,
+        ulps: ulp_distance(approx, nearest),
+        error_ulps: f64::INFINITY,
+    };
+    Ok((e, Some(verdict)))
 }
 
 /// What `float_eval` answers: the float results with their exact errors and bounds.
@@ -88,10 +168,14 @@ pub struct FloatEvalAnswer {
     pub running: Option<Vec<BoundCheck>>,
     /// `interval` only: per coordinate `lo`, `hi` and whether they enclose the exact value
     pub enclosure: Option<Vec<(f64, f64, bool)>>,
+    /// per coordinate, the condition number `Σ|b_i||B_i(t)| / |b(t)|` (estimated)
+    pub condition: Vec<f64>,
+    /// per coordinate, a sentence when the float result is `±∞` or NaN
+    pub verdicts: Vec<Option<&'static str>>,
 }
 
 /// The curve's coordinates as floats, coordinate-major, and whether every one was exact.
-fn float_coords(points: &[Point<BigRational>]) -> (Vec<Vec<f64>>, bool) {
+pub(super) fn float_coords(points: &[Point<BigRational>]) -> (Vec<Vec<f64>>, bool) {
     let dim = points[0].dim();
     let mut exact = true;
     let coords = (0..dim)
@@ -112,7 +196,7 @@ fn float_coords(points: &[Point<BigRational>]) -> (Vec<Vec<f64>>, bool) {
 }
 
 /// Adds `u Σ|b_i||B_i|` to a bound when the inputs were rounded to floats first.
-fn rounded_inputs(bound: f64, b: &[f64], t: f64, exact_inputs: bool) -> f64 {
+pub(super) fn rounded_inputs(bound: f64, b: &[f64], t: f64, exact_inputs: bool) -> f64 {
     if exact_inputs {
         bound
     } else {
@@ -208,13 +292,35 @@ pub fn float_eval(
     let mut enclosure = Vec::new();
     let intervals = if method == FloatMethod::Interval {
         let c = curve.try_map(Interval::from_rational)?;
-        Some(c.eval(&Interval::from_rational(t)?))
+        let generic = c.eval(&Interval::from_rational(t)?);
+        if generic
+            .coords()
+            .iter()
+            .all(|x| x.lo().is_finite() && x.hi().is_finite())
+        {
+            Some(generic.coords().to_vec())
+        } else {
+            // the generic lerp form overflowed in b − a: the convex form stays in range
+            Some(
+                coords
+                    .iter()
+                    .map(|b| interval_de_casteljau(b, tf))
+                    .collect::<Result<Vec<_>>>()?,
+            )
+        }
     } else {
         None
     };
+    let mut condition = Vec::new();
     for (k, b) in coords.iter().enumerate() {
         let x = &point.coords()[k];
+        condition.push(condition_number(b, tf, nearest_f64(x)));
         match method {
+            FloatMethod::Lerp | FloatMethod::Horner | FloatMethod::Bernstein => {
+                let value = method.run(b, tf);
+                values.push(value);
+                bound.push(BoundCheck::new(value, x, method.bound(b, tf, nearest_f64(x))));
+            }
             FloatMethod::DeCasteljau => {
                 let value = de_casteljau(b, tf);
                 let (_, run) = de_casteljau_running(b, tf);
@@ -228,7 +334,7 @@ pub fn float_eval(
                 bound.push(BoundCheck::new(value, x, e));
             }
             FloatMethod::Interval => {
-                let iv = intervals.as_ref().expect("computed above").coords()[k];
+                let iv = intervals.as_ref().expect("computed above")[k];
                 let mid = iv.to_f64();
                 let reach = crate::float::next_up((iv.hi() - mid).max(mid - iv.lo()));
                 values.push(mid);
@@ -237,12 +343,15 @@ pub fn float_eval(
             }
         }
     }
-    let errors = values
+    let judged = values
         .iter()
         .zip(point.coords())
-        .map(|(v, x)| ulp_error(*v, x))
-        .collect::<Result<_>>()?;
+        .map(|(v, x)| judge_float(*v, x))
+        .collect::<Result<Vec<_>>>()?;
+    let (errors, verdicts) = judged.into_iter().unzip();
     Ok(FloatEvalAnswer {
+        condition,
+        verdicts,
         method,
         point,
         values,
@@ -260,21 +369,43 @@ pub fn not_a_float(what: &str, x: &BigRational) -> Error {
     ))
 }
 
-/// `ulps` as JSON: a number up to 2^53 (exact in every JSON client), a decimal string beyond.
+/// `ulps` as JSON: a number up to 2^53 (exact in every JSON client), a decimal string beyond;
+/// `"nan"` for the count of a NaN ([`judge_float`]).
 pub fn ulps_json(ulps: u64) -> Value {
-    if ulps <= 1 << 53 {
+    if ulps == u64::MAX {
+        json!("nan")
+    } else if ulps <= 1 << 53 {
         json!(ulps)
     } else {
         json!(ulps.to_string())
     }
 }
 
-/// A nonnegative float as JSON: a number, or the string `"inf"` when it is beyond the
-/// largest `f64` (JSON has no infinity; `null` would read as "missing").
+/// A float as JSON: a number, or the string `"inf"`, `"-inf"` or `"nan"` (JSON has no
+/// infinity; `null` would read as "missing").
 pub fn float_json(x: f64) -> Value {
     if x.is_finite() {
         json!(x)
-    } else {
+    } else if x.is_nan() {
+        json!("nan")
+    } else if x > 0.0 {
         json!("inf")
+    } else {
+        json!("-inf")
+    }
+}
+
+/// A float from JSON: a number, or one of the strings `"inf"`, `"+inf"`, `"-inf"`, `"nan"`
+/// (how a float answer that overflowed is sent); `None` for anything else.
+pub fn float_from_json(v: &Value) -> Option<f64> {
+    match v {
+        Value::Number(n) => n.as_f64(),
+        Value::String(s) => match s.as_str() {
+            "inf" | "+inf" => Some(f64::INFINITY),
+            "-inf" => Some(f64::NEG_INFINITY),
+            "nan" => Some(f64::NAN),
+            _ => None,
+        },
+        _ => None,
     }
 }

@@ -24,7 +24,7 @@
 //!
 //! | op           | fields                                   | answer                     |
 //! |--------------|------------------------------------------|----------------------------|
-//! | `eval`       | `points`, `t`, optional `approx`         | `point` (+ `ulps`, `error_ulps`, `nearest`, `bound`, `within_bound`) |
+//! | `eval`       | `points`, `t`, optional `approx`, `method` | `point` (+ `ulps`, `error_ulps`, `nearest`, `bound`, `within_bound`; with `method` also `condition`) |
 //! | `elevate`    | `points`, `by`                           | `points`                   |
 //! | `split`      | `points`, `t`                            | `left`, `right`            |
 //! | `derivative` | `points`, `order`, optional `t`          | `points`, or `vector` with `t` |
@@ -33,7 +33,13 @@
 //! | `conic`      | `points` (three 2D points), `weights` (three) | `type`, `implicit`    |
 //! | `surface_eval` | `net` (rows `i = 0..m` of points `j = 0..n`), `u`, `v`, optional `approx` | `point` (+ ulps) |
 //! | `fit_cubic`  | `x0`, `x1`, `xh` = x(1/2), `d0` = ẋ(0), `d1` = ẋ(1) | `k`, `l`, `points`, `delta2`, `warnings` |
-//! | `float_eval` | `points`, `t` (floats), optional `method` (`de_casteljau`, `compensated`, `interval`) | `value`, `point`, ulps, `bound`, `within_bound` (+ `running_bound`, or `interval`, `encloses`) |
+//! | `float_eval` | `points`, `t` (floats), optional `method` (`de_casteljau`, `lerp`, `horner`, `bernstein`, `compensated`, `interval`) | `value`, `point`, ulps, `bound`, `within_bound`, `condition` (+ `running_bound`, or `interval`, `encloses`) |
+//!
+//! `eval`'s `method` names the caller's float algorithm, whose own a priori bound judges
+//! `approx` (see [`crate::float`] and `docs/float-bounds.md`); a float answer that overflowed
+//! is sent as `"inf"`, `"-inf"` or `"nan"` and judged, with a `verdict`. For `eval` and
+//! `float_eval`, `"t": [..]` (at most [`MAX_BATCH`]) asks at many parameters in one request,
+//! answered as `results`, one object per parameter; the work limit counts the whole batch.
 //!
 //! `conic`'s `type` is `"ellipse"`, `"parabola"`, `"hyperbola"` or `"degenerate (…)"`;
 //! `implicit` is `[A, B, C, D, E, F]` of `A x² + B xy + C y² + D x + E y + F = 0` scaled to
@@ -74,6 +80,7 @@
 //! operations) which must stay below [`MAX_WORK`]; beyond it the request is refused before
 //! any computation.
 
+mod batch;
 mod cost;
 mod fast;
 mod io;
@@ -83,8 +90,9 @@ mod protocol;
 mod text;
 
 pub use crate::float::{nearest_f64, ulp, ulp_distance, ulp_error, UlpError};
+pub use batch::MAX_BATCH;
 pub use io::{read_line_bounded, serve, skip_line, Line, READ_CHUNK_BYTES};
-pub use judge::{BoundCheck, FloatEvalAnswer, FloatMethod};
+pub use judge::{judge_float, BoundCheck, FloatEvalAnswer, FloatMethod};
 pub use protocol::{check_weight_count, Answer, Op, OPS};
 pub use text::conic_polynomial;
 
@@ -146,20 +154,17 @@ fn respond_in_general(line: &str) -> String {
             return json!({"ok": false, "error": msg}).to_string();
         }
     };
+    if let Some(fields) = batch::respond(&request) {
+        return finish_line(with_ok(fields), request.get("id"), line);
+    }
     let answer = Op::from_json(&request).and_then(|op| op.run_checked());
     answer_line(answer, request.get("id"), line)
 }
 
-/// The response line to `line`, whose request was parsed into `answer` and `id`.
-fn answer_line(answer: crate::Result<Answer>, id: Option<&Value>, line: &str) -> String {
-    if let Ok(Answer::Point { point, ulps, bound }) = &answer {
-        if !id.is_some_and(has_inexact_number) {
-            return point_response(point, ulps.as_deref(), bound.as_deref(), id);
-        }
-    }
-    let mut out = match answer {
-        Ok(answer) => {
-            let mut m = answer.to_json();
+/// The response fields with `ok` (and `error` for a failure).
+fn with_ok(fields: crate::Result<Map<String, Value>>) -> Map<String, Value> {
+    match fields {
+        Ok(mut m) => {
             m.insert("ok".into(), Value::Bool(true));
             m
         }
@@ -169,7 +174,21 @@ fn answer_line(answer: crate::Result<Answer>, id: Option<&Value>, line: &str) ->
             m.insert("error".into(), Value::String(e.to_string()));
             m
         }
-    };
+    }
+}
+
+/// The response line to `line`, whose request was parsed into `answer` and `id`.
+fn answer_line(answer: crate::Result<Answer>, id: Option<&Value>, line: &str) -> String {
+    if let Ok(Answer::Point { point, ulps, bound }) = &answer {
+        if !id.is_some_and(has_inexact_number) {
+            return point_response(point, ulps.as_deref(), bound.as_deref(), id);
+        }
+    }
+    finish_line(with_ok(answer.map(|a| a.to_json())), id, line)
+}
+
+/// The response line with the fields `out` and the request's `id` echoed.
+fn finish_line(mut out: Map<String, Value>, id: Option<&Value>, line: &str) -> String {
     match id {
         None => Value::Object(out).to_string(),
         Some(id) if !has_inexact_number(id) => {
@@ -353,7 +372,7 @@ mod tests {
         assert!(r["error"].as_str().unwrap().contains("must be a float"), "{r}");
         let r = ask(r#"{"op":"float_eval","points":[[0],["0.1"]],"t":0.5}"#);
         assert!(r["error"].as_str().unwrap().contains("must be a float"), "{r}");
-        let r = ask(r#"{"op":"float_eval","points":[[0],[1]],"t":0.5,"method":"horner"}"#);
+        let r = ask(r#"{"op":"float_eval","points":[[0],[1]],"t":0.5,"method":"bogus"}"#);
         assert!(r["error"].as_str().unwrap().contains("unknown method"), "{r}");
     }
 

@@ -155,8 +155,10 @@ impl Answer {
             Answer::FloatEval(f) => {
                 m.insert("method".into(), json!(f.method.as_str()));
                 m.insert("point".into(), point_to_json(&f.point));
-                m.insert("value".into(), f.values.iter().map(|v| json!(v)).collect());
+                m.insert("value".into(), f.values.iter().map(|v| float_json(*v)).collect());
+                m.insert("condition".into(), f.condition.iter().map(|c| float_json(*c)).collect());
                 insert_errors(&mut m, &f.errors);
+                insert_verdicts(&mut m, &f.verdicts);
                 insert_bound(&mut m, "bound", "within_bound", &f.bound);
                 if let Some(r) = &f.running {
                     insert_bound(&mut m, "running_bound", "within_running_bound", r);
@@ -196,17 +198,24 @@ impl Answer {
 }
 
 /// `ulps`, `error_ulps` and `nearest`, one entry per coordinate.
-fn insert_errors(m: &mut Map<String, Value>, errors: &[UlpError]) {
+pub(super) fn insert_errors(m: &mut Map<String, Value>, errors: &[UlpError]) {
     m.insert("ulps".into(), errors.iter().map(|e| ulps_json(e.ulps)).collect());
     m.insert(
         "error_ulps".into(),
         errors.iter().map(|e| float_json(e.error_ulps)).collect(),
     );
-    m.insert("nearest".into(), errors.iter().map(|e| json!(e.nearest)).collect());
+    m.insert("nearest".into(), errors.iter().map(|e| float_json(e.nearest)).collect());
+}
+
+/// `verdict` when some float answer is `±∞` or NaN: per coordinate a sentence, or `null`.
+pub(super) fn insert_verdicts(m: &mut Map<String, Value>, verdicts: &[Option<&'static str>]) {
+    if verdicts.iter().any(Option::is_some) {
+        m.insert("verdict".into(), verdicts.iter().map(|v| json!(v)).collect());
+    }
 }
 
 /// A bound in ulps and the verdicts, one entry per coordinate.
-fn insert_bound(m: &mut Map<String, Value>, bound: &str, within: &str, checks: &[BoundCheck]) {
+pub(super) fn insert_bound(m: &mut Map<String, Value>, bound: &str, within: &str, checks: &[BoundCheck]) {
     m.insert(bound.into(), checks.iter().map(|c| float_json(c.bound_ulps)).collect());
     m.insert(within.into(), checks.iter().map(|c| json!(c.within)).collect());
 }
