@@ -26,6 +26,7 @@ mod hodograph;
 mod hull;
 mod net;
 mod request;
+mod sample;
 mod subdivision;
 pub mod svg;
 
@@ -141,12 +142,23 @@ where
         self.points()[0].dim()
     }
 
-    /// `k/n` samples, exactly, projected for drawing.
-    pub(crate) fn planar_samples(&self, n: usize) -> Result<Vec<Point<T>>> {
-        svg::sample_params::<T>(n)?
+    /// `k/n` samples for drawing, projected: the exact control data rounded to `f64` once,
+    /// then evaluated in `f64` ([`sample`]).
+    pub(crate) fn drawn_samples(&self, n: usize) -> Result<Vec<[f64; 2]>> {
+        let drawn = self
+            .points()
             .iter()
-            .map(|t| planar(&self.eval(t)?))
-            .collect()
+            .map(|p| svg::xy(&planar(p)?))
+            .collect::<Result<Vec<_>>>()?;
+        Ok(match self {
+            AnyCurve::Polynomial(_) => sample::polynomial(&drawn, n),
+            AnyCurve::Rational(c) => {
+                // only the weights' ratios matter: scaled by the largest, they stay in range
+                let largest = c.weights().iter().map(|w| w.to_f64().abs()).fold(0.0, f64::max);
+                let weights: Vec<f64> = c.weights().iter().map(|w| w.to_f64() / largest).collect();
+                sample::rational(&drawn, &weights, n)
+            }
+        })
     }
 }
 

@@ -20,7 +20,8 @@
 //! is echoed in the response. Numbers follow [`crate::input`]: strings (`"1/3"`, `"0.25"`,
 //! `"1e-3"`) are exact, JSON numbers are exactly the `f64` they parse to. Exact results are
 //! strings in lowest terms. Every response has `"ok"`; failures carry `"error"`. Unknown
-//! fields are errors (a misspelt optional field would otherwise be silently ignored).
+//! fields are errors (a misspelt optional field would otherwise be silently ignored), and so
+//! is a field given twice (JSON leaves open which copy counts).
 //!
 //! | op           | fields                                   | answer                     |
 //! |--------------|------------------------------------------|----------------------------|
@@ -64,8 +65,11 @@
 //! # Limits
 //!
 //! No request can exhaust memory or time: lines are read at most [`MAX_LINE_BYTES`] at a
-//! time (a longer line is answered with an error as soon as the limit is crossed, then
-//! skipped without being stored); curves
+//! time, not counting the `\r` of a `\r\n` line end (a longer line is answered with an
+//! error as soon as the limit is crossed, then skipped without being stored). That answer
+//! carries the request's `id` when the line starts with it (`{"id": 7, "op": …`, the id
+//! within the limit); an id anywhere else cannot be read without the whole line, so the
+//! answer has none: a client that pipelines large requests puts the id first. Curves
 //! have at most [`MAX_POINTS`] points, degrees stay at most [`MAX_DEGREE`] (after elevation
 //! too), points at most [`MAX_DIMENSION`] coordinates; numbers at most
 //! [`crate::scalar::MAX_NUMBER_LEN`] characters and decimal exponents within
@@ -146,7 +150,9 @@ fn respond_in_general(line: &str) -> String {
             return json!({"ok": false, "error": msg}).to_string();
         }
     };
-    let answer = Op::from_json(&request).and_then(|op| op.run_checked());
+    let answer = json::check_unique_fields(line)
+        .and_then(|()| Op::from_json(&request))
+        .and_then(|op| op.run_checked());
     answer_line(answer, request.get("id"), line)
 }
 
