@@ -9,6 +9,24 @@
 //! the figure's notes print the exact numbers the figure is about, so a printed copy keeps
 //! them. Space curves and surfaces are drawn in one fixed projection ([`projection`]).
 //!
+//! What a figure only draws (the curve between its control points, iso-curves, arcs) is
+//! sampled in `f64` from the exact control data rounded once (the private `sample` module):
+//! pixels need no more, and exact samples would cost a whole scheme each.
+//!
+//! # Limits
+//!
+//! Every `casteljau figure` request is bounded before any work, and refused with a one-line
+//! error naming the limit: degrees (of a curve, or of a net either way) at most
+//! [`MAX_FIGURE_DEGREE`]; every number (coordinates, `--t`, `--point`, `--weights`) at most
+//! [`MAX_FIGURE_NUMBER_BITS`] bits in its numerator and in its denominator; at most
+//! [`MAX_FIGURE_STEPS`] elevation steps, each at most [`MAX_FIGURE_ELEVATION`]; at most
+//! [`MAX_FIGURE_ARCS`] conic arcs and [`MAX_ISO`] iso-curves per direction; the hull search at
+//! most [`crate::hull::MAX_SUBSETS`] subsets. The exact computations a figure prints (the
+//! scheme, the pieces, elevated polygons and their distances, hull weights, the fit, the
+//! Enneper match) are given a work estimate in the oracle's units
+//! ([`crate::oracle::Op::work`]) which must stay below [`MAX_FIGURE_WORK`]. The list with
+//! examples is in `docs/limits.md`.
+//!
 //! ```
 //! use casteljau::{figure, BezierCurve, BigRational, Scalar};
 //! let c: BezierCurve<BigRational> = BezierCurve::from_ints(&[&[0, 0], &[1, 2], &[3, 2], &[4, 0]]).unwrap();
@@ -37,8 +55,11 @@ pub use enneper::{enneper, text003_example5};
 pub use fit::fit;
 pub use hodograph::hodograph;
 pub use hull::hull;
-pub use net::net;
-pub use request::{FigureKind, FigureRequest, DEFAULT_CONIC_POLYGON, DEFAULT_CURVE, DEFAULT_FIT_CURVE, DEFAULT_NET};
+pub use net::{net, MAX_ISO};
+pub use request::{
+    FigureKind, FigureRequest, DEFAULT_CONIC_POLYGON, DEFAULT_CURVE, DEFAULT_FIT_CURVE, DEFAULT_NET, MAX_FIGURE_ARCS,
+    MAX_FIGURE_NUMBER_BITS, MAX_FIGURE_STEPS, MAX_FIGURE_WORK,
+};
 pub use subdivision::subdivision;
 pub use svg::{Figure, Layout, Panel, PanelMap};
 
