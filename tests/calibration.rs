@@ -273,10 +273,10 @@ fn the_largest_admitted_oracle_request_of_every_op_stays_within_the_budget() {
     let mut over = Vec::new();
     for (name, make) in oracle_families() {
         for kind in KINDS {
-            // sizes where the inputs alone stay small (a net of side 512 is already 790k numbers)
+            // sizes where the inputs alone stay small (a net of side 400 is already 480k numbers)
             let cap = match name {
                 "fit_cubic" => 64,
-                "surface_eval" => 512,
+                "surface_eval" => 400,
                 "conic" => 2000,
                 _ => 4096,
             };

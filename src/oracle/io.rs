@@ -20,7 +20,7 @@ pub enum Line {
 /// [`Line::TooLong`], having stored nothing beyond the limit, and leaves the rest of the line
 /// unread. The final line needs no `\n`.
 pub fn read_line_bounded<R: BufRead>(reader: &mut R, limit: usize) -> io::Result<Line> {
-    Ok(match read_line_bounded_keeping(reader, limit)? {
+    Ok(match read_line_bounded_keeping(reader, limit, false)? {
         Bounded::Text(line) => Line::Text(line),
         Bounded::TooLong(_) => Line::TooLong,
         Bounded::Eof => Line::Eof,
@@ -67,22 +67,15 @@ pub const READ_CHUNK_BYTES: usize = 64 * 1024;
 pub fn serve<R: Read, W: Write>(reader: R, mut writer: W) -> io::Result<()> {
     let mut reader = BufReader::with_capacity(READ_CHUNK_BYTES, reader);
     loop {
-        // one byte more than the limit, so that the CR of a CRLF line is not counted
-        let line = read_line_bounded_keeping(&mut reader, MAX_LINE_BYTES + 1)?;
+        // the CR of a CRLF line end does not count against the limit
+        let line = read_line_bounded_keeping(&mut reader, MAX_LINE_BYTES, true)?;
         let response = match &line {
             Bounded::Eof => return writer.flush(),
             Bounded::TooLong(start) => too_long(start),
-            Bounded::Text(bytes) => {
-                let bytes = bytes.strip_suffix(b"\r").unwrap_or(bytes);
-                if bytes.len() > MAX_LINE_BYTES {
-                    too_long(bytes)
-                } else {
-                    match std::str::from_utf8(bytes) {
-                        Ok(s) => handle_line(s),
-                        Err(_) => json!({"ok": false, "error": "request line is not valid UTF-8"}).to_string(),
-                    }
-                }
-            }
+            Bounded::Text(bytes) => match std::str::from_utf8(bytes.strip_suffix(b"\r").unwrap_or(bytes)) {
+                Ok(s) => handle_line(s),
+                Err(_) => json!({"ok": false, "error": "request line is not valid UTF-8"}).to_string(),
+            },
         };
         writer.write_all(response.as_bytes())?;
         writer.write_all(b"\n")?;
@@ -96,14 +89,15 @@ pub fn serve<R: Read, W: Write>(reader: R, mut writer: W) -> io::Result<()> {
 }
 
 /// [`read_line_bounded`], keeping the start of an over-long line (its first `limit + 1`
-/// bytes at most) so that its answer can carry the request's `id`.
+/// bytes at most) so that its answer can carry the request's `id`; with `crlf`, the `\r`
+/// of a `\r\n` line end is not counted.
 enum Bounded {
     Text(Vec<u8>),
     TooLong(Vec<u8>),
     Eof,
 }
 
-fn read_line_bounded_keeping<R: BufRead>(reader: &mut R, limit: usize) -> io::Result<Bounded> {
+fn read_line_bounded_keeping<R: BufRead>(reader: &mut R, limit: usize, crlf: bool) -> io::Result<Bounded> {
     let mut line = Vec::new();
     let mut seen_any = false;
     loop {
@@ -120,8 +114,18 @@ fn read_line_bounded_keeping<R: BufRead>(reader: &mut R, limit: usize) -> io::Re
             Some(i) => (&buf[..i], Some(i)),
             None => (buf, None),
         };
-        if line.len() + chunk.len() > limit {
-            let take = (limit - line.len() + 1).min(chunk.len());
+        let len = line.len() + chunk.len();
+        // with `crlf`, one byte past the limit is allowed when it is a `\r` (of a CRLF end,
+        // or of the input's end): a longer line is known as soon as any other byte arrives
+        let last = chunk.last().or(line.last());
+        let allowed = if crlf && len == limit + 1 && last == Some(&b'\r') {
+            limit + 1
+        } else {
+            limit
+        };
+        if len > allowed {
+            // consume only what fits under the limit plus one byte: the line is too long
+            let take = (limit + 1).saturating_sub(line.len()).min(chunk.len());
             line.extend_from_slice(&chunk[..take]);
             reader.consume(take);
             return Ok(Bounded::TooLong(line));
