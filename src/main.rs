@@ -27,9 +27,9 @@ use std::process::ExitCode;
                   2 bad usage or input."
 )]
 struct Cli {
-    /// Output format.
-    #[arg(long, global = true, value_enum, default_value_t = Format::Text)]
-    format: Format,
+    /// Output format (default text; `figure` always writes SVG and takes none).
+    #[arg(long, global = true, value_enum)]
+    format: Option<Format>,
     #[command(subcommand)]
     command: Command,
 }
@@ -64,12 +64,15 @@ enum Command {
         /// Print the proof of one claim instead: the argument and one worked case.
         #[arg(long, value_name = "ID")]
         explain: Option<String>,
-        /// With --explain: also the full log of every checked case.
+        /// With --explain: also the full log of every checked case (text and JSON only).
         #[arg(long, requires = "explain")]
         verbose: bool,
         /// Also write a static HTML report (index, one page per text, figures) into DIR.
         #[arg(long, value_name = "DIR", conflicts_with = "explain")]
         html: Option<PathBuf>,
+        /// With --html: overwrite an existing report (DIR/index.html).
+        #[arg(long, requires = "html")]
+        force: bool,
     },
     /// Evaluate b(t) exactly by de Casteljau's algorithm (a rational curve with --weights).
     Eval {
@@ -245,7 +248,7 @@ fn main() -> ExitCode {
 
 /// Runs one command; `Err` is the one-line message for stderr (exit status 2).
 fn run(cli: Cli) -> Result<ExitCode, String> {
-    let format = cli.format;
+    let format = cli.format.unwrap_or(Format::Text);
     let e = |e: Error| e.to_string();
     match cli.command {
         Command::Prove {
@@ -253,7 +256,14 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             explain: id,
             verbose,
             html,
-        } => prove(&paths, id.as_deref(), verbose, html.as_deref(), format),
+            force,
+        } => prove(
+            &paths,
+            id.as_deref(),
+            verbose,
+            html.as_deref().map(|d| (d, force)),
+            format,
+        ),
         Command::Figure {
             what,
             input,
@@ -264,6 +274,9 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             iso,
             output: out,
         } => {
+            if cli.format.is_some() {
+                return Err("--format does not apply to `figure` (it always writes SVG)".into());
+            }
             let request = FigureRequest {
                 kind: what.parse().map_err(e)?,
                 input,
@@ -486,22 +499,71 @@ fn output(text: &str) -> Result<(), String> {
     }
 }
 
+/// Every path names a claim file or a directory of them: anything else (a FIFO, a device)
+/// could block or never end, so it is refused before anything is read.
+fn check_claim_paths(paths: &[PathBuf]) -> Result<(), String> {
+    for path in paths {
+        let meta = std::fs::metadata(path).map_err(|err| match err.kind() {
+            io::ErrorKind::NotFound => format!(
+                "no such file or directory: {} (give claim files or directories)",
+                path.display()
+            ),
+            _ => format!("cannot read {}: {err}", path.display()),
+        })?;
+        if !meta.is_file() && !meta.is_dir() {
+            return Err(format!(
+                "{} is not a regular file or a directory (give claim files or directories)",
+                path.display()
+            ));
+        }
+        if meta.is_dir() {
+            // the `.toml` entries `prove` reads from a directory must be regular files too
+            let entries = std::fs::read_dir(path).map_err(|err| format!("cannot read {}: {err}", path.display()))?;
+            for entry in entries.filter_map(|e| e.ok().map(|e| e.path())) {
+                let special = entry.extension().is_some_and(|x| x == "toml")
+                    && std::fs::metadata(&entry).is_ok_and(|m| !m.is_file() && !m.is_dir());
+                if special {
+                    return Err(format!(
+                        "{} is not a regular file (claim files must be regular files)",
+                        entry.display()
+                    ));
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Checks the report directory before any claim is proved: it is created (so an unwritable
+/// place fails at once), and an existing report is only replaced with `--force`.
+fn prepare_report_dir(dir: &Path, force: bool) -> Result<(), String> {
+    if dir.exists() && !dir.is_dir() {
+        return Err(format!("--html: {} exists and is not a directory", dir.display()));
+    }
+    let index = dir.join("index.html");
+    if index.exists() && !force {
+        return Err(format!(
+            "--html: {} already exists (add --force to overwrite the report)",
+            index.display()
+        ));
+    }
+    std::fs::create_dir_all(dir).map_err(|err| format!("--html: cannot create {}: {err}", dir.display()))
+}
+
 fn prove(
     paths: &[PathBuf],
     id: Option<&str>,
     verbose: bool,
-    html: Option<&Path>,
+    html: Option<(&Path, bool)>,
     format: Format,
 ) -> Result<ExitCode, String> {
-    if let Some(missing) = paths.iter().find(|p| !p.exists()) {
-        return Err(format!(
-            "no such file or directory: {} (give claim files or directories)",
-            missing.display()
-        ));
-    }
+    check_claim_paths(paths)?;
     if let Some(id) = id {
         let style = match (format, verbose) {
-            (Format::Latex, _) => ExplainStyle::Latex,
+            (Format::Latex, true) => {
+                return Err("--verbose does not apply to --format latex (the LaTeX proof has no case log)".into())
+            }
+            (Format::Latex, false) => ExplainStyle::Latex,
             (_, true) => ExplainStyle::Verbose,
             (_, false) => ExplainStyle::Short,
         };
@@ -514,6 +576,9 @@ fn prove(
     }
     if matches!(format, Format::Latex) {
         return Err(LATEX_ONLY.into());
+    }
+    if let Some((dir, force)) = html {
+        prepare_report_dir(dir, force)?;
     }
     let show_progress = io::stderr().is_terminal();
     let mut progress = |done: usize, total: usize, claim: &str| {
@@ -529,7 +594,7 @@ fn prove(
         eprint!("\r\x1b[2K");
     }
     let report = report.map_err(|e| e.to_string())?;
-    if let Some(dir) = html {
+    if let Some((dir, _)) = html {
         let files = casteljau::verify::claims::load_paths(paths).map_err(|e| e.to_string())?;
         let written = casteljau::html::write_report(&report, &files, dir).map_err(|e| e.to_string())?;
         eprintln!(

@@ -251,10 +251,11 @@ fn prove_reports_and_sets_the_status() {
 #[test]
 fn prove_refuses_endless_empty_and_unbounded_claim_files() {
     // An endless file is refused before it is read whole; an empty one is not an empty success.
-    let err = fails(&["prove", "/dev/zero"]);
-    assert!(err.contains("claim file is too large"), "{err}");
-    let err = fails(&["prove", "/dev/null"]);
-    assert!(err.contains("no claims"), "{err}");
+    // Devices are not claim files: refused before anything is read.
+    for device in ["/dev/zero", "/dev/null"] {
+        let err = fails(&["prove", device]);
+        assert!(err.contains("not a regular file"), "{err}");
+    }
     let dir = std::env::temp_dir().join(format!("casteljau-cli-bounds-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let empty = dir.join("empty.toml");
@@ -334,4 +335,100 @@ fn readme_explain_and_latex_examples_are_exact() {
         checked += 1;
     }
     assert_eq!(checked, 2, "the README shows one --explain and one LaTeX example");
+}
+
+#[test]
+fn prove_refuses_a_fifo_at_once() {
+    let dir = std::env::temp_dir().join(format!("casteljau-cli-fifo-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let fifo = dir.join("f.toml");
+    let made = Command::new("mkfifo").arg(&fifo).status();
+    if !made.is_ok_and(|s| s.success()) {
+        eprintln!("no mkfifo here: nothing to test");
+        return;
+    }
+    // with no writer, opening the FIFO would block forever: the command must not open it
+    for target in [fifo.clone(), dir.clone()] {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_casteljau"))
+            .arg("prove")
+            .arg(&target)
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        let start = std::time::Instant::now();
+        while child.try_wait().unwrap().is_none() {
+            if start.elapsed() > std::time::Duration::from_secs(10) {
+                child.kill().unwrap();
+                panic!("prove {} blocked", target.display());
+            }
+            std::thread::sleep(std::time::Duration::from_millis(20));
+        }
+        let out = child.wait_with_output().unwrap();
+        assert_eq!(out.status.code(), Some(2));
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains("not a regular file"), "{err}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn prove_html_checks_its_directory_before_proving() {
+    let dir = std::env::temp_dir().join(format!("casteljau-cli-html-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let claims = dir.join("c.toml");
+    std::fs::write(
+        &claims,
+        "[[claim]]\nid = \"c\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\nlhs = \"(1+t)^2\"\nrhs = \"1 + 2t + t^2\"\n",
+    )
+    .unwrap();
+    let c = claims.to_str().unwrap();
+    // a file where the directory should be
+    let err = fails(&["prove", c, "--html", c]);
+    assert!(err.contains("not a directory"), "{err}");
+    let report = dir.join("report");
+    let r = report.to_str().unwrap();
+    ok_with_stderr(&["prove", c, "--html", r]);
+    let index = std::fs::read_to_string(report.join("index.html")).unwrap();
+    // an existing report is kept unless --force
+    let err = fails(&["prove", c, "--html", r]);
+    assert!(err.contains("--force"), "{err}");
+    std::fs::write(report.join("index.html"), "mine").unwrap();
+    let err = fails(&["prove", c, "--html", r]);
+    assert!(err.contains("already exists"), "{err}");
+    assert_eq!(std::fs::read_to_string(report.join("index.html")).unwrap(), "mine");
+    ok_with_stderr(&["prove", c, "--html", r, "--force"]);
+    assert_eq!(std::fs::read_to_string(report.join("index.html")).unwrap(), index);
+    assert!(fails(&["prove", c, "--force"]).contains("--html"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Runs a command that must succeed and may report on stderr; returns its stdout.
+fn ok_with_stderr(args: &[&str]) -> String {
+    let out = casteljau(args);
+    assert!(
+        out.status.success(),
+        "{args:?} failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
+#[test]
+fn format_is_honoured_or_refused() {
+    let err = fails(&[
+        "--format",
+        "latex",
+        "prove",
+        "--explain",
+        "000-lemma-1.3-proof",
+        "--verbose",
+    ]);
+    assert!(err.contains("--verbose does not apply to --format latex"), "{err}");
+    for format in ["json", "latex", "text"] {
+        let err = fails(&["--format", format, "figure", "construction"]);
+        assert!(err.contains("--format does not apply to `figure`"), "{err}");
+    }
+    assert!(ok(&["figure", "construction"]).starts_with("<svg"));
 }

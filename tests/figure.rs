@@ -249,6 +249,63 @@ fn bad_requests_are_clear_errors() {
     assert!(e.contains("degree in a figure") && e.contains("limit 64"), "{e}");
 }
 
+#[test]
+fn hostile_numbers_and_options_are_refused_at_once_naming_the_limit() {
+    let fraction = format!("{}/{}", "7".repeat(5000), "3".repeat(4999));
+    let start = std::time::Instant::now();
+    for t in ["1e-4096", "-1e4096", fraction.as_str()] {
+        let mut r = FigureRequest::new(FigureKind::Construction);
+        r.t = Some(t.into());
+        let e = r.figure().unwrap_err().to_string();
+        assert!(e.contains("--t") && e.contains("limit 1000 bits"), "{e}");
+    }
+    let mut r = FigureRequest::new(FigureKind::Subdivision);
+    r.input = Some(format!("0,0; 1,{}; 2,0", "9".repeat(400)));
+    let e = r.figure().unwrap_err().to_string();
+    assert!(e.contains("control point") && e.contains("limit 1000 bits"), "{e}");
+    let mut r = FigureRequest::new(FigureKind::Elevation);
+    r.steps = Some(vec!["1"; figure::MAX_FIGURE_STEPS + 1].join(","));
+    assert!(r.figure().unwrap_err().to_string().contains("--steps"));
+    let mut r = FigureRequest::new(FigureKind::Conics);
+    r.weights = Some(vec!["2"; figure::MAX_FIGURE_ARCS + 1].join(","));
+    assert!(r.figure().unwrap_err().to_string().contains("arcs"));
+    // a degree-64 curve of 50-digit fractions: the exact scheme is past the work limit
+    let digits = |k: usize| format!("{}{}", k % 9 + 1, "3".repeat(49));
+    let curve: Vec<String> = (0..=64)
+        .map(|k| format!("{}/{},{}/{}", digits(k), digits(k + 1), digits(k + 2), digits(k + 5)))
+        .collect();
+    for kind in [FigureKind::Construction, FigureKind::Elevation, FigureKind::Hull] {
+        let mut r = FigureRequest::new(kind);
+        r.input = Some(curve.join("; "));
+        let e = r.figure().unwrap_err().to_string();
+        assert!(e.contains("estimated exact work") && e.contains("limit"), "{e}");
+    }
+    assert!(start.elapsed().as_secs_f64() < 2.0, "refusals must come at once");
+}
+
+#[test]
+fn elevation_distances_are_the_library_s() {
+    // the figure sums Bernstein terms itself; the notes must be elevation_distance's values
+    let c = curve(&[&[0, 0], &[1, 5], &[6, 4], &[7, -1], &[4, -2]]);
+    let fig = figure::elevation(&c, &[1, 3, 7]).unwrap();
+    let notes = fig.notes().join("\n");
+    for r in [0, 1, 3, 7] {
+        let d = c.elevation_distance(r).unwrap();
+        let needle = format!("max_i |b_i^({r}) − b(i/{})|∞ = {}", 4 + r, d.max_norm);
+        let needle0 = format!("max_i |b_i − b(i/4)|∞ = {}", d.max_norm);
+        assert!(
+            notes.contains(&needle) || (r == 0 && notes.contains(&needle0)),
+            "r = {r}: {notes}"
+        );
+        if r > 0 {
+            assert!(
+                notes.contains(&format!("squared Euclidean {}", d.max_squared)),
+                "{notes}"
+            );
+        }
+    }
+}
+
 /// Rasterises the figure and checks that the pixels of the curve's colour are exactly where
 /// the exact curve is: every sample of b(t) has such a pixel within 2 px, and every such
 /// pixel is within 3 px of the exact curve.

@@ -133,6 +133,83 @@ fn an_overlong_line_is_refused_without_ending_the_session() {
     );
 }
 
+/// A request line of exactly `len` bytes: an `eval` padded with spaces inside the object.
+fn line_of(len: usize, id: &str) -> Vec<u8> {
+    let head = format!("{{\"id\":{id},\"op\":\"eval\",\"points\":[[1]],\"t\":0");
+    let mut line = head.into_bytes();
+    line.extend(std::iter::repeat_n(b' ', len - line.len() - 1));
+    line.push(b'}');
+    line
+}
+
+#[test]
+fn the_line_limit_counts_the_line_without_its_crlf() {
+    const LIMIT: usize = casteljau::oracle::MAX_LINE_BYTES;
+    let mut input = Vec::new();
+    // exactly at the limit, with CRLF: served
+    input.extend(line_of(LIMIT, "1"));
+    input.extend_from_slice(b"\r\n");
+    // one byte over, with CRLF or LF: refused, the leading id echoed
+    input.extend(line_of(LIMIT + 1, "2"));
+    input.extend_from_slice(b"\r\n");
+    input.extend(line_of(LIMIT + 1, "12345678901234567890123456789"));
+    input.push(b'\n');
+    // far over, id first: refused with the id as soon as the limit is crossed
+    input.extend(line_of(3 * LIMIT, "{\"k\": [1, \"x\"]}"));
+    input.push(b'\n');
+    // far over, id last: it cannot be read, the answer has none
+    input.extend_from_slice(b"{\"op\":\"eval\",\"points\":[[1]],\"t\":0");
+    input.extend(std::iter::repeat_n(b' ', 2 * LIMIT));
+    input.extend_from_slice(b",\"id\":6}\n");
+    input.extend_from_slice(b"{\"id\":7,\"op\":\"eval\",\"points\":[[2]],\"t\":0}\r\n");
+    let out = session(&input);
+    assert_eq!(out.len(), 6, "{out:?}");
+    assert_eq!(out[0], json!({"id": 1, "ok": true, "point": ["1"]}));
+    for (k, id) in [(1, json!(2)), (3, json!({"k": [1, "x"]}))] {
+        assert_eq!(out[k]["ok"], false, "{}", out[k]);
+        assert_eq!(out[k]["id"], id, "{}", out[k]);
+        assert!(out[k]["error"].as_str().unwrap().contains("longer than"), "{}", out[k]);
+    }
+    assert!(out[2]["error"].as_str().unwrap().contains("longer than"), "{}", out[2]);
+    assert!(out[4].get("id").is_none() && out[4]["ok"] == false, "{}", out[4]);
+    assert_eq!(out[5], json!({"id": 7, "ok": true, "point": ["2"]}));
+}
+
+#[test]
+fn a_long_integer_id_of_an_overlong_line_is_echoed_as_written() {
+    let mut input = line_of(casteljau::oracle::MAX_LINE_BYTES + 10, "12345678901234567890123456789");
+    input.push(b'\n');
+    let mut child = Command::new(env!("CARGO_BIN_EXE_casteljau"))
+        .arg("oracle")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdin = child.stdin.take().unwrap();
+    let writer = std::thread::spawn(move || stdin.write_all(&input).unwrap());
+    let out = child.wait_with_output().unwrap();
+    writer.join().unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("\"id\":12345678901234567890123456789,"), "{text}");
+}
+
+#[test]
+fn a_field_given_twice_is_refused() {
+    let out = session(
+        b"{\"id\":1,\"op\":\"eval\",\"points\":[[1]],\"t\":0,\"t\":1}\n\
+          {\"id\":2,\"op\":\"split\",\"points\":[[1],[2]],\"t\":\"1/2\",\"points\":[[3]]}\n\
+          {\"id\":3,\"id\":3,\"op\":\"eval\",\"points\":[[1]],\"t\":0}\n\
+          {\"id\":{\"a\":1},\"op\":\"eval\",\"points\":[[1]],\"t\":0}\n",
+    );
+    assert_eq!(out.len(), 4, "{out:?}");
+    for (k, field) in [(0, "t"), (1, "points"), (2, "id")] {
+        assert_eq!(out[k]["ok"], false, "{}", out[k]);
+        let error = out[k]["error"].as_str().unwrap();
+        assert!(error.contains(&format!("\"{field}\" given twice")), "{error}");
+    }
+    assert_eq!(out[3]["ok"], true, "{}", out[3]);
+}
+
 #[test]
 fn absurd_requests_are_refused_quickly() {
     let start = std::time::Instant::now();

@@ -50,7 +50,7 @@ where
         let kind = classify_conic(&arc)?;
         let color = kind_color(&kind);
         let ratio = (w1 * w1).checked_div(&(w0 * w2))?;
-        let samples = AnyCurve::Rational(arc.clone()).planar_samples(160)?;
+        let samples = AnyCurve::Rational(arc.clone()).drawn_samples(160)?;
         let what = format!("w₁ = {w1}: {kind} (w₁²/(w₀w₂) = {ratio})");
         // a second arc of the same kind (two hyperbolas) is dashed to tell them apart
         let style = if seen.contains(&color) {
@@ -59,7 +59,7 @@ where
             Style::line(color, 2.3)
         };
         seen.push(color);
-        panel.polyline(&samples, false, style, "curve", Some(what.clone()))?;
+        panel.polyline_f64(samples, style, "curve", Some(what.clone()));
         let mid = arc.eval(&T::from_ratio(1, 2)?)?;
         panel.dot(&planar(&mid)?, 3.0, color, format!("x(1/2) = {mid} for w₁ = {w1}"))?;
         // labels are staggered so that midpoints on one line (a symmetric polygon) stay legible

@@ -2,7 +2,9 @@
 
 use super::svg::{Figure, Panel, Style, CURVE, PALETTE, POLYGON};
 use super::{planar, planar_curve};
+use crate::curve::ElevationDistance;
 use crate::error::{Error, Result};
+use crate::point::Point;
 use crate::scalar::{RefOps, Scalar};
 use crate::BezierCurve;
 
@@ -36,7 +38,7 @@ where
     for (i, p) in curve.points().iter().enumerate() {
         panel.dot(&original[i], 3.0, POLYGON, format!("b_{i} = {p}"))?;
     }
-    let d0 = curve.elevation_distance(0)?;
+    let d0 = distance(curve, curve)?;
     fig.note(
         Some(POLYGON),
         format!("r = 0 (degree {n}): max_i |b_i − b(i/{n})|∞ = {}", d0.max_norm),
@@ -45,7 +47,7 @@ where
         let color = PALETTE[k % PALETTE.len()];
         let elevated = curve.elevate_by(r)?;
         let drawn = elevated.points().iter().map(planar).collect::<Result<Vec<_>>>()?;
-        let d = curve.elevation_distance(r)?;
+        let d = distance(curve, &elevated)?;
         let title = format!(
             "r = {r}: the {} Bézier points of degree {}; max_i |b_i^({r}) − b(i/{})|∞ = {}",
             elevated.points().len(),
@@ -82,4 +84,73 @@ where
         "the curve b(t); the elevated polygons approach it as r grows",
     );
     Ok(fig)
+}
+
+/// [`BezierCurve::elevation_distance`] of `elevated` (the curve elevated `r` times), the same
+/// exact numbers, with each `b(i/N)`, `N = n + r`, as one sum of integer multiples
+/// `Σ_j C(n,j) i^j (N − i)^(n−j) b_j / N^n`: `n + 1` products per point instead of a whole
+/// de Casteljau scheme, whose lerps at `i/N` reduce a fraction at every step.
+fn distance<T: Scalar>(curve: &BezierCurve<T>, elevated: &BezierCurve<T>) -> Result<ElevationDistance<T>>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    let (n, total) = (curve.degree(), elevated.degree());
+    let binomials: Vec<T> = (0..=n)
+        .scan(T::one(), |c, j| {
+            let here = c.clone();
+            *c = (&*c * &T::from_usize(n - j)).checked_div(&T::from_usize(j + 1)).ok()?;
+            Some(here)
+        })
+        .collect();
+    let scale = T::one().checked_div(&integer_power(&T::from_usize(total), n))?;
+    let (mut max_norm, mut max_squared) = (T::zero(), T::zero());
+    for (i, p) in elevated.points().iter().enumerate() {
+        let (a, b) = (T::from_usize(i), T::from_usize(total - i));
+        let powers_of_a = powers(&a, n);
+        let powers_of_b = powers(&b, n);
+        let mut sum = vec![T::zero(); curve.dim()];
+        for (j, q) in curve.points().iter().enumerate() {
+            let weight = &(&binomials[j] * &powers_of_a[j]) * &powers_of_b[n - j];
+            if weight.is_zero() {
+                continue;
+            }
+            for (s, x) in sum.iter_mut().zip(q.coords()) {
+                *s = &*s + &(&weight * x);
+            }
+        }
+        let on_curve = Point::new(sum.iter().map(|s| s * &scale).collect())?;
+        let m = p.max_norm_distance(&on_curve);
+        let sq = p.distance_squared(&on_curve);
+        if m > max_norm {
+            max_norm = m;
+        }
+        if sq > max_squared {
+            max_squared = sq;
+        }
+    }
+    Ok(ElevationDistance {
+        r: total - n,
+        max_norm,
+        max_squared,
+    })
+}
+
+/// `1, x, x², …, x^k`.
+fn powers<T: Scalar>(x: &T, k: usize) -> Vec<T>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    let mut out = vec![T::one()];
+    for _ in 0..k {
+        let next = out.last().expect("starts with 1") * x;
+        out.push(next);
+    }
+    out
+}
+
+fn integer_power<T: Scalar>(x: &T, k: usize) -> T
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    powers(x, k).pop().expect("starts with 1")
 }

@@ -38,13 +38,12 @@ where
         panel.dot(q, 3.0, POLYGON, format!("a_{i} = {p}"))?;
         panel.label(q, super::svg::indexed("a", &i.to_string(), None), POLYGON, 6.0, -7.0)?;
     }
-    panel.polyline(
-        &curve.planar_samples(200)?,
-        false,
+    panel.polyline_f64(
+        curve.drawn_samples(200)?,
         Style::line(CURVE, 3.0),
         "curve",
         Some(format!("x(t), control points {}", super::list(curve.points()))),
-    )?;
+    );
     panel.curve(
         &planar_curve(&result.curve)?,
         Style::dashed(PALETTE[0], 2.0),

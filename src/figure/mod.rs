@@ -9,6 +9,24 @@
 //! the figure's notes print the exact numbers the figure is about, so a printed copy keeps
 //! them. Space curves and surfaces are drawn in one fixed projection ([`projection`]).
 //!
+//! What a figure only draws (the curve between its control points, iso-curves, arcs) is
+//! sampled in `f64` from the exact control data rounded once (the private `sample` module):
+//! pixels need no more, and exact samples would cost a whole scheme each.
+//!
+//! # Limits
+//!
+//! Every `casteljau figure` request is bounded before any work, and refused with a one-line
+//! error naming the limit: degrees (of a curve, or of a net either way) at most
+//! [`MAX_FIGURE_DEGREE`]; every number (coordinates, `--t`, `--point`, `--weights`) at most
+//! [`MAX_FIGURE_NUMBER_BITS`] bits in its numerator and in its denominator; at most
+//! [`MAX_FIGURE_STEPS`] elevation steps, each at most [`MAX_FIGURE_ELEVATION`]; at most
+//! [`MAX_FIGURE_ARCS`] conic arcs and [`MAX_ISO`] iso-curves per direction; the hull search at
+//! most [`crate::hull::MAX_SUBSETS`] subsets. The exact computations a figure prints (the
+//! scheme, the pieces, elevated polygons and their distances, hull weights, the fit, the
+//! Enneper match) are given a work estimate in the oracle's units
+//! ([`crate::oracle::Op::work`]) which must stay below [`MAX_FIGURE_WORK`]. The list with
+//! examples is in `docs/limits.md`.
+//!
 //! ```
 //! use casteljau::{figure, BezierCurve, BigRational, Scalar};
 //! let c: BezierCurve<BigRational> = BezierCurve::from_ints(&[&[0, 0], &[1, 2], &[3, 2], &[4, 0]]).unwrap();
@@ -26,6 +44,7 @@ mod hodograph;
 mod hull;
 mod net;
 mod request;
+mod sample;
 mod subdivision;
 pub mod svg;
 
@@ -36,8 +55,11 @@ pub use enneper::{enneper, text003_example5};
 pub use fit::fit;
 pub use hodograph::hodograph;
 pub use hull::hull;
-pub use net::net;
-pub use request::{FigureKind, FigureRequest, DEFAULT_CONIC_POLYGON, DEFAULT_CURVE, DEFAULT_FIT_CURVE, DEFAULT_NET};
+pub use net::{net, MAX_ISO};
+pub use request::{
+    FigureKind, FigureRequest, DEFAULT_CONIC_POLYGON, DEFAULT_CURVE, DEFAULT_FIT_CURVE, DEFAULT_NET, MAX_FIGURE_ARCS,
+    MAX_FIGURE_NUMBER_BITS, MAX_FIGURE_STEPS, MAX_FIGURE_WORK,
+};
 pub use subdivision::subdivision;
 pub use svg::{Figure, Layout, Panel, PanelMap};
 
@@ -141,12 +163,23 @@ where
         self.points()[0].dim()
     }
 
-    /// `k/n` samples, exactly, projected for drawing.
-    pub(crate) fn planar_samples(&self, n: usize) -> Result<Vec<Point<T>>> {
-        svg::sample_params::<T>(n)?
+    /// `k/n` samples for drawing, projected: the exact control data rounded to `f64` once,
+    /// then evaluated in `f64` ([`sample`]).
+    pub(crate) fn drawn_samples(&self, n: usize) -> Result<Vec<[f64; 2]>> {
+        let drawn = self
+            .points()
             .iter()
-            .map(|t| planar(&self.eval(t)?))
-            .collect()
+            .map(|p| svg::xy(&planar(p)?))
+            .collect::<Result<Vec<_>>>()?;
+        Ok(match self {
+            AnyCurve::Polynomial(_) => sample::polynomial(&drawn, n),
+            AnyCurve::Rational(c) => {
+                // only the weights' ratios matter: scaled by the largest, they stay in range
+                let largest = c.weights().iter().map(|w| w.to_f64().abs()).fold(0.0, f64::max);
+                let weights: Vec<f64> = c.weights().iter().map(|w| w.to_f64() / largest).collect();
+                sample::rational(&drawn, &weights, n)
+            }
+        })
     }
 }
 

@@ -45,22 +45,26 @@ where
         let column: Vec<Point<T>> = drawn.iter().map(|row| row[j].clone()).collect();
         panel.polyline(&column, false, Style::line(POLYGON, 1.0), "net", None)?;
     }
+    // iso-curves only place pixels: reduced in f64 from the drawn net (see `sample`)
+    let drawn_f64: Vec<Vec<[f64; 2]>> = drawn
+        .iter()
+        .map(|row| row.iter().map(super::svg::xy).collect::<Result<Vec<_>>>())
+        .collect::<Result<_>>()?;
     for k in 1..=iso {
         let s = T::from_ratio(k as i64, iso as i64 + 1)?;
-        let along_v = surface.iso_u(&s);
-        let along_u = surface.iso_v(&s);
-        panel.curve(
-            &planar_curve(&along_v)?,
+        let at = k as f64 / (iso + 1) as f64;
+        panel.curve_f64(
+            super::sample::iso(&drawn_f64, at, false),
             Style::line("#7fa7d9", 1.1),
             "iso",
             Some(format!("iso-curve u = {s}: x({s}, v)")),
-        )?;
-        panel.curve(
-            &planar_curve(&along_u)?,
+        );
+        panel.curve_f64(
+            super::sample::iso(&drawn_f64, at, true),
             Style::line("#7fa7d9", 1.1),
             "iso",
             Some(format!("iso-curve v = {s}: x(u, {s})")),
-        )?;
+        );
     }
     let names = ["x(u, 0)", "x(1, v)", "x(u, 1)", "x(0, v)"];
     for (b, name) in surface.boundary().iter().zip(names) {

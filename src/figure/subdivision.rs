@@ -56,7 +56,8 @@ where
         }
         fig.note(Some(color), format!("{name} piece: {}", values.join(", ")));
     }
-    let split = curve.eval(t);
+    // b(t) is where the pieces meet: the left piece's last point, exactly
+    let split = left.points()[n].clone();
     panel.dot(&planar(&split)?, 5.0, POINT, format!("b({t}) = {split}"))?;
     panel.label(&planar(&split)?, format!("b({t})"), POINT, 8.0, -10.0)?;
     fig.add_panel(panel);

@@ -151,7 +151,7 @@ const NOTE_H: f64 = 18.0;
 const NOTE_CHARS: usize = 110;
 
 /// Converts a 2D exact point for drawing; any other dimension is an error.
-fn xy<T: Scalar>(p: &Point<T>) -> Result<[f64; 2]>
+pub(crate) fn xy<T: Scalar>(p: &Point<T>) -> Result<[f64; 2]>
 where
     for<'a> &'a T: RefOps<T>,
 {
@@ -207,8 +207,20 @@ impl Panel {
         Ok(())
     }
 
+    /// A polyline through points already in drawing coordinates ([`super::sample`]).
+    pub(crate) fn polyline_f64(
+        &mut self,
+        pts: Vec<[f64; 2]>,
+        style: Style,
+        class: &'static str,
+        title: Option<String>,
+    ) {
+        self.push(Shape::Path { pts, closed: false }, style, class, title);
+    }
+
     /// A planar polynomial curve: written exactly as one SVG segment for degree ≤ 3, through
-    /// 200 exact samples above.
+    /// 200 samples above (evaluated in `f64` from the rounded control points: they only
+    /// place pixels, see [`super::sample`]).
     pub fn curve<T: Scalar>(
         &mut self,
         curve: &BezierCurve<T>,
@@ -219,16 +231,17 @@ impl Panel {
     where
         for<'a> &'a T: RefOps<T>,
     {
-        if (1..=3).contains(&curve.degree()) {
-            let pts = curve.points().iter().map(xy).collect::<Result<Vec<_>>>()?;
+        let pts = curve.points().iter().map(xy).collect::<Result<Vec<_>>>()?;
+        self.curve_f64(pts, style, class, title);
+        Ok(())
+    }
+
+    /// [`Panel::curve`] from control points already in drawing coordinates.
+    pub(crate) fn curve_f64(&mut self, pts: Vec<[f64; 2]>, style: Style, class: &'static str, title: Option<String>) {
+        if (2..=4).contains(&pts.len()) {
             self.push(Shape::Bezier { pts }, style, class, title);
-            Ok(())
         } else {
-            let samples = sample_params::<T>(200)?
-                .iter()
-                .map(|t| curve.eval(t))
-                .collect::<Vec<_>>();
-            self.polyline(&samples, false, style, class, title)
+            self.polyline_f64(super::sample::polynomial(&pts, 200), style, class, title);
         }
     }
 
@@ -346,14 +359,6 @@ impl Panel {
         };
         (map, dx * scale + 2.0 * SIDE, dy * scale + 2.0 * MARGIN + HEADING_H)
     }
-}
-
-/// `k/n` for `k = 0..=n`, exactly.
-pub(crate) fn sample_params<T: Scalar>(n: usize) -> Result<Vec<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
-    (0..=n).map(|k| T::from_ratio(k as i64, n as i64)).collect()
 }
 
 impl Figure {

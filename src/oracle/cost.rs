@@ -58,8 +58,21 @@ const INPUT_WEIGHT: f64 = 25.0;
 /// reduction is quadratic in the size.
 fn op_cost(b_in: f64, shared: f64, mixed: f64) -> f64 {
     let b = b_in + mixed + 64.0;
-    INPUT_WEIGHT * b * b + shared * shared
+    INPUT_WEIGHT * b * b + SHARED_WEIGHT * shared * shared
 }
+
+/// Relative cost of the reductions by the elevation weights `C(n,j)C(r,i−j)/C(n+r,i)`.
+const ELEVATION_WEIGHT: f64 = 20.0;
+
+/// Relative cost of bits grown inside one algorithm (binomial factors, powers of one
+/// parameter): `to_bezier` of degree 360 with one-digit integers takes about 2 s at weight 1.
+const SHARED_WEIGHT: f64 = 6.0;
+
+/// How much slower the generic de Casteljau triangle (`split`, `derivative` at `t`) runs
+/// than its units say: every lerp reduces three fractions by binary gcds, whose cost with
+/// a small operand (a parameter such as 1/3) is still quadratic in the other's size. Set by
+/// the slowest kind of input in `tests/calibration.rs` (one-digit integers at `t = 1/3`).
+const TRIANGLE_WEIGHT: f64 = 16.0;
 
 /// Relative cost of numbers grown by a dyadic parameter (powers of two in the
 /// denominators reduce by shifts, but the numerators still grow).
@@ -83,40 +96,71 @@ fn triangle_work(n: usize, dim: usize, b: f64, t: &BigRational, den: f64) -> f64
         })
         .sum::<f64>()
         * dim as f64
+        * TRIANGLE_WEIGHT
 }
 
-/// Work of [`BezierCurve::eval_fraction_free`]: integers over one common denominator (its
-/// size bounded by the sum of the distinct denominators' bits, without computing it), each
-/// of the `n(n+1)/2` steps per coordinate two products of a number grown by `r` times the
-/// parameter's bits with the parameter's numerator or denominator, then one reduction.
-fn fraction_free_work(curve: &BezierCurve<BigRational>, t: &BigRational) -> f64 {
-    let coords = || curve.points().iter().flat_map(|p| p.coords());
-    let common = if coords().all(is_dyadic) {
-        // distinct powers of two are exactly the distinct bit lengths: no big comparisons
-        let mut lengths: Vec<u64> = coords().map(|c| c.denom().bits()).collect();
-        lengths.sort_unstable();
-        lengths.dedup();
-        lengths.iter().map(|&b| b as f64).sum::<f64>()
-    } else {
-        let mut denominators: Vec<&num_bigint::BigInt> = coords().map(|c| c.denom()).collect();
-        denominators.sort();
-        denominators.dedup();
-        denominators.iter().map(|d| d.bits() as f64).sum::<f64>()
-    };
-    let numerators = max_bits(curve.points().iter().flat_map(|p| p.coords()));
-    // Numbers grow by the parameter's bits per level; a product with the parameter's
-    // numerator or denominator costs at least a machine word.
-    let (n, grow) = (curve.degree(), growth_bits(t));
-    let start = numerators + common + 64.0;
+/// The common denominator of `numbers`: its bits, bounded by the sum of the distinct
+/// denominators' bits (without computing it), and the work of computing it. The kernels
+/// take it as a running lcm, each step a binary gcd of the lcm so far with the next
+/// denominator, quadratic in the lcm's size: `Σ_k S_k²` over the running sums of bits
+/// (powers of two cost nothing: their lcm is the largest).
+fn common_denominator<'a>(numbers: impl Iterator<Item = &'a BigRational> + Clone) -> (f64, f64) {
+    if numbers.clone().all(is_dyadic) {
+        let most = numbers.map(|c| c.denom().bits()).max().unwrap_or(0);
+        return (most as f64, 0.0);
+    }
+    let mut denominators: Vec<&num_bigint::BigInt> = numbers.map(|c| c.denom()).collect();
+    denominators.sort();
+    denominators.dedup();
+    let (mut bits, mut work) = (0.0, 0.0);
+    for d in denominators {
+        bits += d.bits() as f64;
+        work += LCM_WEIGHT * bits * bits;
+    }
+    (bits, work)
+}
+
+/// Set by `eval` of 30-digit fractions with distinct denominators in
+/// `tests/calibration.rs`, where the running lcm is most of the work.
+const LCM_WEIGHT: f64 = 3.0;
+
+/// The steps of the fraction-free kernels ([`BezierCurve::eval_nested`] and its rational and
+/// surface forms) on integers of `start` bits: each of the `n(n+1)/2` steps per coordinate
+/// two products of a number grown by `r` times the parameter's bits with the parameter's
+/// numerator or denominator. These word-sized products run about eight times faster per
+/// unit than the gcd-bound operations the units are set by.
+fn nested_steps(start: f64, n: usize, dim: usize, t: &BigRational) -> f64 {
+    let grow = growth_bits(t);
+    // a product with the parameter's numerator or denominator costs at least a machine word
     let word = grow.max(64.0);
     let steps: f64 = (1..=n)
-        .map(|r| (n - r + 1) as f64 * 2.0 * (start + r as f64 * grow) * word)
+        .map(|r| (n - r + 1) as f64 * 2.0 * (start + 64.0 + r as f64 * grow) * word)
         .sum();
-    let last = start + n as f64 * grow;
-    // Calibrated like the rest (MAX_WORK ≈ a few seconds): these word-sized products run
-    // about eight times faster per unit than the gcd-bound operations the units are set by
-    // (degree 3000 at t = 1/3: 0.9 s; degree 500 with unrelated 50-bit denominators: 1.5 s).
-    curve.dim() as f64 * (steps / 8.0 + INPUT_WEIGHT * last * last)
+    dim as f64 * steps / 8.0
+}
+
+/// The one reduction per coordinate that ends a fraction-free evaluation.
+fn final_reduction(bits: f64, dim: usize) -> f64 {
+    dim as f64 * INPUT_WEIGHT * (bits + 64.0) * (bits + 64.0)
+}
+
+/// Work of [`BezierCurve::eval_nested`] (and of the rational form, on the homogeneous
+/// points): integers over one common denominator, the nested sum, one reduction.
+fn fraction_free_work<'a>(
+    numbers: impl Iterator<Item = &'a BigRational> + Clone,
+    numerators: f64,
+    n: usize,
+    dim: usize,
+    t: &BigRational,
+) -> f64 {
+    let (common, lcm) = common_denominator(numbers);
+    let start = numerators + common;
+    lcm + nested_steps(start, n, dim, t) + final_reduction(start + n as f64 * growth_bits(t), dim)
+}
+
+fn curve_fraction_free_work(curve: &BezierCurve<BigRational>, t: &BigRational) -> f64 {
+    let coords = curve.points().iter().flat_map(|p| p.coords());
+    fraction_free_work(coords.clone(), max_bits(coords), curve.degree(), curve.dim(), t)
 }
 
 impl Op {
@@ -125,7 +169,7 @@ impl Op {
     /// at once.
     pub fn work(&self) -> f64 {
         match self {
-            Op::Eval { curve, t, .. } | Op::FloatEval { curve, t, .. } => fraction_free_work(curve, t),
+            Op::Eval { curve, t, .. } | Op::FloatEval { curve, t, .. } => curve_fraction_free_work(curve, t),
             Op::Split { curve, t } => triangle_work(
                 curve.degree(),
                 curve.dim(),
@@ -141,9 +185,17 @@ impl Op {
                 // `examples/work_calibration.rs`: a cubic elevated by 1717 takes 0.04 s)
                 let terms = (total + 1) as f64 * (n.min(*by) + 1) as f64 * curve.dim() as f64;
                 let mixed = (n.min(*by) + 1) as f64 * curve_den_growth(curve);
-                let weight_bits = 2.0 * total as f64;
+                // in lowest terms a weight has at most about 2·total bits, and at most
+                // about log2(total) per factor of its smaller binomial (a cubic elevated by
+                // 1717: a few dozen bits)
+                let few = (n.min(*by) + 1) as f64 * ((total + 1) as f64).log2();
+                let weight_bits = few.min(2.0 * total as f64);
                 let b = curve_bits(curve) + mixed + 64.0;
-                3.0 * terms * (INPUT_WEIGHT * b * b + 64.0 * weight_bits + b * weight_bits) + (total as f64).powi(3)
+                // each term's sum reduces a fraction over the weight's denominator: a binary
+                // gcd on numbers of the weight's size (a cubic elevated by 1717 takes 0.04 s;
+                // one-digit integers of degree 364 elevated by 364, 13 s at weight 0)
+                terms * (INPUT_WEIGHT * b * b + ELEVATION_WEIGHT * (b + weight_bits) * (b + weight_bits))
+                    + (total as f64).powi(3)
             }
             Op::Derivative { curve, order, at } => {
                 let (n, k) = (curve.degree(), (*order).min(curve.degree()));
@@ -159,10 +211,16 @@ impl Op {
                         .map_or(0.0, |t| triangle_work(n - k, curve.dim(), b, t, level))
             }
             Op::RationalEval { curve, t, .. } => {
-                let numbers = curve.points().iter().flat_map(|p| p.coords()).chain(curve.weights());
-                let b = 2.0 * max_bits(numbers.clone());
-                triangle_work(curve.degree(), curve.dim() + 1, b, t, den_growth(numbers))
-                    + curve.dim() as f64 * op_cost(b + curve.degree() as f64 * growth_bits(t), 0.0, 0.0)
+                // the fraction-free kernel on the homogeneous points (w b, w)
+                let coords = curve.points().iter().flat_map(|p| p.coords());
+                let numerators = max_bits(coords.clone()) + max_bits(curve.weights());
+                fraction_free_work(
+                    coords.chain(curve.weights()),
+                    numerators,
+                    curve.degree(),
+                    curve.dim() + 1,
+                    t,
+                )
             }
             Op::Conic { curve } => {
                 let numbers = curve.points().iter().flat_map(|p| p.coords()).chain(curve.weights());
@@ -170,13 +228,16 @@ impl Op {
                 300.0 * op_cost(8.0 * max_bits(numbers), 0.0, 0.0)
             }
             Op::SurfaceEval { surface, u, v, .. } => {
+                // the fraction-free kernel: one common denominator for the whole net, every
+                // row at v, the column of their results at u, one reduction
                 let (m, n) = surface.degrees();
-                let numbers = || surface.net().iter().flatten().flat_map(|p| p.coords());
-                let (b, den) = (max_bits(numbers()), den_growth(numbers()));
-                // u first: n + 1 columns reduced at u, then one curve in v of grown numbers
-                let columns = (n + 1) as f64 * triangle_work(m, surface.dim(), b, u, den);
-                let grown = b + m as f64 * (growth_bits(u) + den);
-                columns + triangle_work(n, surface.dim(), grown, v, den)
+                let coords = surface.net().iter().flatten().flat_map(|p| p.coords());
+                let (common, lcm) = common_denominator(coords.clone());
+                let start = max_bits(coords) + common;
+                let rows = (m + 1) as f64 * nested_steps(start, n, surface.dim(), v);
+                let grown = start + n as f64 * growth_bits(v);
+                let column = nested_steps(grown, m, surface.dim(), u);
+                lcm + rows + column + final_reduction(grown + m as f64 * growth_bits(u), surface.dim())
             }
             Op::FitCubic { data } => {
                 let d = &data;

@@ -234,3 +234,40 @@ fn floats_from_json(v: &Value) -> Result<Vec<f64>> {
         })
         .collect()
 }
+
+/// Refuses a request object that gives a field twice: JSON parsers disagree on which copy
+/// counts (serde_json keeps the last), so the oracle takes neither. Only the request's own
+/// fields are checked; a line that is not an object is left to the parser's error.
+pub(super) fn check_unique_fields(line: &str) -> Result<()> {
+    struct UniqueKeys;
+    impl<'de> serde::de::Visitor<'de> for UniqueKeys {
+        type Value = Option<String>;
+        fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+            f.write_str("a request object")
+        }
+        fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> std::result::Result<Self::Value, A::Error> {
+            let mut seen = std::collections::HashSet::new();
+            let mut repeated = None;
+            while let Some(key) = map.next_key::<std::borrow::Cow<'de, str>>()? {
+                map.next_value::<serde::de::IgnoredAny>()?;
+                if repeated.is_none() && !seen.insert(key.clone().into_owned()) {
+                    repeated = Some(key.into_owned());
+                }
+            }
+            Ok(repeated)
+        }
+    }
+    struct Keys(Option<String>);
+    impl<'de> serde::Deserialize<'de> for Keys {
+        fn deserialize<D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+            d.deserialize_map(UniqueKeys).map(Keys)
+        }
+    }
+    match serde_json::from_str::<Keys>(line) {
+        Ok(Keys(Some(key))) => Err(Error::Parse(format!(
+            "field {:?} given twice (give each field once)",
+            truncate(&key)
+        ))),
+        _ => Ok(()),
+    }
+}

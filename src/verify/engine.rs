@@ -1703,7 +1703,7 @@ fn refute_at_poles(ctx: &Ctx<'_>, prem: &Expr, (a, b): (&Expr, &Expr)) -> Result
     for top in 0..values.len() {
         let mut digits = vec![0usize; names.len()];
         loop {
-            if digits.iter().any(|&d| d == top) || (top == 0 && digits.is_empty()) {
+            if digits.contains(&top) || (top == 0 && digits.is_empty()) {
                 tried += 1;
                 if tried > POLE_SEARCH {
                     return Ok(None);
