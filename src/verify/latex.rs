@@ -445,7 +445,7 @@ mod tests {
             statement("−3/4 ẋ(0)·ẋ(0) k = X·x(0) を得る"),
             "$-3/4 \\dot{x}(0)\\cdot \\dot{x}(0) k = X\\cdot x(0$) \\begin{CJK}{UTF8}{min}を得る\\end{CJK}"
         );
-        assert_eq!(statement("x\u{307} ≤ Σ b_i"), "$\\dot{x} \\le \\sum  b_i$");
+        assert_eq!(statement("x\u{307} ≤ Σ b_i"), "$\\dot{x} \\le  \\sum  b_i$");
         assert_eq!(statement("gives k = l = 3/10"), "gives $k = l = 3/10$");
         assert_eq!(
             text("`delta` and 'b(t)' ≤ 1, the claim's"),
@@ -455,7 +455,7 @@ mod tests {
         assert_eq!(text("see --explain x: -32, b-1"), "see -{}-explain x: $-$32, b-1");
         assert_eq!(statement("(from (7) = 0)"), "(from ($7) = 0$)");
         assert_eq!(statement("M⁻¹ xᵀ₁₂"), "$M^{-1} x^{T}_{12}$");
-        assert_eq!(statement("elevate_by ok"), "elevate$_by$ ok");
+        assert_eq!(statement("elevate_by ok"), "elevate$_by ok$");
         assert_eq!(text("✓"), "[U+2713]");
         assert_eq!(text("Bézier 曲線"), "B\\'{e}zier \\begin{CJK}{UTF8}{min}曲線\\end{CJK}");
     }
