@@ -168,6 +168,8 @@ table { border-collapse: collapse; margin: 0.8rem 0 1.2rem; width: 100%; }
 th, td { border-bottom: 1px solid var(--rule); padding: 0.35rem 0.6rem; text-align: left; vertical-align: top; }
 th { background: #f3f5f7; }
 table.misprints td:first-child { white-space: nowrap; }
+/* the titles are short Japanese phrases: one line each, never one character per line */
+table.summary td:nth-child(2), table.summary th:nth-child(2) { white-space: nowrap; }
 td.n { text-align: right; font-variant-numeric: tabular-nums; }
 tr.total td { font-weight: bold; border-top: 2px solid var(--ink); }
 .chip { display: inline-block; white-space: nowrap; border-radius: 0.7rem; padding: 0 0.55rem; font-size: 0.8rem; font-weight: bold;
@@ -200,13 +202,24 @@ nav.toc a { text-decoration: none; }
 nav.toc div { break-inside: avoid; }
 footer { margin-top: 2rem; color: var(--muted); font-size: 0.85rem; }
 @media print {
-  @page { margin: 14mm 12mm; }
-  body { max-width: none; padding: 0; font-size: 10.5pt; }
+  /* A4, compact text; a claim or a figure is never split across pages */
+  @page { size: A4; margin: 8mm 10mm; }
+  body { max-width: none; padding: 0; font-size: 8.5pt; line-height: 1.25; }
   nav.toc, .noprint { display: none; }
   a { color: inherit; text-decoration: none; }
-  .claim { break-inside: avoid; page-break-inside: avoid; border-color: #999; }
-  figure { break-inside: avoid; page-break-inside: avoid; }
-  figure svg { max-height: 120mm; border: none; }
+  h1 { font-size: 14pt; } h2 { font-size: 10pt; margin-bottom: 0.15rem; }
+  table { margin: 0.4rem 0 0.8rem; } th, td { padding: 0.15rem 0.4rem; }
+  .claim { break-inside: avoid; page-break-inside: avoid; border-color: #999; padding: 0.25rem 0.5rem; margin: 0.3rem 0; }
+  .statement { font-size: 9pt; margin: 0.1rem 0 0.2rem; padding: 0.1rem 0.4rem; }
+  .scope, .banner, dt { font-size: 8pt; } .banner { margin: 0.2rem 0; padding: 0.2rem 0.5rem; }
+  dl { gap: 0.1rem 0.6rem; margin-top: 0.2rem; }
+  pre { font-size: 7pt; }
+  figure { break-inside: avoid; page-break-inside: avoid; margin-top: 0.3rem; }
+  /* figures at most 145 mm high, their labels and legends at 16 px so that they print at 9 pt or
+     more; a legend line made longer by the larger font runs on past the drawing's right edge */
+  figure svg { max-height: 145mm; border: none; font-size: 16px; overflow: visible; }
+  figure svg text[font-size="13"] { font-size: 16px; }
+  figcaption { font-size: 8.5pt; }
   .chip { color: #000 !important; background: none !important; border: 1.5px solid #000; }
   .claim.misprint, .claim.correction, .statement { background: none; }
   .banner.misprint { border: 2px solid #000; background: none; }

@@ -79,7 +79,7 @@ pub use fit::{
 };
 
 // --- verification
-pub use verify::{explain, prove_paths, ClaimOutcome, Report, Verdict};
+pub use verify::{explain, explain_files, prove_files, prove_paths, ClaimOutcome, Report, Verdict};
 
 // --- exact arithmetic for the hot loops: a machine-word rational, shared Bernstein rows
 pub use exact::{BernsteinTable, SmallRational};
@@ -90,3 +90,8 @@ pub use exact::{BernsteinTable, SmallRational};
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
+
+/// The library guide's Rust examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../docs/library.md")]
+pub struct LibraryGuideDoctests;

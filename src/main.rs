@@ -9,7 +9,7 @@ use casteljau::fit::CubicFitData;
 use casteljau::float::nearest_f64;
 use casteljau::input::{parse_count, parse_net, parse_number, parse_numbers, parse_point, parse_points};
 use casteljau::oracle::{self, check_weight_count, Answer, FloatMethod, Op};
-use casteljau::verify::{explain, prove_paths, ExplainStyle};
+use casteljau::verify::{claims, explain_files, prove_files, ExplainStyle};
 use casteljau::{BezierCurve, BezierSurface, BigRational, Error, Point, RationalBezierCurve};
 use clap::{Parser, Subcommand, ValueEnum};
 use serde_json::{json, Value};
@@ -56,10 +56,9 @@ enum MethodArg {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Check every claim in the claim files (default: proofs/); exit 1 on a mismatch.
+    /// Check every claim in the claim files (default: proofs/, else the texts' claims built in); exit 1 on a mismatch.
     Prove {
-        /// Claim files or directories.
-        #[arg(default_value = "proofs")]
+        /// Claim files or directories (default: proofs/ when present, else the four texts' claims built into the program).
         paths: Vec<PathBuf>,
         /// Print the proof of one claim instead: the argument and one worked case.
         #[arg(long, value_name = "ID")]
@@ -558,6 +557,7 @@ fn prove(
     format: Format,
 ) -> Result<ExitCode, String> {
     check_claim_paths(paths)?;
+    let files = claim_files(paths)?;
     if let Some(id) = id {
         let style = match (format, verbose) {
             (Format::Latex, true) => {
@@ -567,7 +567,7 @@ fn prove(
             (_, true) => ExplainStyle::Verbose,
             (_, false) => ExplainStyle::Short,
         };
-        let text = explain(paths, id, style).map_err(|e| e.to_string())?;
+        let text = explain_files(&files, id, style).map_err(|e| e.to_string())?;
         match format {
             Format::Text | Format::Latex => output(&format!("{}\n", text.trim_end()))?,
             Format::Json => output(&format!("{}\n", json!({"id": id, "explanation": text})))?,
@@ -589,13 +589,12 @@ fn prove(
             let _ = err.flush();
         }
     };
-    let report = prove_paths(paths, &mut progress);
+    let report = prove_files(&files, &mut progress);
     if show_progress {
         eprint!("\r\x1b[2K");
     }
     let report = report.map_err(|e| e.to_string())?;
     if let Some((dir, _)) = html {
-        let files = casteljau::verify::claims::load_paths(paths).map_err(|e| e.to_string())?;
         let written = casteljau::html::write_report(&report, &files, dir).map_err(|e| e.to_string())?;
         eprintln!(
             "casteljau: wrote the HTML report ({written} pages) to {}",
@@ -612,4 +611,19 @@ fn prove(
     } else {
         ExitCode::SUCCESS
     })
+}
+
+/// The claim files `prove` reads: those given; without any, `proofs/` when the working
+/// directory has one (a checkout), else the four texts' claims built into the program (an
+/// installed binary run anywhere).
+fn claim_files(paths: &[PathBuf]) -> Result<Vec<claims::ClaimFile>, String> {
+    let default = Path::new("proofs");
+    let loaded = if !paths.is_empty() {
+        claims::load_paths(paths)
+    } else if default.is_dir() {
+        claims::load_paths(&[default.to_path_buf()])
+    } else {
+        claims::builtin_files()
+    };
+    loaded.map_err(|e| e.to_string())
 }

@@ -306,35 +306,180 @@ fn scheme_as_latex() {
     assert!(fails(&["--format", "latex", "prove"]).contains("--format latex"));
 }
 
-/// The README's `--explain` and LaTeX examples are what the program prints, byte for byte.
-#[test]
-fn readme_explain_and_latex_examples_are_exact() {
-    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
-    let mut checked = 0;
-    for block in readme.split("```console\n").skip(1) {
-        let block = block.split("```").next().unwrap();
-        let (cmd, expected) = block.split_once('\n').unwrap();
-        let Some(cmd) = cmd.strip_prefix("$ casteljau ") else {
-            continue;
-        };
-        if !(cmd.starts_with("prove --explain") || cmd.starts_with("--format latex")) {
-            continue;
+/// Splits a documented command line on spaces outside quotes (`"…"` or `'…'`).
+fn shell_words(cmd: &str) -> Vec<String> {
+    let (mut words, mut cur, mut quote) = (Vec::new(), String::new(), None);
+    for ch in cmd.chars() {
+        match (ch, quote) {
+            ('"' | '\'', None) => quote = Some(ch),
+            (c, Some(q)) if c == q => quote = None,
+            (' ', None) => {
+                if !cur.is_empty() {
+                    words.push(std::mem::take(&mut cur));
+                }
+            }
+            _ => cur.push(ch),
         }
-        // split on spaces outside double quotes
-        let (mut args, mut cur, mut quoted) = (Vec::new(), String::new(), false);
-        for ch in cmd.chars() {
-            match ch {
-                '"' => quoted = !quoted,
-                ' ' if !quoted => args.push(std::mem::take(&mut cur)),
-                _ => cur.push(ch),
+    }
+    words.push(cur);
+    words
+}
+
+/// What a documented command prints: stdout when it succeeds, its one stderr line when it
+/// fails. Understands `casteljau ARGS`, `… | tail -N` and `echo 'LINE' | casteljau ARGS`.
+fn documented_output(cmd: &str) -> String {
+    let (mut cmd, mut tail) = (cmd, None);
+    if let Some((head, n)) = cmd.rsplit_once(" | tail -") {
+        (cmd, tail) = (head, Some(n.parse::<usize>().unwrap()));
+    }
+    let mut stdin = None;
+    if let Some(rest) = cmd.strip_prefix("echo ") {
+        let (line, rest) = rest.split_once(" | ").unwrap();
+        stdin = Some(format!("{}\n", shell_words(line).concat()));
+        cmd = rest;
+    }
+    let args = shell_words(cmd.strip_prefix("casteljau ").expect(cmd));
+    let mut child = Command::new(env!("CARGO_BIN_EXE_casteljau"))
+        .args(&args)
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    {
+        use std::io::Write as _;
+        let mut pipe = child.stdin.take().unwrap();
+        pipe.write_all(stdin.unwrap_or_default().as_bytes()).unwrap();
+    }
+    let out = child.wait_with_output().unwrap();
+    let text = if out.status.success() {
+        String::from_utf8(out.stdout).unwrap()
+    } else {
+        assert_eq!(out.status.code(), Some(2), "`{cmd}`");
+        String::from_utf8(out.stderr).unwrap()
+    };
+    match tail {
+        Some(n) => {
+            let lines: Vec<&str> = text.lines().collect();
+            lines[lines.len().saturating_sub(n)..]
+                .iter()
+                .map(|l| format!("{l}\n"))
+                .collect()
+        }
+        None => text,
+    }
+}
+
+/// Every `console` example of the README and of the guides in `docs/` is what the program
+/// prints, byte for byte: each `$ casteljau …` line with the lines under it (up to the next
+/// `$` line), and the oracle's example session with its requests and responses.
+#[test]
+fn readme_and_guide_examples_are_exact() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let mut docs = vec![std::path::PathBuf::from(format!("{root}/README.md"))];
+    let mut guides: Vec<_> = std::fs::read_dir(format!("{root}/docs"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "md"))
+        .collect();
+    guides.sort();
+    docs.extend(guides);
+    let mut checked = 0;
+    for doc in &docs {
+        let text = std::fs::read_to_string(doc).unwrap();
+        let name = doc.file_name().unwrap().to_string_lossy();
+        for block in text.split("```console\n").skip(1) {
+            let block = block.split("\n```").next().unwrap();
+            let mut examples: Vec<(&str, String)> = Vec::new();
+            for line in block.lines() {
+                match line.strip_prefix("$ ") {
+                    Some(cmd) => examples.push((cmd, String::new())),
+                    None => {
+                        let (_, expected) = examples.last_mut().expect("a console block starts with `$ `");
+                        expected.push_str(line);
+                        expected.push('\n');
+                    }
+                }
+            }
+            for (cmd, expected) in examples {
+                if cmd.contains(" < ") {
+                    continue; // the oracle session, checked below from its two blocks
+                }
+                assert_eq!(documented_output(cmd), expected, "{name}: `{cmd}`");
+                checked += 1;
             }
         }
-        args.push(cur);
-        let args: Vec<&str> = args.iter().map(String::as_str).collect();
-        assert_eq!(ok(&args), expected, "README example `casteljau {cmd}`");
-        checked += 1;
+        if let Some(rest) = text.split("Requests (`session.jsonl`):\n\n```json\n").nth(1) {
+            let requests = rest.split("```").next().unwrap();
+            let responses = rest
+                .split("Responses:\n\n```json\n")
+                .nth(1)
+                .unwrap()
+                .split("```")
+                .next()
+                .unwrap();
+            let mut child = Command::new(env!("CARGO_BIN_EXE_casteljau"))
+                .arg("oracle")
+                .stdin(std::process::Stdio::piped())
+                .stdout(std::process::Stdio::piped())
+                .spawn()
+                .unwrap();
+            {
+                use std::io::Write as _;
+                child.stdin.take().unwrap().write_all(requests.as_bytes()).unwrap();
+            }
+            let out = child.wait_with_output().unwrap();
+            assert_eq!(
+                String::from_utf8(out.stdout).unwrap(),
+                responses,
+                "{name}: the oracle session"
+            );
+            checked += 1;
+        }
     }
-    assert_eq!(checked, 2, "the README shows one --explain and one LaTeX example");
+    assert!(checked >= 25, "only {checked} documented examples found");
+}
+
+/// An installed binary proves the texts anywhere: without a path and without `proofs/` in
+/// the working directory it uses the claims built into it, with the very same report;
+/// `prove DIR` still reads only the user's files.
+#[test]
+fn prove_without_a_checkout_uses_the_builtin_claims() {
+    let empty = std::env::temp_dir().join(format!("casteljau-cli-anywhere-{}", std::process::id()));
+    std::fs::create_dir_all(&empty).unwrap();
+    let run = |args: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_casteljau"))
+            .args(args)
+            .current_dir(&empty)
+            .output()
+            .unwrap()
+    };
+    let anywhere = run(&["prove"]);
+    assert_eq!(
+        anywhere.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&anywhere.stderr)
+    );
+    let here = ok(&["prove"]);
+    assert_eq!(String::from_utf8(anywhere.stdout).unwrap(), here);
+    assert!(here.contains("total                           149"), "{here}");
+    let explained = run(&["prove", "--explain", "004-8"]);
+    assert!(String::from_utf8_lossy(&explained.stdout).contains("correction: 004-8-corrected"));
+    // a path that is not there is an error, never a silent fallback to the built-in claims
+    let missing = run(&["prove", "proofs"]);
+    assert_eq!(missing.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&missing.stderr).contains("no such file or directory: proofs"));
+    // a user's directory is read, and only it
+    std::fs::write(
+        empty.join("mine.toml"),
+        "[[claim]]\nid = \"mine\"\nsource = \"s\"\nstatement = \"t(1-t) = t - t^2\"\nkind = \"identity\"\nlhs = \"t*(1-t)\"\nrhs = \"t - t^2\"\n",
+    )
+    .unwrap();
+    let mine = run(&["prove", "."]);
+    let text = String::from_utf8(mine.stdout).unwrap();
+    assert!(text.contains("[proved] mine") && !text.contains("000-ex4-y"), "{text}");
+    std::fs::remove_dir_all(&empty).unwrap();
 }
 
 #[test]

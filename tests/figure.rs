@@ -143,10 +143,9 @@ fn hull_weights_are_the_certificate() {
     let p = Point::new(vec![q(1, 1), q(3, 1)]).unwrap();
     let w = c.hull_weights(&p).unwrap().unwrap();
     let (_, notes) = check_svg(&figure::hull(&c, &p).unwrap().to_svg().unwrap());
-    let line = notes
-        .iter()
-        .find(|n| n.starts_with("p = (1, 3) = Σ λᵢ bᵢ with"))
-        .unwrap();
+    // the legend wraps long lines at spaces: joined again, it is the one sentence
+    let all = notes.join(" ");
+    let line = &all[all.find("p = (1, 3) = Σ λᵢ bᵢ with").expect(&all)..];
     for (i, l) in w.iter().enumerate() {
         let sub = ['₀', '₁', '₂', '₃'][i];
         assert!(line.contains(&format!("λ{sub} = {l}")), "{line}");

@@ -148,7 +148,11 @@ const SIDE: f64 = 64.0;
 const TITLE_H: f64 = 34.0;
 const HEADING_H: f64 = 20.0;
 const NOTE_H: f64 = 18.0;
-const NOTE_CHARS: usize = 110;
+/// Longest legend line, in characters: short enough that a line still fits the figure's
+/// width when the print stylesheet sets the legends at 16 px instead of 13.
+const NOTE_CHARS: usize = 88;
+/// Smallest figure width, in pixels: room for a legend line.
+const MIN_WIDTH: f64 = 766.0;
 
 /// Converts a 2D exact point for drawing; any other dimension is an error.
 pub(crate) fn xy<T: Scalar>(p: &Point<T>) -> Result<[f64; 2]>
@@ -410,7 +414,7 @@ impl Figure {
             left += w;
             height = height.max(h);
         }
-        let width = left.max(560.0).max(NOTE_CHARS as f64 * 6.6 + 40.0);
+        let width = left.max(MIN_WIDTH);
         // panels are centred in the figure's width
         let shift = ((width - left) / 2.0).floor();
         for map in &mut panels {

@@ -329,6 +329,37 @@ pub fn load_file(path: &Path) -> Result<ClaimFile> {
     parse_file(&text, path)
 }
 
+/// The four reference texts' claim files, built into the library (`proofs/` of the
+/// repository), so that an installed `casteljau prove` needs no checkout. Each keeps its
+/// repository path, so reports and explanations read the same as from `proofs/`.
+const BUILTIN: [(&str, &str); 4] = [
+    (
+        "proofs/000_ef6a3958c7d702f5.toml",
+        include_str!("../../proofs/000_ef6a3958c7d702f5.toml"),
+    ),
+    (
+        "proofs/001_d6775559ddbdd5b2.toml",
+        include_str!("../../proofs/001_d6775559ddbdd5b2.toml"),
+    ),
+    (
+        "proofs/003_bd67d8bed055bcf9.toml",
+        include_str!("../../proofs/003_bd67d8bed055bcf9.toml"),
+    ),
+    (
+        "proofs/004_658c519a4aef48a5.toml",
+        include_str!("../../proofs/004_658c519a4aef48a5.toml"),
+    ),
+];
+
+/// The texts' claim files as built into the library, in name order (the same files as
+/// `proofs/` in the repository).
+pub fn builtin_files() -> Result<Vec<ClaimFile>> {
+    BUILTIN
+        .iter()
+        .map(|(path, text)| parse_file(text, Path::new(path)))
+        .collect()
+}
+
 /// Loads every `.toml` file given, or found directly in a given directory (sorted by name).
 pub fn load_paths(paths: &[PathBuf]) -> Result<Vec<ClaimFile>> {
     let mut files = Vec::new();

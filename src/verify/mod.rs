@@ -41,6 +41,7 @@ pub mod fields;
 pub mod hyper;
 pub mod inequality;
 pub mod kinds;
+mod latex;
 pub mod methods;
 pub mod poly;
 mod report;
@@ -163,8 +164,13 @@ impl Report {
 /// malformed expression, an unknown kind) is an error naming the file and the claim; with
 /// several, the first in file order.
 pub fn prove_paths(paths: &[PathBuf], progress: &mut dyn FnMut(usize, usize, &str)) -> Result<Report> {
+    prove_files(&claims::load_paths(paths)?, progress)
+}
+
+/// Checks every claim of claim files already loaded (e.g. [`claims::builtin_files`]), as
+/// [`prove_paths`] does.
+pub fn prove_files(files: &[claims::ClaimFile], progress: &mut dyn FnMut(usize, usize, &str)) -> Result<Report> {
     use rayon::prelude::*;
-    let files = claims::load_paths(paths)?;
     let jobs: Vec<(&claims::ClaimFile, &claims::Claim)> =
         files.iter().flat_map(|f| f.claim.iter().map(move |c| (f, c))).collect();
     let total = jobs.len();
@@ -230,8 +236,12 @@ fn in_claim(f: &claims::ClaimFile, id: &str, e: Error) -> Error {
 /// checked, why it suffices), one worked case with the de Casteljau scheme (9) that goes with it,
 /// and with [`ExplainStyle::Verbose`] every checked case.
 pub fn explain(paths: &[PathBuf], id: &str, style: ExplainStyle) -> Result<String> {
-    let files = claims::load_paths(paths)?;
-    for f in &files {
+    explain_files(&claims::load_paths(paths)?, id, style)
+}
+
+/// The proof of claim `id`, searched in claim files already loaded; see [`explain`].
+pub fn explain_files(files: &[claims::ClaimFile], id: &str, style: ExplainStyle) -> Result<String> {
+    for f in files {
         if let Some(c) = f.claim.iter().find(|c| c.id == id) {
             let checked = kinds::check_claim(c, true).map_err(|e| in_claim(f, id, e))?;
             let range_bound = scope::range_bound(c, checked.verdict);

@@ -227,16 +227,18 @@ pub enum ExplainStyle {
 }
 
 /// One case of the log: its header line and the lines under it.
-struct Case<'a> {
-    header: &'a str,
-    lines: Vec<&'a str>,
+pub(super) struct Case<'a> {
+    pub(super) header: &'a str,
+    pub(super) lines: Vec<&'a str>,
 }
 
-fn cases(steps: &[String]) -> Vec<Case<'_>> {
+pub(super) fn cases(steps: &[String]) -> Vec<Case<'_>> {
     let mut out: Vec<Case<'_>> = Vec::new();
     for line in steps {
         match out.last_mut() {
             Some(case) if line.starts_with(' ') => case.lines.push(line.trim()),
+            // a label such as "the zero polygon:" heads the equality checked under it
+            Some(case) if case.lines.is_empty() && case.header.ends_with(':') => case.lines.push(line.trim()),
             _ => out.push(Case {
                 header: line.trim(),
                 lines: Vec::new(),
@@ -247,16 +249,74 @@ fn cases(steps: &[String]) -> Vec<Case<'_>> {
 }
 
 /// The case worked out by default: the last one of degree 3 (the chain's final equality, for a
-/// chain), else the first.
-fn worked_case<'a>(all: &'a [Case<'a>]) -> Option<&'a Case<'a>> {
+/// chain), else the first of those showing the most (the zero polygon of a symbolic proof only
+/// says that every term vanishes), else the first.
+pub(super) fn worked_case<'a>(all: &'a [Case<'a>]) -> Option<&'a Case<'a>> {
     all.iter()
         .rev()
         .find(|c| c.header.starts_with('[') && c.header.split(']').next().is_some_and(|h| h.ends_with("n = 3")))
+        .or_else(|| {
+            // the first case with the most to show (a piece where every term vanishes shows little)
+            let shown = |c: &Case<'_>| c.lines.iter().filter(|l| !l.ends_with("every term vanishes")).count();
+            all.iter().rev().filter(|c| shown(c) > 0).max_by_key(|c| shown(c))
+        })
         .or_else(|| all.first())
 }
 
+/// The worked case of a claim whose check leaves no log (a classification, a fit, a vector
+/// identity, a theorem checked by its own code): the certificate's computation, one step a line.
+pub(super) fn certificate_case(checked: &Checked) -> (&'static str, Vec<&str>) {
+    let header = if checked.verdict == Verdict::Fails {
+        "the counterexample, computed exactly:"
+    } else {
+        "the claim's own data, computed exactly:"
+    };
+    // a counterexample reads "at <point>: <what happens there>": one line each
+    let lines = checked
+        .certificate
+        .split("; ")
+        .flat_map(|part| match part.strip_prefix("at ").and_then(|p| p.split_once(": ")) {
+            Some((point, rest)) if checked.verdict == Verdict::Fails => vec![&part[..point.len() + 3], rest],
+            _ => vec![part],
+        })
+        .map(str::trim)
+        .filter(|l| !l.is_empty())
+        .collect();
+    (header, lines)
+}
+
+/// Says that an expected failure is a misprint of the text and names its correction (or, for a
+/// correction, the misprint it corrects).
+pub(super) fn misprint_lines(f: &ClaimFile, c: &Claim) -> Vec<String> {
+    let mut out = Vec::new();
+    if matches!(c.expected(), Ok(Verdict::Fails)) {
+        out.push("expected:  fails, as printed: a misprint of the text (kept, never corrected in place)".into());
+        if let Some(note) = &c.note {
+            out.push(format!("note:      {note}"));
+        }
+        let fixes: Vec<&str> = f
+            .claim
+            .iter()
+            .filter(|d| d.corrects.as_deref() == Some(c.id.as_str()))
+            .map(|d| d.id.as_str())
+            .collect();
+        if fixes.is_empty() {
+            out.push("correction: none in this claim file".into());
+        }
+        for id in fixes {
+            out.push(format!("correction: {id} (see --explain {id})"));
+        }
+    }
+    if let Some(target) = &c.corrects {
+        out.push(format!(
+            "corrects:  {target}, the misprint as printed (see --explain {target})"
+        ));
+    }
+    out
+}
+
 /// Up to `k` evaluations of a case, preferring those whose value is a proper fraction.
-fn sample_evaluations<'a>(case: &Case<'a>, k: usize) -> Vec<&'a str> {
+pub(super) fn sample_evaluations<'a>(case: &Case<'a>, k: usize) -> Vec<&'a str> {
     let evals: Vec<&str> = case
         .lines
         .iter()
@@ -276,7 +336,7 @@ fn sample_evaluations<'a>(case: &Case<'a>, k: usize) -> Vec<&'a str> {
 }
 
 /// The argument: what was checked and why it suffices.
-fn argument(c: &Claim, checked: &Checked) -> Vec<String> {
+pub(super) fn argument(c: &Claim, checked: &Checked) -> Vec<String> {
     let by_points = checked.steps.iter().any(|l| l.contains("points suffice"));
     let mut a = Vec::new();
     if c.kind == "inequality" {
@@ -284,7 +344,7 @@ fn argument(c: &Claim, checked: &Checked) -> Vec<String> {
         if checked.certificate.starts_with("for every") {
             a.extend(super::inequality::ARGUMENT_FOR_EVERY.iter().map(|l| l.to_string()));
         }
-    } else if checked.certificate.starts_with("for every") {
+    } else if checked.certificate.starts_with("for every") && checked.range.is_none() {
         a.extend(super::symbolic::ARGUMENT.iter().map(|l| l.to_string()));
     } else if by_points {
         let vars = c
@@ -313,12 +373,47 @@ fn argument(c: &Claim, checked: &Checked) -> Vec<String> {
             a.push("(a grid, by induction on the variables). All checks are in exact rational arithmetic.".into());
         }
     } else {
-        a.push(format!(
-            "A `{}` claim, decided in exact arithmetic; the certificate above says what was established.",
-            c.kind
-        ));
+        a.extend(kind_argument(&c.kind).iter().map(|l| l.to_string()));
     }
     a
+}
+
+/// Why the check of a claim without a points-per-degree log suffices, by kind.
+fn kind_argument(kind: &str) -> &'static [&'static str] {
+    match kind {
+        "conic_type" => &[
+            "The conic A x² + B xy + C y² + D x + E y + F = 0 is degenerate when its symmetric 3×3 matrix is",
+            "singular; otherwise it is an ellipse (with real points when (A + C)·det < 0), a parabola or a",
+            "hyperbola as B² − 4AC < 0, = 0 or > 0. Every quantity is computed exactly from the coefficients,",
+            "so each sign is decided, not estimated.",
+        ],
+        "weight_type" => &[
+            "A rational quadratic with positive weights w0, w1, w2 (as in the texts) is an arc of an ellipse, a parabola or a",
+            "hyperbola as w1²/(w0 w2) < 1, = 1 or > 1 (the ratio is unchanged by reparametrisation); it is",
+            "computed exactly from the weights.",
+        ],
+        "implies" => &[
+            "The equation, moved to one side, is compared with the factor times the premise by exact symbolic",
+            "expansion in every symbol and vector coordinate: if the two are identical, the premise being zero",
+            "forces the equation. A failure is an exact point where the premise holds and the equation does not.",
+        ],
+        "fit" => &[
+            "δ²(k, l) is a quadratic in the tangent lengths k and l. The normal equations (11) are solved by exact",
+            "elimination and compared with the closed form (13); a zero gradient there with a non-singular Gram",
+            "matrix makes that point the unique minimum, so the printed k, l and δ² are the method's values.",
+        ],
+        "theorem" => &[
+            "A general theorem, checked for each degree n of its range by the library's own code. For each n",
+            "the check is a proof: both sides are polynomials of bounded degree in the parameters and linear",
+            "in the data, so the finitely many cases of the certificate (basis polygons, matrix units,",
+            "parameters) cover every input of that degree. Degrees outside the range are not covered.",
+        ],
+        "convergence" => &[
+            "A statement about a limit cannot be decided by finitely many exact evaluations: the certificate is",
+            "bounded evidence, the exact distances for the elevations checked and the explicit bound they meet.",
+        ],
+        _ => &["Decided in exact arithmetic; the certificate above says what was established and how."],
+    }
 }
 
 /// The claim and its verdict; the range-bound note shares the verdict's line (the short
@@ -366,6 +461,9 @@ fn header(s: &mut String, f: &ClaimFile, c: &Claim, checked: &Checked, range_bou
         },
         checked.certificate
     );
+    for line in misprint_lines(f, c) {
+        let _ = writeln!(s, "{line}");
+    }
 }
 
 /// The value of `name` in an evaluation line such as `n = 3, t0 = 1/2, t = 1/3, b[1] = 1, …`.
@@ -385,7 +483,11 @@ fn value_in(line: &str, name: &str) -> Option<BigRational> {
 /// expressions use its scheme (`b(i, r, t0)`), the scheme of the case's unit polygon at the case's
 /// first parameter; else the first polynomial curve of the claim at its first nonzero checked
 /// parameter.
-fn worked_scheme(c: &Claim, checked: &Checked, eval: Option<&str>) -> Option<DeCasteljauScheme<BigRational>> {
+pub(super) fn worked_scheme(
+    c: &Claim,
+    checked: &Checked,
+    eval: Option<&str>,
+) -> Option<DeCasteljauScheme<BigRational>> {
     if let (Some(poly), Some(line), Some(var)) = (&c.polygon, eval, c.vars.as_ref().and_then(|v| v.first())) {
         let uses_scheme = c
             .chain
@@ -427,7 +529,7 @@ fn worked_scheme(c: &Claim, checked: &Checked, eval: Option<&str>) -> Option<DeC
 
 /// For a claim whose expressions contain `Σ_r b_0^r(t0) B_r^n(t)` (`b(0, r, t0)*B(r, n, t)`):
 /// that sum written out at the worked evaluation, from the scheme's upper edge, and its value.
-fn worked_sum(c: &Claim, scheme: &DeCasteljauScheme<BigRational>, eval: &str) -> Option<String> {
+pub(super) fn worked_sum(c: &Claim, scheme: &DeCasteljauScheme<BigRational>, eval: &str) -> Option<String> {
     let poly = c.polygon.as_ref()?;
     let vars = c.vars.as_ref()?;
     let (v0, v1) = (vars.first()?, vars.get(1)?);
@@ -469,7 +571,7 @@ pub(super) fn explain_text(
     style: ExplainStyle,
 ) -> String {
     if style == ExplainStyle::Latex {
-        return explain_latex(f, c, checked, range_bound);
+        return super::latex::explain(f, c, checked, range_bound);
     }
     let mut s = String::new();
     header(&mut s, f, c, checked, range_bound);
@@ -486,6 +588,12 @@ pub(super) fn explain_text(
             let _ = writeln!(s, "  {l}");
         }
         for l in &evals {
+            let _ = writeln!(s, "  {l}");
+        }
+    } else {
+        let (header, lines) = certificate_case(checked);
+        let _ = writeln!(s, "\nworked case: {header}");
+        for l in lines {
             let _ = writeln!(s, "  {l}");
         }
     }
@@ -514,77 +622,6 @@ pub(super) fn explain_text(
             if all.len() == 1 { "" } else { "s" },
             c.id
         );
-    }
-    s
-}
-
-fn latex_escape(t: &str) -> String {
-    let mut o = String::new();
-    for ch in t.chars() {
-        match ch {
-            '\\' => o.push_str("\\textbackslash{}"),
-            '{' | '}' | '_' | '^' | '#' | '&' | '%' | '$' => {
-                o.push('\\');
-                o.push(ch);
-                if ch == '^' {
-                    o.push_str("{}");
-                }
-            }
-            '~' => o.push_str("\\textasciitilde{}"),
-            'Σ' => o.push_str("$\\Sigma$"),
-            '≤' => o.push_str("$\\le$"),
-            '·' => o.push_str("$\\cdot$"),
-            '⇒' => o.push_str("$\\Rightarrow$"),
-            '×' => o.push_str("$\\times$"),
-            _ => o.push(ch),
-        }
-    }
-    o
-}
-
-/// The short proof as a LaTeX fragment: text in `\texttt`/verbatim-safe escapes, the scheme as
-/// an `array` with exact fractions.
-fn explain_latex(f: &ClaimFile, c: &Claim, checked: &Checked, range_bound: Option<&str>) -> String {
-    let mut s = String::new();
-    let _ = writeln!(
-        s,
-        "\\paragraph{{Claim {}}} ({})\\\\",
-        latex_escape(&c.id),
-        latex_escape(&f.path.display().to_string())
-    );
-    let _ = writeln!(s, "Statement: {}\\\\", latex_escape(&c.statement));
-    let _ = writeln!(
-        s,
-        "Verdict: \\textbf{{{}}}\\\\",
-        latex_escape(&verdict_text(checked.verdict, checked.range.as_deref()))
-    );
-    let _ = writeln!(s, "Certificate: {}\n", latex_escape(&checked.certificate));
-    if let Some(r) = range_bound {
-        let _ = writeln!(s, "Range-bound: {}\n", latex_escape(r));
-    }
-    let _ = writeln!(
-        s,
-        "\\noindent Why this suffices: {}\n",
-        latex_escape(&argument(c, checked).join(" "))
-    );
-    let all = cases(&checked.steps);
-    let case = worked_case(&all);
-    let evals = case.map(|c| sample_evaluations(c, 4)).unwrap_or_default();
-    if let Some(case) = case {
-        let _ = writeln!(s, "\\noindent Worked case: {}", latex_escape(case.header));
-        if !evals.is_empty() {
-            let _ = writeln!(s, "\\begin{{itemize}}");
-            for l in &evals {
-                let _ = writeln!(s, "\\item {}", latex_escape(l));
-            }
-            let _ = writeln!(s, "\\end{{itemize}}");
-        }
-    }
-    if let Some(scheme) = worked_scheme(c, checked, evals.first().copied()) {
-        s.push_str(&scheme.to_latex());
-        if let Some(sum) = evals.first().and_then(|e| worked_sum(c, &scheme, e)) {
-            let _ = writeln!(s, "{}", latex_escape(&sum));
-        }
     }
     s
 }
@@ -664,6 +701,5 @@ mod tests {
         assert_eq!(value_in(evals[0], "t"), Some(BigRational::new(1.into(), 3.into())));
         assert_eq!(value_in(evals[0], "n"), Some(BigRational::from_integer(3.into())));
         assert_eq!(value_in(evals[0], "u"), None);
-        assert_eq!(latex_escape("b_0^n ≤ Σ {x}"), "b\\_0\\^{}n $\\le$ $\\Sigma$ \\{x\\}");
     }
 }

@@ -1,0 +1,462 @@
+//! `--explain` as a LaTeX fragment that `pdflatex` compiles: ASCII only, formulas in math
+//! mode (`\dot{x}`, `-`, `\sum`), code in `\texttt`, and the Japanese of the texts inside
+//! `CJK` environments (the only non-ASCII bytes; the document loads `CJKutf8`).
+
+use super::claims::{Claim, ClaimFile};
+use super::engine::Checked;
+use super::report::{
+    argument, cases, certificate_case, misprint_lines, sample_evaluations, verdict_text, worked_case, worked_scheme,
+    worked_sum,
+};
+use std::fmt::Write as _;
+
+/// The first line of every fragment: what the document around it must load.
+pub const PREAMBLE_NOTE: &str =
+    "% casteljau --explain: needs \\usepackage{CJKutf8} (Japanese statements; Debian: latex-cjk-japanese)";
+
+/// Japanese (and full-width) characters: set in a `CJK` environment, never in math.
+fn is_cjk(ch: char) -> bool {
+    matches!(ch as u32,
+        0x3000..=0x303F   // CJK punctuation
+        | 0x3040..=0x30FF // hiragana, katakana
+        | 0x3400..=0x4DBF | 0x4E00..=0x9FFF // ideographs
+        | 0xFF00..=0xFFEF) // full-width forms
+}
+
+/// A non-ASCII character in math mode; `None` for one that has no math form.
+fn math_symbol(ch: char) -> Option<&'static str> {
+    Some(match ch {
+        '−' | '–' => "-",
+        '·' | '⋅' => "\\cdot ",
+        '×' => "\\times ",
+        '≤' => "\\le ",
+        '≥' => "\\ge ",
+        '≠' => "\\ne ",
+        '≈' => "\\approx ",
+        '≡' => "\\equiv ",
+        '±' => "\\pm ",
+        '→' => "\\to ",
+        '⇒' => "\\Rightarrow ",
+        '⇔' => "\\Leftrightarrow ",
+        '∈' => "\\in ",
+        '∞' => "\\infty ",
+        '∂' => "\\partial ",
+        '∇' => "\\nabla ",
+        '∘' => "\\circ ",
+        '∫' => "\\int ",
+        '√' => "\\surd ",
+        '…' | '⋯' => "\\ldots ",
+        '′' => "'",
+        '″' => "''",
+        '‖' => "\\| ",
+        '⟨' => "\\langle ",
+        '⟩' => "\\rangle ",
+        'Σ' => "\\sum ",
+        'Δ' => "\\Delta ",
+        'Φ' => "\\Phi ",
+        'Ψ' => "\\Psi ",
+        'Ω' => "\\Omega ",
+        'Γ' => "\\Gamma ",
+        'Π' => "\\prod ",
+        'α' => "\\alpha ",
+        'β' => "\\beta ",
+        'γ' => "\\gamma ",
+        'δ' => "\\delta ",
+        'ε' => "\\varepsilon ",
+        'θ' => "\\theta ",
+        'κ' => "\\kappa ",
+        'λ' => "\\lambda ",
+        'μ' => "\\mu ",
+        'π' => "\\pi ",
+        'σ' => "\\sigma ",
+        'τ' => "\\tau ",
+        'φ' => "\\varphi ",
+        'ω' => "\\omega ",
+        '⁰' => "^{0}",
+        '¹' => "^{1}",
+        '²' => "^{2}",
+        '³' => "^{3}",
+        '⁴' => "^{4}",
+        '⁵' => "^{5}",
+        '⁶' => "^{6}",
+        '⁷' => "^{7}",
+        '⁸' => "^{8}",
+        '⁹' => "^{9}",
+        'ⁿ' => "^{n}",
+        'ᵀ' => "^{T}",
+        '⁻' => "^{-}",
+        '₀' => "_{0}",
+        '₁' => "_{1}",
+        '₂' => "_{2}",
+        '₃' => "_{3}",
+        '₄' => "_{4}",
+        '₅' => "_{5}",
+        '₆' => "_{6}",
+        '₇' => "_{7}",
+        '₈' => "_{8}",
+        '₉' => "_{9}",
+        'ᵢ' => "_{i}",
+        'ⱼ' => "_{j}",
+        'ₙ' => "_{n}",
+        'ẋ' => "\\dot{x}",
+        'ẍ' => "\\ddot{x}",
+        'ẏ' => "\\dot{y}",
+        _ => return None,
+    })
+}
+
+/// A non-ASCII character in text mode: accented letters, quotes, else its math form.
+fn text_symbol(ch: char) -> Option<String> {
+    let accent = |a: &str, c: char| format!("\\{a}{{{c}}}");
+    Some(match ch {
+        'é' => accent("'", 'e'),
+        'è' => accent("`", 'e'),
+        'ü' => accent("\"", 'u'),
+        'ö' => accent("\"", 'o'),
+        'ä' => accent("\"", 'a'),
+        '—' => "---".into(),
+        '–' => "--".into(),
+        '‘' => "`".into(),
+        '’' => "'".into(),
+        '“' => "``".into(),
+        '”' => "''".into(),
+        ' ' => "~".into(),
+        _ => format!("${}$", math_symbol(ch)?.trim_end()),
+    })
+}
+
+/// ASCII text with TeX's special characters escaped.
+fn escape_ascii(ch: char, out: &mut String) {
+    match ch {
+        '\\' => out.push_str("\\textbackslash{}"),
+        '{' | '}' | '_' | '#' | '&' | '%' | '$' => {
+            out.push('\\');
+            out.push(ch);
+        }
+        '^' => out.push_str("\\^{}"),
+        '~' => out.push_str("\\textasciitilde{}"),
+        '<' => out.push_str("\\textless{}"),
+        '>' => out.push_str("\\textgreater{}"),
+        '|' => out.push_str("\\textbar{}"),
+        _ => out.push(ch),
+    }
+}
+
+/// A character no table knows, written so that the fragment stays ASCII and the gap is seen.
+fn unknown(ch: char) -> String {
+    format!("[U+{:04X}]", ch as u32)
+}
+
+/// Text: prose escaped, `code` and 'expressions' in `\texttt`, symbols as inline math,
+/// Japanese in `CJK` environments.
+pub fn text(t: &str) -> String {
+    let mut out = String::new();
+    let chars: Vec<char> = t.chars().collect();
+    let mut i = 0;
+    while i < chars.len() {
+        let ch = chars[i];
+        let code_end = match ch {
+            '`' => chars[i + 1..].iter().position(|&c| c == '`'),
+            // an opening quote: not inside a word (the claim's), closed before a space or the end
+            '\'' if i == 0 || !chars[i - 1].is_alphanumeric() => chars[i + 1..]
+                .iter()
+                .enumerate()
+                .position(|(k, &c)| c == '\'' && chars.get(i + k + 2).is_none_or(|n| !n.is_alphanumeric())),
+            _ => None,
+        };
+        if let Some(len) = code_end.filter(|&len| len > 0) {
+            let inner: String = chars[i + 1..i + 1 + len].iter().collect();
+            let _ = write!(out, "\\texttt{{{}}}", plain(&inner));
+            i += len + 2;
+            continue;
+        }
+        if is_cjk(ch) {
+            let run: String = chars[i..].iter().take_while(|&&c| is_cjk(c)).collect();
+            i += run.chars().count();
+            let _ = write!(out, "\\begin{{CJK}}{{UTF8}}{{min}}{run}\\end{{CJK}}");
+            continue;
+        }
+        match (ch, chars.get(i + 1)) {
+            // a minus sign before a number, not a hyphen; `--` not an en dash
+            ('-', Some(d)) if d.is_ascii_digit() && (i == 0 || !chars[i - 1].is_alphanumeric()) => out.push_str("$-$"),
+            ('-', Some('-')) => out.push_str("-{}"),
+            _ => push_text_char(ch, &mut out),
+        }
+        i += 1;
+    }
+    out
+}
+
+fn push_text_char(ch: char, out: &mut String) {
+    if ch.is_ascii() {
+        escape_ascii(ch, out);
+    } else if let Some(s) = text_symbol(ch) {
+        out.push_str(&s);
+    } else if is_cjk(ch) {
+        let _ = write!(out, "\\begin{{CJK}}{{UTF8}}{{min}}{ch}\\end{{CJK}}");
+    } else {
+        out.push_str(&unknown(ch));
+    }
+}
+
+/// Text without `code` detection (the inside of `\texttt`, file names, ids).
+fn plain(t: &str) -> String {
+    let mut out = String::new();
+    for ch in t.chars() {
+        push_text_char(ch, &mut out);
+    }
+    out.replace("--", "-{}-")
+}
+
+/// Names that stay in a formula although they are words.
+const MATH_NAMES: &[&str] = &[
+    "sin", "cos", "tan", "exp", "log", "det", "max", "min", "dot", "diff", "inv", "sqrt", "rows", "sum", "lim", "deg",
+];
+/// Short English words that a formula never contains as a product of variables.
+const SHORT_WORDS: &[&str] = &[
+    "is", "of", "an", "at", "on", "to", "be", "in", "by", "if", "or", "as", "so", "we", "it",
+];
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Part {
+    Math,
+    Prose,
+    Japanese,
+    /// Spaces and punctuation: math between two formula parts, prose otherwise.
+    Neutral,
+}
+
+/// A statement as printed: its formulas in math mode (`$…$`), its words as text, its Japanese
+/// in `CJK` environments.
+pub fn statement(t: &str) -> String {
+    // split into parts
+    let chars: Vec<char> = t.chars().collect();
+    let mut parts: Vec<(Part, String)> = Vec::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let ch = chars[i];
+        let (part, len) = if is_cjk(ch) {
+            (Part::Japanese, chars[i..].iter().take_while(|&&c| is_cjk(c)).count())
+        } else if ch.is_ascii_alphabetic() {
+            let len = chars[i..].iter().take_while(|c| c.is_ascii_alphabetic()).count();
+            let word: String = chars[i..i + len].iter().collect();
+            let spaced = |k: Option<&char>| k.is_none_or(|c| *c == ' ');
+            let scripted = i > 0 && matches!(chars[i - 1], '_' | '^');
+            let prose = (len >= 3 && !MATH_NAMES.contains(&word.as_str()))
+                || (SHORT_WORDS.contains(&word.as_str())
+                    && spaced(i.checked_sub(1).and_then(|k| chars.get(k)))
+                    && spaced(chars.get(i + len)));
+            (if prose && !scripted { Part::Prose } else { Part::Math }, len)
+        } else if matches!(ch, ' ' | ',' | ';' | ':' | '.' | '(' | ')') {
+            (Part::Neutral, 1)
+        } else {
+            (Part::Math, 1)
+        };
+        let piece: String = chars[i..i + len].iter().collect();
+        match parts.last_mut() {
+            Some((p, s)) if *p == part => s.push_str(&piece),
+            _ => parts.push((part, piece)),
+        }
+        i += len;
+    }
+    // neutral parts between two formula parts belong to the formula
+    for k in 0..parts.len() {
+        if parts[k].0 == Part::Neutral {
+            let math = |j: Option<usize>| j.and_then(|j| parts.get(j)).is_some_and(|p| p.0 == Part::Math);
+            parts[k].0 = if math(k.checked_sub(1)) && math(Some(k + 1)) {
+                Part::Math
+            } else {
+                Part::Prose
+            };
+        }
+    }
+    let mut merged: Vec<(Part, String)> = Vec::new();
+    for (p, s) in parts {
+        match merged.last_mut() {
+            Some((q, m)) if *q == p => m.push_str(&s),
+            _ => merged.push((p, s)),
+        }
+    }
+    let mut out = String::new();
+    for (p, s) in merged {
+        match p {
+            Part::Japanese => {
+                let _ = write!(out, "\\begin{{CJK}}{{UTF8}}{{min}}{s}\\end{{CJK}}");
+            }
+            Part::Math => {
+                let lead = s.len() - s.trim_start().len();
+                let trail = s.len() - s.trim_end().len();
+                out.push_str(&" ".repeat(lead.min(1)));
+                let _ = write!(out, "${}$", formula(s.trim()));
+                out.push_str(&" ".repeat(trail.min(1)));
+            }
+            _ => out.push_str(&plain(&s)),
+        }
+    }
+    out
+}
+
+/// A formula's characters in math mode: `_`, `^` and braces kept (the statements use TeX's
+/// notation), Unicode symbols mapped, `x` with a combining dot as `\dot{x}`.
+fn formula(t: &str) -> String {
+    let chars: Vec<char> = t.chars().collect();
+    let mut out = String::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let ch = chars[i];
+        if chars.get(i + 1) == Some(&'\u{307}') {
+            let mut inner = String::new();
+            push_math_char(ch, &mut inner);
+            let _ = write!(out, "\\dot{{{inner}}}");
+            i += 2;
+            continue;
+        }
+        if let Some(name) = MATH_NAMES.iter().find(|n| {
+            let end = i + n.len();
+            chars.get(i..end).is_some_and(|w| w.iter().copied().eq(n.chars()))
+                && chars.get(end).is_none_or(|c| !c.is_ascii_alphabetic())
+                && (i == 0 || !chars[i - 1].is_ascii_alphabetic())
+        }) {
+            let _ = write!(out, "\\mathrm{{{name}}}");
+            i += name.len();
+            continue;
+        }
+        // a run of superscript (subscript) characters is one group: ⁻¹ is ^{-1}
+        let script = |c: char| math_symbol(c).filter(|m| m.len() == 4 && (m.starts_with("^{") || m.starts_with("_{")));
+        if let Some(first) = script(ch) {
+            let mark = &first[..1];
+            let mut inner = String::new();
+            while let Some(m) = chars.get(i).and_then(|&c| script(c)).filter(|m| m.starts_with(mark)) {
+                inner.push_str(&m[2..3]);
+                i += 1;
+            }
+            let _ = write!(out, "{mark}{{{inner}}}");
+            continue;
+        }
+        push_math_char(ch, &mut out);
+        i += 1;
+    }
+    out
+}
+
+fn push_math_char(ch: char, out: &mut String) {
+    match ch {
+        '_' | '^' | '{' | '}' => out.push(ch),
+        '\\' => out.push_str("\\backslash "),
+        '#' | '&' | '%' | '$' => {
+            out.push('\\');
+            out.push(ch);
+        }
+        '~' => out.push_str("\\sim "),
+        _ if ch.is_ascii() => out.push(ch),
+        _ => match math_symbol(ch) {
+            Some(s) => out.push_str(s),
+            None if is_cjk(ch) => {
+                let _ = write!(out, "\\mbox{{\\begin{{CJK}}{{UTF8}}{{min}}{ch}\\end{{CJK}}}}");
+            }
+            None => match text_symbol(ch) {
+                Some(s) => {
+                    let _ = write!(out, "\\mbox{{{s}}}");
+                }
+                None => out.push_str(&unknown(ch)),
+            },
+        },
+    }
+}
+
+/// The short proof as a LaTeX fragment: the claim, its verdict, the argument, one worked case
+/// and the scheme (9) as an `array` of exact fractions.
+pub(super) fn explain(f: &ClaimFile, c: &Claim, checked: &Checked, range_bound: Option<&str>) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "{PREAMBLE_NOTE}");
+    let _ = writeln!(
+        s,
+        "\\paragraph{{Claim \\texttt{{{}}}}} (\\texttt{{{}}}, {})\\\\",
+        plain(&c.id),
+        plain(&f.path.display().to_string()),
+        text(&c.source)
+    );
+    let _ = writeln!(s, "Statement: {}\\\\", statement(&c.statement));
+    let _ = writeln!(
+        s,
+        "Verdict: \\textbf{{{}}}\\\\",
+        text(&verdict_text(checked.verdict, checked.range.as_deref()))
+    );
+    let label = if checked.verdict == super::Verdict::Fails {
+        "Counterexample"
+    } else {
+        "Certificate"
+    };
+    let _ = writeln!(s, "{label}: {}\n", text(&checked.certificate));
+    for line in misprint_lines(f, c) {
+        let (key, value) = line.split_once(':').unwrap_or(("", &line));
+        let _ = writeln!(s, "\\noindent {}: {}\n", text(key.trim()), text(value.trim()));
+    }
+    if let Some(r) = range_bound {
+        let _ = writeln!(s, "Range-bound: {}\n", text(r));
+    }
+    let _ = writeln!(
+        s,
+        "\\noindent Why this suffices: {}\n",
+        text(&argument(c, checked).join(" "))
+    );
+    let all = cases(&checked.steps);
+    let case = worked_case(&all);
+    let evals = case.map(|c| sample_evaluations(c, 4)).unwrap_or_default();
+    let (header, lines): (String, Vec<&str>) = match case {
+        Some(case) => (
+            case.header.to_string(),
+            if evals.is_empty() {
+                case.lines.iter().copied().take(4).collect()
+            } else {
+                evals.clone()
+            },
+        ),
+        None => {
+            let (h, l) = certificate_case(checked);
+            (h.to_string(), l)
+        }
+    };
+    let _ = writeln!(s, "\\noindent Worked case: {}", text(&header));
+    if !lines.is_empty() {
+        let _ = writeln!(s, "\\begin{{itemize}}");
+        for l in &lines {
+            let _ = writeln!(s, "\\item {}", text(l));
+        }
+        let _ = writeln!(s, "\\end{{itemize}}");
+    }
+    if let Some(scheme) = worked_scheme(c, checked, evals.first().copied()) {
+        s.push_str(&scheme.to_latex());
+        if let Some(sum) = evals.first().and_then(|e| worked_sum(c, &scheme, e)) {
+            let _ = writeln!(s, "{}", text(&sum));
+        }
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn formulas_are_math_and_everything_is_ascii_outside_cjk() {
+        // a closing parenthesis before Japanese text is set as text, outside the formula
+        assert_eq!(
+            statement("−3/4 ẋ(0)·ẋ(0) k = X·x(0) を得る"),
+            "$-3/4 \\dot{x}(0)\\cdot \\dot{x}(0) k = X\\cdot x(0$) \\begin{CJK}{UTF8}{min}を得る\\end{CJK}"
+        );
+        assert_eq!(statement("x\u{307} ≤ Σ b_i"), "$\\dot{x} \\le  \\sum  b_i$");
+        assert_eq!(statement("gives k = l = 3/10"), "gives $k = l = 3/10$");
+        assert_eq!(
+            text("`delta` and 'b(t)' ≤ 1, the claim's"),
+            "\\texttt{delta} and \\texttt{b(t)} $\\le$ 1, the claim's"
+        );
+        assert_eq!(text("b_0^n {x} 100%"), "b\\_0\\^{}n \\{x\\} 100\\%");
+        assert_eq!(text("see --explain x: -32, b-1"), "see -{}-explain x: $-$32, b-1");
+        assert_eq!(statement("(from (7) = 0)"), "(from ($7) = 0$)");
+        assert_eq!(statement("M⁻¹ xᵀ₁₂"), "$M^{-1} x^{T}_{12}$");
+        assert_eq!(statement("elevate_by ok"), "elevate$_by ok$");
+        assert_eq!(text("✓"), "[U+2713]");
+        assert_eq!(text("Bézier 曲線"), "B\\'{e}zier \\begin{CJK}{UTF8}{min}曲線\\end{CJK}");
+    }
+}
