@@ -67,6 +67,11 @@ fn verdict_words(verdict: Verdict, range: Option<&str>) -> VerdictText {
             label: "fails",
             scope: "false as stated: the certificate is an exact counterexample".into(),
         },
+        Verdict::Error => VerdictText {
+            class: "error",
+            label: "error",
+            scope: "not decided: the reason says which limit or form stopped the check".into(),
+        },
     }
 }
 

@@ -9,7 +9,7 @@ use casteljau::fit::CubicFitData;
 use casteljau::float::nearest_f64;
 use casteljau::input::{parse_count, parse_net, parse_number, parse_numbers, parse_point, parse_points};
 use casteljau::oracle::{self, check_weight_count, Answer, FloatMethod, Op};
-use casteljau::verify::{claims, explain_files, prove_files, ExplainStyle};
+use casteljau::verify::{claims, explain_files, prove_files, ExplainStyle, Verdict};
 use casteljau::{BezierCurve, BezierSurface, BigRational, Error, Point, RationalBezierCurve};
 use clap::{Parser, Subcommand, ValueEnum};
 use serde_json::{json, Value};
@@ -606,7 +606,10 @@ fn prove(
         Format::Json => output(&format!("{}\n", report.to_json()))?,
         Format::Latex => return Err(LATEX_ONLY.into()),
     }
-    Ok(if report.mismatches() > 0 {
+    let undecided = report.outcomes.iter().any(|o| o.verdict == Verdict::Error);
+    Ok(if undecided {
+        ExitCode::from(2)
+    } else if report.mismatches() > 0 {
         ExitCode::from(1)
     } else {
         ExitCode::SUCCESS

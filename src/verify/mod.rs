@@ -70,6 +70,10 @@ pub enum Verdict {
     Verified,
     /// The claim is false; the certificate holds an exact counterexample.
     Fails,
+    /// Not a verdict: the claim could not be decided (a limit reached, a form the engine does
+    /// not handle); the certificate holds the one-line reason. The other claims are still
+    /// checked, and `prove` exits with status 2.
+    Error,
 }
 
 impl Verdict {
@@ -80,6 +84,7 @@ impl Verdict {
             Verdict::ProvedInRange => "proved_in_range",
             Verdict::Verified => "verified",
             Verdict::Fails => "fails",
+            Verdict::Error => "error",
         }
     }
 }
@@ -160,9 +165,9 @@ impl Report {
 /// Loads every claim file under `paths` (files, or directories whose `.toml` files are read in
 /// name order) and checks every claim; `progress(done, total, id)` is called after each claim,
 /// on the calling thread, with `done` counting completed claims. Claims are independent and
-/// checked in parallel (rayon); the report keeps file order. A claim that cannot be checked (a
-/// malformed expression, an unknown kind) is an error naming the file and the claim; with
-/// several, the first in file order.
+/// checked in parallel (rayon); the report keeps file order. A claim that cannot be decided (a
+/// malformed expression, a limit reached) gets [`Verdict::Error`] with its one-line reason, and
+/// every other claim is still checked; a file that cannot be read or parsed is an error.
 pub fn prove_paths(paths: &[PathBuf], progress: &mut dyn FnMut(usize, usize, &str)) -> Result<Report> {
     prove_files(&claims::load_paths(paths)?, progress)
 }
@@ -199,7 +204,9 @@ pub fn prove_files(files: &[claims::ClaimFile], progress: &mut dyn FnMut(usize, 
 }
 
 fn check_one(f: &claims::ClaimFile, c: &claims::Claim) -> Result<ClaimOutcome> {
-    let checked = kinds::check_claim(c, false).map_err(|e| in_claim(f, &c.id, e))?;
+    // A claim that cannot be decided is reported as such; it never hides the others.
+    let checked = kinds::check_claim(c, false)
+        .unwrap_or_else(|e| engine::Checked::new(Verdict::Error, e.to_string()));
     let range_bound = scope::range_bound(c, checked.verdict);
     Ok(ClaimOutcome {
         id: c.id.clone(),

@@ -32,6 +32,16 @@ pub struct TextSummary {
     pub mismatches: usize,
     /// Ids of the claims that fail (misprints, when expected).
     pub failing: Vec<String>,
+    /// Claims that could not be decided (`error`).
+    #[serde(skip_serializing_if = "is_zero")]
+    pub errors: usize,
+    /// Their ids.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub undecided: Vec<String>,
+}
+
+fn is_zero(n: &usize) -> bool {
+    *n == 0
 }
 
 /// A verdict with its scope, as the text reports show it: `proved`, `proved for n = 0..=10`,
@@ -67,6 +77,10 @@ pub(super) fn summaries(outcomes: &[ClaimOutcome]) -> Vec<TextSummary> {
                 s.fails += 1;
                 s.failing.push(o.id.clone());
             }
+            Verdict::Error => {
+                s.errors += 1;
+                s.undecided.push(o.id.clone());
+            }
         }
         if o.verdict == o.expect {
             s.as_expected += 1;
@@ -91,6 +105,8 @@ fn total(sums: &[TextSummary]) -> TextSummary {
         t.as_expected += s.as_expected;
         t.mismatches += s.mismatches;
         t.failing.extend(s.failing.iter().cloned());
+        t.errors += s.errors;
+        t.undecided.extend(s.undecided.iter().cloned());
     }
     t
 }
@@ -124,10 +140,10 @@ pub(super) fn to_text(r: &Report) -> String {
             if let Some(n) = &o.note {
                 let _ = writeln!(s, "    note:        {n}");
             }
-            let label = if o.verdict == Verdict::Fails {
-                "counterexample"
-            } else {
-                "certificate"
+            let label = match o.verdict {
+                Verdict::Fails => "counterexample",
+                Verdict::Error => "error",
+                _ => "certificate",
             };
             let _ = writeln!(s, "    {label}: {}", o.certificate);
             if let Some(r) = &o.range_bound {
@@ -158,6 +174,13 @@ pub(super) fn to_text(r: &Report) -> String {
     }
     if !t.failing.is_empty() {
         let _ = writeln!(s, "\nclaims that fail: {}", t.failing.join(", "));
+    }
+    if !t.undecided.is_empty() {
+        let _ = writeln!(
+            s,
+            "claims not decided (error, each with its reason): {}",
+            t.undecided.join(", ")
+        );
     }
     if t.proved_in_range > 0 {
         let _ = writeln!(
@@ -210,6 +233,8 @@ pub(super) fn to_json(r: &Report) -> serde_json::Value {
             "as_expected": t.as_expected,
             "mismatches": t.mismatches,
             "failing": t.failing,
+            "errors": t.errors,
+            "undecided": t.undecided,
             "texts": sums,
         }
     })
