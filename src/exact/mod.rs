@@ -10,6 +10,7 @@
 //!   computed once and shared across threads.
 
 pub mod basis_table;
+pub(crate) mod dispatch;
 pub mod fraction_free;
 pub mod small_rational;
 
