@@ -12,6 +12,7 @@
 pub mod basis_table;
 pub(crate) mod dispatch;
 pub mod fraction_free;
+pub mod gcd;
 pub mod small_rational;
 
 pub use basis_table::{BernsteinTable, RationalBasisRow};
