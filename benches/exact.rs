@@ -144,7 +144,7 @@ impl SplitMix {
 /// numerators (random signs) over 30-digit denominators, and a 20-digit `t = p/q` in (0, 1).
 fn big_case(n: usize) -> (BezierCurve<BigRational>, BigRational) {
     let mut rng = SplitMix(1000 + n as u64);
-    let mut coordinate = |rng: &mut SplitMix| {
+    let coordinate = |rng: &mut SplitMix| {
         let magnitude = BigInt::from(rng.digits(30));
         let numerator = if rng.next() & 1 == 1 { -magnitude } else { magnitude };
         BigRational::new(numerator, BigInt::from(rng.digits(30)))
@@ -193,9 +193,13 @@ fn exact_big(c: &mut Criterion) {
         group.bench_with_input(BenchmarkId::new("eval", n), &curve, |b, c| {
             b.iter_custom(|iters| cpu_time_of(iters, || c.eval(black_box(&t))))
         });
-        group.bench_with_input(BenchmarkId::new("split_at", n), &curve, |b, c| {
-            b.iter_custom(|iters| cpu_time_of(iters, || c.split_at(black_box(&t))))
-        });
+        // A split reduces 2(n+1) points of up to n·67 + n·100 bits each: at degree 1000, a
+        // minute per call, too long for a bench run (the script's Python peers skip it too).
+        if n <= 200 {
+            group.bench_with_input(BenchmarkId::new("split_at", n), &curve, |b, c| {
+                b.iter_custom(|iters| cpu_time_of(iters, || c.split_at(black_box(&t))))
+            });
+        }
         group.bench_with_input(BenchmarkId::new("elevate", n), &curve, |b, c| {
             b.iter_custom(|iters| cpu_time_of(iters, || c.elevate().expect("degree within limit")))
         });
