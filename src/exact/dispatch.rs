@@ -12,7 +12,7 @@ use crate::point::Point;
 use crate::scalar::{RefOps, Scalar};
 use crate::space::{PointN, VectorSpace};
 use num_rational::BigRational;
-use std::any::Any;
+use std::any::{Any, TypeId};
 use std::borrow::Cow;
 
 /// `value` as a `B` when `A` is `B`, else `value` back.
@@ -52,18 +52,30 @@ pub(crate) fn exact_curve<P: 'static>(c: &Bezier<P>) -> Option<Cow<'_, BezierCur
 
 /// An exact point as the point type `P` it was computed for (see [`exact_curve`]).
 pub(crate) fn point_back<P: 'static>(p: Point<BigRational>) -> P {
-    fn fixed<P: 'static, const D: usize>(p: Point<BigRational>) -> Result<P, Point<BigRational>> {
-        if p.dim() != D {
-            return Err(p);
+    fn fixed<P: 'static, const D: usize>(coords: &mut Vec<BigRational>) -> Option<P> {
+        if coords.len() != D || TypeId::of::<P>() != TypeId::of::<PointN<BigRational, D>>() {
+            return None;
         }
-        let coords: [BigRational; D] = p.into_coords().try_into().expect("dimension checked");
-        cast::<PointN<BigRational, D>, P>(PointN(coords)).map_err(|q| Point::from_valid(q.0))
+        let coords: [BigRational; D] = std::mem::take(coords).try_into().ok()?;
+        cast::<PointN<BigRational, D>, P>(PointN(coords)).ok()
     }
-    cast::<Point<BigRational>, P>(p)
-        .or_else(fixed::<P, 1>)
-        .or_else(fixed::<P, 2>)
-        .or_else(fixed::<P, 3>)
-        .unwrap_or_else(|_| unreachable!("points come back as the type exact_curve accepted"))
+    if TypeId::of::<P>() == TypeId::of::<Point<BigRational>>() {
+        if let Ok(p) = cast::<Point<BigRational>, P>(p) {
+            return p;
+        }
+        unreachable!("the types are equal");
+    }
+    let mut coords = p.into_coords();
+    if let Some(p) = fixed::<P, 1>(&mut coords) {
+        return p;
+    }
+    if let Some(p) = fixed::<P, 2>(&mut coords) {
+        return p;
+    }
+    if let Some(p) = fixed::<P, 3>(&mut coords) {
+        return p;
+    }
+    unreachable!("points come back as the type exact_curve accepted")
 }
 
 /// An exact curve as the curve type `Bezier<P>` it was computed for.

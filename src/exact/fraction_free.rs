@@ -1,21 +1,23 @@
-//! Fraction-free exact kernels: integers over one common denominator, one reduction at the end.
+//! Fraction-free exact kernels: integers over a common denominator, one reduction at the end.
 //!
-//! The generic algorithms run on [`BigRational`] and reduce a fraction (a big-integer gcd) at
-//! every step. Here the control points are first written over one common denominator `D`, a
-//! parameter `t = p/q` stays the pair of integers `(p, q)`, and every step is integer
-//! arithmetic; each output coordinate is reduced once. The integers are machine words
-//! (`i128`, every operation overflow-checked) while they fit; on the first overflow the whole
-//! kernel runs again on [`BigInt`]. Results are the same values as the generic path, so they
-//! are compared with `==` against it in the tests.
+//! The generic algorithms on [`BigRational`] reduce a fraction (a big-integer gcd) at every
+//! step. Here the values of each coordinate are first written over their common denominator
+//! `D`, a parameter `t = p/q` stays the pair of integers `(p, q)`, and every step is integer
+//! arithmetic; each output coordinate is reduced once, part by part ([`crate::exact::gcd`]).
+//! The integers are machine words (`i128`, every operation overflow-checked) while they fit;
+//! on the first overflow the whole kernel runs again on [`BigInt`] (one elevation step then
+//! combines neighbouring points pairwise instead). The public generic methods choose these
+//! kernels for exact rationals (`exact::dispatch`); the tests compare them with `==`
+//! against the step-by-step `*_reference` methods.
 //!
-//! | kernel | here | generic reference |
+//! | kernel | here | reference |
 //! |---|---|---|
-//! | one point, O(n) nested Bernstein sum | [`BezierCurve::eval_nested`] | [`BezierCurve::eval`] |
-//! | derivative vector at `t` | [`BezierCurve::derivative_at_nested`] | [`BezierCurve::derivative_at`] |
-//! | de Casteljau triangle, subdivision | [`BezierCurve::scheme_fraction_free`], [`BezierCurve::split_fraction_free`] | [`BezierCurve::scheme`], [`BezierCurve::split_at`] |
-//! | degree elevation (7), (8) | [`BezierCurve::elevate_fraction_free`], [`BezierCurve::elevate_by_fraction_free`] | [`BezierCurve::elevate`], [`BezierCurve::elevate_by`] |
-//! | derivative curve | [`BezierCurve::derivative_fraction_free`] | [`BezierCurve::derivative`] |
-//! | rational curve point | [`RationalBezierCurve::eval_nested`] | [`RationalBezierCurve::eval`] |
+//! | one point, O(n) nested Bernstein sum | [`BezierCurve::eval_nested`] | [`BezierCurve::eval_reference`] |
+//! | derivative vector at `t` | [`BezierCurve::derivative_at_nested`] | [`BezierCurve::derivative_reference`] then [`BezierCurve::eval_reference`] |
+//! | de Casteljau triangle, subdivision | [`BezierCurve::scheme_fraction_free`], [`BezierCurve::split_fraction_free`] | [`BezierCurve::scheme_reference`], [`BezierCurve::split_at_reference`] |
+//! | degree elevation (7), (8) | [`BezierCurve::elevate_fraction_free`], [`BezierCurve::elevate_by_fraction_free`] | [`BezierCurve::elevate_reference`], [`BezierCurve::elevate_by_reference`] |
+//! | derivative curve | [`BezierCurve::derivative_fraction_free`] | [`BezierCurve::derivative_reference`] |
+//! | rational curve point | [`RationalBezierCurve::eval_nested`] | [`RationalBezierCurve::eval_reference`] |
 //! | surface point | [`BezierSurface::eval_nested`] | [`BezierSurface::eval`] |
 //!
 //! The nested evaluation (Volk–Schumaker, Horner in Bernstein form) of `t = p/q`, `s = q − p`:
