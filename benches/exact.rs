@@ -4,12 +4,18 @@
 //! `eval_nested`, and generic de Casteljau on `SmallRational`; and the proof engine's hot
 //! spot, Bernstein values at sample points, rebuilt per use against cached tables.
 //!
+//! The group `exact_big` is the case no shortcut flatters: planar curves of degree 20, 200
+//! and 1000 with random 30-digit rational coordinates, each over its own denominator, and a
+//! random 20-digit parameter; `eval`, `split_at` and `elevate` as users call them. It
+//! measures CPU time (of this thread), not wall time, so that the ratios to the Python
+//! peers of `scripts/exact_big.py`, which draws the same numbers, hold on a shared machine.
+//!
 //! `cargo bench --bench exact` (add `-- --quick` for a fast look).
 
 use casteljau::exact::{BernsteinTable, SmallRational};
-use casteljau::{BezierCurve, BigRational, Scalar};
+use casteljau::{BezierCurve, BigInt, BigRational, Scalar};
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 /// A planar curve of degree `n` with small integer control points.
 fn curve(n: usize) -> BezierCurve<BigRational> {
@@ -114,5 +120,92 @@ fn prove_hot(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, exact_eval, prove_hot);
+/// splitmix64, the generator `scripts/exact_big.py` repeats to draw the same numbers.
+struct SplitMix(u64);
+
+impl SplitMix {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// A number of exactly `k ≤ 38` decimal digits.
+    fn digits(&mut self, k: u32) -> u128 {
+        let low = 10u128.pow(k - 1);
+        let wide = (u128::from(self.next()) << 64) | u128::from(self.next());
+        low + wide % (9 * low)
+    }
+}
+
+/// The `exact_big` case of degree `n`: a planar curve whose coordinates are 30-digit
+/// numerators (random signs) over 30-digit denominators, and a 20-digit `t = p/q` in (0, 1).
+fn big_case(n: usize) -> (BezierCurve<BigRational>, BigRational) {
+    let mut rng = SplitMix(1000 + n as u64);
+    let coordinate = |rng: &mut SplitMix| {
+        let magnitude = BigInt::from(rng.digits(30));
+        let numerator = if rng.next() & 1 == 1 { -magnitude } else { magnitude };
+        BigRational::new(numerator, BigInt::from(rng.digits(30)))
+    };
+    let coords: Vec<Vec<BigRational>> = (0..=n)
+        .map(|_| vec![coordinate(&mut rng), coordinate(&mut rng)])
+        .collect();
+    let (mut p, mut q) = (rng.digits(20), rng.digits(20));
+    if p > q {
+        std::mem::swap(&mut p, &mut q);
+    }
+    if p == q {
+        q += 1;
+    }
+    let curve = BezierCurve::from_coords(coords).expect("valid curve");
+    (curve, BigRational::new(p.into(), q.into()))
+}
+
+/// CPU time of this thread so far (the scheduler's count, in nanoseconds); wall time where
+/// the kernel does not expose it.
+fn thread_cpu_time() -> Option<Duration> {
+    let text = std::fs::read_to_string("/proc/thread-self/schedstat").ok()?;
+    Some(Duration::from_nanos(text.split_whitespace().next()?.parse().ok()?))
+}
+
+/// Runs `f` `iters` times and returns the CPU time it took.
+fn cpu_time_of<R>(iters: u64, mut f: impl FnMut() -> R) -> Duration {
+    let (cpu, wall) = (thread_cpu_time(), Instant::now());
+    for _ in 0..iters {
+        black_box(f());
+    }
+    match (cpu, thread_cpu_time()) {
+        (Some(start), Some(end)) => end - start,
+        _ => wall.elapsed(),
+    }
+}
+
+fn exact_big(c: &mut Criterion) {
+    let mut group = c.benchmark_group("exact_big");
+    group
+        .sample_size(10)
+        .measurement_time(Duration::from_secs(3))
+        .warm_up_time(Duration::from_millis(500));
+    for n in [20usize, 200, 1000] {
+        let (curve, t) = big_case(n);
+        group.bench_with_input(BenchmarkId::new("eval", n), &curve, |b, c| {
+            b.iter_custom(|iters| cpu_time_of(iters, || c.eval(black_box(&t))))
+        });
+        // A split reduces 2(n+1) points of up to n·67 + n·100 bits each: at degree 1000, a
+        // minute per call, too long for a bench run (the script's Python peers skip it too).
+        if n <= 200 {
+            group.bench_with_input(BenchmarkId::new("split_at", n), &curve, |b, c| {
+                b.iter_custom(|iters| cpu_time_of(iters, || c.split_at(black_box(&t))))
+            });
+        }
+        group.bench_with_input(BenchmarkId::new("elevate", n), &curve, |b, c| {
+            b.iter_custom(|iters| cpu_time_of(iters, || c.elevate().expect("degree within limit")))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, exact_eval, prove_hot, exact_big);
 criterion_main!(benches);

@@ -44,15 +44,14 @@ fn degree_20() -> [[f64; 2]; 21] {
     std::array::from_fn(|i| [3.0 * i as f64 / 7.0, ((i * i) % 11) as f64 / 7.0 - 5.0 / 7.0])
 }
 
-/// de Casteljau by hand on a fixed array: the floor for the generic code.
+/// de Casteljau by hand on a fixed array, each coordinate written out and updated in place
+/// (no point copied per step): the floor for the generic code.
 fn array_casteljau(points: &[[f64; 2]; 21], t: f64) -> [f64; 2] {
     let mut b = *points;
     for len in (1..21).rev() {
         for i in 0..len {
-            let next = b[i + 1];
-            for (a, c) in b[i].iter_mut().zip(next) {
-                *a += t * (c - *a);
-            }
+            b[i][0] += t * (b[i + 1][0] - b[i][0]);
+            b[i][1] += t * (b[i + 1][1] - b[i][1]);
         }
     }
     b[0]

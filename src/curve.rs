@@ -17,6 +17,7 @@
 
 use crate::bernstein::{bernstein_all, bernstein_to_power, binomial_row, power_to_bernstein, reparametrize};
 use crate::error::{check_degree, Error, Result};
+use crate::exact::dispatch::{curve_back, exact_curve, exact_scalar, point_back, scalar_back};
 use crate::fixed::{elevate_points, split_points};
 use crate::hull::convex_weights;
 use crate::kernel::{de_casteljau, eval_cubic, with_column};
@@ -213,8 +214,16 @@ where
     /// A cubic on floats is evaluated as its nested Bernstein sum instead, fewer operations
     /// and a smaller error (see [`crate::kernel::eval_cubic`]); [`Self::split_at`] joins its
     /// halves at that same point.
+    ///
+    /// Exact rational points are evaluated by the nested Bernstein sum over integers
+    /// ([`BezierCurve::eval_nested`]): the same value, with one reduction at the end.
     #[inline]
     pub fn eval(&self, t: &T) -> P {
+        if T::EXACT {
+            if let Some(p) = self.eval_exact(t) {
+                return p;
+            }
+        }
         // A cubic, the common case, is tested for first and worked on as an array of
         // constant length: no loop, and no other degree's code is inlined here.
         if let Some(points) = self.inline_array::<INLINE_POINTS>() {
@@ -223,10 +232,24 @@ where
         self.eval_any(t)
     }
 
+    /// [`Self::eval`] by de Casteljau's algorithm (1) on the scalar type itself, whatever it
+    /// is (a float cubic by its nested sum, as [`Self::eval`]): the reference the exact
+    /// kernel is tested against.
+    pub fn eval_reference(&self, t: &T) -> P {
+        self.eval_any(t)
+    }
+
+    /// [`Self::eval`] by the fraction-free kernel, when the points are exact rationals.
+    #[cold]
+    fn eval_exact(&self, t: &T) -> Option<P> {
+        let (c, t) = (exact_curve(self)?, exact_scalar(t)?);
+        Some(point_back(c.eval_nested(t)))
+    }
+
     /// [`Self::eval`] for any number of points. Cold, so that the cubic's code is the one
     /// that falls through at the call site.
     #[cold]
-    fn eval_any(&self, t: &T) -> P {
+    pub(crate) fn eval_any(&self, t: &T) -> P {
         if let Ok(points) = <&[P; INLINE_POINTS]>::try_from(&self.points[..]) {
             return eval_cubic(points, t);
         }
@@ -248,8 +271,23 @@ where
 
     /// One step of degree elevation (7): the same curve with `n + 2` control points,
     /// `b'_i = i/(n+1) b_{i-1} + (1 − i/(n+1)) b_i`.
+    ///
+    /// Exact rational points are elevated over integers with one common denominator
+    /// ([`BezierCurve::elevate_fraction_free`]).
     #[inline]
     pub fn elevate(&self) -> Result<Self> {
+        if T::EXACT {
+            if let Some(c) = exact_curve(self) {
+                return Ok(curve_back(c.elevate_fraction_free()?));
+            }
+        }
+        self.elevate_reference()
+    }
+
+    /// [`Self::elevate`] by the steps of (7) on the scalar type itself, whatever it is: the
+    /// reference the exact kernel is tested against.
+    #[inline]
+    pub fn elevate_reference(&self) -> Result<Self> {
         if let Some(points) = self.inline_array::<3>() {
             // A quadratic's cubic fills the inline buffer exactly: written at once, with the
             // weights 1/3 and 2/3 constants (for floats, folded at compile time).
@@ -284,6 +322,16 @@ where
     /// assert!(c.elevate_by(1_000_000_000_000).is_err());
     /// ```
     pub fn elevate_by(&self, r: usize) -> Result<Self> {
+        if T::EXACT {
+            if let Some(c) = exact_curve(self) {
+                return Ok(curve_back(c.elevate_by_fraction_free(r)?));
+            }
+        }
+        self.elevate_by_reference(r)
+    }
+
+    /// [`Self::elevate_by`] on the scalar type itself: the reference for the exact kernel.
+    pub fn elevate_by_reference(&self, r: usize) -> Result<Self> {
         let n = self.degree();
         let total = check_degree("degree after elevation", n as u128 + r as u128)?;
         // Whole rows, not one binomial at a time: C(n+r, i) for every i separately costs
@@ -317,8 +365,31 @@ where
     /// `c2(t) = b(t0 + (1 - t0) t)`, whose control points are the two boundaries of the
     /// scheme (9). Any `t0` works; outside `(0, 1)` the pieces extrapolate. The halves meet
     /// at `self.eval(t0)`, bit for bit on floats too.
+    ///
+    /// Exact rational points are split by de Casteljau's steps over integers
+    /// ([`BezierCurve::split_fraction_free`]), each point reduced once.
     #[inline]
     pub fn split_at(&self, t0: &T) -> (Self, Self) {
+        if T::EXACT {
+            if let Some((left, right)) = self.split_exact(t0) {
+                return (left, right);
+            }
+        }
+        self.split_at_reference(t0)
+    }
+
+    /// [`Self::split_at`] by the fraction-free kernel, when the points are exact rationals.
+    #[cold]
+    fn split_exact(&self, t0: &T) -> Option<(Self, Self)> {
+        let (c, t0) = (exact_curve(self)?, exact_scalar(t0)?);
+        let (left, right) = c.split_fraction_free(t0);
+        Some((curve_back(left), curve_back(right)))
+    }
+
+    /// [`Self::split_at`] by de Casteljau's steps on the scalar type itself, whatever it
+    /// is: the reference the exact kernel is tested against.
+    #[inline]
+    pub fn split_at_reference(&self, t0: &T) -> (Self, Self) {
         // A cubic fills the inline buffer: split as an array of constant length, so that
         // the levels unroll and both halves are written at once.
         if let Some(points) = self.inline_array::<INLINE_POINTS>() {
@@ -367,7 +438,20 @@ where
 
     /// The `k`-th derivative curve `n!/(n-k)! Σ_j Δ^k b_j B_j^{n-k}(t)`, of degree `n - k`.
     /// `k > n` is an error (the derivative is zero, but no curve of degree `n - k` exists).
+    ///
+    /// Exact rational points are differenced over integers
+    /// ([`BezierCurve::derivative_fraction_free`]).
     pub fn derivative(&self, k: usize) -> Result<Self> {
+        if T::EXACT {
+            if let Some(c) = exact_curve(self) {
+                return Ok(curve_back(c.derivative_fraction_free(k)?));
+            }
+        }
+        self.derivative_reference(k)
+    }
+
+    /// [`Self::derivative`] on the scalar type itself: the reference for the exact kernel.
+    pub fn derivative_reference(&self, k: usize) -> Result<Self> {
         let n = self.degree();
         let diffs = self.forward_differences(k)?;
         let mut factor = BigInt::from(1);
@@ -395,6 +479,11 @@ where
     pub fn derivative_at(&self, k: usize, t: &T) -> Result<P> {
         if k > self.degree() {
             return Ok(self.points[0].zero_like());
+        }
+        if T::EXACT {
+            if let (Some(c), Some(t)) = (exact_curve(self), exact_scalar(t)) {
+                return Ok(point_back(c.derivative_at_nested(k, t)));
+            }
         }
         Ok(self.derivative(k)?.eval(t))
     }
@@ -498,8 +587,24 @@ where
         BezierCurve::new(self.points.iter().map(|p| p.try_map(f)).collect::<Result<Vec<_>>>()?)
     }
 
-    /// The whole triangular scheme (9) at `t`.
+    /// The whole triangular scheme (9) at `t`; over integers
+    /// ([`BezierCurve::scheme_fraction_free`]) for exact rationals.
     pub fn scheme(&self, t: &T) -> DeCasteljauScheme<T> {
+        if T::EXACT {
+            let exact = (self as &dyn std::any::Any).downcast_ref::<BezierCurve<BigRational>>();
+            if let (Some(c), Some(t)) = (exact, exact_scalar(t)) {
+                let scheme = c.scheme_fraction_free(t);
+                if let Some(scheme) = scalar_back(scheme) {
+                    return scheme;
+                }
+            }
+        }
+        self.scheme_reference(t)
+    }
+
+    /// [`Self::scheme`] by de Casteljau's steps on the scalar type itself: the reference
+    /// for the exact kernel.
+    pub fn scheme_reference(&self, t: &T) -> DeCasteljauScheme<T> {
         let mut columns = vec![self.points.to_vec()];
         let mut column = self.points.to_vec();
         de_casteljau(&mut column, t, |level| columns.push(level.to_vec()));
@@ -567,53 +672,6 @@ where
             max_norm,
             max_squared,
         }
-    }
-}
-
-impl BezierCurve<BigRational> {
-    /// `b(t)` exactly, by a fraction-free de Casteljau algorithm: the same value as
-    /// [`BezierCurve::eval`], much faster at high degree.
-    ///
-    /// With `t = p/q` and every control point written over one common denominator `D`, the
-    /// steps `c_i ← (q − p) c_i + p c_{i+1}` stay in the integers, and `b(t) = c_0 / (D qⁿ)`.
-    /// The generic algorithm reduces a fraction (a gcd) at every one of its `n(n+1)/2`
-    /// steps per coordinate; this one reduces once at the end.
-    ///
-    /// ```
-    /// use casteljau::{BezierCurve, BigRational, Scalar};
-    /// let c: BezierCurve<BigRational> = BezierCurve::from_ints(&[&[0, 0], &[1, 2], &[3, 0]]).unwrap();
-    /// let t = BigRational::from_ratio(1, 3).unwrap();
-    /// assert_eq!(c.eval_fraction_free(&t), c.eval(&t));
-    /// ```
-    pub fn eval_fraction_free(&self, t: &BigRational) -> Point<BigRational> {
-        use num_integer::Integer;
-        let dim = self.dim();
-        let n = self.degree();
-        let mut denominator = BigInt::from(1);
-        for c in self.points.iter().flat_map(|p| p.coords()) {
-            denominator = denominator.lcm(c.denom());
-        }
-        let (p, q) = (t.numer(), t.denom());
-        let s = q - p;
-        let mut buf: Vec<BigInt> = self
-            .points
-            .iter()
-            .flat_map(|pt| pt.coords().iter().map(|c| c.numer() * (&denominator / c.denom())))
-            .collect();
-        for r in 1..=n {
-            for i in 0..=n - r {
-                for k in 0..dim {
-                    buf[i * dim + k] = &s * &buf[i * dim + k] + p * &buf[(i + 1) * dim + k];
-                }
-            }
-        }
-        let scale = denominator * num_traits::pow(q.clone(), n);
-        let coords = buf
-            .into_iter()
-            .take(dim)
-            .map(|c| BigRational::new(c, scale.clone()))
-            .collect();
-        Point::new(coords).expect("dimension checked at construction")
     }
 }
 

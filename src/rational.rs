@@ -186,8 +186,24 @@ where
 
     /// `x(t) = Σ w_i b_i B_i(t) / Σ w_i B_i(t)` by de Casteljau on the homogeneous points,
     /// then projection. An error when `w(t) = 0`. Defined for every `t`, not only `[0, 1]`.
+    ///
+    /// Exact rationals take the nested sum over integers
+    /// ([`RationalBezierCurve::eval_nested`]): one reduction per coordinate, no division.
     pub fn eval(&self, t: &T) -> Result<Point<T>> {
-        self.project(&self.homogeneous.eval(t), t)
+        if T::EXACT {
+            let exact = (self as &dyn std::any::Any).downcast_ref::<RationalBezierCurve<BigRational>>();
+            if let (Some(c), Some(t)) = (exact, crate::exact::dispatch::exact_scalar(t)) {
+                let point = c.eval_nested(t)?;
+                return Ok(crate::exact::dispatch::scalar_back(point).expect("T is BigRational"));
+            }
+        }
+        self.eval_reference(t)
+    }
+
+    /// [`Self::eval`] by de Casteljau's steps on the scalar type itself: the reference the
+    /// exact kernel is tested against.
+    pub fn eval_reference(&self, t: &T) -> Result<Point<T>> {
+        self.project(&self.homogeneous.eval_reference(t), t)
     }
 
     /// The central projection `(x, w) ↦ x / w` of a homogeneous point of this curve at `t`.

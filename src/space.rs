@@ -16,7 +16,7 @@ use std::str::FromStr;
 /// by reference so that exact coordinates are not cloned needlessly.
 ///
 /// Points and vectors share one type (a curve's derivative is a curve of vectors).
-pub trait VectorSpace: Clone + PartialEq + fmt::Debug {
+pub trait VectorSpace: Clone + PartialEq + fmt::Debug + 'static {
     /// The coordinate type.
     type Scalar;
 

@@ -1,21 +1,23 @@
-//! Fraction-free exact kernels: integers over one common denominator, one reduction at the end.
+//! Fraction-free exact kernels: integers over a common denominator, one reduction at the end.
 //!
-//! The generic algorithms run on [`BigRational`] and reduce a fraction (a big-integer gcd) at
-//! every step. Here the control points are first written over one common denominator `D`, a
-//! parameter `t = p/q` stays the pair of integers `(p, q)`, and every step is integer
-//! arithmetic; each output coordinate is reduced once. The integers are machine words
-//! (`i128`, every operation overflow-checked) while they fit; on the first overflow the whole
-//! kernel runs again on [`BigInt`]. Results are the same values as the generic path, so they
-//! are compared with `==` against it in the tests.
+//! The generic algorithms on [`BigRational`] reduce a fraction (a big-integer gcd) at every
+//! step. Here the values of each coordinate are first written over their common denominator
+//! `D`, a parameter `t = p/q` stays the pair of integers `(p, q)`, and every step is integer
+//! arithmetic; each output coordinate is reduced once, part by part ([`crate::exact::gcd`]).
+//! The integers are machine words (`i128`, every operation overflow-checked) while they fit;
+//! on the first overflow the whole kernel runs again on [`BigInt`] (one elevation step then
+//! combines neighbouring points pairwise instead). The public generic methods choose these
+//! kernels for exact rationals (`exact::dispatch`); the tests compare them with `==`
+//! against the step-by-step `*_reference` methods.
 //!
-//! | kernel | here | generic reference |
+//! | kernel | here | reference |
 //! |---|---|---|
-//! | one point, O(n) nested Bernstein sum | [`BezierCurve::eval_nested`] | [`BezierCurve::eval`] |
-//! | derivative vector at `t` | [`BezierCurve::derivative_at_nested`] | [`BezierCurve::derivative_at`] |
-//! | de Casteljau triangle, subdivision | [`BezierCurve::scheme_fraction_free`], [`BezierCurve::split_fraction_free`] | [`BezierCurve::scheme`], [`BezierCurve::split_at`] |
-//! | degree elevation (7), (8) | [`BezierCurve::elevate_fraction_free`], [`BezierCurve::elevate_by_fraction_free`] | [`BezierCurve::elevate`], [`BezierCurve::elevate_by`] |
-//! | derivative curve | [`BezierCurve::derivative_fraction_free`] | [`BezierCurve::derivative`] |
-//! | rational curve point | [`RationalBezierCurve::eval_nested`] | [`RationalBezierCurve::eval`] |
+//! | one point, O(n) nested Bernstein sum | [`BezierCurve::eval_nested`] | [`BezierCurve::eval_reference`] |
+//! | derivative vector at `t` | [`BezierCurve::derivative_at_nested`] | [`BezierCurve::derivative_reference`] then [`BezierCurve::eval_reference`] |
+//! | de Casteljau triangle, subdivision | [`BezierCurve::scheme_fraction_free`], [`BezierCurve::split_fraction_free`] | [`BezierCurve::scheme_reference`], [`BezierCurve::split_at_reference`] |
+//! | degree elevation (7), (8) | [`BezierCurve::elevate_fraction_free`], [`BezierCurve::elevate_by_fraction_free`] | [`BezierCurve::elevate_reference`], [`BezierCurve::elevate_by_reference`] |
+//! | derivative curve | [`BezierCurve::derivative_fraction_free`] | [`BezierCurve::derivative_reference`] |
+//! | rational curve point | [`RationalBezierCurve::eval_nested`] | [`RationalBezierCurve::eval_reference`] |
 //! | surface point | [`BezierSurface::eval_nested`] | [`BezierSurface::eval`] |
 //!
 //! The nested evaluation (Volk–Schumaker, Horner in Bernstein form) of `t = p/q`, `s = q − p`:
@@ -26,6 +28,7 @@
 
 use crate::curve::{BezierCurve, DeCasteljauScheme};
 use crate::error::{check_degree, Error, Result};
+use crate::exact::gcd::{self, Part};
 use crate::exact::small_rational::gcd_u128;
 use crate::point::Point;
 use crate::rational::RationalBezierCurve;
@@ -33,7 +36,7 @@ use crate::surface::BezierSurface;
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
-use num_traits::{ToPrimitive, Zero};
+use num_traits::{Signed, ToPrimitive, Zero};
 
 /// The integers a kernel runs on: `i128` with checked arithmetic (`None` on overflow) or
 /// [`BigInt`] (never `None`).
@@ -61,6 +64,10 @@ pub(crate) trait Int: Clone + Sized {
     }
     /// The reduced rational `num / den`, `den ≠ 0`.
     fn ratio(num: Self, den: Self) -> BigRational;
+    /// The reduced rational `num / (den · base^e)`, `den, base > 0`; `None` on overflow.
+    fn ratio_over_power(num: Self, den: &Self, base: &Self, e: usize) -> Option<BigRational> {
+        Some(Self::ratio(num, den.mul(&power(base, e)?)?))
+    }
     fn into_big(self) -> BigInt;
 }
 
@@ -145,7 +152,7 @@ impl Int for BigInt {
         self / o
     }
     fn lcm(&self, o: &Self) -> Option<Self> {
-        Some(Integer::lcm(self, o))
+        Some(gcd::lcm_int(self, o))
     }
     fn step(&mut self, s: &Self, c: &Self, x: &Self) -> Option<()> {
         // In place: one temporary for c·x instead of three fresh integers.
@@ -154,7 +161,12 @@ impl Int for BigInt {
         Some(())
     }
     fn ratio(num: Self, den: Self) -> BigRational {
-        BigRational::new(num, den)
+        // A rational curve's weight w(t) may be negative: the sign goes to the numerator.
+        let (num, den) = if den.is_negative() { (-num, -den) } else { (num, den) };
+        gcd::reduce(num, &[Part::Number(&den)])
+    }
+    fn ratio_over_power(num: Self, den: &Self, base: &Self, e: usize) -> Option<BigRational> {
+        Some(gcd::reduce(num, &[Part::Power(base, e), Part::Number(den)]))
     }
     fn into_big(self) -> BigInt {
         self
@@ -275,12 +287,27 @@ fn coordinates(points: &[Point<BigRational>]) -> impl Iterator<Item = &BigRation
     points.iter().flat_map(|p| p.coords())
 }
 
+/// The values of coordinate `k` of the points.
+fn coordinate(points: &[Point<BigRational>], k: usize) -> impl Iterator<Item = &BigRational> {
+    points.iter().map(move |p| &p.coords()[k])
+}
+
+/// The point whose coordinate `k` is `each(k)`.
+fn point_by_coordinate(dim: usize, each: impl FnMut(usize) -> Option<BigRational>) -> Option<Point<BigRational>> {
+    let coords = (0..dim).map(each).collect::<Option<Vec<_>>>()?;
+    Some(Point::new(coords).expect("as many coordinates as a valid point"))
+}
+
+// One coordinate at a time, each over its own common denominator: with unrelated
+// denominators in the coordinates, a denominator shared by all would be their product,
+// and every integer of the sum that much longer.
 fn curve_eval<I: Int>(c: &BezierCurve<BigRational>, t: &BigRational) -> Option<Point<BigRational>> {
     let (p, q, s) = parameter::<I>(t)?;
-    let x = common_denominator::<I>(coordinates(c.points()))?;
-    let acc = nested_sum(&x.nums, c.dim(), &p, &s)?;
-    let den = x.den.mul(&power(&q, c.degree())?)?;
-    Some(point_over(acc, &den))
+    point_by_coordinate(c.dim(), |k| {
+        let x = common_denominator::<I>(coordinate(c.points(), k))?;
+        let acc = nested_sum(&x.nums, 1, &p, &s)?.pop()?;
+        I::ratio_over_power(acc, &x.den, &q, c.degree())
+    })
 }
 
 /// The `k`-th forward differences of the flat vectors `x` (`dim` integers each).
@@ -300,17 +327,15 @@ fn falling_factorial<I: Int>(n: usize, k: usize) -> Option<I> {
 }
 
 fn curve_derivative_at<I: Int>(c: &BezierCurve<BigRational>, k: usize, t: &BigRational) -> Option<Point<BigRational>> {
-    let (n, dim) = (c.degree(), c.dim());
+    let n = c.degree();
     let (p, q, s) = parameter::<I>(t)?;
-    let x = common_denominator::<I>(coordinates(c.points()))?;
-    let diffs = differences(x.nums, dim, k)?;
     let factor = falling_factorial::<I>(n, k)?;
-    let acc = nested_sum(&diffs, dim, &p, &s)?
-        .iter()
-        .map(|a| a.mul(&factor))
-        .collect::<Option<Vec<_>>>()?;
-    let den = x.den.mul(&power(&q, n - k)?)?;
-    Some(point_over(acc, &den))
+    point_by_coordinate(c.dim(), |j| {
+        let x = common_denominator::<I>(coordinate(c.points(), j))?;
+        let diffs = differences(x.nums, 1, k)?;
+        let acc = nested_sum(&diffs, 1, &p, &s)?.pop()?.mul(&factor)?;
+        I::ratio_over_power(acc, &x.den, &q, n - k)
+    })
 }
 
 fn curve_derivative<I: Int>(c: &BezierCurve<BigRational>, k: usize) -> Option<Vec<Point<BigRational>>> {
@@ -330,47 +355,93 @@ fn curve_derivative<I: Int>(c: &BezierCurve<BigRational>, k: usize) -> Option<Ve
 /// The columns of the fraction-free de Casteljau triangle: calls `visit(r, column, den)` for
 /// `r = 0..=n`, where `column` holds the `n − r + 1` points `b_i^r(t)` as numerators over
 /// `den = D q^r`.
+/// The columns of the fraction-free de Casteljau triangle of coordinate `k`: calls
+/// `visit(r, column, den, q)` for `r = 0..=n`, where `column` holds the `n − r + 1` values
+/// `b_i^r(t)` as numerators over `den · q^r`.
 fn casteljau_columns<I: Int>(
     c: &BezierCurve<BigRational>,
+    k: usize,
     t: &BigRational,
-    mut visit: impl FnMut(usize, &[I], &I),
+    mut visit: impl FnMut(usize, &[I], &I, &I) -> Option<()>,
 ) -> Option<()> {
-    let (n, dim) = (c.degree(), c.dim());
+    let n = c.degree();
     let (p, q, s) = parameter::<I>(t)?;
-    let x = common_denominator::<I>(coordinates(c.points()))?;
+    let x = common_denominator::<I>(coordinate(c.points(), k))?;
     let mut buf = x.nums;
-    let mut den = x.den;
-    visit(0, &buf, &den);
+    visit(0, &buf, &x.den, &q)?;
     for r in 1..=n {
-        for j in 0..(n + 1 - r) * dim {
-            let next = buf[j + dim].clone();
+        for j in 0..n + 1 - r {
+            let next = buf[j + 1].clone();
             buf[j].step(&s, &p, &next)?;
         }
-        den = den.mul(&q)?;
-        visit(r, &buf[..(n + 1 - r) * dim], &den);
+        visit(r, &buf[..n + 1 - r], &x.den, &q)?;
     }
     Some(())
 }
 
+/// Points from the values `values[i][k]` of coordinate `k` of point `i`.
+fn transpose(values: Vec<Vec<BigRational>>, count: usize) -> Points {
+    let mut points: Vec<Vec<BigRational>> = (0..count).map(|_| Vec::with_capacity(values.len())).collect();
+    for column in values {
+        for (point, v) in points.iter_mut().zip(column) {
+            point.push(v);
+        }
+    }
+    points
+        .into_iter()
+        .map(|coords| Point::new(coords).expect("as many coordinates as a valid point"))
+        .collect()
+}
+
 fn curve_split<I: Int>(c: &BezierCurve<BigRational>, t: &BigRational) -> Option<(Points, Points)> {
     let (n, dim) = (c.degree(), c.dim());
-    let mut left = Vec::with_capacity(n + 1);
-    let mut right = Vec::with_capacity(n + 1);
-    casteljau_columns::<I>(c, t, |r, column, den| {
-        left.push(point_over(column[..dim].to_vec(), den));
-        right.push(point_over(column[(n - r) * dim..].to_vec(), den));
-    })?;
-    right.reverse();
-    Some((left, right))
+    let mut left = Vec::with_capacity(dim);
+    let mut right = Vec::with_capacity(dim);
+    for k in 0..dim {
+        let (mut l, mut r) = (Vec::with_capacity(n + 1), Vec::with_capacity(n + 1));
+        casteljau_columns::<I>(c, k, t, |level, column, den, q| {
+            l.push(I::ratio_over_power(column[0].clone(), den, q, level)?);
+            r.push(I::ratio_over_power(column[n - level].clone(), den, q, level)?);
+            Some(())
+        })?;
+        r.reverse();
+        left.push(l);
+        right.push(r);
+    }
+    Some((transpose(left, n + 1), transpose(right, n + 1)))
 }
 
 fn curve_scheme<I: Int>(c: &BezierCurve<BigRational>, t: &BigRational) -> Option<Vec<Vec<Point<BigRational>>>> {
-    let dim = c.dim();
-    let mut columns = Vec::with_capacity(c.degree() + 1);
-    casteljau_columns::<I>(c, t, |_, column, den| {
-        columns.push(column.chunks_exact(dim).map(|v| point_over(v.to_vec(), den)).collect());
-    })?;
-    Some(columns)
+    let (n, dim) = (c.degree(), c.dim());
+    // values[k][r][i]: coordinate k of b_i^r.
+    let mut values = Vec::with_capacity(dim);
+    for k in 0..dim {
+        let mut columns = Vec::with_capacity(n + 1);
+        casteljau_columns::<I>(c, k, t, |r, column, den, q| {
+            let den = den.mul(&power(q, r)?)?;
+            columns.push(
+                column
+                    .iter()
+                    .map(|v| I::ratio(v.clone(), den.clone()))
+                    .collect::<Vec<_>>(),
+            );
+            Some(())
+        })?;
+        values.push(columns);
+    }
+    Some(
+        (0..=n)
+            .map(|r| {
+                transpose(
+                    values
+                        .iter_mut()
+                        .map(|columns| std::mem::take(&mut columns[r]))
+                        .collect(),
+                    n + 1 - r,
+                )
+            })
+            .collect(),
+    )
 }
 
 /// `C(m, 0), …, C(m, m)`, checked.
@@ -404,6 +475,30 @@ fn curve_elevate_by<I: Int>(c: &BezierCurve<BigRational>, r: usize) -> Option<Ve
         out.push(point_over(acc, &x.den.mul(total)?));
     }
     Some(out)
+}
+
+/// One elevation step (7) point by point, each coordinate over the common denominator of
+/// the two values it combines: for big integers, where one denominator for the whole
+/// curve would make every output as long as all the inputs together.
+fn curve_elevate_pairwise(c: &BezierCurve<BigRational>) -> Vec<Point<BigRational>> {
+    let points = c.points();
+    let n = points.len() - 1;
+    let n1 = BigInt::from(n + 1);
+    let mut out = Vec::with_capacity(n + 2);
+    out.push(points[0].clone());
+    for i in 1..=n {
+        let (before, here) = (points[i - 1].coords(), points[i].coords());
+        let coords = before.iter().zip(here).map(|(a, b)| {
+            // (i a + (n+1−i) b) / (n+1) with a = x/d, b = y/e over lcm(d, e) = L.
+            let l = gcd::lcm_int(a.denom(), b.denom());
+            let x = a.numer() * (&l / a.denom()) * i;
+            let y = b.numer() * (&l / b.denom()) * (n + 1 - i);
+            gcd::reduce(x + y, &[Part::Number(&l), Part::Number(&n1)])
+        });
+        out.push(Point::new(coords.collect()).expect("as many coordinates as a valid point"));
+    }
+    out.push(points[n].clone());
+    out
 }
 
 fn curve_elevate<I: Int>(c: &BezierCurve<BigRational>) -> Option<Vec<Point<BigRational>>> {
@@ -543,7 +638,8 @@ impl BezierCurve<BigRational> {
     /// One degree elevation step (7) over integers; equals [`BezierCurve::elevate`].
     pub fn elevate_fraction_free(&self) -> Result<Self> {
         check_degree("degree after elevation", self.degree() as u128 + 1)?;
-        BezierCurve::new(words_then_big(|tier| on_tier!(tier, curve_elevate(self))))
+        let points = curve_elevate::<i128>(self).unwrap_or_else(|| curve_elevate_pairwise(self));
+        BezierCurve::new(points)
     }
 
     /// `r` elevation steps by the closed form (8) over integers; equals
@@ -551,6 +647,52 @@ impl BezierCurve<BigRational> {
     pub fn elevate_by_fraction_free(&self, r: usize) -> Result<Self> {
         check_degree("degree after elevation", self.degree() as u128 + r as u128)?;
         BezierCurve::new(words_then_big(|tier| on_tier!(tier, curve_elevate_by(self, r))))
+    }
+}
+
+impl BezierCurve<BigRational> {
+    /// `b(t)` exactly, by a fraction-free de Casteljau algorithm: the same value as
+    /// [`BezierCurve::eval`], much faster at high degree.
+    ///
+    /// With `t = p/q` and every control point written over one common denominator `D`, the
+    /// steps `c_i ← (q − p) c_i + p c_{i+1}` stay in the integers, and `b(t) = c_0 / (D qⁿ)`.
+    /// The generic algorithm reduces a fraction (a gcd) at every one of its `n(n+1)/2`
+    /// steps per coordinate; this one reduces once at the end.
+    ///
+    /// ```
+    /// use casteljau::{BezierCurve, BigRational, Scalar};
+    /// let c: BezierCurve<BigRational> = BezierCurve::from_ints(&[&[0, 0], &[1, 2], &[3, 0]]).unwrap();
+    /// let t = BigRational::from_ratio(1, 3).unwrap();
+    /// assert_eq!(c.eval_fraction_free(&t), c.eval(&t));
+    /// ```
+    pub fn eval_fraction_free(&self, t: &BigRational) -> Point<BigRational> {
+        let dim = self.dim();
+        let n = self.degree();
+        let mut denominator = BigInt::from(1);
+        for c in self.points().iter().flat_map(|p| p.coords()) {
+            denominator = Integer::lcm(&denominator, c.denom());
+        }
+        let (p, q) = (t.numer(), t.denom());
+        let s = q - p;
+        let mut buf: Vec<BigInt> = self
+            .points()
+            .iter()
+            .flat_map(|pt| pt.coords().iter().map(|c| c.numer() * (&denominator / c.denom())))
+            .collect();
+        for r in 1..=n {
+            for i in 0..=n - r {
+                for k in 0..dim {
+                    buf[i * dim + k] = &s * &buf[i * dim + k] + p * &buf[(i + 1) * dim + k];
+                }
+            }
+        }
+        let scale = denominator * num_traits::pow(q.clone(), n);
+        let coords = buf
+            .into_iter()
+            .take(dim)
+            .map(|c| BigRational::new(c, scale.clone()))
+            .collect();
+        Point::new(coords).expect("dimension checked at construction")
     }
 }
 

@@ -7,10 +7,14 @@
 //! - [`fraction_free`]: eval, derivatives, scheme, split, elevation, rational curves and
 //!   surfaces over integers with one common denominator and one reduction at the end;
 //! - [`basis_table`]: [`BernsteinTable`], Bernstein rows at integer and rational parameters,
-//!   computed once and shared across threads.
+//!   computed once and shared across threads;
+//! - [`gcd`]: Lehmer's gcd and the part-by-part reduction the kernels end with;
+//! - `dispatch`: how the public generic methods hand exact rationals to the kernels.
 
 pub mod basis_table;
+pub(crate) mod dispatch;
 pub mod fraction_free;
+pub mod gcd;
 pub mod small_rational;
 
 pub use basis_table::{BernsteinTable, RationalBasisRow};

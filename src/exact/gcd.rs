@@ -1,0 +1,199 @@
+//! The greatest common divisor of big integers, and the one reduction a fraction-free kernel
+//! does at its end.
+//!
+//! num-bigint's `gcd` is Stein's binary algorithm without a first division: the gcd of a
+//! 40,000-bit and a 100-bit number takes 40,000 big subtractions, which made the common
+//! denominator of a few hundred 30-digit denominators, and the final reduction, the whole
+//! cost of an exact evaluation. Here unbalanced operands are divided first, balanced ones
+//! run Lehmer's algorithm (a 64-bit Euclid on the leading bits, applied to the big numbers
+//! as one 2×2 matrix of word-sized cofactors), and a denominator known as a product of
+//! parts (`D qⁿ`) is reduced part by part, which is never more work and usually far less.
+
+use crate::exact::small_rational::gcd_u128;
+use num_bigint::{BigInt, BigUint, Sign};
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{One, ToPrimitive, Zero};
+
+/// The leading 64 bits of `x` shifted right by `shift` (`x >> shift` truncated to a word).
+fn word_at(x: &BigUint, shift: u64) -> u64 {
+    let (digit, bit) = ((shift / 64) as usize, shift % 64);
+    let mut digits = x.iter_u64_digits().skip(digit);
+    let low = digits.next().unwrap_or(0);
+    let high = digits.next().unwrap_or(0);
+    if bit == 0 {
+        low
+    } else {
+        (low >> bit) | (high << (64 - bit))
+    }
+}
+
+/// Cofactors `(A, B, C, D)` of Lehmer's inner Euclid on the leading words `x ≥ y` of two
+/// big numbers: while the quotients agree for both ends of the words' uncertainty, they are
+/// the quotients of the big numbers too (Knuth, TAOCP vol. 2, Algorithm 4.5.2L).
+fn lehmer_cofactors(x: u64, y: u64) -> (i128, i128, i128, i128) {
+    let (mut x, mut y) = (i128::from(x), i128::from(y));
+    let (mut a, mut b, mut c, mut d) = (1i128, 0i128, 0i128, 1i128);
+    while y + c != 0 && y + d != 0 {
+        let q = (x + a) / (y + c);
+        if q != (x + b) / (y + d) {
+            break;
+        }
+        (a, c) = (c, a - q * c);
+        (b, d) = (d, b - q * d);
+        (x, y) = (y, x - q * y);
+    }
+    (a, b, c, d)
+}
+
+/// `|u x + v y|` for cofactors of opposite signs (or zero), where the result is known to be
+/// nonnegative.
+fn combine(x: &BigUint, u: i128, y: &BigUint, v: i128) -> BigUint {
+    let (ux, vy) = (x * u.unsigned_abs(), y * v.unsigned_abs());
+    if v <= 0 {
+        ux - vy
+    } else {
+        vy - ux
+    }
+}
+
+/// `gcd(a, b)` of natural numbers.
+pub fn gcd(a: &BigUint, b: &BigUint) -> BigUint {
+    let (mut a, mut b) = if a >= b {
+        (a.clone(), b.clone())
+    } else {
+        (b.clone(), a.clone())
+    };
+    loop {
+        if b.is_zero() {
+            return a;
+        }
+        if let (Some(x), Some(y)) = (a.to_u128(), b.to_u128()) {
+            return BigUint::from(gcd_u128(x, y));
+        }
+        // Operands a word or more apart in length: one division brings them together.
+        if a.bits() > b.bits() + 32 {
+            a %= &b;
+            std::mem::swap(&mut a, &mut b);
+            continue;
+        }
+        let shift = a.bits().saturating_sub(64);
+        let (x, y) = (word_at(&a, shift), word_at(&b, shift));
+        let (ca, cb, cc, cd) = lehmer_cofactors(x, y);
+        if cb == 0 {
+            a %= &b;
+            std::mem::swap(&mut a, &mut b);
+        } else {
+            let next_a = combine(&a, ca, &b, cb);
+            b = combine(&a, cc, &b, cd);
+            a = next_a;
+        }
+    }
+}
+
+/// `gcd(a, b)` of integers, nonnegative.
+pub fn gcd_int(a: &BigInt, b: &BigInt) -> BigInt {
+    BigInt::from_biguint(Sign::Plus, gcd(a.magnitude(), b.magnitude()))
+}
+
+/// `lcm(a, b)` of positive integers.
+pub fn lcm_int(a: &BigInt, b: &BigInt) -> BigInt {
+    let g = gcd_int(a, b);
+    if g.is_one() {
+        a * b
+    } else {
+        a / g * b
+    }
+}
+
+/// One factor of a denominator: a number, or a power `base^exponent` (kept unexpanded, so
+/// that a parameter's `qⁿ` is tested against its base first).
+pub enum Part<'a> {
+    /// The factor itself.
+    Number(&'a BigInt),
+    /// `base^exponent`.
+    Power(&'a BigInt, usize),
+}
+
+/// `num / Π parts` in lowest terms with a positive denominator; the parts are positive.
+///
+/// Each part is reduced against what is left of the numerator: after part `j`, the two
+/// share no prime (a prime in both would divide their gcd, which was divided out), and
+/// later parts only shrink the numerator, so the product of the remainders is the reduced
+/// denominator. A power whose base is prime to the numerator is skipped whole.
+pub fn reduce(mut num: BigInt, parts: &[Part<'_>]) -> BigRational {
+    let mut den = BigInt::one();
+    for part in parts {
+        let mut left = match part {
+            Part::Number(d) => (*d).clone(),
+            Part::Power(base, e) => {
+                if num.is_zero() || gcd_int(&num, base).is_one() {
+                    den *= num_traits::pow((*base).clone(), *e);
+                    continue;
+                }
+                num_traits::pow((*base).clone(), *e)
+            }
+        };
+        if !num.is_zero() {
+            let g = gcd_int(&num, &left);
+            if !g.is_one() {
+                num = num.div_floor(&g);
+                left = left.div_floor(&g);
+            }
+        }
+        den *= left;
+    }
+    if num.is_zero() {
+        return BigRational::new_raw(num, BigInt::one());
+    }
+    BigRational::new_raw(num, den)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn big(digits: &[u64]) -> BigUint {
+        BigUint::from_slice(
+            &digits
+                .iter()
+                .flat_map(|d| [*d as u32, (*d >> 32) as u32])
+                .collect::<Vec<_>>(),
+        )
+    }
+
+    proptest! {
+        /// Against num-bigint's own gcd, on numbers with common factors, near-equal lengths
+        /// (Lehmer's steps) and very different ones (the first division).
+        #[test]
+        fn gcd_is_num_bigints(
+            a in proptest::collection::vec(any::<u64>(), 0..12),
+            b in proptest::collection::vec(any::<u64>(), 0..12),
+            c in proptest::collection::vec(any::<u64>(), 0..4),
+        ) {
+            let (a, b, c) = (big(&a), big(&b), big(&c));
+            let (x, y) = (&a * &c, &b * &c);
+            prop_assert_eq!(gcd(&x, &y), Integer::gcd(&x, &y));
+            prop_assert_eq!(gcd(&a, &b), Integer::gcd(&a, &b));
+            prop_assert_eq!(gcd(&x, &b), Integer::gcd(&x, &b));
+        }
+
+        /// The reduction part by part is `BigRational::new` on the product.
+        #[test]
+        fn reduce_is_lowest_terms(
+            n in any::<i64>(), m in proptest::collection::vec(1u64..1000, 1..5),
+            base in 1u64..50, e in 0usize..6,
+        ) {
+            let num = BigInt::from(n) * BigInt::from(base).pow(3) * BigInt::from(m[0]);
+            let parts: Vec<BigInt> = m.iter().map(|&d| BigInt::from(d)).collect();
+            let b = BigInt::from(base);
+            let mut list: Vec<Part<'_>> = parts.iter().map(Part::Number).collect();
+            list.push(Part::Power(&b, e));
+            let den = parts.iter().product::<BigInt>() * b.pow(e as u32);
+            let r = reduce(num.clone(), &list);
+            prop_assert_eq!(&r, &BigRational::new(num.clone(), den.clone()));
+            prop_assert_eq!(format!("{r:?}"), format!("{:?}", BigRational::new(num, den)));
+        }
+    }
+}
