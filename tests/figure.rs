@@ -287,7 +287,8 @@ fn elevation_distances_are_the_library_s() {
     // the figure sums Bernstein terms itself; the notes must be elevation_distance's values
     let c = curve(&[&[0, 0], &[1, 5], &[6, 4], &[7, -1], &[4, -2]]);
     let fig = figure::elevation(&c, &[1, 3, 7]).unwrap();
-    let notes = fig.notes().join("\n");
+    // a long note is wrapped onto an indented next line
+    let notes = fig.notes().join("\n").replace("\n    ", " ");
     for r in [0, 1, 3, 7] {
         let d = c.elevation_distance(r).unwrap();
         let needle = format!("max_i |b_i^({r}) − b(i/{})|∞ = {}", 4 + r, d.max_norm);

@@ -247,3 +247,26 @@ fn the_certificate_search_stops_at_its_budget_and_says_where() {
     );
     assert!(start.elapsed().as_secs() < 10, "{:?}", start.elapsed());
 }
+
+#[test]
+fn an_undecided_claim_does_not_hide_the_others() {
+    use casteljau::verify::prove_files;
+    let file = parse_file(
+        "[[claim]]\nid = \"a\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\nfor = [\"n = 0..\"]\nlhs = \"sum(k, 0, n, k)\"\nrhs = \"n*(n+1)/2\"\n\n\
+         [[claim]]\nid = \"b\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\nfor = [\"n = 0..\"]\nlhs = \"diff(sum(k, 0, n, k), n)\"\nrhs = \"0\"\n\n\
+         [[claim]]\nid = \"c\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\nvars = [\"t\"]\nlhs = \"(1 - t) + t\"\nrhs = \"2\"\nexpect = \"fails\"\n",
+        Path::new("mixed.toml"),
+    )
+    .unwrap();
+    let report = prove_files(&[file], &mut |_, _, _| {}).unwrap();
+    let verdicts: Vec<Verdict> = report.outcomes.iter().map(|o| o.verdict).collect();
+    assert_eq!(verdicts, [Verdict::Proved, Verdict::Error, Verdict::Fails]);
+    assert!(report.outcomes[1].certificate.contains("cannot differentiate by n"));
+    let text = report.to_text();
+    assert!(text.contains("[error] b"), "{text}");
+    assert!(
+        text.contains("claims not decided (error, each with its reason): b"),
+        "{text}"
+    );
+    assert_eq!(report.to_json()["summary"]["undecided"][0], "b");
+}

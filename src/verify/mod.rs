@@ -205,8 +205,7 @@ pub fn prove_files(files: &[claims::ClaimFile], progress: &mut dyn FnMut(usize, 
 
 fn check_one(f: &claims::ClaimFile, c: &claims::Claim) -> Result<ClaimOutcome> {
     // A claim that cannot be decided is reported as such; it never hides the others.
-    let checked = kinds::check_claim(c, false)
-        .unwrap_or_else(|e| engine::Checked::new(Verdict::Error, e.to_string()));
+    let checked = kinds::check_claim(c, false).unwrap_or_else(|e| engine::Checked::new(Verdict::Error, e.to_string()));
     let range_bound = scope::range_bound(c, checked.verdict);
     Ok(ClaimOutcome {
         id: c.id.clone(),

@@ -1024,6 +1024,7 @@ fn refute_in_search(claim: &Claim, reason: Error) -> Result<Checked> {
                 return Ok(out);
             }
             Ok(_) => tried = extra + 1,
+            Err(_) if tried == 0 => return Err(reason),
             Err(_) => {
                 stop = "the values the evaluator reaches";
                 break;
