@@ -399,8 +399,21 @@ pub fn filtered_conic_kind(c: &RationalBezierCurve<f64>) -> Result<ConicKind> {
 
 /// The orientation of `p, q, r` in the plane (the sign of `(q − p) × (r − p)`), decided with
 /// intervals and exactly only when the interval straddles zero: `Greater` counter-clockwise,
-/// `Less` clockwise, `Equal` collinear.
-pub fn filtered_orientation(p: [f64; 2], q: [f64; 2], r: [f64; 2]) -> Ordering {
+/// `Less` clockwise, `Equal` collinear. A coordinate that is ±inf or NaN is an error (the
+/// orientation of such points has no exact answer).
+pub fn filtered_orientation(p: [f64; 2], q: [f64; 2], r: [f64; 2]) -> Result<Ordering> {
+    finite(&[p, q, r])?;
+    Ok(orientation_of_finite(p, q, r))
+}
+
+fn finite(points: &[[f64; 2]]) -> Result<()> {
+    match points.iter().flatten().find(|x| !x.is_finite()) {
+        Some(x) => Err(Error::NotFinite(x.to_string())),
+        None => Ok(()),
+    }
+}
+
+fn orientation_of_finite(p: [f64; 2], q: [f64; 2], r: [f64; 2]) -> Ordering {
     let i = |x: f64| Interval { lo: x, hi: x };
     let det = (i(q[0]) - i(p[0])) * (i(r[1]) - i(p[1])) - (i(q[1]) - i(p[1])) * (i(r[0]) - i(p[0]));
     if let Some(s) = det.sign() {
@@ -429,18 +442,21 @@ pub fn filtered_orientation(p: [f64; 2], q: [f64; 2], r: [f64; 2]) -> Ordering {
 /// ```
 /// use casteljau::interval::filtered_hull_contains;
 /// let tri = [[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]];
-/// assert!(filtered_hull_contains(&tri, [1.0, 1.0]));
-/// assert!(filtered_hull_contains(&tri, [2.0, 2.0])); // on the edge, decided exactly
-/// assert!(!filtered_hull_contains(&tri, [2.0, 2.0000000000000004]));
+/// assert!(filtered_hull_contains(&tri, [1.0, 1.0]).unwrap());
+/// assert!(filtered_hull_contains(&tri, [2.0, 2.0]).unwrap()); // on the edge, decided exactly
+/// assert!(!filtered_hull_contains(&tri, [2.0, 2.0000000000000004]).unwrap());
+/// assert!(filtered_hull_contains(&tri, [f64::NAN, 0.0]).is_err());
 /// ```
-pub fn filtered_hull_contains(points: &[[f64; 2]], p: [f64; 2]) -> bool {
+pub fn filtered_hull_contains(points: &[[f64; 2]], p: [f64; 2]) -> Result<bool> {
+    finite(points)?;
+    finite(&[p])?;
     if points.contains(&p) {
-        return true;
+        return Ok(true);
     }
     for &b in points {
         let mut all_left = true;
         for &c in points {
-            match filtered_orientation(p, b, c) {
+            match orientation_of_finite(p, b, c) {
                 Ordering::Greater => {}
                 Ordering::Less => {
                     all_left = false;
@@ -458,10 +474,10 @@ pub fn filtered_hull_contains(points: &[[f64; 2]], p: [f64; 2]) -> bool {
             }
         }
         if all_left {
-            return false;
+            return Ok(false);
         }
     }
-    true
+    Ok(true)
 }
 
 /// Whether the exact point lies in the box of intervals (decided exactly).

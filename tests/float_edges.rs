@@ -54,11 +54,11 @@ fn the_issues_reproducers_give_correct_answers() {
     let r = ask(r#"{"op":"float_eval","method":"interval","points":[[5e-324],[0]],"t":0.5}"#);
     assert_eq!(r["encloses"], serde_json::json!([true]), "{r}");
     assert_eq!(
-        filtered_orientation([0.0, 0.0], [1e-200, 0.0], [0.0, 1e-200]),
+        filtered_orientation([0.0, 0.0], [1e-200, 0.0], [0.0, 1e-200]).unwrap(),
         Ordering::Greater
     );
     assert_eq!(
-        filtered_orientation([0.0, 0.0], [0.0, 1e-200], [1e-200, 0.0]),
+        filtered_orientation([0.0, 0.0], [0.0, 1e-200], [1e-200, 0.0]).unwrap(),
         Ordering::Less
     );
     let tiny = Interval::from_f64(1e-200).unwrap();
@@ -93,14 +93,14 @@ fn the_issues_reproducers_give_correct_answers() {
 #[test]
 fn filtered_predicates_are_exact_at_the_edges() {
     let square = [[0.0, 0.0], [1e-300, 0.0], [1e-300, 1e-300], [0.0, 1e-300]];
-    assert!(filtered_hull_contains(&square, [5e-301, 5e-301]));
-    assert!(!filtered_hull_contains(&square, [2e-300, 5e-301]));
+    assert!(filtered_hull_contains(&square, [5e-301, 5e-301]).unwrap());
+    assert!(!filtered_hull_contains(&square, [2e-300, 5e-301]).unwrap());
     let sub = [[0.0, 0.0], [4e-323, 0.0], [0.0, 4e-323]];
-    assert!(filtered_hull_contains(&sub, [1e-323, 1e-323]));
-    assert!(!filtered_hull_contains(&sub, [3e-323, 3e-323]));
+    assert!(filtered_hull_contains(&sub, [1e-323, 1e-323]).unwrap());
+    assert!(!filtered_hull_contains(&sub, [3e-323, 3e-323]).unwrap());
     let big = [[-1e308, -1e308], [1e308, -1e308], [0.0, 1e308]];
-    assert!(filtered_hull_contains(&big, [0.0, 0.0]));
-    assert!(!filtered_hull_contains(&big, [1e308, 1e308]));
+    assert!(filtered_hull_contains(&big, [0.0, 0.0]).unwrap());
+    assert!(!filtered_hull_contains(&big, [1e308, 1e308]).unwrap());
     // quotients that underflow are rounded outward too
     let q = Interval::from_f64(1e-300)
         .unwrap()
@@ -164,4 +164,13 @@ fn each_method_bound_is_the_bound_of_that_method() {
     let lerp = casteljau::oracle::FloatMethod::Lerp.bound(&b, t, 0.0);
     assert!(lerp > de, "{lerp} {de}");
     assert!(Scalar::to_f64(&BigRational::from_f64(lerp).unwrap()) > 0.0);
+}
+
+#[test]
+fn predicates_refuse_points_that_are_not_finite() {
+    for bad in [f64::INFINITY, f64::NEG_INFINITY, f64::NAN] {
+        assert!(filtered_orientation([0.0, 0.0], [bad, 0.0], [0.0, 1.0]).is_err());
+        assert!(filtered_hull_contains(&[[0.0, 0.0], [1.0, 0.0], [0.0, bad]], [0.1, 0.1]).is_err());
+        assert!(filtered_hull_contains(&[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]], [bad, 0.1]).is_err());
+    }
 }

@@ -351,7 +351,7 @@ pub fn run(seed: u64, cases: usize, formula_every: usize) -> Counts {
         }
         let [p0, p1, p2] = triangle_points(&mut rng, family);
         c.predicates += 1;
-        if filtered_orientation(p0, p1, p2) != exact_orientation(p0, p1, p2) {
+        if filtered_orientation(p0, p1, p2).unwrap() != exact_orientation(p0, p1, p2) {
             c.predicates_wrong += 1;
             c.fail(format!("orientation of {p0:?} {p1:?} {p2:?}"));
         }
