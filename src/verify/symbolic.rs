@@ -576,10 +576,10 @@ impl<'a> Translator<'a> {
                 let start = induction_start(sym, &h[0], &n, &n0, &what)?;
                 for m in 0..start.minus(&n0).c {
                     let at = n0.shifted(m);
-                    let mut direct = base_case_terms(sym, &f, (k, a, b), (&n, &at), &what)?;
-                    direct.extend(lin_neg(&lin_subst(sym, &h, &n, &at)));
+                    let mut case = base_case_terms(sym, &f, (k, a, b), (&n, &at), &what)?;
+                    case.extend(lin_neg(&lin_subst(sym, &h, &n, &at)));
                     self.expect_zero(
-                        &direct,
+                        &case,
                         &rest,
                         &format!("{what}: the case {n} = {at}, where the closed form's coefficient vanishes (checked directly)"),
                     )?;
