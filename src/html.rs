@@ -14,7 +14,7 @@ use crate::quadratic::QuadraticIrrational;
 use crate::rational::RationalBezierCurve;
 use crate::scalar::Scalar;
 use crate::surface::BezierSurface;
-use crate::verify::claims::{Claim, ClaimFile, CurveSpec, Number, SurfaceSpec};
+use crate::verify::claims::{Claim, ClaimFile, CurveSpec, Kind, Number, SurfaceSpec};
 use crate::verify::{ClaimOutcome, Report, TextSummary, Verdict};
 use crate::BezierCurve;
 use std::collections::BTreeMap;
@@ -663,8 +663,8 @@ enum Topic {
 }
 
 fn topic(c: &Claim) -> Option<Topic> {
-    if let Some(t) = &c.theorem {
-        return match t.as_str() {
+    if let Kind::Theorem(t) = &c.kind {
+        return match t.theorem.as_str() {
             "de_casteljau_bernstein" => Some(Topic::Construction),
             "subdivision" => Some(Topic::Subdivision),
             "elevation_7" | "elevation_8" => Some(Topic::Elevation),
@@ -675,20 +675,22 @@ fn topic(c: &Claim) -> Option<Topic> {
     }
     // text 004's notation: the end tangents ẋ(0), ẋ(1) as vectors d0, d1, the cubic a
     let tangents = c
+        .decls
         .vectors
         .as_ref()
         .is_some_and(|v| v.contains_key("d0") && v.contains_key("d1"));
-    if tangents || c.polygon.as_ref().is_some_and(|p| p.name == "a") {
+    if tangents || c.decls.polygon.as_ref().is_some_and(|p| p.name == "a") {
         return Some(Topic::Fit);
     }
     // text 001's notation: a symbolic middle weight w1 of a rational quadratic
-    if c.symbols
+    if c.decls
+        .symbols
         .as_ref()
         .is_some_and(|s| s.iter().any(|x| x == "w1" || x == "w"))
     {
         return Some(Topic::Conics);
     }
-    c.polygon.as_ref()?;
+    c.decls.polygon.as_ref()?;
     // statements about a symbolic polygon: the section of the text they come from
     let src = c.source.as_str();
     let table: [(&str, Topic); 10] = [
@@ -749,10 +751,10 @@ pub fn claim_figure(c: &Claim) -> Result<Option<ClaimFigure>> {
             caption,
         }))
     };
-    if let Some(surfaces) = &c.surfaces {
+    if let Some(surfaces) = &c.decls.surfaces {
         if let Some((name, spec)) = surfaces.iter().next() {
             let surface = surface_of(spec)?;
-            if c.kind == "enneper" {
+            if matches!(c.kind, Kind::Enneper) {
                 return own(
                     figure::enneper(&surface)?,
                     format!("the claim's net {name}, with iso-curves"),
@@ -764,17 +766,17 @@ pub fn claim_figure(c: &Claim) -> Result<Option<ClaimFigure>> {
             );
         }
     }
-    if let Some(curves) = &c.curves {
+    if let Some(curves) = &c.decls.curves {
         let objs: Vec<(&String, AnyCurve<Q>)> = curves
             .iter()
             .map(|(n, spec)| Ok((n, curve_of(spec)?)))
             .collect::<Result<_>>()?;
-        if c.kind == "fit" {
+        if matches!(c.kind, Kind::Fit(_)) {
             if let Some((name, x)) = objs.first() {
                 return own(figure::fit(x)?, format!("text 004's fit of the claim's curve {name}"));
             }
         }
-        if c.kind == "convergence" {
+        if matches!(c.kind, Kind::Convergence(_)) {
             if let Some((name, AnyCurve::Polynomial(b))) =
                 objs.iter().find(|(_, o)| matches!(o, AnyCurve::Polynomial(_)))
             {
@@ -825,9 +827,9 @@ pub fn claim_figure(c: &Claim) -> Result<Option<ClaimFigure>> {
             );
         }
     }
-    if c.kind == "bezier_points" {
-        if let Some(p) = &c.points {
-            let b = BezierCurve::new(points(p)?)?;
+    if let Kind::BezierPoints(claimed) = &c.kind {
+        {
+            let b = BezierCurve::new(points(&claimed.points)?)?;
             return own(
                 figure::construction(&b, &q(1, 2))?,
                 "the claimed Bézier points and their curve, constructed at t = 1/2".into(),
@@ -846,7 +848,7 @@ pub fn claim_figure(c: &Claim) -> Result<Option<ClaimFigure>> {
             caption: caption.into(),
         }));
     }
-    if let Some(net) = &c.net {
+    if let Some(net) = &c.decls.net {
         // a symbolic net: illustrated on text 003's nets
         let (spec, what) = if net.degree == ["1", "1"] {
             (

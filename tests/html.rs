@@ -3,7 +3,7 @@
 //! beside their corrections; the index's table is the report's summary.
 
 use casteljau::html::{claim_anchor, page_name, render_pages, verdict_text};
-use casteljau::verify::claims::load_paths;
+use casteljau::verify::claims::{load_paths, Kind};
 use casteljau::verify::{prove_paths, Report, Verdict};
 use std::path::PathBuf;
 use std::process::Command;
@@ -166,13 +166,10 @@ fn every_claim_with_a_geometric_object_has_its_figure() {
         let text = f.text.as_ref().map(|t| t.file.clone()).unwrap();
         let doc = parse(page(&page_name(&text)));
         for c in &f.claim {
-            let geometric = c.curves.is_some()
-                || c.surfaces.is_some()
-                || c.points.is_some()
-                || c.kind == "theorem"
-                    && c.theorem.as_deref() != Some("partition_of_unity")
-                    && c.theorem.as_deref() != Some("identity_4")
-                    && c.theorem.as_deref() != Some("affine_invariance");
+            let geometric = c.decls.curves.is_some()
+                || c.decls.surfaces.is_some()
+                || matches!(c.kind, Kind::BezierPoints(_))
+                || matches!(&c.kind, Kind::Theorem(t) if !["partition_of_unity", "identity_4", "affine_invariance"].contains(&t.theorem.as_str()));
             let section = doc
                 .descendants()
                 .find(|n| n.attribute("data-claim") == Some(c.id.as_str()))

@@ -12,16 +12,13 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// One claim file.
-#[derive(Clone, Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[derive(Clone, Debug)]
 pub struct ClaimFile {
     /// The text the claims come from.
     pub text: Option<TextInfo>,
     /// The claims, in order.
-    #[serde(default)]
     pub claim: Vec<Claim>,
-    /// Where it was loaded from (filled in by [`load_file`]).
-    #[serde(skip)]
+    /// Where it was loaded from.
     pub path: PathBuf,
 }
 
@@ -98,60 +95,76 @@ pub struct NetSpec {
     pub degree: [String; 2],
 }
 
-/// One claim (fields by kind; see `proofs/README.md`).
-#[derive(Clone, Debug, Deserialize)]
+/// An integer range of a claim, `n = 0..=10` or open `n = 0..`, parsed once when the claim
+/// file is read; its bounds are integer expressions of earlier range variables.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct IntRange {
+    /// The variable.
+    pub var: String,
+    /// The least value, an integer expression (`0`, `j`, `n-k`).
+    pub from: String,
+    /// The largest value, or `None` for an open range (every value from `from` on).
+    pub to: Option<String>,
+}
+
+impl IntRange {
+    /// Parses `n = 0..=10` or `n = 0..`.
+    pub fn parse(text: &str) -> Result<Self> {
+        let bad = || Error::Parse(format!("a range is written 'n = 0..=10' or 'n = 0..', not '{text}'"));
+        let (var, rest) = text.split_once('=').ok_or_else(bad)?;
+        let var = var.trim().to_string();
+        if var.is_empty() || !var.chars().all(|c| c.is_alphanumeric() || c == '_') {
+            return Err(bad());
+        }
+        let (from, to) = match rest.split_once("..=") {
+            Some((a, b)) => (a.trim(), Some(b.trim().to_string())),
+            None => (rest.trim().strip_suffix("..").ok_or_else(bad)?.trim(), None),
+        };
+        if from.is_empty() || to.as_deref() == Some("") {
+            return Err(bad());
+        }
+        Ok(IntRange {
+            var,
+            from: from.to_string(),
+            to,
+        })
+    }
+
+    /// Whether the range is open (`n = 0..`).
+    pub fn is_open(&self) -> bool {
+        self.to.is_none()
+    }
+}
+
+impl std::fmt::Display for IntRange {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match &self.to {
+            Some(to) => write!(f, "{} = {}..={to}", self.var, self.from),
+            None => write!(f, "{} = {}..", self.var, self.from),
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for IntRange {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        let text = String::deserialize(d)?;
+        IntRange::parse(&text).map_err(serde::de::Error::custom)
+    }
+}
+
+/// What a claim declares for its expressions: parameters, integer ranges, definitions and
+/// objects. Each kind takes the declarations listed by [`Kind::declares`]; any other is an error.
+#[derive(Clone, Debug, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct Claim {
-    /// Unique id.
-    pub id: String,
-    /// Text file and printed label.
-    pub source: String,
-    /// The statement as printed.
-    pub statement: String,
-    /// The kind of check.
-    pub kind: String,
-    /// The expected verdict ("proved" when absent).
-    pub expect: Option<String>,
-    /// The id of the misprinted claim this one corrects.
-    pub corrects: Option<String>,
-    /// A remark shown in the report.
-    pub note: Option<String>,
-
-    /// identity: left side.
-    pub lhs: Option<String>,
-    /// identity: right side.
-    pub rhs: Option<String>,
-    /// identity: a chain `a = b = c = …` (consecutive members are claimed equal).
-    pub chain: Option<Vec<String>>,
-    /// implicit / implies / conic: an equation `A = B` (or an expression meaning `= 0`).
-    pub equation: Option<String>,
-    /// implicit: the curve, a tuple expression in `t` (or a curve call like `x(t)`).
-    pub on: Option<String>,
-    /// implicit: the coordinate names the equation uses (default `x, y, z`).
-    pub coords: Option<Vec<String>>,
-    /// implies: the premise (an expression meaning `= 0`, or `A = B`).
-    pub premise: Option<String>,
-    /// implies: the factor with `conclusion = factor · premise` identically.
-    pub factor: Option<String>,
-    /// bezier_points: the curve in the power basis, a tuple expression in `param`.
-    pub power: Option<String>,
-    /// bezier_points: its parameter name (default `u`).
-    pub param: Option<String>,
-    /// bezier_points: the parameter interval `[a, b]`.
-    pub interval: Option<[Number; 2]>,
-    /// bezier_points: the claimed Bézier points.
-    pub points: Option<Vec<Vec<Number>>>,
-    /// conic_type / weight_type: the printed type ("ellipse", "parabola", "hyperbola").
-    pub conic: Option<String>,
-
+pub struct Decls {
     /// Continuous parameters (default: the one-letter names t, s, u, v that occur).
     pub vars: Option<Vec<String>>,
-    /// Integer ranges `"n = 0..=10"`, in order.
-    #[serde(rename = "for")]
-    pub ranges: Option<Vec<String>>,
+    /// Integer ranges, in order (later bounds may use earlier variables).
+    #[serde(rename = "for", default)]
+    pub ranges: Vec<IntRange>,
     /// Definitions `"f(i) = …"`, in order (later ones may use earlier ones).
-    #[serde(rename = "let")]
-    pub defs: Option<Vec<String>>,
+    #[serde(rename = "let", default)]
+    pub defs: Vec<String>,
     /// A symbolic control polygon (identities affine in it are checked on a basis).
     pub polygon: Option<PolygonSpec>,
     /// A symbolic control net.
@@ -164,77 +177,26 @@ pub struct Claim {
     pub curves: Option<BTreeMap<String, CurveSpec>>,
     /// Concrete surfaces, by name.
     pub surfaces: Option<BTreeMap<String, SurfaceSpec>>,
-
-    /// theorem / convergence: which one.
-    pub theorem: Option<String>,
-    /// theorem: the degrees checked, `"0..=10"`.
-    pub degrees: Option<String>,
-    /// convergence: the largest number of elevation steps.
-    pub steps: Option<usize>,
-
-    /// identity with open ranges: WZ certificates `R`, one per sum with a symbolic bound
-    /// (innermost first); a single string or a list.
-    pub certificate: Option<Certificates>,
-    /// inequality: `">="` (default) or `">"`.
-    pub relation: Option<String>,
-
-    /// fit: the printed (or stated) tangent length `k` of text 004's cubic, if any.
-    pub k: Option<Number>,
-    /// fit: the printed tangent length `l`, if any.
-    pub l: Option<Number>,
-    /// fit: the printed `δ²`, if any.
-    pub delta2: Option<Number>,
 }
 
-/// One certificate or a list of them.
-#[derive(Clone, Debug, Deserialize)]
-#[serde(untagged)]
-pub enum Certificates {
-    /// One certificate.
-    One(String),
-    /// Several, in order.
-    Many(Vec<String>),
-}
+/// The declaration fields, by their names in the file.
+const DECLARATIONS: [&str; 9] = [
+    "vars", "for", "let", "polygon", "net", "symbols", "vectors", "curves", "surfaces",
+];
 
-impl Claim {
-    /// The certificates, in order.
-    pub fn certificates(&self) -> Vec<String> {
-        match &self.certificate {
-            None => Vec::new(),
-            Some(Certificates::One(s)) => vec![s.clone()],
-            Some(Certificates::Many(v)) => v.clone(),
-        }
-    }
-
+impl Decls {
     /// Whether a range is open (`n = 0..`): the claim is then proved for every value or not at
     /// all, never in a range.
     pub fn for_every(&self) -> bool {
-        super::symbolic::is_for_every(self)
+        self.ranges.iter().any(IntRange::is_open)
     }
 
-    /// Whether the claim is checked over finite integer ranges (`for`, or a theorem's
-    /// `degrees`): then the strongest verdict it can get is `proved_in_range`.
-    pub fn has_ranges(&self) -> bool {
-        self.ranges.as_ref().is_some_and(|r| !r.is_empty()) || self.kind == "theorem"
+    /// Whether the claim is decided by symbolic expansion (it declares symbols or vectors).
+    pub fn symbolic(&self) -> bool {
+        self.symbols.is_some() || self.vectors.is_some()
     }
 
-    /// The expected verdict: `expect`, or by default the strongest verdict the claim can get
-    /// (`proved_in_range` for a claim over ranges, `proved` otherwise).
-    pub fn expected(&self) -> Result<Verdict> {
-        match self.expect.as_deref() {
-            None if self.has_ranges() && !self.for_every() => Ok(Verdict::ProvedInRange),
-            None | Some("proved") => Ok(Verdict::Proved),
-            Some("proved_in_range") => Ok(Verdict::ProvedInRange),
-            Some("verified") => Ok(Verdict::Verified),
-            Some("fails") => Ok(Verdict::Fails),
-            Some(other) => Err(Error::Parse(format!(
-                "claim {}: expect must be \"proved\", \"proved_in_range\", \"verified\" or \"fails\", not \"{other}\"",
-                self.id
-            ))),
-        }
-    }
-
-    /// The multi-letter names the claim declares (kept whole by the parser).
+    /// The multi-letter names declared (kept whole by the parser).
     pub fn known_names(&self) -> Vec<String> {
         let mut out: Vec<String> = Vec::new();
         if let Some(p) = &self.polygon {
@@ -248,37 +210,530 @@ impl Claim {
         out.extend(self.curves.iter().flat_map(|c| c.keys().cloned()));
         out.extend(self.surfaces.iter().flat_map(|c| c.keys().cloned()));
         out.extend(self.vars.iter().flatten().cloned());
-        for d in self.defs.iter().flatten() {
-            if let Some((head, _)) = d.split_once('=') {
-                let name = head.split('(').next().unwrap_or("").trim();
-                out.push(name.to_string());
-            }
-        }
+        out.extend(self.defs.iter().filter_map(|d| definition_name(d)));
         out
     }
 
-    /// A required text field, or a clear error.
-    pub fn need<'a>(&self, field: &'a Option<String>, name: &str) -> Result<&'a str> {
-        field.as_deref().ok_or_else(|| {
-            Error::Parse(format!(
-                "claim {} (kind {}) needs the field '{name}'",
-                self.id, self.kind
-            ))
+    /// Every declared name with what declares it, in declaration order.
+    pub fn declared(&self) -> Vec<(String, &'static str)> {
+        let mut out: Vec<(String, &str)> = Vec::new();
+        if let Some(p) = &self.polygon {
+            out.push((p.name.clone(), "polygon"));
+        }
+        if let Some(n) = &self.net {
+            out.push((n.name.clone(), "net"));
+        }
+        out.extend(self.symbols.iter().flatten().map(|s| (s.clone(), "symbol")));
+        out.extend(
+            self.vectors
+                .iter()
+                .flat_map(|v| v.keys().map(|k| (k.clone(), "vector"))),
+        );
+        out.extend(self.curves.iter().flat_map(|v| v.keys().map(|k| (k.clone(), "curve"))));
+        out.extend(
+            self.surfaces
+                .iter()
+                .flat_map(|v| v.keys().map(|k| (k.clone(), "surface"))),
+        );
+        out.extend(self.vars.iter().flatten().map(|s| (s.clone(), "parameter")));
+        out.extend(self.ranges.iter().map(|r| (r.var.clone(), "range variable")));
+        out.extend(
+            self.defs
+                .iter()
+                .filter_map(|d| definition_name(d))
+                .map(|n| (n, "definition")),
+        );
+        out
+    }
+}
+
+/// The name a definition `f(i) = …` defines.
+fn definition_name(def: &str) -> Option<String> {
+    let (head, _) = def.split_once('=')?;
+    Some(head.split('(').next().unwrap_or("").trim().to_string())
+}
+
+/// The two sides of an identity, or a chain `a = b = c = …` (consecutive members equal).
+#[derive(Clone, Debug)]
+pub enum Sides {
+    /// `lhs = rhs`.
+    Pair(String, String),
+    /// `chain = [a, b, c, …]`.
+    Chain(Vec<String>),
+}
+
+impl Sides {
+    /// The members in order (two for a pair).
+    pub fn members(&self) -> Vec<String> {
+        match self {
+            Sides::Pair(l, r) => vec![l.clone(), r.clone()],
+            Sides::Chain(c) => c.clone(),
+        }
+    }
+}
+
+/// `kind = "identity"`: `lhs = rhs`, or every step of `chain`.
+#[derive(Clone, Debug)]
+pub struct Identity {
+    /// The sides.
+    pub sides: Sides,
+    /// With open ranges: WZ certificates `R`, one per sum with a symbolic bound (innermost first).
+    pub certificates: Vec<String>,
+}
+
+/// `kind = "implicit"`: the curve `on` satisfies `equation` for every parameter.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Implicit {
+    /// The curve, a tuple expression in `t` (or a curve call like `x(t)`).
+    pub on: String,
+    /// The equation `A = B` (or an expression meaning `= 0`).
+    pub equation: String,
+    /// The coordinate names the equation uses (default `x, y, z`).
+    pub coords: Option<Vec<String>>,
+}
+
+impl Implicit {
+    /// The coordinate names.
+    pub fn coordinates(&self) -> Vec<String> {
+        self.coords
+            .clone()
+            .unwrap_or_else(|| vec!["x".into(), "y".into(), "z".into()])
+    }
+}
+
+/// `kind = "bezier_points"`: the Bézier points of a power-basis curve on `[a, b]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BezierPoints {
+    /// The curve in the power basis, a tuple expression in `param`.
+    pub power: String,
+    /// Its parameter name (default `u`).
+    pub param: Option<String>,
+    /// The parameter interval `[a, b]`.
+    pub interval: [Number; 2],
+    /// The claimed Bézier points.
+    pub points: Vec<Vec<Number>>,
+}
+
+impl BezierPoints {
+    /// The parameter's name.
+    pub fn parameter(&self) -> String {
+        self.param.clone().unwrap_or_else(|| "u".into())
+    }
+}
+
+/// `kind = "conic_type"`: the conic `equation` is the printed `conic`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ConicType {
+    /// The conic, an equation of degree 2 in x, y.
+    pub equation: String,
+    /// The printed type ("ellipse", "parabola", "hyperbola").
+    pub conic: String,
+}
+
+/// `kind = "weight_type"`: a rational quadratic's weights give the printed conic type.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WeightType {
+    /// The printed type.
+    pub conic: String,
+}
+
+/// `kind = "implies"`: `equation` follows from `premise` by `equation = factor · premise`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Implies {
+    /// The premise (an expression meaning `= 0`, or `A = B`).
+    pub premise: String,
+    /// The conclusion, an equation.
+    pub equation: String,
+    /// The factor with `conclusion = factor · premise` identically.
+    pub factor: String,
+}
+
+/// `kind = "theorem"`: a general theorem of the texts for every degree in `degrees`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Theorem {
+    /// Which theorem.
+    pub theorem: String,
+    /// The degrees checked, `"0..=10"` (the default).
+    pub degrees: Option<String>,
+}
+
+/// `kind = "convergence"`: Theorem 1.2, bounded evidence.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Convergence {
+    /// The largest number of elevation steps (default 64).
+    pub steps: Option<usize>,
+}
+
+/// `kind = "fit"`: text 004's cubic fit of a concrete curve.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Fit {
+    /// The printed (or stated) tangent length `k`, if any.
+    pub k: Option<Number>,
+    /// The printed tangent length `l`, if any.
+    pub l: Option<Number>,
+    /// The printed `δ²`, if any.
+    pub delta2: Option<Number>,
+}
+
+/// Whether an inequality is strict.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize)]
+pub enum Relation {
+    /// `lhs ≥ rhs`.
+    #[default]
+    #[serde(rename = ">=", alias = "≥")]
+    AtLeast,
+    /// `lhs > rhs`.
+    #[serde(rename = ">")]
+    Greater,
+}
+
+/// `kind = "inequality"`: `lhs ≥ rhs` (or `>`) on an interval.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Inequality {
+    /// The left side.
+    pub lhs: String,
+    /// The right side (default 0).
+    pub rhs: Option<String>,
+    /// `">="` (default) or `">"`.
+    #[serde(default)]
+    pub relation: Relation,
+    /// The parameter interval `[a, b]`.
+    pub interval: Option<[Number; 2]>,
+}
+
+/// What a claim states, one variant per kind, with the kind's own fields.
+#[derive(Clone, Debug)]
+pub enum Kind {
+    /// `identity`.
+    Identity(Identity),
+    /// `implicit`.
+    Implicit(Implicit),
+    /// `bezier_points`.
+    BezierPoints(BezierPoints),
+    /// `conic_type`.
+    ConicType(ConicType),
+    /// `weight_type` (of the curve in `curves`).
+    WeightType(WeightType),
+    /// `enneper` (the surface in `surfaces` is Enneper's surface).
+    Enneper,
+    /// `implies`.
+    Implies(Implies),
+    /// `theorem`.
+    Theorem(Theorem),
+    /// `convergence` (of the curve in `curves`).
+    Convergence(Convergence),
+    /// `fit` (of the curve in `curves`).
+    Fit(Fit),
+    /// `inequality`.
+    Inequality(Inequality),
+}
+
+/// The kinds by their names in the file.
+pub const KINDS: [&str; 11] = [
+    "identity",
+    "implicit",
+    "bezier_points",
+    "conic_type",
+    "weight_type",
+    "enneper",
+    "implies",
+    "theorem",
+    "convergence",
+    "fit",
+    "inequality",
+];
+
+impl Kind {
+    /// The kind's name in the file.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Kind::Identity(_) => "identity",
+            Kind::Implicit(_) => "implicit",
+            Kind::BezierPoints(_) => "bezier_points",
+            Kind::ConicType(_) => "conic_type",
+            Kind::WeightType(_) => "weight_type",
+            Kind::Enneper => "enneper",
+            Kind::Implies(_) => "implies",
+            Kind::Theorem(_) => "theorem",
+            Kind::Convergence(_) => "convergence",
+            Kind::Fit(_) => "fit",
+            Kind::Inequality(_) => "inequality",
+        }
+    }
+
+    /// The declarations ([`Decls`]) the kind takes.
+    pub fn declares(&self) -> &'static [&'static str] {
+        match self {
+            Kind::Identity(_) => &DECLARATIONS,
+            Kind::Implicit(_) => &["vars", "for", "let", "polygon", "net", "curves", "surfaces"],
+            Kind::BezierPoints(_) | Kind::ConicType(_) => &["let"],
+            Kind::WeightType(_) | Kind::Convergence(_) | Kind::Fit(_) => &["curves"],
+            Kind::Enneper => &["surfaces"],
+            Kind::Implies(_) => &["symbols", "vectors", "let"],
+            Kind::Theorem(_) => &[],
+            Kind::Inequality(_) => &["vars", "for", "let"],
+        }
+    }
+
+    /// The kind's expression fields as the explanation shows them, in order.
+    pub fn shown_fields(&self) -> Vec<(&'static str, &str)> {
+        match self {
+            Kind::Identity(Identity {
+                sides: Sides::Pair(l, r),
+                ..
+            }) => vec![("lhs", l), ("rhs", r)],
+            Kind::Inequality(i) => {
+                let mut v = vec![("lhs", i.lhs.as_str())];
+                v.extend(i.rhs.as_deref().map(|r| ("rhs", r)));
+                v
+            }
+            Kind::Implicit(i) => vec![("on", &i.on), ("equation", &i.equation)],
+            Kind::ConicType(c) => vec![("equation", &c.equation)],
+            Kind::Implies(i) => vec![
+                ("equation", &i.equation),
+                ("premise", &i.premise),
+                ("factor", &i.factor),
+            ],
+            Kind::BezierPoints(b) => vec![("power", &b.power)],
+            _ => Vec::new(),
+        }
+    }
+
+    fn from_table(kind: &str, mut own: toml::Table) -> std::result::Result<Self, String> {
+        fn take<T: serde::de::DeserializeOwned>(own: toml::Table) -> std::result::Result<T, String> {
+            own.try_into().map_err(|e: toml::de::Error| e.message().to_string())
+        }
+        Ok(match kind {
+            "identity" => {
+                let certificates = match own.remove("certificate") {
+                    None => Vec::new(),
+                    Some(v) => v
+                        .try_into::<Certificates>()
+                        .map_err(|_| "certificate must be a string or a list of strings".to_string())?
+                        .into_list(),
+                };
+                let (lhs, rhs, chain) = (own.remove("lhs"), own.remove("rhs"), own.remove("chain"));
+                if let Some(k) = own.keys().next() {
+                    return Err(format!(
+                        "unknown field `{k}`, expected one of `lhs`, `rhs`, `chain`, `certificate`"
+                    ));
+                }
+                let text = |v: toml::Value| v.try_into::<String>().map_err(|e| e.message().to_string());
+                let sides = match (lhs, rhs, chain) {
+                    (Some(l), Some(r), None) => Sides::Pair(text(l)?, text(r)?),
+                    (None, None, Some(c)) => {
+                        Sides::Chain(c.try_into().map_err(|e: toml::de::Error| e.message().to_string())?)
+                    }
+                    _ => return Err("an identity needs either lhs and rhs, or chain".into()),
+                };
+                Kind::Identity(Identity { sides, certificates })
+            }
+            "implicit" => Kind::Implicit(take(own)?),
+            "bezier_points" => Kind::BezierPoints(take(own)?),
+            "conic_type" => Kind::ConicType(take(own)?),
+            "weight_type" => Kind::WeightType(take(own)?),
+            "enneper" => {
+                take::<Empty>(own)?;
+                Kind::Enneper
+            }
+            "implies" => Kind::Implies(take(own)?),
+            "theorem" => Kind::Theorem(take(own)?),
+            "convergence" => Kind::Convergence(take(own)?),
+            "fit" => Kind::Fit(take(own)?),
+            "inequality" => Kind::Inequality(take(own)?),
+            other => return Err(format!("unknown kind '{other}' ({})", KINDS.join(", "))),
         })
     }
 }
 
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Empty {}
+
+/// One certificate or a list of them.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(untagged)]
+enum Certificates {
+    One(String),
+    Many(Vec<String>),
+}
+
+impl Certificates {
+    fn into_list(self) -> Vec<String> {
+        match self {
+            Certificates::One(s) => vec![s],
+            Certificates::Many(v) => v,
+        }
+    }
+}
+
+/// The fields every claim has.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Header {
+    id: String,
+    source: String,
+    statement: String,
+    kind: String,
+    expect: Option<String>,
+    corrects: Option<String>,
+    note: Option<String>,
+}
+
+const HEADER: [&str; 7] = ["id", "source", "statement", "kind", "expect", "corrects", "note"];
+
+/// One claim: what every claim has, its declarations and what its kind states
+/// (see `proofs/README.md`).
+#[derive(Clone, Debug)]
+pub struct Claim {
+    /// Unique id.
+    pub id: String,
+    /// Text file and printed label.
+    pub source: String,
+    /// The statement as printed.
+    pub statement: String,
+    /// The expected verdict, as written (`None`: the strongest the claim can get).
+    pub expect: Option<Verdict>,
+    /// The id of the misprinted claim this one corrects.
+    pub corrects: Option<String>,
+    /// A remark shown in the report.
+    pub note: Option<String>,
+    /// What its expressions may use.
+    pub decls: Decls,
+    /// What it states.
+    pub kind: Kind,
+}
+
+impl Claim {
+    /// Reads one `[[claim]]` table: the header, then the kind's own fields and the declarations
+    /// it takes; any other field is an error naming it.
+    fn from_table(mut table: toml::Table) -> std::result::Result<Self, String> {
+        let id = table.get("id").and_then(|v| v.as_str()).map(str::to_string);
+        let in_claim = |e: String| match &id {
+            Some(id) => format!("claim {id}: {e}"),
+            None => e,
+        };
+        let mut head = toml::Table::new();
+        let mut decls = toml::Table::new();
+        for key in HEADER {
+            if let Some(v) = table.remove(key) {
+                head.insert(key.to_string(), v);
+            }
+        }
+        for key in DECLARATIONS {
+            if let Some(v) = table.remove(key) {
+                decls.insert(key.to_string(), v);
+            }
+        }
+        let head: Header = head
+            .try_into()
+            .map_err(|e: toml::de::Error| in_claim(e.message().to_string()))?;
+        let kind = Kind::from_table(&head.kind, table).map_err(|e| in_claim(format!("kind {}: {e}", head.kind)))?;
+        let allowed = kind.declares();
+        if let Some(k) = decls.keys().find(|k| !allowed.contains(&k.as_str())) {
+            return Err(in_claim(format!(
+                "the field '{k}' does not belong to kind {} (its declarations: {})",
+                head.kind,
+                if allowed.is_empty() {
+                    "none".to_string()
+                } else {
+                    allowed.join(", ")
+                }
+            )));
+        }
+        let decls: Decls = decls
+            .try_into()
+            .map_err(|e: toml::de::Error| in_claim(e.message().to_string()))?;
+        let expect = match head.expect.as_deref() {
+            None => None,
+            Some("proved") => Some(Verdict::Proved),
+            Some("proved_in_range") => Some(Verdict::ProvedInRange),
+            Some("verified") => Some(Verdict::Verified),
+            Some("fails") => Some(Verdict::Fails),
+            Some(other) => {
+                return Err(in_claim(format!(
+                    "expect must be \"proved\", \"proved_in_range\", \"verified\" or \"fails\", not \"{other}\""
+                )))
+            }
+        };
+        Ok(Claim {
+            id: head.id,
+            source: head.source,
+            statement: head.statement,
+            expect,
+            corrects: head.corrects,
+            note: head.note,
+            decls,
+            kind,
+        })
+    }
+
+    /// Whether a range is open (`n = 0..`): the claim is then proved for every value or not at
+    /// all, never in a range.
+    pub fn for_every(&self) -> bool {
+        self.decls.for_every()
+    }
+
+    /// Whether the claim is checked over finite integer ranges (`for`, or a theorem's
+    /// `degrees`): then the strongest verdict it can get is `proved_in_range`.
+    pub fn has_ranges(&self) -> bool {
+        !self.decls.ranges.is_empty() || matches!(self.kind, Kind::Theorem(_))
+    }
+
+    /// The expected verdict: `expect`, or by default the strongest verdict the claim can get
+    /// (`proved_in_range` for a claim over ranges, `proved` otherwise).
+    pub fn expected(&self) -> Verdict {
+        match self.expect {
+            None if self.has_ranges() && !self.for_every() => Verdict::ProvedInRange,
+            None => Verdict::Proved,
+            Some(v) => v,
+        }
+    }
+}
+
+/// The raw file, before its claims are read by kind.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawFile {
+    text: Option<TextInfo>,
+    #[serde(default)]
+    claim: Vec<toml::Spanned<toml::Table>>,
+}
+
 /// Parses one claim file's text.
 pub fn parse_file(text: &str, path: &Path) -> Result<ClaimFile> {
-    let mut f: ClaimFile =
+    let raw: RawFile =
         toml::from_str(text).map_err(|e| Error::Parse(format!("{}: {}", path.display(), e.to_string().trim())))?;
-    f.path = path.to_path_buf();
-    if f.claim.is_empty() {
+    if raw.claim.is_empty() {
         return Err(Error::Parse(format!(
             "{}: no claims (a claim file lists [[claim]] tables; see proofs/README.md)",
             path.display()
         )));
     }
+    let line = |at: usize| text[..at.min(text.len())].matches('\n').count() + 1;
+    let claims = raw
+        .claim
+        .into_iter()
+        .map(|t| {
+            let at = line(t.span().start);
+            Claim::from_table(t.into_inner())
+                .map_err(|e| Error::Parse(format!("{}: the claim at line {at}: {e}", path.display())))
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let f = ClaimFile {
+        text: raw.text,
+        claim: claims,
+        path: path.to_path_buf(),
+    };
     let mut seen = std::collections::BTreeSet::new();
     for c in &f.claim {
         if !seen.insert(c.id.clone()) {
@@ -288,7 +743,6 @@ pub fn parse_file(text: &str, path: &Path) -> Result<ClaimFile> {
                 c.id
             )));
         }
-        c.expected()?;
     }
     for c in &f.claim {
         if let Some(target) = &c.corrects {

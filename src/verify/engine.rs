@@ -2,9 +2,9 @@
 //! checks at enough points, on a basis of control polygons), symbolic expansion, and the
 //! claim kinds built on them. Every verdict comes with a certificate saying what was checked.
 
-use super::claims::{Claim, CurveSpec, Number, SurfaceSpec};
+use super::claims::{CurveSpec, Decls, Implies, Number, SurfaceSpec};
 use super::eval::{Alg, Deg, Env, Evaluator, Value, VarEnv};
-use super::expr::{self, check_index, parse, parse_definition, parse_range, Definition, Expr, IntRange};
+use super::expr::{self, check_index, parse, parse_definition, ClosedRange, Definition, Expr};
 use super::methods::{NetMethod, PolygonMethod};
 use super::poly::{set_names, Poly, RatFunc};
 use super::Verdict;
@@ -53,36 +53,40 @@ pub const MAX_EVALUATIONS: usize = 2_000_000;
 
 /// A claim prepared for checking.
 pub struct Ctx<'c> {
-    /// The claim.
-    pub claim: &'c Claim,
+    /// The claim's id (for messages).
+    pub id: &'c str,
+    /// What the expressions may use.
+    pub decls: &'c Decls,
+    /// Names the kind itself binds (an implicit claim's coordinates, a power form's parameter).
+    bound_by_kind: Vec<String>,
     /// Names kept whole by the parser.
     pub known: Vec<String>,
     /// Definitions, already expanded and differentiated.
     pub defs: Vec<Definition>,
     /// Integer ranges.
-    pub ranges: Vec<IntRange>,
+    pub ranges: Vec<ClosedRange>,
 }
 
 impl<'c> Ctx<'c> {
-    /// Parses the claim's shared fields.
-    pub fn new(claim: &'c Claim) -> Result<Self> {
-        let mut known = claim.known_names();
+    /// The context of a claim's declarations; `bound_by_kind` are names the claim's kind binds.
+    pub fn new(id: &'c str, decls: &'c Decls, bound_by_kind: Vec<String>) -> Result<Self> {
+        let mut known = decls.known_names();
         known.extend(PolygonMethod::ALL.iter().map(|m| m.name().to_string()));
         known.extend(NetMethod::ALL.iter().map(|m| m.name().to_string()));
-        let parsed = claim
+        let parsed = decls
             .defs
             .iter()
-            .flatten()
             .map(|d| parse_definition(d, &known))
             .collect::<Result<Vec<_>>>()?;
-        let ranges = claim
+        let ranges = decls
             .ranges
             .iter()
-            .flatten()
-            .map(|r| parse_range(r))
+            .map(expr::closed_range)
             .collect::<Result<Vec<_>>>()?;
         let mut ctx = Ctx {
-            claim,
+            id,
+            decls,
+            bound_by_kind,
             known,
             defs: Vec::new(),
             ranges,
@@ -114,20 +118,14 @@ impl<'c> Ctx<'c> {
     /// When the claim lists its parameters (`vars`), every free name must be declared: an
     /// unknown name is an error, never silently a constant (whose derivative would be 0).
     fn check_names(&self, e: &Expr, local: &[String]) -> Result<()> {
-        let Some(vars) = &self.claim.vars else {
+        let Some(vars) = &self.decls.vars else {
             return Ok(());
         };
-        let coords = self
-            .claim
-            .coords
-            .clone()
-            .unwrap_or_else(|| vec!["x".into(), "y".into(), "z".into()]);
         for v in e.free_vars() {
             let known = vars.contains(&v)
                 || local.contains(&v)
                 || self.is_bound(&v)
-                || (self.claim.kind == "implicit" && coords.contains(&v))
-                || (self.claim.kind == "bezier_points" && v == self.claim.param.as_deref().unwrap_or("u"))
+                || self.bound_by_kind.contains(&v)
                 || self.defs.iter().any(|d| d.name == v);
             if !known {
                 return Err(Error::Domain(format!(
@@ -187,29 +185,28 @@ impl<'c> Ctx<'c> {
 
     /// Describes the ranges, e.g. `n = 0..=10, j = 0..=n`.
     pub fn range_text(&self) -> String {
-        self.claim
+        self.decls
             .ranges
             .iter()
-            .flatten()
-            .cloned()
+            .map(|r| r.to_string())
             .collect::<Vec<_>>()
             .join(", ")
     }
 
     fn is_bound(&self, name: &str) -> bool {
         self.ranges.iter().any(|r| r.var == name)
-            || self.claim.symbols.iter().flatten().any(|s| s == name)
-            || self.claim.vectors.iter().any(|v| v.contains_key(name))
-            || self.claim.curves.iter().any(|c| c.contains_key(name))
-            || self.claim.surfaces.iter().any(|c| c.contains_key(name))
-            || self.claim.polygon.as_ref().is_some_and(|p| p.name == name)
-            || self.claim.net.as_ref().is_some_and(|p| p.name == name)
+            || self.decls.symbols.iter().flatten().any(|s| s == name)
+            || self.decls.vectors.iter().any(|v| v.contains_key(name))
+            || self.decls.curves.iter().any(|c| c.contains_key(name))
+            || self.decls.surfaces.iter().any(|c| c.contains_key(name))
+            || self.decls.polygon.as_ref().is_some_and(|p| p.name == name)
+            || self.decls.net.as_ref().is_some_and(|p| p.name == name)
     }
 
     /// The continuous parameters of some expressions: the `vars` field, or every free name not
     /// bound otherwise.
     pub fn params(&self, exprs: &[&Expr]) -> Vec<String> {
-        if let Some(v) = &self.claim.vars {
+        if let Some(v) = &self.decls.vars {
             return v.clone();
         }
         let mut out: Vec<String> = Vec::new();
@@ -225,7 +222,7 @@ impl<'c> Ctx<'c> {
 
     /// Whether the claim is decided by symbolic expansion (it declares symbols or vectors).
     pub fn symbolic(&self) -> bool {
-        self.claim.symbols.is_some() || self.claim.vectors.is_some()
+        self.decls.symbolic()
     }
 }
 
@@ -423,14 +420,14 @@ impl<T: Exact> NumEnv<T>
 where
     for<'a> &'a T: RefOps<T>,
 {
-    /// The objects of `claim`.
-    pub fn new(claim: &Claim) -> Result<Self> {
+    /// The objects declared.
+    pub fn new(decls: &Decls) -> Result<Self> {
         let mut curves = BTreeMap::new();
-        for (k, spec) in claim.curves.iter().flatten() {
+        for (k, spec) in decls.curves.iter().flatten() {
             curves.insert(k.clone(), CurveObj::from_spec(spec)?);
         }
         let mut surfaces = BTreeMap::new();
-        for (k, spec) in claim.surfaces.iter().flatten() {
+        for (k, spec) in decls.surfaces.iter().flatten() {
             surfaces.insert(k.clone(), net_from_spec(spec)?);
         }
         Ok(NumEnv {
@@ -825,8 +822,8 @@ enum Basis {
 
 impl Basis {
     fn describe(&self, ctx: &Ctx<'_>) -> String {
-        let p = ctx.claim.polygon.as_ref().map(|p| p.name.as_str());
-        let n = ctx.claim.net.as_ref().map(|p| p.name.as_str());
+        let p = ctx.decls.polygon.as_ref().map(|p| p.name.as_str());
+        let n = ctx.decls.net.as_ref().map(|p| p.name.as_str());
         match self {
             Basis::None => String::new(),
             Basis::Zero => {
@@ -1056,12 +1053,12 @@ where
     for<'a> &'a T: RefOps<T>,
 {
     let params = ctx.params(&[lhs, rhs]);
-    let mut num: NumEnv<T> = NumEnv::new(ctx.claim)?;
+    let mut num: NumEnv<T> = NumEnv::new(ctx.decls)?;
     // Shape the symbolic polygon/net for this instance. Both sides are affine in all their
     // control points together, so one basis covers every declared polygon and net at once:
     // all zero, then each single control point of each object set to 1.
     let mut basis = vec![Basis::Zero];
-    if let Some(p) = &ctx.claim.polygon {
+    if let Some(p) = &ctx.decls.polygon {
         let n = expr::eval_int(&parse(&p.degree, &[])?, ints)?;
         check_index(n)?;
         if n < 0 {
@@ -1070,7 +1067,7 @@ where
         num.polygon = Some((p.name.clone(), vec![T::zero(); n as usize + 1]));
         basis.extend((0..=n as usize).map(Basis::Unit));
     }
-    if let Some(p) = &ctx.claim.net {
+    if let Some(p) = &ctx.decls.net {
         let m = expr::eval_int(&parse(&p.degree[0], &[])?, ints)?;
         let n = expr::eval_int(&parse(&p.degree[1], &[])?, ints)?;
         check_index(m)?;
@@ -1286,10 +1283,7 @@ where
     for<'a> &'a T: RefOps<T>,
 {
     if sides.len() < 2 {
-        return Err(Error::Parse(format!(
-            "claim {}: an identity needs two sides",
-            ctx.claim.id
-        )));
+        return Err(Error::Parse(format!("claim {}: an identity needs two sides", ctx.id)));
     }
     let instances = ctx.instances()?;
     // Bounded work: every pair of every case is prepared (degrees derived, basis chosen) and
@@ -1429,13 +1423,13 @@ impl Env<RatFunc> for SymEnv {
 fn sym_names(ctx: &Ctx<'_>, extra: &[String]) -> (Rc<[String]>, Vec<(String, usize)>) {
     let mut names: Vec<String> = Vec::new();
     let mut layout = Vec::new();
-    for s in ctx.claim.symbols.iter().flatten().chain(extra) {
+    for s in ctx.decls.symbols.iter().flatten().chain(extra) {
         if !names.contains(s) {
             layout.push((s.clone(), 0));
             names.push(s.clone());
         }
     }
-    for (v, &dim) in ctx.claim.vectors.iter().flatten() {
+    for (v, &dim) in ctx.decls.vectors.iter().flatten() {
         layout.push((v.clone(), dim));
         for k in 1..=dim {
             names.push(format!("{v}_{k}"));
@@ -1682,8 +1676,7 @@ pub const POLE_SEARCH: usize = 2_401;
 /// conclusion fails only where the factor has a pole. Small rational points (coordinates from
 /// 0, ±1, ±2, 1/2, 3, the smallest first) are tried for one where the premise is 0 and the
 /// equation `a = b` is defined and false: an exact counterexample.
-fn refute_at_poles(ctx: &Ctx<'_>, prem: &Expr, (a, b): (&Expr, &Expr)) -> Result<Option<Checked>> {
-    let c = ctx.claim;
+fn refute_at_poles(ctx: &Ctx<'_>, imp: &Implies, prem: &Expr, (a, b): (&Expr, &Expr)) -> Result<Option<Checked>> {
     let extra: Vec<String> = ctx
         .params(&[prem, a, b])
         .into_iter()
@@ -1718,8 +1711,8 @@ fn refute_at_poles(ctx: &Ctx<'_>, prem: &Expr, (a, b): (&Expr, &Expr)) -> Result
                                 Verdict::Fails,
                                 format!(
                                     "at {shown}: the premise '{}' holds (the factor has a pole there), but the equation '{}' gives left side = {av}, right side = {bv}",
-                                    c.premise.as_deref().unwrap_or_default(),
-                                    c.equation.as_deref().unwrap_or_default()
+                                    imp.premise.as_str(),
+                                    imp.equation.as_str()
                                 ),
                             )));
                         }
@@ -1740,11 +1733,10 @@ fn refute_at_poles(ctx: &Ctx<'_>, prem: &Expr, (a, b): (&Expr, &Expr)) -> Result
 /// `implies`: `conclusion_lhs − conclusion_rhs = factor · (premise_lhs − premise_rhs)` identically,
 /// so the premise implies the conclusion. When it is not an identity, an exact counterexample
 /// is searched where the premise holds and the conclusion does not.
-pub fn check_implies(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
-    let c = ctx.claim;
-    let (a, b) = ctx.equation(c.need(&c.equation, "equation")?)?;
-    let (p, q) = ctx.equation(c.need(&c.premise, "premise")?)?;
-    let factor = ctx.expr(c.need(&c.factor, "factor")?)?;
+pub fn check_implies(ctx: &Ctx<'_>, imp: &Implies, detail: bool) -> Result<Checked> {
+    let (a, b) = ctx.equation(&imp.equation)?;
+    let (p, q) = ctx.equation(&imp.premise)?;
+    let factor = ctx.expr(&imp.factor)?;
     let is_zero = |e: &Expr| matches!(e, Expr::Num(r) if Scalar::is_zero(r));
     let concl = Expr::sub(a.clone(), b.clone());
     let prem = if is_zero(&q) {
@@ -1757,7 +1749,7 @@ pub fn check_implies(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
     match symbolic_equal(ctx, &concl, &rhs, &inst)? {
         PairResult::Proved(pp) => {
             if let Some(reason) = factor_pole(ctx, &concl, &factor, &prem)? {
-                if let Some(found) = refute_at_poles(ctx, &prem, (&a, &b))? {
+                if let Some(found) = refute_at_poles(ctx, imp, &prem, (&a, &b))? {
                     return Ok(found);
                 }
                 return Err(Error::Domain(format!(
@@ -1770,10 +1762,10 @@ pub fn check_implies(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
                 format!(
                     "[{}] = ({}) · [{}] identically, as rational functions of the symbols and vector coordinates \
                      (exact symbolic expansion), so '{} = 0' implies the equation: proof",
-                    c.equation.as_deref().unwrap_or_default(),
-                    c.factor.as_deref().unwrap_or_default(),
-                    c.premise.as_deref().unwrap_or_default(),
-                    c.premise.as_deref().unwrap_or_default()
+                    imp.equation.as_str(),
+                    imp.factor.as_str(),
+                    imp.premise.as_str(),
+                    imp.premise.as_str()
                 ),
             );
             if detail {
@@ -1784,11 +1776,12 @@ pub fn check_implies(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
         PairResult::Fails(_) => {
             // A concrete counterexample: data where the premise holds (solved for the first
             // symbol, which it contains linearly) but the equation does not.
-            let unknown = c
+            let unknown = ctx
+                .decls
                 .symbols
                 .as_ref()
                 .and_then(|s| s.first().cloned())
-                .ok_or_else(|| Error::Parse(format!("claim {}: implies needs symbols (the unknowns)", c.id)))?;
+                .ok_or_else(|| Error::Parse(format!("claim {}: implies needs symbols (the unknowns)", ctx.id)))?;
             let (names, layout) = sym_names(ctx, &[]);
             for attempt in 0..200u64 {
                 let point: Vec<BigRational> = (0..names.len())
@@ -1799,7 +1792,7 @@ pub fn check_implies(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
                     .collect();
                 let (_, mut vars) = sym_assignment(&names, &layout, &point);
                 // other symbols 0, the unknown solved from the (linear) premise
-                for s in c.symbols.iter().flatten() {
+                for s in ctx.decls.symbols.iter().flatten() {
                     vars.insert(s.clone(), Value::S(BigRational::zero()));
                 }
                 let eval_prem = |vars: &BTreeMap<String, Value<BigRational>>| -> Result<Value<BigRational>> {
@@ -1831,15 +1824,15 @@ pub fn check_implies(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
                         format!(
                             "at {}: the premise '{}' = 0 holds, but the equation '{}' gives left side = {av}, right side = {bv}",
                             shown.join(", "),
-                            c.premise.as_deref().unwrap_or_default(),
-                            c.equation.as_deref().unwrap_or_default()
+                            imp.premise.as_str(),
+                            imp.equation.as_str()
                         ),
                     ));
                 }
             }
             Err(Error::Domain(format!(
                 "claim {}: the equation is not factor × premise, and no counterexample was found",
-                c.id
+                ctx.id
             )))
         }
     }
@@ -1847,7 +1840,7 @@ pub fn check_implies(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::claims::parse_file;
+    use super::super::claims::{parse_file, Claim};
     use super::*;
     use std::path::Path;
 
@@ -1864,31 +1857,35 @@ mod tests {
     #[test]
     fn ranges_enumerate_every_case_and_refuse_empty_ones() {
         let c = claim("for = [\"n = 0..=2\", \"j = 0..=n\"]");
-        let ctx = Ctx::new(&c).unwrap();
+        let ctx = Ctx::new(&c.id, &c.decls, Vec::new()).unwrap();
         assert_eq!(ctx.instances().unwrap().len(), 6);
         assert_eq!(ctx.range_text(), "n = 0..=2, j = 0..=n");
         let c = claim("for = [\"n = 0..=2\", \"j = 1..=n\"]");
-        let err = Ctx::new(&c).unwrap().instances().unwrap_err().to_string();
+        let err = Ctx::new(&c.id, &c.decls, Vec::new())
+            .unwrap()
+            .instances()
+            .unwrap_err()
+            .to_string();
         assert!(err.contains("j = 1..=0 is empty (at n = 0)"), "{err}");
     }
 
     #[test]
     fn unknown_names_are_errors_when_the_parameters_are_listed() {
         let c = claim("vars = [\"t\"]\nsymbols = [\"k\"]");
-        let ctx = Ctx::new(&c).unwrap();
+        let ctx = Ctx::new(&c.id, &c.decls, Vec::new()).unwrap();
         assert!(ctx.expr("t + k").is_ok());
         assert!(ctx.expr("sum(j, 0, 2, j t)").is_ok());
         let err = ctx.expr("t + q").unwrap_err().to_string();
         assert!(err.contains("unknown name 'q'"), "{err}");
         // Without `vars`, free names are the parameters (documented).
         let c = claim("");
-        assert!(Ctx::new(&c).unwrap().expr("t + q").is_ok());
+        assert!(Ctx::new(&c.id, &c.decls, Vec::new()).unwrap().expr("t + q").is_ok());
     }
 
     #[test]
     fn the_work_estimate_grows_with_degree_and_basis() {
         let c = claim("polygon = { name = \"b\", degree = \"3\" }");
-        let ctx = Ctx::new(&c).unwrap();
+        let ctx = Ctx::new(&c.id, &c.decls, Vec::new()).unwrap();
         let (l, r) = (ctx.expr("b(t)").unwrap(), ctx.expr("bsum(b, t)").unwrap());
         let ints = BTreeMap::new();
         let w = estimate_work::<BigRational>(&ctx, &l, &r, &ints).unwrap();

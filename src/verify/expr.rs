@@ -32,6 +32,7 @@
 //! [`MAX_SUM_TERMS`] terms summed per evaluation; factorials of at most [`MAX_FACTORIAL`];
 //! expressions at most [`MAX_EXPR_LEN`] characters and [`MAX_DEPTH`] levels deep.
 
+use super::claims::IntRange;
 use crate::error::{Error, Result};
 use crate::scalar::parse_exact;
 use num_rational::BigRational;
@@ -1214,9 +1215,10 @@ pub fn partial_name(base: &str, ku: usize, kv: usize) -> String {
     format!("{base}_{}{}", "u".repeat(ku), "v".repeat(kv))
 }
 
-/// Integer ranges `var = from..=to` of a claim, in order (later bounds may use earlier vars).
+/// A finite integer range `var = from..=to` with its bounds parsed (later bounds may use
+/// earlier variables).
 #[derive(Clone, Debug, PartialEq)]
-pub struct IntRange {
+pub struct ClosedRange {
     /// The variable.
     pub var: String,
     /// The first value (an integer expression).
@@ -1225,18 +1227,14 @@ pub struct IntRange {
     pub to: Expr,
 }
 
-/// Parses `n = 0..=10` (bounds are integer expressions of earlier range variables).
-pub fn parse_range(text: &str) -> Result<IntRange> {
-    let bad = || Error::Parse(format!("a range is written 'n = 0..=10', not '{text}'"));
-    let (var, rest) = text.split_once('=').ok_or_else(bad)?;
-    let (from, to) = rest.split_once("..=").ok_or_else(bad)?;
-    let var = var.trim();
-    if var.is_empty() || !var.chars().all(|c| c.is_alphanumeric() || c == '_') {
-        return Err(bad());
-    }
-    Ok(IntRange {
-        var: var.to_string(),
-        from: parse(from, &[])?,
+/// The bounds of a finite range, parsed; an open range (`n = 0..`) is an error here.
+pub fn closed_range(r: &IntRange) -> Result<ClosedRange> {
+    let to =
+        r.to.as_deref()
+            .ok_or_else(|| Error::Parse(format!("the range '{r}' is open: it has no cases to enumerate")))?;
+    Ok(ClosedRange {
+        var: r.var.clone(),
+        from: parse(&r.from, &[])?,
         to: parse(to, &[])?,
     })
 }
@@ -1442,7 +1440,7 @@ mod tests {
         assert!(eval_int(&p("n/2"), &ints).is_err());
         assert!(eval_int(&p("t"), &ints).is_err());
         assert!(eval_int(&p("30!"), &ints).is_err());
-        let r = parse_range("j = 0..=n").unwrap();
+        let r = closed_range(&IntRange::parse("j = 0..=n").unwrap()).unwrap();
         assert_eq!(r.var, "j");
     }
 }

@@ -16,7 +16,7 @@
 //! [`super::symbolic::nonneg_for_every`] (each term a product of factors ≥ 0 on `[a, b]`), after
 //! the first values are evaluated as above.
 
-use super::claims::Claim;
+use super::claims::{Decls, Inequality, Relation};
 use super::engine::{Checked, Ctx};
 use super::eval::{Alg, Deg, Evaluator, Value, VarEnv};
 use super::expr::Expr;
@@ -125,23 +125,11 @@ fn coeffs_1d(p: &Poly) -> Vec<BigRational> {
     out
 }
 
-fn relation(claim: &Claim) -> Result<bool> {
-    match claim.relation.as_deref().unwrap_or(">=") {
-        ">=" | "≥" => Ok(false),
-        ">" => Ok(true),
-        other => Err(Error::Parse(format!(
-            "claim {}: relation must be \">=\" or \">\", not \"{other}\" (write lhs and rhs the other way round for ≤)",
-            claim.id
-        ))),
-    }
-}
-
-fn interval(ctx: &Ctx<'_>) -> Result<(BigRational, BigRational)> {
-    let c = ctx.claim;
-    let [a, b] = c
+fn interval(ctx: &Ctx<'_>, ineq: &Inequality) -> Result<(BigRational, BigRational)> {
+    let [a, b] = ineq
         .interval
         .clone()
-        .ok_or_else(|| Error::Parse(format!("claim {} needs interval = [a, b]", c.id)))?;
+        .ok_or_else(|| Error::Parse(format!("claim {} needs interval = [a, b]", ctx.id)))?;
     let (a, b): (BigRational, BigRational) = (
         super::engine::constant(&a.text()?)?,
         super::engine::constant(&b.text()?)?,
@@ -169,12 +157,11 @@ fn poly_sign(q: &RatFunc, a: &BigRational, b: &BigRational, strict: bool) -> Res
 }
 
 /// Checks an `inequality` claim.
-pub fn check_inequality(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
-    let c = ctx.claim;
-    let strict = relation(c)?;
-    let (a, b) = interval(ctx)?;
-    let lhs = ctx.expr(c.need(&c.lhs, "lhs")?)?;
-    let rhs = ctx.expr(c.rhs.as_deref().unwrap_or("0"))?;
+pub fn check_inequality(ctx: &Ctx<'_>, ineq: &Inequality, detail: bool) -> Result<Checked> {
+    let strict = ineq.relation == Relation::Greater;
+    let (a, b) = interval(ctx, ineq)?;
+    let lhs = ctx.expr(&ineq.lhs)?;
+    let rhs = ctx.expr(ineq.rhs.as_deref().unwrap_or("0"))?;
     let p = Expr::sub(lhs, rhs);
     let params = ctx.params(&[&p]);
     if params.len() > 1 {
@@ -284,24 +271,21 @@ fn eval_at(v: &RatFunc, x: &BigRational) -> Result<BigRational> {
 
 /// Checks an `inequality` claim with open ranges: the first values by [`check_inequality`],
 /// every value by [`super::symbolic::nonneg_for_every`].
-pub fn check_for_every(claim: &Claim, detail: bool) -> Result<Checked> {
-    let strict = relation(claim)?;
-    if strict {
+pub fn check_for_every(id: &str, decls: &Decls, ineq: &Inequality, detail: bool) -> Result<Checked> {
+    if ineq.relation == Relation::Greater {
         return Err(Error::Domain(format!(
-            "claim {}: a strict inequality for every n is not supported (only ≥ by nonnegative factors)",
-            claim.id
+            "claim {id}: a strict inequality for every n is not supported (only ≥ by nonnegative factors)"
         )));
     }
-    let rs = super::symbolic::ranges(claim)?;
-    let closed = super::symbolic::closed_claim(claim, &rs);
-    let ctx = Ctx::new(&closed)?;
-    let evaluated = check_inequality(&ctx, false)?;
+    let closed = super::symbolic::closed_decls(decls);
+    let ctx = Ctx::new(id, &closed, Vec::new())?;
+    let evaluated = check_inequality(&ctx, ineq, false)?;
     if evaluated.verdict == Verdict::Fails {
         return Ok(evaluated);
     }
-    let (a, b) = interval(&ctx)?;
-    let lhs = ctx.expr(claim.need(&claim.lhs, "lhs")?)?;
-    let rhs = ctx.expr(claim.rhs.as_deref().unwrap_or("0"))?;
+    let (a, b) = interval(&ctx, ineq)?;
+    let lhs = ctx.expr(&ineq.lhs)?;
+    let rhs = ctx.expr(ineq.rhs.as_deref().unwrap_or("0"))?;
     let p = Expr::sub(lhs, rhs);
     let nonneg = |q: &RatFunc, strict: bool| -> Result<bool> {
         // q is over the symbol list of the symbolic proof: one parameter, no integers.
@@ -318,7 +302,7 @@ pub fn check_for_every(claim: &Claim, detail: bool) -> Result<Checked> {
         }
         Ok(matches!(bernstein_sign(&c, &a, &b, strict)?, Sign::Holds(_)))
     };
-    let mut out = super::symbolic::nonneg_for_every(claim, &ctx, &p, &nonneg, detail)?;
+    let mut out = super::symbolic::nonneg_for_every(decls, &ctx, &p, &nonneg, detail)?;
     out.certificate = format!(
         "{} on [{a}, {b}]; also evaluated exactly for the first {} values of each open range",
         out.certificate,

@@ -12,10 +12,11 @@
 //! | `fit`           | text 004's cubic fit of a concrete curve: (11) = (13), ∇δ² = 0, printed k, l, δ² |
 //! | `inequality`    | `lhs ≥ rhs` (or `>`) on an interval, by a Bernstein certificate or an exact point |
 
-use super::claims::{Claim, CurveSpec, Number};
-use super::engine::{check_chain, check_chain_symbolic, check_implies, points, Checked, Ctx, CurveObj};
+use super::claims::{BezierPoints, Claim, ConicType, CurveSpec, Decls, Fit, Implicit, Kind, Number, WeightType};
+use super::engine::{check_chain, check_implies, points, Checked, Ctx, CurveObj};
 use super::eval::{Alg, Deg, Evaluator, Value};
 use super::expr::{substitute, Expr};
+use super::identity::{chain_in_field, check_identity, uses_sqrt};
 use super::poly::{set_names, Poly, RatFunc};
 use super::{theorems, Verdict};
 use crate::curve::BezierCurve;
@@ -35,32 +36,37 @@ use std::rc::Rc;
 /// A `proved` over finite ranges (`for`, a theorem's `degrees`) is reported as
 /// `proved_in_range` with the ranges: the scope is decided here, once, for every kind.
 pub fn check_claim(claim: &Claim, detail: bool) -> Result<Checked> {
-    super::fields::check_fields(claim)?;
+    super::names::check_declarations(claim)?;
     if claim.for_every() {
-        return match claim.kind.as_str() {
-            "identity" if claim.symbols.is_none() && claim.vectors.is_none() => super::symbolic::check(claim, detail),
-            "inequality" => super::inequality::check_for_every(claim, detail),
+        return match &claim.kind {
+            Kind::Identity(identity) if !claim.decls.symbolic() => {
+                super::symbolic::check(&claim.id, &claim.decls, identity, detail)
+            }
+            Kind::Inequality(ineq) => super::inequality::check_for_every(&claim.id, &claim.decls, ineq, detail),
             _ => Err(Error::Parse(format!(
                 "claim {}: open ranges (n = 0..) are for identity (without symbols or vectors) and inequality claims",
                 claim.id
             ))),
         };
     }
-    if claim.certificate.is_some() {
+    if matches!(&claim.kind, Kind::Identity(i) if !i.certificates.is_empty()) {
         return Err(Error::Parse(format!(
             "claim {}: a certificate belongs to a claim with an open range (n = 0..)",
             claim.id
         )));
     }
-    let ctx = Ctx::new(claim)?;
-    let mut out = check_kind(&ctx, detail)?;
+    let bound_by_kind = match &claim.kind {
+        Kind::Implicit(i) => i.coordinates(),
+        Kind::BezierPoints(b) => vec![b.parameter()],
+        _ => Vec::new(),
+    };
+    let ctx = Ctx::new(&claim.id, &claim.decls, bound_by_kind)?;
+    let mut out = check_kind(&ctx, &claim.kind, detail)?;
     if out.verdict == Verdict::Proved {
-        let scope = if claim.kind == "theorem" {
-            Some(theorems::scope(&ctx)?)
-        } else if claim.has_ranges() {
-            Some(ctx.range_text())
-        } else {
-            None
+        let scope = match &claim.kind {
+            Kind::Theorem(t) => Some(theorems::scope(t)?),
+            _ if claim.has_ranges() => Some(ctx.range_text()),
+            _ => None,
         };
         if let Some(range) = scope {
             out.verdict = Verdict::ProvedInRange;
@@ -70,110 +76,61 @@ pub fn check_claim(claim: &Claim, detail: bool) -> Result<Checked> {
     Ok(out)
 }
 
-fn check_kind(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
-    let claim = ctx.claim;
-    match claim.kind.as_str() {
-        "identity" => check_identity(ctx, detail),
-        "implicit" => check_implicit(ctx, detail),
-        "bezier_points" => check_bezier_points(claim, detail),
-        "conic_type" => check_conic_type(ctx),
-        "implies" => check_implies(ctx, detail),
-        "theorem" => theorems::check_theorem(ctx, detail),
-        "enneper" => check_enneper(ctx, detail),
-        "weight_type" => check_weight_type(ctx),
-        "convergence" => theorems::check_convergence(ctx, detail),
-        "fit" => check_fit(ctx),
-        "inequality" => super::inequality::check_inequality(ctx, detail),
-        other => Err(Error::Parse(format!(
-            "claim {}: unknown kind '{other}' (identity, implicit, bezier_points, conic_type, weight_type, enneper, implies, theorem, convergence, fit, inequality)",
-            claim.id
-        ))),
-    }
-}
-
-fn check_identity(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
-    let c = ctx.claim;
-    let sides: Vec<Expr> = match (&c.chain, &c.lhs, &c.rhs) {
-        (Some(chain), None, None) => chain.iter().map(|s| ctx.expr(s)).collect::<Result<_>>()?,
-        (None, Some(l), Some(r)) => vec![ctx.expr(l)?, ctx.expr(r)?],
-        _ => {
-            return Err(Error::Parse(format!(
-                "claim {}: an identity needs either lhs and rhs, or chain",
-                c.id
-            )))
-        }
-    };
-    if ctx.symbolic() {
-        check_chain_symbolic(ctx, &sides, detail)
-    } else {
-        chain_in_field(ctx, &sides, detail)
-    }
-}
-
-/// Whether the claim writes a square root anywhere (then it is checked in `Q(√d)`).
-fn uses_sqrt(c: &Claim) -> bool {
-    format!("{c:?}").contains("sqrt")
-}
-
-/// Checks a chain in exact rationals, or in the quadratic irrationals when a `sqrt` occurs.
-fn chain_in_field(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Result<Checked> {
-    if uses_sqrt(ctx.claim) {
-        let mut out = check_chain::<QuadraticIrrational>(ctx, sides, detail)?;
-        out.certificate = format!("{} (exact arithmetic in Q(√d))", out.certificate);
-        Ok(out)
-    } else {
-        check_chain::<crate::exact::SmallRational>(ctx, sides, detail)
+fn check_kind(ctx: &Ctx<'_>, kind: &Kind, detail: bool) -> Result<Checked> {
+    match kind {
+        Kind::Identity(identity) => check_identity(ctx.id, ctx.decls, &identity.sides.members(), detail),
+        Kind::Implicit(implicit) => check_implicit(ctx, implicit, detail),
+        Kind::BezierPoints(b) => check_bezier_points(ctx, b, detail),
+        Kind::ConicType(c) => check_conic_type(ctx, c),
+        Kind::Implies(i) => check_implies(ctx, i, detail),
+        Kind::Theorem(t) => theorems::check_theorem(ctx.id, t, detail),
+        Kind::Enneper => check_enneper(ctx, detail),
+        Kind::WeightType(w) => check_weight_type(ctx, w),
+        Kind::Convergence(c) => theorems::check_convergence(ctx, c, detail),
+        Kind::Fit(f) => check_fit(ctx, f),
+        Kind::Inequality(i) => super::inequality::check_inequality(ctx, i, detail),
     }
 }
 
 /// Substitutes the coordinates of the curve `on` for the coordinate names in an equation.
-fn on_curve(ctx: &Ctx<'_>, e: &Expr, on: &Expr) -> Expr {
-    let coords: Vec<String> = ctx
-        .claim
-        .coords
-        .clone()
-        .unwrap_or_else(|| vec!["x".into(), "y".into(), "z".into()]);
+fn on_curve(coords: &[String], e: &Expr, on: &Expr) -> Expr {
     let args: Vec<Expr> = (1..=coords.len())
         .map(|k| match on {
             Expr::Tuple(items) if k <= items.len() => items[k - 1].clone(),
             _ => Expr::Call("comp".into(), vec![on.clone(), Expr::int(k as i64)]),
         })
         .collect();
-    substitute(e, &coords, &args)
+    substitute(e, coords, &args)
 }
 
-fn check_implicit(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
-    let c = ctx.claim;
-    let on = ctx.expr(c.need(&c.on, "on")?)?;
-    let (a, b) = ctx.equation(c.need(&c.equation, "equation")?)?;
-    let sides = vec![on_curve(ctx, &a, &on), on_curve(ctx, &b, &on)];
+fn check_implicit(ctx: &Ctx<'_>, implicit: &Implicit, detail: bool) -> Result<Checked> {
+    let on = ctx.expr(&implicit.on)?;
+    let (a, b) = ctx.equation(&implicit.equation)?;
+    let coords = implicit.coordinates();
+    let sides = vec![on_curve(&coords, &a, &on), on_curve(&coords, &b, &on)];
     let mut out = chain_in_field(ctx, &sides, detail)?;
     out.certificate = format!("substituting the curve into the equation: {}", out.certificate);
     Ok(out)
 }
 
-fn check_bezier_points(claim: &Claim, detail: bool) -> Result<Checked> {
-    let param = claim.param.clone().unwrap_or_else(|| "u".into());
+/// Lowered to the identity `P(t) = power(a + (b − a) t)` over the curve `P` with the printed
+/// points, then compared with the library's conversion.
+fn check_bezier_points(outer: &Ctx<'_>, claim: &BezierPoints, detail: bool) -> Result<Checked> {
+    let param = claim.parameter();
     let t = if param == "t" { "s" } else { "t" };
-    let [a, b] = claim
-        .interval
-        .clone()
-        .ok_or_else(|| Error::Parse(format!("claim {} needs interval = [a, b]", claim.id)))?;
-    let pts = claim
-        .points
-        .clone()
-        .ok_or_else(|| Error::Parse(format!("claim {} needs points", claim.id)))?;
-    let mut cl = claim.clone();
-    cl.curves.get_or_insert_with(BTreeMap::new).insert(
-        "P".into(),
-        CurveSpec {
-            points: pts.clone(),
-            weights: None,
-        },
-    );
-    cl.vars = Some(vec![t.to_string()]);
-    let ctx = Ctx::new(&cl)?;
-    let power = ctx.expr(claim.need(&claim.power, "power")?)?;
+    let [a, b] = &claim.interval;
+    let pts = &claim.points;
+    let curve = CurveSpec {
+        points: pts.clone(),
+        weights: None,
+    };
+    let decls = Decls {
+        curves: Some(BTreeMap::from([("P".to_string(), curve)])),
+        vars: Some(vec![t.to_string()]),
+        ..outer.decls.clone()
+    };
+    let ctx = Ctx::new(outer.id, &decls, vec![param.clone()])?;
+    let power = ctx.expr(&claim.power)?;
     let (ea, eb) = (ctx.expr(&a.text()?)?, ctx.expr(&b.text()?)?);
     // u = a + (b - a) t
     let u = Expr::add(ea, Expr::mul(Expr::sub(eb, ctx.expr(&a.text()?)?), Expr::Var(t.into())));
@@ -184,8 +141,8 @@ fn check_bezier_points(claim: &Claim, detail: bool) -> Result<Checked> {
         return Ok(out);
     }
     // The library's conversion must give the same points.
-    let lib = library_power_on(&ctx, &power, &param, &a, &b)?;
-    let printed: Vec<Point<BigRational>> = points(&pts)?;
+    let lib = library_power_on(&power, &param, a, b)?;
+    let printed: Vec<Point<BigRational>> = points(pts)?;
     if lib.points() != printed.as_slice() {
         return Ok(Checked::new(
             Verdict::Fails,
@@ -199,13 +156,7 @@ fn check_bezier_points(claim: &Claim, detail: bool) -> Result<Checked> {
     Ok(out)
 }
 
-fn library_power_on(
-    ctx: &Ctx<'_>,
-    power: &Expr,
-    param: &str,
-    a: &Number,
-    b: &Number,
-) -> Result<BezierCurve<BigRational>> {
+fn library_power_on(power: &Expr, param: &str, a: &Number, b: &Number) -> Result<BezierCurve<BigRational>> {
     let names: Rc<[String]> = Rc::from(vec![param.to_string()]);
     let degrees = std::iter::once((param.to_string(), Value::S(Deg::var(param)))).collect();
     super::engine::check_symbolic_degrees(degrees, &BTreeMap::new(), &[power])?;
@@ -226,7 +177,6 @@ fn library_power_on(
             )
         })
         .collect::<Result<_>>()?;
-    let _ = ctx;
     BezierCurve::from_power_on(
         &coeffs,
         &super::engine::constant(&a.text()?)?,
@@ -289,10 +239,9 @@ pub fn conic_type_of(coef: &[BigRational; 6]) -> &'static str {
     }
 }
 
-fn check_conic_type(ctx: &Ctx<'_>) -> Result<Checked> {
-    let c = ctx.claim;
-    let (l, r) = ctx.equation(c.need(&c.equation, "equation")?)?;
-    let printed = c.need(&c.conic, "conic")?;
+fn check_conic_type(ctx: &Ctx<'_>, claim: &ConicType) -> Result<Checked> {
+    let (l, r) = ctx.equation(&claim.equation)?;
+    let printed = claim.conic.as_str();
     let names: Rc<[String]> = Rc::from(vec!["x".to_string(), "y".to_string()]);
     let degrees = ["x", "y"]
         .iter()
@@ -347,15 +296,15 @@ fn check_conic_type(ctx: &Ctx<'_>) -> Result<Checked> {
 /// vanish there (δ² is a convex quadratic in `k, l` with the Gram matrix as Hessian, so a zero
 /// gradient is the global minimum when the tangents are independent); the printed `k`, `l`,
 /// `δ²` (when given) must be equal to the computed ones. A plane curve must give `δ² = 0`.
-fn check_fit(ctx: &Ctx<'_>) -> Result<Checked> {
+fn check_fit(ctx: &Ctx<'_>, c: &Fit) -> Result<Checked> {
     use crate::fit::{delta_squared, delta_squared_gradient, fit_cubic, fit_cubic_closed_form, CubicFitSource};
-    let c = ctx.claim;
-    let (name, spec) = c
+    let (name, spec) = ctx
+        .decls
         .curves
         .as_ref()
         .filter(|m| m.len() == 1)
         .and_then(|m| m.iter().next())
-        .ok_or_else(|| Error::Parse(format!("claim {}: fit needs exactly one curve", c.id)))?;
+        .ok_or_else(|| Error::Parse(format!("claim {}: fit needs exactly one curve", ctx.id)))?;
     let data = match CurveObj::<BigRational>::from_spec(spec)? {
         CurveObj::Polynomial(curve) => curve.cubic_fit_data()?,
         CurveObj::Rational(curve) => curve.cubic_fit_data()?,
@@ -413,18 +362,18 @@ fn check_fit(ctx: &Ctx<'_>) -> Result<Checked> {
     ))
 }
 
-fn check_weight_type(ctx: &Ctx<'_>) -> Result<Checked> {
-    let c = ctx.claim;
-    let printed = c.need(&c.conic, "conic")?;
-    let (name, spec) = c
+fn check_weight_type(ctx: &Ctx<'_>, claim: &WeightType) -> Result<Checked> {
+    let printed = claim.conic.as_str();
+    let (name, spec) = ctx
+        .decls
         .curves
         .as_ref()
         .and_then(|m| m.iter().next())
-        .ok_or_else(|| Error::Parse(format!("claim {}: weight_type needs one curve with weights", c.id)))?;
+        .ok_or_else(|| Error::Parse(format!("claim {}: weight_type needs one curve with weights", ctx.id)))?;
     let w = spec
         .weights
         .as_ref()
-        .ok_or_else(|| Error::Parse(format!("claim {}: the curve {name} needs weights", c.id)))?;
+        .ok_or_else(|| Error::Parse(format!("claim {}: the curve {name} needs weights", ctx.id)))?;
     let verdict = |kind: &str, detail: String| {
         if kind == printed {
             Checked::new(Verdict::Proved, format!("{detail} ⇒ {kind}: proof"))
@@ -432,7 +381,7 @@ fn check_weight_type(ctx: &Ctx<'_>) -> Result<Checked> {
             Checked::new(Verdict::Fails, format!("{detail} ⇒ {kind}, not {printed}"))
         }
     };
-    if uses_sqrt(c) {
+    if uses_sqrt(ctx.decls, &[]) {
         let pts = points::<QuadraticIrrational>(&spec.points)?;
         let ws = w
             .iter()
@@ -472,12 +421,12 @@ fn check_weight_type(ctx: &Ctx<'_>) -> Result<Checked> {
 /// parameters; the identity `x(s, t) = λ E(αs + β, γt + δ)` is then proved independently on a
 /// 4×4 grid (bicubic: degree ≤ 3 in each parameter).
 fn check_enneper(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
-    let c = ctx.claim;
-    let (name, spec) = c
+    let (name, spec) = ctx
+        .decls
         .surfaces
         .as_ref()
         .and_then(|m| m.iter().next())
-        .ok_or_else(|| Error::Parse(format!("claim {}: enneper needs one surface", c.id)))?;
+        .ok_or_else(|| Error::Parse(format!("claim {}: enneper needs one surface", ctx.id)))?;
     let net = super::engine::net_from_spec::<BigRational>(spec)?;
     let surface = BezierSurface::new(net)?;
     let found = surface.enneper_matches()?;
@@ -503,13 +452,12 @@ fn check_enneper(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
             format!("({})*t + ({})", m.gamma, m.delta),
         )
     };
-    let mut cl = c.clone();
-    cl.kind = "identity".into();
-    cl.vars = Some(vec!["s".into(), "t".into()]);
-    cl.defs = Some(vec![
-        "E(u, v) = (u - u^3/3 + u*v^2, v - v^3/3 + v*u^2, u^2 - v^2)".into()
-    ]);
-    let sub = Ctx::new(&cl)?;
+    let decls = Decls {
+        vars: Some(vec!["s".into(), "t".into()]),
+        defs: vec!["E(u, v) = (u - u^3/3 + u*v^2, v - v^3/3 + v*u^2, u^2 - v^2)".into()],
+        ..ctx.decls.clone()
+    };
+    let sub = Ctx::new(ctx.id, &decls, Vec::new())?;
     let lhs = sub.expr(&format!("{name}(s, t)"))?;
     let rhs = sub.expr(&format!("({})*E({u}, {v})", m.lambda))?;
     let out = check_chain::<BigRational>(&sub, &[lhs, rhs], detail)?;

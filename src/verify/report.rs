@@ -1,6 +1,6 @@
 //! The reports of a `prove` run: readable text, JSON, and the step-by-step `explain`.
 
-use super::claims::{Claim, ClaimFile};
+use super::claims::{Claim, ClaimFile, Identity, Kind, Sides};
 use super::engine::{Checked, CurveObj};
 use super::{ClaimOutcome, Report, Verdict};
 use crate::bernstein::bernstein_all;
@@ -314,7 +314,7 @@ pub(super) fn certificate_case(checked: &Checked) -> (&'static str, Vec<&str>) {
 /// correction, the misprint it corrects).
 pub(super) fn misprint_lines(f: &ClaimFile, c: &Claim) -> Vec<String> {
     let mut out = Vec::new();
-    if matches!(c.expected(), Ok(Verdict::Fails)) {
+    if c.expected() == Verdict::Fails {
         out.push("expected:  fails, as printed: a misprint of the text (kept, never corrected in place)".into());
         if let Some(note) = &c.note {
             out.push(format!("note:      {note}"));
@@ -364,7 +364,7 @@ pub(super) fn sample_evaluations<'a>(case: &Case<'a>, k: usize) -> Vec<&'a str> 
 pub(super) fn argument(c: &Claim, checked: &Checked) -> Vec<String> {
     let by_points = checked.steps.iter().any(|l| l.contains("points suffice"));
     let mut a = Vec::new();
-    if c.kind == "inequality" {
+    if matches!(c.kind, Kind::Inequality(_)) {
         a.extend(super::inequality::ARGUMENT.iter().map(|l| l.to_string()));
         if checked.certificate.starts_with("for every") {
             a.extend(super::inequality::ARGUMENT_FOR_EVERY.iter().map(|l| l.to_string()));
@@ -373,6 +373,7 @@ pub(super) fn argument(c: &Claim, checked: &Checked) -> Vec<String> {
         a.extend(super::symbolic::ARGUMENT.iter().map(|l| l.to_string()));
     } else if by_points {
         let vars = c
+            .decls
             .vars
             .as_ref()
             .map(|v| v.join(", "))
@@ -404,36 +405,36 @@ pub(super) fn argument(c: &Claim, checked: &Checked) -> Vec<String> {
 }
 
 /// Why the check of a claim without a points-per-degree log suffices, by kind.
-fn kind_argument(kind: &str) -> &'static [&'static str] {
+fn kind_argument(kind: &Kind) -> &'static [&'static str] {
     match kind {
-        "conic_type" => &[
+        Kind::ConicType(_) => &[
             "The conic A x² + B xy + C y² + D x + E y + F = 0 is degenerate when its symmetric 3×3 matrix is",
             "singular; otherwise it is an ellipse (with real points when (A + C)·det < 0), a parabola or a",
             "hyperbola as B² − 4AC < 0, = 0 or > 0. Every quantity is computed exactly from the coefficients,",
             "so each sign is decided, not estimated.",
         ],
-        "weight_type" => &[
+        Kind::WeightType(_) => &[
             "A rational quadratic with positive weights w0, w1, w2 (as in the texts) is an arc of an ellipse, a parabola or a",
             "hyperbola as w1²/(w0 w2) < 1, = 1 or > 1 (the ratio is unchanged by reparametrisation); it is",
             "computed exactly from the weights.",
         ],
-        "implies" => &[
+        Kind::Implies(_) => &[
             "The equation, moved to one side, is compared with the factor times the premise by exact symbolic",
             "expansion in every symbol and vector coordinate: if the two are identical, the premise being zero",
             "forces the equation. A failure is an exact point where the premise holds and the equation does not.",
         ],
-        "fit" => &[
+        Kind::Fit(_) => &[
             "δ²(k, l) is a quadratic in the tangent lengths k and l. The normal equations (11) are solved by exact",
             "elimination and compared with the closed form (13); a zero gradient there with a non-singular Gram",
             "matrix makes that point the unique minimum, so the printed k, l and δ² are the method's values.",
         ],
-        "theorem" => &[
+        Kind::Theorem(_) => &[
             "A general theorem, checked for each degree n of its range by the library's own code. For each n",
             "the check is a proof: both sides are polynomials of bounded degree in the parameters and linear",
             "in the data, so the finitely many cases of the certificate (basis polygons, matrix units,",
             "parameters) cover every input of that degree. Degrees outside the range are not covered.",
         ],
-        "convergence" => &[
+        Kind::Convergence(_) => &[
             "A statement about a limit cannot be decided by finitely many exact evaluations: the certificate is",
             "bounded evidence, the exact distances for the elevations checked and the explicit bound they meet.",
         ],
@@ -447,28 +448,23 @@ fn header(s: &mut String, f: &ClaimFile, c: &Claim, checked: &Checked, range_bou
     let _ = writeln!(s, "claim {} ({})", c.id, f.path.display());
     let _ = writeln!(s, "source:    {}", c.source);
     let _ = writeln!(s, "statement: {}", c.statement);
-    let _ = writeln!(s, "kind:      {}", c.kind);
-    for (k, v) in [
-        ("lhs", &c.lhs),
-        ("rhs", &c.rhs),
-        ("on", &c.on),
-        ("equation", &c.equation),
-        ("premise", &c.premise),
-        ("factor", &c.factor),
-        ("power", &c.power),
-    ] {
-        if let Some(v) = v {
-            let _ = writeln!(s, "{k:<10} {v}");
-        }
+    let _ = writeln!(s, "kind:      {}", c.kind.name());
+    for (k, v) in c.kind.shown_fields() {
+        let _ = writeln!(s, "{k:<10} {v}");
     }
-    if let Some(ch) = &c.chain {
+    if let Kind::Identity(Identity {
+        sides: Sides::Chain(ch),
+        ..
+    }) = &c.kind
+    {
         let _ = writeln!(s, "chain:     {}", ch.join("\n         = "));
     }
-    if let Some(d) = &c.defs {
-        let _ = writeln!(s, "where:     {}", d.join("\n           "));
+    if !c.decls.defs.is_empty() {
+        let _ = writeln!(s, "where:     {}", c.decls.defs.join("\n           "));
     }
-    if let Some(r) = &c.ranges {
-        let _ = writeln!(s, "for:       {}", r.join(", "));
+    if !c.decls.ranges.is_empty() {
+        let ranges: Vec<String> = c.decls.ranges.iter().map(|r| r.to_string()).collect();
+        let _ = writeln!(s, "for:       {}", ranges.join(", "));
     }
     let _ = writeln!(
         s,
@@ -504,6 +500,14 @@ fn value_in(line: &str, name: &str) -> Option<BigRational> {
     })
 }
 
+/// The members of an identity claim's chain (none for another kind).
+fn identity_members(c: &Claim) -> Vec<String> {
+    match &c.kind {
+        Kind::Identity(i) => i.sides.members(),
+        _ => Vec::new(),
+    }
+}
+
 /// The scheme (9) that goes with the worked case: for a claim about a symbolic polygon whose
 /// expressions use its scheme (`b(i, r, t0)`), the scheme of the case's unit polygon at the case's
 /// first parameter; else the first polynomial curve of the claim at its first nonzero checked
@@ -513,13 +517,10 @@ pub(super) fn worked_scheme(
     checked: &Checked,
     eval: Option<&str>,
 ) -> Option<DeCasteljauScheme<BigRational>> {
-    if let (Some(poly), Some(line), Some(var)) = (&c.polygon, eval, c.vars.as_ref().and_then(|v| v.first())) {
-        let uses_scheme = c
-            .chain
+    if let (Some(poly), Some(line), Some(var)) = (&c.decls.polygon, eval, c.decls.vars.as_ref().and_then(|v| v.first()))
+    {
+        let uses_scheme = identity_members(c)
             .iter()
-            .flatten()
-            .chain(c.lhs.iter())
-            .chain(c.rhs.iter())
             .any(|e| e.contains(&format!("{}(0, ", poly.name)));
         let n: usize = value_in(line, &poly.degree).and_then(|v| v.to_integer().try_into().ok())?;
         let t = value_in(line, var)?;
@@ -543,7 +544,8 @@ pub(super) fn worked_scheme(
         .find(|t| !t.is_zero())
         .cloned()
         .unwrap_or_else(|| BigRational::new(1.into(), 2.into()));
-    c.curves
+    c.decls
+        .curves
         .as_ref()?
         .values()
         .find_map(|spec| match CurveObj::<BigRational>::from_spec(spec) {
@@ -555,18 +557,11 @@ pub(super) fn worked_scheme(
 /// For a claim whose expressions contain `Σ_r b_0^r(t0) B_r^n(t)` (`b(0, r, t0)*B(r, n, t)`):
 /// that sum written out at the worked evaluation, from the scheme's upper edge, and its value.
 pub(super) fn worked_sum(c: &Claim, scheme: &DeCasteljauScheme<BigRational>, eval: &str) -> Option<String> {
-    let poly = c.polygon.as_ref()?;
-    let vars = c.vars.as_ref()?;
+    let poly = c.decls.polygon.as_ref()?;
+    let vars = c.decls.vars.as_ref()?;
     let (v0, v1) = (vars.first()?, vars.get(1)?);
     let pattern = format!("{}(0, r, {v0})*B(r, {}, {v1})", poly.name, poly.degree);
-    if !c
-        .chain
-        .iter()
-        .flatten()
-        .chain(c.lhs.iter())
-        .chain(c.rhs.iter())
-        .any(|e| e.contains(&pattern))
-    {
+    if !identity_members(c).iter().any(|e| e.contains(&pattern)) {
         return None;
     }
     let t = value_in(eval, v1)?;

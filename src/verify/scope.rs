@@ -12,9 +12,10 @@
 //! search: the finite ranges were just checked), within the symbolic route's own limits, and
 //! claims that use library objects are answered from their expressions without translating.
 
-use super::claims::{Claim, PolygonSpec};
+use super::claims::{Claim, Decls, Identity, IntRange, Kind, Sides, Theorem};
 use super::engine::Ctx;
 use super::expr::Expr;
+use super::identity::Goal;
 use super::Verdict;
 use crate::error::Error;
 
@@ -28,20 +29,27 @@ pub fn range_bound(claim: &Claim, verdict: Verdict) -> Option<String> {
 }
 
 fn reason(claim: &Claim) -> String {
-    if claim.kind == "theorem" {
-        return theorem_reason(claim);
-    }
-    if claim.kind != "identity" {
-        return format!(
-            "kind `{}` is checked case by case; the symbolic route takes identity claims",
-            claim.kind
-        );
-    }
-    if claim.symbols.is_some() || claim.vectors.is_some() {
+    let identity = match &claim.kind {
+        Kind::Theorem(t) => return theorem_reason(&claim.id, t),
+        Kind::Identity(identity) => identity,
+        other => {
+            return format!(
+                "kind `{}` is checked case by case; the symbolic route takes identity claims",
+                other.name()
+            )
+        }
+    };
+    let goal = Goal {
+        id: claim.id.clone(),
+        decls: claim.decls.clone(),
+        identity: identity.clone(),
+    };
+    let decls = &goal.decls;
+    if decls.symbolic() {
         return "it expands symbols or vectors exactly, which the symbolic route does not take".into();
     }
-    if claim.net.is_some() || claim.surfaces.is_some() {
-        let objects = library_objects(claim);
+    if decls.net.is_some() || decls.surfaces.is_some() {
+        let objects = library_objects(&goal);
         return format!(
             "a surface: the symbolic route takes a control polygon `b[j]`, not a control net `b[i, j]`{}",
             if objects.is_empty() {
@@ -51,17 +59,17 @@ fn reason(claim: &Claim) -> String {
             }
         );
     }
-    if claim.curves.is_some() {
+    if decls.curves.is_some() {
         return "it uses concrete curves, evaluated per degree".into();
     }
-    let objects = library_objects(claim);
+    let objects = library_objects(&goal);
     if !objects.is_empty() {
         return format!(
             "uses {}: library code evaluated per degree, not a formula in n",
             listed(&objects)
         );
     }
-    let (opened, written) = open_ranges(claim);
+    let (opened, written) = open_ranges(&goal);
     if written.is_empty() {
         return "no range with a constant upper bound to open".into();
     }
@@ -77,60 +85,63 @@ fn reason(claim: &Claim) -> String {
 }
 
 /// ` at equality 3 of 5 (`a = b`)` for a chain of more than two sides, else empty.
-fn step(claim: &Claim, k: usize) -> String {
-    match claim.chain.as_ref().filter(|c| c.len() > 2) {
-        Some(chain) => format!(
+fn step(goal: &Goal, k: usize) -> String {
+    match &goal.identity.sides {
+        Sides::Chain(chain) if chain.len() > 2 => format!(
             " at equality {} of {} (`{} = {}`)",
             k + 1,
             chain.len() - 1,
             chain[k],
             chain[k + 1]
         ),
-        None => String::new(),
+        _ => String::new(),
     }
 }
 
 /// The sides of equality `k` (the claim's `lhs`, `rhs`, or two neighbours of its chain).
-fn sides(claim: &Claim, k: usize) -> Vec<String> {
-    match &claim.chain {
-        Some(chain) => chain.iter().skip(k).take(2).cloned().collect(),
-        None => claim.lhs.iter().chain(&claim.rhs).cloned().collect(),
-    }
+fn sides(goal: &Goal, k: usize) -> Vec<String> {
+    goal.identity.sides.members().into_iter().skip(k).take(2).collect()
 }
 
-/// The symbolic proof of each equality of a claim with open ranges, in order: the index of
+/// The symbolic proof of each equality of a goal with open ranges, in order: the index of
 /// the first that does not go through, with the reason.
-fn attempt_equalities(claim: &Claim) -> Result<(), (usize, Error)> {
-    match &claim.chain {
-        Some(chain) if chain.len() > 2 => {
+fn attempt_equalities(goal: &Goal) -> Result<(), (usize, Error)> {
+    let attempt = |identity: &Identity| super::symbolic::attempt_for_every(&goal.id, &goal.decls, identity);
+    match &goal.identity.sides {
+        Sides::Chain(chain) if chain.len() > 2 => {
             for (k, pair) in chain.windows(2).enumerate() {
-                let mut c = claim.clone();
-                c.chain = Some(pair.to_vec());
-                super::symbolic::attempt_for_every(&c).map_err(|e| (k, e))?;
+                let step = Identity {
+                    sides: Sides::Chain(pair.to_vec()),
+                    certificates: goal.identity.certificates.clone(),
+                };
+                attempt(&step).map_err(|e| (k, e))?;
             }
             Ok(())
         }
-        _ => super::symbolic::attempt_for_every(claim)
-            .map(|_| ())
-            .map_err(|e| (0, e)),
+        _ => attempt(&goal.identity).map(|_| ()).map_err(|e| (0, e)),
     }
 }
 
-/// The symbolic proof of a claim with open ranges, as written or — when the equality that
+/// The symbolic proof of a goal with open ranges, as written or — when the equality that
 /// stops it has a sum starting at a variable bounded by an open one — with its ranges
 /// reordered ([`reordered`]): `Ok` with the ranges that work, else the first failing
 /// equality and the reason.
-fn attempt(claim: &Claim) -> Result<Vec<String>, (usize, Error)> {
-    let written = claim.ranges.clone().unwrap_or_default();
-    let (k, first) = match attempt_equalities(claim) {
-        Ok(()) => return Ok(written),
+fn attempt(goal: &Goal) -> Result<Vec<IntRange>, (usize, Error)> {
+    let written = &goal.decls.ranges;
+    let (k, first) = match attempt_equalities(goal) {
+        Ok(()) => return Ok(written.clone()),
         Err(failed) => failed,
     };
-    if let Some((rs, v)) = reordered(&written) {
-        if sums_from(claim, &sides(claim, k), &v) {
-            let mut c = claim.clone();
-            c.ranges = Some(rs.clone());
-            if attempt_equalities(&c).is_ok() {
+    if let Some((rs, v)) = reordered(written) {
+        if sums_from(goal, &sides(goal, k), &v) {
+            let again = Goal {
+                decls: Decls {
+                    ranges: rs.clone(),
+                    ..goal.decls.clone()
+                },
+                ..goal.clone()
+            };
+            if attempt_equalities(&again).is_ok() {
                 return Ok(rs);
             }
         }
@@ -139,7 +150,7 @@ fn attempt(claim: &Claim) -> Result<Vec<String>, (usize, Error)> {
 }
 
 /// Whether one of `texts` has a sum whose lower bound uses the variable `v`.
-fn sums_from(claim: &Claim, texts: &[String], v: &str) -> bool {
+fn sums_from(goal: &Goal, texts: &[String], v: &str) -> bool {
     fn walk(e: &Expr, v: &str) -> bool {
         match e {
             Expr::Sum(_, a, b, body) => a.free_vars().iter().any(|x| x == v) || walk(b, v) || walk(body, v),
@@ -150,68 +161,59 @@ fn sums_from(claim: &Claim, texts: &[String], v: &str) -> bool {
             Expr::Num(_) | Expr::Var(_) => false,
         }
     }
-    let Some(ctx) = closed_ctx_claim(claim) else {
-        return false;
-    };
-    let Ok(ctx) = Ctx::new(&ctx) else {
+    let closed = super::symbolic::closed_decls(&goal.decls);
+    let Ok(ctx) = Ctx::new(&goal.id, &closed, Vec::new()) else {
         return false;
     };
     texts.iter().any(|t| ctx.expr(t).is_ok_and(|e| walk(&e, v)))
 }
 
-/// The claim over finite ranges (the parser of expressions takes no open range).
-fn closed_ctx_claim(claim: &Claim) -> Option<Claim> {
-    let rs = super::symbolic::ranges(claim).ok()?;
-    Some(super::symbolic::closed_claim(claim, &rs))
-}
-
 /// `n = c..`, `j = a..=n` (constants, `c ≤ a`) written as `j = a..`, `n = j..`: the same
 /// integer points, with the open variable of a sum's bound first (the WZ induction needs the
 /// lower bound of its sum free of the induction variable). `None` when no range has that shape.
-fn reordered(ranges: &[String]) -> Option<(Vec<String>, String)> {
-    let parse = |r: &str| -> Option<(String, String, Option<String>)> {
-        let (v, rest) = r.split_once('=')?;
-        let (v, rest) = (v.trim().to_string(), rest.trim());
-        Some(match rest.split_once("..=") {
-            Some((a, b)) => (v, a.trim().to_string(), Some(b.trim().to_string())),
-            None => (v, rest.strip_suffix("..")?.trim().to_string(), None),
-        })
-    };
-    let parsed: Vec<_> = ranges.iter().map(|r| parse(r)).collect::<Option<_>>()?;
+fn reordered(ranges: &[IntRange]) -> Option<(Vec<IntRange>, String)> {
     let int = |t: &str| t.parse::<i64>().ok();
-    for (k, (v, a, b)) in parsed.iter().enumerate() {
-        let Some(w) = b else { continue };
-        let Some(pos) = parsed.iter().position(|(x, _, hi)| x == w && hi.is_none()) else {
+    for (k, r) in ranges.iter().enumerate() {
+        let Some(w) = &r.to else { continue };
+        let Some(pos) = ranges.iter().position(|x| &x.var == w && x.is_open()) else {
             continue;
         };
-        let (Some(c), Some(a0)) = (int(&parsed[pos].1), int(a)) else {
+        let (Some(c), Some(a0)) = (int(&ranges[pos].from), int(&r.from)) else {
             continue;
         };
         if pos > k || c > a0 {
             continue;
         }
-        let mut out: Vec<String> = Vec::new();
-        for (i, r) in ranges.iter().enumerate() {
+        let mut out: Vec<IntRange> = Vec::new();
+        for (i, x) in ranges.iter().enumerate() {
             if i == pos {
-                out.push(format!("{v} = {a}.."));
-                out.push(format!("{w} = {v}.."));
+                out.push(IntRange {
+                    var: r.var.clone(),
+                    from: r.from.clone(),
+                    to: None,
+                });
+                out.push(IntRange {
+                    var: w.clone(),
+                    from: r.var.clone(),
+                    to: None,
+                });
             } else if i != k {
-                out.push(r.clone());
+                out.push(x.clone());
             }
         }
-        return Some((out, v.clone()));
+        return Some((out, r.var.clone()));
     }
     None
 }
 
-fn quoted(ranges: &[String]) -> String {
+fn quoted(ranges: &[IntRange]) -> String {
     ranges.iter().map(|r| format!("`{r}`")).collect::<Vec<_>>().join(", ")
 }
 
 /// A theorem claim stays in its `degrees` (a theorem takes no open range); the note says
 /// whether that is all that binds it, or the library code it runs.
-fn theorem_reason(claim: &Claim) -> String {
-    let name = claim.theorem.as_deref().unwrap_or("?");
+fn theorem_reason(id: &str, theorem: &Theorem) -> String {
+    let name = theorem.theorem.as_str();
     let head = format!("a theorem claim (`{name}`), checked for each degree of its `degrees`");
     let Some(parts) = super::theorems::identities(name) else {
         let what = super::theorems::THEOREMS
@@ -220,7 +222,7 @@ fn theorem_reason(claim: &Claim) -> String {
             .map_or("", |(_, w)| *w);
         return format!("{head} by code of its own ({what}), not a formula in n");
     };
-    let lo = claim
+    let lo = theorem
         .degrees
         .as_deref()
         .and_then(|d| d.split("..").next())
@@ -229,29 +231,31 @@ fn theorem_reason(claim: &Claim) -> String {
     let mut objects: Vec<(String, String)> = Vec::new();
     let mut formulas = Vec::new();
     for (min_n, ranges, chain, vars) in parts {
-        let mut c = claim.clone();
-        c.kind = "identity".into();
-        c.theorem = None;
-        c.degrees = None;
-        c.polygon = Some(PolygonSpec {
-            name: "b".into(),
-            degree: "n".into(),
-        });
-        c.vars = Some(vars.iter().map(|v| v.to_string()).collect());
-        c.lhs = None;
-        c.rhs = None;
-        c.chain = Some(chain);
-        let mut rs = vec![format!("n = {}..", lo.max(min_n))];
-        rs.extend(ranges);
-        c.ranges = Some(rs);
-        let used = objects_of(&c);
+        let Ok(decls) = super::theorems::part_decls(format!("n = {}..", lo.max(min_n)), &ranges, &vars) else {
+            continue;
+        };
+        let mut goal = Goal {
+            id: id.to_string(),
+            decls,
+            identity: Identity {
+                sides: Sides::Chain(chain),
+                certificates: Vec::new(),
+            },
+        };
+        let used = objects_of(&goal);
         if used.is_empty() {
             // Without control points the identity is over no polygon (a polygon's degree
             // would bound `n` from below by its symbolic index).
-            if !c.chain.iter().flatten().any(|e| e.contains("b[")) {
-                c.polygon = None;
+            if !goal.identity.sides.members().iter().any(|e| e.contains("b[")) {
+                goal = Goal {
+                    decls: Decls {
+                        polygon: None,
+                        ..goal.decls
+                    },
+                    ..goal
+                };
             }
-            formulas.push(c);
+            formulas.push(goal);
         }
         for o in used {
             if !objects.contains(&o) {
@@ -266,14 +270,14 @@ fn theorem_reason(claim: &Claim) -> String {
         );
     }
     let mut forms = Vec::new();
-    for c in &formulas {
-        let (opened, _) = open_ranges(c);
+    for g in &formulas {
+        let (opened, _) = open_ranges(g);
         match attempt(&opened) {
             Ok(rs) => forms.push(quoted(&rs)),
             Err((_, e)) => {
                 return format!(
                     "{head}; written as an identity claim with {} the symbolic proof does not go through: {}",
-                    quoted(opened.ranges.as_deref().unwrap_or_default()),
+                    quoted(&opened.decls.ranges),
                     readable(&e)
                 )
             }
@@ -286,30 +290,37 @@ fn theorem_reason(claim: &Claim) -> String {
 }
 
 /// A range with a constant upper bound written open.
-fn open_text(r: &str) -> String {
-    match r.split_once("..=") {
-        Some((head, to)) if is_constant(to) => format!("{}..", head.trim_end()),
-        _ => r.to_string(),
+fn open_range(r: &IntRange) -> IntRange {
+    match &r.to {
+        Some(to) if is_constant(to) => IntRange { to: None, ..r.clone() },
+        _ => r.clone(),
     }
 }
 
-/// The claim with each constant upper bound dropped, and the opened ranges as written
+/// The goal with each constant upper bound dropped, and the opened ranges as written
 /// (`n = 0..`).
-fn open_ranges(claim: &Claim) -> (Claim, Vec<String>) {
-    let mut c = claim.clone();
+fn open_ranges(goal: &Goal) -> (Goal, Vec<String>) {
     let mut written = Vec::new();
-    c.ranges = claim.ranges.as_ref().map(|rs| {
-        rs.iter()
-            .map(|r| {
-                let open = open_text(r);
-                if open != *r {
-                    written.push(format!("`{open}`"));
-                }
-                open
-            })
-            .collect()
-    });
-    (c, written)
+    let ranges = goal
+        .decls
+        .ranges
+        .iter()
+        .map(|r| {
+            let open = open_range(r);
+            if open != *r {
+                written.push(format!("`{open}`"));
+            }
+            open
+        })
+        .collect();
+    let opened = Goal {
+        decls: Decls {
+            ranges,
+            ..goal.decls.clone()
+        },
+        ..goal.clone()
+    };
+    (opened, written)
 }
 
 /// What a library operation of expressions ([`super::methods`]) computes.
@@ -360,24 +371,21 @@ fn readable(e: &Error) -> String {
     }
 }
 
-/// The library objects and operations the claim's expressions use, each once, described.
-fn library_objects(claim: &Claim) -> Vec<String> {
-    describe(&objects_of(claim))
+/// The library objects and operations the goal's expressions use, each once, described.
+fn library_objects(goal: &Goal) -> Vec<String> {
+    describe(&objects_of(goal))
 }
 
-/// The `(phrase, name)` of each library object the claim's expressions use.
-fn objects_of(claim: &Claim) -> Vec<(String, String)> {
-    let Some(closed) = closed_ctx_claim(claim) else {
+/// The `(phrase, name)` of each library object the goal's expressions use.
+fn objects_of(goal: &Goal) -> Vec<(String, String)> {
+    let closed = super::symbolic::closed_decls(&goal.decls);
+    let Ok(ctx) = Ctx::new(&goal.id, &closed, Vec::new()) else {
         return Vec::new();
     };
-    let Ok(ctx) = Ctx::new(&closed) else {
-        return Vec::new();
-    };
-    let texts = claim.lhs.iter().chain(&claim.rhs).chain(claim.chain.iter().flatten());
     let mut found = Vec::new();
-    for t in texts {
-        if let Ok(e) = ctx.expr(t) {
-            objects_in(claim, &e, &mut found);
+    for t in goal.identity.sides.members() {
+        if let Ok(e) = ctx.expr(&t) {
+            objects_in(&goal.decls, &e, &mut found);
         }
     }
     found
@@ -402,15 +410,15 @@ fn describe(found: &[(String, String)]) -> Vec<String> {
 
 /// Collects `(phrase, name)` for each library object in `e`; `{}` in the phrase is where
 /// the name goes.
-fn objects_in(claim: &Claim, e: &Expr, out: &mut Vec<(String, String)>) {
+fn objects_in(decls: &Decls, e: &Expr, out: &mut Vec<(String, String)>) {
     let mut add = |what: &str, name: String| {
         let item = (what.to_string(), name);
         if !out.contains(&item) {
             out.push(item);
         }
     };
-    let polygon = claim.polygon.as_ref().map(|p| p.name.as_str());
-    let net = claim.net.as_ref().map(|p| p.name.as_str());
+    let polygon = decls.polygon.as_ref().map(|p| p.name.as_str());
+    let net = decls.net.as_ref().map(|p| p.name.as_str());
     match e {
         Expr::Call(name, args) => {
             let base = name.trim_end_matches('\'');
@@ -432,27 +440,27 @@ fn objects_in(claim: &Claim, e: &Expr, out: &mut Vec<(String, String)>) {
                 add(what, name.clone());
             }
             for a in args {
-                objects_in(claim, a, out);
+                objects_in(decls, a, out);
             }
         }
         Expr::Sum(_, a, b, body) => {
-            objects_in(claim, a, out);
-            objects_in(claim, b, out);
-            objects_in(claim, body, out);
+            objects_in(decls, a, out);
+            objects_in(decls, b, out);
+            objects_in(decls, body, out);
         }
-        Expr::Neg(a) | Expr::Fact(a) => objects_in(claim, a, out),
+        Expr::Neg(a) | Expr::Fact(a) => objects_in(decls, a, out),
         Expr::Bin(_, a, b) => {
-            objects_in(claim, a, out);
-            objects_in(claim, b, out);
+            objects_in(decls, a, out);
+            objects_in(decls, b, out);
         }
         Expr::Index(_, args) | Expr::Tuple(args) => {
             for a in args {
-                objects_in(claim, a, out);
+                objects_in(decls, a, out);
             }
         }
         Expr::Matrix(rows) => {
             for a in rows.iter().flatten() {
-                objects_in(claim, a, out);
+                objects_in(decls, a, out);
             }
         }
         Expr::Num(_) | Expr::Var(_) => {}

@@ -29,11 +29,12 @@
 //! of each open range (the ordinary engine): a counterexample there is a `fails` verdict with
 //! exact values; a symbolic check that does not go through is an error, never a verdict.
 
-use super::claims::Claim;
+use super::claims::{Decls, Identity, IntRange};
 use super::engine::{Checked, Ctx};
 use super::eval::Alg;
 use super::expr::{self, Expr, Op};
 use super::hyper::{lin_mul, lin_neg, lin_subst, power_of, prove_zero, Aff, Domain, Lin, Symbols, Term, ZeroOutcome};
+use super::identity::check_identity;
 use super::poly::RatFunc;
 use super::Verdict;
 use crate::error::{Error, Result};
@@ -57,18 +58,8 @@ pub const CROSS_CHECK: i64 = 3;
 const UNIT: &str = "__j";
 
 /// One range of a claim: `v = lo..=hi` or the open `v = lo..`.
-#[derive(Clone, Debug)]
-pub struct SymRange {
-    /// The variable.
-    pub var: String,
-    /// The least value.
-    pub from: String,
-    /// The largest value, or none (every value from `from` on).
-    pub to: Option<String>,
-}
-
 /// The ranges as a certificate states them: `n = 0..=3`, `every n ≥ 0`, joined by commas.
-fn scope(rs: &[SymRange]) -> String {
+fn scope(rs: &[IntRange]) -> String {
     rs.iter()
         .map(|r| match &r.to {
             Some(to) => format!("{} = {}..={to}", r.var, r.from),
@@ -76,45 +67,6 @@ fn scope(rs: &[SymRange]) -> String {
         })
         .collect::<Vec<_>>()
         .join(", ")
-}
-
-/// Parses the claim's ranges, allowing open ones.
-pub fn ranges(claim: &Claim) -> Result<Vec<SymRange>> {
-    claim
-        .ranges
-        .iter()
-        .flatten()
-        .map(|text| {
-            let bad = || Error::Parse(format!("a range is written 'n = 0..=10' or 'n = 0..', not '{text}'"));
-            let (var, rest) = text.split_once('=').ok_or_else(bad)?;
-            let var = var.trim().to_string();
-            if var.is_empty() || !var.chars().all(|c| c.is_alphanumeric() || c == '_') {
-                return Err(bad());
-            }
-            if let Some((a, b)) = rest.split_once("..=") {
-                return Ok(SymRange {
-                    var,
-                    from: a.trim().into(),
-                    to: Some(b.trim().into()),
-                });
-            }
-            let a = rest.trim().strip_suffix("..").ok_or_else(bad)?;
-            Ok(SymRange {
-                var,
-                from: a.trim().into(),
-                to: None,
-            })
-        })
-        .collect()
-}
-
-/// Whether a claim has an open range (`n = 0..`): then it is proved for every value or not at all.
-pub fn is_for_every(claim: &Claim) -> bool {
-    claim
-        .ranges
-        .iter()
-        .flatten()
-        .any(|r| !r.contains("..=") && r.trim_end().ends_with(".."))
 }
 
 /// How many values past the first of each open range are searched for a counterexample when
@@ -129,24 +81,26 @@ pub const REFUTATION_COMBINATIONS: i64 = 200;
 /// The refutation search starts no new window after this long.
 pub const REFUTATION_TIME: Duration = Duration::from_secs(4);
 
-/// The claim with each open range closed after [`CROSS_CHECK`] values (for the evaluation check).
-pub fn closed_claim(claim: &Claim, rs: &[SymRange]) -> Claim {
-    closed_after(claim, rs, CROSS_CHECK)
+/// The declarations with each open range closed after [`CROSS_CHECK`] values (for the
+/// evaluation check).
+pub fn closed_decls(decls: &Decls) -> Decls {
+    closed_after(decls, CROSS_CHECK)
 }
 
-/// The claim with each open range closed after `extra` values past its first.
-fn closed_after(claim: &Claim, rs: &[SymRange], extra: i64) -> Claim {
-    let mut c = claim.clone();
-    c.certificate = None;
-    c.ranges = Some(
-        rs.iter()
-            .map(|r| match &r.to {
-                Some(to) => format!("{} = {}..={to}", r.var, r.from),
-                None => format!("{} = {}..=({}) + {extra}", r.var, r.from, r.from),
-            })
-            .collect(),
-    );
-    c
+/// The declarations with each open range closed after `extra` values past its first.
+fn closed_after(decls: &Decls, extra: i64) -> Decls {
+    let ranges = decls
+        .ranges
+        .iter()
+        .map(|r| IntRange {
+            to: Some(r.to.clone().unwrap_or_else(|| format!("({}) + {extra}", r.from))),
+            ..r.clone()
+        })
+        .collect();
+    Decls {
+        ranges,
+        ..decls.clone()
+    }
 }
 
 fn sum_vars(e: &Expr, out: &mut Vec<String>) {
@@ -779,9 +733,9 @@ fn show(l: &[Term]) -> String {
 
 /// The certificates, the symbol list (integers: ranges, summation variables, the unit index)
 /// and the continuous parameters of a claim with open ranges.
-fn prepare(claim: &Claim, ctx: &Ctx<'_>, rs: &[SymRange], sides: &[Expr]) -> Result<(Vec<Expr>, Symbols, Vec<String>)> {
-    let certs: Vec<Expr> = claim
-        .certificates()
+fn prepare(certificates: &[String], ctx: &Ctx<'_>, sides: &[Expr]) -> Result<(Vec<Expr>, Symbols, Vec<String>)> {
+    let rs = &ctx.decls.ranges;
+    let certs: Vec<Expr> = certificates
         .iter()
         .map(|c| expr::parse(c, &ctx.known).and_then(|e| expr::expand(&e, &ctx.defs)))
         .collect::<Result<_>>()?;
@@ -802,7 +756,7 @@ fn prepare(claim: &Claim, ctx: &Ctx<'_>, rs: &[SymRange], sides: &[Expr]) -> Res
             }
         }
     }
-    if claim.polygon.is_some() {
+    if ctx.decls.polygon.is_some() {
         ints.push(UNIT.into());
     }
     let conts: Vec<String> = ctx
@@ -816,7 +770,7 @@ fn prepare(claim: &Claim, ctx: &Ctx<'_>, rs: &[SymRange], sides: &[Expr]) -> Res
 
 impl Translator<'_> {
     /// The domain of the ranges (and records the polygon).
-    fn domain(&mut self, claim: &Claim, rs: &[SymRange]) -> Result<Domain> {
+    fn domain(&mut self, decls: &Decls, rs: &[IntRange]) -> Result<Domain> {
         let mut dom = Domain::default();
         for r in rs {
             let v = Aff::var(&r.var);
@@ -827,7 +781,7 @@ impl Translator<'_> {
                 dom = dom.with(to.minus(&v));
             }
         }
-        if let Some(p) = &claim.polygon {
+        if let Some(p) = &decls.polygon {
             let deg = self.aff(&expr::parse(&p.degree, &[])?)?;
             self.polygon = Some((p.name.clone(), deg));
         }
@@ -842,15 +796,15 @@ impl Translator<'_> {
 /// polynomials ≥ 0 on `[a, b]` (or any exponent of one > 0 there). `nonneg(q, strict)` decides a
 /// polynomial in the parameter on `[a, b]`. The evaluation check is the caller's.
 pub fn nonneg_for_every(
-    claim: &Claim,
+    decls: &Decls,
     ctx: &Ctx<'_>,
     p: &Expr,
     nonneg: &dyn Fn(&RatFunc, bool) -> Result<bool>,
     detail: bool,
 ) -> Result<Checked> {
-    let rs = ranges(claim)?;
+    let rs = &decls.ranges;
     let sides = [p.clone()];
-    let (certs, sym, conts) = prepare(claim, ctx, &rs, &sides)?;
+    let (certs, sym, conts) = prepare(&[], ctx, &sides)?;
     if conts.len() > 1 {
         return Err(Error::Domain(format!(
             "an inequality in one parameter, not {}",
@@ -858,7 +812,7 @@ pub fn nonneg_for_every(
         )));
     }
     let mut tr = Translator::new(&sym, &certs);
-    let dom = tr.domain(claim, &rs)?;
+    let dom = tr.domain(decls, rs)?;
     let lin = tr.lin(p, &dom)?;
     let mut log = Vec::new();
     let mut check = |live: &[&Term], d: &Domain, place: &str, log: &mut Vec<String>| -> Result<Option<String>> {
@@ -915,7 +869,7 @@ pub fn nonneg_for_every(
     let out = super::hyper::prove_pieces(&sym, &lin, &dom, &mut log, &mut check)?;
     match out {
         ZeroOutcome::Zero(pieces) => {
-            let open = scope(&rs);
+            let open = scope(rs);
             let mut out = Checked::new(
                 Verdict::Proved,
                 format!(
@@ -998,19 +952,22 @@ fn base_case_terms(
 /// counterexample (in widening windows, within [`REFUTATION_COMBINATIONS`] and
 /// [`REFUTATION_TIME`], up to the first window that cannot be evaluated); without one the claim
 /// is an error with the reason and the extent of the search.
-pub fn check(claim: &Claim, detail: bool) -> Result<Checked> {
-    prove_for_every(claim, detail).or_else(|reason| refute_in_search(claim, reason))
+pub fn check(id: &str, decls: &Decls, identity: &Identity, detail: bool) -> Result<Checked> {
+    prove_for_every(id, decls, identity, detail).or_else(|reason| refute_in_search(id, decls, identity, reason))
 }
 
-fn refute_in_search(claim: &Claim, reason: Error) -> Result<Checked> {
-    let Ok(rs) = ranges(claim) else {
-        return Err(reason);
-    };
-    let open: Vec<&str> = rs.iter().filter(|r| r.to.is_none()).map(|r| r.var.as_str()).collect();
+fn refute_in_search(id: &str, decls: &Decls, identity: &Identity, reason: Error) -> Result<Checked> {
+    let open: Vec<&str> = decls
+        .ranges
+        .iter()
+        .filter(|r| r.is_open())
+        .map(|r| r.var.as_str())
+        .collect();
     let windows = refutation_windows(open.len() as u32);
     let start = Instant::now();
     let mut tried = 0;
     let mut stop = "the search budget";
+    let members = identity.sides.members();
     // Widening windows: the values of a later window may be past what the ordinary engine
     // evaluates (a binomial beyond 64 bits), which must not hide a counterexample before them.
     for &extra in &windows {
@@ -1018,7 +975,8 @@ fn refute_in_search(claim: &Claim, reason: Error) -> Result<Checked> {
             stop = "the search time";
             break;
         }
-        match super::kinds::check_claim(&closed_after(claim, &rs, extra), false) {
+        let closed = closed_after(decls, extra);
+        match check_identity(id, &closed, &members, false) {
             Ok(mut out) if out.verdict == Verdict::Fails => {
                 out.range = None;
                 return Ok(out);
@@ -1052,16 +1010,15 @@ fn refutation_windows(open: u32) -> Vec<i64> {
     w
 }
 
-fn prove_for_every(claim: &Claim, detail: bool) -> Result<Checked> {
-    let rs = ranges(claim)?;
-    let closed = closed_claim(claim, &rs);
-    let evaluated = super::kinds::check_claim(&closed, false)?;
+fn prove_for_every(id: &str, decls: &Decls, identity: &Identity, detail: bool) -> Result<Checked> {
+    let closed = closed_decls(decls);
+    let evaluated = check_identity(id, &closed, &identity.sides.members(), false)?;
     if evaluated.verdict == Verdict::Fails {
         let mut out = evaluated;
         out.range = None;
         return Ok(out);
     }
-    let (cert, log) = prove_symbolic(claim, &rs, &closed)?;
+    let (cert, log) = prove_symbolic(id, decls, identity, &closed)?;
     let mut out = Checked::new(
         Verdict::Proved,
         format!(
@@ -1076,33 +1033,29 @@ fn prove_for_every(claim: &Claim, detail: bool) -> Result<Checked> {
     Ok(out)
 }
 
-/// Tries the symbolic proof alone (no evaluation cross-check, no counterexample search) of a
-/// claim with open ranges: `Ok` with the certificate when it goes through, else the reason.
+/// Tries the symbolic proof alone (no evaluation cross-check, no counterexample search) of an
+/// identity with open ranges: `Ok` with the certificate when it goes through, else the reason.
 /// No verdict comes from here: the caller only reports the outcome.
-pub(crate) fn attempt_for_every(claim: &Claim) -> Result<String> {
-    let rs = ranges(claim)?;
-    let closed = closed_claim(claim, &rs);
-    prove_symbolic(claim, &rs, &closed).map(|(cert, _)| cert)
+pub(crate) fn attempt_for_every(id: &str, decls: &Decls, identity: &Identity) -> Result<String> {
+    let closed = closed_decls(decls);
+    prove_symbolic(id, decls, identity, &closed).map(|(cert, _)| cert)
 }
 
-/// The symbolic proof of `claim` over its open ranges `rs`, parsed in the context of `closed`
-/// (the same claim over finite ranges): the certificate and the proof's log.
-fn prove_symbolic(claim: &Claim, rs: &[SymRange], closed: &Claim) -> Result<(String, Vec<String>)> {
-    let ctx = Ctx::new(closed)?;
-    let sides: Vec<Expr> = match (&claim.chain, &claim.lhs, &claim.rhs) {
-        (Some(chain), None, None) => chain.iter().map(|s| ctx.expr(s)).collect::<Result<_>>()?,
-        (None, Some(l), Some(r)) => vec![ctx.expr(l)?, ctx.expr(r)?],
-        _ => {
-            return Err(Error::Parse(format!(
-                "claim {}: an identity needs either lhs and rhs, or chain",
-                claim.id
-            )))
-        }
-    };
-    let (certs, sym, conts) = prepare(claim, &ctx, rs, &sides)?;
+/// The symbolic proof of `identity` over the open ranges of `decls`, parsed in the context of
+/// `closed` (the same declarations over finite ranges): the certificate and the proof's log.
+fn prove_symbolic(id: &str, decls: &Decls, identity: &Identity, closed: &Decls) -> Result<(String, Vec<String>)> {
+    let rs = &decls.ranges;
+    let ctx = Ctx::new(id, closed, Vec::new())?;
+    let sides: Vec<Expr> = identity
+        .sides
+        .members()
+        .iter()
+        .map(|s| ctx.expr(s))
+        .collect::<Result<_>>()?;
+    let (certs, sym, conts) = prepare(&identity.certificates, &ctx, &sides)?;
     let mut tr = Translator::new(&sym, &certs);
-    let dom = tr.domain(claim, rs)?;
-    let modes: Vec<bool> = if claim.polygon.is_some() {
+    let dom = tr.domain(decls, rs)?;
+    let modes: Vec<bool> = if decls.polygon.is_some() {
         vec![false, true]
     } else {
         vec![false]
@@ -1119,7 +1072,7 @@ fn prove_symbolic(claim: &Claim, rs: &[SymRange], closed: &Claim) -> Result<(Str
                 tr.log.push(format!(
                     "the unit polygon b[{UNIT}] = 1 (others 0), for every 0 ≤ {UNIT} ≤ {deg}:"
                 ));
-            } else if claim.polygon.is_some() {
+            } else if decls.polygon.is_some() {
                 tr.log.push("the zero polygon:".into());
             }
             let (l, r) = match (&pair[0], &pair[1]) {
@@ -1144,7 +1097,7 @@ fn prove_symbolic(claim: &Claim, rs: &[SymRange], closed: &Claim) -> Result<(Str
         open,
         if conts.is_empty() { "no parameters".to_string() } else { conts.join(", ") }
     );
-    if claim.polygon.is_some() {
+    if decls.polygon.is_some() {
         cert.push_str("; affine in the control polygon: the zero polygon and the unit polygon at a symbolic index");
     }
     if !tr.used.is_empty() {

@@ -7,7 +7,7 @@
 //! `elev`, `left`, `deriv`, … (see [`super::methods::PolygonMethod`]). The others (affine
 //! invariance, the convex hull property, Theorem 1.2) have their own exact checks here.
 
-use super::claims::{Claim, PolygonSpec};
+use super::claims::{Convergence, Decls, IntRange, PolygonSpec, Theorem};
 use super::engine::{chain_work, check_chain, Checked, Ctx, MAX_WORK};
 use super::Verdict;
 use crate::curve::BezierCurve;
@@ -60,9 +60,9 @@ const ELEVATION_STEPS: i64 = 4;
 
 /// The degree range `lo..=hi` of a theorem claim: non-empty, from 0, at most
 /// [`MAX_THEOREM_DEGREE`].
-fn degrees(ctx: &Ctx<'_>) -> Result<(i64, i64)> {
-    let text = ctx.claim.degrees.as_deref().unwrap_or("0..=10");
-    let r = super::expr::parse_range(&format!("n = {text}"))?;
+fn degrees(theorem: &Theorem) -> Result<(i64, i64)> {
+    let text = theorem.degrees.as_deref().unwrap_or("0..=10");
+    let r = super::expr::closed_range(&IntRange::parse(&format!("n = {text}"))?)?;
     let empty = Default::default();
     let (lo, hi) = (
         super::expr::eval_int(&r.from, &empty)?,
@@ -86,13 +86,13 @@ fn degrees(ctx: &Ctx<'_>) -> Result<(i64, i64)> {
 
 /// The finite ranges a theorem claim is checked over, e.g. `n = 0..=10` (and the elevation
 /// steps of `elevation_8`): the scope of its `proved_in_range`.
-pub fn scope(ctx: &Ctx<'_>) -> Result<String> {
-    let (lo, hi) = degrees(ctx)?;
+pub fn scope(theorem: &Theorem) -> Result<String> {
+    let (lo, hi) = degrees(theorem)?;
     let mut s = format!("n = {lo}..={hi}");
-    match ctx.claim.theorem.as_deref() {
-        Some("elevation_8") => s.push_str(&format!(", r = 0..={ELEVATION_STEPS}")),
-        Some("derivative_k") => s.push_str(", k = 1..=n"),
-        Some("affine_invariance") => s.push_str(", in the plane"),
+    match theorem.theorem.as_str() {
+        "elevation_8" => s.push_str(&format!(", r = 0..={ELEVATION_STEPS}")),
+        "derivative_k" => s.push_str(", k = 1..=n"),
+        "affine_invariance" => s.push_str(", in the plane"),
         _ => {}
     }
     Ok(s)
@@ -242,15 +242,32 @@ fn parts_of(name: &str, kmax: i64) -> Option<Vec<(i64, Part)>> {
     })
 }
 
-fn sub_sides(sub: &Ctx<'_>, cl: &Claim) -> Result<Vec<super::expr::Expr>> {
-    cl.chain.iter().flatten().map(|s| sub.expr(s)).collect()
+/// A part of a theorem lowered to the declarations of an identity over the symbolic polygon
+/// `b` of degree `n`: `n` in `n_range`, then the part's own ranges, its parameters.
+pub(crate) fn part_decls(n_range: String, ranges: &[String], vars: &[&str]) -> Result<Decls> {
+    let ranges = std::iter::once(n_range.as_str())
+        .chain(ranges.iter().map(String::as_str))
+        .map(IntRange::parse)
+        .collect::<Result<Vec<_>>>()?;
+    Ok(Decls {
+        polygon: Some(PolygonSpec {
+            name: "b".into(),
+            degree: "n".into(),
+        }),
+        ranges,
+        vars: Some(vars.iter().map(|s| s.to_string()).collect()),
+        ..Decls::default()
+    })
+}
+
+fn sub_sides(sub: &Ctx<'_>, chain: &[String]) -> Result<Vec<super::expr::Expr>> {
+    chain.iter().map(|s| sub.expr(s)).collect()
 }
 
 /// `kind = "theorem"`.
-pub fn check_theorem(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
-    let c = ctx.claim;
-    let name = c.need(&c.theorem, "theorem")?;
-    let (lo, hi) = degrees(ctx)?;
+pub fn check_theorem(id: &str, theorem: &Theorem, detail: bool) -> Result<Checked> {
+    let name = theorem.theorem.as_str();
+    let (lo, hi) = degrees(theorem)?;
     match name {
         "affine_invariance" => return affine_invariance(lo, hi),
         "convex_hull" => return convex_hull(lo, hi, detail),
@@ -258,8 +275,7 @@ pub fn check_theorem(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
     }
     let parts = parts_of(name, hi).ok_or_else(|| {
         Error::Parse(format!(
-            "claim {}: unknown theorem '{name}' (known: {})",
-            c.id,
+            "claim {id}: unknown theorem '{name}' (known: {})",
             THEOREMS.iter().map(|t| t.0).collect::<Vec<_>>().join(", ")
         ))
     })?;
@@ -272,30 +288,19 @@ pub fn check_theorem(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
         if from > hi {
             continue;
         }
-        let mut cl: Claim = c.clone();
-        cl.kind = "identity".into();
-        cl.theorem = None;
-        cl.polygon = Some(PolygonSpec {
-            name: "b".into(),
-            degree: "n".into(),
-        });
-        let mut ranges = vec![format!("n = {from}..={hi}")];
-        ranges.extend(p.ranges.iter().cloned());
-        cl.ranges = Some(ranges);
-        cl.vars = Some(p.vars.iter().map(|s| s.to_string()).collect());
-        cl.chain = Some(p.chain.clone());
-        prepared.push((p, cl));
+        let decls = part_decls(format!("n = {from}..={hi}"), &p.ranges, &p.vars)?;
+        prepared.push((p, decls));
     }
-    for (_, cl) in &prepared {
-        let sub = Ctx::new(cl)?;
-        let sides = sub_sides(&sub, cl)?;
+    for (p, decls) in &prepared {
+        let sub = Ctx::new(id, decls, Vec::new())?;
+        let sides = sub_sides(&sub, &p.chain)?;
         work = chain_work::<Q>(&sub, &sides, work)?;
     }
     let mut certs = Vec::new();
     let mut steps = Vec::new();
-    for (p, cl) in &prepared {
-        let sub = Ctx::new(cl)?;
-        let sides = sub_sides(&sub, cl)?;
+    for (p, decls) in &prepared {
+        let sub = Ctx::new(id, decls, Vec::new())?;
+        let sides = sub_sides(&sub, &p.chain)?;
         let out = check_chain::<Q>(&sub, &sides, detail)?;
         if detail {
             steps.push(format!("{}: {}", p.label, p.chain.join(" = ")));
@@ -313,8 +318,7 @@ pub fn check_theorem(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
     }
     if certs.is_empty() {
         return Err(Error::Domain(format!(
-            "claim {}: the degree range {lo}..={hi} is empty for {name}",
-            c.id
+            "claim {id}: the degree range {lo}..={hi} is empty for {name}"
         )));
     }
     let mut out = Checked::new(Verdict::Proved, certs.join("; "));
@@ -504,8 +508,7 @@ where
 }
 
 /// `kind = "convergence"`: Theorem 1.2, bounded evidence on the claim's curves.
-pub fn check_convergence(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
-    let c = ctx.claim;
+pub fn check_convergence(ctx: &Ctx<'_>, c: &Convergence, detail: bool) -> Result<Checked> {
     let steps_max = c.steps.unwrap_or(64);
     if steps_max > 512 {
         return Err(Error::TooLarge {
@@ -514,11 +517,12 @@ pub fn check_convergence(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
             limit: "512".into(),
         });
     }
-    let curves = c
+    let curves = ctx
+        .decls
         .curves
         .as_ref()
         .filter(|m| !m.is_empty())
-        .ok_or_else(|| Error::Parse(format!("claim {}: convergence needs curves", c.id)))?;
+        .ok_or_else(|| Error::Parse(format!("claim {}: convergence needs curves", ctx.id)))?;
     let mut lines = Vec::new();
     let mut summary = Vec::new();
     for (name, spec) in curves {
@@ -582,24 +586,28 @@ mod tests {
     use super::*;
     use std::path::Path;
 
-    fn claim(degrees: &str, theorem: &str) -> Claim {
-        parse_file(
+    fn theorem(degrees: &str, theorem: &str) -> Theorem {
+        let claim = parse_file(
             &format!(
                 "[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"theorem\"\ntheorem = \"{theorem}\"\ndegrees = \"{degrees}\""
             ),
             Path::new("t.toml"),
         )
         .unwrap()
-        .claim[0]
-            .clone()
+        .claim
+        .remove(0);
+        match claim.kind {
+            super::super::claims::Kind::Theorem(t) => t,
+            _ => unreachable!("a theorem claim"),
+        }
     }
 
     #[test]
     fn the_scope_names_every_range_checked() {
-        let c = claim("0..=6", "elevation_8");
-        assert_eq!(scope(&Ctx::new(&c).unwrap()).unwrap(), "n = 0..=6, r = 0..=4");
-        let c = claim("2..=5", "derivative");
-        assert_eq!(scope(&Ctx::new(&c).unwrap()).unwrap(), "n = 2..=5");
+        let c = theorem("0..=6", "elevation_8");
+        assert_eq!(scope(&c).unwrap(), "n = 0..=6, r = 0..=4");
+        let c = theorem("2..=5", "derivative");
+        assert_eq!(scope(&c).unwrap(), "n = 2..=5");
     }
 
     #[test]
@@ -610,8 +618,8 @@ mod tests {
             ("0..=-1", "empty"),
             ("0..=65", "64"),
         ] {
-            let c = claim(bad, "convex_hull");
-            let err = degrees(&Ctx::new(&c).unwrap()).unwrap_err().to_string();
+            let c = theorem(bad, "convex_hull");
+            let err = degrees(&c).unwrap_err().to_string();
             assert!(err.contains(want), "{bad}: {err}");
         }
     }

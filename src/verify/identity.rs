@@ -1,0 +1,71 @@
+//! The identity goal: the members of a chain over a claim's declarations, checked for every
+//! value of the parameters and every case of the finite ranges, in the number field the
+//! expressions need. Identity, implicit and lowered claims (a power form's points, a theorem's
+//! parts, the symbolic route's evaluation check) all end here.
+
+use super::claims::{CurveSpec, Decls, Identity, Number};
+use super::engine::{check_chain, check_chain_symbolic, Checked, Ctx};
+use super::expr::Expr;
+use super::Verdict;
+use crate::error::Result;
+use crate::quadratic::QuadraticIrrational;
+
+/// Checks `members[0] = members[1] = …` over `decls`; a proof over finite ranges is
+/// `proved_in_range` with the ranges.
+pub fn check_identity(id: &str, decls: &Decls, members: &[String], detail: bool) -> Result<Checked> {
+    let ctx = Ctx::new(id, decls, Vec::new())?;
+    let sides: Vec<Expr> = members.iter().map(|s| ctx.expr(s)).collect::<Result<_>>()?;
+    let mut out = if ctx.symbolic() {
+        check_chain_symbolic(&ctx, &sides, detail)?
+    } else {
+        chain_in_field(&ctx, &sides, detail)?
+    };
+    if out.verdict == Verdict::Proved && !decls.ranges.is_empty() {
+        out.verdict = Verdict::ProvedInRange;
+        out.range = Some(ctx.range_text());
+    }
+    Ok(out)
+}
+
+/// Whether the expressions or the declared objects' numbers take a square root: then the
+/// claim is checked in `Q(√d)`.
+pub fn uses_sqrt(decls: &Decls, exprs: &[Expr]) -> bool {
+    let in_number = |n: &Number| matches!(n, Number::Text(t) if t.contains("sqrt"));
+    let in_curve = |c: &CurveSpec| {
+        c.points
+            .iter()
+            .flatten()
+            .chain(c.weights.iter().flatten())
+            .any(in_number)
+    };
+    exprs.iter().any(|e| e.called_names().iter().any(|n| n == "sqrt"))
+        || decls.curves.iter().flat_map(|m| m.values()).any(in_curve)
+        || decls
+            .surfaces
+            .iter()
+            .flat_map(|m| m.values())
+            .any(|s| s.net.iter().flatten().flatten().any(in_number))
+}
+
+/// Checks a chain in exact rationals, or in the quadratic irrationals when a `sqrt` occurs.
+pub fn chain_in_field(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Result<Checked> {
+    if uses_sqrt(ctx.decls, sides) {
+        let mut out = check_chain::<QuadraticIrrational>(ctx, sides, detail)?;
+        out.certificate = format!("{} (exact arithmetic in Q(√d))", out.certificate);
+        Ok(out)
+    } else {
+        check_chain::<crate::exact::SmallRational>(ctx, sides, detail)
+    }
+}
+
+/// An identity to prove over declarations: what identity claims are, and what other claims
+/// (a theorem's parts, a claim written with its ranges opened) lower to.
+#[derive(Clone, Debug)]
+pub struct Goal {
+    /// The claim's id (for messages).
+    pub id: String,
+    /// What the expressions may use.
+    pub decls: Decls,
+    /// The chain to prove.
+    pub identity: Identity,
+}
