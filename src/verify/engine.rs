@@ -18,11 +18,45 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
 use std::rc::Rc;
 
+/// What a verdict rests on: the explanation argues from it (never from the certificate's
+/// or the steps' text).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Method {
+    /// A check of the kind's own: a classification, an exact elimination, library code on a
+    /// finite set of cases, bounded evidence or a counterexample.
+    #[default]
+    Direct,
+    /// Exact evaluation at d + 1 points per parameter, for degree bounds d derived from the
+    /// expressions; with `basis`, on the zero and unit control polygons (both sides affine in
+    /// them).
+    Sampling {
+        /// Whether the cases ran over basis polygons.
+        basis: bool,
+    },
+    /// For every value of the open ranges: hypergeometric terms, WZ certificates, Fourier–Motzkin
+    /// pieces or Bernstein certificates of the factors.
+    ForEvery,
+}
+
+impl Method {
+    /// The method of several parts checked together: sampling when any part sampled.
+    pub fn join(self, other: Method) -> Method {
+        match (self, other) {
+            (Method::Sampling { basis: a }, Method::Sampling { basis: b }) => Method::Sampling { basis: a || b },
+            (s @ Method::Sampling { .. }, _) | (_, s @ Method::Sampling { .. }) => s,
+            (Method::ForEvery, _) | (_, Method::ForEvery) => Method::ForEvery,
+            _ => Method::Direct,
+        }
+    }
+}
+
 /// The result of checking one claim.
 #[derive(Clone, Debug)]
 pub struct Checked {
     /// The verdict.
     pub verdict: Verdict,
+    /// What the verdict rests on.
+    pub method: Method,
     /// The finite ranges a [`Verdict::ProvedInRange`] covers.
     pub range: Option<String>,
     /// The certificate (one line).
@@ -37,6 +71,7 @@ impl Checked {
     pub(crate) fn new(verdict: Verdict, certificate: String) -> Self {
         Checked {
             verdict,
+            method: Method::Direct,
             range: None,
             certificate,
             steps: Vec::new(),
@@ -1308,6 +1343,15 @@ where
     let mut first_params: Vec<BigRational> = Vec::new();
     let mut rational = false;
     let mut polygons = (usize::MAX, 0usize);
+    // The explanation argues from the derived degrees when any pair has parameters.
+    let (mut sampled, mut basis) = (false, false);
+    let method = |sampled: bool, basis: bool| {
+        if sampled {
+            Method::Sampling { basis }
+        } else {
+            Method::Direct
+        }
+    };
     for inst in &instances {
         for (k, pair) in sides.windows(2).enumerate() {
             let plan = plans.next().expect("one plan per case and pair");
@@ -1319,6 +1363,7 @@ where
                         String::new()
                     };
                     let mut c = Checked::new(Verdict::Fails, format!("{which}{cx}"));
+                    c.method = method(sampled, basis);
                     c.steps = steps;
                     c.steps.push(format!("FAILS {which}{cx}"));
                     return Ok(c);
@@ -1330,6 +1375,8 @@ where
                         rational |= !l.is_polynomial() || !r.is_polynomial();
                     }
                     polygons = (polygons.0.min(p.polygons), polygons.1.max(p.polygons));
+                    sampled |= !p.degrees.is_empty();
+                    basis |= p.polygons > 1;
                     evaluations += p.evaluations;
                     if detail {
                         let head = if inst.is_empty() {
@@ -1395,6 +1442,7 @@ where
         )
     };
     let mut c = Checked::new(Verdict::Proved, cert);
+    c.method = method(sampled, basis);
     c.steps = steps;
     c.params = first_params;
     Ok(c)

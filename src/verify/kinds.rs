@@ -477,5 +477,6 @@ fn check_enneper(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
         ),
     );
     res.steps = out.steps;
+    res.method = out.method;
     Ok(res)
 }

@@ -1,7 +1,7 @@
 //! The reports of a `prove` run: readable text, JSON, and the step-by-step `explain`.
 
 use super::claims::{Claim, ClaimFile, Identity, Kind, Sides};
-use super::engine::{Checked, CurveObj};
+use super::engine::{Checked, CurveObj, Method};
 use super::{ClaimOutcome, Report, Verdict};
 use crate::bernstein::bernstein_all;
 use crate::curve::{BezierCurve, DeCasteljauScheme};
@@ -362,16 +362,15 @@ pub(super) fn sample_evaluations<'a>(case: &Case<'a>, k: usize) -> Vec<&'a str> 
 
 /// The argument: what was checked and why it suffices.
 pub(super) fn argument(c: &Claim, checked: &Checked) -> Vec<String> {
-    let by_points = checked.steps.iter().any(|l| l.contains("points suffice"));
     let mut a = Vec::new();
     if matches!(c.kind, Kind::Inequality(_)) {
         a.extend(super::inequality::ARGUMENT.iter().map(|l| l.to_string()));
-        if checked.certificate.starts_with("for every") {
+        if checked.method == Method::ForEvery {
             a.extend(super::inequality::ARGUMENT_FOR_EVERY.iter().map(|l| l.to_string()));
         }
-    } else if checked.certificate.starts_with("for every") && checked.range.is_none() {
+    } else if checked.method == Method::ForEvery && checked.range.is_none() {
         a.extend(super::symbolic::ARGUMENT.iter().map(|l| l.to_string()));
-    } else if by_points {
+    } else if let Method::Sampling { basis } = checked.method {
         let vars = c
             .decls
             .vars
@@ -389,7 +388,7 @@ pub(super) fn argument(c: &Claim, checked: &Checked) -> Vec<String> {
             "most d roots, so the identity holds for all values iff it holds at d+1 distinct points per variable"
                 .into(),
         );
-        if checked.steps.iter().any(|l| l.contains("basis polygons")) {
+        if basis {
             a.push(
                 "(a grid, by induction on the variables). Both sides are affine in the control points, so checking"
                     .into(),

@@ -30,7 +30,7 @@
 //! exact values; a symbolic check that does not go through is an error, never a verdict.
 
 use super::claims::{Decls, Identity, IntRange};
-use super::engine::{Checked, Ctx};
+use super::engine::{Checked, Ctx, Method};
 use super::eval::Alg;
 use super::expr::{self, Expr, Op};
 use super::hyper::{lin_mul, lin_neg, lin_subst, power_of, prove_zero, Aff, Domain, Lin, Symbols, Term, ZeroOutcome};
@@ -877,6 +877,7 @@ pub fn nonneg_for_every(
                     open
                 ),
             );
+            out.method = Method::ForEvery;
             if detail {
                 out.steps = log;
             }
@@ -1027,6 +1028,7 @@ fn prove_for_every(id: &str, decls: &Decls, identity: &Identity, detail: bool) -
             evaluated.verdict.as_str()
         ),
     );
+    out.method = Method::ForEvery;
     if detail {
         out.steps = log;
     }

@@ -8,7 +8,7 @@
 //! invariance, the convex hull property, Theorem 1.2) have their own exact checks here.
 
 use super::claims::{Convergence, Decls, IntRange, PolygonSpec, Theorem};
-use super::engine::{chain_work, check_chain, Checked, Ctx, MAX_WORK};
+use super::engine::{chain_work, check_chain, Checked, Ctx, Method, MAX_WORK};
 use super::Verdict;
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
@@ -298,10 +298,12 @@ pub fn check_theorem(id: &str, theorem: &Theorem, detail: bool) -> Result<Checke
     }
     let mut certs = Vec::new();
     let mut steps = Vec::new();
+    let mut method = Method::Direct;
     for (p, decls) in &prepared {
         let sub = Ctx::new(id, decls, Vec::new())?;
         let sides = sub_sides(&sub, &p.chain)?;
         let out = check_chain::<Q>(&sub, &sides, detail)?;
+        method = method.join(out.method);
         if detail {
             steps.push(format!("{}: {}", p.label, p.chain.join(" = ")));
             steps.extend(out.steps.iter().map(|s| format!("  {s}")));
@@ -312,6 +314,7 @@ pub fn check_theorem(id: &str, theorem: &Theorem, detail: bool) -> Result<Checke
                 format!("{} ({}): {}", p.label, p.chain.join(" = "), out.certificate),
             );
             f.steps = steps;
+            f.method = method;
             return Ok(f);
         }
         certs.push(format!("[{}] {}", p.label, out.certificate));
@@ -323,6 +326,7 @@ pub fn check_theorem(id: &str, theorem: &Theorem, detail: bool) -> Result<Checke
     }
     let mut out = Checked::new(Verdict::Proved, certs.join("; "));
     out.steps = steps;
+    out.method = method;
     Ok(out)
 }
 
