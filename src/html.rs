@@ -14,7 +14,7 @@ use crate::quadratic::QuadraticIrrational;
 use crate::rational::RationalBezierCurve;
 use crate::scalar::Scalar;
 use crate::surface::BezierSurface;
-use crate::verify::claims::{Claim, ClaimFile, CurveSpec, Kind, Number, SurfaceSpec};
+use crate::verify::claims::{Claim, ClaimFile, CurveSpec, Illustration, Kind, Number, SurfaceSpec};
 use crate::verify::{ClaimOutcome, Report, TextSummary, Verdict};
 use crate::BezierCurve;
 use std::collections::BTreeMap;
@@ -650,74 +650,32 @@ fn example_curve() -> Result<BezierCurve<Q>> {
 
 const ON_EXAMPLE: &str = "illustration on text 000's example 4), b = (0, 0), (4/3, −4/3), (4/3, 4/3), (0, 0)";
 
-/// Which illustration a general statement about curves gets, by its theorem or its source.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Topic {
-    Construction,
-    Subdivision,
-    Elevation,
-    Hodograph,
-    Hull,
-    Fit,
-    Conics,
-}
-
-fn topic(c: &Claim) -> Option<Topic> {
+/// Which illustration a general statement about curves gets: the claim's `figure`, or its
+/// theorem's.
+fn topic(c: &Claim) -> Option<Illustration> {
     if let Kind::Theorem(t) = &c.kind {
         return match t.theorem.as_str() {
-            "de_casteljau_bernstein" => Some(Topic::Construction),
-            "subdivision" => Some(Topic::Subdivision),
-            "elevation_7" | "elevation_8" => Some(Topic::Elevation),
-            "derivative" | "derivative_k" | "endpoint_tangent" | "tangent_at_t0" => Some(Topic::Hodograph),
-            "convex_hull" => Some(Topic::Hull),
+            "de_casteljau_bernstein" => Some(Illustration::Construction),
+            "subdivision" => Some(Illustration::Subdivision),
+            "elevation_7" | "elevation_8" => Some(Illustration::Elevation),
+            "derivative" | "derivative_k" | "endpoint_tangent" | "tangent_at_t0" => Some(Illustration::Hodograph),
+            "convex_hull" => Some(Illustration::Hull),
             _ => None,
         };
     }
-    // text 004's notation: the end tangents ẋ(0), ẋ(1) as vectors d0, d1, the cubic a
-    let tangents = c
-        .decls
-        .vectors
-        .as_ref()
-        .is_some_and(|v| v.contains_key("d0") && v.contains_key("d1"));
-    if tangents || c.decls.polygon.as_ref().is_some_and(|p| p.name == "a") {
-        return Some(Topic::Fit);
-    }
-    // text 001's notation: a symbolic middle weight w1 of a rational quadratic
-    if c.decls
-        .symbols
-        .as_ref()
-        .is_some_and(|s| s.iter().any(|x| x == "w1" || x == "w"))
-    {
-        return Some(Topic::Conics);
-    }
-    c.decls.polygon.as_ref()?;
-    // statements about a symbolic polygon: the section of the text they come from
-    let src = c.source.as_str();
-    let table: [(&str, Topic); 10] = [
-        ("補題1.3", Topic::Subdivision),
-        ("(9)", Topic::Construction),
-        ("(7)", Topic::Elevation),
-        ("(8)", Topic::Elevation),
-        ("定理1.2", Topic::Elevation),
-        ("導関数", Topic::Hodograph),
-        ("前進差分", Topic::Hodograph),
-        ("凸包", Topic::Hull),
-        ("内分", Topic::Hull),
-        ("重心", Topic::Hull),
-    ];
-    table.iter().find(|(k, _)| src.contains(k)).map(|(_, t)| *t)
+    c.figure
 }
 
-fn illustrate(t: Topic) -> Result<Figure> {
+fn illustrate(t: Illustration) -> Result<Figure> {
     let c = example_curve()?;
     let half = q(1, 2);
     match t {
-        Topic::Construction => figure::construction(&c, &half),
-        Topic::Subdivision => figure::subdivision(&c, &q(1, 3)),
-        Topic::Elevation => figure::elevation(&c, &[1, 2, 4, 8, 16]),
-        Topic::Hodograph => figure::hodograph(&c),
-        Topic::Hull => figure::hull(&c, &c.eval(&q(1, 3))),
-        Topic::Conics => {
+        Illustration::Construction => figure::construction(&c, &half),
+        Illustration::Subdivision => figure::subdivision(&c, &q(1, 3)),
+        Illustration::Elevation => figure::elevation(&c, &[1, 2, 4, 8, 16]),
+        Illustration::Hodograph => figure::hodograph(&c),
+        Illustration::Hull => figure::hull(&c, &c.eval(&q(1, 3))),
+        Illustration::Conics => {
             let rows = crate::input::parse_points(figure::DEFAULT_CONIC_POLYGON)?;
             let pts = rows
                 .iter()
@@ -725,7 +683,7 @@ fn illustrate(t: Topic) -> Result<Figure> {
                 .collect::<Result<Vec<_>>>()?;
             figure::conics(&pts, &q(1, 1), &q(1, 1), &[q(1, 2), q(1, 1), q(2, 1)])
         }
-        Topic::Fit => {
+        Illustration::Fit => {
             let rows = crate::input::parse_points(figure::DEFAULT_FIT_CURVE)?;
             let pts = rows
                 .iter()
@@ -740,9 +698,8 @@ fn illustrate(t: Topic) -> Result<Figure> {
 /// conic arc family for a rational quadratic, the fit for a `fit` claim, the net with
 /// iso-curves for a surface, Enneper's net, the elevation for Theorem 1.2, the construction
 /// for a polynomial curve), otherwise an illustration of the statement's topic on a text's
-/// example (by the theorem, or the text section a statement about a symbolic polygon or net
-/// comes from). `None` for claims with no geometric object (scalar identities, text 004's
-/// vector algebra).
+/// example (by its theorem, or the claim file's `figure`). `None` for claims with no geometric
+/// object (scalar identities, text 004's vector algebra).
 pub fn claim_figure(c: &Claim) -> Result<Option<ClaimFigure>> {
     let own = |figure: Figure, caption: String| {
         Ok(Some(ClaimFigure {
@@ -838,8 +795,8 @@ pub fn claim_figure(c: &Claim) -> Result<Option<ClaimFigure>> {
     }
     if let Some(t) = topic(c) {
         let caption = match t {
-            Topic::Fit => "illustration of text 004's method on our worked example x(t) = (t, 1 + t², t⁴)",
-            Topic::Conics => "illustration on the control polygon of text 001's Ex. 3 and Ex. 4, w₀ = w₂ = 1",
+            Illustration::Fit => "illustration of text 004's method on our worked example x(t) = (t, 1 + t², t⁴)",
+            Illustration::Conics => "illustration on the control polygon of text 001's Ex. 3 and Ex. 4, w₀ = w₂ = 1",
             _ => ON_EXAMPLE,
         };
         return Ok(Some(ClaimFigure {

@@ -576,6 +576,27 @@ impl Certificates {
     }
 }
 
+/// The illustration the report draws for a general statement about curves (a claim with
+/// objects of its own is drawn from them instead).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Illustration {
+    /// De Casteljau's construction.
+    Construction,
+    /// Subdivision at a parameter.
+    Subdivision,
+    /// Repeated degree elevation.
+    Elevation,
+    /// The hodograph (derivative curve).
+    Hodograph,
+    /// The convex hull.
+    Hull,
+    /// Text 004's cubic fit.
+    Fit,
+    /// Text 001's family of conic arcs.
+    Conics,
+}
+
 /// The fields every claim has.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -587,9 +608,19 @@ struct Header {
     expect: Option<String>,
     corrects: Option<String>,
     note: Option<String>,
+    figure: Option<Illustration>,
 }
 
-const HEADER: [&str; 7] = ["id", "source", "statement", "kind", "expect", "corrects", "note"];
+const HEADER: [&str; 8] = [
+    "id",
+    "source",
+    "statement",
+    "kind",
+    "expect",
+    "corrects",
+    "note",
+    "figure",
+];
 
 /// One claim: what every claim has, its declarations and what its kind states
 /// (see `proofs/README.md`).
@@ -607,6 +638,8 @@ pub struct Claim {
     pub corrects: Option<String>,
     /// A remark shown in the report.
     pub note: Option<String>,
+    /// The illustration of a general statement in the report (`figure = "subdivision"`).
+    pub figure: Option<Illustration>,
     /// What its expressions may use.
     pub decls: Decls,
     /// What it states.
@@ -672,6 +705,7 @@ impl Claim {
             expect,
             corrects: head.corrects,
             note: head.note,
+            figure: head.figure,
             decls,
             kind,
         })
