@@ -987,7 +987,7 @@ fn integral<A: Alg>(ev: &mut Evaluator<'_, A>, e: &Expr, args: &[Expr]) -> Resul
     };
     let names: std::rc::Rc<[String]> = std::rc::Rc::from(vec![t.clone()]);
     let degrees = std::iter::once((t.clone(), Value::S(Deg::var(t)))).collect();
-    super::engine::check_symbolic_degrees(degrees, &ev.ints, &[&args[0]])?;
+    super::expansion::check_symbolic_degrees(degrees, &ev.ints, &[&args[0]])?;
     let saved = current_names();
     set_names(&names);
     let mut vars = BTreeMap::new();

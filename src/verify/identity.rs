@@ -3,9 +3,12 @@
 //! expressions need. Identity, implicit and lowered claims (a power form's points, a theorem's
 //! parts, the symbolic route's evaluation check) all end here.
 
+use super::checked::Checked;
 use super::claims::{CurveSpec, Decls, Identity, Number};
-use super::engine::{check_chain, check_chain_symbolic, Checked, Ctx};
+use super::context::Ctx;
+use super::expansion::check_chain_symbolic;
 use super::expr::Expr;
+use super::sampling::check_chain;
 use super::Verdict;
 use crate::error::Result;
 use crate::quadratic::QuadraticIrrational;

@@ -16,8 +16,9 @@
 //! [`super::symbolic::nonneg_for_every`] (each term a product of factors ≥ 0 on `[a, b]`), after
 //! the first values are evaluated as above.
 
+use super::checked::Checked;
 use super::claims::{Decls, Inequality, Relation};
-use super::engine::{Checked, Ctx};
+use super::context::Ctx;
 use super::eval::{Alg, Deg, Evaluator, Value, VarEnv};
 use super::expr::Expr;
 use super::poly::{set_names, Poly, RatFunc};
@@ -131,8 +132,8 @@ fn interval(ctx: &Ctx<'_>, ineq: &Inequality) -> Result<(BigRational, BigRationa
         .clone()
         .ok_or_else(|| Error::Parse(format!("claim {} needs interval = [a, b]", ctx.id)))?;
     let (a, b): (BigRational, BigRational) = (
-        super::engine::constant(&a.text()?)?,
-        super::engine::constant(&b.text()?)?,
+        super::objects::constant(&a.text()?)?,
+        super::objects::constant(&b.text()?)?,
     );
     if a >= b {
         return Err(Error::Domain(format!("the interval [{a}, {b}] is empty or a point")));
@@ -183,7 +184,7 @@ pub fn check_inequality(ctx: &Ctx<'_>, ineq: &Inequality, detail: bool) -> Resul
             format!("{}: ", at.join(", "))
         };
         let degrees = std::iter::once((t.clone(), Value::S(Deg::var(&t)))).collect();
-        super::engine::check_symbolic_degrees(degrees, &ints, &[&p])?;
+        super::expansion::check_symbolic_degrees(degrees, &ints, &[&p])?;
         set_names(&names);
         let mut vars = BTreeMap::new();
         vars.insert(t.clone(), Value::S(RatFunc::poly(Poly::var(&names, 0))));

@@ -12,12 +12,16 @@
 //! | `fit`           | text 004's cubic fit of a concrete curve: (11) = (13), ∇δ² = 0, printed k, l, δ² |
 //! | `inequality`    | `lhs ≥ rhs` (or `>`) on an interval, by a Bernstein certificate or an exact point |
 
+use super::checked::Checked;
 use super::claims::{BezierPoints, Claim, ConicType, CurveSpec, Decls, Fit, Implicit, Kind, Number, WeightType};
-use super::engine::{check_chain, check_implies, points, Checked, Ctx, CurveObj};
+use super::context::Ctx;
 use super::eval::{Alg, Deg, Evaluator, Value};
+use super::expansion::check_implies;
 use super::expr::{substitute, Expr};
 use super::identity::{chain_in_field, check_identity, uses_sqrt};
+use super::objects::{points, CurveObj};
 use super::poly::{set_names, Poly, RatFunc};
+use super::sampling::check_chain;
 use super::{theorems, Verdict};
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
@@ -159,7 +163,7 @@ fn check_bezier_points(outer: &Ctx<'_>, claim: &BezierPoints, detail: bool) -> R
 fn library_power_on(power: &Expr, param: &str, a: &Number, b: &Number) -> Result<BezierCurve<BigRational>> {
     let names: Rc<[String]> = Rc::from(vec![param.to_string()]);
     let degrees = std::iter::once((param.to_string(), Value::S(Deg::var(param)))).collect();
-    super::engine::check_symbolic_degrees(degrees, &BTreeMap::new(), &[power])?;
+    super::expansion::check_symbolic_degrees(degrees, &BTreeMap::new(), &[power])?;
     set_names(&names);
     let mut vars = BTreeMap::new();
     vars.insert(param.to_string(), Value::S(RatFunc::poly(Poly::var(&names, 0))));
@@ -179,8 +183,8 @@ fn library_power_on(power: &Expr, param: &str, a: &Number, b: &Number) -> Result
         .collect::<Result<_>>()?;
     BezierCurve::from_power_on(
         &coeffs,
-        &super::engine::constant(&a.text()?)?,
-        &super::engine::constant(&b.text()?)?,
+        &super::objects::constant(&a.text()?)?,
+        &super::objects::constant(&b.text()?)?,
     )
 }
 
@@ -247,7 +251,7 @@ fn check_conic_type(ctx: &Ctx<'_>, claim: &ConicType) -> Result<Checked> {
         .iter()
         .map(|v| (v.to_string(), Value::S(Deg::var(v))))
         .collect();
-    super::engine::check_symbolic_degrees(degrees, &BTreeMap::new(), &[&l, &r])?;
+    super::expansion::check_symbolic_degrees(degrees, &BTreeMap::new(), &[&l, &r])?;
     set_names(&names);
     let mut vars = BTreeMap::new();
     vars.insert("x".into(), Value::S(RatFunc::poly(Poly::var(&names, 0))));
@@ -332,7 +336,7 @@ fn check_fit(ctx: &Ctx<'_>, c: &Fit) -> Result<Checked> {
     }
     for (label, printed, value) in [("k", &c.k, &fit.k), ("l", &c.l, &fit.l), ("δ²", &c.delta2, &fit.delta2)] {
         if let Some(p) = printed {
-            let p: BigRational = super::engine::constant(&p.text()?)?;
+            let p: BigRational = super::objects::constant(&p.text()?)?;
             if &p != value {
                 wrong.push(format!("printed {label} = {p}, computed {label} = {value}"));
             }
@@ -385,7 +389,7 @@ fn check_weight_type(ctx: &Ctx<'_>, claim: &WeightType) -> Result<Checked> {
         let pts = points::<QuadraticIrrational>(&spec.points)?;
         let ws = w
             .iter()
-            .map(|x| super::engine::constant(&x.text()?))
+            .map(|x| super::objects::constant(&x.text()?))
             .collect::<Result<Vec<QuadraticIrrational>>>()?;
         let curve = RationalBezierCurve::new(pts, ws.clone())?;
         let kind = classify_conic(&curve)?;
@@ -397,7 +401,7 @@ fn check_weight_type(ctx: &Ctx<'_>, claim: &WeightType) -> Result<Checked> {
     let pts = points::<BigRational>(&spec.points)?;
     let ws = w
         .iter()
-        .map(|x| super::engine::constant(&x.text()?))
+        .map(|x| super::objects::constant(&x.text()?))
         .collect::<Result<Vec<BigRational>>>()?;
     let curve = RationalBezierCurve::new(pts, ws.clone())?;
     let kind = classify_conic(&curve)?;
@@ -427,7 +431,7 @@ fn check_enneper(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
         .as_ref()
         .and_then(|m| m.iter().next())
         .ok_or_else(|| Error::Parse(format!("claim {}: enneper needs one surface", ctx.id)))?;
-    let net = super::engine::net_from_spec::<BigRational>(spec)?;
+    let net = super::objects::net_from_spec::<BigRational>(spec)?;
     let surface = BezierSurface::new(net)?;
     let found = surface.enneper_matches()?;
     let Some(m) = found.first() else {

@@ -2,8 +2,8 @@
 //! mode (`\dot{x}`, `-`, `\sum`), code in `\texttt`, and the Japanese of the texts inside
 //! `CJK` environments (the only non-ASCII bytes; the document loads `CJKutf8`).
 
+use super::checked::Checked;
 use super::claims::{Claim, ClaimFile};
-use super::engine::Checked;
 use super::report::{
     argument, cases, certificate_case, misprint_lines, sample_evaluations, verdict_text, worked_case, worked_scheme,
     worked_sum,

@@ -3,9 +3,9 @@
 //! bound (for the prover) live in one `impl`, matched exhaustively, so the two cannot drift
 //! apart: a new operation without a bound does not compile.
 
-use super::engine::Exact;
 use super::eval::{Alg, Deg, Evaluator};
 use super::expr::Expr;
+use super::objects::Exact;
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::point::Point;

@@ -33,9 +33,11 @@
 //! ```
 
 pub mod ansatz;
+pub mod checked;
 pub mod claims;
-pub mod engine;
+pub mod context;
 pub mod eval;
+pub mod expansion;
 pub mod expr;
 pub mod hyper;
 pub mod identity;
@@ -44,8 +46,10 @@ pub mod kinds;
 mod latex;
 pub mod methods;
 mod names;
+pub mod objects;
 pub mod poly;
 mod report;
+pub mod sampling;
 pub mod scope;
 pub mod symbolic;
 pub mod theorems;
@@ -206,7 +210,7 @@ pub fn prove_files(files: &[claims::ClaimFile], progress: &mut dyn FnMut(usize, 
 
 fn check_one(f: &claims::ClaimFile, c: &claims::Claim) -> Result<ClaimOutcome> {
     // A claim that cannot be decided is reported as such; it never hides the others.
-    let checked = kinds::check_claim(c, false).unwrap_or_else(|e| engine::Checked::new(Verdict::Error, e.to_string()));
+    let checked = kinds::check_claim(c, false).unwrap_or_else(|e| checked::Checked::new(Verdict::Error, e.to_string()));
     let range_bound = scope::range_bound(c, checked.verdict);
     Ok(ClaimOutcome {
         id: c.id.clone(),

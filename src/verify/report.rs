@@ -1,7 +1,8 @@
 //! The reports of a `prove` run: readable text, JSON, and the step-by-step `explain`.
 
+use super::checked::{Checked, Method};
 use super::claims::{Claim, ClaimFile, Identity, Kind, Sides};
-use super::engine::{Checked, CurveObj, Method};
+use super::objects::CurveObj;
 use super::{ClaimOutcome, Report, Verdict};
 use crate::bernstein::bernstein_all;
 use crate::curve::{BezierCurve, DeCasteljauScheme};

@@ -13,7 +13,7 @@
 //! claims that use library objects are answered from their expressions without translating.
 
 use super::claims::{Claim, Decls, Identity, IntRange, Kind, Sides, Theorem};
-use super::engine::Ctx;
+use super::context::Ctx;
 use super::expr::Expr;
 use super::identity::Goal;
 use super::Verdict;

@@ -29,8 +29,9 @@
 //! of each open range (the ordinary engine): a counterexample there is a `fails` verdict with
 //! exact values; a symbolic check that does not go through is an error, never a verdict.
 
+use super::checked::{Checked, Method};
 use super::claims::{Decls, Identity, IntRange};
-use super::engine::{Checked, Ctx, Method};
+use super::context::Ctx;
 use super::eval::Alg;
 use super::expr::{self, Expr, Op};
 use super::hyper::{lin_mul, lin_neg, lin_subst, power_of, prove_zero, Aff, Domain, Lin, Symbols, Term, ZeroOutcome};

@@ -7,8 +7,10 @@
 //! `elev`, `left`, `deriv`, … (see [`super::methods::PolygonMethod`]). The others (affine
 //! invariance, the convex hull property, Theorem 1.2) have their own exact checks here.
 
+use super::checked::{Checked, Method};
 use super::claims::{Convergence, Decls, IntRange, PolygonSpec, Theorem};
-use super::engine::{chain_work, check_chain, Checked, Ctx, Method, MAX_WORK};
+use super::context::Ctx;
+use super::sampling::{chain_work, check_chain, MAX_WORK};
 use super::Verdict;
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
@@ -530,7 +532,7 @@ pub fn check_convergence(ctx: &Ctx<'_>, c: &Convergence, detail: bool) -> Result
     let mut lines = Vec::new();
     let mut summary = Vec::new();
     for (name, spec) in curves {
-        let curve: BezierCurve<Q> = BezierCurve::new(super::engine::points(&spec.points)?)?;
+        let curve: BezierCurve<Q> = BezierCurve::new(super::objects::points(&spec.points)?)?;
         let d = curve.elevation_distances(steps_max)?;
         for w in d.windows(2) {
             if w[1].max_norm > w[0].max_norm {

@@ -1,0 +1,453 @@
+//! Exact symbolic expansion: identities in scalar and vector unknowns, and `implies`.
+
+use super::checked::Checked;
+use super::claims::Implies;
+use super::context::Ctx;
+use super::eval::{Deg, Env, Evaluator, Value, VarEnv};
+use super::expr::Expr;
+use super::poly::{set_names, Poly, RatFunc};
+use super::sampling::{list, PairProof, PairResult};
+use super::Verdict;
+use crate::error::{Error, Result};
+use crate::scalar::Scalar;
+use num_rational::BigRational;
+use std::collections::BTreeMap;
+use std::rc::Rc;
+
+// ---------------------------------------------------------------------------------------
+// Symbolic expansion
+
+/// The symbolic environment: every scalar symbol and every vector component is a variable.
+pub struct SymEnv {
+    vars: BTreeMap<String, Value<RatFunc>>,
+}
+
+impl Env<RatFunc> for SymEnv {
+    fn var(&self, name: &str) -> Option<Value<RatFunc>> {
+        self.vars.get(name).cloned()
+    }
+    fn call(&self, _: &str, _: &[Expr], _: &mut Evaluator<'_, RatFunc>) -> Result<Option<Value<RatFunc>>> {
+        Ok(None)
+    }
+    fn index(&self, _: &str, _: &[i64]) -> Result<Option<Value<RatFunc>>> {
+        Ok(None)
+    }
+}
+
+fn sym_names(ctx: &Ctx<'_>, extra: &[String]) -> (Rc<[String]>, Vec<(String, usize)>) {
+    let mut names: Vec<String> = Vec::new();
+    let mut layout = Vec::new();
+    for s in ctx.decls.symbols.iter().flatten().chain(extra) {
+        if !names.contains(s) {
+            layout.push((s.clone(), 0));
+            names.push(s.clone());
+        }
+    }
+    for (v, &dim) in ctx.decls.vectors.iter().flatten() {
+        layout.push((v.clone(), dim));
+        for k in 1..=dim {
+            names.push(format!("{v}_{k}"));
+        }
+    }
+    (Rc::from(names), layout)
+}
+
+fn sym_env(names: &Rc<[String]>, layout: &[(String, usize)]) -> SymEnv {
+    set_names(names);
+    let mut vars = BTreeMap::new();
+    let mut k = 0;
+    for (v, dim) in layout {
+        if *dim == 0 {
+            vars.insert(v.clone(), Value::S(RatFunc::poly(Poly::var(names, k))));
+            k += 1;
+        } else {
+            let comps = (0..*dim).map(|i| RatFunc::poly(Poly::var(names, k + i))).collect();
+            vars.insert(v.clone(), Value::V(comps));
+            k += dim;
+        }
+    }
+    SymEnv { vars }
+}
+
+/// A point where a nonzero polynomial does not vanish (small integers tried in turn).
+fn nonzero_point(p: &Poly, n: usize) -> Vec<BigRational> {
+    // Deterministic search: values 1..=K cycled with different strides per variable.
+    for attempt in 0..10_000u64 {
+        let point: Vec<BigRational> = (0..n)
+            .map(|i| {
+                let x = ((attempt + 1) * (i as u64 * 7 + 3) + i as u64 * attempt) % 11;
+                BigRational::from_integer((x as i64 - 5).into())
+            })
+            .collect();
+        if !p.eval(&point).is_zero() {
+            return point;
+        }
+    }
+    vec![BigRational::one(); n]
+}
+
+fn sym_assignment(
+    names: &Rc<[String]>,
+    layout: &[(String, usize)],
+    point: &[BigRational],
+) -> (String, BTreeMap<String, Value<BigRational>>) {
+    let mut vars = BTreeMap::new();
+    let mut parts = Vec::new();
+    let mut k = 0;
+    for (v, dim) in layout {
+        if *dim == 0 {
+            vars.insert(v.clone(), Value::S(point[k].clone()));
+            parts.push(format!("{v} = {}", point[k]));
+            k += 1;
+        } else {
+            let comps: Vec<BigRational> = point[k..k + dim].to_vec();
+            parts.push(format!("{v} = ({})", list(&comps)));
+            vars.insert(v.clone(), Value::V(comps));
+            k += dim;
+        }
+    }
+    let _ = names;
+    (parts.join(", "), vars)
+}
+
+/// Largest degree, in any one variable, of the numerators and denominators a symbolic
+/// expansion may build (checked on the derived bounds before expanding).
+pub const MAX_SYMBOLIC_DEGREE: u64 = 4_096;
+
+/// Checks, before expanding, that `exprs` expand to degrees at most [`MAX_SYMBOLIC_DEGREE`]
+/// in each of the variables `vars` (scalars and vector coordinates, as degree bounds).
+pub fn check_symbolic_degrees(
+    vars: BTreeMap<String, Value<Deg>>,
+    ints: &BTreeMap<String, i64>,
+    exprs: &[&Expr],
+) -> Result<()> {
+    let env = VarEnv(vars);
+    for e in exprs {
+        let d = Evaluator::new(&env, ints.clone()).eval(e)?;
+        for x in d.entries() {
+            for (v, &(num, den)) in &x.vars {
+                if num.max(den) > MAX_SYMBOLIC_DEGREE {
+                    return Err(Error::TooLarge {
+                        what: "degree of a symbolic expansion",
+                        value: format!("{} in {v}", num.max(den)),
+                        limit: format!("MAX_SYMBOLIC_DEGREE = {MAX_SYMBOLIC_DEGREE} per variable"),
+                    });
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+fn layout_degrees(layout: &[(String, usize)]) -> BTreeMap<String, Value<Deg>> {
+    layout
+        .iter()
+        .map(|(v, dim)| {
+            let d = if *dim == 0 {
+                Value::S(Deg::var(v))
+            } else {
+                Value::V((1..=*dim).map(|k| Deg::var(&format!("{v}_{k}"))).collect())
+            };
+            (v.clone(), d)
+        })
+        .collect()
+}
+
+/// Proves or refutes `lhs = rhs` by exact symbolic expansion in the claim's symbols.
+pub fn symbolic_equal(ctx: &Ctx<'_>, lhs: &Expr, rhs: &Expr, ints: &BTreeMap<String, i64>) -> Result<PairResult> {
+    let extra = ctx.params(&[lhs, rhs]);
+    let extra: Vec<String> = extra.into_iter().filter(|v| !ctx.is_bound(v)).collect();
+    let (names, layout) = sym_names(ctx, &extra);
+    check_symbolic_degrees(layout_degrees(&layout), ints, &[lhs, rhs])?;
+    let env = sym_env(&names, &layout);
+    let l = Evaluator::new(&env, ints.clone()).eval(lhs)?;
+    let r = Evaluator::new(&env, ints.clone()).eval(rhs)?;
+    let mut terms = 0;
+    for (a, b) in l.paired_entries(&r)? {
+        let d = a.cleared_difference(b);
+        if !d.is_zero() {
+            let point = nonzero_point(&d, names.len());
+            let (at, vars) = sym_assignment(&names, &layout, &point);
+            let env = VarEnv(vars);
+            let lv = Evaluator::new(&env, ints.clone()).eval(lhs);
+            let rv = Evaluator::new(&env, ints.clone()).eval(rhs);
+            let shown = match (lv, rv) {
+                (Ok(x), Ok(y)) => format!("left side = {x}, right side = {y}"),
+                _ => "a denominator vanishes there".into(),
+            };
+            return Ok(PairResult::Fails(format!(
+                "the difference of the two sides does not expand to 0 (it has {} terms); at {at}: {shown}",
+                d.len()
+            )));
+        }
+        terms += a.num.len() + b.num.len();
+    }
+    let mut proof = PairProof::default();
+    proof.lines.push(format!(
+        "expanded exactly in {} variables ({}); both sides agree term by term after clearing denominators ({terms} terms)",
+        names.len(),
+        names.join(", ")
+    ));
+    Ok(PairResult::Proved(proof))
+}
+
+/// Checks a chain by symbolic expansion.
+pub fn check_chain_symbolic(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Result<Checked> {
+    let instances = ctx.instances()?;
+    let mut steps = Vec::new();
+    let mut nvars = 0;
+    for inst in &instances {
+        for (k, pair) in sides.windows(2).enumerate() {
+            match symbolic_equal(ctx, &pair[0], &pair[1], inst)? {
+                PairResult::Fails(cx) => {
+                    let which = if sides.len() > 2 {
+                        format!("step {} ('{}' = '{}'): ", k + 1, pair[0], pair[1])
+                    } else {
+                        String::new()
+                    };
+                    let mut c = Checked::new(Verdict::Fails, format!("{which}{cx}"));
+                    c.steps = steps;
+                    return Ok(c);
+                }
+                PairResult::Proved(p) => {
+                    if detail {
+                        steps.push(format!("'{}' = '{}':", pair[0], pair[1]));
+                        steps.extend(p.lines.iter().map(|l| format!("    {l}")));
+                    }
+                    nvars = sym_names(ctx, &[]).0.len();
+                }
+            }
+        }
+    }
+    let what = if sides.len() > 2 {
+        format!("all {} equalities of the chain", sides.len() - 1)
+    } else {
+        "identity".into()
+    };
+    let mut c = Checked::new(
+        Verdict::Proved,
+        format!(
+            "{what} expanded exactly as rational functions of the {nvars} coordinates of {}: the cleared numerators agree: proof",
+            sym_names(ctx, &[]).1.iter().map(|(v, _)| v.clone()).collect::<Vec<_>>().join(", ")
+        ),
+    );
+    c.steps = steps;
+    Ok(c)
+}
+
+/// Why `conclusion = factor · premise` (an identity of rational functions) may not make the
+/// premise imply the conclusion, or `None` when it does: at a point where the premise holds
+/// (its numerator `P_n` vanishes) and the conclusion is defined (its formal denominator
+/// `D_c ≠ 0`), `D_c · conclusion = Σ_j (F_ij D_c / P_dj) · P_n,j`, which is 0 when every
+/// `F_ij D_c / P_dj` is a polynomial. So the factor's denominator may only vanish where the
+/// conclusion is undefined anyway (e.g. `inv(M)` on both sides); otherwise the claim is refused.
+fn factor_pole(ctx: &Ctx<'_>, concl: &Expr, factor: &Expr, prem: &Expr) -> Result<Option<String>> {
+    let extra: Vec<String> = ctx
+        .params(&[concl, factor, prem])
+        .into_iter()
+        .filter(|v| !ctx.is_bound(v))
+        .collect();
+    let (names, layout) = sym_names(ctx, &extra);
+    let env = sym_env(&names, &layout);
+    let c = Evaluator::new(&env, BTreeMap::new()).eval(concl)?;
+    let f = Evaluator::new(&env, BTreeMap::new()).eval(factor)?;
+    let p = Evaluator::new(&env, BTreeMap::new()).eval(prem)?;
+    let (cs, ps) = (c.entries(), p.entries());
+    let entries: Vec<(usize, usize, &RatFunc)> = match &f {
+        Value::S(x) => (0..cs.len()).map(|i| (i, i, x)).collect(),
+        Value::M(m) => m
+            .iter()
+            .enumerate()
+            .flat_map(|(i, r)| r.iter().enumerate().map(move |(j, x)| (i, j, x)))
+            .collect(),
+        Value::V(_) => {
+            return Err(Error::Domain(
+                "the factor of implies must be a number or a matrix".into(),
+            ))
+        }
+    };
+    for (i, j, fij) in entries {
+        let (Some(ci), Some(pj)) = (cs.get(i), ps.get(j)) else {
+            continue;
+        };
+        if fij.num.is_zero() {
+            continue;
+        }
+        if fij.num.mul(&ci.den).exact_div(&fij.den.mul(&pj.den)).is_none() {
+            return Ok(Some(format!(
+                "the factor '{factor}' has the denominator {}, which may vanish where the equation is defined",
+                fij.den
+            )));
+        }
+    }
+    Ok(None)
+}
+
+/// How many points the counterexample search of an `implies` with a pole in its factor tries.
+pub const POLE_SEARCH: usize = 2_401;
+
+/// Where `conclusion = factor · premise` holds identically, the premise can hold while the
+/// conclusion fails only where the factor has a pole. Small rational points (coordinates from
+/// 0, ±1, ±2, 1/2, 3, the smallest first) are tried for one where the premise is 0 and the
+/// equation `a = b` is defined and false: an exact counterexample.
+fn refute_at_poles(ctx: &Ctx<'_>, imp: &Implies, prem: &Expr, (a, b): (&Expr, &Expr)) -> Result<Option<Checked>> {
+    let extra: Vec<String> = ctx
+        .params(&[prem, a, b])
+        .into_iter()
+        .filter(|v| !ctx.is_bound(v))
+        .collect();
+    let (names, layout) = sym_names(ctx, &extra);
+    let values: Vec<BigRational> = [(0, 1), (1, 1), (-1, 1), (2, 1), (-2, 1), (1, 2), (3, 1)]
+        .iter()
+        .map(|&(p, q)| BigRational::new(p.into(), q.into()))
+        .collect();
+    let inst = BTreeMap::new();
+    let at = |vars: &BTreeMap<String, Value<BigRational>>, e: &Expr| {
+        Evaluator::new(&VarEnv(vars.clone()), inst.clone()).eval(e)
+    };
+    let mut tried = 0;
+    // Points whose largest coordinate rank is `top`, for `top` = 0, 1, …: smallest first.
+    for top in 0..values.len() {
+        let mut digits = vec![0usize; names.len()];
+        loop {
+            if digits.contains(&top) || (top == 0 && digits.is_empty()) {
+                tried += 1;
+                if tried > POLE_SEARCH {
+                    return Ok(None);
+                }
+                let point: Vec<BigRational> = digits.iter().map(|&d| values[d].clone()).collect();
+                let (shown, vars) = sym_assignment(&names, &layout, &point);
+                let holds = at(&vars, prem).is_ok_and(|p| p.entries().iter().all(|x| x.is_zero()));
+                if holds {
+                    if let (Ok(av), Ok(bv)) = (at(&vars, a), at(&vars, b)) {
+                        if av.equals(&bv) == Some(false) {
+                            return Ok(Some(Checked::new(
+                                Verdict::Fails,
+                                format!(
+                                    "at {shown}: the premise '{}' holds (the factor has a pole there), but the equation '{}' gives left side = {av}, right side = {bv}",
+                                    imp.premise.as_str(),
+                                    imp.equation.as_str()
+                                ),
+                            )));
+                        }
+                    }
+                }
+            }
+            // The next point with every coordinate rank ≤ top.
+            let Some(k) = digits.iter().rposition(|&d| d < top) else {
+                break;
+            };
+            digits[k] += 1;
+            digits[k + 1..].iter_mut().for_each(|d| *d = 0);
+        }
+    }
+    Ok(None)
+}
+
+/// `implies`: `conclusion_lhs − conclusion_rhs = factor · (premise_lhs − premise_rhs)` identically,
+/// so the premise implies the conclusion. When it is not an identity, an exact counterexample
+/// is searched where the premise holds and the conclusion does not.
+pub fn check_implies(ctx: &Ctx<'_>, imp: &Implies, detail: bool) -> Result<Checked> {
+    let (a, b) = ctx.equation(&imp.equation)?;
+    let (p, q) = ctx.equation(&imp.premise)?;
+    let factor = ctx.expr(&imp.factor)?;
+    let is_zero = |e: &Expr| matches!(e, Expr::Num(r) if Scalar::is_zero(r));
+    let concl = Expr::sub(a.clone(), b.clone());
+    let prem = if is_zero(&q) {
+        p.clone()
+    } else {
+        Expr::sub(p.clone(), q.clone())
+    };
+    let rhs = Expr::mul(factor.clone(), prem.clone());
+    let inst = BTreeMap::new();
+    match symbolic_equal(ctx, &concl, &rhs, &inst)? {
+        PairResult::Proved(pp) => {
+            if let Some(reason) = factor_pole(ctx, &concl, &factor, &prem)? {
+                if let Some(found) = refute_at_poles(ctx, imp, &prem, (&a, &b))? {
+                    return Ok(found);
+                }
+                return Err(Error::Domain(format!(
+                    "the equation is factor × premise identically, but {reason}: where it vanishes and the premise holds, \
+                     nothing follows, so the implication is not proved (refused; no counterexample among the first {POLE_SEARCH} small rational points)"
+                )));
+            }
+            let mut out = Checked::new(
+                Verdict::Proved,
+                format!(
+                    "[{}] = ({}) · [{}] identically, as rational functions of the symbols and vector coordinates \
+                     (exact symbolic expansion), so '{} = 0' implies the equation: proof",
+                    imp.equation.as_str(),
+                    imp.factor.as_str(),
+                    imp.premise.as_str(),
+                    imp.premise.as_str()
+                ),
+            );
+            if detail {
+                out.steps = pp.lines;
+            }
+            Ok(out)
+        }
+        PairResult::Fails(_) => {
+            // A concrete counterexample: data where the premise holds (solved for the first
+            // symbol, which it contains linearly) but the equation does not.
+            let unknown = ctx
+                .decls
+                .symbols
+                .as_ref()
+                .and_then(|s| s.first().cloned())
+                .ok_or_else(|| Error::Parse(format!("claim {}: implies needs symbols (the unknowns)", ctx.id)))?;
+            let (names, layout) = sym_names(ctx, &[]);
+            for attempt in 0..200u64 {
+                let point: Vec<BigRational> = (0..names.len())
+                    .map(|i| {
+                        BigRational::from_integer((((attempt + 2) * (i as u64 * 5 + 1) + attempt) % 7).into())
+                            - BigRational::from_integer(3.into())
+                    })
+                    .collect();
+                let (_, mut vars) = sym_assignment(&names, &layout, &point);
+                // other symbols 0, the unknown solved from the (linear) premise
+                for s in ctx.decls.symbols.iter().flatten() {
+                    vars.insert(s.clone(), Value::S(BigRational::zero()));
+                }
+                let eval_prem = |vars: &BTreeMap<String, Value<BigRational>>| -> Result<Value<BigRational>> {
+                    let env = VarEnv(vars.clone());
+                    Evaluator::new(&env, inst.clone()).eval(&prem)
+                };
+                let p0 = eval_prem(&vars)?;
+                vars.insert(unknown.clone(), Value::S(BigRational::one()));
+                let p1 = eval_prem(&vars)?;
+                let (Value::S(p0), Value::S(p1)) = (p0, p1) else {
+                    return Err(Error::Domain(
+                        "implies with a vector premise needs a proof, not a search".into(),
+                    ));
+                };
+                let slope = &p1 - &p0;
+                if slope.is_zero() {
+                    continue;
+                }
+                let k = -&p0 / &slope;
+                vars.insert(unknown.clone(), Value::S(k));
+                let env = VarEnv(vars.clone());
+                let pv = Evaluator::new(&env, inst.clone()).eval(&prem)?;
+                let av = Evaluator::new(&env, inst.clone()).eval(&a)?;
+                let bv = Evaluator::new(&env, inst.clone()).eval(&b)?;
+                if pv.equals(&Value::S(BigRational::zero())) == Some(true) && av.equals(&bv) == Some(false) {
+                    let shown: Vec<String> = vars.iter().map(|(k, v)| format!("{k} = {v}")).collect();
+                    return Ok(Checked::new(
+                        Verdict::Fails,
+                        format!(
+                            "at {}: the premise '{}' = 0 holds, but the equation '{}' gives left side = {av}, right side = {bv}",
+                            shown.join(", "),
+                            imp.premise.as_str(),
+                            imp.equation.as_str()
+                        ),
+                    ));
+                }
+            }
+            Err(Error::Domain(format!(
+                "claim {}: the equation is not factor × premise, and no counterexample was found",
+                ctx.id
+            )))
+        }
+    }
+}

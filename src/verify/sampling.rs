@@ -1,0 +1,698 @@
+//! The identity prover: degree bounds derived from the expressions, exact checks at enough
+//! points, on a basis of control polygons; the work of a claim estimated before it runs.
+
+use super::checked::{Checked, Method};
+use super::context::Ctx;
+use super::eval::{Deg, Evaluator, Value};
+use super::expr::{self, check_index, parse, Expr};
+use super::objects::{DegEnv, Exact, NumEnv};
+use super::Verdict;
+use crate::error::{Error, Result};
+use crate::scalar::RefOps;
+use num_rational::BigRational;
+use std::collections::{BTreeMap, BTreeSet};
+use std::fmt::Write as _;
+
+/// Largest number of exact evaluations one identity may take (per side and instance).
+pub const MAX_EVALUATIONS: usize = 2_000_000;
+
+// ---------------------------------------------------------------------------------------
+// Choosing parameters
+
+/// Distinct rationals: first `k/d` for `k = 0..=d`, then `p/q` in lowest terms for growing `q`.
+pub struct Candidates {
+    seen: BTreeSet<BigRational>,
+    queue: Vec<BigRational>,
+    q: i64,
+}
+
+impl Candidates {
+    /// Candidates for a polynomial of degree `d`.
+    pub fn new(d: usize) -> Self {
+        let d = d.max(1) as i64;
+        let queue: Vec<BigRational> = (0..=d).rev().map(|k| BigRational::new(k.into(), d.into())).collect();
+        Candidates {
+            seen: BTreeSet::new(),
+            queue,
+            q: 1,
+        }
+    }
+}
+
+impl Iterator for Candidates {
+    type Item = BigRational;
+    fn next(&mut self) -> Option<BigRational> {
+        loop {
+            if let Some(x) = self.queue.pop() {
+                if self.seen.insert(x.clone()) {
+                    return Some(x);
+                }
+                continue;
+            }
+            self.q += 1;
+            let q = self.q;
+            // Also step outside [0, 1]: a denominator may vanish on a whole interval's rationals
+            // only if it is zero, but values beyond 1 make the search shorter for e.g. 1/(t - p/q).
+            self.queue = (0..=2 * q)
+                .rev()
+                .map(|p| BigRational::new(p.into(), q.into()))
+                .collect();
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// The identity prover
+
+/// One polygon of the basis on which an affine identity is checked.
+#[derive(Clone, Debug)]
+enum Basis {
+    None,
+    Zero,
+    Unit(usize),
+    NetUnit(usize, usize),
+}
+
+impl Basis {
+    fn describe(&self, ctx: &Ctx<'_>) -> String {
+        let p = ctx.decls.polygon.as_ref().map(|p| p.name.as_str());
+        let n = ctx.decls.net.as_ref().map(|p| p.name.as_str());
+        match self {
+            Basis::None => String::new(),
+            Basis::Zero => {
+                let names: Vec<&str> = p.into_iter().chain(n).collect();
+                format!("{} = 0 (all control points zero)", names.join(" = "))
+            }
+            Basis::Unit(k) => format!("{0}[{k}] = 1, other {0}[j] = 0", p.unwrap_or("b")),
+            Basis::NetUnit(i, j) => format!("{0}[{i}, {j}] = 1, other {0}[k, l] = 0", n.unwrap_or("b")),
+        }
+    }
+}
+
+/// What one checked equality established.
+#[derive(Clone, Debug, Default)]
+pub struct PairProof {
+    /// Per parameter: (name, degree needed, lhs bound, rhs bound, rational?).
+    pub degrees: Vec<(String, u64, Deg, Deg)>,
+    /// The parameter values checked, per parameter.
+    pub points: Vec<Vec<BigRational>>,
+    /// How many basis polygons.
+    pub polygons: usize,
+    /// Exact evaluations done (both sides).
+    pub evaluations: usize,
+    /// Candidate parameters skipped because a denominator vanished.
+    pub skipped: usize,
+    /// Detailed lines (for explain).
+    pub lines: Vec<String>,
+}
+
+/// The outcome of one equality check.
+pub enum PairResult {
+    /// Proved, with what was checked.
+    Proved(PairProof),
+    /// Fails: the counterexample.
+    Fails(String),
+}
+
+fn describe_deg(d: &Value<Deg>, v: &str) -> String {
+    let ds: Vec<(u64, u64)> = d.entries().iter().map(|x| x.get(v)).collect();
+    let n = ds.iter().map(|x| x.0).max().unwrap_or(0);
+    let m = ds.iter().map(|x| x.1).max().unwrap_or(0);
+    if m == 0 {
+        format!("{n}")
+    } else {
+        format!("{n}/{m}")
+    }
+}
+
+fn needed_degree(l: &Value<Deg>, r: &Value<Deg>, v: &str) -> Result<u64> {
+    let mut need = 0;
+    for (a, b) in l.paired_entries(r)? {
+        let (na, da) = a.get(v);
+        let (nb, db) = b.get(v);
+        let d = if da == 0 && db == 0 {
+            na.max(nb)
+        } else {
+            (na + db).max(nb + da)
+        };
+        need = need.max(d);
+    }
+    Ok(need)
+}
+
+/// Proves or refutes `lhs = rhs` for all parameter values, at one integer instance, exactly.
+pub fn prove_equal<T: Exact>(
+    ctx: &Ctx<'_>,
+    lhs: &Expr,
+    rhs: &Expr,
+    ints: &BTreeMap<String, i64>,
+    detail: bool,
+) -> Result<PairResult>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    let prepared = prepare::<T>(ctx, lhs, rhs, ints, detail)?;
+    prove_prepared(ctx, lhs, rhs, ints, detail, prepared)
+}
+
+fn prove_prepared<T: Exact>(
+    ctx: &Ctx<'_>,
+    lhs: &Expr,
+    rhs: &Expr,
+    ints: &BTreeMap<String, i64>,
+    detail: bool,
+    prepared: Prepared<T>,
+) -> Result<PairResult>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    let Prepared {
+        params,
+        mut num,
+        basis,
+        needs,
+        mut proof,
+        ..
+    } = prepared;
+
+    // Choose the parameter sets and check on the grid; a point where some denominator
+    // vanishes is replaced by the next candidate of its (last) parameter.
+    let mut gens: Vec<Candidates> = needs.iter().map(|&d| Candidates::new(d)).collect();
+    let mut sets: Vec<Vec<BigRational>> = gens
+        .iter_mut()
+        .zip(&needs)
+        .map(|(g, &d)| g.take(d + 1).collect())
+        .collect();
+    let limit_skips = 64 + needs.iter().sum::<usize>() * 4;
+    'retry: loop {
+        let mut idx = vec![0usize; params.len()];
+        let mut lines = Vec::new();
+        let mut evaluations = 0;
+        loop {
+            let values: Vec<BigRational> = idx.iter().zip(&sets).map(|(&i, s)| s[i].clone()).collect();
+            for b in &basis {
+                set_basis(&mut num, b);
+                for (v, x) in params.iter().zip(&values) {
+                    num.vars.insert(v.clone(), Value::S(T::from_rational(x)?));
+                }
+                let l = Evaluator::new(&num, ints.clone()).eval(lhs);
+                let r = Evaluator::new(&num, ints.clone()).eval(rhs);
+                evaluations += 2;
+                let (l, r) = match (l, r) {
+                    (Ok(l), Ok(r)) => (l, r),
+                    (Err(e @ (Error::DivisionByZero(_) | Error::Singular(_))), _)
+                    | (_, Err(e @ (Error::DivisionByZero(_) | Error::Singular(_)))) => {
+                        // Replace the offending value of the last parameter and start again.
+                        proof.skipped += 1;
+                        if params.is_empty() || proof.skipped > limit_skips {
+                            return Err(Error::Domain(format!(
+                                "no parameter values found where every denominator is non-zero ({e}); \
+                                 is a denominator the zero polynomial?"
+                            )));
+                        }
+                        let k = params.len() - 1;
+                        let fresh = gens[k].next().expect("candidates are infinite");
+                        sets[k][idx[k]] = fresh;
+                        continue 'retry;
+                    }
+                    (Err(e), _) | (_, Err(e)) => return Err(e),
+                };
+                // Described only when it is printed: formatting every point costs more than
+                // evaluating a small claim.
+                let at = || describe_point(&params, &values, ints, b, ctx);
+                match l.equals(&r) {
+                    Some(true) => {
+                        if detail {
+                            lines.push(format!("{}: both sides = {l}", at()));
+                        }
+                    }
+                    Some(false) => {
+                        let at = at();
+                        return Ok(PairResult::Fails(format!("at {at}: left side = {l}, right side = {r}")));
+                    }
+                    None => {
+                        let at = at();
+                        return Err(Error::Domain(format!(
+                            "at {at} the sides are {l} and {r}: the claim mixes square roots of different fields \
+                             (exact arithmetic here is in one Q(√d) per claim), so it cannot be decided"
+                        )));
+                    }
+                }
+            }
+            // next grid point
+            let mut k = params.len();
+            loop {
+                if k == 0 {
+                    proof.points = sets;
+                    proof.evaluations = evaluations;
+                    proof.lines.extend(lines);
+                    return Ok(PairResult::Proved(proof));
+                }
+                k -= 1;
+                idx[k] += 1;
+                if idx[k] < sets[k].len() {
+                    break;
+                }
+                idx[k] = 0;
+            }
+        }
+    }
+}
+
+/// A pair of sides ready to be checked at one integer instance.
+struct Prepared<T> {
+    params: Vec<String>,
+    num: NumEnv<T>,
+    basis: Vec<Basis>,
+    needs: Vec<usize>,
+    proof: PairProof,
+    /// The estimated work, in units of [`MAX_WORK`].
+    work: u128,
+}
+
+/// Largest estimated work of one claim, in units of one exact evaluation of an expression of
+/// degree `d` counted as `(1 + d)²` (d: the identity's degree plus the degree of the symbolic
+/// polygon or net), times `w²` where `w = max(1, (1 + d)·L/64)` words for literals of `L` bits,
+/// summed over every case, pair of sides, basis polygon and sample point.
+pub const MAX_WORK: u128 = 50_000_000;
+
+/// The largest size in bits (numerator and denominator) of a number written in `e`.
+fn literal_bits(e: &Expr) -> u64 {
+    let mut bits = 0;
+    e.visit(&mut |x| {
+        if let Expr::Num(r) = x {
+            bits = bits.max(r.numer().bits() + r.denom().bits());
+        }
+    });
+    bits
+}
+
+/// The work of checking `lhs = rhs` at one instance, estimated before computing.
+pub fn estimate_work<T: Exact>(ctx: &Ctx<'_>, lhs: &Expr, rhs: &Expr, ints: &BTreeMap<String, i64>) -> Result<u128>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    Ok(prepare::<T>(ctx, lhs, rhs, ints, false)?.work)
+}
+
+fn prepare<T: Exact>(
+    ctx: &Ctx<'_>,
+    lhs: &Expr,
+    rhs: &Expr,
+    ints: &BTreeMap<String, i64>,
+    detail: bool,
+) -> Result<Prepared<T>>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    let params = ctx.params(&[lhs, rhs]);
+    let mut num: NumEnv<T> = NumEnv::new(ctx.decls)?;
+    // Shape the symbolic polygon/net for this instance. Both sides are affine in all their
+    // control points together, so one basis covers every declared polygon and net at once:
+    // all zero, then each single control point of each object set to 1.
+    let mut basis = vec![Basis::Zero];
+    if let Some(p) = &ctx.decls.polygon {
+        let n = expr::eval_int(&parse(&p.degree, &[])?, ints)?;
+        check_index(n)?;
+        if n < 0 {
+            return Err(Error::Domain(format!("polygon {} of negative degree {n}", p.name)));
+        }
+        num.polygon = Some((p.name.clone(), vec![T::zero(); n as usize + 1]));
+        basis.extend((0..=n as usize).map(Basis::Unit));
+    }
+    if let Some(p) = &ctx.decls.net {
+        let m = expr::eval_int(&parse(&p.degree[0], &[])?, ints)?;
+        let n = expr::eval_int(&parse(&p.degree[1], &[])?, ints)?;
+        check_index(m)?;
+        check_index(n)?;
+        if m < 0 || n < 0 {
+            return Err(Error::Domain(format!("net {} of negative degree", p.name)));
+        }
+        num.net = Some((p.name.clone(), vec![vec![T::zero(); n as usize + 1]; m as usize + 1]));
+        basis.extend((0..=m as usize).flat_map(|i| (0..=n as usize).map(move |j| Basis::NetUnit(i, j))));
+    }
+
+    // Degree bounds, derived by evaluating both sides in the algebra of degree bounds.
+    let degenv = DegEnv::new(&num, &params);
+    let dl = Evaluator::new(&degenv, ints.clone()).eval(lhs)?;
+    let dr = Evaluator::new(&degenv, ints.clone()).eval(rhs)?;
+    for (side, d) in [("left", &dl), ("right", &dr)] {
+        if d.entries().iter().any(|x| x.poly > 1) {
+            return Err(Error::Domain(format!(
+                "the {side} side is not affine in the symbolic control points (it multiplies two of them)"
+            )));
+        }
+    }
+    let uses_polygon = dl.entries().iter().chain(dr.entries().iter()).any(|x| x.poly > 0);
+    if !uses_polygon {
+        basis = vec![Basis::None];
+    }
+    let mut proof = PairProof {
+        polygons: basis.len(),
+        ..Default::default()
+    };
+    let mut needs = Vec::new();
+    for v in &params {
+        let need = needed_degree(&dl, &dr, v)?;
+        if need > 100_000 {
+            return Err(Error::TooLarge {
+                what: "degree of the identity",
+                value: need.to_string(),
+                limit: "100000".into(),
+            });
+        }
+        needs.push(need as usize);
+        proof.degrees.push((
+            v.clone(),
+            need,
+            dl.entries().first().map(|x| (*x).clone()).unwrap_or_default(),
+            dr.entries().first().map(|x| (*x).clone()).unwrap_or_default(),
+        ));
+        if detail {
+            proof.lines.push(format!(
+                "degree in {v}: left side {}, right side {} (num/den bounds from the expression) ⇒ the cleared difference has degree ≤ {need}, so {} points suffice",
+                describe_deg(&dl, v),
+                describe_deg(&dr, v),
+                need + 1
+            ));
+        }
+    }
+    let object_degree = num.polygon.as_ref().map_or(0, |p| p.1.len() - 1)
+        + num.net.as_ref().map_or(0, |n| n.1.len() + n.1[0].len() - 2);
+    let total: usize = needs
+        .iter()
+        .map(|d| d + 1)
+        .product::<usize>()
+        .saturating_mul(basis.len());
+    if total.saturating_mul(2) > MAX_EVALUATIONS {
+        return Err(Error::TooLarge {
+            what: "number of exact evaluations",
+            value: total.to_string(),
+            limit: MAX_EVALUATIONS.to_string(),
+        });
+    }
+    let size = 1 + needs.iter().copied().max().unwrap_or(0) as u128 + object_degree as u128;
+    // Numbers grow with the degree: a literal of L bits raised to degree d has d·L bits, and
+    // one product of such numbers costs about (d·L/64)² word operations.
+    let words = (size * u128::from(literal_bits(lhs).max(literal_bits(rhs))) / 64).max(1);
+    let work = (total as u128)
+        .saturating_mul(2)
+        .saturating_mul(size * size)
+        .saturating_mul(words.saturating_mul(words));
+    Ok(Prepared {
+        params,
+        num,
+        basis,
+        needs,
+        proof,
+        work,
+    })
+}
+
+fn set_basis<T: Exact>(num: &mut NumEnv<T>, b: &Basis)
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    if let Some((_, c)) = &mut num.polygon {
+        c.iter_mut().for_each(|x| *x = T::zero());
+        if let Basis::Unit(k) = b {
+            c[*k] = T::one();
+        }
+    }
+    if let Some((_, n)) = &mut num.net {
+        n.iter_mut().flatten().for_each(|x| *x = T::zero());
+        if let Basis::NetUnit(i, j) = b {
+            n[*i][*j] = T::one();
+        }
+    }
+}
+
+fn describe_point(
+    params: &[String],
+    values: &[BigRational],
+    ints: &BTreeMap<String, i64>,
+    b: &Basis,
+    ctx: &Ctx<'_>,
+) -> String {
+    let mut parts: Vec<String> = ints.iter().map(|(k, v)| format!("{k} = {v}")).collect();
+    parts.extend(params.iter().zip(values).map(|(p, v)| format!("{p} = {v}")));
+    let bd = b.describe(ctx);
+    if !bd.is_empty() {
+        parts.push(bd);
+    }
+    if parts.is_empty() {
+        "the constant case".into()
+    } else {
+        parts.join(", ")
+    }
+}
+
+pub(crate) fn list(v: &[BigRational]) -> String {
+    v.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", ")
+}
+
+/// A one-line summary of a pair proof.
+pub fn pair_summary(p: &PairProof) -> String {
+    let mut s = String::new();
+    if p.degrees.is_empty() {
+        s.push_str("no parameters: checked exactly");
+    } else {
+        let parts: Vec<String> = p
+            .degrees
+            .iter()
+            .zip(&p.points)
+            .map(|((v, need, _, _), pts)| {
+                if pts.len() <= 8 {
+                    format!(
+                        "degree ≤ {need} in {v}, equal at {v} = {} ({} points)",
+                        list(pts),
+                        pts.len()
+                    )
+                } else {
+                    format!("degree ≤ {need} in {v}, equal at {} values of {v}", pts.len())
+                }
+            })
+            .collect();
+        s.push_str(&parts.join("; "));
+        if p.degrees.len() > 1 {
+            let _ = write!(
+                s,
+                " (a {} grid)",
+                p.points
+                    .iter()
+                    .map(|x| x.len().to_string())
+                    .collect::<Vec<_>>()
+                    .join("×")
+            );
+        }
+    }
+    if p.polygons > 1 {
+        let _ = write!(
+            s,
+            ", on {} basis polygons (zero and unit; both sides affine in the control points)",
+            p.polygons
+        );
+    }
+    if p.skipped > 0 {
+        let _ = write!(
+            s,
+            ", {} candidate values skipped where a denominator vanishes",
+            p.skipped
+        );
+    }
+    s
+}
+
+/// The estimated work of checking the chain `sides` for every instance of the claim's
+/// ranges, added to `before` (the work of earlier parts of the same claim); an error naming
+/// [`MAX_WORK`] as soon as the sum exceeds it, before anything is evaluated.
+pub fn chain_work<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], before: u128) -> Result<u128>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    let mut work = before;
+    for inst in &ctx.instances()? {
+        for pair in sides.windows(2) {
+            work = work.saturating_add(estimate_work::<T>(ctx, &pair[0], &pair[1], inst)?);
+            if work > MAX_WORK {
+                return Err(too_much_work(work));
+            }
+        }
+    }
+    Ok(work)
+}
+
+fn too_much_work(work: u128) -> Error {
+    Error::TooLarge {
+        what: "estimated work of the claim",
+        value: format!("more than {work} units"),
+        limit: format!("MAX_WORK = {MAX_WORK} units: exact evaluations × (1 + degree)² × (words of the numbers)²"),
+    }
+}
+
+/// Checks a chain `e0 = e1 = …` for every instance of the integer ranges.
+pub fn check_chain<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Result<Checked>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    if sides.len() < 2 {
+        return Err(Error::Parse(format!("claim {}: an identity needs two sides", ctx.id)));
+    }
+    let instances = ctx.instances()?;
+    // Bounded work: every pair of every case is prepared (degrees derived, basis chosen) and
+    // the whole claim's work estimated before anything is evaluated.
+    let mut plans = Vec::with_capacity(instances.len() * (sides.len() - 1));
+    let mut work: u128 = 0;
+    for inst in &instances {
+        for pair in sides.windows(2) {
+            let plan = prepare::<T>(ctx, &pair[0], &pair[1], inst, detail)?;
+            work = work.saturating_add(plan.work);
+            if work > MAX_WORK {
+                return Err(too_much_work(work));
+            }
+            plans.push(plan);
+        }
+    }
+    let mut plans = plans.into_iter();
+    let mut steps = Vec::new();
+    let mut max_need: BTreeMap<String, u64> = BTreeMap::new();
+    let mut evaluations = 0;
+    let mut last: Option<PairProof> = None;
+    let mut first_params: Vec<BigRational> = Vec::new();
+    let mut rational = false;
+    let mut polygons = (usize::MAX, 0usize);
+    // The explanation argues from the derived degrees when any pair has parameters.
+    let (mut sampled, mut basis) = (false, false);
+    let method = |sampled: bool, basis: bool| {
+        if sampled {
+            Method::Sampling { basis }
+        } else {
+            Method::Direct
+        }
+    };
+    for inst in &instances {
+        for (k, pair) in sides.windows(2).enumerate() {
+            let plan = plans.next().expect("one plan per case and pair");
+            match prove_prepared::<T>(ctx, &pair[0], &pair[1], inst, detail, plan)? {
+                PairResult::Fails(cx) => {
+                    let which = if sides.len() > 2 {
+                        format!("step {} ('{}' = '{}') ", k + 1, pair[0], pair[1])
+                    } else {
+                        String::new()
+                    };
+                    let mut c = Checked::new(Verdict::Fails, format!("{which}{cx}"));
+                    c.method = method(sampled, basis);
+                    c.steps = steps;
+                    c.steps.push(format!("FAILS {which}{cx}"));
+                    return Ok(c);
+                }
+                PairResult::Proved(p) => {
+                    for (v, need, l, r) in &p.degrees {
+                        let e = max_need.entry(v.clone()).or_insert(0);
+                        *e = (*e).max(*need);
+                        rational |= !l.is_polynomial() || !r.is_polynomial();
+                    }
+                    polygons = (polygons.0.min(p.polygons), polygons.1.max(p.polygons));
+                    sampled |= !p.degrees.is_empty();
+                    basis |= p.polygons > 1;
+                    evaluations += p.evaluations;
+                    if detail {
+                        let head = if inst.is_empty() {
+                            String::new()
+                        } else {
+                            format!(
+                                "[{}] ",
+                                inst.iter()
+                                    .map(|(k, v)| format!("{k} = {v}"))
+                                    .collect::<Vec<_>>()
+                                    .join(", ")
+                            )
+                        };
+                        steps.push(format!("{head}'{}' = '{}': {}", pair[0], pair[1], pair_summary(&p)));
+                        steps.extend(p.lines.iter().map(|l| format!("    {l}")));
+                    }
+                    if first_params.is_empty() {
+                        first_params = p.points.first().cloned().unwrap_or_default();
+                    }
+                    last = Some(p);
+                }
+            }
+        }
+    }
+    let what = if sides.len() > 2 {
+        format!("all {} equalities of the chain", sides.len() - 1)
+    } else {
+        "identity".into()
+    };
+    let cert = if instances.len() == 1 {
+        let p = last.expect("one instance checked");
+        let rat = if rational {
+            " (rational functions: the cleared numerators P1·Q2 − P2·Q1 are compared, at points where no denominator vanishes)"
+        } else {
+            ""
+        };
+        format!(
+            "{what}: {}{rat}; {evaluations} exact evaluations: proof",
+            pair_summary(&p)
+        )
+    } else {
+        let degs: Vec<String> = max_need.iter().map(|(v, d)| format!("{v} ≤ {d}")).collect();
+        let poly = if polygons.1 > 1 {
+            format!(
+                "; each case on its {}–{} basis polygons (zero and unit control polygons; both sides affine in them)",
+                polygons.0, polygons.1
+            )
+        } else {
+            String::new()
+        };
+        let degs = if degs.is_empty() {
+            "no continuous parameters".to_string()
+        } else {
+            format!(
+                "degrees (from the expressions) up to {}, each case at d+1 points per parameter",
+                degs.join(", ")
+            )
+        };
+        format!(
+            "{what} for every {} ({} cases): {degs}{poly}; {evaluations} exact evaluations: proof",
+            ctx.range_text(),
+            instances.len()
+        )
+    };
+    let mut c = Checked::new(Verdict::Proved, cert);
+    c.method = method(sampled, basis);
+    c.steps = steps;
+    c.params = first_params;
+    Ok(c)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::claims::{parse_file, Claim};
+    use super::*;
+    use std::path::Path;
+
+    fn claim(body: &str) -> Claim {
+        parse_file(
+            &format!("[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\nlhs = \"1\"\nrhs = \"1\"\n{body}"),
+            Path::new("t.toml"),
+        )
+        .unwrap()
+        .claim[0]
+            .clone()
+    }
+
+    #[test]
+    fn the_work_estimate_grows_with_degree_and_basis() {
+        let c = claim("polygon = { name = \"b\", degree = \"3\" }");
+        let ctx = Ctx::new(&c.id, &c.decls, Vec::new()).unwrap();
+        let (l, r) = (ctx.expr("b(t)").unwrap(), ctx.expr("bsum(b, t)").unwrap());
+        let ints = BTreeMap::new();
+        let w = estimate_work::<BigRational>(&ctx, &l, &r, &ints).unwrap();
+        // 4 points × 5 basis polygons × 2 sides × (1 + 3 + 3)²
+        assert_eq!(w, 4 * 5 * 2 * 49);
+        let big = ctx.expr("(1 + t)^4096").unwrap();
+        let w = estimate_work::<BigRational>(&ctx, &big, &big, &ints).unwrap();
+        assert!(w > MAX_WORK, "{w}");
+    }
+}
