@@ -2,7 +2,8 @@
 
 use casteljau::bernstein::{bernstein, eval_power};
 use casteljau::verify::eval::{Evaluator, Value, VarEnv};
-use casteljau::verify::expr::{parse, Expr};
+use casteljau::verify::expr::Expr;
+use casteljau::verify::parse::parse;
 use casteljau::{BigRational, Scalar};
 use proptest::prelude::*;
 use std::collections::BTreeMap;

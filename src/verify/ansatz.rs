@@ -12,8 +12,9 @@
 //! base case), so the search can fail to find a certificate but never proves anything itself.
 
 use super::eval::Alg;
-use super::expr::{self, Expr};
+use super::expr::Expr;
 use super::hyper::{ratio, ratio_denominator, Aff, Symbols, Term};
+use super::parse;
 use super::poly::{Poly, RatFunc};
 use crate::error::{Error, Result};
 use crate::linalg::row_reduce;
@@ -216,7 +217,7 @@ pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str) -> Result<Expr> {
             format!("({p})/({})", d_text.join("*"))
         };
         let known: Vec<String> = sym.names.iter().cloned().collect();
-        return expr::parse(&text, &known);
+        return parse::parse(&text, &known);
     }
     let tried = match searched {
         Some(deg) => format!(

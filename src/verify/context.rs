@@ -2,8 +2,12 @@
 //! `diff` applied) and integer ranges.
 
 use super::claims::Decls;
-use super::expr::{self, check_index, parse, parse_definition, ClosedRange, Definition, Expr};
+use super::expr::{self, check_index, Expr};
 use super::methods::{NetMethod, PolygonMethod};
+use super::parse::parse;
+use super::parse::{closed_range, ClosedRange};
+use super::rewrite;
+use super::rewrite::{parse_definition, Definition};
 use crate::error::{Error, Result};
 use std::collections::BTreeMap;
 
@@ -37,11 +41,7 @@ impl<'c> Ctx<'c> {
             .iter()
             .map(|d| parse_definition(d, &known))
             .collect::<Result<Vec<_>>>()?;
-        let ranges = decls
-            .ranges
-            .iter()
-            .map(expr::closed_range)
-            .collect::<Result<Vec<_>>>()?;
+        let ranges = decls.ranges.iter().map(closed_range).collect::<Result<Vec<_>>>()?;
         let mut ctx = Ctx {
             id,
             decls,
@@ -52,10 +52,10 @@ impl<'c> Ctx<'c> {
         };
         // In dependency order, each body expanded with the definitions it uses (so `diff`
         // sees the whole expression, never an undefined name).
-        for mut def in expr::dependency_order(parsed)? {
-            let expanded = expr::expand(&def.body, &ctx.defs)?;
+        for mut def in rewrite::dependency_order(parsed)? {
+            let expanded = rewrite::expand(&def.body, &ctx.defs)?;
             ctx.check_names(&expanded, &def.params)?;
-            def.body = expr::expand_diffs(&expanded, &ctx.int_names())?;
+            def.body = rewrite::expand_diffs(&expanded, &ctx.int_names())?;
             ctx.defs.push(def);
         }
         Ok(ctx)
@@ -64,9 +64,9 @@ impl<'c> Ctx<'c> {
     /// Parses an expression of the claim, with definitions and `diff` expanded.
     pub fn expr(&self, text: &str) -> Result<Expr> {
         let e = parse(text, &self.known)?;
-        let e = expr::expand(&e, &self.defs)?;
+        let e = rewrite::expand(&e, &self.defs)?;
         self.check_names(&e, &[])?;
-        expr::expand_diffs(&e, &self.int_names())
+        rewrite::expand_diffs(&e, &self.int_names())
     }
 
     /// The claim's integer names (its range variables), which `diff` may not take.

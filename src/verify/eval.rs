@@ -912,7 +912,7 @@ fn unknown_call(name: &str) -> Error {
     let base = if primed.len() < name.len() {
         Some(primed)
     } else {
-        super::expr::split_partial(name).map(|(b, _, _)| b)
+        super::rewrite::split_partial(name).map(|(b, _, _)| b)
     };
     match base {
         Some(b) => Error::Domain(format!(
@@ -1106,7 +1106,7 @@ fn inverse_cayley_hamilton<A: Alg>(m: &[Vec<A>], d: &A) -> Result<Value<A>> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::expr::parse;
+    use super::super::parse::parse;
     use super::*;
 
     fn q(p: i64, d: i64) -> BigRational {

@@ -17,10 +17,11 @@ use super::claims::{BezierPoints, Claim, ConicType, CurveSpec, Decls, Fit, Impli
 use super::context::Ctx;
 use super::eval::{Alg, Deg, Evaluator, Value};
 use super::expansion::check_implies;
-use super::expr::{substitute, Expr};
+use super::expr::Expr;
 use super::identity::{chain_in_field, check_identity, uses_sqrt};
 use super::objects::{points, CurveObj};
 use super::poly::{set_names, Poly, RatFunc};
+use super::rewrite::substitute;
 use super::sampling::check_chain;
 use super::{theorems, Verdict};
 use crate::curve::BezierCurve;

@@ -3,8 +3,10 @@
 
 use super::claims::{CurveSpec, Decls, Number, SurfaceSpec};
 use super::eval::{Alg, Deg, Env, Evaluator, Value, VarEnv};
-use super::expr::{self, parse, Expr};
+use super::expr::Expr;
 use super::methods::{NetMethod, PolygonMethod};
+use super::parse::parse;
+use super::rewrite;
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::point::Point;
@@ -149,7 +151,7 @@ fn surface_ref<'n>(
     let found = if is_surface(name) {
         Some((name, 0, 0))
     } else {
-        expr::split_partial(name).filter(|(base, _, _)| is_surface(base))
+        rewrite::split_partial(name).filter(|(base, _, _)| is_surface(base))
     };
     let Some((base, ku, kv)) = found else {
         let (primed, order) = split_primes(name);
@@ -163,7 +165,7 @@ fn surface_ref<'n>(
                 "{name}: a partial of the {what} {surface} is written with u (by the first argument) and v (by the second), e.g. {surface}_u, {surface}_uv, not '{suffix}'"
             )));
         }
-        if let Some((curve, _, _)) = expr::split_partial(name).filter(|(b, _, _)| is_curve(b)) {
+        if let Some((curve, _, _)) = rewrite::split_partial(name).filter(|(b, _, _)| is_curve(b)) {
             return Err(Error::Domain(format!(
                 "{name}: {curve} is a curve; its derivatives are {curve}'(t), {curve}''(t), … (or diff({curve}(t), t))"
             )));

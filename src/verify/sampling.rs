@@ -4,8 +4,9 @@
 use super::checked::{Checked, Method};
 use super::context::Ctx;
 use super::eval::{Deg, Evaluator, Value};
-use super::expr::{self, check_index, parse, Expr};
+use super::expr::{self, check_index, Expr};
 use super::objects::{DegEnv, Exact, NumEnv};
+use super::parse::parse;
 use super::Verdict;
 use crate::error::{Error, Result};
 use crate::scalar::RefOps;

@@ -351,7 +351,7 @@ fn listed(items: &[String]) -> String {
 
 /// Whether a range bound is a constant (`6`, not `n` or `n-r`).
 fn is_constant(bound: &str) -> bool {
-    super::expr::parse(bound, &[])
+    super::parse::parse(bound, &[])
         .and_then(|e| super::expr::eval_int(&e, &Default::default()))
         .is_ok()
 }

@@ -38,6 +38,7 @@ use super::hyper::{lin_mul, lin_neg, lin_subst, power_of, prove_zero, Aff, Domai
 use super::identity::check_identity;
 use super::poly::RatFunc;
 use super::Verdict;
+use super::{parse, rewrite};
 use crate::error::{Error, Result};
 use num_traits::Zero;
 use std::time::{Duration, Instant};
@@ -738,7 +739,7 @@ fn prepare(certificates: &[String], ctx: &Ctx<'_>, sides: &[Expr]) -> Result<(Ve
     let rs = &ctx.decls.ranges;
     let certs: Vec<Expr> = certificates
         .iter()
-        .map(|c| expr::parse(c, &ctx.known).and_then(|e| expr::expand(&e, &ctx.defs)))
+        .map(|c| parse::parse(c, &ctx.known).and_then(|e| rewrite::expand(&e, &ctx.defs)))
         .collect::<Result<_>>()?;
     let refs: Vec<&Expr> = sides.iter().chain(&certs).collect();
     let mut ints: Vec<String> = rs.iter().map(|r| r.var.clone()).collect();
@@ -775,15 +776,15 @@ impl Translator<'_> {
         let mut dom = Domain::default();
         for r in rs {
             let v = Aff::var(&r.var);
-            let from = self.aff(&expr::parse(&r.from, &[])?)?;
+            let from = self.aff(&parse::parse(&r.from, &[])?)?;
             dom = dom.with(v.minus(&from));
             if let Some(to) = &r.to {
-                let to = self.aff(&expr::parse(to, &[])?)?;
+                let to = self.aff(&parse::parse(to, &[])?)?;
                 dom = dom.with(to.minus(&v));
             }
         }
         if let Some(p) = &decls.polygon {
-            let deg = self.aff(&expr::parse(&p.degree, &[])?)?;
+            let deg = self.aff(&parse::parse(&p.degree, &[])?)?;
             self.polygon = Some((p.name.clone(), deg));
         }
         Ok(dom)

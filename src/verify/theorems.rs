@@ -64,7 +64,7 @@ const ELEVATION_STEPS: i64 = 4;
 /// [`MAX_THEOREM_DEGREE`].
 fn degrees(theorem: &Theorem) -> Result<(i64, i64)> {
     let text = theorem.degrees.as_deref().unwrap_or("0..=10");
-    let r = super::expr::closed_range(&IntRange::parse(&format!("n = {text}"))?)?;
+    let r = super::parse::closed_range(&IntRange::parse(&format!("n = {text}"))?)?;
     let empty = Default::default();
     let (lo, hi) = (
         super::expr::eval_int(&r.from, &empty)?,
