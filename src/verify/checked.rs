@@ -1,8 +1,42 @@
 //! What checking a claim produces: the verdict, what it rests on (a typed [`Method`]), the
 //! certificate and, for `explain`, the steps.
 
-use super::Verdict;
 use num_rational::BigRational;
+use serde::Serialize;
+
+/// How strong a verdict is, and so what it covers (its scope).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Verdict {
+    /// A proof for every value of every variable of the statement (e.g. a polynomial identity
+    /// of degree ≤ d checked exactly at d+1 points).
+    Proved,
+    /// Every case of the stated finite integer ranges is proved (each case for every value of
+    /// its continuous parameters); the ranges are in [`ClaimOutcome::range`]. Not a proof for
+    /// values outside them.
+    ProvedInRange,
+    /// Bounded evidence (e.g. a limit checked up to some r), saying exactly what was checked.
+    Verified,
+    /// The claim is false; the certificate holds an exact counterexample.
+    Fails,
+    /// Not a verdict: the claim could not be decided (a limit reached, a form the engine does
+    /// not handle); the certificate holds the one-line reason. The other claims are still
+    /// checked, and `prove` exits with status 2.
+    Error,
+}
+
+impl Verdict {
+    /// The lowercase name used in reports and JSON.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Verdict::Proved => "proved",
+            Verdict::ProvedInRange => "proved_in_range",
+            Verdict::Verified => "verified",
+            Verdict::Fails => "fails",
+            Verdict::Error => "error",
+        }
+    }
+}
 
 /// What a verdict rests on: the explanation argues from it (never from the certificate's
 /// or the steps' text).

@@ -1,13 +1,13 @@
 //! Exact symbolic expansion: identities in scalar and vector unknowns, and `implies`.
 
 use super::checked::Checked;
+use super::checked::Verdict;
 use super::claims::Implies;
 use super::context::Ctx;
 use super::eval::{Deg, Env, Evaluator, Value, VarEnv};
 use super::expr::Expr;
 use super::poly::{set_names, Poly, RatFunc};
 use super::sampling::{list, PairProof, PairResult};
-use super::Verdict;
 use crate::error::{Error, Result};
 use crate::scalar::Scalar;
 use num_rational::BigRational;

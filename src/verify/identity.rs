@@ -4,12 +4,12 @@
 //! parts, the symbolic route's evaluation check) all end here.
 
 use super::checked::Checked;
+use super::checked::Verdict;
 use super::claims::{CurveSpec, Decls, Identity, Number};
 use super::context::Ctx;
 use super::expansion::check_chain_symbolic;
 use super::expr::Expr;
 use super::sampling::check_chain;
-use super::Verdict;
 use crate::error::Result;
 use crate::quadratic::QuadraticIrrational;
 

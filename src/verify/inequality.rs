@@ -17,12 +17,12 @@
 //! the first values are evaluated as above.
 
 use super::checked::Checked;
+use super::checked::Verdict;
 use super::claims::{Decls, Inequality, Relation};
 use super::context::Ctx;
 use super::eval::{Alg, Deg, Evaluator, Value, VarEnv};
 use super::expr::Expr;
 use super::poly::{set_names, Poly, RatFunc};
-use super::Verdict;
 use crate::bernstein::{power_to_bernstein, reparametrize};
 use crate::error::{Error, Result};
 use num_rational::BigRational;

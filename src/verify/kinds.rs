@@ -13,6 +13,7 @@
 //! | `inequality`    | `lhs ≥ rhs` (or `>`) on an interval, by a Bernstein certificate or an exact point |
 
 use super::checked::Checked;
+use super::checked::Verdict;
 use super::claims::{BezierPoints, Claim, ConicType, CurveSpec, Decls, Fit, Implicit, Kind, Number, WeightType};
 use super::context::Ctx;
 use super::eval::{Alg, Deg, Evaluator, Value};
@@ -23,7 +24,7 @@ use super::objects::{points, CurveObj};
 use super::poly::{set_names, Poly, RatFunc};
 use super::rewrite::substitute;
 use super::sampling::check_chain;
-use super::{theorems, Verdict};
+use super::theorems;
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::point::Point;

@@ -2,12 +2,12 @@
 //! mode (`\dot{x}`, `-`, `\sum`), code in `\texttt`, and the Japanese of the texts inside
 //! `CJK` environments (the only non-ASCII bytes; the document loads `CJKutf8`).
 
-use super::checked::Checked;
-use super::claims::{Claim, ClaimFile};
-use super::report::{
+use super::argue::{
     argument, cases, certificate_case, misprint_lines, sample_evaluations, verdict_text, worked_case, worked_scheme,
     worked_sum,
 };
+use super::checked::Checked;
+use super::claims::{Claim, ClaimFile};
 use std::fmt::Write as _;
 
 /// The first line of every fragment: what the document around it must load.
@@ -382,7 +382,7 @@ pub(super) fn explain(f: &ClaimFile, c: &Claim, checked: &Checked, range_bound: 
         "Verdict: \\textbf{{{}}}\\\\",
         text(&verdict_text(checked.verdict, checked.range.as_deref()))
     );
-    let label = if checked.verdict == super::Verdict::Fails {
+    let label = if checked.verdict == super::checked::Verdict::Fails {
         "Counterexample"
     } else {
         "Certificate"

@@ -33,6 +33,7 @@
 //! ```
 
 pub mod ansatz;
+mod argue;
 pub mod checked;
 pub mod claims;
 pub mod context;
@@ -57,117 +58,10 @@ pub mod symbolic;
 pub mod theorems;
 
 use crate::error::{Error, Result};
-use serde::Serialize;
 use std::path::PathBuf;
 
-pub use report::{ExplainStyle, TextSummary};
-
-/// How strong a verdict is, and so what it covers (its scope).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Verdict {
-    /// A proof for every value of every variable of the statement (e.g. a polynomial identity
-    /// of degree ≤ d checked exactly at d+1 points).
-    Proved,
-    /// Every case of the stated finite integer ranges is proved (each case for every value of
-    /// its continuous parameters); the ranges are in [`ClaimOutcome::range`]. Not a proof for
-    /// values outside them.
-    ProvedInRange,
-    /// Bounded evidence (e.g. a limit checked up to some r), saying exactly what was checked.
-    Verified,
-    /// The claim is false; the certificate holds an exact counterexample.
-    Fails,
-    /// Not a verdict: the claim could not be decided (a limit reached, a form the engine does
-    /// not handle); the certificate holds the one-line reason. The other claims are still
-    /// checked, and `prove` exits with status 2.
-    Error,
-}
-
-impl Verdict {
-    /// The lowercase name used in reports and JSON.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Verdict::Proved => "proved",
-            Verdict::ProvedInRange => "proved_in_range",
-            Verdict::Verified => "verified",
-            Verdict::Fails => "fails",
-            Verdict::Error => "error",
-        }
-    }
-}
-
-/// The outcome of checking one claim.
-#[derive(Clone, Debug, Serialize)]
-pub struct ClaimOutcome {
-    /// The claim's id, unique within its file.
-    pub id: String,
-    /// The text file and printed label, e.g. `001_d6775559ddbdd5b2.txt 例3`.
-    pub source: String,
-    /// The statement as printed.
-    pub statement: String,
-    /// The verdict, decided in exact arithmetic.
-    pub verdict: Verdict,
-    /// The finite ranges a `proved_in_range` verdict covers, e.g. `n = 0..=10, j = 0..=n`
-    /// (absent for every other verdict).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub range: Option<String>,
-    /// What was checked: the proof's certificate or the exact counterexample.
-    pub certificate: String,
-    /// The verdict the claim file expects.
-    pub expect: Verdict,
-    /// The claim file it came from.
-    pub file: String,
-    /// The text file the claim is about (from the file's `[text]` table, or the file name).
-    pub text: String,
-    /// The id of the misprinted claim this one corrects.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub corrects: Option<String>,
-    /// The claim file's note, if any.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub note: Option<String>,
-    /// For a `proved_in_range` verdict: why the claim stays bound to its ranges, or that it is
-    /// also provable for every n and which ranges to write ([`scope::range_bound`]).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub range_bound: Option<String>,
-}
-
-impl ClaimOutcome {
-    /// The verdict with its scope, as the text report shows it: `proved`,
-    /// `proved for n = 0..=10`, `verified`, `fails`.
-    pub fn verdict_text(&self) -> String {
-        report::verdict_text(self.verdict, self.range.as_deref())
-    }
-}
-
-/// The outcomes of a whole run.
-#[derive(Clone, Debug, Default, Serialize)]
-pub struct Report {
-    /// One outcome per claim, in file order.
-    pub outcomes: Vec<ClaimOutcome>,
-}
-
-impl Report {
-    /// How many claims got a verdict other than the expected one.
-    pub fn mismatches(&self) -> usize {
-        self.outcomes.iter().filter(|o| o.verdict != o.expect).count()
-    }
-
-    /// Per text: counts of proved / verified / fails and of verdicts as expected.
-    pub fn summaries(&self) -> Vec<TextSummary> {
-        report::summaries(&self.outcomes)
-    }
-
-    /// The human-readable report: per claim its source, statement, verdict and certificate,
-    /// then a summary per text.
-    pub fn to_text(&self) -> String {
-        report::to_text(self)
-    }
-
-    /// The JSON report `{"claims": [...], "summary": {...}}` with a summary per text.
-    pub fn to_json(&self) -> serde_json::Value {
-        report::to_json(self)
-    }
-}
+pub use checked::Verdict;
+pub use report::{ClaimOutcome, ExplainStyle, Report, TextSummary};
 
 /// Loads every claim file under `paths` (files, or directories whose `.toml` files are read in
 /// name order) and checks every claim; `progress(done, total, id)` is called after each claim,

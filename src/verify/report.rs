@@ -1,16 +1,87 @@
 //! The reports of a `prove` run: readable text, JSON, and the step-by-step `explain`.
 
-use super::checked::{Checked, Method};
+use super::argue::{
+    argument, cases, certificate_case, misprint_lines, sample_evaluations, verdict_text, worked_case, worked_scheme,
+    worked_sum,
+};
+use super::checked::Checked;
+use super::checked::Verdict;
 use super::claims::{Claim, ClaimFile, Identity, Kind, Sides};
-use super::objects::CurveObj;
-use super::{ClaimOutcome, Report, Verdict};
-use crate::bernstein::bernstein_all;
-use crate::curve::{BezierCurve, DeCasteljauScheme};
-use crate::point::Point;
-use num_rational::BigRational;
-use num_traits::Zero;
 use serde::Serialize;
 use std::fmt::Write as _;
+
+/// The outcome of checking one claim.
+#[derive(Clone, Debug, Serialize)]
+pub struct ClaimOutcome {
+    /// The claim's id, unique within its file.
+    pub id: String,
+    /// The text file and printed label, e.g. `001_d6775559ddbdd5b2.txt 例3`.
+    pub source: String,
+    /// The statement as printed.
+    pub statement: String,
+    /// The verdict, decided in exact arithmetic.
+    pub verdict: Verdict,
+    /// The finite ranges a `proved_in_range` verdict covers, e.g. `n = 0..=10, j = 0..=n`
+    /// (absent for every other verdict).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub range: Option<String>,
+    /// What was checked: the proof's certificate or the exact counterexample.
+    pub certificate: String,
+    /// The verdict the claim file expects.
+    pub expect: Verdict,
+    /// The claim file it came from.
+    pub file: String,
+    /// The text file the claim is about (from the file's `[text]` table, or the file name).
+    pub text: String,
+    /// The id of the misprinted claim this one corrects.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub corrects: Option<String>,
+    /// The claim file's note, if any.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub note: Option<String>,
+    /// For a `proved_in_range` verdict: why the claim stays bound to its ranges, or that it is
+    /// also provable for every n and which ranges to write ([`super::scope::range_bound`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub range_bound: Option<String>,
+}
+
+impl ClaimOutcome {
+    /// The verdict with its scope, as the text report shows it: `proved`,
+    /// `proved for n = 0..=10`, `verified`, `fails`.
+    pub fn verdict_text(&self) -> String {
+        verdict_text(self.verdict, self.range.as_deref())
+    }
+}
+
+/// The outcomes of a whole run.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Report {
+    /// One outcome per claim, in file order.
+    pub outcomes: Vec<ClaimOutcome>,
+}
+
+impl Report {
+    /// How many claims got a verdict other than the expected one.
+    pub fn mismatches(&self) -> usize {
+        self.outcomes.iter().filter(|o| o.verdict != o.expect).count()
+    }
+
+    /// Per text: counts of proved / verified / fails and of verdicts as expected.
+    pub fn summaries(&self) -> Vec<TextSummary> {
+        summaries(&self.outcomes)
+    }
+
+    /// The human-readable report: per claim its source, statement, verdict and certificate,
+    /// then a summary per text.
+    pub fn to_text(&self) -> String {
+        to_text(self)
+    }
+
+    /// The JSON report `{"claims": [...], "summary": {...}}` with a summary per text.
+    pub fn to_json(&self) -> serde_json::Value {
+        to_json(self)
+    }
+}
 
 /// The counts for one text.
 #[derive(Clone, Debug, Default, Serialize, PartialEq, Eq)]
@@ -43,16 +114,6 @@ pub struct TextSummary {
 
 fn is_zero(n: &usize) -> bool {
     *n == 0
-}
-
-/// A verdict with its scope, as the text reports show it: `proved`, `proved for n = 0..=10`,
-/// `verified`, `fails`.
-pub(super) fn verdict_text(v: Verdict, range: Option<&str>) -> String {
-    match (v, range) {
-        (Verdict::ProvedInRange, Some(r)) => format!("proved for {r}"),
-        (Verdict::ProvedInRange, None) => "proved in range".into(),
-        _ => v.as_str().into(),
-    }
 }
 
 pub(super) fn summaries(outcomes: &[ClaimOutcome]) -> Vec<TextSummary> {
@@ -252,196 +313,6 @@ pub enum ExplainStyle {
     Latex,
 }
 
-/// One case of the log: its header line and the lines under it.
-pub(super) struct Case<'a> {
-    pub(super) header: &'a str,
-    pub(super) lines: Vec<&'a str>,
-}
-
-pub(super) fn cases(steps: &[String]) -> Vec<Case<'_>> {
-    let mut out: Vec<Case<'_>> = Vec::new();
-    for line in steps {
-        match out.last_mut() {
-            Some(case) if line.starts_with(' ') => case.lines.push(line.trim()),
-            // a label such as "the zero polygon:" heads the equality checked under it
-            Some(case) if case.lines.is_empty() && case.header.ends_with(':') => case.lines.push(line.trim()),
-            _ => out.push(Case {
-                header: line.trim(),
-                lines: Vec::new(),
-            }),
-        }
-    }
-    out
-}
-
-/// The case worked out by default: the last one of degree 3 (the chain's final equality, for a
-/// chain), else the first of those showing the most (the zero polygon of a symbolic proof only
-/// says that every term vanishes), else the first.
-pub(super) fn worked_case<'a>(all: &'a [Case<'a>]) -> Option<&'a Case<'a>> {
-    all.iter()
-        .rev()
-        .find(|c| c.header.starts_with('[') && c.header.split(']').next().is_some_and(|h| h.ends_with("n = 3")))
-        .or_else(|| {
-            // the first case with the most to show (a piece where every term vanishes shows little)
-            let shown = |c: &Case<'_>| c.lines.iter().filter(|l| !l.ends_with("every term vanishes")).count();
-            all.iter().rev().filter(|c| shown(c) > 0).max_by_key(|c| shown(c))
-        })
-        .or_else(|| all.first())
-}
-
-/// The worked case of a claim whose check leaves no log (a classification, a fit, a vector
-/// identity, a theorem checked by its own code): the certificate's computation, one step a line.
-pub(super) fn certificate_case(checked: &Checked) -> (&'static str, Vec<&str>) {
-    let header = if checked.verdict == Verdict::Fails {
-        "the counterexample, computed exactly:"
-    } else {
-        "the claim's own data, computed exactly:"
-    };
-    // a counterexample reads "at <point>: <what happens there>": one line each
-    let lines = checked
-        .certificate
-        .split("; ")
-        .flat_map(|part| match part.strip_prefix("at ").and_then(|p| p.split_once(": ")) {
-            Some((point, rest)) if checked.verdict == Verdict::Fails => vec![&part[..point.len() + 3], rest],
-            _ => vec![part],
-        })
-        .map(str::trim)
-        .filter(|l| !l.is_empty())
-        .collect();
-    (header, lines)
-}
-
-/// Says that an expected failure is a misprint of the text and names its correction (or, for a
-/// correction, the misprint it corrects).
-pub(super) fn misprint_lines(f: &ClaimFile, c: &Claim) -> Vec<String> {
-    let mut out = Vec::new();
-    if c.expected() == Verdict::Fails {
-        out.push("expected:  fails, as printed: a misprint of the text (kept, never corrected in place)".into());
-        if let Some(note) = &c.note {
-            out.push(format!("note:      {note}"));
-        }
-        let fixes: Vec<&str> = f
-            .claim
-            .iter()
-            .filter(|d| d.corrects.as_deref() == Some(c.id.as_str()))
-            .map(|d| d.id.as_str())
-            .collect();
-        if fixes.is_empty() {
-            out.push("correction: none in this claim file".into());
-        }
-        for id in fixes {
-            out.push(format!("correction: {id} (see --explain {id})"));
-        }
-    }
-    if let Some(target) = &c.corrects {
-        out.push(format!(
-            "corrects:  {target}, the misprint as printed (see --explain {target})"
-        ));
-    }
-    out
-}
-
-/// Up to `k` evaluations of a case, preferring those whose value is a proper fraction.
-pub(super) fn sample_evaluations<'a>(case: &Case<'a>, k: usize) -> Vec<&'a str> {
-    let evals: Vec<&str> = case
-        .lines
-        .iter()
-        .copied()
-        .filter(|l| l.contains("both sides"))
-        .collect();
-    let mut pick: Vec<&str> = evals
-        .iter()
-        .copied()
-        .filter(|l| l.rsplit('=').next().is_some_and(|v| v.contains('/')))
-        .take(k)
-        .collect();
-    if pick.is_empty() {
-        pick = evals.into_iter().take(k).collect();
-    }
-    pick
-}
-
-/// The argument: what was checked and why it suffices.
-pub(super) fn argument(c: &Claim, checked: &Checked) -> Vec<String> {
-    let mut a = Vec::new();
-    if matches!(c.kind, Kind::Inequality(_)) {
-        a.extend(super::inequality::ARGUMENT.iter().map(|l| l.to_string()));
-        if checked.method == Method::ForEvery {
-            a.extend(super::inequality::ARGUMENT_FOR_EVERY.iter().map(|l| l.to_string()));
-        }
-    } else if checked.method == Method::ForEvery && checked.range.is_none() {
-        a.extend(super::symbolic::ARGUMENT.iter().map(|l| l.to_string()));
-    } else if let Method::Sampling { basis } = checked.method {
-        let vars = c
-            .decls
-            .vars
-            .as_ref()
-            .map(|v| v.join(", "))
-            .unwrap_or_else(|| "the parameters".into());
-        a.push(format!(
-            "Each equality, cleared of denominators, is a polynomial identity in {vars}; its degree d in each"
-        ));
-        a.push(
-            "variable is bounded from the expressions. A nonzero polynomial of degree ≤ d in one variable has at"
-                .into(),
-        );
-        a.push(
-            "most d roots, so the identity holds for all values iff it holds at d+1 distinct points per variable"
-                .into(),
-        );
-        if basis {
-            a.push(
-                "(a grid, by induction on the variables). Both sides are affine in the control points, so checking"
-                    .into(),
-            );
-            a.push("the zero polygon and each unit polygon covers every control polygon. All checks are exact.".into());
-        } else {
-            a.push("(a grid, by induction on the variables). All checks are in exact rational arithmetic.".into());
-        }
-    } else {
-        a.extend(kind_argument(&c.kind).iter().map(|l| l.to_string()));
-    }
-    a
-}
-
-/// Why the check of a claim without a points-per-degree log suffices, by kind.
-fn kind_argument(kind: &Kind) -> &'static [&'static str] {
-    match kind {
-        Kind::ConicType(_) => &[
-            "The conic A x² + B xy + C y² + D x + E y + F = 0 is degenerate when its symmetric 3×3 matrix is",
-            "singular; otherwise it is an ellipse (with real points when (A + C)·det < 0), a parabola or a",
-            "hyperbola as B² − 4AC < 0, = 0 or > 0. Every quantity is computed exactly from the coefficients,",
-            "so each sign is decided, not estimated.",
-        ],
-        Kind::WeightType(_) => &[
-            "A rational quadratic with positive weights w0, w1, w2 (as in the texts) is an arc of an ellipse, a parabola or a",
-            "hyperbola as w1²/(w0 w2) < 1, = 1 or > 1 (the ratio is unchanged by reparametrisation); it is",
-            "computed exactly from the weights.",
-        ],
-        Kind::Implies(_) => &[
-            "The equation, moved to one side, is compared with the factor times the premise by exact symbolic",
-            "expansion in every symbol and vector coordinate: if the two are identical, the premise being zero",
-            "forces the equation. A failure is an exact point where the premise holds and the equation does not.",
-        ],
-        Kind::Fit(_) => &[
-            "δ²(k, l) is a quadratic in the tangent lengths k and l. The normal equations (11) are solved by exact",
-            "elimination and compared with the closed form (13); a zero gradient there with a non-singular Gram",
-            "matrix makes that point the unique minimum, so the printed k, l and δ² are the method's values.",
-        ],
-        Kind::Theorem(_) => &[
-            "A general theorem, checked for each degree n of its range by the library's own code. For each n",
-            "the check is a proof: both sides are polynomials of bounded degree in the parameters and linear",
-            "in the data, so the finitely many cases of the certificate (basis polygons, matrix units,",
-            "parameters) cover every input of that degree. Degrees outside the range are not covered.",
-        ],
-        Kind::Convergence(_) => &[
-            "A statement about a limit cannot be decided by finitely many exact evaluations: the certificate is",
-            "bounded evidence, the exact distances for the elevations checked and the explicit bound they meet.",
-        ],
-        _ => &["Decided in exact arithmetic; the certificate above says what was established and how."],
-    }
-}
-
 /// The claim and its verdict; the range-bound note shares the verdict's line (the short
 /// explanation fits one screen).
 fn header(s: &mut String, f: &ClaimFile, c: &Claim, checked: &Checked, range_bound: Option<&str>) {
@@ -485,101 +356,6 @@ fn header(s: &mut String, f: &ClaimFile, c: &Claim, checked: &Checked, range_bou
     for line in misprint_lines(f, c) {
         let _ = writeln!(s, "{line}");
     }
-}
-
-/// The value of `name` in an evaluation line such as `n = 3, t0 = 1/2, t = 1/3, b[1] = 1, …`.
-fn value_in(line: &str, name: &str) -> Option<BigRational> {
-    let head = line.split(':').next()?;
-    head.split(", ").find_map(|part| {
-        let (k, v) = part.split_once(" = ")?;
-        if k.trim() == name {
-            v.trim().parse().ok()
-        } else {
-            None
-        }
-    })
-}
-
-/// The members of an identity claim's chain (none for another kind).
-fn identity_members(c: &Claim) -> Vec<String> {
-    match &c.kind {
-        Kind::Identity(i) => i.sides.members(),
-        _ => Vec::new(),
-    }
-}
-
-/// The scheme (9) that goes with the worked case: for a claim about a symbolic polygon whose
-/// expressions use its scheme (`b(i, r, t0)`), the scheme of the case's unit polygon at the case's
-/// first parameter; else the first polynomial curve of the claim at its first nonzero checked
-/// parameter.
-pub(super) fn worked_scheme(
-    c: &Claim,
-    checked: &Checked,
-    eval: Option<&str>,
-) -> Option<DeCasteljauScheme<BigRational>> {
-    if let (Some(poly), Some(line), Some(var)) = (&c.decls.polygon, eval, c.decls.vars.as_ref().and_then(|v| v.first()))
-    {
-        let uses_scheme = identity_members(c)
-            .iter()
-            .any(|e| e.contains(&format!("{}(0, ", poly.name)));
-        let n: usize = value_in(line, &poly.degree).and_then(|v| v.to_integer().try_into().ok())?;
-        let t = value_in(line, var)?;
-        let unit = line.split(", ").find_map(|p| {
-            let rest = p.strip_prefix(&format!("{}[", poly.name))?;
-            let (k, v) = rest.split_once("] = ")?;
-            (v.trim() == "1").then(|| k.parse::<usize>().ok()).flatten()
-        })?;
-        if uses_scheme && n <= 6 {
-            let points = (0..=n)
-                .map(|j| Point::from_ints(&[i64::from(j == unit)]))
-                .collect::<crate::error::Result<Vec<_>>>()
-                .ok()?;
-            return Some(BezierCurve::new(points).ok()?.scheme(&t));
-        }
-        return None;
-    }
-    let t = checked
-        .params
-        .iter()
-        .find(|t| !t.is_zero())
-        .cloned()
-        .unwrap_or_else(|| BigRational::new(1.into(), 2.into()));
-    c.decls
-        .curves
-        .as_ref()?
-        .values()
-        .find_map(|spec| match CurveObj::<BigRational>::from_spec(spec) {
-            Ok(CurveObj::Polynomial(curve)) => Some(curve.scheme(&t)),
-            _ => None,
-        })
-}
-
-/// For a claim whose expressions contain `Σ_r b_0^r(t0) B_r^n(t)` (`b(0, r, t0)*B(r, n, t)`):
-/// that sum written out at the worked evaluation, from the scheme's upper edge, and its value.
-pub(super) fn worked_sum(c: &Claim, scheme: &DeCasteljauScheme<BigRational>, eval: &str) -> Option<String> {
-    let poly = c.decls.polygon.as_ref()?;
-    let vars = c.decls.vars.as_ref()?;
-    let (v0, v1) = (vars.first()?, vars.get(1)?);
-    let pattern = format!("{}(0, r, {v0})*B(r, {}, {v1})", poly.name, poly.degree);
-    if !identity_members(c).iter().any(|e| e.contains(&pattern)) {
-        return None;
-    }
-    let t = value_in(eval, v1)?;
-    let n = scheme.degree();
-    let bern = bernstein_all(n, &t);
-    let mut terms = Vec::new();
-    let mut total = BigRational::zero();
-    for (r, b) in bern.iter().enumerate() {
-        let edge = scheme.get(r, 0)?.coords().first()?.clone();
-        terms.push(format!("{edge}·{b}"));
-        total += &edge * b;
-    }
-    Some(format!(
-        "Σ_r {}_0^r({v0}) B_r^{n}({v1}) at {v0} = {}, {v1} = {t}: {} = {total} (the first evaluation)",
-        poly.name,
-        scheme.t,
-        terms.join(" + ")
-    ))
 }
 
 /// The proof of one claim: the argument, one worked case, and (`Verbose`) the whole log.

@@ -1,13 +1,13 @@
 //! The identity prover: degree bounds derived from the expressions, exact checks at enough
 //! points, on a basis of control polygons; the work of a claim estimated before it runs.
 
+use super::checked::Verdict;
 use super::checked::{Checked, Method};
 use super::context::Ctx;
 use super::eval::{Deg, Evaluator, Value};
 use super::expr::{self, check_index, Expr};
 use super::objects::{DegEnv, Exact, NumEnv};
 use super::parse::parse;
-use super::Verdict;
 use crate::error::{Error, Result};
 use crate::scalar::RefOps;
 use num_rational::BigRational;

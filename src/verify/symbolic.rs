@@ -29,6 +29,7 @@
 //! of each open range (the ordinary engine): a counterexample there is a `fails` verdict with
 //! exact values; a symbolic check that does not go through is an error, never a verdict.
 
+use super::checked::Verdict;
 use super::checked::{Checked, Method};
 use super::claims::{Decls, Identity, IntRange};
 use super::context::Ctx;
@@ -37,7 +38,6 @@ use super::expr::{self, Expr, Op};
 use super::hyper::{lin_mul, lin_neg, lin_subst, power_of, prove_zero, Aff, Domain, Lin, Symbols, Term, ZeroOutcome};
 use super::identity::check_identity;
 use super::poly::RatFunc;
-use super::Verdict;
 use super::{parse, rewrite};
 use crate::error::{Error, Result};
 use num_traits::Zero;

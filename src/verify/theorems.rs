@@ -7,11 +7,11 @@
 //! `elev`, `left`, `deriv`, … (see [`super::methods::PolygonMethod`]). The others (affine
 //! invariance, the convex hull property, Theorem 1.2) have their own exact checks here.
 
+use super::checked::Verdict;
 use super::checked::{Checked, Method};
 use super::claims::{Convergence, Decls, IntRange, PolygonSpec, Theorem};
 use super::context::Ctx;
 use super::sampling::{chain_work, check_chain, MAX_WORK};
-use super::Verdict;
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::exact::SmallRational;
