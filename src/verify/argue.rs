@@ -212,7 +212,7 @@ fn kind_argument(kind: &Kind) -> &'static [&'static str] {
 }
 
 /// The value of `name` in an evaluation line such as `n = 3, t0 = 1/2, t = 1/3, b[1] = 1, …`.
-fn value_in(line: &str, name: &str) -> Option<BigRational> {
+pub(crate) fn value_in(line: &str, name: &str) -> Option<BigRational> {
     let head = line.split(':').next()?;
     head.split(", ").find_map(|part| {
         let (k, v) = part.split_once(" = ")?;

@@ -424,7 +424,9 @@ pub(super) fn explain_text(
 
 #[cfg(test)]
 mod tests {
+    use super::super::argue::value_in;
     use super::*;
+    use num_rational::BigRational;
 
     fn outcome(id: &str, verdict: Verdict, range: Option<&str>, expect: Verdict) -> ClaimOutcome {
         ClaimOutcome {
