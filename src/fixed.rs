@@ -109,7 +109,7 @@ where
     }
 
     /// `b(t)`, as [`Bezier::eval`] computes it: de Casteljau's algorithm (1), a float cubic
-    /// by its nested Bernstein sum ([`crate::kernel::eval_cubic`]).
+    /// by its nested Bernstein sum (`((t b₃ + 3s b₂) t + 3s² b₁) t + s³ b₀` with `s = 1 − t`).
     #[inline]
     pub fn eval(&self, t: &T) -> P {
         eval_points(&self.points, t)

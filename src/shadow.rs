@@ -7,7 +7,7 @@
 //! result and its error in ulps: a differential test of the whole library in one line.
 //!
 //! ```
-//! use casteljau::{shadow::Shadow, BezierCurve, Scalar};
+//! use casteljau::{Shadow, BezierCurve, Scalar};
 //! let c: BezierCurve<Shadow> = BezierCurve::from_coords(vec![vec![Shadow::from_f64(0.1).unwrap()],
 //!     vec![Shadow::from_f64(0.2).unwrap()], vec![Shadow::from_f64(0.7).unwrap()]]).unwrap();
 //! let x = c.eval(&Shadow::from_f64(0.3).unwrap()).coords()[0].clone();

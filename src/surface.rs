@@ -40,7 +40,7 @@ use std::fmt;
 /// dimension.
 ///
 /// ```
-/// use casteljau::{surface::BezierSurface, BigRational, Point, Scalar};
+/// use casteljau::{BezierSurface, BigRational, Point, Scalar};
 /// let q = |p, d| BigRational::from_ratio(p, d).unwrap();
 /// // text 003: bilinear interpolation of four points gives x(u, v) = (u, v, uv), z = xy
 /// let s: BezierSurface<BigRational> = BezierSurface::bilinear(
@@ -114,7 +114,7 @@ where
     /// coeffs[0].len() - 1)`. Empty intervals and ragged coefficient arrays are errors.
     ///
     /// ```
-    /// use casteljau::{surface::BezierSurface, BigRational, Point, Scalar};
+    /// use casteljau::{BezierSurface, BigRational, Point, Scalar};
     /// let q = BigRational::from_i64;
     /// let c = |v: &[i64]| Point::from_ints(v).unwrap();
     /// // (u, v, u² - v²) on [-1, 1]²: text 003, Example 2
@@ -463,7 +463,7 @@ where
     /// point, so inexact scalars are an error. The surface must be in 3D.
     ///
     /// ```
-    /// use casteljau::{surface::{enneper_net, BezierSurface}, BigRational, Scalar};
+    /// use casteljau::{enneper_net, BezierSurface, BigRational, Scalar};
     /// let e = enneper_net(&BigRational::from_i64(1)).unwrap();
     /// let found = e.enneper_matches().unwrap();
     /// assert_eq!(found.len(), 1);
@@ -519,7 +519,7 @@ where
 /// `u = r(2s − 1)`, `v = r(2t − 1)`). `r = 0` is an error.
 ///
 /// ```
-/// use casteljau::{surface::enneper_net, AffineMap, BigRational, Scalar};
+/// use casteljau::{enneper_net, AffineMap, BigRational, Scalar};
 /// // text 003, Example 5 is 3 × (Enneper on [−2, 2]²)
 /// let e = enneper_net(&BigRational::from_i64(2)).unwrap();
 /// let e = e.transform(&AffineMap::scaling(3, &BigRational::from_i64(3))).unwrap();

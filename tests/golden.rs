@@ -19,7 +19,11 @@ fn assert_same(what: &str, got: &str, want: &str) {
         return;
     }
     let (g, w): (Vec<&str>, Vec<&str>) = (got.lines().collect(), want.lines().collect());
-    let at = g.iter().zip(&w).position(|(a, b)| a != b).unwrap_or(g.len().min(w.len()));
+    let at = g
+        .iter()
+        .zip(&w)
+        .position(|(a, b)| a != b)
+        .unwrap_or(g.len().min(w.len()));
     panic!(
         "{what} changed at line {}:\n  now:    {}\n  before: {}",
         at + 1,
