@@ -52,8 +52,8 @@ fn generic_ops(c: &mut Criterion) {
                     group.bench_with_input(BenchmarkId::new("rational", n), &exact, |b, c| {
                         b.iter(|| c.eval(black_box(&t_exact)))
                     });
-                    group.bench_with_input(BenchmarkId::new("rational_fraction_free", n), &exact, |b, c| {
-                        b.iter(|| c.eval_fraction_free(black_box(&t_exact)))
+                    group.bench_with_input(BenchmarkId::new("rational_reference", n), &exact, |b, c| {
+                        b.iter(|| c.eval_reference(black_box(&t_exact)))
                     });
                 }
                 "split" => {
@@ -128,9 +128,9 @@ fn elevate_many(c: &mut Criterion) {
     group.finish();
 }
 
-/// Exact evaluation, naive (a reduced fraction at every step) against fraction-free, at
-/// degrees where the difference shows.
-fn exact_eval_naive_vs_fraction_free(c: &mut Criterion) {
+/// Exact evaluation, naive (a reduced fraction at every step) against the nested integer
+/// sum that `eval` runs, at degrees where the difference shows.
+fn exact_eval_naive_vs_nested(c: &mut Criterion) {
     let t = BigRational::from_ratio(2, 7).unwrap();
     let mut group = c.benchmark_group("curve_exact_eval");
     group
@@ -140,10 +140,10 @@ fn exact_eval_naive_vs_fraction_free(c: &mut Criterion) {
     for n in [10usize, 50, 200] {
         let (exact, _) = curves(n);
         group.bench_with_input(BenchmarkId::new("naive", n), &exact, |b, c| {
-            b.iter(|| c.eval(black_box(&t)))
+            b.iter(|| c.eval_reference(black_box(&t)))
         });
-        group.bench_with_input(BenchmarkId::new("fraction_free", n), &exact, |b, c| {
-            b.iter(|| c.eval_fraction_free(black_box(&t)))
+        group.bench_with_input(BenchmarkId::new("nested", n), &exact, |b, c| {
+            b.iter(|| c.eval(black_box(&t)))
         });
     }
     group.finish();
@@ -154,6 +154,6 @@ criterion_group!(
     versus_kurbo,
     generic_ops,
     elevate_many,
-    exact_eval_naive_vs_fraction_free
+    exact_eval_naive_vs_nested
 );
 criterion_main!(benches);

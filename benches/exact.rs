@@ -1,7 +1,6 @@
 //! Exact arithmetic at integer speed: evaluation of a planar curve with small integer control
 //! points at t = 1/3, naive (generic de Casteljau on `BigRational`, a gcd per step) against
-//! the fraction-free de Casteljau of `eval_fraction_free`, the nested integer sum of
-//! `eval_nested`, and generic de Casteljau on `SmallRational`; and the proof engine's hot
+//! the nested integer sum of `eval_nested`, and generic de Casteljau on `SmallRational`; and the proof engine's hot
 //! spot, Bernstein values at sample points, rebuilt per use against cached tables.
 //!
 //! The group `exact_big` is the case no shortcut flatters: planar curves of degree 20, 200
@@ -38,12 +37,9 @@ fn exact_eval(c: &mut Criterion) {
         // The naive path at degree 200 takes about half a second per call: skip it there.
         if n <= 50 {
             group.bench_with_input(BenchmarkId::new("naive", n), &exact, |b, c| {
-                b.iter(|| c.eval(black_box(&t)))
+                b.iter(|| c.eval_reference(black_box(&t)))
             });
         }
-        group.bench_with_input(BenchmarkId::new("fraction_free", n), &exact, |b, c| {
-            b.iter(|| c.eval_fraction_free(black_box(&t)))
-        });
         group.bench_with_input(BenchmarkId::new("nested", n), &exact, |b, c| {
             b.iter(|| c.eval_nested(black_box(&t)))
         });
@@ -70,7 +66,7 @@ fn prove_hot(c: &mut Criterion) {
             b.iter(|| {
                 for t in &points {
                     for j in 0..=n {
-                        black_box(casteljau::bernstein::bernstein(j, n, t).expect("exact"));
+                        black_box(casteljau::bernstein(j, n, t).expect("exact"));
                     }
                 }
             })

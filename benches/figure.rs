@@ -48,7 +48,7 @@ fn degree_20(c: &mut Criterion) {
         });
     }
     let curve: BezierCurve<BigRational> =
-        BezierCurve::new(casteljau::input::parse_points(&points(20, 2, 0)).unwrap()).unwrap();
+        BezierCurve::new(casteljau::parse_points(&points(20, 2, 0)).unwrap()).unwrap();
     let params: Vec<BigRational> = (0..=200).map(|k| BigRational::new(k.into(), 200.into())).collect();
     group.bench_function(BenchmarkId::new("peer", "exact_samples_200"), |b| {
         b.iter(|| black_box(params.iter().map(|t| curve.eval(t)).collect::<Vec<_>>()))

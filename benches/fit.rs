@@ -1,6 +1,6 @@
 //! Benchmarks of the fits: text 004's cubic fit and the least-squares fit, in f64 and exact.
 
-use casteljau::fit::{fit_cubic, fit_cubic_closed_form, fit_least_squares, CubicFitData, FitConstraints};
+use casteljau::{fit_cubic, fit_cubic_closed_form, fit_least_squares, CubicFitData, FitConstraints};
 use casteljau::{BigRational, Point, Scalar};
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use std::time::Duration;

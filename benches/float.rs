@@ -5,7 +5,7 @@
 //! `cargo bench --bench float`.
 
 use casteljau::float::{compensated_de_casteljau, de_casteljau, de_casteljau_running};
-use casteljau::interval::Interval;
+use casteljau::Interval;
 use casteljau::{BezierCurve, Scalar};
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use kurbo::{CubicBez, ParamCurve};

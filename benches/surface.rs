@@ -1,7 +1,7 @@
 //! Surface evaluation: tensor de Casteljau (u first, v first) and the Bernstein sum, on a
 //! bicubic and a 6×6 net, in `f64` and exact rationals.
 
-use casteljau::{surface::BezierSurface, BigRational, Point, Scalar};
+use casteljau::{BezierSurface, BigRational, Point, Scalar};
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::time::Duration;
 

@@ -11,7 +11,7 @@ use casteljau::float::{
     a_priori_index, compensated_de_casteljau, de_casteljau, de_casteljau_running, error_at_most, eval_dyadic,
     gamma_exact, ulp_error, UNIT_ROUNDOFF,
 };
-use casteljau::interval::Interval;
+use casteljau::Interval;
 use casteljau::{BezierCurve, BigRational, Scalar};
 use kurbo::{CubicBez, ParamCurve};
 use num_traits::Signed;

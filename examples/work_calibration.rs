@@ -1,10 +1,10 @@
 //! Calibrates the oracle's work estimate: for each JSON request line on stdin, prints the
 //! estimate (`Op::work`), the real time of `Op::run`, and their ratio in units per second.
-//! The estimate is meant to bound real time: `MAX_WORK` units should take a few seconds.
+//! The estimate is meant to bound real time: `MAX_REQUEST_WORK` units should take a few seconds.
 //!
 //! `cargo run --release --example work_calibration < requests.jsonl`
 
-use casteljau::oracle::{Op, MAX_WORK};
+use casteljau::oracle::{Op, MAX_REQUEST_WORK};
 use std::io::BufRead;
 use std::time::Instant;
 
@@ -24,9 +24,9 @@ fn main() {
         let ok = op.run().is_ok();
         let secs = start.elapsed().as_secs_f64();
         println!(
-            "{} work {work:.3e} ({:.3} of MAX_WORK), {secs:.3} s, {:.2e} units/s, ok {ok}",
+            "{} work {work:.3e} ({:.3} of MAX_REQUEST_WORK), {secs:.3} s, {:.2e} units/s, ok {ok}",
             request["op"],
-            work / MAX_WORK,
+            work / MAX_REQUEST_WORK,
             work / secs
         );
     }

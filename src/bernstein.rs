@@ -13,8 +13,8 @@ use num_traits::{One, Zero};
 /// The exact binomial coefficient `C(n, k)`, zero when `k > n`.
 ///
 /// ```
-/// assert_eq!(casteljau::bernstein::binomial(5, 2), 10.into());
-/// assert_eq!(casteljau::bernstein::binomial(3, 4), 0.into());
+/// assert_eq!(casteljau::binomial(5, 2), 10.into());
+/// assert_eq!(casteljau::binomial(3, 4), 0.into());
 /// ```
 pub fn binomial(n: usize, k: usize) -> BigInt {
     if k > n {
@@ -62,7 +62,7 @@ where
 /// The Bernstein polynomial `B_i^n(t)`; zero for `i > n`.
 ///
 /// ```
-/// use casteljau::{bernstein::bernstein, BigRational, Scalar};
+/// use casteljau::{bernstein, BigRational, Scalar};
 /// let half = BigRational::from_ratio(1, 2).unwrap();
 /// assert_eq!(bernstein(1, 2, &half).unwrap(), half);
 /// ```
@@ -116,7 +116,7 @@ where
 /// `b_j = Σ_{i≤j} C(j,i)/C(n,i) a_i`.
 ///
 /// ```
-/// use casteljau::{bernstein::power_to_bernstein, BigRational, Scalar};
+/// use casteljau::{power_to_bernstein, BigRational, Scalar};
 /// // 4t - 4t² = 4/3 B_1^3 + 4/3 B_2^3 (text 000, §1.3, read as a cubic)
 /// let a: Vec<BigRational> = [0, 4, -4, 0].iter().map(|&c| BigRational::from_i64(c)).collect();
 /// let b = power_to_bernstein(&a).unwrap();
@@ -178,7 +178,7 @@ where
 /// `[a, b]` carried to `[0, 1]`. Exact for exact scalars (Taylor shift, then scaling).
 ///
 /// ```
-/// use casteljau::{bernstein::reparametrize, BigRational, Scalar};
+/// use casteljau::{reparametrize, BigRational, Scalar};
 /// let q = |n| BigRational::from_i64(n);
 /// // -u² + 1 with u = 2t - 1 is 4t - 4t²
 /// let c = reparametrize(&[q(1), q(0), q(-1)], &q(-1), &q(1));

@@ -212,8 +212,8 @@ where
     /// `b(t)` by de Casteljau's algorithm (1). Defined for every `t`, not only `[0, 1]`.
     ///
     /// A cubic on floats is evaluated as its nested Bernstein sum instead, fewer operations
-    /// and a smaller error (see [`crate::kernel::eval_cubic`]); [`Self::split_at`] joins its
-    /// halves at that same point.
+    /// and a smaller error (`((t b₃ + 3s b₂) t + 3s² b₁) t + s³ b₀` with `s = 1 − t`);
+    /// [`Self::split_at`] joins its halves at that same point.
     ///
     /// Exact rational points are evaluated by the nested Bernstein sum over integers
     /// ([`BezierCurve::eval_nested`]): the same value, with one reduction at the end.
@@ -677,8 +677,8 @@ where
 
 impl BezierCurve<f64> {
     /// `b(t)` as a fixed-size array, by exactly the steps of [`BezierCurve::eval`] (so the
-    /// result is bit-for-bit the same), on the stack for
-    /// degrees below [`crate::kernel::STACK_POINTS`]. A dimension other than `D` is an error.
+    /// result is bit-for-bit the same), on the stack for curves of at most 24 points (the
+    /// kernel's stack buffer). A dimension other than `D` is an error.
     ///
     /// ```
     /// use casteljau::BezierCurve;

@@ -153,7 +153,7 @@ where
     /// The data of the polynomial curve `x(t) = Σ_k coeffs[k] t^k` (the power form), exactly.
     ///
     /// ```
-    /// use casteljau::{fit::CubicFitData, BigRational, Point};
+    /// use casteljau::{CubicFitData, BigRational, Point};
     /// // x(t) = (t, t², t³)
     /// let c: Vec<Point<BigRational>> = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]
     ///     .iter().map(|p| Point::from_ints(p).unwrap()).collect();
@@ -350,7 +350,7 @@ where
 /// saying which. For `f64` "parallel" means numerically so (see [`crate::linalg`]).
 ///
 /// ```
-/// use casteljau::{fit::{fit_cubic, CubicFitData}, BezierCurve, BigRational, Scalar};
+/// use casteljau::{fit_cubic, CubicFitData, BezierCurve, BigRational, Scalar};
 /// // A cubic Bézier curve is recovered exactly: k = l = 1/3, δ = 0.
 /// let c: BezierCurve<BigRational> = BezierCurve::from_ints(&[&[0, 0, 0], &[1, 2, 0], &[3, 2, 1], &[4, 0, 5]]).unwrap();
 /// let fit = fit_cubic(&CubicFitData::from_curve(&c).unwrap()).unwrap();
@@ -837,7 +837,7 @@ where
 /// inconsistent constraints ([`Error::Domain`]), degree above [`MAX_FIT_DEGREE`].
 ///
 /// ```
-/// use casteljau::{fit::{fit_least_squares, uniform_params, FitConstraints}, BezierCurve, BigRational, Point, Scalar};
+/// use casteljau::{fit_least_squares, uniform_params, FitConstraints, BezierCurve, BigRational, Point, Scalar};
 /// // Samples of a quadratic are fitted exactly by a quadratic: zero residual.
 /// let c: BezierCurve<BigRational> = BezierCurve::from_ints(&[&[0, 0], &[1, 3], &[4, 1]]).unwrap();
 /// let t: Vec<BigRational> = uniform_params(6).unwrap();

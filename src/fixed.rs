@@ -1,22 +1,6 @@
 //! Bézier curves whose number of control points is part of the type, in the spirit of
 //! kurbo's `QuadBez` and `CubicBez`: [`BezierN<P, N>`] stores `[P; N]`, with [`Line`],
 //! [`Quad`] and [`Cubic`] for degrees 1 to 3.
-//!
-//! They run the algorithms of [`crate::Bezier`] (the same kernel, the same results: bit for
-//! bit on floats, `==` on exact scalars) without its length word, its inline/heap test or its
-//! `Result` where nothing can fail: [`BezierN::elevate`] and [`BezierN::deriv`] change the
-//! type's degree and are infallible. Generic over the point type like [`crate::Bezier`], so
-//! `Cubic<Point2<f64>>` (which is `Copy`) and `Cubic<Point2<BigRational>>` share one code.
-//!
-//! ```
-//! use casteljau::{Bezier, Cubic, Point2, Quad};
-//! let quad = Quad::new([Point2::new(0.0, 0.0), Point2::new(1.0, 2.0), Point2::new(3.0, 0.5)]);
-//! let cubic: Cubic<_> = quad.elevate();
-//! assert_eq!(cubic.eval(&0.5), quad.eval(&0.5));
-//! let any: Bezier<_> = cubic.into();
-//! assert_eq!(Cubic::try_from(&any).unwrap(), cubic);
-//! assert!(Quad::try_from(&any).is_err());
-//! ```
 
 use crate::curve::{common_dim, elevated_point, elevation_step, join_at_eval, Bezier};
 use crate::error::{Error, Result, MAX_DEGREE};
@@ -27,6 +11,23 @@ use crate::space::{PointN, VectorSpace};
 
 /// A Bézier curve with exactly `N` control points (degree `N - 1`), stored as an array;
 /// `Copy` when `P` is. `N = 0` and degrees above [`MAX_DEGREE`] do not compile.
+///
+/// In the spirit of kurbo's `QuadBez` and `CubicBez` ([`Line`], [`Quad`] and [`Cubic`] are
+/// degrees 1 to 3), it runs the algorithms of [`crate::Bezier`] (the same kernel, the same
+/// results: bit for bit on floats, `==` on exact scalars) without its length word, its
+/// inline/heap test or its `Result` where nothing can fail: [`BezierN::elevate`] and [`BezierN::deriv`] change the
+/// type's degree and are infallible. Generic over the point type like [`crate::Bezier`], so
+/// `Cubic<Point2<f64>>` (which is `Copy`) and `Cubic<Point2<BigRational>>` share one code.
+///
+/// ```
+/// use casteljau::{Bezier, Cubic, Point2, Quad};
+/// let quad = Quad::new([Point2::new(0.0, 0.0), Point2::new(1.0, 2.0), Point2::new(3.0, 0.5)]);
+/// let cubic: Cubic<_> = quad.elevate();
+/// assert_eq!(cubic.eval(&0.5), quad.eval(&0.5));
+/// let any: Bezier<_> = cubic.into();
+/// assert_eq!(Cubic::try_from(&any).unwrap(), cubic);
+/// assert!(Quad::try_from(&any).is_err());
+/// ```
 ///
 /// ```
 /// use casteljau::{Cubic, Point2};
@@ -109,7 +110,7 @@ where
     }
 
     /// `b(t)`, as [`Bezier::eval`] computes it: de Casteljau's algorithm (1), a float cubic
-    /// by its nested Bernstein sum ([`crate::kernel::eval_cubic`]).
+    /// by its nested Bernstein sum (`((t b₃ + 3s b₂) t + 3s² b₁) t + s³ b₀` with `s = 1 − t`).
     #[inline]
     pub fn eval(&self, t: &T) -> P {
         eval_points(&self.points, t)

@@ -18,7 +18,7 @@ pub const MAX_SUBSETS: u128 = 2_000_000;
 /// of `points`, `None` otherwise.
 ///
 /// ```
-/// use casteljau::{hull::convex_weights, Point, BigRational};
+/// use casteljau::{convex_weights, Point, BigRational};
 /// let tri: Vec<Point<BigRational>> = [[0, 0], [4, 0], [0, 4]].iter().map(|c| Point::from_ints(c).unwrap()).collect();
 /// assert!(convex_weights(&tri, &Point::from_ints(&[1, 1]).unwrap()).unwrap().is_some());
 /// assert!(convex_weights(&tri, &Point::from_ints(&[3, 3]).unwrap()).unwrap().is_none());

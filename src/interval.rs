@@ -13,7 +13,7 @@
 //! interval straddles zero; [`filter_stats`] counts both.
 //!
 //! ```
-//! use casteljau::{interval::Interval, BezierCurve, Scalar};
+//! use casteljau::{Interval, BezierCurve, Scalar};
 //! let c: BezierCurve<Interval> = BezierCurve::from_coords(vec![vec![Interval::from_f64(0.1).unwrap()],
 //!     vec![Interval::from_f64(0.2).unwrap()], vec![Interval::from_f64(0.7).unwrap()]]).unwrap();
 //! let p = c.eval(&Interval::from_ratio(1, 3).unwrap());
@@ -359,7 +359,7 @@ fn count(filtered: bool) {
 /// intervals, exactly only when a sign is uncertain. Always the exact answer.
 ///
 /// ```
-/// use casteljau::{interval::filtered_conic_kind, classify_conic, ConicKind, Point, RationalBezierCurve};
+/// use casteljau::{filtered_conic_kind, classify_conic, ConicKind, Point, RationalBezierCurve};
 /// let w1 = 0.1 * 3.0; // 0.30000000000000004
 /// let points = [[-1.0, 1.0], [0.0, -1.0], [1.0, 1.0]].iter().map(|c| Point::new(c.to_vec()).unwrap()).collect();
 /// let arc = RationalBezierCurve::new(points, vec![1.0, w1, w1 * w1]).unwrap();
@@ -440,7 +440,7 @@ fn orientation_of_finite(p: [f64; 2], q: [f64; 2], r: [f64; 2]) -> Ordering {
 /// of the line `p b` or on the ray from `p` through `b`.
 ///
 /// ```
-/// use casteljau::interval::filtered_hull_contains;
+/// use casteljau::filtered_hull_contains;
 /// let tri = [[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]];
 /// assert!(filtered_hull_contains(&tri, [1.0, 1.0]).unwrap());
 /// assert!(filtered_hull_contains(&tri, [2.0, 2.0]).unwrap()); // on the edge, decided exactly
@@ -480,16 +480,6 @@ pub fn filtered_hull_contains(points: &[[f64; 2]], p: [f64; 2]) -> Result<bool> 
     Ok(true)
 }
 
-/// Whether the exact point lies in the box of intervals (decided exactly).
-pub fn point_contains(boxes: &Point<Interval>, exact_point: &Point<BigRational>) -> bool {
-    boxes.coords().len() == exact_point.coords().len()
-        && boxes
-            .coords()
-            .iter()
-            .zip(exact_point.coords())
-            .all(|(b, x)| b.contains(x))
-}
-
 /// An enclosure of `Σ b_i B_i^n(t)` for float coefficients and a float `t`, by de Casteljau
 /// in the convex form `[1 − t]·a + [t]·b` (with `[1 − t]` the two floats around `1 − t`
 /// when it is no float). Unlike the lerp form `a + t·(b − a)` of the generic algorithm, its
@@ -497,7 +487,7 @@ pub fn point_contains(boxes: &Point<Interval>, exact_point: &Point<BigRational>)
 /// the largest `f64` give finite enclosures. An error for a non-finite input.
 ///
 /// ```
-/// use casteljau::interval::interval_de_casteljau;
+/// use casteljau::interval_de_casteljau;
 /// let e = interval_de_casteljau(&[1e308, -1e308], 0.3).unwrap();
 /// assert!(e.lo() <= 4e307 && 4e307 <= e.hi() && e.hi().is_finite());
 /// ```

@@ -15,70 +15,102 @@
 //! assert_eq!(right.eval(&BigRational::from_i64(0)), curve.eval(&half));
 //! ```
 //!
-//! Modules, one concept each: [`scalar`] (the number trait, exact parsing), [`space`] (the
-//! point trait the algorithms are generic over, fixed-dimension points), [`point`]
-//! (run-time-dimension points, barycentric combinations, affine maps), [`kernel`] (the one
-//! de Casteljau kernel), [`bernstein`] (binomials, the Bernstein basis, power ↔ Bernstein),
-//! [`curve`] (Bézier curves), [`fixed`] (curves of a fixed degree), [`param`] (traits over curve kinds), [`hull`] (exact
-//! convex-hull membership), [`linalg`] (exact elimination).
+//! Everything for curves, surfaces and their numbers is at the crate root, whatever file
+//! it lives in: the number trait [`Scalar`] and exact parsing ([`parse_exact`],
+//! [`parse_points`]); the point trait [`VectorSpace`] with fixed-dimension points
+//! ([`Point2`], [`PointN`]) and run-time-dimension [`Point`]s; Bézier curves of any degree
+//! ([`Bezier`], [`BezierCurve`]) and of a fixed one ([`Cubic`], [`BezierN`]), with the
+//! traits over curve kinds ([`ParamCurve`]); the Bernstein basis ([`bernstein`],
+//! [`power_to_bernstein`]); exact convex-hull membership ([`convex_weights`]); rational
+//! curves and conics ([`RationalBezierCurve`], [`classify_conic`]); surfaces
+//! ([`BezierSurface`]); cubic fitting ([`fit_cubic`], [`fit_least_squares`]); and the float
+//! judges that need no module of their own ([`Interval`], [`Shadow`]).
+//!
+//! Modules are public where their names need a namespace: [`float`] (certified floating
+//! point), [`exact`] (the integer kernels behind exact evaluation), [`linalg`] (exact
+//! elimination: `solve`, `inverse`, `determinant`), [`figure`] (SVG figures), and, behind
+//! their Cargo features, `verify` and `html` (`prove`: the texts' claims and their report),
+//! `oracle` (`oracle`: the JSON-lines oracle) and `strategies` (`strategies`: proptest
+//! strategies for exact inputs).
 
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub mod bernstein;
-pub mod curve;
-pub mod error;
+mod bernstein;
+mod curve;
+mod error;
 pub mod exact;
 pub mod figure;
-pub mod fit;
-pub mod fixed;
+mod fit;
+mod fixed;
 pub mod float;
+#[cfg(feature = "prove")]
 pub mod html;
-pub mod hull;
-pub mod input;
-pub mod interval;
-pub mod kernel;
+mod hull;
+mod input;
+mod interval;
+mod kernel;
 pub mod linalg;
+#[cfg(feature = "oracle")]
 pub mod oracle;
-pub mod param;
-pub mod point;
-pub mod quadratic;
-pub mod rational;
-pub mod scalar;
-pub mod shadow;
-pub mod space;
+mod param;
+mod point;
+mod quadratic;
+mod rational;
+mod scalar;
+mod shadow;
+mod space;
 #[cfg(feature = "strategies")]
 pub mod strategies;
-pub mod surface;
+mod surface;
+#[cfg(feature = "prove")]
 pub mod verify;
+// The figures estimate a part of their work with the oracle's model; the oracle uses all of it.
+#[cfg_attr(not(feature = "oracle"), allow(dead_code))]
+mod work;
 
+pub use bernstein::{
+    bernstein, bernstein_to_power, binomial, binomial_signed, eval_power, power_to_bernstein, reparametrize,
+};
 pub use curve::{Bezier, BezierCurve, DeCasteljauScheme, ElevationDistance};
 pub use error::{Error, Result, MAX_DEGREE, MAX_DIMENSION};
 pub use fixed::{BezierN, Cubic, Line, Quad};
+pub use hull::{convex_weights, hull_contains, MAX_SUBSETS};
+pub use input::{format_points, parse_count, parse_net, parse_number, parse_numbers, parse_point, parse_points};
 pub use num_bigint::BigInt;
 pub use num_rational::BigRational;
 pub use param::{ParamCurve, ParamCurveDeriv};
-pub use point::{AffineMap, Point, Vector};
-pub use scalar::{RefOps, Scalar};
+pub use point::{barycentric, linear_combination, AffineMap, Point, Vector};
+pub use scalar::{format_exact, parse_exact, RefOps, Scalar, MAX_DECIMAL_EXPONENT, MAX_NUMBER_LEN};
 pub use space::{Point2, Point3, PointN, VectorSpace};
 
 // --- rational curves, conics, quadratic irrationals
-pub use quadratic::QuadraticIrrational;
+pub use quadratic::{QuadraticIrrational, MAX_RADICAND};
 pub use rational::{
     classify_conic, conic_arc_passes_infinity, conic_shape_factor, implicit_conic, ConicKind, ExactSqrt, ImplicitConic,
     RationalBezierCurve,
 };
 
 // --- surfaces
-pub use surface::{enneper_net, BezierSurface, EnneperMatch};
+pub use surface::{enneper_net, enneper_power, BezierSurface, EnneperMatch};
 
 // --- fitting
 pub use fit::{
-    fit_cubic, fit_cubic_closed_form, fit_cubic_to, fit_least_squares, CubicFit, CubicFitData, CubicFitSource,
-    FitConstraints, LeastSquaresFit,
+    centripetal_params, chord_length_params, chord_length_params_via_f64, cubic_with_tangent_lengths, delta_squared,
+    delta_squared_gradient, fit_cubic, fit_cubic_closed_form, fit_cubic_to, fit_least_squares, least_squares_gradient,
+    least_squares_residual, uniform_params, CubicFit, CubicFitData, CubicFitSource, FitConstraints, LeastSquaresFit,
+    MAX_FIT_DEGREE,
 };
 
+// --- judging floats: interval enclosures, filtered predicates, a float with its exact shadow
+pub use interval::{
+    filter_stats, filtered_conic_kind, filtered_hull_contains, filtered_orientation, interval_de_casteljau,
+    FilterStats, Interval,
+};
+pub use shadow::Shadow;
+
 // --- verification
+#[cfg(feature = "prove")]
 pub use verify::{explain, explain_files, prove_files, prove_paths, ClaimOutcome, Report, Verdict};
 
 // --- exact arithmetic for the hot loops: a machine-word rational, shared Bernstein rows

@@ -5,11 +5,11 @@
 //! message of several lines, such as a TOML error with its snippet, is joined with ` | `).
 
 use casteljau::figure::FigureRequest;
-use casteljau::fit::CubicFitData;
 use casteljau::float::nearest_f64;
-use casteljau::input::{parse_count, parse_net, parse_number, parse_numbers, parse_point, parse_points};
 use casteljau::oracle::{self, check_weight_count, Answer, FloatMethod, Op};
 use casteljau::verify::{claims, explain_files, prove_files, ExplainStyle, Verdict};
+use casteljau::CubicFitData;
+use casteljau::{parse_count, parse_net, parse_number, parse_numbers, parse_point, parse_points};
 use casteljau::{BezierCurve, BezierSurface, BigRational, Error, Point, RationalBezierCurve};
 use clap::{Parser, Subcommand, ValueEnum};
 use serde_json::{json, Value};
@@ -407,7 +407,7 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
                     let columns: Vec<Value> = scheme
                         .columns
                         .iter()
-                        .map(|c| casteljau::input::points_to_json(c))
+                        .map(|c| casteljau::oracle::points_to_json(c))
                         .collect();
                     emit(&answer, format, Some(("scheme", Value::Array(columns))))
                 }

@@ -389,7 +389,7 @@ where
 /// relative to `Σ|c_i|`. Otherwise the combination depends on the origin and is an error.
 ///
 /// ```
-/// use casteljau::{point::barycentric, Point, BigRational, Scalar};
+/// use casteljau::{barycentric, Point, BigRational, Scalar};
 /// let tri: Vec<Point<BigRational>> =
 ///     vec![Point::from_ints(&[0, 0]).unwrap(), Point::from_ints(&[3, 0]).unwrap(), Point::from_ints(&[0, 3]).unwrap()];
 /// let third = BigRational::from_ratio(1, 3).unwrap();

@@ -1,49 +1,5 @@
 //! Quadratic irrationals `a + b√d`: an exact [`Scalar`] for control points such as
-//! `(3, -2√2)` (text 001, Example 2).
-//!
-//! A [`QuadraticIrrational`] is `a + b√d` with `a, b` exact rationals and `d` a square-free
-//! integer other than 0 and 1. Within one field `Q(√d)` the arithmetic is exact and closed
-//! (division included: `1/(a + b√d) = (a - b√d)/(a² - b²d)`), so the generic Bézier code of
-//! the crate runs on it unchanged and identities are decided with `==`.
-//!
-//! # Which `d`
-//! * `d` must be square-free and `≠ 0, 1`, with `|d| ≤` [`MAX_RADICAND`];
-//!   [`QuadraticIrrational::new`] rejects anything else. [`QuadraticIrrational::sqrt`] is more
-//!   forgiving: it takes any integer and pulls out square factors (`sqrt(8) = 2√2`,
-//!   `sqrt(9) = 3`).
-//! * Negative `d` is allowed (`√-1` is the imaginary unit): arithmetic and `==` stay exact,
-//!   but such numbers are not real, so `partial_cmp` returns `None` for them and `to_f64`
-//!   gives NaN.
-//! * For `d > 0` the order is exact: the sign of `a + b√d` is decided by comparing `a²`
-//!   with `b²d`, never in floating point.
-//!
-//! # Mixing fields
-//! Operators cannot return `Result`, so mixing is designed to never yield a wrong number:
-//! * a value with `b = 0` is rational and belongs to no field: it combines with any field
-//!   (`2 + √3` is fine, and `√2·√2 = 2` becomes field-free again);
-//! * combining two irrational values of different fields (`√2 + √3`) yields a *poisoned*
-//!   value. A poisoned value stays poisoned through every operation, compares unequal to
-//!   everything (itself included) and is unordered, prints as `<invalid: ...>`, and makes
-//!   [`Scalar::checked_div`], [`Scalar::check`], [`QuadraticIrrational::is_valid`] and the
-//!   conversions report [`Error::MixedField`]. `to_f64` gives NaN.
-//! * constructors from user data ([`QuadraticIrrational::new`], [`QuadraticIrrational::sqrt`],
-//!   parsing) return `Result`.
-//!
-//! `Display` writes `3 - 2*sqrt(2)`, which [`QuadraticIrrational::parse`] (and `FromStr`)
-//! read back; `√` is accepted on input too (`3 - 2√2`).
-//!
-//! ```
-//! use casteljau::{QuadraticIrrational, Scalar, BigRational};
-//! let r2 = QuadraticIrrational::sqrt(2).unwrap();
-//! let x = QuadraticIrrational::from_i64(3) - &(&QuadraticIrrational::from_i64(2) * &r2);
-//! assert_eq!(x.to_string(), "3 - 2*sqrt(2)");
-//! assert_eq!(x.norm(), BigRational::from_i64(1)); // 9 - 4·2
-//! assert!(x > QuadraticIrrational::from_i64(0)); // 3 > 2√2, decided exactly
-//! assert_eq!("3 - 2*sqrt(2)".parse::<QuadraticIrrational>().unwrap(), x);
-//! let mixed = &r2 + &QuadraticIrrational::sqrt(3).unwrap();
-//! assert!(!mixed.is_valid());
-//! assert!(mixed.check().is_err());
-//! ```
+//! `(3, -2√2)` (text 001, Example 2); everything about them is on [`QuadraticIrrational`].
 
 use crate::error::{Error, Result};
 use crate::scalar::{parse_exact, sign, Scalar};
@@ -70,7 +26,49 @@ enum Field {
     Mixed(i64, i64),
 }
 
-/// The number `a + b√d` (see the [module documentation](self)).
+/// The number `a + b√d`, with `a, b` exact rationals and `d` a square-free
+/// integer other than 0 and 1. Within one field `Q(√d)` the arithmetic is exact and closed
+/// (division included: `1/(a + b√d) = (a - b√d)/(a² - b²d)`), so the generic Bézier code of
+/// the crate runs on it unchanged and identities are decided with `==`.
+///
+/// # Which `d`
+/// * `d` must be square-free and `≠ 0, 1`, with `|d| ≤` [`MAX_RADICAND`];
+///   [`QuadraticIrrational::new`] rejects anything else. [`QuadraticIrrational::sqrt`] is more
+///   forgiving: it takes any integer and pulls out square factors (`sqrt(8) = 2√2`,
+///   `sqrt(9) = 3`).
+/// * Negative `d` is allowed (`√-1` is the imaginary unit): arithmetic and `==` stay exact,
+///   but such numbers are not real, so `partial_cmp` returns `None` for them and `to_f64`
+///   gives NaN.
+/// * For `d > 0` the order is exact: the sign of `a + b√d` is decided by comparing `a²`
+///   with `b²d`, never in floating point.
+///
+/// # Mixing fields
+/// Operators cannot return `Result`, so mixing is designed to never yield a wrong number:
+/// * a value with `b = 0` is rational and belongs to no field: it combines with any field
+///   (`2 + √3` is fine, and `√2·√2 = 2` becomes field-free again);
+/// * combining two irrational values of different fields (`√2 + √3`) yields a *poisoned*
+///   value. A poisoned value stays poisoned through every operation, compares unequal to
+///   everything (itself included) and is unordered, prints as `<invalid: ...>`, and makes
+///   [`Scalar::checked_div`], [`Scalar::check`], [`QuadraticIrrational::is_valid`] and the
+///   conversions report [`Error::MixedField`]. `to_f64` gives NaN.
+/// * constructors from user data ([`QuadraticIrrational::new`], [`QuadraticIrrational::sqrt`],
+///   parsing) return `Result`.
+///
+/// `Display` writes `3 - 2*sqrt(2)`, which [`QuadraticIrrational::parse`] (and `FromStr`)
+/// read back; `√` is accepted on input too (`3 - 2√2`).
+///
+/// ```
+/// use casteljau::{QuadraticIrrational, Scalar, BigRational};
+/// let r2 = QuadraticIrrational::sqrt(2).unwrap();
+/// let x = QuadraticIrrational::from_i64(3) - &(&QuadraticIrrational::from_i64(2) * &r2);
+/// assert_eq!(x.to_string(), "3 - 2*sqrt(2)");
+/// assert_eq!(x.norm(), BigRational::from_i64(1)); // 9 - 4·2
+/// assert!(x > QuadraticIrrational::from_i64(0)); // 3 > 2√2, decided exactly
+/// assert_eq!("3 - 2*sqrt(2)".parse::<QuadraticIrrational>().unwrap(), x);
+/// let mixed = &r2 + &QuadraticIrrational::sqrt(3).unwrap();
+/// assert!(!mixed.is_valid());
+/// assert!(mixed.check().is_err());
+/// ```
 #[derive(Clone, Debug)]
 pub struct QuadraticIrrational {
     a: BigRational,

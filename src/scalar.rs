@@ -244,7 +244,7 @@ pub const MAX_NUMBER_LEN: usize = 10_000;
 /// is `1/10`, not the nearest float.
 ///
 /// ```
-/// use casteljau::scalar::parse_exact;
+/// use casteljau::parse_exact;
 /// use casteljau::BigRational;
 /// assert_eq!(parse_exact("0.1").unwrap(), BigRational::new(1.into(), 10.into()));
 /// assert_eq!(parse_exact("-4/6").unwrap(), BigRational::new((-2).into(), 3.into()));

@@ -1,19 +1,4 @@
 //! [`Shadow`]: an `f64` computed alongside its exact value — a kernel checker.
-//!
-//! Every operation runs twice: in `f64`, exactly as plain float code would, and in exact
-//! rationals on the same inputs. Comparisons and branches follow the `f64` value (so the
-//! algorithm takes the path the float code takes), and at the end each result carries its
-//! exact error. Run any generic algorithm of the crate on `Shadow` once and get the float
-//! result and its error in ulps: a differential test of the whole library in one line.
-//!
-//! ```
-//! use casteljau::{shadow::Shadow, BezierCurve, Scalar};
-//! let c: BezierCurve<Shadow> = BezierCurve::from_coords(vec![vec![Shadow::from_f64(0.1).unwrap()],
-//!     vec![Shadow::from_f64(0.2).unwrap()], vec![Shadow::from_f64(0.7).unwrap()]]).unwrap();
-//! let x = c.eval(&Shadow::from_f64(0.3).unwrap()).coords()[0].clone();
-//! assert_eq!(x.value(), c.try_map(|s| Ok(s.value())).unwrap().eval(&0.3).coords()[0]);
-//! assert!(x.ulp_error().unwrap().ulps <= 2);
-//! ```
 
 use crate::error::{Error, Result};
 use crate::float::{nearest_f64, ulp_error, UlpError};
@@ -26,6 +11,21 @@ use std::fmt;
 use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
 /// An `f64` and the exact value the same operations give on the same inputs.
+///
+/// Every operation runs twice: in `f64`, exactly as plain float code would, and in exact
+/// rationals on the same inputs. Comparisons and branches follow the `f64` value (so the
+/// algorithm takes the path the float code takes), and at the end each result carries its
+/// exact error. Run any generic algorithm of the crate on `Shadow` once and get the float
+/// result and its error in ulps: a differential test of the whole library in one line.
+///
+/// ```
+/// use casteljau::{Shadow, BezierCurve, Scalar};
+/// let c: BezierCurve<Shadow> = BezierCurve::from_coords(vec![vec![Shadow::from_f64(0.1).unwrap()],
+///     vec![Shadow::from_f64(0.2).unwrap()], vec![Shadow::from_f64(0.7).unwrap()]]).unwrap();
+/// let x = c.eval(&Shadow::from_f64(0.3).unwrap()).coords()[0].clone();
+/// assert_eq!(x.value(), c.try_map(|s| Ok(s.value())).unwrap().eval(&0.3).coords()[0]);
+/// assert!(x.ulp_error().unwrap().ulps <= 2);
+/// ```
 #[derive(Clone, Debug)]
 pub struct Shadow {
     value: f64,

@@ -54,7 +54,7 @@ pub trait VectorSpace: Clone + PartialEq + fmt::Debug + 'static {
 /// A point with `N` coordinates of type `T`, stored inline; `Copy` when `T` is.
 ///
 /// ```
-/// use casteljau::{Point2, space::PointN};
+/// use casteljau::{Point2, PointN};
 /// let a = Point2::new(1.0, 2.0);
 /// let b: Point2<f64> = [4.0, 6.0].into();
 /// assert_eq!(b - a, Point2::new(3.0, 4.0));

@@ -1,29 +1,4 @@
 //! Tensor-product Bézier surfaces (text 003).
-//!
-//! `b^{m,n}(u, v) = Σ_{i=0}^m Σ_{j=0}^n b_{i,j} B_i^m(u) B_j^n(v)`: a curve of degree `m` in
-//! `u` whose control points move along curves of degree `n` in `v`. The `(m+1)(n+1)` points
-//! `b_{i,j}` form the Bézier (control) net; `net[i][j]` is `b_{i,j}`, `i` running in the
-//! `u` direction and `j` in the `v` direction.
-//!
-//! Every operation reduces to curve operations on the rows (`i` fixed, a curve in `v`) or
-//! the columns (`j` fixed, a curve in `u`) of the net, so all of them are exact for exact
-//! scalars and identities such as "u first = v first" are decided with `==`.
-//!
-//! | text 003                                   | here                                         |
-//! |--------------------------------------------|----------------------------------------------|
-//! | bilinear interpolation, hyperbolic paraboloid | [`BezierSurface::bilinear`]               |
-//! | two-stage construction, tensor product     | [`BezierSurface::eval`], [`BezierSurface::eval_v_first`] |
-//! | double Bernstein sum                       | [`BezierSurface::eval_bernstein`]            |
-//! | isoparametric curves                       | [`BezierSurface::iso_v`], [`BezierSurface::iso_u`] |
-//! | a) affine invariance                       | [`BezierSurface::transform`]                 |
-//! | b) convex hull property                    | [`BezierSurface::hull_weights`]              |
-//! | c) boundary curves, the four corners       | [`BezierSurface::boundary`], [`BezierSurface::corners`] |
-//! | Example 5 (Enneper surface)                | [`enneper_net`], [`BezierSurface::enneper_matches`] |
-//!
-//! Beyond the text: partial derivatives ([`BezierSurface::derivative_u`],
-//! [`BezierSurface::partial_at`]), subdivision ([`BezierSurface::split_u`]), degree
-//! elevation ([`BezierSurface::elevate_u`]) and conversion to and from the power basis
-//! ([`BezierSurface::from_power_on`], [`BezierSurface::to_power`]).
 
 use crate::bernstein::{bernstein_all, bernstein_to_power, power_to_bernstein, reparametrize};
 use crate::curve::BezierCurve;
@@ -39,8 +14,33 @@ use std::fmt;
 /// `i = 0..=m` (the `u` direction), `j = 0..=n` (the `v` direction), all points of one
 /// dimension.
 ///
+/// `b^{m,n}(u, v) = Σ_{i=0}^m Σ_{j=0}^n b_{i,j} B_i^m(u) B_j^n(v)`: a curve of degree `m` in
+/// `u` whose control points move along curves of degree `n` in `v`. The `(m+1)(n+1)` points
+/// `b_{i,j}` form the Bézier (control) net; `net[i][j]` is `b_{i,j}`, `i` running in the
+/// `u` direction and `j` in the `v` direction.
+///
+/// Every operation reduces to curve operations on the rows (`i` fixed, a curve in `v`) or
+/// the columns (`j` fixed, a curve in `u`) of the net, so all of them are exact for exact
+/// scalars and identities such as "u first = v first" are decided with `==`.
+///
+/// | text 003                                   | here                                         |
+/// |--------------------------------------------|----------------------------------------------|
+/// | bilinear interpolation, hyperbolic paraboloid | [`BezierSurface::bilinear`]               |
+/// | two-stage construction, tensor product     | [`BezierSurface::eval`], [`BezierSurface::eval_v_first`] |
+/// | double Bernstein sum                       | [`BezierSurface::eval_bernstein`]            |
+/// | isoparametric curves                       | [`BezierSurface::iso_v`], [`BezierSurface::iso_u`] |
+/// | a) affine invariance                       | [`BezierSurface::transform`]                 |
+/// | b) convex hull property                    | [`BezierSurface::hull_weights`]              |
+/// | c) boundary curves, the four corners       | [`BezierSurface::boundary`], [`BezierSurface::corners`] |
+/// | Example 5 (Enneper surface)                | [`enneper_net`], [`BezierSurface::enneper_matches`] |
+///
+/// Beyond the text: partial derivatives ([`BezierSurface::derivative_u`],
+/// [`BezierSurface::partial_at`]), subdivision ([`BezierSurface::split_u`]), degree
+/// elevation ([`BezierSurface::elevate_u`]) and conversion to and from the power basis
+/// ([`BezierSurface::from_power_on`], [`BezierSurface::to_power`]).
+///
 /// ```
-/// use casteljau::{surface::BezierSurface, BigRational, Point, Scalar};
+/// use casteljau::{BezierSurface, BigRational, Point, Scalar};
 /// let q = |p, d| BigRational::from_ratio(p, d).unwrap();
 /// // text 003: bilinear interpolation of four points gives x(u, v) = (u, v, uv), z = xy
 /// let s: BezierSurface<BigRational> = BezierSurface::bilinear(
@@ -114,7 +114,7 @@ where
     /// coeffs[0].len() - 1)`. Empty intervals and ragged coefficient arrays are errors.
     ///
     /// ```
-    /// use casteljau::{surface::BezierSurface, BigRational, Point, Scalar};
+    /// use casteljau::{BezierSurface, BigRational, Point, Scalar};
     /// let q = BigRational::from_i64;
     /// let c = |v: &[i64]| Point::from_ints(v).unwrap();
     /// // (u, v, u² - v²) on [-1, 1]²: text 003, Example 2
@@ -463,7 +463,7 @@ where
     /// point, so inexact scalars are an error. The surface must be in 3D.
     ///
     /// ```
-    /// use casteljau::{surface::{enneper_net, BezierSurface}, BigRational, Scalar};
+    /// use casteljau::{enneper_net, BezierSurface, BigRational, Scalar};
     /// let e = enneper_net(&BigRational::from_i64(1)).unwrap();
     /// let found = e.enneper_matches().unwrap();
     /// assert_eq!(found.len(), 1);
@@ -519,7 +519,7 @@ where
 /// `u = r(2s − 1)`, `v = r(2t − 1)`). `r = 0` is an error.
 ///
 /// ```
-/// use casteljau::{surface::enneper_net, AffineMap, BigRational, Scalar};
+/// use casteljau::{enneper_net, AffineMap, BigRational, Scalar};
 /// // text 003, Example 5 is 3 × (Enneper on [−2, 2]²)
 /// let e = enneper_net(&BigRational::from_i64(2)).unwrap();
 /// let e = e.transform(&AffineMap::scaling(3, &BigRational::from_i64(3))).unwrap();

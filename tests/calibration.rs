@@ -10,8 +10,8 @@
 //! `CALIBRATION_REPORT=1` prints every measurement (estimate, seconds, units per second).
 
 use casteljau::figure::{FigureKind, FigureRequest};
-use casteljau::fit::CubicFitData;
-use casteljau::oracle::{FloatMethod, Op, MAX_WORK};
+use casteljau::oracle::{FloatMethod, Op, MAX_REQUEST_WORK};
+use casteljau::CubicFitData;
 use casteljau::{BezierCurve, BezierSurface, BigInt, BigRational, Point, RationalBezierCurve};
 
 /// CPU seconds any admitted request may take, on a busy shared 2-core machine. The limits
@@ -292,8 +292,8 @@ fn the_largest_admitted_oracle_request_of_every_op_stays_within_the_budget() {
             let (result, seconds) = timed(|| op.run());
             if report() {
                 eprintln!(
-                    "{name:14} {kind:?}: size {size}, work {work:.2e} ({:.2} of MAX_WORK), {seconds:.3} s, {:.2e} units/s, ok {}",
-                    work / MAX_WORK,
+                    "{name:14} {kind:?}: size {size}, work {work:.2e} ({:.2} of MAX_REQUEST_WORK), {seconds:.3} s, {:.2e} units/s, ok {}",
+                    work / MAX_REQUEST_WORK,
                     work / seconds,
                     result.is_ok()
                 );

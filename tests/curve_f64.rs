@@ -14,7 +14,7 @@
 //!   the `n` levels `a + t(b - a)` commits at most `5u·M` and never amplifies earlier errors
 //!   when `0 ≤ t ≤ 1`).
 
-use casteljau::bernstein::eval_power;
+use casteljau::eval_power;
 use casteljau::strategies::{f64_curve, unit_parameter_f64, wide_parameter_f64};
 use casteljau::{BezierCurve, BigRational, Point, Scalar};
 use proptest::prelude::*;

@@ -4,12 +4,12 @@
 //! Inputs come from the public [`casteljau::strategies`], so this file needs the
 //! `strategies` feature (Cargo.toml declares it as required; CI runs `--all-features`).
 
-use casteljau::bernstein::{bernstein, bernstein_to_power, eval_power, power_to_bernstein};
-use casteljau::point::{barycentric, linear_combination};
 use casteljau::strategies::{
     affine_weights, exact_affine_map, exact_curve, exact_point, exact_points, large_exact_curve, small_rational,
     unit_parameter, wide_parameter,
 };
+use casteljau::{barycentric, linear_combination};
+use casteljau::{bernstein, bernstein_to_power, eval_power, power_to_bernstein};
 use casteljau::{AffineMap, BezierCurve, BigRational, Error, Point, Scalar};
 use proptest::prelude::*;
 use proptest::test_runner::Config;
@@ -63,7 +63,7 @@ proptest! {
         prop_assert_eq!(&by_casteljau, &c.eval_bernstein(&t));
         prop_assert_eq!(&by_casteljau, &eval_power_points(&c.to_power().unwrap(), &t));
         prop_assert_eq!(&by_casteljau, &c.scheme(&t).point().clone());
-        prop_assert_eq!(&by_casteljau, &c.eval_fraction_free(&t));
+        prop_assert_eq!(&by_casteljau, &c.eval_nested(&t));
         // Per coordinate, through the scalar conversion directly.
         for k in 0..c.dim() {
             let coord: Vec<Q> = c.points().iter().map(|p| p.coords()[k].clone()).collect();
@@ -76,7 +76,7 @@ proptest! {
     fn large_coordinates_evaluate_consistently(c in large_exact_curve(0..=8, 1..=2), t in wide_parameter()) {
         prop_assert_eq!(c.eval_reference(&t), c.eval_bernstein(&t));
         prop_assert_eq!(c.eval_reference(&t), c.eval(&t));
-        prop_assert_eq!(c.eval_reference(&t), c.eval_fraction_free(&t));
+        prop_assert_eq!(c.eval_reference(&t), c.eval_nested(&t));
         prop_assert_eq!(BezierCurve::from_power(&c.to_power().unwrap()).unwrap(), c.clone());
     }
 

@@ -57,7 +57,6 @@ proptest! {
         let reference = c.eval_reference(&t);
         prop_assert!(same(&c.eval_nested(&t), &reference));
         prop_assert!(same(&c.eval(&t), &reference));
-        prop_assert!(same(&c.eval_fraction_free(&t), &reference));
         for k in 0..=c.degree() + 1 {
             let reference = if k > c.degree() {
                 Point::origin(c.dim())

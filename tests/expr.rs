@@ -1,9 +1,9 @@
 //! The expression parser and evaluator: round trips, agreement with the library, bad input.
 
-use casteljau::bernstein::{bernstein, eval_power};
 use casteljau::verify::eval::{Evaluator, Value, VarEnv};
 use casteljau::verify::expr::Expr;
 use casteljau::verify::parse::parse;
+use casteljau::{bernstein, eval_power};
 use casteljau::{BigRational, Scalar};
 use proptest::prelude::*;
 use std::collections::BTreeMap;

@@ -2,9 +2,9 @@
 //! exact values written on a figure are the library's, and the rasterised curve lies where the
 //! exact curve is.
 
+use casteljau::enneper_net;
 use casteljau::figure::{self, svg::CURVE, AnyCurve, FigureKind, FigureRequest};
-use casteljau::fit::fit_cubic_to;
-use casteljau::surface::enneper_net;
+use casteljau::fit_cubic_to;
 use casteljau::{AffineMap, BezierCurve, BigRational, Point, Scalar};
 use std::process::Command;
 
@@ -114,7 +114,7 @@ fn subdivision_polygons_are_split_at() {
     assert_eq!(titled(&titles, "b(1/3) = "), c.eval(&t).to_string());
     assert_eq!(
         titled(&titles, "the left piece: control points "),
-        casteljau::point::PointList(left.points()).to_string()
+        casteljau::format_points(left.points())
     );
 }
 
@@ -204,7 +204,7 @@ fn enneper_net_points_are_the_library_net() {
 
 #[test]
 fn fit_figure_states_k_l_and_delta() {
-    let x = BezierCurve::new(casteljau::input::parse_points(figure::DEFAULT_FIT_CURVE).unwrap()).unwrap();
+    let x = BezierCurve::new(casteljau::parse_points(figure::DEFAULT_FIT_CURVE).unwrap()).unwrap();
     let fit = fit_cubic_to(&x).unwrap();
     assert_eq!((fit.k.clone(), fit.delta2.clone()), (q(3, 10), q(1, 1280)));
     let fig = figure::fit(&AnyCurve::Polynomial(x)).unwrap();

@@ -3,13 +3,13 @@
 //! Equations of text 004 are encoded *as printed*; where the print is wrong the test shows
 //! the failure and checks the corrected form beside it.
 
-use casteljau::bernstein::bernstein;
-use casteljau::fit::{
+use casteljau::bernstein;
+use casteljau::linalg::{determinant, inverse, mat_mul, solve};
+use casteljau::{
     chord_length_params, cubic_with_tangent_lengths, delta_squared, delta_squared_gradient, fit_cubic,
     fit_cubic_closed_form, fit_cubic_to, fit_least_squares, least_squares_gradient, least_squares_residual,
     uniform_params, CubicFitData, FitConstraints,
 };
-use casteljau::linalg::{determinant, inverse, mat_mul, solve};
 use casteljau::{BezierCurve, BigRational, Error, Point, Scalar};
 use proptest::prelude::*;
 
@@ -550,7 +550,7 @@ fn text_004_as_a_least_squares_problem() {
 #[test]
 fn rational_quarter_circle_is_fitted_exactly_in_the_plane() {
     // Text 001, Example 1: x(t) = ((1-t²)/(1+t²), 2t/(1+t²)), a quarter of the unit circle.
-    let circle = casteljau::rational::RationalBezierCurve::new(
+    let circle = casteljau::RationalBezierCurve::new(
         vec![p(&[1, 0]), p(&[1, 1]), p(&[0, 1])],
         vec![q(1, 1), q(1, 1), q(2, 1)],
     )

@@ -7,8 +7,8 @@ use casteljau::float::{
     a_priori_bound, a_priori_index, compensated_de_casteljau, compensated_derivative, compensated_surface,
     de_casteljau, de_casteljau_running, error_at_most, gamma_exact, ulp_error, UNIT_ROUNDOFF,
 };
-use casteljau::interval::Interval;
-use casteljau::shadow::Shadow;
+use casteljau::Interval;
+use casteljau::Shadow;
 use casteljau::{BezierCurve, BigRational, Scalar};
 use num_traits::Signed;
 
@@ -23,12 +23,9 @@ fn q(x: f64) -> BigRational {
 /// The exact `p(t)` and `Σ|b_i| B_i(t)` (t in [0, 1]).
 fn exact_value_and_sum(b: &[f64], t: f64) -> (BigRational, BigRational) {
     let curve = |c: Vec<BigRational>| BezierCurve::from_coords(c.into_iter().map(|x| vec![x]).collect()).unwrap();
-    let p = curve(b.iter().map(|x| q(*x)).collect())
-        .eval_fraction_free(&q(t))
-        .coords()[0]
-        .clone();
+    let p = curve(b.iter().map(|x| q(*x)).collect()).eval_nested(&q(t)).coords()[0].clone();
     let s = curve(b.iter().map(|x| q(f64::abs(*x))).collect())
-        .eval_fraction_free(&q(t))
+        .eval_nested(&q(t))
         .coords()[0]
         .clone();
     (p, s)
@@ -211,7 +208,7 @@ fn exact_surface(net: &[Vec<f64>], u: f64, v: f64) -> (BigRational, BigRational)
 fn exact_on_curve(coefs: Vec<BigRational>, t: f64) -> BigRational {
     BezierCurve::from_coords(coefs.into_iter().map(|x| vec![x]).collect())
         .unwrap()
-        .eval_fraction_free(&q(t))
+        .eval_nested(&q(t))
         .coords()[0]
         .clone()
 }

@@ -11,8 +11,8 @@ mod edges;
 mod rng;
 
 use casteljau::float::{a_priori_bound, compensated_de_casteljau, de_casteljau, error_at_most, eval_dyadic};
-use casteljau::interval::{filtered_hull_contains, filtered_orientation, Interval};
 use casteljau::oracle::handle_line;
+use casteljau::{filtered_hull_contains, filtered_orientation, Interval};
 use casteljau::{BezierCurve, BigRational, Scalar};
 use serde_json::Value;
 use std::cmp::Ordering;
@@ -136,7 +136,7 @@ fn batches_and_methods_answer_per_parameter() {
     let work = casteljau::oracle::Op::from_json(&serde_json::from_str(&one).unwrap())
         .unwrap()
         .work();
-    let fits = (casteljau::oracle::MAX_WORK / work) as usize;
+    let fits = (casteljau::oracle::MAX_REQUEST_WORK / work) as usize;
     assert!((1..4000).contains(&fits), "{work}");
     let batch = |count: usize| {
         let ts = vec![r#""1/3""#; count];

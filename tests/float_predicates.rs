@@ -1,8 +1,8 @@
 //! The filtered predicates agree with exact arithmetic on the same floats, and fall back to
 //! it only when the interval straddles zero (counted).
 
-use casteljau::interval::{filter_stats, filtered_conic_kind, filtered_hull_contains, filtered_orientation};
 use casteljau::{classify_conic, BigRational, Point, RationalBezierCurve, Scalar};
+use casteljau::{filter_stats, filtered_conic_kind, filtered_hull_contains, filtered_orientation};
 use std::cmp::Ordering;
 
 fn exact_orientation(p: [f64; 2], q: [f64; 2], r: [f64; 2]) -> Ordering {
@@ -61,7 +61,7 @@ fn hull_membership_matches_the_exact_hull() {
         [2.0, 2.0],
     ] {
         let q = Point::new(p.iter().map(|x| BigRational::from_f64(*x).unwrap()).collect()).unwrap();
-        let want = casteljau::hull::convex_weights(&exact, &q).unwrap().is_some();
+        let want = casteljau::convex_weights(&exact, &q).unwrap().is_some();
         assert_eq!(filtered_hull_contains(&square, p).unwrap(), want, "{p:?}");
     }
     // a degenerate hull: a segment, with p on it and just off it

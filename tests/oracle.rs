@@ -1,8 +1,8 @@
 //! The JSON-lines oracle through the built binary: every line answered in order, ids
 //! echoed, bad requests answered without ending the loop, answers flushed one at a time.
 
-use casteljau::input::number_to_json;
 use casteljau::oracle::nearest_f64;
+use casteljau::oracle::number_to_json;
 use casteljau::{BezierCurve, BigRational};
 use proptest::prelude::*;
 use serde_json::{json, Value};
@@ -249,7 +249,7 @@ fn answers_are_flushed_one_at_a_time() {
         let mut line = String::new();
         stdout.read_line(&mut line).unwrap();
         let r: Value = serde_json::from_str(&line).unwrap();
-        let half = casteljau::scalar::format_exact(&BigRational::new(k.into(), 2.into()));
+        let half = casteljau::format_exact(&BigRational::new(k.into(), 2.into()));
         assert_eq!(r, json!({"id": k, "ok": true, "point": [half]}));
         writeln!(stdin, "garbage").unwrap();
         stdin.flush().unwrap();

@@ -2,8 +2,8 @@
 //! two-stage bilinear construction, the Enneper verdict for Example 5, and property tests of
 //! every identity on random exact nets (with `f64` counterparts under stated tolerances).
 
-use casteljau::bernstein::{bernstein, binomial};
-use casteljau::surface::{enneper_net, enneper_power, BezierSurface, EnneperMatch};
+use casteljau::{bernstein, binomial};
+use casteljau::{enneper_net, enneper_power, BezierSurface, EnneperMatch};
 use casteljau::{AffineMap, BigRational, Error, Point, Scalar};
 use proptest::prelude::*;
 
@@ -655,7 +655,7 @@ proptest! {
         let w = w.unwrap();
         let flat: Vec<Point<Q>> = s.net().iter().flatten().cloned().collect();
         prop_assert!(w.iter().all(|c| *c >= z(0)));
-        prop_assert_eq!(casteljau::point::barycentric(&flat, &w).unwrap(), p);
+        prop_assert_eq!(casteljau::barycentric(&flat, &w).unwrap(), p);
     }
 
     #[test]

@@ -3,9 +3,9 @@
 //! Where the text is misprinted the test encodes what is *printed*, shows that it fails with
 //! a concrete counterexample, and checks the corrected statement beside it.
 
-use casteljau::bernstein::{bernstein, power_to_bernstein, reparametrize};
-use casteljau::hull::{convex_weights, hull_contains};
-use casteljau::point::{barycentric, linear_combination};
+use casteljau::{barycentric, linear_combination};
+use casteljau::{bernstein, power_to_bernstein, reparametrize};
+use casteljau::{convex_weights, hull_contains};
 use casteljau::{BezierCurve, BigRational, Error, Point, Scalar};
 
 type Q = BigRational;

@@ -230,7 +230,7 @@ fn explain_fits_one_screen_with_a_case_worked_exactly() {
     // the written-out sum Σ_r b_0^r(t0) B_r^3(t) is the library's and equals both sides
     let sum = (0..=3).fold(BigRational::from_i64(0), |acc, r| {
         let edge = scheme.get(r, 0).unwrap().coords()[0].clone();
-        acc + edge * casteljau::bernstein::bernstein(r, 3, &t).unwrap()
+        acc + edge * casteljau::bernstein(r, 3, &t).unwrap()
     });
     assert_eq!(sum, value);
     let sum_line = lines

@@ -25,7 +25,7 @@
 //! let row = table.at_rational(3, &third).unwrap();
 //! assert_eq!(row.denominator(), &BigInt::from(27));
 //! assert_eq!(row.value(1), &BigRational::from_ratio(4, 9).unwrap());
-//! assert_eq!(table.bernstein(1, 3, &third).unwrap(), casteljau::bernstein::bernstein(1, 3, &third).unwrap());
+//! assert_eq!(table.bernstein(1, 3, &third).unwrap(), casteljau::bernstein(1, 3, &third).unwrap());
 //! ```
 
 use super::SmallRational;

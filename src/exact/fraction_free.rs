@@ -34,7 +34,6 @@ use crate::point::Point;
 use crate::rational::RationalBezierCurve;
 use crate::surface::BezierSurface;
 use num_bigint::BigInt;
-use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 
@@ -647,52 +646,6 @@ impl BezierCurve<BigRational> {
     pub fn elevate_by_fraction_free(&self, r: usize) -> Result<Self> {
         check_degree("degree after elevation", self.degree() as u128 + r as u128)?;
         BezierCurve::new(words_then_big(|tier| on_tier!(tier, curve_elevate_by(self, r))))
-    }
-}
-
-impl BezierCurve<BigRational> {
-    /// `b(t)` exactly, by a fraction-free de Casteljau algorithm: the same value as
-    /// [`BezierCurve::eval`], much faster at high degree.
-    ///
-    /// With `t = p/q` and every control point written over one common denominator `D`, the
-    /// steps `c_i ← (q − p) c_i + p c_{i+1}` stay in the integers, and `b(t) = c_0 / (D qⁿ)`.
-    /// The generic algorithm reduces a fraction (a gcd) at every one of its `n(n+1)/2`
-    /// steps per coordinate; this one reduces once at the end.
-    ///
-    /// ```
-    /// use casteljau::{BezierCurve, BigRational, Scalar};
-    /// let c: BezierCurve<BigRational> = BezierCurve::from_ints(&[&[0, 0], &[1, 2], &[3, 0]]).unwrap();
-    /// let t = BigRational::from_ratio(1, 3).unwrap();
-    /// assert_eq!(c.eval_fraction_free(&t), c.eval(&t));
-    /// ```
-    pub fn eval_fraction_free(&self, t: &BigRational) -> Point<BigRational> {
-        let dim = self.dim();
-        let n = self.degree();
-        let mut denominator = BigInt::from(1);
-        for c in self.points().iter().flat_map(|p| p.coords()) {
-            denominator = Integer::lcm(&denominator, c.denom());
-        }
-        let (p, q) = (t.numer(), t.denom());
-        let s = q - p;
-        let mut buf: Vec<BigInt> = self
-            .points()
-            .iter()
-            .flat_map(|pt| pt.coords().iter().map(|c| c.numer() * (&denominator / c.denom())))
-            .collect();
-        for r in 1..=n {
-            for i in 0..=n - r {
-                for k in 0..dim {
-                    buf[i * dim + k] = &s * &buf[i * dim + k] + p * &buf[(i + 1) * dim + k];
-                }
-            }
-        }
-        let scale = denominator * num_traits::pow(q.clone(), n);
-        let coords = buf
-            .into_iter()
-            .take(dim)
-            .map(|c| BigRational::new(c, scale.clone()))
-            .collect();
-        Point::new(coords).expect("dimension checked at construction")
     }
 }
 

@@ -23,8 +23,8 @@
 //! [`MAX_FIGURE_ARCS`] conic arcs and [`MAX_ISO`] iso-curves per direction; the hull search at
 //! most [`crate::hull::MAX_SUBSETS`] subsets. The exact computations a figure prints (the
 //! scheme, the pieces, elevated polygons and their distances, hull weights, the fit, the
-//! Enneper match) are given a work estimate in the oracle's units
-//! ([`crate::oracle::Op::work`]) which must stay below [`MAX_FIGURE_WORK`]. The list with
+//! Enneper match) are given a work estimate in the oracle's units (the oracle's `Op::work`)
+//! which must stay below [`MAX_FIGURE_WORK`]. The list with
 //! examples is in `docs/limits.md`.
 //!
 //! ```

@@ -3,9 +3,9 @@
 use super::{AnyCurve, Figure};
 use crate::error::{Error, Result};
 use crate::input::{parse_count, parse_net, parse_number, parse_numbers, parse_point, parse_points};
-use crate::oracle::Op;
 use crate::rational::RationalBezierCurve;
 use crate::surface::BezierSurface;
+use crate::work::{elevate_work, eval_work, split_work, to_bezier_work};
 use crate::{BezierCurve, BigRational};
 use std::str::FromStr;
 
@@ -317,10 +317,10 @@ pub const MAX_FIGURE_STEPS: usize = 16;
 /// The most arcs (`--weights` of `conics`) one figure draws.
 pub const MAX_FIGURE_ARCS: usize = 16;
 
-/// The largest work estimate of a figure's exact computations, in the oracle's units
-/// ([`crate::oracle::Op::work`]): a fraction of a second of CPU. Everything a figure only
+/// The largest work estimate of a figure's exact computations, in the oracle's units (a
+/// quarter of the largest request, `oracle::MAX_REQUEST_WORK`): a fraction of a second of CPU. Everything a figure only
 /// draws is sampled in `f64` and costs nothing on this scale.
-pub const MAX_FIGURE_WORK: f64 = crate::oracle::MAX_WORK / 4.0;
+pub const MAX_FIGURE_WORK: f64 = crate::work::HALF_SECOND / 4.0;
 
 fn check_bits<'a>(what: &'static str, numbers: impl IntoIterator<Item = &'a BigRational>) -> Result<()> {
     let most = numbers
@@ -349,36 +349,13 @@ fn check_work(work: f64) -> Result<()> {
     Ok(())
 }
 
-/// The de Casteljau scheme at `t` (construction, subdivision): the oracle's `split`.
-fn split_work(curve: &BezierCurve<BigRational>, t: &BigRational) -> f64 {
-    Op::Split {
-        curve: curve.clone(),
-        t: t.clone(),
-    }
-    .work()
-}
-
-/// The exact point at `t` by the fast kernel (the oracle's `eval`).
-fn eval_work(curve: &BezierCurve<BigRational>, t: &BigRational) -> f64 {
-    Op::Eval {
-        curve: curve.clone(),
-        t: t.clone(),
-        approx: None,
-    }
-    .work()
-}
-
 /// One elevated polygon and its distance to the curve: the elevation (the oracle's
 /// `elevate`), then `b(i/N)`, `N = n + r`, at each of the `N + 1` points as a sum of `n + 1`
 /// products of a coordinate with an integer `C(n,j) i^j (N − i)^(n−j)` of up to `n log2 N`
 /// bits.
 fn elevation_work(curve: &BezierCurve<BigRational>, r: usize) -> f64 {
     let (n, total) = (curve.degree(), curve.degree() + r);
-    let elevate = Op::Elevate {
-        curve: curve.clone(),
-        by: r,
-    }
-    .work();
+    let elevate = elevate_work(curve, r);
     let weight_bits = n as f64 * (total.max(2) as f64).log2();
     let b = coordinate_bits(curve.points()) + weight_bits + 64.0;
     let products = ((total + 1) * (n + 1) * curve.dim()) as f64;
@@ -407,12 +384,7 @@ fn enneper_work(surface: &BezierSurface<BigRational>) -> f64 {
         .max_by_key(|x| x.numer().bits() + x.denom().bits())
         .cloned()
         .unwrap_or_default();
-    let line = |len: usize| {
-        Op::ToBezier {
-            power: vec![vec![largest.clone(); len]; surface.dim()],
-        }
-        .work()
-    };
+    let line = |len: usize| to_bezier_work(&vec![vec![largest.clone(); len]; surface.dim()]);
     2.0 * ((m + 1) as f64 * line(n + 1) + (n + 1) as f64 * line(m + 1))
 }
 

@@ -224,7 +224,7 @@ impl Panel {
 
     /// A planar polynomial curve: written exactly as one SVG segment for degree ≤ 3, through
     /// 200 samples above (evaluated in `f64` from the rounded control points: they only
-    /// place pixels, see [`super::sample`]).
+    /// place pixels, see the `sample` module).
     pub fn curve<T: Scalar>(
         &mut self,
         curve: &BezierCurve<T>,

@@ -164,7 +164,7 @@ pub fn ulp(x: &BigRational) -> BigRational {
 /// The `f64` nearest to `x`, ties to even (infinite when `|x|` rounds past `f64::MAX`).
 ///
 /// ```
-/// use casteljau::{float::nearest_f64, scalar::parse_exact};
+/// use casteljau::{float::nearest_f64, parse_exact};
 /// assert_eq!(nearest_f64(&parse_exact("0.1").unwrap()), 0.1);
 /// assert_eq!(nearest_f64(&parse_exact("1/3").unwrap()), 1.0 / 3.0);
 /// ```
@@ -212,7 +212,7 @@ pub fn ulp_distance(a: f64, b: f64) -> u64 {
 /// not finite or `exact` rounds beyond the largest `f64` (no finite float to count from).
 ///
 /// ```
-/// use casteljau::{float::ulp_error, scalar::parse_exact};
+/// use casteljau::{float::ulp_error, parse_exact};
 /// let e = ulp_error(0.1 + 0.2, &parse_exact("0.3").unwrap()).unwrap();
 /// assert_eq!((e.nearest, e.ulps), (0.3, 1));
 /// assert!(e.error_ulps > 0.5 && e.error_ulps < 1.5);

@@ -10,11 +10,12 @@ use super::judge::{
     FloatMethod,
 };
 use super::protocol::{insert_bound, insert_errors, insert_verdicts, too_large};
-use super::{Answer, Op, MAX_DIMENSION, MAX_WORK};
+use super::values::{describe, number_from_json, point_to_json};
+use super::{Answer, Op, MAX_REQUEST_DIMENSION, MAX_REQUEST_WORK};
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::float::{condition_number, eval_dyadic, exact_f64, nearest_f64, scale_pow2_up, ulp_exponent};
-use crate::input::{describe, in_context, number_from_json, point_to_json};
+use crate::input::in_context;
 use crate::point::Point;
 use num_rational::BigRational;
 use serde_json::{json, Map, Value};
@@ -77,7 +78,7 @@ fn parameters(obj: &Map<String, Value>) -> Result<Vec<BigRational>> {
         .collect()
 }
 
-/// Refuses a batch whose summed work estimate is beyond [`MAX_WORK`]; `op` is any one of its
+/// Refuses a batch whose summed work estimate is beyond [`MAX_REQUEST_WORK`]; `op` is any one of its
 /// requests, its parameter replaced in turn.
 fn check_batch_work(op: &mut Op, ts: &[BigRational]) -> Result<()> {
     let mut work = 0.0;
@@ -88,11 +89,11 @@ fn check_batch_work(op: &mut Op, ts: &[BigRational]) -> Result<()> {
         }
         work += op.work();
     }
-    if work.is_nan() || work > MAX_WORK {
+    if work.is_nan() || work > MAX_REQUEST_WORK {
         return Err(Error::TooLarge {
             what: "batch (estimated exact work of all its parameters)",
             value: format!("{work:.2e}"),
-            limit: format!("{MAX_WORK:.0e}; use fewer parameters, fewer points or a lower degree"),
+            limit: format!("{MAX_REQUEST_WORK:.0e}; use fewer parameters, fewer points or a lower degree"),
         });
     }
     Ok(())
@@ -103,8 +104,8 @@ fn approx_point(v: &Value, what: &str) -> Result<Vec<f64>> {
     let items = v
         .as_array()
         .ok_or_else(|| Error::Parse(format!("{what}: expected an array of floats, got {}", describe(v))))?;
-    if items.len() > MAX_DIMENSION {
-        return Err(too_large("dimension", items.len(), MAX_DIMENSION));
+    if items.len() > MAX_REQUEST_DIMENSION {
+        return Err(too_large("dimension", items.len(), MAX_REQUEST_DIMENSION));
     }
     items
         .iter()

@@ -7,9 +7,9 @@
 //! way ([`Op::from_json`]). So every answer and every error is the general path's, and tests
 //! compare the two on the same lines.
 
-use super::{Op, MAX_DIMENSION, MAX_POINTS};
+use super::values::json_number;
+use super::{Op, MAX_POINTS, MAX_REQUEST_DIMENSION};
 use crate::curve::BezierCurve;
-use crate::input::json_number;
 use crate::point::Point;
 use serde::{Deserialize, Deserializer};
 use serde_json::{Number, Value};
@@ -42,7 +42,7 @@ pub fn eval_request(line: &str) -> Option<(Op, Option<Value>)> {
         return None;
     }
     let dim = request.points[0].len();
-    if dim > MAX_DIMENSION || request.points.iter().any(|p| p.len() != dim) {
+    if dim > MAX_REQUEST_DIMENSION || request.points.iter().any(|p| p.len() != dim) {
         return None;
     }
     let points = request
@@ -52,7 +52,7 @@ pub fn eval_request(line: &str) -> Option<(Op, Option<Value>)> {
         .collect::<crate::Result<Vec<_>>>()
         .ok()?;
     let approx = request.approx;
-    if approx.as_ref().is_some_and(|a| a.len() > MAX_DIMENSION) {
+    if approx.as_ref().is_some_and(|a| a.len() > MAX_REQUEST_DIMENSION) {
         return None;
     }
     let op = Op::Eval {

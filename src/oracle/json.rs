@@ -2,15 +2,15 @@
 
 use super::judge::{not_a_float, FloatMethod};
 use super::protocol::{too_large, truncate};
-use super::{check_weight_count, Op, MAX_DIMENSION, MAX_POINTS, OPS};
+use super::values::{
+    count_from_json, describe, net_from_json, number_from_json, numbers_from_json, point_from_json, points_from_json,
+};
+use super::{check_weight_count, Op, MAX_POINTS, MAX_REQUEST_DIMENSION, OPS};
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::fit::CubicFitData;
 use crate::float::exact_f64;
-use crate::input::{
-    count_from_json, describe, in_context, net_from_json, number_from_json, numbers_from_json, point_from_json,
-    points_from_json,
-};
+use crate::input::in_context;
 use crate::rational::RationalBezierCurve;
 use crate::surface::BezierSurface;
 use num_rational::BigRational;
@@ -92,8 +92,8 @@ impl Op {
                         describe(v)
                     ))
                 })?;
-                if coords.len() > MAX_DIMENSION {
-                    return Err(too_large("dimension", coords.len(), MAX_DIMENSION));
+                if coords.len() > MAX_REQUEST_DIMENSION {
+                    return Err(too_large("dimension", coords.len(), MAX_REQUEST_DIMENSION));
                 }
                 Op::ToBezier {
                     power: coords
@@ -116,8 +116,8 @@ impl Op {
             },
             "surface_eval" => {
                 let net = req.in_field("net", net_from_json(req.get("net")?, MAX_POINTS))?;
-                if net[0][0].dim() > MAX_DIMENSION {
-                    return Err(too_large("dimension", net[0][0].dim(), MAX_DIMENSION));
+                if net[0][0].dim() > MAX_REQUEST_DIMENSION {
+                    return Err(too_large("dimension", net[0][0].dim(), MAX_REQUEST_DIMENSION));
                 }
                 Op::SurfaceEval {
                     surface: req.in_field("net", BezierSurface::new(net))?,
@@ -194,8 +194,8 @@ impl Fields<'_> {
 
     fn rational_curve(&self) -> Result<RationalBezierCurve<BigRational>> {
         let points = self.in_field("points", points_from_json(self.get("points")?, MAX_POINTS))?;
-        if points[0].dim() > MAX_DIMENSION {
-            return Err(too_large("dimension", points[0].dim(), MAX_DIMENSION));
+        if points[0].dim() > MAX_REQUEST_DIMENSION {
+            return Err(too_large("dimension", points[0].dim(), MAX_REQUEST_DIMENSION));
         }
         let weights = self.in_field("weights", numbers_from_json(self.get("weights")?, MAX_POINTS))?;
         check_weight_count(points.len(), weights.len())?;
@@ -204,8 +204,8 @@ impl Fields<'_> {
 
     fn curve(&self, name: &str) -> Result<BezierCurve<BigRational>> {
         let points = self.in_field(name, points_from_json(self.get(name)?, MAX_POINTS))?;
-        if points[0].dim() > MAX_DIMENSION {
-            return Err(too_large("dimension", points[0].dim(), MAX_DIMENSION));
+        if points[0].dim() > MAX_REQUEST_DIMENSION {
+            return Err(too_large("dimension", points[0].dim(), MAX_REQUEST_DIMENSION));
         }
         self.in_field(name, BezierCurve::new(points))
     }
@@ -218,8 +218,8 @@ fn floats_from_json(v: &Value) -> Result<Vec<f64>> {
             describe(v)
         ))
     })?;
-    if items.len() > MAX_DIMENSION {
-        return Err(too_large("dimension", items.len(), MAX_DIMENSION));
+    if items.len() > MAX_REQUEST_DIMENSION {
+        return Err(too_large("dimension", items.len(), MAX_REQUEST_DIMENSION));
     }
     items
         .iter()

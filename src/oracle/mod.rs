@@ -17,7 +17,7 @@
 //! # Protocol
 //!
 //! Requests are JSON objects with an `"op"` and the op's fields; an `"id"` (any JSON value)
-//! is echoed in the response. Numbers follow [`crate::input`]: strings (`"1/3"`, `"0.25"`,
+//! is echoed in the response. Numbers follow [`number_from_json`]: strings (`"1/3"`, `"0.25"`,
 //! `"1e-3"`) are exact, JSON numbers are exactly the `f64` they parse to. Exact results are
 //! strings in lowest terms. Every response has `"ok"`; failures carry `"error"`. Unknown
 //! fields are errors (a misspelt optional field would otherwise be silently ignored), and so
@@ -77,11 +77,11 @@
 //! within the limit); an id anywhere else cannot be read without the whole line, so the
 //! answer has none: a client that pipelines large requests puts the id first. Curves
 //! have at most [`MAX_POINTS`] points, degrees stay at most [`MAX_DEGREE`] (after elevation
-//! too), points at most [`MAX_DIMENSION`] coordinates; numbers at most
+//! too), points at most [`MAX_REQUEST_DIMENSION`] coordinates; numbers at most
 //! [`crate::scalar::MAX_NUMBER_LEN`] characters and decimal exponents within
 //! ±[`crate::scalar::MAX_DECIMAL_EXPONENT`]. Exact arithmetic grows numbers, so each request
 //! is also given a work estimate ([`Op::work`], roughly Σ bits² over its rational
-//! operations) which must stay below [`MAX_WORK`]; beyond it the request is refused before
+//! operations) which must stay below [`MAX_REQUEST_WORK`]; beyond it the request is refused before
 //! any computation.
 
 mod batch;
@@ -92,6 +92,7 @@ mod json;
 mod judge;
 mod protocol;
 mod text;
+mod values;
 
 pub use crate::float::{nearest_f64, ulp, ulp_distance, ulp_error, UlpError};
 pub use batch::MAX_BATCH;
@@ -99,6 +100,9 @@ pub use io::{read_line_bounded, serve, skip_line, Line, READ_CHUNK_BYTES};
 pub use judge::{judge_float, BoundCheck, FloatEvalAnswer, FloatMethod};
 pub use protocol::{check_weight_count, Answer, Op, OPS};
 pub use text::conic_polynomial;
+pub use values::{
+    net_from_json, number_from_json, number_to_json, point_from_json, point_to_json, points_from_json, points_to_json,
+};
 
 use serde_json::{json, Map, Value};
 
@@ -111,8 +115,9 @@ pub const MAX_POINTS: usize = 4097;
 /// Highest degree of any input or result (after elevation too).
 pub use crate::error::MAX_DEGREE;
 
-/// Most coordinates per point.
-pub const MAX_DIMENSION: usize = 64;
+/// Most coordinates per point of a request (points built by the library itself may have up
+/// to [`crate::MAX_DIMENSION`]).
+pub const MAX_REQUEST_DIMENSION: usize = 64;
 
 /// Largest work estimate ([`Op::work`]) a request may have.
 ///
@@ -123,7 +128,7 @@ pub const MAX_DIMENSION: usize = 64;
 /// scale: `split` of a planar curve of one-digit integers at `t = 1/3` is admitted up to
 /// degree 173, `eval` up to degree 3563, and with float inputs `rational_eval` up to
 /// degree 905.
-pub const MAX_WORK: f64 = 5.0e11;
+pub const MAX_REQUEST_WORK: f64 = crate::work::HALF_SECOND;
 
 /// Answers one request line with one response line (no newline).
 ///
@@ -307,9 +312,9 @@ fn has_inexact_number(v: &Value) -> bool {
 
 #[cfg(test)]
 mod tests {
+    use super::values::number_to_json;
     use super::*;
     use crate::curve::BezierCurve;
-    use crate::input::number_to_json;
     use crate::scalar::parse_exact;
     use num_bigint::BigInt;
     use num_rational::BigRational;
@@ -751,7 +756,7 @@ mod tests {
         assert!(Op::from_json(&json!({"op": "elevate", "points": cubic, "by": 4093})).is_ok());
         // the everyday case (degree 20 at a float) is well below the limit
         let op = planar(21, json!(0.1)).unwrap();
-        assert!(op.work() < MAX_WORK / 30.0, "{}", op.work());
+        assert!(op.work() < MAX_REQUEST_WORK / 30.0, "{}", op.work());
     }
 
     #[test]

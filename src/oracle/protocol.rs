@@ -4,12 +4,12 @@ use super::judge::{
     curve_bounds, float_eval, float_json, rational_bounds, surface_bounds, ulps_json, BoundCheck, FloatEvalAnswer,
     FloatMethod,
 };
-use super::{MAX_DEGREE, MAX_DIMENSION, MAX_POINTS, MAX_WORK};
+use super::values::{number_to_json, point_to_json, points_to_json};
+use super::{MAX_DEGREE, MAX_POINTS, MAX_REQUEST_DIMENSION, MAX_REQUEST_WORK};
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::fit::{fit_cubic, CubicFit, CubicFitData};
 use crate::float::{eval_dyadic, ulp_error, UlpError};
-use crate::input::{number_to_json, point_to_json, points_to_json};
 use crate::point::Point;
 use crate::rational::{classify_conic, implicit_conic, ConicKind, RationalBezierCurve};
 use crate::surface::BezierSurface;
@@ -227,8 +227,8 @@ impl Op {
             if c.points().len() > MAX_POINTS {
                 return Err(too_large("number of points", c.points().len(), MAX_POINTS));
             }
-            if c.dim() > MAX_DIMENSION {
-                return Err(too_large("dimension", c.dim(), MAX_DIMENSION));
+            if c.dim() > MAX_REQUEST_DIMENSION {
+                return Err(too_large("dimension", c.dim(), MAX_REQUEST_DIMENSION));
             }
             Ok(())
         };
@@ -252,8 +252,8 @@ impl Op {
                 if curve.points().len() > MAX_POINTS {
                     return Err(too_large("number of points", curve.points().len(), MAX_POINTS));
                 }
-                if curve.dim() > MAX_DIMENSION {
-                    return Err(too_large("dimension", curve.dim(), MAX_DIMENSION));
+                if curve.dim() > MAX_REQUEST_DIMENSION {
+                    return Err(too_large("dimension", curve.dim(), MAX_REQUEST_DIMENSION));
                 }
             }
             Op::SurfaceEval { surface, .. } => {
@@ -265,21 +265,21 @@ impl Op {
                         MAX_POINTS,
                     ));
                 }
-                if surface.dim() > MAX_DIMENSION {
-                    return Err(too_large("dimension", surface.dim(), MAX_DIMENSION));
+                if surface.dim() > MAX_REQUEST_DIMENSION {
+                    return Err(too_large("dimension", surface.dim(), MAX_REQUEST_DIMENSION));
                 }
             }
             Op::FitCubic { data } => {
-                if data.x0.dim() > MAX_DIMENSION {
-                    return Err(too_large("dimension", data.x0.dim(), MAX_DIMENSION));
+                if data.x0.dim() > MAX_REQUEST_DIMENSION {
+                    return Err(too_large("dimension", data.x0.dim(), MAX_REQUEST_DIMENSION));
                 }
             }
             Op::ToBezier { power } => {
                 if power.is_empty() {
                     return Err(Error::Empty("a power-basis curve (no coordinates)"));
                 }
-                if power.len() > MAX_DIMENSION {
-                    return Err(too_large("dimension", power.len(), MAX_DIMENSION));
+                if power.len() > MAX_REQUEST_DIMENSION {
+                    return Err(too_large("dimension", power.len(), MAX_REQUEST_DIMENSION));
                 }
                 let len = power[0].len();
                 if len == 0 {
@@ -298,11 +298,11 @@ impl Op {
         }
         let work = self.work();
         // NaN cannot arise (finite sums of squares), but would be refused too
-        if work.is_nan() || work > MAX_WORK {
+        if work.is_nan() || work > MAX_REQUEST_WORK {
             return Err(Error::TooLarge {
                 what: "request (estimated exact work)",
                 value: format!("{work:.2e}"),
-                limit: format!("{MAX_WORK:.0e}; use fewer points, a lower degree or shorter numbers"),
+                limit: format!("{MAX_REQUEST_WORK:.0e}; use fewer points, a lower degree or shorter numbers"),
             });
         }
         Ok(())

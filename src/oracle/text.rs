@@ -7,7 +7,7 @@ use num_traits::Signed;
 
 impl Answer {
     /// The answer as text for people, in exact fractions; lists of points are written so
-    /// that [`crate::input::parse_points`] reads them back.
+    /// that [`crate::parse_points`] reads them back.
     pub fn to_text(&self) -> String {
         match self {
             Answer::Point { point, .. } => point.to_string(),

@@ -9,8 +9,8 @@
 use casteljau::float::{
     binomials, error_at_most, eval_dyadic, gamma_exact, nearest_f64, power_coefficients, UNIT_ROUNDOFF,
 };
-use casteljau::interval::{filtered_orientation, interval_de_casteljau, Interval};
 use casteljau::oracle::FloatMethod;
+use casteljau::{filtered_orientation, interval_de_casteljau, Interval};
 use casteljau::{BezierCurve, BigRational};
 use num_traits::{One, Signed, Zero};
 
