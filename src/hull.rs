@@ -138,6 +138,7 @@ fn choose(n: u128, k: u128) -> u128 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scalar::Ring;
     use num_rational::BigRational;
     type Q = BigRational;
 

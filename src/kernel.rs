@@ -6,7 +6,7 @@
 //! It works in place on a column of points and never allocates; [`with_column`] gives it a
 //! buffer on the stack for the polygons met in practice.
 
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::{RefOps, Ring, Scalar};
 use crate::space::VectorSpace;
 
 /// Points kept on the stack by [`with_column`]; longer polygons use one heap buffer.

@@ -59,7 +59,7 @@ pub use num_bigint::BigInt;
 pub use num_rational::BigRational;
 pub use param::{ParamCurve, ParamCurveDeriv};
 pub use point::{AffineMap, Point, Vector};
-pub use scalar::{RefOps, Scalar};
+pub use scalar::{RefOps, Ring, Scalar};
 pub use space::{Point2, Point3, PointN, VectorSpace};
 
 // --- rational curves, conics, quadratic irrationals

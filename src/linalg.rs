@@ -428,6 +428,7 @@ where
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scalar::Ring;
     use num_rational::BigRational;
     type Q = BigRational;
     fn q(n: i64) -> Q {

@@ -4,7 +4,7 @@
 //! iso-curves of surfaces) and rational ones ([`crate::RationalBezierCurve`]).
 
 use crate::error::Result;
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::{RefOps, Ring, Scalar};
 
 /// A parametric curve `t ↦ x(t)`.
 pub trait ParamCurve: Sized {

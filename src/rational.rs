@@ -41,7 +41,7 @@ use crate::error::{check_degree, Error, Result, MAX_DIMENSION};
 use crate::kernel::{casteljau_step, with_column};
 use crate::point::{common_dimension, Point};
 use crate::quadratic::QuadraticIrrational;
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::{RefOps, Ring, Scalar};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;

@@ -699,6 +699,7 @@ impl<T: fmt::Display> fmt::Display for BezierSurface<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scalar::Ring;
     use num_rational::BigRational;
     type Q = BigRational;
 

@@ -10,7 +10,7 @@ use casteljau::strategies::{
     affine_weights, exact_affine_map, exact_curve, exact_point, exact_points, large_exact_curve, small_rational,
     unit_parameter, wide_parameter,
 };
-use casteljau::{AffineMap, BezierCurve, BigRational, Error, Point, Scalar};
+use casteljau::{AffineMap, BezierCurve, BigRational, Error, Point, Ring, Scalar};
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 

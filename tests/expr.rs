@@ -3,7 +3,7 @@
 use casteljau::bernstein::{bernstein, eval_power};
 use casteljau::verify::eval::{Evaluator, Value, VarEnv};
 use casteljau::verify::expr::{parse, Expr};
-use casteljau::{BigRational, Scalar};
+use casteljau::{BigRational, Ring, Scalar};
 use proptest::prelude::*;
 use std::collections::BTreeMap;
 

@@ -10,7 +10,7 @@ use casteljau::fit::{
     uniform_params, CubicFitData, FitConstraints,
 };
 use casteljau::linalg::{determinant, inverse, mat_mul, solve};
-use casteljau::{BezierCurve, BigRational, Error, Point, Scalar};
+use casteljau::{BezierCurve, BigRational, Error, Point, Ring, Scalar};
 use proptest::prelude::*;
 
 type Q = BigRational;

@@ -2,7 +2,7 @@
 //! it only when the interval straddles zero (counted).
 
 use casteljau::interval::{filter_stats, filtered_conic_kind, filtered_hull_contains, filtered_orientation};
-use casteljau::{classify_conic, BigRational, Point, RationalBezierCurve, Scalar};
+use casteljau::{classify_conic, BigRational, Point, RationalBezierCurve, Ring, Scalar};
 use std::cmp::Ordering;
 
 fn exact_orientation(p: [f64; 2], q: [f64; 2], r: [f64; 2]) -> Ordering {

@@ -4,7 +4,7 @@
 
 use casteljau::bernstein::{bernstein, binomial};
 use casteljau::surface::{enneper_net, enneper_power, BezierSurface, EnneperMatch};
-use casteljau::{AffineMap, BigRational, Error, Point, Scalar};
+use casteljau::{AffineMap, BigRational, Error, Point, Ring, Scalar};
 use proptest::prelude::*;
 
 type Q = BigRational;

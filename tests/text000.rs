@@ -6,7 +6,7 @@
 use casteljau::bernstein::{bernstein, power_to_bernstein, reparametrize};
 use casteljau::hull::{convex_weights, hull_contains};
 use casteljau::point::{barycentric, linear_combination};
-use casteljau::{BezierCurve, BigRational, Error, Point, Scalar};
+use casteljau::{BezierCurve, BigRational, Error, Point, Ring, Scalar};
 
 type Q = BigRational;
 

@@ -11,7 +11,7 @@ use super::Verdict;
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::point::Point;
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::{RefOps, Ring, Scalar};
 use crate::surface::BezierSurface;
 use num_rational::BigRational;
 use std::collections::{BTreeMap, BTreeSet};

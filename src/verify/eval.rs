@@ -9,24 +9,18 @@
 use super::expr::{check_index, eval_int, Expr, Op, MAX_SUM_TERMS};
 use crate::bernstein::binomial_signed;
 use crate::error::{Error, Result};
+use crate::scalar::Ring;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 use std::collections::BTreeMap;
 use std::fmt;
 
-/// What the evaluator computes in: a commutative ring with a checked division.
-pub trait Alg: Clone + fmt::Debug + fmt::Display {
+/// What the evaluator computes in: a [`Ring`] with the rational constants, a checked
+/// division and a decidable (or undecidable) equality.
+pub trait Alg: Ring {
     /// The rational constant `r`.
     fn from_rat(r: &BigRational) -> Self;
-    /// `self + o`
-    fn add(&self, o: &Self) -> Self;
-    /// `self - o`
-    fn sub(&self, o: &Self) -> Self;
-    /// `self * o`
-    fn mul(&self, o: &Self) -> Self;
-    /// `-self`
-    fn neg(&self) -> Self;
     /// `self / o`; an error when `o` is zero.
     fn div(&self, o: &Self) -> Result<Self>;
     /// `√r` of a rational constant; an error when it is not in this algebra.
@@ -40,9 +34,25 @@ pub trait Alg: Clone + fmt::Debug + fmt::Display {
         bernstein_formula(i, n, self)
     }
 
-    /// The integer `n`.
+    /// The integer `n` ([`Ring::from_i64`] under the evaluator's name).
     fn from_int(n: i64) -> Self {
-        Self::from_rat(&BigRational::from_integer(n.into()))
+        Self::from_i64(n)
+    }
+    /// `self + o` ([`Ring::add_ref`] under the evaluator's name).
+    fn add(&self, o: &Self) -> Self {
+        self.add_ref(o)
+    }
+    /// `self - o` ([`Ring::sub_ref`] under the evaluator's name).
+    fn sub(&self, o: &Self) -> Self {
+        self.sub_ref(o)
+    }
+    /// `self * o` ([`Ring::mul_ref`] under the evaluator's name).
+    fn mul(&self, o: &Self) -> Self {
+        self.mul_ref(o)
+    }
+    /// `-self` ([`Ring::neg_ref`] under the evaluator's name).
+    fn neg(&self) -> Self {
+        self.neg_ref()
     }
     /// The big integer `n`.
     fn from_bigint(n: &BigInt) -> Self {
@@ -52,19 +62,19 @@ pub trait Alg: Clone + fmt::Debug + fmt::Display {
     fn pow(&self, k: i64) -> Result<Self> {
         check_index(k)?;
         let mut base = self.clone();
-        let mut acc = Self::from_int(1);
+        let mut acc = Self::one();
         let mut e = k.unsigned_abs();
         while e > 0 {
             if e & 1 == 1 {
-                acc = acc.mul(&base);
+                acc = acc.mul_ref(&base);
             }
             e >>= 1;
             if e > 0 {
-                base = base.mul(&base);
+                base = base.mul_ref(&base);
             }
         }
         if k < 0 {
-            Self::from_int(1).div(&acc)
+            Self::one().div(&acc)
         } else {
             Ok(acc)
         }
@@ -93,18 +103,6 @@ impl Alg for BigRational {
     fn from_rat(r: &BigRational) -> Self {
         r.clone()
     }
-    fn add(&self, o: &Self) -> Self {
-        self + o
-    }
-    fn sub(&self, o: &Self) -> Self {
-        self - o
-    }
-    fn mul(&self, o: &Self) -> Self {
-        self * o
-    }
-    fn neg(&self) -> Self {
-        -self
-    }
     fn div(&self, o: &Self) -> Result<Self> {
         if o.is_zero() {
             return Err(Error::DivisionByZero(format!("{self} / 0")));
@@ -132,18 +130,6 @@ impl Alg for crate::exact::SmallRational {
     fn from_rat(r: &BigRational) -> Self {
         r.into()
     }
-    fn add(&self, o: &Self) -> Self {
-        self + o
-    }
-    fn sub(&self, o: &Self) -> Self {
-        self - o
-    }
-    fn mul(&self, o: &Self) -> Self {
-        self * o
-    }
-    fn neg(&self) -> Self {
-        -self
-    }
     fn div(&self, o: &Self) -> Result<Self> {
         crate::scalar::Scalar::checked_div(self, o)
     }
@@ -152,9 +138,6 @@ impl Alg for crate::exact::SmallRational {
     }
     fn equals(&self, o: &Self) -> Option<bool> {
         Some(self == o)
-    }
-    fn from_int(n: i64) -> Self {
-        Self::from_int(n)
     }
     fn from_bigint(n: &BigInt) -> Self {
         BigRational::from_integer(n.clone()).into()
@@ -174,18 +157,6 @@ impl Alg for crate::exact::SmallRational {
 impl Alg for crate::quadratic::QuadraticIrrational {
     fn from_rat(r: &BigRational) -> Self {
         crate::quadratic::QuadraticIrrational::rational(r.clone())
-    }
-    fn add(&self, o: &Self) -> Self {
-        self + o
-    }
-    fn sub(&self, o: &Self) -> Self {
-        self - o
-    }
-    fn mul(&self, o: &Self) -> Self {
-        self * o
-    }
-    fn neg(&self) -> Self {
-        -self
     }
     fn div(&self, o: &Self) -> Result<Self> {
         crate::scalar::Scalar::checked_div(self, o)
@@ -300,11 +271,17 @@ impl fmt::Display for Deg {
     }
 }
 
-impl Alg for Deg {
-    fn from_rat(_: &BigRational) -> Self {
+impl Ring for Deg {
+    fn zero() -> Self {
         Deg::default()
     }
-    fn add(&self, o: &Self) -> Self {
+    fn one() -> Self {
+        Deg::default()
+    }
+    fn from_i64(_: i64) -> Self {
+        Deg::default()
+    }
+    fn add_ref(&self, o: &Self) -> Self {
         self.zip(o, self.poly.max(o.poly), |(na, da), (nb, db)| {
             if da == 0 && db == 0 {
                 (na.max(nb), 0)
@@ -313,18 +290,24 @@ impl Alg for Deg {
             }
         })
     }
-    fn sub(&self, o: &Self) -> Self {
-        self.add(o)
+    fn sub_ref(&self, o: &Self) -> Self {
+        self.add_ref(o)
     }
-    fn mul(&self, o: &Self) -> Self {
+    fn mul_ref(&self, o: &Self) -> Self {
         self.zip(
             o,
             self.poly.saturating_add(o.poly).min(DEG_LIMIT),
             |(na, da), (nb, db)| (na.saturating_add(nb), da.saturating_add(db)),
         )
     }
-    fn neg(&self) -> Self {
+    fn neg_ref(&self) -> Self {
         self.clone()
+    }
+}
+
+impl Alg for Deg {
+    fn from_rat(_: &BigRational) -> Self {
+        Deg::default()
     }
     fn div(&self, o: &Self) -> Result<Self> {
         if o.poly > 0 {
@@ -1011,7 +994,7 @@ fn integral<A: Alg>(ev: &mut Evaluator<'_, A>, e: &Expr, args: &[Expr]) -> Resul
     for (exp, c) in f.num.terms_list() {
         let k = exp[0] as usize;
         if coeffs.len() <= k + 1 {
-            coeffs.resize(k + 2, BigRational::zero());
+            coeffs.resize(k + 2, <BigRational as Zero>::zero());
         }
         coeffs[k + 1] = c / (&den * BigRational::from_integer(BigInt::from(k + 1)));
     }

@@ -14,7 +14,7 @@ use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::exact::SmallRational;
 use crate::point::{AffineMap, Point};
-use crate::scalar::Scalar;
+use crate::scalar::{Ring, Scalar};
 use crate::RefOps;
 
 /// The exact numbers of these checks: machine words while values fit (most do), big
