@@ -5,7 +5,7 @@
 //! speed. The exact path doubles as a regression oracle for float code.
 //!
 //! ```
-//! use casteljau::{BezierCurve, BigRational, Scalar};
+//! use casteljau::{BezierCurve, BigRational, Ring, Scalar};
 //! let curve: BezierCurve<BigRational> = BezierCurve::from_ints(&[&[0, 0], &[1, 2], &[3, 2], &[4, 0]]).unwrap();
 //! let half = BigRational::from_ratio(1, 2).unwrap();
 //! let (left, right) = curve.split_at(&half);

@@ -33,7 +33,7 @@
 //! read back; `√` is accepted on input too (`3 - 2√2`).
 //!
 //! ```
-//! use casteljau::{QuadraticIrrational, Scalar, BigRational};
+//! use casteljau::{QuadraticIrrational, Ring, Scalar, BigRational};
 //! let r2 = QuadraticIrrational::sqrt(2).unwrap();
 //! let x = QuadraticIrrational::from_i64(3) - &(&QuadraticIrrational::from_i64(2) * &r2);
 //! assert_eq!(x.to_string(), "3 - 2*sqrt(2)");
@@ -153,7 +153,7 @@ impl QuadraticIrrational {
     /// `sqrt(0) = 0`, `sqrt(-4) = 2√-1`.
     ///
     /// ```
-    /// use casteljau::{QuadraticIrrational, Scalar};
+    /// use casteljau::{QuadraticIrrational, Ring, Scalar};
     /// let s8 = QuadraticIrrational::sqrt(8).unwrap();
     /// assert_eq!(s8.to_string(), "2*sqrt(2)");
     /// assert_eq!(&s8 * &s8, QuadraticIrrational::from_i64(8));

@@ -38,7 +38,7 @@
 use crate::curve::BezierCurve;
 use crate::error::{MAX_DEGREE, MAX_DIMENSION};
 use crate::point::{AffineMap, Point};
-use crate::scalar::{RefOps, Ring, Scalar};
+use crate::scalar::{Ring, Scalar};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use proptest::prelude::*;
@@ -154,7 +154,6 @@ pub fn f64_coordinate(max_abs: f64) -> BoxedStrategy<f64> {
 pub fn point_with<T, S>(coord: S, dim: usize) -> BoxedStrategy<Point<T>>
 where
     T: Scalar,
-    for<'a> &'a T: RefOps<T>,
     S: Strategy<Value = T> + 'static,
 {
     assert!(
@@ -189,7 +188,6 @@ pub fn curve_with<T, S>(
 ) -> BoxedStrategy<BezierCurve<T>>
 where
     T: Scalar,
-    for<'a> &'a T: RefOps<T>,
     S: Strategy<Value = T> + Clone + 'static,
 {
     assert!(!degrees.is_empty(), "curve_with: empty degree range {degrees:?}");

@@ -12,7 +12,7 @@
 //! [`BigRational`] stays the type users exchange: convert with `From` both ways.
 //!
 //! ```
-//! use casteljau::{BigRational, Scalar, SmallRational};
+//! use casteljau::{BigRational, Ring, Scalar, SmallRational};
 //! let third = SmallRational::from_ratio(1, 3).unwrap();
 //! assert_eq!(&third + &third + &third, SmallRational::one());
 //! // Past i64 the value moves to a big integer, exactly.

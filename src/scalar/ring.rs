@@ -9,8 +9,8 @@ use std::fmt::{Debug, Display};
 ///
 /// The arithmetic is a method on `&self` (`a.mul_ref(&b)`) so that generic code needs no
 /// bound on `&T`: a bound like `for<'a> &'a T: Mul<&'a T>` is not implied by any trait of
-/// `T` and would have to be repeated on every generic item. Number types get their operators
-/// (`&a * &b`, `a += &b`, ...) from these methods by one macro, [`forward_ring_ops!`].
+/// `T` and would have to be repeated on every generic item. casteljau's own number types get
+/// their operators (`&a * &b`, `a += &b`, ...) from these methods, by one macro.
 ///
 /// ```
 /// use casteljau::{BigRational, Ring};
@@ -19,8 +19,6 @@ use std::fmt::{Debug, Display};
 /// assert_eq!(half.sub_ref(&half).neg_ref(), <BigRational as Ring>::zero());
 /// assert_eq!(<f64 as Ring>::from_i64(3).mul_ref(&0.5), 1.5);
 /// ```
-///
-/// [`forward_ring_ops!`]: crate::scalar
 pub trait Ring: Clone + Debug + Display {
     /// The additive identity.
     fn zero() -> Self;

@@ -9,6 +9,7 @@
 use super::expr::{check_index, eval_int, Expr, Op, MAX_SUM_TERMS};
 use crate::bernstein::binomial_signed;
 use crate::error::{Error, Result};
+use crate::linalg::{self, dot};
 use crate::scalar::Ring;
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -527,87 +528,9 @@ impl<A: Alg> Value<A> {
     }
 }
 
-fn dot<A: Alg>(a: &[A], b: &[A]) -> A {
-    let mut acc = A::from_int(0);
-    for (x, y) in a.iter().zip(b) {
-        acc = acc.add(&x.mul(y));
-    }
-    acc
-}
-
 /// Largest matrix `det` and `inv` accept: Berkowitz's algorithm takes O(n⁴) products, so a
 /// 16 × 16 matrix costs about 65,000 per evaluation.
 pub const MAX_MATRIX: usize = 16;
-
-/// The determinant. Laplace expansion up to 4 × 4 (at most 24 products, and the tightest
-/// degree bounds in the degree algebra); beyond, Berkowitz's division-free algorithm, so that
-/// every algebra (degree bounds included) gets it from ring operations alone.
-fn det<A: Alg>(m: &[Vec<A>]) -> A {
-    if m.len() > 4 {
-        let p = berkowitz(m);
-        let last = p[m.len()].clone();
-        return if m.len() % 2 == 0 { last } else { last.neg() };
-    }
-    laplace_det(m)
-}
-
-/// The coefficients `1, p_1, …, p_n` of `det(xI − M) = x^n + p_1 x^{n−1} + … + p_n`, by the
-/// Samuelson–Berkowitz recursion: with `M = [a R; C M₁]`, the vector is the lower-triangular
-/// Toeplitz matrix of `1, −a, −RC, −RM₁C, …, −RM₁^{n−2}C` times the vector of `M₁`.
-fn berkowitz<A: Alg>(m: &[Vec<A>]) -> Vec<A> {
-    let n = m.len();
-    if n == 0 {
-        return vec![A::from_int(1)];
-    }
-    let a = &m[0][0];
-    let row = &m[0][1..];
-    let sub: Vec<Vec<A>> = m[1..].iter().map(|r| r[1..].to_vec()).collect();
-    let mut column: Vec<A> = m[1..].iter().map(|r| r[0].clone()).collect();
-    let mut diagonals = vec![A::from_int(1), a.neg()];
-    for k in 0..n.saturating_sub(1) {
-        if k > 0 {
-            column = sub.iter().map(|r| dot(r, &column)).collect();
-        }
-        diagonals.push(dot(row, &column).neg());
-    }
-    let inner = berkowitz(&sub);
-    (0..=n)
-        .map(|i| {
-            let mut acc = A::from_int(0);
-            for (j, v) in inner.iter().enumerate().take(i + 1) {
-                acc = acc.add(&diagonals[i - j].mul(v));
-            }
-            acc
-        })
-        .collect()
-}
-
-fn laplace_det<A: Alg>(m: &[Vec<A>]) -> A {
-    match m.len() {
-        0 => A::from_int(1),
-        1 => m[0][0].clone(),
-        2 => m[0][0].mul(&m[1][1]).sub(&m[0][1].mul(&m[1][0])),
-        n => {
-            // Laplace expansion along the first row (matrices here are tiny).
-            let mut acc = A::from_int(0);
-            for j in 0..n {
-                let minor: Vec<Vec<A>> = m[1..]
-                    .iter()
-                    .map(|r| {
-                        r.iter()
-                            .enumerate()
-                            .filter(|(k, _)| *k != j)
-                            .map(|(_, x)| x.clone())
-                            .collect()
-                    })
-                    .collect();
-                let term = m[0][j].mul(&laplace_det(&minor));
-                acc = if j % 2 == 0 { acc.add(&term) } else { acc.sub(&term) };
-            }
-            acc
-        }
-    }
-}
 
 /// What the names of a claim mean in one algebra.
 pub trait Env<A: Alg> {
@@ -837,7 +760,7 @@ impl<'e, A: Alg> Evaluator<'e, A> {
                         )))
                     }
                 };
-                let d = det(&m);
+                let d = linalg::determinant_division_free(&m);
                 if name == "det" {
                     Value::S(d)
                 } else {
@@ -1007,84 +930,23 @@ fn integral<A: Alg>(ev: &mut Evaluator<'_, A>, e: &Expr, args: &[Expr]) -> Resul
     Ok(at(&b).sub(&at(&a)))
 }
 
+/// The transpose of a matrix value.
 fn transpose<A: Alg>(v: Value<A>) -> Result<Value<A>> {
     match v {
-        Value::M(m) => {
-            let cols = m.first().map_or(0, Vec::len);
-            Ok(Value::M(
-                (0..cols).map(|j| m.iter().map(|r| r[j].clone()).collect()).collect(),
-            ))
-        }
+        // `cols()` of no vectors: the empty matrix is its own transpose.
+        Value::M(m) if m.is_empty() => Ok(Value::M(m)),
+        Value::M(m) => linalg::transpose(&m).map(Value::M),
         other => Err(Error::Domain(format!("transpose of {}", other.shape()))),
     }
 }
 
+/// `M⁻¹ = adj(M) / det M`, entry by entry (a zero `d` is the first division's error).
 fn inverse<A: Alg>(m: &[Vec<A>], d: &A) -> Result<Value<A>> {
-    let n = m.len();
-    if n > 4 {
-        return inverse_cayley_hamilton(m, d);
-    }
-    let mut out = vec![vec![A::from_int(0); n]; n];
-    for (i, row) in out.iter_mut().enumerate() {
-        for (j, cell) in row.iter_mut().enumerate() {
-            // inverse[i][j] = cofactor(j, i) / det
-            let minor: Vec<Vec<A>> = m
-                .iter()
-                .enumerate()
-                .filter(|(r, _)| *r != j)
-                .map(|(_, r)| {
-                    r.iter()
-                        .enumerate()
-                        .filter(|(c, _)| *c != i)
-                        .map(|(_, x)| x.clone())
-                        .collect()
-                })
-                .collect();
-            let c = det(&minor);
-            let c = if (i + j) % 2 == 0 { c } else { c.neg() };
-            *cell = c.div(d)?;
-        }
-    }
-    Ok(Value::M(out))
-}
-
-/// `M⁻¹ = adj(M) / det M` with `adj(M) = (−1)^{n+1} (M^{n−1} + p_1 M^{n−2} + … + p_{n−1} I)`
-/// (Cayley–Hamilton, the `p_k` from [`berkowitz`]), by Horner's rule: O(n⁴) products.
-fn inverse_cayley_hamilton<A: Alg>(m: &[Vec<A>], d: &A) -> Result<Value<A>> {
-    let n = m.len();
-    let p = berkowitz(m);
-    let identity = |c: &A| -> Vec<Vec<A>> {
-        (0..n)
-            .map(|i| {
-                (0..n)
-                    .map(|j| if i == j { c.clone() } else { A::from_int(0) })
-                    .collect()
-            })
-            .collect()
-    };
-    let mut acc = identity(&A::from_int(1));
-    for pk in &p[1..n] {
-        let mut next = identity(pk);
-        for (i, row) in next.iter_mut().enumerate() {
-            for (j, cell) in row.iter_mut().enumerate() {
-                for (k, mk) in m[i].iter().enumerate() {
-                    *cell = cell.add(&mk.mul(&acc[k][j]));
-                }
-            }
-        }
-        acc = next;
-    }
-    let sign_odd = n % 2 == 0; // (−1)^{n+1} is −1 for even n
-    let mut out = Vec::with_capacity(n);
-    for row in acc {
-        let mut r = Vec::with_capacity(n);
-        for x in row {
-            let x = if sign_odd { x.neg() } else { x };
-            r.push(x.div(d)?);
-        }
-        out.push(r);
-    }
-    Ok(Value::M(out))
+    let inverse = linalg::adjugate(m)
+        .into_iter()
+        .map(|row| row.iter().map(|x| x.div(d)).collect::<Result<Vec<_>>>())
+        .collect::<Result<_>>()?;
+    Ok(Value::M(inverse))
 }
 
 #[cfg(test)]
@@ -1110,65 +972,6 @@ mod tests {
         Evaluator::new(&env, BTreeMap::new())
             .scalar(&parse(s, &[]).unwrap())
             .unwrap()
-    }
-
-    /// A deterministic matrix of small fractions, different for each `seed`.
-    fn matrix(n: usize, seed: u64) -> Vec<Vec<BigRational>> {
-        let mut state = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
-        (0..n)
-            .map(|_| {
-                (0..n)
-                    .map(|_| q((next() % 19) as i64 - 9, (next() % 5) as i64 + 1))
-                    .collect()
-            })
-            .collect()
-    }
-
-    #[test]
-    fn berkowitz_agrees_with_laplace_and_inverts() {
-        for n in 0..=7 {
-            for seed in 0..6 {
-                let m = matrix(n, seed + 100 * n as u64);
-                let p = berkowitz(&m);
-                let det_b = if n % 2 == 0 { p[n].clone() } else { -p[n].clone() };
-                assert_eq!(det_b, laplace_det(&m), "n = {n}, seed {seed}");
-                if n == 0 || det_b == q(0, 1) {
-                    continue;
-                }
-                let Value::M(inv) = inverse_cayley_hamilton(&m, &det_b).unwrap() else {
-                    panic!("a matrix")
-                };
-                for (i, row) in m.iter().enumerate() {
-                    for j in 0..n {
-                        let entry: BigRational = row.iter().zip(&inv).map(|(x, r)| x * &r[j]).sum();
-                        assert_eq!(entry, q(i64::from(i == j), 1), "M·M⁻¹ at ({i}, {j}), n = {n}");
-                    }
-                }
-            }
-        }
-        // A Vandermonde determinant: the product of the differences.
-        let xs = [q(1, 2), q(-2, 1), q(3, 1), q(5, 7), q(0, 1), q(4, 1)];
-        let v: Vec<Vec<BigRational>> = xs
-            .iter()
-            .map(|x| (0..xs.len()).map(|k| num_traits::pow(x.clone(), k)).collect())
-            .collect();
-        let mut expected = q(1, 1);
-        for j in 0..xs.len() {
-            for i in 0..j {
-                expected *= &xs[j] - &xs[i];
-            }
-        }
-        assert_eq!(det(&v), expected);
-        // A singular 5 × 5 matrix (two equal rows) has determinant 0, and inv refuses it.
-        let mut s = matrix(5, 7);
-        s[4] = s[1].clone();
-        assert_eq!(det(&s), q(0, 1));
     }
 
     #[test]

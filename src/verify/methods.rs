@@ -3,13 +3,12 @@
 //! bound (for the prover) live in one `impl`, matched exhaustively, so the two cannot drift
 //! apart: a new operation without a bound does not compile.
 
-use super::engine::Exact;
 use super::eval::{Alg, Deg, Evaluator};
 use super::expr::Expr;
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::point::Point;
-use crate::scalar::RefOps;
+use crate::scalar::Scalar;
 use crate::surface::BezierSurface;
 use num_rational::BigRational;
 use num_traits::Zero;
@@ -112,10 +111,7 @@ impl PolygonMethod {
     }
 
     /// The value, computed by the library on the polygon `coeffs` (one coordinate).
-    pub fn value<T: Exact>(self, coeffs: &[T], args: &[Expr], ev: &mut Evaluator<'_, T>) -> Result<T>
-    where
-        for<'a> &'a T: RefOps<T>,
-    {
+    pub fn value<T: Scalar + Alg>(self, coeffs: &[T], args: &[Expr], ev: &mut Evaluator<'_, T>) -> Result<T> {
         let pts = coeffs
             .iter()
             .map(|c| Point::new(vec![c.clone()]))
@@ -256,10 +252,7 @@ impl NetMethod {
     }
 
     /// The value, computed by the library on the net (one coordinate).
-    pub fn value<T: Exact>(self, net: &[Vec<T>], args: &[Expr], ev: &mut Evaluator<'_, T>) -> Result<T>
-    where
-        for<'a> &'a T: RefOps<T>,
-    {
+    pub fn value<T: Scalar + Alg>(self, net: &[Vec<T>], args: &[Expr], ev: &mut Evaluator<'_, T>) -> Result<T> {
         let pts: Vec<Vec<Point<T>>> = net
             .iter()
             .map(|r| r.iter().map(|c| Point::new(vec![c.clone()])).collect::<Result<_>>())
