@@ -446,21 +446,21 @@ impl<A: Alg> Value<A> {
     }
     /// `self + o`
     pub fn add(&self, o: &Value<A>) -> Result<Value<A>> {
-        self.zip(o, "add", A::add)
+        self.zip(o, "add", A::add_ref)
     }
     /// `self - o`
     pub fn sub(&self, o: &Value<A>) -> Result<Value<A>> {
-        self.zip(o, "subtract", A::sub)
+        self.zip(o, "subtract", A::sub_ref)
     }
     /// `-self`
     pub fn neg(&self) -> Value<A> {
-        self.map(A::neg)
+        self.map(A::neg_ref)
     }
     /// Products: scalar × anything, matrix × vector, matrix × matrix.
     pub fn mul(&self, o: &Value<A>) -> Result<Value<A>> {
         Ok(match (self, o) {
-            (Value::S(a), x) => x.map(|y| a.mul(y)),
-            (x, Value::S(b)) => x.map(|y| y.mul(b)),
+            (Value::S(a), x) => x.map(|y| a.mul_ref(y)),
+            (x, Value::S(b)) => x.map(|y| y.mul_ref(b)),
             (Value::M(m), Value::V(v)) => {
                 if m.first().map_or(0, Vec::len) != v.len() {
                     return Err(Error::Domain(format!(
@@ -715,7 +715,7 @@ impl<'e, A: Alg> Evaluator<'e, A> {
                 let (a, b) = (self.eval(&args[0])?, self.eval(&args[1])?);
                 match (&a, &b) {
                     (Value::V(x), Value::V(y)) if x.len() == y.len() => Value::S(dot(x, y)),
-                    (Value::S(x), Value::S(y)) => Value::S(x.mul(y)),
+                    (Value::S(x), Value::S(y)) => Value::S(x.mul_ref(y)),
                     _ => return Err(Error::Domain(format!("dot of {} and {}", a.shape(), b.shape()))),
                 }
             }
@@ -845,7 +845,7 @@ fn power_derivative<A: Alg>(g: &A, e: i64, k: i64) -> Result<A> {
     if ff.is_zero() {
         return Ok(A::from_int(0));
     }
-    Ok(A::from_bigint(&ff).mul(&g.pow(e - k)?))
+    Ok(A::from_bigint(&ff).mul_ref(&g.pow(e - k)?))
 }
 
 /// The `k`-th derivative of `B_i^n(g) = C(n,i) g^i (1-g)^(n-i)` with respect to `g`, by
@@ -854,17 +854,17 @@ fn bernstein_derivative<A: Alg>(i: i64, n: i64, g: &A, k: i64) -> Result<A> {
     if i < 0 || i > n {
         return Ok(A::from_int(0));
     }
-    let s = A::from_int(1).sub(g);
+    let s = A::from_int(1).sub_ref(g);
     let mut acc = A::from_int(0);
     for m in 0..=k {
         let left = power_derivative(g, i, m)?;
         let mut right = power_derivative(&s, n - i, k - m)?;
         if (k - m) % 2 == 1 {
-            right = right.neg(); // d/dg (1-g) = -1
+            right = right.neg_ref(); // d/dg (1-g) = -1
         }
-        acc = acc.add(&A::from_bigint(&binomial_signed(k, m)).mul(&left).mul(&right));
+        acc = acc.add_ref(&A::from_bigint(&binomial_signed(k, m)).mul_ref(&left).mul_ref(&right));
     }
-    Ok(A::from_bigint(&binomial_signed(n, i)).mul(&acc))
+    Ok(A::from_bigint(&binomial_signed(n, i)).mul_ref(&acc))
 }
 
 /// `B_i^n(g) = C(n,i) g^i (1-g)^(n-i)`, zero outside `0 ≤ i ≤ n`.
@@ -878,7 +878,7 @@ pub fn bernstein_formula<A: Alg>(i: i64, n: i64, g: &A) -> Result<A> {
         return Ok(A::from_int(0));
     }
     let c = A::from_bigint(&binomial_signed(n, i));
-    Ok(c.mul(&g.pow(i)?).mul(&A::from_int(1).sub(g).pow(n - i)?))
+    Ok(c.mul_ref(&g.pow(i)?).mul_ref(&A::from_int(1).sub_ref(g).pow(n - i)?))
 }
 
 /// `∫_a^b e dt` for an integrand that is a polynomial in `t` alone (and the integer ranges):
@@ -925,9 +925,9 @@ fn integral<A: Alg>(ev: &mut Evaluator<'_, A>, e: &Expr, args: &[Expr]) -> Resul
         coeffs
             .iter()
             .rev()
-            .fold(A::from_int(0), |acc, c| acc.mul(x).add(&A::from_rat(c)))
+            .fold(A::from_int(0), |acc, c| acc.mul_ref(x).add_ref(&A::from_rat(c)))
     };
-    Ok(at(&b).sub(&at(&a)))
+    Ok(at(&b).sub_ref(&at(&a)))
 }
 
 /// The transpose of a matrix value.
@@ -1009,7 +1009,7 @@ mod tests {
         assert_eq!(Deg::var("t").compose(3).poly, 0);
         assert_eq!(Deg::var("t").compose(3).times_control_point().poly, 1);
         // Composition multiplies the inner bounds; it never resets them.
-        let g = Deg::var("t").mul(&cp);
+        let g = Deg::var("t").mul_ref(&cp);
         let c = g.compose(2);
         assert_eq!((c.get("t"), c.poly), ((2, 0), 2));
         assert!(

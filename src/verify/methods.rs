@@ -8,7 +8,7 @@ use super::expr::Expr;
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::point::Point;
-use crate::scalar::Scalar;
+use crate::scalar::{Ring, Scalar};
 use crate::surface::BezierSurface;
 use num_rational::BigRational;
 use num_traits::Zero;
@@ -183,8 +183,8 @@ impl PolygonMethod {
             Self::Elevp | Self::Derivp => Deg::default(),
             Self::Left | Self::Right => {
                 let t0 = ev.scalar(&args[1])?.compose(n);
-                let deg = zero.split_at(&BigRational::zero()).0.degree() as u64;
-                t0.mul(&ev.scalar(&args[2])?.compose(deg))
+                let deg = zero.split_at(&<BigRational as Zero>::zero()).0.degree() as u64;
+                t0.mul_ref(&ev.scalar(&args[2])?.compose(deg))
             }
             Self::Leftp | Self::Rightp => ev.scalar(&args[1])?.compose(n),
             Self::Deriv => {
@@ -277,11 +277,11 @@ impl NetMethod {
         let d = match self {
             Self::Vfirst | Self::Sbsum | Self::Isou => {
                 let (u, v) = (ev.scalar(&args[1])?, ev.scalar(&args[2])?);
-                u.compose(m).mul(&v.compose(n))
+                u.compose(m).mul_ref(&v.compose(n))
             }
             Self::Isov => {
                 let (v0, u) = (ev.scalar(&args[1])?, ev.scalar(&args[2])?);
-                v0.compose(n).mul(&u.compose(m))
+                v0.compose(n).mul_ref(&u.compose(m))
             }
             Self::Bnd => ev.scalar(&args[2])?.compose(m.max(n)),
             Self::Corner => Deg::default(),

@@ -295,7 +295,7 @@ impl scalar::Ring for RatFunc {
         )
     }
     fn sub_ref(&self, o: &Self) -> Self {
-        self.add(&o.neg())
+        self.add_ref(&o.neg_ref())
     }
     fn mul_ref(&self, o: &Self) -> Self {
         RatFunc::normal(self.num.mul(&o.num), self.den.mul(&o.den))
