@@ -1,7 +1,7 @@
 //! Rational Bézier evaluation: f64 against exact BigRational and QuadraticIrrational, at
 //! degree 2 (a conic arc) and degree 6, plus the exact implicit equation of a conic.
 
-use casteljau::{implicit_conic, BigRational, Point, QuadraticIrrational, RationalBezierCurve, Scalar};
+use casteljau::{implicit_conic, BigRational, Point, QuadraticIrrational, RationalBezierCurve, Ring, Scalar};
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::time::Duration;
 

@@ -6,7 +6,7 @@
 //! `u = a + (b - a) t` ([`reparametrize`]) followed by [`power_to_bernstein`].
 
 use crate::error::{check_degree, Result};
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
 
@@ -52,10 +52,7 @@ pub fn binomial_row(n: usize) -> Vec<BigInt> {
 }
 
 /// `C(n, k)` as a scalar (an error for `f64` only when it does not fit).
-pub fn binomial_scalar<T: Scalar>(n: usize, k: usize) -> Result<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn binomial_scalar<T: Scalar>(n: usize, k: usize) -> Result<T> {
     T::from_bigint(&binomial(n, k))
 }
 
@@ -66,48 +63,39 @@ where
 /// let half = BigRational::from_ratio(1, 2).unwrap();
 /// assert_eq!(bernstein(1, 2, &half).unwrap(), half);
 /// ```
-pub fn bernstein<T: Scalar>(i: usize, n: usize, t: &T) -> Result<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn bernstein<T: Scalar>(i: usize, n: usize, t: &T) -> Result<T> {
     if i > n {
         return Ok(T::zero());
     }
-    let s = &T::one() - t;
+    let s = T::one().sub_ref(t);
     let c = binomial_scalar::<T>(n, i)?;
-    Ok(&(&c * &t.powi(i as u32)) * &s.powi((n - i) as u32))
+    Ok(c.mul_ref(&t.powi(i as u32)).mul_ref(&s.powi((n - i) as u32)))
 }
 
 /// All of `B_0^n(t), …, B_n^n(t)`, by the recurrence `B_i^n = (1-t) B_i^{n-1} + t B_{i-1}^{n-1}`
 /// (no binomials, so no overflow in `f64`).
-pub fn bernstein_all<T: Scalar>(n: usize, t: &T) -> Vec<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
-    let s = &T::one() - t;
+pub fn bernstein_all<T: Scalar>(n: usize, t: &T) -> Vec<T> {
+    let s = T::one().sub_ref(t);
     let mut b = Vec::with_capacity(n + 1);
     b.push(T::one());
     for k in 1..=n {
         let mut prev = T::zero();
         for bi in b.iter_mut() {
             let cur = bi.clone();
-            *bi = &(&s * &cur) + &(t * &prev);
+            *bi = s.mul_ref(&cur).add_ref(&t.mul_ref(&prev));
             prev = cur;
         }
-        b.push(t * &prev);
+        b.push(t.mul_ref(&prev));
         debug_assert_eq!(b.len(), k + 1);
     }
     b
 }
 
 /// Evaluates `Σ a_k t^k` by Horner's rule.
-pub fn eval_power<T: Scalar>(coeffs: &[T], t: &T) -> T
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn eval_power<T: Scalar>(coeffs: &[T], t: &T) -> T {
     let mut acc = T::zero();
     for a in coeffs.iter().rev() {
-        acc = &(&acc * t) + a;
+        acc = acc.mul_ref(t).add_ref(a);
     }
     acc
 }
@@ -116,17 +104,14 @@ where
 /// `b_j = Σ_{i≤j} C(j,i)/C(n,i) a_i`.
 ///
 /// ```
-/// use casteljau::{power_to_bernstein, BigRational, Scalar};
+/// use casteljau::{Ring, power_to_bernstein, BigRational, Scalar};
 /// // 4t - 4t² = 4/3 B_1^3 + 4/3 B_2^3 (text 000, §1.3, read as a cubic)
 /// let a: Vec<BigRational> = [0, 4, -4, 0].iter().map(|&c| BigRational::from_i64(c)).collect();
 /// let b = power_to_bernstein(&a).unwrap();
 /// let four_thirds = BigRational::from_ratio(4, 3).unwrap();
 /// assert_eq!(b, vec![BigRational::from_i64(0), four_thirds.clone(), four_thirds, BigRational::from_i64(0)]);
 /// ```
-pub fn power_to_bernstein<T: Scalar>(coeffs: &[T]) -> Result<Vec<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn power_to_bernstein<T: Scalar>(coeffs: &[T]) -> Result<Vec<T>> {
     if coeffs.is_empty() {
         return Ok(Vec::new());
     }
@@ -143,7 +128,7 @@ where
         let cj = binomial_row(j);
         let mut acc = T::zero();
         for (i, a) in scaled.iter().enumerate().take(j + 1) {
-            acc += &(&T::from_bigint(&cj[i])? * a);
+            acc += &((T::from_bigint(&cj[i])?).mul_ref(a));
         }
         out.push(acc);
     }
@@ -152,10 +137,7 @@ where
 
 /// Power coefficients `a_0..a_n` of `Σ b_j B_j^n(t)`:
 /// `a_i = C(n,i) Σ_{j≤i} (-1)^{i-j} C(i,j) b_j` (the forward difference `C(n,i) Δ^i b_0`).
-pub fn bernstein_to_power<T: Scalar>(bern: &[T]) -> Result<Vec<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn bernstein_to_power<T: Scalar>(bern: &[T]) -> Result<Vec<T>> {
     if bern.is_empty() {
         return Ok(Vec::new());
     }
@@ -165,9 +147,9 @@ where
     let row = binomial_row(n);
     let mut out = Vec::with_capacity(n + 1);
     for c in &row {
-        out.push(&T::from_bigint(c)? * &diffs[0]);
+        out.push((T::from_bigint(c)?).mul_ref(&diffs[0]));
         for j in 0..diffs.len() - 1 {
-            diffs[j] = &diffs[j + 1] - &diffs[j];
+            diffs[j] = (diffs[j + 1]).sub_ref(&diffs[j]);
         }
         diffs.pop();
     }
@@ -178,24 +160,21 @@ where
 /// `[a, b]` carried to `[0, 1]`. Exact for exact scalars (Taylor shift, then scaling).
 ///
 /// ```
-/// use casteljau::{reparametrize, BigRational, Scalar};
+/// use casteljau::{Ring, reparametrize, BigRational, Scalar};
 /// let q = |n| BigRational::from_i64(n);
 /// // -u² + 1 with u = 2t - 1 is 4t - 4t²
 /// let c = reparametrize(&[q(1), q(0), q(-1)], &q(-1), &q(1));
 /// assert_eq!(c, vec![q(0), q(4), q(-4)]);
 /// ```
-pub fn reparametrize<T: Scalar>(coeffs: &[T], a: &T, b: &T) -> Vec<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn reparametrize<T: Scalar>(coeffs: &[T], a: &T, b: &T) -> Vec<T> {
     // Horner in polynomial arithmetic: acc(t) = acc(t) * (a + h t) + c_k.
-    let h = b - a;
+    let h = b.sub_ref(a);
     let mut acc: Vec<T> = Vec::with_capacity(coeffs.len());
     for c in coeffs.iter().rev() {
         let mut next = vec![T::zero(); acc.len() + 1];
         for (k, x) in acc.iter().enumerate() {
-            next[k] += &(x * a);
-            next[k + 1] += &(x * &h);
+            next[k] += &x.mul_ref(a);
+            next[k + 1] += &x.mul_ref(&h);
         }
         next[0] += c;
         acc = next;
@@ -206,6 +185,7 @@ where
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scalar::Ring;
     use num_rational::BigRational;
     type Q = BigRational;
 

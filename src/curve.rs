@@ -22,7 +22,7 @@ use crate::fixed::{elevate_points, split_points};
 use crate::hull::convex_weights;
 use crate::kernel::{de_casteljau, eval_cubic, with_column};
 use crate::point::{common_dimension, AffineMap, Point, PointList};
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 use crate::space::{PointN, VectorSpace};
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -94,26 +94,20 @@ pub struct ElevationDistance<T> {
 /// `1/(n+1)`, the step of the weights of (7), divided once: its multiples `i · 1/(n+1)`
 /// are the weights `i/(n+1)`, exactly for exact scalars, with one rounding more for floats.
 #[inline(always)]
-pub(crate) fn elevation_step<T: Scalar>(n: usize) -> Result<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub(crate) fn elevation_step<T: Scalar>(n: usize) -> Result<T> {
     T::one().checked_div(&T::from_usize(n + 1))
 }
 
 /// Point `i` of the polygon (7) elevated from the `n + 1` `points`, given `step = 1/(n+1)`.
 #[inline(always)]
-pub(crate) fn elevated_point<T: Scalar, P: VectorSpace<Scalar = T>>(points: &[P], i: usize, step: &T) -> P
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub(crate) fn elevated_point<T: Scalar, P: VectorSpace<Scalar = T>>(points: &[P], i: usize, step: &T) -> P {
     let n = points.len() - 1;
     if i == 0 {
         points[0].clone()
     } else if i > n {
         points[n].clone()
     } else {
-        points[i].lerp_to(&points[i - 1], &(&T::from_usize(i) * step))
+        points[i].lerp_to(&points[i - 1], &T::from_usize(i).mul_ref(step))
     }
 }
 
@@ -125,9 +119,7 @@ pub(crate) fn join_at_eval<T: Scalar, P: VectorSpace<Scalar = T>>(
     t0: &T,
     left: &mut [P],
     right: &mut [P],
-) where
-    for<'a> &'a T: RefOps<T>,
-{
+) {
     if !T::EXACT {
         let joint = eval_cubic(points, t0);
         left[INLINE_POINTS - 1] = joint.clone();
@@ -151,10 +143,7 @@ pub(crate) fn common_dim<P: VectorSpace>(points: &[P], what: &'static str) -> Re
     Ok(dim)
 }
 
-impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     /// A curve from its control points; empty polygons, mixed dimensions and degrees above
     /// [`crate::MAX_DEGREE`] are errors.
     pub fn new(points: Vec<P>) -> Result<Self> {
@@ -493,7 +482,6 @@ impl<P> TryFrom<Vec<P>> for Bezier<P>
 where
     P: VectorSpace,
     P::Scalar: Scalar,
-    for<'a> &'a P::Scalar: RefOps<P::Scalar>,
 {
     type Error = Error;
     fn try_from(points: Vec<P>) -> Result<Self> {
@@ -519,17 +507,13 @@ impl<'de, P> serde::Deserialize<'de> for Bezier<P>
 where
     P: VectorSpace + serde::Deserialize<'de>,
     P::Scalar: Scalar,
-    for<'a> &'a P::Scalar: RefOps<P::Scalar>,
 {
     fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> std::result::Result<Self, D::Error> {
         Bezier::new(Vec::<P>::deserialize(deserializer)?).map_err(serde::de::Error::custom)
     }
 }
 
-impl<T: Scalar> BezierCurve<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar> BezierCurve<T> {
     /// A curve from coordinate lists.
     pub fn from_coords(coords: Vec<Vec<T>>) -> Result<Self> {
         Self::new(coords.into_iter().map(Point::new).collect::<Result<Vec<_>>>()?)
@@ -580,10 +564,7 @@ where
     }
 
     /// Converts the coordinates to another scalar type (e.g. exact → `f64`).
-    pub fn try_map<U: Scalar>(&self, f: impl Fn(&T) -> Result<U> + Copy) -> Result<BezierCurve<U>>
-    where
-        for<'a> &'a U: RefOps<U>,
-    {
+    pub fn try_map<U: Scalar>(&self, f: impl Fn(&T) -> Result<U> + Copy) -> Result<BezierCurve<U>> {
         BezierCurve::new(self.points.iter().map(|p| p.try_map(f)).collect::<Result<Vec<_>>>()?)
     }
 
@@ -715,10 +696,7 @@ impl BezierCurve<f64> {
     }
 }
 
-impl<T: Scalar> DeCasteljauScheme<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar> DeCasteljauScheme<T> {
     /// The degree of the curve.
     pub fn degree(&self) -> usize {
         self.columns.len() - 1
@@ -735,10 +713,7 @@ where
     }
 }
 
-impl<T: Scalar + fmt::Display> DeCasteljauScheme<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar + fmt::Display> DeCasteljauScheme<T> {
     /// The triangle (9) as a LaTeX `array` (math mode), row `k` holding `b_k, …, b_0^k(t)`;
     /// fractions as `\frac`, a one-coordinate point as its number.
     pub fn to_latex(&self) -> String {

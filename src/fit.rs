@@ -59,7 +59,7 @@ use crate::error::{check_degree, Error, Result};
 use crate::linalg::{solve, solve_many, Matrix};
 use crate::param::ParamCurveDeriv;
 use crate::point::{common_dimension, Point, Vector};
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 
 // ---------------------------------------------------------------------------------------
 // Text 004: the cubic fit
@@ -90,10 +90,7 @@ pub trait CubicFitSource<T> {
     fn cubic_fit_data(&self) -> Result<CubicFitData<T>>;
 }
 
-impl<T: Scalar> CubicFitData<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar> CubicFitData<T> {
     /// The data from its five vectors, validated (see [`CubicFitData::validate`]).
     pub fn new(x0: Point<T>, x1: Point<T>, xh: Point<T>, d0: Vector<T>, d1: Vector<T>) -> Result<Self> {
         let data = CubicFitData { x0, x1, xh, d0, d1 };
@@ -173,7 +170,7 @@ where
                 c.iter()
                     .enumerate()
                     .skip(1)
-                    .map(|(i, a)| &T::from_usize(i) * a)
+                    .map(|(i, a)| T::from_usize(i).mul_ref(a))
                     .collect()
             })
             .collect();
@@ -211,7 +208,7 @@ where
         let g = self.gram();
         let matrix = g
             .iter()
-            .map(|row| row.iter().map(|x| &three_quarters * x).collect())
+            .map(|row| row.iter().map(|x| three_quarters.mul_ref(x)).collect())
             .collect();
         let x = self.x_vector();
         (matrix, vec![self.d0.dot(&x), self.d1.dot(&x)])
@@ -226,20 +223,14 @@ where
     }
 }
 
-fn check_finite<T: Scalar>(p: &Point<T>, what: &str) -> Result<()>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn check_finite<T: Scalar>(p: &Point<T>, what: &str) -> Result<()> {
     if !T::EXACT && p.coords().iter().any(|c| !c.to_f64().is_finite()) {
         return Err(Error::NotFinite(format!("{what} = {p}")));
     }
     Ok(())
 }
 
-impl<T: Scalar> CubicFitSource<T> for CubicFitData<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar> CubicFitSource<T> for CubicFitData<T> {
     fn cubic_fit_data(&self) -> Result<CubicFitData<T>> {
         self.validate()?;
         Ok(self.clone())
@@ -253,7 +244,6 @@ where
 impl<T: Scalar, C> CubicFitSource<T> for C
 where
     C: ParamCurveDeriv<Scalar = T, Point = Point<T>>,
-    for<'a> &'a T: RefOps<T>,
 {
     fn cubic_fit_data(&self) -> Result<CubicFitData<T>> {
         let (zero, one, half) = (T::zero(), T::one(), T::from_ratio(1, 2)?);
@@ -287,10 +277,7 @@ pub struct CubicFit<T> {
     pub warnings: Vec<String>,
 }
 
-impl<T: Scalar> CubicFit<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar> CubicFit<T> {
     /// Whether `k > 0` and `l > 0`, as the text's method assumes.
     pub fn tangent_lengths_positive(&self) -> bool {
         self.k > T::zero() && self.l > T::zero()
@@ -299,10 +286,7 @@ where
 
 /// The cubic (4) of text 004 for given tangent lengths: control points
 /// `x(0), x(0) + k ẋ(0), x(1) − l ẋ(1), x(1)`.
-pub fn cubic_with_tangent_lengths<T: Scalar>(data: &CubicFitData<T>, k: &T, l: &T) -> Result<BezierCurve<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn cubic_with_tangent_lengths<T: Scalar>(data: &CubicFitData<T>, k: &T, l: &T) -> Result<BezierCurve<T>> {
     data.validate()?;
     BezierCurve::new(vec![
         data.x0.clone(),
@@ -312,10 +296,7 @@ where
     ])
 }
 
-fn parallel_message<T: Scalar>(data: &CubicFitData<T>) -> String
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn parallel_message<T: Scalar>(data: &CubicFitData<T>) -> String {
     if data.d0.is_zero() {
         return format!(
             "the tangent x'(0) is the zero vector, so the direction of a1 - a0 is undefined and the 2x2 system (11) \
@@ -358,10 +339,7 @@ where
 /// assert_eq!(fit.curve, c);
 /// assert!(fit.delta2.is_zero() && fit.warnings.is_empty());
 /// ```
-pub fn fit_cubic<T: Scalar>(data: &CubicFitData<T>) -> Result<CubicFit<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn fit_cubic<T: Scalar>(data: &CubicFitData<T>) -> Result<CubicFit<T>> {
     data.validate()?;
     if data.d0.is_zero() || data.d1.is_zero() {
         return Err(Error::Singular(parallel_message(data)));
@@ -371,29 +349,23 @@ where
         Error::Singular(_) => Error::Singular(parallel_message(data)),
         other => other,
     })?;
-    let k = -&solution[0];
+    let k = solution[0].neg_ref();
     let l = solution[1].clone();
     finish_cubic_fit(data, k, l)
 }
 
 /// [`fit_cubic`] for anything that supplies the data: a [`BezierCurve`], the data itself,
 /// and other [`CubicFitSource`]s.
-pub fn fit_cubic_to<T: Scalar, S: CubicFitSource<T> + ?Sized>(source: &S) -> Result<CubicFit<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn fit_cubic_to<T: Scalar, S: CubicFitSource<T> + ?Sized>(source: &S) -> Result<CubicFit<T>> {
     fit_cubic(&source.cubic_fit_data()?)
 }
 
-fn finish_cubic_fit<T: Scalar>(data: &CubicFitData<T>, k: T, l: T) -> Result<CubicFit<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn finish_cubic_fit<T: Scalar>(data: &CubicFitData<T>, k: T, l: T) -> Result<CubicFit<T>> {
     let curve = cubic_with_tangent_lengths(data, &k, &l)?;
     let residual = curve.eval(&T::from_ratio(1, 2)?).sub(&data.xh);
     let delta2 = residual.norm_squared();
     let g = data.gram();
-    let gram_determinant = &(&g[0][0] * &g[1][1]) - &(&g[0][1] * &g[1][0]);
+    let gram_determinant = g[0][0].mul_ref(&g[1][1]).sub_ref(&g[0][1].mul_ref(&g[1][0]));
     let mut warnings = Vec::new();
     if k <= T::zero() {
         warnings.push(format!(
@@ -406,7 +378,7 @@ where
         ));
     }
     if !T::EXACT {
-        let scale = (&g[0][0] * &g[1][1]).to_f64();
+        let scale = g[0][0].mul_ref(&g[1][1]).to_f64();
         if gram_determinant.to_f64().abs() <= 1e-10 * scale {
             warnings.push(format!(
                 "the end tangents are nearly parallel (det G = {gram_determinant}): k and l are ill-conditioned in \
@@ -428,27 +400,24 @@ where
 /// `(k, l)` by the closed form (13): `(−k, l)ᵀ = 4/3 · adj(G) (ẋ(0)·X, ẋ(1)·X)ᵀ / det G`,
 /// computed literally, independently of [`fit_cubic`]'s elimination so the two can be
 /// compared. `det G = 0` (for floats: `|det G| ≤ 1e-12 |ẋ(0)|²|ẋ(1)|²`) is [`Error::Singular`].
-pub fn fit_cubic_closed_form<T: Scalar>(data: &CubicFitData<T>) -> Result<(T, T)>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn fit_cubic_closed_form<T: Scalar>(data: &CubicFitData<T>) -> Result<(T, T)> {
     data.validate()?;
     let (d0, d1) = (&data.d0, &data.d1);
     let x = data.x_vector();
     let (g00, g01, g10, g11) = (d0.dot(d0), d0.dot(d1), d1.dot(d0), d1.dot(d1));
     let (p0, p1) = (d0.dot(&x), d1.dot(&x));
-    let det = &(&g00 * &g11) - &(&g01 * &g10);
+    let det = g00.mul_ref(&g11).sub_ref(&g01.mul_ref(&g10));
     let degenerate = if T::EXACT {
         det.is_zero()
     } else {
-        det.to_f64().abs() <= 1e-12 * (&g00 * &g11).to_f64()
+        det.to_f64().abs() <= 1e-12 * g00.mul_ref(&g11).to_f64()
     };
     if degenerate {
         return Err(Error::Singular(parallel_message(data)));
     }
     let factor = T::from_ratio(4, 3)?.checked_div(&det)?;
-    let minus_k = &factor * &(&(&g11 * &p0) - &(&g01 * &p1));
-    let l = &factor * &(&(&g00 * &p1) - &(&g10 * &p0));
+    let minus_k = factor.mul_ref(&g11.mul_ref(&p0).sub_ref(&g01.mul_ref(&p1)));
+    let l = factor.mul_ref(&g00.mul_ref(&p1).sub_ref(&g10.mul_ref(&p0)));
     Ok((-minus_k, l))
 }
 
@@ -458,17 +427,11 @@ where
 ///
 /// The fields of [`CubicFitData`] are public, so the data is validated first: vectors of
 /// different dimensions are an error, not a panic.
-pub fn delta_squared<T: Scalar>(data: &CubicFitData<T>, k: &T, l: &T) -> Result<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn delta_squared<T: Scalar>(data: &CubicFitData<T>, k: &T, l: &T) -> Result<T> {
     Ok(midpoint_residual(data, k, l)?.norm_squared())
 }
 
-fn midpoint_residual<T: Scalar>(data: &CubicFitData<T>, k: &T, l: &T) -> Result<Vector<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn midpoint_residual<T: Scalar>(data: &CubicFitData<T>, k: &T, l: &T) -> Result<Vector<T>> {
     data.validate()?;
     let a1 = data.x0.add(&data.d0.scale(k));
     let a2 = data.x1.sub(&data.d1.scale(l));
@@ -476,10 +439,7 @@ where
     Ok(curve.eval(&half()).sub(&data.xh))
 }
 
-fn half<T: Scalar>() -> T
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn half<T: Scalar>() -> T {
     T::from_ratio(1, 2).expect("1/2 is representable in every scalar")
 }
 
@@ -491,17 +451,14 @@ where
 ///
 /// # Panics
 /// If the five vectors of `data` differ in dimension (see [`delta_squared`]).
-pub fn delta_squared_gradient<T: Scalar>(data: &CubicFitData<T>, k: &T, l: &T) -> Result<(T, T)>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn delta_squared_gradient<T: Scalar>(data: &CubicFitData<T>, k: &T, l: &T) -> Result<(T, T)> {
     let r = midpoint_residual(data, k, l)?;
     let h = half::<T>();
     let two = T::from_i64(2);
     let b1 = bernstein(1, 3, &h).expect("small binomials fit every scalar");
     let b2 = bernstein(2, 3, &h).expect("small binomials fit every scalar");
-    let dk = &(&two * &b1) * &data.d0.dot(&r);
-    let dl = -&(&(&two * &b2) * &data.d1.dot(&r));
+    let dk = two.mul_ref(&b1).mul_ref(&data.d0.dot(&r));
+    let dl = two.mul_ref(&b2).mul_ref(&data.d1.dot(&r)).neg_ref();
     Ok((dk, dl))
 }
 
@@ -605,10 +562,7 @@ struct Design<T> {
     scalar_names: Vec<&'static str>,
 }
 
-impl<T: Scalar> Design<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar> Design<T> {
     fn new(degree: usize, dim: usize, c: &FitConstraints<T>) -> Result<Self> {
         if degree > MAX_FIT_DEGREE {
             return Err(Error::TooLarge {
@@ -698,7 +652,7 @@ where
             if i == 1 && c.start_direction.is_some() {
                 d.tie(1, 0, one.clone(), c.start_direction.clone(), "alpha");
             } else if i == degree - 1 && c.end_direction.is_some() {
-                d.tie(degree - 1, degree, -&one, c.end_direction.clone(), "beta");
+                d.tie(degree - 1, degree, one.neg_ref(), c.end_direction.clone(), "beta");
             } else {
                 d.add_vector_unknown(i);
             }
@@ -749,11 +703,11 @@ where
     fn basis_at(&self, bern: &[T]) -> (Vec<T>, Vec<T>) {
         let mut phi = vec![T::zero(); self.vector_count()];
         for (i, v, c) in &self.vector_terms {
-            phi[*v] += &(c * &bern[*i]);
+            phi[*v] += &c.mul_ref(&bern[*i]);
         }
         let mut psi = vec![T::zero(); self.scalar_count()];
         for (i, s, c) in &self.scalar_terms {
-            psi[*s] += &(c * &bern[*i]);
+            psi[*s] += &c.mul_ref(&bern[*i]);
         }
         (phi, psi)
     }
@@ -772,7 +726,7 @@ where
             pts[*i] = pts[*i].add(&u[*v].scale(c));
         }
         for (i, k, c) in &self.scalar_terms {
-            pts[*i] = pts[*i].add(&self.directions[*k].scale(&(c * &s[*k])));
+            pts[*i] = pts[*i].add(&self.directions[*k].scale(&c.mul_ref(&s[*k])));
         }
         pts
     }
@@ -788,21 +742,18 @@ where
                 *g = g.add(&e.scale(f));
             }
             for ((g, f), dir) in gs.iter_mut().zip(&psi).zip(&self.directions) {
-                *g += &(f * &dir.dot(e));
+                *g += &f.mul_ref(&dir.dot(e));
             }
         }
         let two = T::from_i64(2);
         gv.iter()
-            .flat_map(|p| p.coords().iter().map(|c| &two * c).collect::<Vec<_>>())
-            .chain(gs.iter().map(|g| &two * g))
+            .flat_map(|p| p.coords().iter().map(|c| two.mul_ref(c)).collect::<Vec<_>>())
+            .chain(gs.iter().map(|g| two.mul_ref(g)))
             .collect()
     }
 }
 
-fn check_samples<T: Scalar>(samples: &[Point<T>], params: &[T]) -> Result<usize>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn check_samples<T: Scalar>(samples: &[Point<T>], params: &[T]) -> Result<usize> {
     let dim = common_dimension(samples, "a least-squares fit (samples)")?;
     if params.len() != samples.len() {
         return Err(Error::WrongCount {
@@ -852,10 +803,7 @@ pub fn fit_least_squares<T: Scalar>(
     params: &[T],
     degree: usize,
     constraints: &FitConstraints<T>,
-) -> Result<LeastSquaresFit<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+) -> Result<LeastSquaresFit<T>> {
     let dim = check_samples(samples, params)?;
     let design = Design::new(degree, dim, constraints)?;
     let (nv, ns) = (design.vector_count(), design.scalar_count());
@@ -907,18 +855,18 @@ where
             }
             // Symmetric: the upper triangle now, mirrored below after the loop.
             for (w, fw) in phi.iter().enumerate().skip(v) {
-                g_vv[v][w] += &(fv * fw);
+                g_vv[v][w] += &fv.mul_ref(fw);
             }
             for (s, fs) in psi.iter().enumerate() {
-                g_vs[v][s] += &(fv * fs);
+                g_vs[v][s] += &fv.mul_ref(fs);
             }
             r_v[v] = r_v[v].add(&target.scale(fv));
         }
         for (s, fs) in psi.iter().enumerate() {
             for (s2, fs2) in psi.iter().enumerate() {
-                g_ss[s][s2] += &(fs * fs2);
+                g_ss[s][s2] += &fs.mul_ref(fs2);
             }
-            r_s[s] += &(fs * &design.directions[s].dot(&target));
+            r_s[s] += &fs.mul_ref(&design.directions[s].dot(&target));
         }
     }
     for v in 1..nv {
@@ -958,12 +906,12 @@ where
             for s2 in 0..ns {
                 let mut coef = g_ss[s][s2].clone();
                 for w in 0..nv {
-                    coef -= &(&g_vs[w][s] * &x_psi[w][s2]);
+                    coef -= &g_vs[w][s].mul_ref(&x_psi[w][s2]);
                 }
-                a[s][s2] = &coef * &design.directions[s].dot(&design.directions[s2]);
+                a[s][s2] = coef.mul_ref(&design.directions[s].dot(&design.directions[s2]));
             }
             for w in 0..nv {
-                b[s] -= &(&g_vs[w][s] * &design.directions[s].dot(&x_r[w]));
+                b[s] -= &g_vs[w][s].mul_ref(&design.directions[s].dot(&x_r[w]));
             }
         }
         solve(&a, &b).map_err(singular)?
@@ -974,7 +922,7 @@ where
         .map(|w| {
             let mut p = x_r[w].clone();
             for (s, sv) in scales.iter().enumerate() {
-                p = p.sub(&design.directions[s].scale(&(&x_psi[w][s] * sv)));
+                p = p.sub(&design.directions[s].scale(&x_psi[w][s].mul_ref(sv)));
             }
             p
         })
@@ -1013,10 +961,7 @@ where
 }
 
 /// [`check_samples`], and the samples must have the curve's dimension.
-fn check_samples_of<T: Scalar>(samples: &[Point<T>], params: &[T], curve: &BezierCurve<T>, what: &str) -> Result<()>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn check_samples_of<T: Scalar>(samples: &[Point<T>], params: &[T], curve: &BezierCurve<T>, what: &str) -> Result<()> {
     let dim = check_samples(samples, params)?;
     if dim != curve.dim() {
         return Err(Error::DimensionMismatch {
@@ -1029,10 +974,7 @@ where
 }
 
 /// `E = Σ_j |b(t_j) − y_j|²` for any curve: the quantity [`fit_least_squares`] minimises.
-pub fn least_squares_residual<T: Scalar>(samples: &[Point<T>], params: &[T], curve: &BezierCurve<T>) -> Result<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn least_squares_residual<T: Scalar>(samples: &[Point<T>], params: &[T], curve: &BezierCurve<T>) -> Result<T> {
     check_samples_of(samples, params, curve, "samples of a least-squares residual")?;
     let mut acc = T::zero();
     for (t, y) in params.iter().zip(samples) {
@@ -1049,10 +991,7 @@ pub fn least_squares_gradient<T: Scalar>(
     params: &[T],
     curve: &BezierCurve<T>,
     constraints: &FitConstraints<T>,
-) -> Result<Vec<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+) -> Result<Vec<T>> {
     check_samples_of(samples, params, curve, "samples of a least-squares gradient")?;
     let design = Design::new(curve.degree(), curve.dim(), constraints)?;
     let residuals: Vec<Vector<T>> = params.iter().zip(samples).map(|(t, y)| curve.eval(t).sub(y)).collect();
@@ -1060,10 +999,7 @@ where
 }
 
 /// The exact uniform parameters `0, 1/(m−1), …, 1` for `m` samples (`[0]` for one sample).
-pub fn uniform_params<T: Scalar>(count: usize) -> Result<Vec<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn uniform_params<T: Scalar>(count: usize) -> Result<Vec<T>> {
     if count == 0 {
         return Err(Error::Empty("uniform parameters"));
     }
@@ -1125,10 +1061,7 @@ fn params_by_distance(samples: &[Point<f64>], step: impl Fn(f64) -> f64, what: &
 /// and converted back exactly (each float is a dyadic rational). For exact scalars the
 /// parameters are therefore exact numbers — rounded chord lengths, not the irrational true
 /// ones — and a fit with them is exact for them.
-pub fn chord_length_params_via_f64<T: Scalar>(samples: &[Point<T>]) -> Result<Vec<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn chord_length_params_via_f64<T: Scalar>(samples: &[Point<T>]) -> Result<Vec<T>> {
     let floats: Vec<Point<f64>> = samples
         .iter()
         .map(|p| Point::<f64>::new(p.to_f64()))

@@ -6,7 +6,7 @@ use crate::curve::{common_dim, elevated_point, elevation_step, join_at_eval, Bez
 use crate::error::{Error, Result, MAX_DEGREE};
 use crate::kernel::{de_casteljau, eval_cubic, split_fixed};
 use crate::param::{ParamCurve, ParamCurveDeriv};
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 use crate::space::{PointN, VectorSpace};
 
 /// A Bézier curve with exactly `N` control points (degree `N - 1`), stored as an array;
@@ -92,10 +92,7 @@ impl<T, const D: usize, const N: usize> From<[PointN<T, D>; N]> for BezierN<Poin
     }
 }
 
-impl<T: Scalar, P: VectorSpace<Scalar = T>, const N: usize> BezierN<P, N>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar, P: VectorSpace<Scalar = T>, const N: usize> BezierN<P, N> {
     /// The curve of these control points of any point type; points of different dimensions
     /// (possible for [`crate::Point`]) are an error.
     pub fn from_points(points: [P; N]) -> Result<Self> {
@@ -127,10 +124,7 @@ where
 
 /// `b(t)` of the curve with control points `points`, as [`Bezier::eval`] computes it.
 #[inline(always)]
-pub(crate) fn eval_points<T: Scalar, P: VectorSpace<Scalar = T>, const N: usize>(points: &[P; N], t: &T) -> P
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub(crate) fn eval_points<T: Scalar, P: VectorSpace<Scalar = T>, const N: usize>(points: &[P; N], t: &T) -> P {
     if let Ok(cubic) = <&[P; 4]>::try_from(&points[..]) {
         return eval_cubic(cubic, t);
     }
@@ -148,10 +142,7 @@ where
 pub(crate) fn split_points<T: Scalar, P: VectorSpace<Scalar = T>, const N: usize>(
     points: &[P; N],
     t0: &T,
-) -> ([P; N], [P; N])
-where
-    for<'a> &'a T: RefOps<T>,
-{
+) -> ([P; N], [P; N]) {
     let mut right = points.clone();
     let mut left = split_fixed(&mut right, t0);
     if let Ok(cubic) = <&[P; 4]>::try_from(&points[..]) {
@@ -165,10 +156,7 @@ where
 #[inline(always)]
 pub(crate) fn elevate_points<T: Scalar, P: VectorSpace<Scalar = T>, const N: usize, const M: usize>(
     points: &[P; N],
-) -> [P; M]
-where
-    for<'a> &'a T: RefOps<T>,
-{
+) -> [P; M] {
     debug_assert_eq!(M, N + 1);
     let Ok(step) = elevation_step::<T>(N - 1) else {
         unreachable!("1/N divides by a nonzero count")
@@ -179,10 +167,7 @@ where
 /// The hodograph's control points `(N − 1) (b_{j+1} − b_j)`, as [`Bezier::derivative`]
 /// computes them; `M = N − 1`.
 #[inline(always)]
-fn hodograph_points<T: Scalar, P: VectorSpace<Scalar = T>, const N: usize, const M: usize>(points: &[P; N]) -> [P; M]
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn hodograph_points<T: Scalar, P: VectorSpace<Scalar = T>, const N: usize, const M: usize>(points: &[P; N]) -> [P; M] {
     debug_assert_eq!(M + 1, N);
     let n = T::from_usize(M);
     std::array::from_fn(|j| {
@@ -192,10 +177,7 @@ where
     })
 }
 
-impl<T: Scalar, P: VectorSpace<Scalar = T>, const N: usize> ParamCurve for BezierN<P, N>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar, P: VectorSpace<Scalar = T>, const N: usize> ParamCurve for BezierN<P, N> {
     type Scalar = T;
     type Point = P;
 
@@ -214,10 +196,7 @@ where
 /// stable Rust has no `N + 1` in a type.
 macro_rules! elevate_and_deriv {
     ($($n:literal => $m:literal),* $(,)?) => {$(
-        impl<T: Scalar, P: VectorSpace<Scalar = T>> BezierN<P, $n>
-        where
-            for<'a> &'a T: RefOps<T>,
-        {
+        impl<T: Scalar, P: VectorSpace<Scalar = T>> BezierN<P, $n> {
             #[doc = concat!("One step of degree elevation (7), to ", stringify!($m), " points: the same curve.")]
             #[inline]
             pub fn elevate(&self) -> BezierN<P, $m> {
@@ -225,10 +204,7 @@ macro_rules! elevate_and_deriv {
             }
         }
 
-        impl<T: Scalar, P: VectorSpace<Scalar = T>> BezierN<P, $m>
-        where
-            for<'a> &'a T: RefOps<T>,
-        {
+        impl<T: Scalar, P: VectorSpace<Scalar = T>> BezierN<P, $m> {
             #[doc = concat!("The hodograph, of ", stringify!($n), " points: `b'(t)`.")]
             #[inline]
             pub fn deriv(&self) -> BezierN<P, $n> {
@@ -236,10 +212,7 @@ macro_rules! elevate_and_deriv {
             }
         }
 
-        impl<T: Scalar, P: VectorSpace<Scalar = T>> ParamCurveDeriv for BezierN<P, $m>
-        where
-            for<'a> &'a T: RefOps<T>,
-        {
+        impl<T: Scalar, P: VectorSpace<Scalar = T>> ParamCurveDeriv for BezierN<P, $m> {
             type Deriv = BezierN<P, $n>;
 
             fn deriv(&self) -> Result<Self::Deriv> {
@@ -254,10 +227,7 @@ elevate_and_deriv!(
     9 => 10, 10 => 11, 11 => 12, 12 => 13, 13 => 14, 14 => 15, 15 => 16, 16 => 17,
 );
 
-impl<T: Scalar, P: VectorSpace<Scalar = T>> BezierN<P, 1>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar, P: VectorSpace<Scalar = T>> BezierN<P, 1> {
     /// The derivative of a constant curve: the constant zero.
     #[inline]
     pub fn deriv(&self) -> Self {
@@ -268,10 +238,7 @@ where
 }
 
 /// A constant curve's derivative is the constant zero curve, as for [`Bezier`].
-impl<T: Scalar, P: VectorSpace<Scalar = T>> ParamCurveDeriv for BezierN<P, 1>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar, P: VectorSpace<Scalar = T>> ParamCurveDeriv for BezierN<P, 1> {
     type Deriv = Self;
 
     fn deriv(&self) -> Result<Self> {
@@ -279,20 +246,14 @@ where
     }
 }
 
-impl<T: Scalar, P: VectorSpace<Scalar = T>, const N: usize> From<BezierN<P, N>> for Bezier<P>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar, P: VectorSpace<Scalar = T>, const N: usize> From<BezierN<P, N>> for Bezier<P> {
     /// The same curve of any degree (no heap allocation up to a cubic).
     fn from(c: BezierN<P, N>) -> Self {
         Bezier::from_valid(c.points)
     }
 }
 
-impl<T: Scalar, P: VectorSpace<Scalar = T>, const N: usize> TryFrom<&Bezier<P>> for BezierN<P, N>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar, P: VectorSpace<Scalar = T>, const N: usize> TryFrom<&Bezier<P>> for BezierN<P, N> {
     type Error = Error;
 
     /// The same curve, when it has exactly `N` control points; [`Error::WrongCount`] if not.

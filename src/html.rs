@@ -12,7 +12,7 @@ use crate::figure::{self, svg::esc, AnyCurve, Figure};
 use crate::point::Point;
 use crate::quadratic::QuadraticIrrational;
 use crate::rational::RationalBezierCurve;
-use crate::scalar::Scalar;
+use crate::scalar::{Ring, Scalar};
 use crate::surface::BezierSurface;
 use crate::verify::claims::{Claim, ClaimFile, CurveSpec, Illustration, Kind, Number, SurfaceSpec};
 use crate::verify::{ClaimOutcome, Report, TextSummary, Verdict};

@@ -9,7 +9,7 @@
 use crate::error::{Error, Result};
 use crate::linalg::solve_consistent;
 use crate::point::{common_dimension, Point};
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 
 /// Largest number of subsets the search may try (a bound on work, not on correctness).
 pub const MAX_SUBSETS: u128 = 2_000_000;
@@ -23,10 +23,7 @@ pub const MAX_SUBSETS: u128 = 2_000_000;
 /// assert!(convex_weights(&tri, &Point::from_ints(&[1, 1]).unwrap()).unwrap().is_some());
 /// assert!(convex_weights(&tri, &Point::from_ints(&[3, 3]).unwrap()).unwrap().is_none());
 /// ```
-pub fn convex_weights<T: Scalar>(points: &[Point<T>], p: &Point<T>) -> Result<Option<Vec<T>>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn convex_weights<T: Scalar>(points: &[Point<T>], p: &Point<T>) -> Result<Option<Vec<T>>> {
     let dim = common_dimension(points, "convex hull")?;
     if p.dim() != dim {
         return Err(Error::DimensionMismatch {
@@ -71,10 +68,7 @@ where
 }
 
 /// Whether `p` lies in the convex hull of `points` (see [`convex_weights`]).
-pub fn hull_contains<T: Scalar>(points: &[Point<T>], p: &Point<T>) -> Result<bool>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn hull_contains<T: Scalar>(points: &[Point<T>], p: &Point<T>) -> Result<bool> {
     Ok(convex_weights(points, p)?.is_some())
 }
 
@@ -85,10 +79,7 @@ fn simplex_weights<T: Scalar>(
     distinct: &[usize],
     subset: &[usize],
     p: &Point<T>,
-) -> Result<Option<Vec<T>>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+) -> Result<Option<Vec<T>>> {
     let dim = p.dim();
     // Rows: each coordinate, then the affine row Σ c = 1.
     let mut a: Vec<Vec<T>> = (0..dim)
@@ -138,6 +129,7 @@ fn choose(n: u128, k: u128) -> u128 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scalar::Ring;
     use num_rational::BigRational;
     type Q = BigRational;
 

@@ -25,13 +25,12 @@ use crate::error::{Error, Result};
 use crate::float::{nearest_f64, next_down, next_up, two_product, two_sum, ulp_exponent_f64};
 use crate::point::Point;
 use crate::rational::{classify_conic, ConicKind, RationalBezierCurve};
-use crate::scalar::Scalar;
+use crate::scalar::{forward_ring_ops, Ring, Scalar};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 use std::cmp::Ordering;
 use std::fmt;
-use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 use std::sync::atomic::{AtomicU64, Ordering as AtomicOrdering};
 
 /// A closed interval `[lo, hi]` of reals with `f64` endpoints.
@@ -186,42 +185,26 @@ impl PartialOrd for Interval {
     }
 }
 
-macro_rules! forward_binop {
-    ($Op:ident, $op:ident, $OpAssign:ident, $op_assign:ident, $body:expr) => {
-        impl $Op<&Interval> for &Interval {
-            type Output = Interval;
-            fn $op(self, rhs: &Interval) -> Interval {
-                let f: fn(&Interval, &Interval) -> Interval = $body;
-                f(self, rhs)
-            }
-        }
-        impl $Op<Interval> for Interval {
-            type Output = Interval;
-            fn $op(self, rhs: Interval) -> Interval {
-                (&self).$op(&rhs)
-            }
-        }
-        impl $Op<&Interval> for Interval {
-            type Output = Interval;
-            fn $op(self, rhs: &Interval) -> Interval {
-                (&self).$op(rhs)
-            }
-        }
-        impl $OpAssign<&Interval> for Interval {
-            fn $op_assign(&mut self, rhs: &Interval) {
-                *self = (&*self).$op(rhs);
-            }
-        }
-    };
-}
-
-forward_binop!(Add, add, AddAssign, add_assign, |a, b| sum_bounds(a, b));
-forward_binop!(Sub, sub, SubAssign, sub_assign, |a, b| sum_bounds(a, &-b));
-forward_binop!(Mul, mul, MulAssign, mul_assign, |a, b| a.mul_bounds(b));
-
-impl Neg for &Interval {
-    type Output = Interval;
-    fn neg(self) -> Interval {
+impl Ring for Interval {
+    fn zero() -> Self {
+        Interval { lo: 0.0, hi: 0.0 }
+    }
+    fn one() -> Self {
+        Interval { lo: 1.0, hi: 1.0 }
+    }
+    fn from_i64(n: i64) -> Self {
+        Self::from_rational(&BigRational::from_integer(n.into())).expect("every i64 is below f64::MAX")
+    }
+    fn add_ref(&self, rhs: &Self) -> Self {
+        sum_bounds(self, rhs)
+    }
+    fn sub_ref(&self, rhs: &Self) -> Self {
+        sum_bounds(self, &rhs.neg_ref())
+    }
+    fn mul_ref(&self, rhs: &Self) -> Self {
+        self.mul_bounds(rhs)
+    }
+    fn neg_ref(&self) -> Self {
         Interval {
             lo: -self.hi,
             hi: -self.lo,
@@ -229,29 +212,15 @@ impl Neg for &Interval {
     }
 }
 
-impl Neg for Interval {
-    type Output = Interval;
-    fn neg(self) -> Interval {
-        -&self
-    }
-}
+forward_ring_ops!(Interval);
 
 impl Scalar for Interval {
     const EXACT: bool = false;
     const NAME: &'static str = "interval";
 
-    fn zero() -> Self {
-        Interval { lo: 0.0, hi: 0.0 }
-    }
-    fn one() -> Self {
-        Interval { lo: 1.0, hi: 1.0 }
-    }
     /// Only `[0, 0]` is zero (an interval that merely contains 0 is not known to be zero).
     fn is_zero(&self) -> bool {
         self.lo == 0.0 && self.hi == 0.0
-    }
-    fn from_i64(n: i64) -> Self {
-        Self::from_rational(&BigRational::from_integer(n.into())).expect("every i64 is below f64::MAX")
     }
     fn from_bigint(n: &BigInt) -> Result<Self> {
         Self::from_rational(&BigRational::from_integer(n.clone()))

@@ -6,7 +6,7 @@
 //! It works in place on a column of points and never allocates; [`with_column`] gives it a
 //! buffer on the stack for the polygons met in practice.
 
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::{Ring, Scalar};
 use crate::space::VectorSpace;
 
 /// Points kept on the stack by [`with_column`]; longer polygons use one heap buffer.
@@ -51,7 +51,6 @@ pub fn de_casteljau<P: VectorSpace>(column: &mut [P], t: &P::Scalar, mut each_le
 pub fn eval_cubic<P: VectorSpace>(b: &[P; 4], t: &P::Scalar) -> P
 where
     P::Scalar: Scalar,
-    for<'a> &'a P::Scalar: RefOps<P::Scalar>,
 {
     if <P::Scalar as Scalar>::EXACT {
         let mut column = b.clone();
@@ -59,16 +58,16 @@ where
         let [p, ..] = column;
         return p;
     }
-    let s = &P::Scalar::one() - t;
+    let s = P::Scalar::one().sub_ref(t);
     let three = P::Scalar::from_i64(3);
-    let s2 = &s * &s;
+    let s2 = s.mul_ref(&s);
     let mut v = b[3].clone();
     v.scale_assign(t);
-    v.add_scaled_assign(&(&s * &three), &b[2]);
+    v.add_scaled_assign(&s.mul_ref(&three), &b[2]);
     v.scale_assign(t);
-    v.add_scaled_assign(&(&s2 * &three), &b[1]);
+    v.add_scaled_assign(&s2.mul_ref(&three), &b[1]);
     v.scale_assign(t);
-    v.add_scaled_assign(&(&s2 * &s), &b[0]);
+    v.add_scaled_assign(&s2.mul_ref(&s), &b[0]);
     v
 }
 

@@ -5,7 +5,7 @@
 //! speed. The exact path doubles as a regression oracle for float code.
 //!
 //! ```
-//! use casteljau::{BezierCurve, BigRational, Scalar};
+//! use casteljau::{BezierCurve, BigRational, Ring, Scalar};
 //! let curve: BezierCurve<BigRational> = BezierCurve::from_ints(&[&[0, 0], &[1, 2], &[3, 2], &[4, 0]]).unwrap();
 //! let half = BigRational::from_ratio(1, 2).unwrap();
 //! let (left, right) = curve.split_at(&half);
@@ -81,7 +81,7 @@ pub use num_bigint::BigInt;
 pub use num_rational::BigRational;
 pub use param::{ParamCurve, ParamCurveDeriv};
 pub use point::{barycentric, linear_combination, AffineMap, Point, Vector};
-pub use scalar::{format_exact, parse_exact, RefOps, Scalar, MAX_DECIMAL_EXPONENT, MAX_NUMBER_LEN};
+pub use scalar::{format_exact, parse_exact, RefOps, Ring, Scalar, MAX_DECIMAL_EXPONENT, MAX_NUMBER_LEN};
 pub use space::{Point2, Point3, PointN, VectorSpace};
 
 // --- rational curves, conics, quadratic irrationals

@@ -14,10 +14,15 @@
 //! | `A X = B`, several right-hand sides | [`solve_many`] |
 //! | `A⁻¹` | [`inverse`] |
 //! | `det A` | [`determinant`] (Bareiss), [`determinant_cofactor`] (Laplace, a reference for small sizes) |
-//! | products | [`mat_mul`], [`mat_vec`], [`transpose`], [`identity`] |
+//! | products | [`mat_mul`], [`mat_vec`], [`transpose`], [`identity`], [`dot`] |
+//! | over any [`Ring`] (no division) | [`determinant_division_free`], [`characteristic_coefficients`], [`adjugate`] |
+//!
+//! The division-free functions serve every [`Ring`], also those that are not scalars: the
+//! prover evaluates `det` and `inv` in its degree-bound and rational-function algebras with
+//! them.
 
 use crate::error::{Error, Result};
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::{Ring, Scalar};
 
 /// A dense matrix as rows.
 pub type Matrix<T> = Vec<Vec<T>>;
@@ -40,10 +45,7 @@ fn check_rectangular<T>(a: &[Vec<T>], what: &str) -> Result<usize> {
 }
 
 /// Row-reduces `a` in place to reduced row echelon form; returns the pivot columns.
-pub fn row_reduce<T: Scalar>(a: &mut [Vec<T>]) -> Result<Vec<usize>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn row_reduce<T: Scalar>(a: &mut [Vec<T>]) -> Result<Vec<usize>> {
     if a.is_empty() {
         return Ok(Vec::new());
     }
@@ -78,7 +80,7 @@ where
         a.swap(row, p);
         let inv = T::one().checked_div(&a[row][col])?;
         for x in a[row].iter_mut() {
-            *x = &*x * &inv;
+            *x *= &inv;
         }
         let pivot_row = a[row].clone();
         for (r, other) in a.iter_mut().enumerate() {
@@ -87,7 +89,7 @@ where
             }
             let f = other[col].clone();
             for (x, y) in other.iter_mut().zip(&pivot_row) {
-                *x -= &(&f * y);
+                *x -= &f.mul_ref(y);
             }
         }
         pivots.push(col);
@@ -97,10 +99,7 @@ where
 }
 
 /// The rank of `a`.
-pub fn rank<T: Scalar>(a: &[Vec<T>]) -> Result<usize>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn rank<T: Scalar>(a: &[Vec<T>]) -> Result<usize> {
     let mut m = a.to_vec();
     Ok(row_reduce(&mut m)?.len())
 }
@@ -108,10 +107,7 @@ where
 /// Solves `a x = b` when the solution exists and is unique: `Ok(Some(x))`; `Ok(None)` when
 /// the system is inconsistent; an error when `a` has dependent columns (many solutions).
 /// `a` may have more rows than columns.
-pub fn solve_consistent<T: Scalar>(a: &[Vec<T>], b: &[T]) -> Result<Option<Vec<T>>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn solve_consistent<T: Scalar>(a: &[Vec<T>], b: &[T]) -> Result<Option<Vec<T>>> {
     let cols = check_rectangular(a, "linear system")?;
     if b.len() != a.len() {
         return Err(Error::DimensionMismatch {
@@ -142,15 +138,12 @@ where
 /// Solves the square system `a x = b`; a singular matrix is an error.
 ///
 /// ```
-/// use casteljau::{linalg::solve, BigRational, Scalar};
+/// use casteljau::{linalg::solve, BigRational, Ring, Scalar};
 /// let q = |n| BigRational::from_i64(n);
 /// let x = solve(&[vec![q(2), q(1)], vec![q(1), q(3)]], &[q(3), q(5)]).unwrap();
 /// assert_eq!(x, vec![BigRational::from_ratio(4, 5).unwrap(), BigRational::from_ratio(7, 5).unwrap()]);
 /// ```
-pub fn solve<T: Scalar>(a: &[Vec<T>], b: &[T]) -> Result<Vec<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn solve<T: Scalar>(a: &[Vec<T>], b: &[T]) -> Result<Vec<T>> {
     let cols = check_rectangular(a, "linear system")?;
     if cols != a.len() {
         return Err(Error::DimensionMismatch {
@@ -174,20 +167,14 @@ fn check_square<T>(a: &[Vec<T>], what: &str) -> Result<usize> {
 }
 
 /// The `n × n` identity matrix.
-pub fn identity<T: Scalar>(n: usize) -> Matrix<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn identity<T: Scalar>(n: usize) -> Matrix<T> {
     (0..n)
         .map(|i| (0..n).map(|j| if i == j { T::one() } else { T::zero() }).collect())
         .collect()
 }
 
 /// The transpose of a rectangular matrix.
-pub fn transpose<T: Scalar>(a: &[Vec<T>]) -> Result<Matrix<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn transpose<T: Clone>(a: &[Vec<T>]) -> Result<Matrix<T>> {
     let cols = check_rectangular(a, "transpose")?;
     Ok((0..cols)
         .map(|j| a.iter().map(|row| row[j].clone()).collect())
@@ -195,10 +182,7 @@ where
 }
 
 /// The product `a b`; the inner dimensions must agree.
-pub fn mat_mul<T: Scalar>(a: &[Vec<T>], b: &[Vec<T>]) -> Result<Matrix<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn mat_mul<T: Scalar>(a: &[Vec<T>], b: &[Vec<T>]) -> Result<Matrix<T>> {
     let inner = check_rectangular(a, "matrix product (left factor)")?;
     let cols = check_rectangular(b, "matrix product (right factor)")?;
     if inner != b.len() {
@@ -214,7 +198,7 @@ where
                 .map(|j| {
                     let mut acc = T::zero();
                     for (x, brow) in row.iter().zip(b) {
-                        acc += &(x * &brow[j]);
+                        acc += &x.mul_ref(&brow[j]);
                     }
                     acc
                 })
@@ -224,10 +208,7 @@ where
 }
 
 /// The product `a x` of a matrix and a column vector.
-pub fn mat_vec<T: Scalar>(a: &[Vec<T>], x: &[T]) -> Result<Vec<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn mat_vec<T: Scalar>(a: &[Vec<T>], x: &[T]) -> Result<Vec<T>> {
     let cols = check_rectangular(a, "matrix-vector product")?;
     if cols != x.len() {
         return Err(Error::DimensionMismatch {
@@ -240,7 +221,7 @@ where
         .map(|row| {
             let mut acc = T::zero();
             for (u, v) in row.iter().zip(x) {
-                acc += &(u * v);
+                acc += &u.mul_ref(v);
             }
             acc
         })
@@ -254,16 +235,13 @@ where
 /// several coordinates needs. A singular `a` is [`Error::Singular`].
 ///
 /// ```
-/// use casteljau::{linalg::solve_many, BigRational, Scalar};
+/// use casteljau::{linalg::solve_many, BigRational, Ring, Scalar};
 /// let q = |n| BigRational::from_i64(n);
 /// let a = vec![vec![q(2), q(0)], vec![q(0), q(4)]];
 /// let x = solve_many(&a, &[vec![q(2), q(4)], vec![q(4), q(8)]]).unwrap();
 /// assert_eq!(x, vec![vec![q(1), q(2)], vec![q(1), q(2)]]);
 /// ```
-pub fn solve_many<T: Scalar>(a: &[Vec<T>], b: &[Vec<T>]) -> Result<Matrix<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn solve_many<T: Scalar>(a: &[Vec<T>], b: &[Vec<T>]) -> Result<Matrix<T>> {
     let n = check_square(a, "solving a linear system")?;
     if b.len() != n {
         return Err(Error::DimensionMismatch {
@@ -293,7 +271,7 @@ where
 /// matrix is [`Error::Singular`].
 ///
 /// ```
-/// use casteljau::{linalg::{inverse, mat_mul, identity}, BigRational, Scalar};
+/// use casteljau::{linalg::{inverse, mat_mul, identity}, BigRational, Ring};
 /// let q = |n| BigRational::from_i64(n);
 /// let a = vec![vec![q(2), q(1)], vec![q(7), q(4)]];
 /// let inv = inverse(&a).unwrap();
@@ -301,10 +279,7 @@ where
 /// assert_eq!(mat_mul(&a, &inv).unwrap(), identity(2));
 /// assert!(inverse(&[vec![q(1), q(2)], vec![q(2), q(4)]]).is_err());
 /// ```
-pub fn inverse<T: Scalar>(a: &[Vec<T>]) -> Result<Matrix<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn inverse<T: Scalar>(a: &[Vec<T>]) -> Result<Matrix<T>> {
     let n = check_square(a, "the inverse")?;
     solve_many(a, &identity(n)).map_err(|e| match e {
         Error::Singular(m) => Error::Singular(format!("no inverse: {m}")),
@@ -325,15 +300,12 @@ where
 /// An empty or non-square matrix is an error; a singular matrix has determinant zero.
 ///
 /// ```
-/// use casteljau::{linalg::determinant, BigRational, Scalar};
+/// use casteljau::{linalg::determinant, BigRational, Ring, Scalar};
 /// let q = |n| BigRational::from_i64(n);
 /// let a = vec![vec![q(2), q(-1), q(0)], vec![q(-1), q(2), q(-1)], vec![q(0), q(-1), q(2)]];
 /// assert_eq!(determinant(&a).unwrap(), q(4));
 /// ```
-pub fn determinant<T: Scalar>(a: &[Vec<T>]) -> Result<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn determinant<T: Scalar>(a: &[Vec<T>]) -> Result<T> {
     let n = check_square(a, "the determinant")?;
     let mut m = a.to_vec();
     let mut negate = false;
@@ -365,7 +337,7 @@ where
         for row in below.iter_mut() {
             let f = row[k].clone();
             for j in k + 1..n {
-                let num = &(&row[j] * &pivot_row[k]) - &(&f * &pivot_row[j]);
+                let num = row[j].mul_ref(&pivot_row[k]).sub_ref(&f.mul_ref(&pivot_row[j]));
                 row[j] = num.checked_div(&prev)?;
             }
             row[k] = T::zero();
@@ -386,10 +358,7 @@ pub const MAX_COFACTOR_SIZE: usize = 8;
 /// The determinant by Laplace (cofactor) expansion along the first row: `n!` products, no
 /// division at all. A slow, obviously correct reference for [`determinant`]; sizes above
 /// [`MAX_COFACTOR_SIZE`] are [`Error::TooLarge`].
-pub fn determinant_cofactor<T: Scalar>(a: &[Vec<T>]) -> Result<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn determinant_cofactor<T: Scalar>(a: &[Vec<T>]) -> Result<T> {
     let n = check_square(a, "the determinant")?;
     if n > MAX_COFACTOR_SIZE {
         return Err(Error::TooLarge {
@@ -398,36 +367,164 @@ where
             limit: format!("{MAX_COFACTOR_SIZE}×{MAX_COFACTOR_SIZE}"),
         });
     }
-    let cols: Vec<usize> = (0..n).collect();
-    Ok(cofactor_expand(a, 0, &cols))
+    Ok(laplace(a))
 }
 
-fn cofactor_expand<T: Scalar>(a: &[Vec<T>], row: usize, cols: &[usize]) -> T
-where
-    for<'a> &'a T: RefOps<T>,
-{
-    if cols.is_empty() {
-        return T::one();
-    }
+/// `Σ a_i b_i` over the common length.
+pub fn dot<T: Ring>(a: &[T], b: &[T]) -> T {
     let mut acc = T::zero();
-    for (idx, &c) in cols.iter().enumerate() {
-        if a[row][c].is_zero() {
-            continue;
+    for (x, y) in a.iter().zip(b) {
+        acc = acc.add_ref(&x.mul_ref(y));
+    }
+    acc
+}
+
+/// Largest size [`determinant_division_free`] and [`adjugate`] expand by cofactors; beyond,
+/// Berkowitz's algorithm takes `O(n⁴)` products instead of `n!`.
+const LAPLACE_SIZE: usize = 4;
+
+/// The determinant of a square matrix from ring operations alone: Laplace expansion up to
+/// 4 × 4 (at most 24 products, and in an algebra of degree bounds the tightest bounds),
+/// beyond that the constant term of Berkowitz's [`characteristic_coefficients`].
+///
+/// The matrix must be square (the caller checks; this function only indexes).
+pub fn determinant_division_free<T: Ring>(m: &[Vec<T>]) -> T {
+    if m.len() > LAPLACE_SIZE {
+        let p = characteristic_coefficients(m);
+        let last = p[m.len()].clone();
+        return if m.len() % 2 == 0 { last } else { last.neg_ref() };
+    }
+    laplace(m)
+}
+
+/// The coefficients `1, p_1, …, p_n` of `det(xI − M) = x^n + p_1 x^{n−1} + … + p_n`, by the
+/// Samuelson–Berkowitz recursion: with `M = [a R; C M₁]`, the vector is the lower-triangular
+/// Toeplitz matrix of `1, −a, −RC, −RM₁C, …, −RM₁^{n−2}C` times the vector of `M₁`.
+pub fn characteristic_coefficients<T: Ring>(m: &[Vec<T>]) -> Vec<T> {
+    let n = m.len();
+    if n == 0 {
+        return vec![T::one()];
+    }
+    let a = &m[0][0];
+    let row = &m[0][1..];
+    let sub: Vec<Vec<T>> = m[1..].iter().map(|r| r[1..].to_vec()).collect();
+    let mut column: Vec<T> = m[1..].iter().map(|r| r[0].clone()).collect();
+    let mut diagonals = vec![T::one(), a.neg_ref()];
+    for k in 0..n.saturating_sub(1) {
+        if k > 0 {
+            column = sub.iter().map(|r| dot(r, &column)).collect();
         }
-        let rest: Vec<usize> = cols.iter().copied().filter(|&x| x != c).collect();
-        let term = &a[row][c] * &cofactor_expand(a, row + 1, &rest);
-        if idx % 2 == 0 {
-            acc += &term;
-        } else {
-            acc -= &term;
+        diagonals.push(dot(row, &column).neg_ref());
+    }
+    let inner = characteristic_coefficients(&sub);
+    (0..=n)
+        .map(|i| {
+            let mut acc = T::zero();
+            for (j, v) in inner.iter().enumerate().take(i + 1) {
+                acc = acc.add_ref(&diagonals[i - j].mul_ref(v));
+            }
+            acc
+        })
+        .collect()
+}
+
+/// The adjugate `adj(M)`, so that `M⁻¹ = adj(M) / det M`: cofactors up to 4 × 4, beyond that
+/// `adj(M) = (−1)^{n+1} (M^{n−1} + p_1 M^{n−2} + … + p_{n−1} I)` (Cayley–Hamilton, the `p_k`
+/// from [`characteristic_coefficients`]) by Horner's rule, `O(n⁴)` products.
+///
+/// The matrix must be square (the caller checks; this function only indexes).
+pub fn adjugate<T: Ring>(m: &[Vec<T>]) -> Matrix<T> {
+    let n = m.len();
+    if n > LAPLACE_SIZE {
+        return adjugate_cayley_hamilton(m);
+    }
+    let mut out = vec![vec![T::zero(); n]; n];
+    for (i, row) in out.iter_mut().enumerate() {
+        for (j, cell) in row.iter_mut().enumerate() {
+            // adj[i][j] is the cofactor of (j, i)
+            let minor: Vec<Vec<T>> = m
+                .iter()
+                .enumerate()
+                .filter(|(r, _)| *r != j)
+                .map(|(_, r)| {
+                    r.iter()
+                        .enumerate()
+                        .filter(|(c, _)| *c != i)
+                        .map(|(_, x)| x.clone())
+                        .collect()
+                })
+                .collect();
+            let c = determinant_division_free(&minor);
+            *cell = if (i + j) % 2 == 0 { c } else { c.neg_ref() };
+        }
+    }
+    out
+}
+
+fn adjugate_cayley_hamilton<T: Ring>(m: &[Vec<T>]) -> Matrix<T> {
+    let n = m.len();
+    let p = characteristic_coefficients(m);
+    let scaled_identity = |c: &T| -> Matrix<T> {
+        (0..n)
+            .map(|i| (0..n).map(|j| if i == j { c.clone() } else { T::zero() }).collect())
+            .collect()
+    };
+    let mut acc = scaled_identity(&T::one());
+    for pk in &p[1..n] {
+        let mut next = scaled_identity(pk);
+        for (i, row) in next.iter_mut().enumerate() {
+            for (j, cell) in row.iter_mut().enumerate() {
+                for (k, mk) in m[i].iter().enumerate() {
+                    *cell = cell.add_ref(&mk.mul_ref(&acc[k][j]));
+                }
+            }
+        }
+        acc = next;
+    }
+    if n % 2 == 0 {
+        // (−1)^{n+1} is −1 for even n
+        for x in acc.iter_mut().flatten() {
+            *x = x.neg_ref();
         }
     }
     acc
 }
 
+/// Laplace expansion along the first row, by minors.
+fn laplace<T: Ring>(m: &[Vec<T>]) -> T {
+    match m.len() {
+        0 => T::one(),
+        1 => m[0][0].clone(),
+        2 => m[0][0].mul_ref(&m[1][1]).sub_ref(&m[0][1].mul_ref(&m[1][0])),
+        n => {
+            let mut acc = T::zero();
+            for j in 0..n {
+                let minor: Vec<Vec<T>> = m[1..]
+                    .iter()
+                    .map(|r| {
+                        r.iter()
+                            .enumerate()
+                            .filter(|(k, _)| *k != j)
+                            .map(|(_, x)| x.clone())
+                            .collect()
+                    })
+                    .collect();
+                let term = m[0][j].mul_ref(&laplace(&minor));
+                acc = if j % 2 == 0 {
+                    acc.add_ref(&term)
+                } else {
+                    acc.sub_ref(&term)
+                };
+            }
+            acc
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scalar::Ring;
     use num_rational::BigRational;
     type Q = BigRational;
     fn q(n: i64) -> Q {
@@ -474,6 +571,72 @@ mod tests {
         assert!(err.to_string().contains("rank 1 < 2"), "{err}");
         assert!(solve_many(&a, &[vec![q(1)]]).is_err());
         assert!(inverse(&[vec![q(1), q(2)]]).unwrap_err().to_string().contains("square"));
+    }
+
+    /// A deterministic matrix of small fractions, different for each `seed`.
+    fn matrix(n: usize, seed: u64) -> Vec<Vec<Q>> {
+        let mut state = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        (0..n)
+            .map(|_| {
+                (0..n)
+                    .map(|_| frac((next() % 19) as i64 - 9, (next() % 5) as i64 + 1))
+                    .collect()
+            })
+            .collect()
+    }
+
+    fn frac(p: i64, d: i64) -> Q {
+        Q::new(p.into(), d.into())
+    }
+
+    #[test]
+    fn berkowitz_agrees_with_laplace_and_bareiss_and_the_adjugate_inverts() {
+        for n in 0..=7 {
+            for seed in 0..6 {
+                let m = matrix(n, seed + 100 * n as u64);
+                let p = characteristic_coefficients(&m);
+                let det_b = if n % 2 == 0 { p[n].clone() } else { -p[n].clone() };
+                assert_eq!(det_b, laplace(&m), "n = {n}, seed {seed}");
+                assert_eq!(determinant_division_free(&m), det_b, "n = {n}, seed {seed}");
+                if n == 0 {
+                    continue;
+                }
+                assert_eq!(determinant(&m).unwrap(), det_b, "n = {n}, seed {seed}");
+                // M · adj(M) = det(M) · I, by cofactors and by Cayley–Hamilton alike.
+                for adj in [adjugate(&m), adjugate_cayley_hamilton(&m)] {
+                    let product = mat_mul(&m, &adj).unwrap();
+                    for (i, row) in product.iter().enumerate() {
+                        for (j, x) in row.iter().enumerate() {
+                            let want = if i == j { det_b.clone() } else { q(0) };
+                            assert_eq!(*x, want, "M·adj(M) at ({i}, {j}), n = {n}");
+                        }
+                    }
+                }
+            }
+        }
+        // A Vandermonde determinant: the product of the differences.
+        let xs = [frac(1, 2), q(-2), q(3), frac(5, 7), q(0), q(4)];
+        let v: Vec<Vec<Q>> = xs
+            .iter()
+            .map(|x| (0..xs.len()).map(|k| num_traits::pow(x.clone(), k)).collect())
+            .collect();
+        let mut expected = q(1);
+        for j in 0..xs.len() {
+            for i in 0..j {
+                expected *= &xs[j] - &xs[i];
+            }
+        }
+        assert_eq!(determinant_division_free(&v), expected);
+        // A singular 5 × 5 matrix (two equal rows) has determinant 0.
+        let mut s = matrix(5, 7);
+        s[4] = s[1].clone();
+        assert_eq!(determinant_division_free(&s), q(0));
     }
 
     #[test]

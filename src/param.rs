@@ -4,7 +4,7 @@
 //! iso-curves of surfaces) and rational ones ([`crate::RationalBezierCurve`]).
 
 use crate::error::Result;
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::{Ring, Scalar};
 
 /// A parametric curve `t ↦ x(t)`.
 pub trait ParamCurve: Sized {
@@ -25,12 +25,11 @@ pub trait ParamCurve: Sized {
     fn subsegment(&self, t0: &Self::Scalar, t1: &Self::Scalar) -> Result<Self>
     where
         Self::Scalar: Scalar,
-        for<'a> &'a Self::Scalar: RefOps<Self::Scalar>,
     {
         let one = Self::Scalar::one();
         if *t0 != one {
             let (_, right) = self.split_at(t0)?;
-            let s = (t1 - t0).checked_div(&(&one - t0))?;
+            let s = t1.sub_ref(t0).checked_div(&one.sub_ref(t0))?;
             Ok(right.split_at(&s)?.0)
         } else {
             let (left, _) = self.split_at(t1)?;
@@ -54,10 +53,7 @@ pub trait ParamCurveDeriv: ParamCurve {
     }
 }
 
-impl<T: Scalar, P: crate::VectorSpace<Scalar = T>> ParamCurve for crate::Bezier<P>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar, P: crate::VectorSpace<Scalar = T>> ParamCurve for crate::Bezier<P> {
     type Scalar = T;
     type Point = P;
 
@@ -73,10 +69,7 @@ where
 }
 
 /// The hodograph; a constant curve's derivative is the constant zero curve.
-impl<T: Scalar, P: crate::VectorSpace<Scalar = T>> ParamCurveDeriv for crate::Bezier<P>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar, P: crate::VectorSpace<Scalar = T>> ParamCurveDeriv for crate::Bezier<P> {
     type Deriv = Self;
 
     fn deriv(&self) -> Result<Self> {

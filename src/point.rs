@@ -6,7 +6,7 @@
 //! is exactly why Bézier curves are invariant under [`AffineMap`]s.
 
 use crate::error::{Error, Result, MAX_DIMENSION};
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 use crate::space::{parse_tuple, point_ops, point_ref_ops, write_tuple, VectorSpace};
 use smallvec::SmallVec;
 use std::fmt;
@@ -41,10 +41,7 @@ pub struct Point<T> {
 /// A difference of two points; the same type as [`Point`].
 pub type Vector<T> = Point<T>;
 
-impl<T: Scalar> Point<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar> Point<T> {
     /// A point from its coordinates; at least one, at most [`MAX_DIMENSION`].
     pub fn new(coords: Vec<T>) -> Result<Self> {
         if coords.is_empty() {
@@ -103,10 +100,7 @@ where
     }
 
     /// Converts every coordinate to another scalar type.
-    pub fn try_map<U: Scalar>(&self, f: impl Fn(&T) -> Result<U>) -> Result<Point<U>>
-    where
-        for<'a> &'a U: RefOps<U>,
-    {
+    pub fn try_map<U: Scalar>(&self, f: impl Fn(&T) -> Result<U>) -> Result<Point<U>> {
         Ok(Point {
             coords: self.coords.iter().map(f).collect::<Result<_>>()?,
         })
@@ -114,32 +108,32 @@ where
 
     /// `self + v`.
     pub fn add(&self, v: &Vector<T>) -> Point<T> {
-        self.zip(v, |a, b| a + b)
+        self.zip(v, |a, b| a.add_ref(b))
     }
 
     /// `self - other`, the vector from `other` to `self`.
     pub fn sub(&self, other: &Point<T>) -> Vector<T> {
-        self.zip(other, |a, b| a - b)
+        self.zip(other, |a, b| a.sub_ref(b))
     }
 
     /// `s * self`.
     pub fn scale(&self, s: &T) -> Vector<T> {
         Point {
-            coords: self.coords.iter().map(|c| c * s).collect(),
+            coords: self.coords.iter().map(|c| c.mul_ref(s)).collect(),
         }
     }
 
     /// `-self`.
     pub fn neg(&self) -> Vector<T> {
         Point {
-            coords: self.coords.iter().map(|c| -c).collect(),
+            coords: self.coords.iter().map(|c| c.neg_ref()).collect(),
         }
     }
 
     /// `(1 - t) self + t other`: the point dividing the segment in the ratio `t : 1 - t`,
     /// the step of de Casteljau's algorithm (1).
     pub fn lerp(&self, other: &Point<T>, t: &T) -> Point<T> {
-        self.zip(other, |a, b| a + &(t * &(b - a)))
+        self.zip(other, |a, b| a.add_ref(&t.mul_ref(&b.sub_ref(a))))
     }
 
     /// The dot product.
@@ -147,7 +141,7 @@ where
         self.check_dim(other);
         let mut acc = T::zero();
         for (a, b) in self.coords.iter().zip(&other.coords) {
-            acc += &(a * b);
+            acc += &a.mul_ref(b);
         }
         acc
     }
@@ -167,7 +161,7 @@ where
         self.check_dim(other);
         let mut best = T::zero();
         for (a, b) in self.coords.iter().zip(&other.coords) {
-            let d = (a - b).abs();
+            let d = a.sub_ref(b).abs();
             if d > best {
                 best = d;
             }
@@ -206,10 +200,7 @@ where
     }
 }
 
-impl<T: Scalar> VectorSpace for Point<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar> VectorSpace for Point<T> {
     type Scalar = T;
 
     fn dim(&self) -> usize {
@@ -225,19 +216,19 @@ where
     fn lerp_assign(&mut self, other: &Self, t: &T) {
         self.check_dim(other);
         for (a, b) in self.coords.iter_mut().zip(&other.coords) {
-            let d = b - &*a;
-            *a += &(t * &d);
+            let d = b.sub_ref(&*a);
+            *a += &t.mul_ref(&d);
         }
     }
     fn add_scaled_assign(&mut self, s: &T, v: &Self) {
         self.check_dim(v);
         for (a, b) in self.coords.iter_mut().zip(&v.coords) {
-            *a += &(s * b);
+            *a += &s.mul_ref(b);
         }
     }
     fn scale_assign(&mut self, s: &T) {
         for a in &mut self.coords {
-            *a = &*a * s;
+            *a = a.mul_ref(s);
         }
     }
     fn add_assign_ref(&mut self, other: &Self) {
@@ -272,10 +263,7 @@ impl<T> IndexMut<usize> for Point<T> {
     }
 }
 
-impl<T: Scalar, const N: usize> From<[T; N]> for Point<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar, const N: usize> From<[T; N]> for Point<T> {
     /// The point with these coordinates; `N` must be at least 1 (a zero-dimensional point
     /// is a programming error and panics).
     fn from(coords: [T; N]) -> Self {
@@ -287,10 +275,7 @@ where
     }
 }
 
-impl<T: Scalar> TryFrom<Vec<T>> for Point<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar> TryFrom<Vec<T>> for Point<T> {
     type Error = Error;
     fn try_from(coords: Vec<T>) -> Result<Self> {
         Point::new(coords)
@@ -305,10 +290,7 @@ impl<T> From<Point<T>> for Vec<T> {
 
 /// Reads what `Display` prints: `(a, b, …)`, each coordinate by `T`'s `FromStr` (for
 /// [`crate::BigRational`]: integers and fractions `p/q`).
-impl<T: Scalar + FromStr> FromStr for Point<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar + FromStr> FromStr for Point<T> {
     type Err = Error;
     fn from_str(s: &str) -> Result<Self> {
         Point::new(parse_tuple(s)?)
@@ -324,10 +306,7 @@ impl<T: serde::Serialize> serde::Serialize for Point<T> {
 
 /// A list of coordinates, checked as [`Point::new`] checks it.
 #[cfg(feature = "serde")]
-impl<'de, T: Scalar + serde::Deserialize<'de>> serde::Deserialize<'de> for Point<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<'de, T: Scalar + serde::Deserialize<'de>> serde::Deserialize<'de> for Point<T> {
     fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> std::result::Result<Self, D::Error> {
         Point::new(Vec::<T>::deserialize(deserializer)?).map_err(serde::de::Error::custom)
     }
@@ -356,18 +335,12 @@ impl<T: fmt::Display> fmt::Display for PointList<'_, T> {
 }
 
 /// Checks that `points` is non-empty and all of one dimension; returns that dimension.
-pub fn common_dimension<T: Scalar>(points: &[Point<T>], what: &'static str) -> Result<usize>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn common_dimension<T: Scalar>(points: &[Point<T>], what: &'static str) -> Result<usize> {
     crate::curve::common_dim(points, what)
 }
 
 /// `Σ c_i p_i` with arbitrary coefficients: a linear combination, meaningful for vectors.
-pub fn linear_combination<T: Scalar>(points: &[Point<T>], coeffs: &[T]) -> Result<Point<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn linear_combination<T: Scalar>(points: &[Point<T>], coeffs: &[T]) -> Result<Point<T>> {
     let dim = common_dimension(points, "linear combination")?;
     if coeffs.len() != points.len() {
         return Err(Error::WrongCount {
@@ -396,10 +369,7 @@ where
 /// let g = barycentric(&tri, &[third.clone(), third.clone(), third]).unwrap();
 /// assert_eq!(g, Point::from_ints(&[1, 1]).unwrap());
 /// ```
-pub fn barycentric<T: Scalar>(points: &[Point<T>], weights: &[T]) -> Result<Point<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn barycentric<T: Scalar>(points: &[Point<T>], weights: &[T]) -> Result<Point<T>> {
     let mut sum = T::zero();
     let mut abs_sum = 0.0f64;
     for w in weights {
@@ -430,10 +400,7 @@ pub struct AffineMap<T> {
     translation: Vec<T>,
 }
 
-impl<T: Scalar> AffineMap<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar> AffineMap<T> {
     /// The map with matrix `matrix` (one row per output coordinate) and translation.
     pub fn new(matrix: Vec<Vec<T>>, translation: Vec<T>) -> Result<Self> {
         let cols = matrix.first().map(Vec::len).ok_or(Error::Empty("affine map matrix"))?;
@@ -504,7 +471,7 @@ where
         let coords = self.matrix.iter().zip(&self.translation).map(|(row, c)| {
             let mut acc = c.clone();
             for (a, x) in row.iter().zip(p.coords()) {
-                acc += &(a * x);
+                acc += &a.mul_ref(x);
             }
             acc
         });
@@ -533,7 +500,7 @@ where
                     .map(|j| {
                         let mut acc = T::zero();
                         for (k, a) in row.iter().enumerate() {
-                            acc += &(a * &inner.matrix[k][j]);
+                            acc += &a.mul_ref(&inner.matrix[k][j]);
                         }
                         acc
                     })
@@ -550,6 +517,7 @@ where
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scalar::Ring;
     use num_rational::BigRational;
 
     type Q = BigRational;

@@ -2,13 +2,12 @@
 //! `(3, -2√2)` (text 001, Example 2); everything about them is on [`QuadraticIrrational`].
 
 use crate::error::{Error, Result};
-use crate::scalar::{parse_exact, sign, Scalar};
+use crate::scalar::{forward_ring_ops, parse_exact, sign, Ring, Scalar};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 use std::cmp::Ordering;
 use std::fmt;
-use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 use std::str::FromStr;
 
 /// Largest `|d|` accepted as a radicand: square-freeness is checked by trial division, and
@@ -152,7 +151,7 @@ impl QuadraticIrrational {
     /// `sqrt(0) = 0`, `sqrt(-4) = 2√-1`.
     ///
     /// ```
-    /// use casteljau::{QuadraticIrrational, Scalar};
+    /// use casteljau::{QuadraticIrrational, Ring, Scalar};
     /// let s8 = QuadraticIrrational::sqrt(8).unwrap();
     /// assert_eq!(s8.to_string(), "2*sqrt(2)");
     /// assert_eq!(&s8 * &s8, QuadraticIrrational::from_i64(8));
@@ -355,42 +354,6 @@ impl QuadraticIrrational {
             (Field::Rational, Field::Rational) => Ok(0),
         }
     }
-
-    fn add_ref(&self, other: &Self) -> Self {
-        match self.combine(other) {
-            Ok(d) => Self::normalized(&self.a + &other.a, &self.b + &other.b, d),
-            Err(field) => Self::poisoned(field),
-        }
-    }
-
-    fn sub_ref(&self, other: &Self) -> Self {
-        match self.combine(other) {
-            Ok(d) => Self::normalized(&self.a - &other.a, &self.b - &other.b, d),
-            Err(field) => Self::poisoned(field),
-        }
-    }
-
-    fn mul_ref(&self, other: &Self) -> Self {
-        match self.combine(other) {
-            Ok(d) => {
-                let mut a = &self.a * &other.a;
-                if !Zero::is_zero(&self.b) && !Zero::is_zero(&other.b) {
-                    a += &self.b * &other.b * BigRational::from_integer(d.into());
-                }
-                let b = &self.a * &other.b + &self.b * &other.a;
-                Self::normalized(a, b, d)
-            }
-            Err(field) => Self::poisoned(field),
-        }
-    }
-
-    fn neg_ref(&self) -> Self {
-        QuadraticIrrational {
-            a: -&self.a,
-            b: -&self.b,
-            field: self.field,
-        }
-    }
 }
 
 /// Splits at top-level `+`/`-` that start a term (not an exponent sign, not inside parentheses).
@@ -517,87 +480,62 @@ impl fmt::Display for QuadraticIrrational {
     }
 }
 
-macro_rules! forward_binop {
-    ($tr:ident, $method:ident, $inner:ident) => {
-        impl $tr<QuadraticIrrational> for QuadraticIrrational {
-            type Output = QuadraticIrrational;
-            fn $method(self, rhs: QuadraticIrrational) -> QuadraticIrrational {
-                self.$inner(&rhs)
-            }
-        }
-        impl<'a> $tr<&'a QuadraticIrrational> for QuadraticIrrational {
-            type Output = QuadraticIrrational;
-            fn $method(self, rhs: &'a QuadraticIrrational) -> QuadraticIrrational {
-                self.$inner(rhs)
-            }
-        }
-        impl<'a> $tr<QuadraticIrrational> for &'a QuadraticIrrational {
-            type Output = QuadraticIrrational;
-            fn $method(self, rhs: QuadraticIrrational) -> QuadraticIrrational {
-                self.$inner(&rhs)
-            }
-        }
-        impl<'a, 'b> $tr<&'b QuadraticIrrational> for &'a QuadraticIrrational {
-            type Output = QuadraticIrrational;
-            fn $method(self, rhs: &'b QuadraticIrrational) -> QuadraticIrrational {
-                self.$inner(rhs)
-            }
-        }
-    };
-}
-
-forward_binop!(Add, add, add_ref);
-forward_binop!(Sub, sub, sub_ref);
-forward_binop!(Mul, mul, mul_ref);
-
-macro_rules! forward_assign {
-    ($tr:ident, $method:ident, $inner:ident) => {
-        impl<'a> $tr<&'a QuadraticIrrational> for QuadraticIrrational {
-            fn $method(&mut self, rhs: &'a QuadraticIrrational) {
-                *self = self.$inner(rhs);
-            }
-        }
-        impl $tr<QuadraticIrrational> for QuadraticIrrational {
-            fn $method(&mut self, rhs: QuadraticIrrational) {
-                *self = self.$inner(&rhs);
-            }
-        }
-    };
-}
-
-forward_assign!(AddAssign, add_assign, add_ref);
-forward_assign!(SubAssign, sub_assign, sub_ref);
-forward_assign!(MulAssign, mul_assign, mul_ref);
-
-impl Neg for QuadraticIrrational {
-    type Output = QuadraticIrrational;
-    fn neg(self) -> QuadraticIrrational {
-        self.neg_ref()
-    }
-}
-
-impl Neg for &QuadraticIrrational {
-    type Output = QuadraticIrrational;
-    fn neg(self) -> QuadraticIrrational {
-        self.neg_ref()
-    }
-}
-
-impl Scalar for QuadraticIrrational {
-    const EXACT: bool = true;
-    const NAME: &'static str = "quadratic";
-
+impl Ring for QuadraticIrrational {
     fn zero() -> Self {
         Self::rational(q0())
     }
     fn one() -> Self {
         Self::rational(BigRational::from_integer(1.into()))
     }
-    fn is_zero(&self) -> bool {
-        self.field == Field::Rational && Zero::is_zero(&self.a)
-    }
     fn from_i64(n: i64) -> Self {
         Self::rational(BigRational::from_integer(n.into()))
+    }
+
+    fn add_ref(&self, other: &Self) -> Self {
+        match self.combine(other) {
+            Ok(d) => Self::normalized(&self.a + &other.a, &self.b + &other.b, d),
+            Err(field) => Self::poisoned(field),
+        }
+    }
+
+    fn sub_ref(&self, other: &Self) -> Self {
+        match self.combine(other) {
+            Ok(d) => Self::normalized(&self.a - &other.a, &self.b - &other.b, d),
+            Err(field) => Self::poisoned(field),
+        }
+    }
+
+    fn mul_ref(&self, other: &Self) -> Self {
+        match self.combine(other) {
+            Ok(d) => {
+                let mut a = &self.a * &other.a;
+                if !Zero::is_zero(&self.b) && !Zero::is_zero(&other.b) {
+                    a += &self.b * &other.b * BigRational::from_integer(d.into());
+                }
+                let b = &self.a * &other.b + &self.b * &other.a;
+                Self::normalized(a, b, d)
+            }
+            Err(field) => Self::poisoned(field),
+        }
+    }
+
+    fn neg_ref(&self) -> Self {
+        QuadraticIrrational {
+            a: -&self.a,
+            b: -&self.b,
+            field: self.field,
+        }
+    }
+}
+
+forward_ring_ops!(QuadraticIrrational);
+
+impl Scalar for QuadraticIrrational {
+    const EXACT: bool = true;
+    const NAME: &'static str = "quadratic";
+
+    fn is_zero(&self) -> bool {
+        self.field == Field::Rational && Zero::is_zero(&self.a)
     }
     fn from_bigint(n: &BigInt) -> Result<Self> {
         Ok(Self::rational(BigRational::from_integer(n.clone())))

@@ -41,7 +41,7 @@ use crate::error::{check_degree, Error, Result, MAX_DIMENSION};
 use crate::kernel::{casteljau_step, with_column};
 use crate::point::{common_dimension, Point};
 use crate::quadratic::QuadraticIrrational;
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::{Ring, Scalar};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
@@ -67,10 +67,7 @@ impl<T: PartialEq> PartialEq for RationalBezierCurve<T> {
     }
 }
 
-impl<T: Scalar> RationalBezierCurve<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar> RationalBezierCurve<T> {
     /// A curve from control points and their weights. Errors: no points, mixed dimensions,
     /// a weight count different from the point count, all weights zero, a degree above
     /// [`crate::MAX_DEGREE`], a dimension that leaves no room for the homogeneous
@@ -124,7 +121,7 @@ where
         let lifted = points
             .iter()
             .zip(weights)
-            .map(|(p, w)| Point::from_valid(p.coords().iter().map(|c| c * w).chain([w.clone()])))
+            .map(|(p, w)| Point::from_valid(p.coords().iter().map(|c| c.mul_ref(w)).chain([w.clone()])))
             .collect();
         BezierCurve::new(lifted).expect("count, degree and dimension checked in new")
     }
@@ -162,10 +159,7 @@ where
     }
 
     /// Converts every coordinate and weight to another scalar type (e.g. exact → `f64`).
-    pub fn try_map<U: Scalar>(&self, f: impl Fn(&T) -> Result<U> + Copy) -> Result<RationalBezierCurve<U>>
-    where
-        for<'a> &'a U: RefOps<U>,
-    {
+    pub fn try_map<U: Scalar>(&self, f: impl Fn(&T) -> Result<U> + Copy) -> Result<RationalBezierCurve<U>> {
         RationalBezierCurve::new(
             self.points.iter().map(|p| p.try_map(f)).collect::<Result<_>>()?,
             self.weights.iter().map(f).collect::<Result<_>>()?,
@@ -315,16 +309,18 @@ where
         });
         let (col0, col1) = (h0.coords(), h1.coords());
         let nn = T::from_usize(n);
-        let value: Vec<T> = (0..h).map(|k| &col0[k] + &(t * &(&col1[k] - &col0[k]))).collect();
-        let slope: Vec<T> = (0..h).map(|k| &nn * &(&col1[k] - &col0[k])).collect();
+        let value: Vec<T> = (0..h)
+            .map(|k| col0[k].add_ref(&t.mul_ref(&col1[k].sub_ref(&col0[k]))))
+            .collect();
+        let slope: Vec<T> = (0..h).map(|k| nn.mul_ref(&col1[k].sub_ref(&col0[k]))).collect();
         let (w, dw) = (&value[h - 1], &slope[h - 1]);
         if w.is_zero() {
             return Err(self.vanishing(t));
         }
-        let w2 = w * w;
+        let w2 = w.mul_ref(w);
         Point::new(
             (0..h - 1)
-                .map(|k| (&(&slope[k] * w) - &(&value[k] * dw)).checked_div(&w2))
+                .map(|k| slope[k].mul_ref(w).sub_ref(&value[k].mul_ref(dw)).checked_div(&w2))
                 .collect::<Result<_>>()?,
         )
     }
@@ -334,7 +330,7 @@ where
         if s.is_zero() {
             return Err(Error::Domain("scaling the weights by 0 leaves no curve".into()));
         }
-        Self::new(self.points.clone(), self.weights.iter().map(|w| w * s).collect())
+        Self::new(self.points.clone(), self.weights.iter().map(|w| w.mul_ref(s)).collect())
     }
 
     /// The same curve with `w_0 = 1` (weights divided by `w_0`); an error when `w_0 = 0`.
@@ -371,7 +367,7 @@ where
         let mut power = T::one();
         let mut weights = Vec::with_capacity(self.weights.len());
         for w in &self.weights {
-            weights.push(w * &power);
+            weights.push(w.mul_ref(&power));
             power *= c;
         }
         Self::new(self.points.clone(), weights)
@@ -460,10 +456,7 @@ impl ExactSqrt for QuadraticIrrational {
     }
 }
 
-impl<T: Scalar + ExactSqrt> RationalBezierCurve<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar + ExactSqrt> RationalBezierCurve<T> {
     /// The standard form of a conic arc, `w_0 = w_2 = 1`: the same arc (reparametrised by
     /// [`Self::reparametrize_weights`] with `c = √(w_0/w_2) > 0`, then scaled), with middle
     /// weight `±w_1/√(w_0 w_2)`. Needs `w_0 w_2 > 0` and a root that exists exactly in `T`
@@ -477,7 +470,7 @@ where
     /// ```
     pub fn conic_standard_form(&self) -> Result<Self> {
         let (w0, _, w2) = self.conic_weights()?;
-        if w0.is_zero() || w2.is_zero() || (w0 * w2) < T::zero() {
+        if w0.is_zero() || w2.is_zero() || (w0.mul_ref(w2)) < T::zero() {
             return Err(Error::Domain(format!(
                 "the standard form w0 = w2 = 1 needs w0·w2 > 0, the weights are {w0}, {w2}"
             )));
@@ -538,26 +531,20 @@ impl fmt::Display for ConicKind {
 
 /// Whether `b0, b1, b2` lie on one line (any dimension): the Gram determinant of
 /// `b1 - b0, b2 - b0` vanishes.
-fn collinear<T: Scalar>(p: &[Point<T>]) -> bool
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn collinear<T: Scalar>(p: &[Point<T>]) -> bool {
     let u = p[1].sub(&p[0]);
     let v = p[2].sub(&p[0]);
     let uv = u.dot(&v);
-    (&u.norm_squared() * &v.norm_squared() - &uv * &uv).is_zero()
+    (u.norm_squared().mul_ref(&v.norm_squared()) - uv.mul_ref(&uv)).is_zero()
 }
 
 /// The shape invariant `w_1² / (w_0 w_2)` of a conic arc: unchanged by scaling the weights
 /// and by [`RationalBezierCurve::reparametrize_weights`]; `< 1` ellipse, `= 1` parabola,
 /// `> 1` hyperbola (for non-collinear control points and non-zero weights). An error when
 /// `w_0 w_2 = 0` or the curve is not quadratic.
-pub fn conic_shape_factor<T: Scalar>(c: &RationalBezierCurve<T>) -> Result<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn conic_shape_factor<T: Scalar>(c: &RationalBezierCurve<T>) -> Result<T> {
     let (w0, w1, w2) = c.conic_weights()?;
-    (w1 * w1).checked_div(&(w0 * w2))
+    w1.mul_ref(w1).checked_div(&w0.mul_ref(w2))
 }
 
 /// Classifies the conic carrying a rational quadratic arc by its weights (text 001, Fig. 7c).
@@ -579,10 +566,7 @@ where
 /// assert_eq!(kind(&[1, 2, 1]), ConicKind::Hyperbola);
 /// assert_eq!(kind(&[1, 0, 1]), ConicKind::DegenerateZeroWeight);
 /// ```
-pub fn classify_conic<T: Scalar>(c: &RationalBezierCurve<T>) -> Result<ConicKind>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn classify_conic<T: Scalar>(c: &RationalBezierCurve<T>) -> Result<ConicKind> {
     let (w0, w1, w2) = c.conic_weights()?;
     if collinear(c.points()) {
         return Ok(ConicKind::DegenerateCollinear);
@@ -590,7 +574,7 @@ where
     if w0.is_zero() || w1.is_zero() || w2.is_zero() {
         return Ok(ConicKind::DegenerateZeroWeight);
     }
-    let excess = &(w1 * w1) - &(w0 * w2);
+    let excess = w1.mul_ref(w1).sub_ref(&w0.mul_ref(w2));
     Ok(if excess.is_zero() {
         ConicKind::Parabola
     } else if excess > T::zero() {
@@ -604,17 +588,14 @@ where
 /// `[0, 1]`, so that the arc runs through infinity. Never for positive weights (the arc then
 /// lies in the triangle of its control points). Decided exactly by signs: with `w_0, w_2`
 /// of one sign, a root in `(0, 1)` exists iff `w_1` has the other sign and `w_1² ≥ w_0 w_2`.
-pub fn conic_arc_passes_infinity<T: Scalar>(c: &RationalBezierCurve<T>) -> Result<bool>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn conic_arc_passes_infinity<T: Scalar>(c: &RationalBezierCurve<T>) -> Result<bool> {
     let (w0, w1, w2) = c.conic_weights()?;
     let zero = T::zero();
-    if w0.is_zero() || w2.is_zero() || (w0 * w2) < zero {
+    if w0.is_zero() || w2.is_zero() || (w0.mul_ref(w2)) < zero {
         return Ok(true);
     }
-    let opposite = (w0 * w1) < zero;
-    Ok(opposite && (w1 * w1) >= (w0 * w2))
+    let opposite = (w0.mul_ref(w1)) < zero;
+    Ok(opposite && w1.mul_ref(w1) >= w0.mul_ref(w2))
 }
 
 /// A conic `A x² + B xy + C y² + D x + E y + F = 0`.
@@ -634,10 +615,7 @@ pub struct ImplicitConic<T> {
     pub f: T,
 }
 
-impl<T: Scalar> ImplicitConic<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar> ImplicitConic<T> {
     /// The conic with coefficients `[A, B, C, D, E, F]`.
     pub fn from_coefficients([a, b, c, d, e, f]: [T; 6]) -> Self {
         ImplicitConic { a, b, c, d, e, f }
@@ -663,15 +641,17 @@ where
     /// `A x² + B xy + C y² + D x + E y + F`.
     pub fn eval(&self, x: &T, y: &T) -> T {
         // (A x + B y + D) x + (C y + E) y + F
-        let lin_x = &(&(&self.a * x) + &(&self.b * y)) + &self.d;
-        let lin_y = &(&self.c * y) + &self.e;
-        &(&(&lin_x * x) + &(&lin_y * y)) + &self.f
+        let lin_x = self.a.mul_ref(x).add_ref(&self.b.mul_ref(y)).add_ref(&self.d);
+        let lin_y = self.c.mul_ref(y).add_ref(&self.e);
+        lin_x.mul_ref(x).add_ref(&lin_y.mul_ref(y)).add_ref(&self.f)
     }
 
     /// `B² − 4AC`: negative for an ellipse, zero for a parabola, positive for a hyperbola
     /// (for a non-degenerate conic).
     pub fn discriminant(&self) -> T {
-        &(&self.b * &self.b) - &(&T::from_i64(4) * &(&self.a * &self.c))
+        self.b
+            .mul_ref(&self.b)
+            .sub_ref(&T::from_i64(4).mul_ref(&self.a.mul_ref(&self.c)))
     }
 
     /// `det [[2A, B, D], [B, 2C, E], [D, E, 2F]]` (8 times the determinant of the conic's
@@ -679,12 +659,12 @@ where
     /// points).
     pub fn matrix_determinant(&self) -> T {
         let two = T::from_i64(2);
-        let (a2, c2, f2) = (&two * &self.a, &two * &self.c, &two * &self.f);
+        let (a2, c2, f2) = (two.mul_ref(&self.a), two.mul_ref(&self.c), two.mul_ref(&self.f));
         let (b, d, e) = (&self.b, &self.d, &self.e);
-        let m1 = &(&c2 * &f2) - &(e * e);
-        let m2 = &(b * &f2) - &(e * d);
-        let m3 = &(b * e) - &(&c2 * d);
-        &(&(&a2 * &m1) - &(b * &m2)) + &(d * &m3)
+        let m1 = c2.mul_ref(&f2).sub_ref(&e.mul_ref(e));
+        let m2 = b.mul_ref(&f2).sub_ref(&e.mul_ref(d));
+        let m3 = b.mul_ref(e).sub_ref(&c2.mul_ref(d));
+        a2.mul_ref(&m1).sub_ref(&b.mul_ref(&m2)).add_ref(&d.mul_ref(&m3))
     }
 
     /// The affine type by `B² − 4AC`, or [`ConicKind::DegenerateSingular`] when
@@ -740,7 +720,7 @@ where
             return false;
         }
         let (s, o) = (self.coefficients(), other.coefficients());
-        (0..6).all(|i| (i + 1..6).all(|j| &s[i] * &o[j] == &s[j] * &o[i]))
+        (0..6).all(|i| (i + 1..6).all(|j| s[i].mul_ref(&o[j]) == s[j].mul_ref(&o[i])))
     }
 
     /// [`Self::is_multiple_of`] for floats: both divided by their coefficient at the index
@@ -789,10 +769,7 @@ impl ImplicitConic<BigRational> {
     }
 }
 
-impl<T: fmt::Display + Scalar> fmt::Display for ImplicitConic<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: fmt::Display + Scalar> fmt::Display for ImplicitConic<T> {
     /// `4*x^2 + 3*y^2 - 10*y + 3 = 0`; compound coefficients are parenthesised.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let monomials = ["x^2", "x*y", "y^2", "x", "y", ""];
@@ -829,28 +806,26 @@ where
 /// `α x + β y + γ` as a triple.
 type Affine<T> = [T; 3];
 
-fn affine_product<T: Scalar>(p: &Affine<T>, q: &Affine<T>) -> [T; 6]
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn affine_product<T: Scalar>(p: &Affine<T>, q: &Affine<T>) -> [T; 6] {
     [
-        &p[0] * &q[0],
-        &(&p[0] * &q[1]) + &(&p[1] * &q[0]),
-        &p[1] * &q[1],
-        &(&p[0] * &q[2]) + &(&p[2] * &q[0]),
-        &(&p[1] * &q[2]) + &(&p[2] * &q[1]),
-        &p[2] * &q[2],
+        p[0].mul_ref(&q[0]),
+        p[0].mul_ref(&q[1]).add_ref(&p[1].mul_ref(&q[0])),
+        p[1].mul_ref(&q[1]),
+        p[0].mul_ref(&q[2]).add_ref(&p[2].mul_ref(&q[0])),
+        p[1].mul_ref(&q[2]).add_ref(&p[2].mul_ref(&q[1])),
+        p[2].mul_ref(&q[2]),
     ]
 }
 
 /// `Δ · τ` for the barycentric coordinate belonging to the vertex opposite `(u, v)`:
 /// `det(u - P, v - P)` as an affine function of `P = (x, y)`.
-fn scaled_barycentric<T: Scalar>(u: &[T], v: &[T]) -> Affine<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn scaled_barycentric<T: Scalar>(u: &[T], v: &[T]) -> Affine<T> {
     // (u_x - x)(v_y - y) - (v_x - x)(u_y - y)
-    [&u[1] - &v[1], &v[0] - &u[0], &(&u[0] * &v[1]) - &(&v[0] * &u[1])]
+    [
+        u[1].sub_ref(&v[1]),
+        v[0].sub_ref(&u[0]),
+        u[0].mul_ref(&v[1]).sub_ref(&v[0].mul_ref(&u[1])),
+    ]
 }
 
 /// The exact implicit equation of the conic carrying a planar rational quadratic arc,
@@ -878,10 +853,7 @@ where
 /// assert!(conic.is_multiple_of(&ImplicitConic::from_ints([4, 0, 3, 0, -10, 3])));
 /// assert_eq!(conic.to_primitive_integers().map(|k| k.to_string()), ["4", "0", "3", "0", "-10", "3"]);
 /// ```
-pub fn implicit_conic<T: Scalar>(c: &RationalBezierCurve<T>) -> Result<ImplicitConic<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn implicit_conic<T: Scalar>(c: &RationalBezierCurve<T>) -> Result<ImplicitConic<T>> {
     let (w0, w1, w2) = c.conic_weights()?;
     if c.dim() != 2 {
         return Err(Error::DimensionMismatch {
@@ -900,14 +872,14 @@ where
     let l0 = scaled_barycentric(b1, b2);
     let l1 = scaled_barycentric(b2, b0);
     let l2 = scaled_barycentric(b0, b1);
-    let four_w1_sq = &T::from_i64(4) * &(w1 * w1);
-    let w0w2 = w0 * w2;
+    let four_w1_sq = T::from_i64(4).mul_ref(&w1.mul_ref(w1));
+    let w0w2 = w0.mul_ref(w2);
     let p02 = affine_product(&l0, &l2);
     let p11 = affine_product(&l1, &l1);
     let k: Vec<T> = p02
         .iter()
         .zip(&p11)
-        .map(|(x, y)| &(&four_w1_sq * x) - &(&w0w2 * y))
+        .map(|(x, y)| four_w1_sq.mul_ref(x).sub_ref(&w0w2.mul_ref(y)))
         .collect();
     let conic = ImplicitConic::from_coefficients(k.try_into().expect("six coefficients"));
     if conic.is_zero() {
@@ -918,10 +890,7 @@ where
     conic.normalized()
 }
 
-impl<T: Scalar> crate::param::ParamCurve for RationalBezierCurve<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar> crate::param::ParamCurve for RationalBezierCurve<T> {
     type Scalar = T;
     type Point = Point<T>;
 
@@ -938,10 +907,7 @@ where
 
 /// The derivative of a rational curve of degree `n` is rational of degree `2n`:
 /// `ẋ = (Ẋ W − X Ẇ) / W²` with `(X, W)` the homogeneous form.
-impl<T: Scalar> crate::param::ParamCurveDeriv for RationalBezierCurve<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar> crate::param::ParamCurveDeriv for RationalBezierCurve<T> {
     type Deriv = Self;
 
     /// An error when a Bernstein coefficient of `W²` vanishes where the numerator's does not
@@ -960,7 +926,7 @@ where
         let w: Vec<T> = h.iter().map(|p| p.coords()[dim].clone()).collect();
         let nn = T::from_usize(n);
         let dx: Vec<Point<T>> = x.windows(2).map(|p| p[1].sub(&p[0]).scale(&nn)).collect();
-        let dw: Vec<T> = w.windows(2).map(|p| &nn * &(&p[1] - &p[0])).collect();
+        let dw: Vec<T> = w.windows(2).map(|p| nn.mul_ref(&p[1].sub_ref(&p[0]))).collect();
         // Ẋ W − X Ẇ has degree 2n − 1; one elevation brings it to W²'s degree 2n.
         let first = bernstein_product(&dx, &w)?;
         let second = bernstein_product(&x, &dw)?;
@@ -984,10 +950,7 @@ where
 
 /// The Bernstein coefficients of the product of `Σ a_i B_i^m` and `Σ b_j B_j^p`:
 /// `c_k = Σ_{i+j=k} C(m,i) C(p,j) / C(m+p,k) b_j a_i`.
-fn bernstein_product<T: Scalar>(a: &[Point<T>], b: &[T]) -> Result<Vec<Point<T>>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn bernstein_product<T: Scalar>(a: &[Point<T>], b: &[T]) -> Result<Vec<Point<T>>> {
     let (m, p) = (a.len() - 1, b.len() - 1);
     let (cm, cp, cmp) = (binomial_row(m), binomial_row(p), binomial_row(m + p));
     (0..=m + p)
@@ -996,7 +959,7 @@ where
             for i in k.saturating_sub(p)..=k.min(m) {
                 let j = k - i;
                 let c = T::from_rational(&BigRational::new(&cm[i] * &cp[j], cmp[k].clone()))?;
-                acc.add_scaled_assign(&(&c * &b[j]), &a[i]);
+                acc.add_scaled_assign(&c.mul_ref(&b[j]), &a[i]);
             }
             Ok(acc)
         })

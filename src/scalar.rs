@@ -1,10 +1,12 @@
-//! The [`Scalar`] trait every algorithm of casteljau is generic over.
+//! The number traits every algorithm of casteljau is generic over: [`Ring`] (what every
+//! number can do, the prover's algebras included) and [`Scalar`] (a number the Bézier
+//! algorithms run on).
 //!
 //! Two kinds of scalars run the same code: `f64`, for speed, and exact ones such as
 //! [`BigRational`] (and the quadratic irrationals of [`crate::quadratic`]), to decide
 //! identities with `==`. Exact scalars are `Clone`, not `Copy`, so generic code does its
-//! arithmetic on references — `&a * &b` — which the [`RefOps`] bound makes available:
-//! every generic item carries `where for<'a> &'a T: RefOps<T>`.
+//! arithmetic on references with the [`Ring`] methods (`a.mul_ref(&b)`), which need no
+//! bound beyond `T: Scalar`.
 //!
 //! Exact scalars never overflow: [`BigRational`] is arbitrary precision. Conversions into
 //! an exact type are exact (every finite `f64` is a dyadic rational); conversions that
@@ -14,13 +16,19 @@ use crate::error::{Error, Result};
 use num_bigint::{BigInt, Sign};
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
-use std::fmt::{Debug, Display};
 use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
-/// Arithmetic on borrowed scalars: `&a + &b`, `&a - &b`, `&a * &b`, `-&a`.
+mod ops;
+mod ring;
+
+pub(crate) use ops::forward_ring_ops;
+pub use ring::Ring;
+
+/// Operators on borrowed numbers: `&a + &b`, `&a - &b`, `&a * &b`, `-&a`.
 ///
-/// Implemented automatically for `&T` whenever those operators exist; generic code asks for
-/// it with `where for<'a> &'a T: RefOps<T>`.
+/// Implemented automatically for `&T` whenever those operators exist. Generic code does not
+/// need it (the [`Ring`] methods do the same on references); it names the bound
+/// `for<'a> &'a T: RefOps<T>` for code written against operators.
 pub trait RefOps<T>:
     Sized + Add<Self, Output = T> + Sub<Self, Output = T> + Mul<Self, Output = T> + Neg<Output = T>
 {
@@ -37,18 +45,16 @@ impl<'a, T: 'a> RefOps<T> for &'a T where
 /// error for every scalar, `f64` included.
 ///
 /// ```
-/// use casteljau::{Scalar, BigRational};
+/// use casteljau::{BigRational, Ring, Scalar};
 /// let third = BigRational::from_ratio(1, 3).unwrap();
 /// assert!(BigRational::EXACT);
 /// assert_eq!(&third + &third + &third, BigRational::one());
 /// assert!(BigRational::from_ratio(1, 0).is_err());
 /// ```
 pub trait Scalar:
-    Clone
+    Ring
     + PartialEq
     + PartialOrd
-    + Debug
-    + Display
     + Send
     + Sync
     + 'static
@@ -62,22 +68,14 @@ pub trait Scalar:
     + for<'a> AddAssign<&'a Self>
     + for<'a> SubAssign<&'a Self>
     + for<'a> MulAssign<&'a Self>
-where
-    for<'a> &'a Self: RefOps<Self>,
 {
     /// Whether arithmetic in this type is exact (comparisons by `==` decide identities).
     const EXACT: bool;
     /// A short name for reports ("f64", "rational", ...).
     const NAME: &'static str;
 
-    /// The additive identity.
-    fn zero() -> Self;
-    /// The multiplicative identity.
-    fn one() -> Self;
     /// Whether this is exactly zero.
     fn is_zero(&self) -> bool;
-    /// The integer `n`.
-    fn from_i64(n: i64) -> Self;
     /// The big integer `n`; an error for `f64` when it does not fit.
     fn from_bigint(n: &BigInt) -> Result<Self>;
     /// The rational `r`, exactly for exact types, rounded to nearest for `f64`.
@@ -103,7 +101,7 @@ where
     /// `|self|`.
     fn abs(&self) -> Self {
         if *self < Self::zero() {
-            -self
+            self.neg_ref()
         } else {
             self.clone()
         }
@@ -118,7 +116,7 @@ where
             }
             k >>= 1;
             if k > 0 {
-                base = &base * &base;
+                base = base.mul_ref(&base);
             }
         }
         acc
@@ -145,20 +143,8 @@ impl Scalar for f64 {
     const NAME: &'static str = "f64";
 
     #[inline]
-    fn zero() -> Self {
-        0.0
-    }
-    #[inline]
-    fn one() -> Self {
-        1.0
-    }
-    #[inline]
     fn is_zero(&self) -> bool {
         *self == 0.0
-    }
-    #[inline]
-    fn from_i64(n: i64) -> Self {
-        n as f64
     }
     #[inline]
     fn from_bigint(n: &BigInt) -> Result<Self> {
@@ -197,17 +183,8 @@ impl Scalar for BigRational {
     const EXACT: bool = true;
     const NAME: &'static str = "rational";
 
-    fn zero() -> Self {
-        Zero::zero()
-    }
-    fn one() -> Self {
-        One::one()
-    }
     fn is_zero(&self) -> bool {
         Zero::is_zero(self)
-    }
-    fn from_i64(n: i64) -> Self {
-        BigRational::from_integer(n.into())
     }
     fn from_bigint(n: &BigInt) -> Result<Self> {
         Ok(BigRational::from_integer(n.clone()))

@@ -2,13 +2,12 @@
 
 use crate::error::{Error, Result};
 use crate::float::{nearest_f64, ulp_error, UlpError};
-use crate::scalar::Scalar;
+use crate::scalar::{forward_ring_ops, Ring, Scalar};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::Zero;
 use std::cmp::Ordering;
 use std::fmt;
-use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
 /// An `f64` and the exact value the same operations give on the same inputs.
 ///
@@ -70,63 +69,7 @@ impl fmt::Display for Shadow {
     }
 }
 
-macro_rules! forward_binop {
-    ($Op:ident, $op:ident, $OpAssign:ident, $op_assign:ident) => {
-        impl $Op<&Shadow> for &Shadow {
-            type Output = Shadow;
-            fn $op(self, rhs: &Shadow) -> Shadow {
-                Shadow {
-                    value: self.value.$op(rhs.value),
-                    exact: (&self.exact).$op(&rhs.exact),
-                }
-            }
-        }
-        impl $Op<Shadow> for Shadow {
-            type Output = Shadow;
-            fn $op(self, rhs: Shadow) -> Shadow {
-                (&self).$op(&rhs)
-            }
-        }
-        impl $Op<&Shadow> for Shadow {
-            type Output = Shadow;
-            fn $op(self, rhs: &Shadow) -> Shadow {
-                (&self).$op(rhs)
-            }
-        }
-        impl $OpAssign<&Shadow> for Shadow {
-            fn $op_assign(&mut self, rhs: &Shadow) {
-                self.value = self.value.$op(rhs.value);
-                self.exact = (&self.exact).$op(&rhs.exact);
-            }
-        }
-    };
-}
-
-forward_binop!(Add, add, AddAssign, add_assign);
-forward_binop!(Sub, sub, SubAssign, sub_assign);
-forward_binop!(Mul, mul, MulAssign, mul_assign);
-
-impl Neg for &Shadow {
-    type Output = Shadow;
-    fn neg(self) -> Shadow {
-        Shadow {
-            value: -self.value,
-            exact: -&self.exact,
-        }
-    }
-}
-
-impl Neg for Shadow {
-    type Output = Shadow;
-    fn neg(self) -> Shadow {
-        -&self
-    }
-}
-
-impl Scalar for Shadow {
-    const EXACT: bool = false;
-    const NAME: &'static str = "shadow";
-
+impl Ring for Shadow {
     fn zero() -> Self {
         Shadow {
             value: 0.0,
@@ -136,15 +79,47 @@ impl Scalar for Shadow {
     fn one() -> Self {
         Self::from_i64(1)
     }
-    /// Whether the float is zero (the branch the float code takes).
-    fn is_zero(&self) -> bool {
-        self.value == 0.0
-    }
     fn from_i64(n: i64) -> Self {
         Shadow {
             value: n as f64,
             exact: BigRational::from_integer(n.into()),
         }
+    }
+    fn add_ref(&self, rhs: &Self) -> Self {
+        Shadow {
+            value: self.value + rhs.value,
+            exact: &self.exact + &rhs.exact,
+        }
+    }
+    fn sub_ref(&self, rhs: &Self) -> Self {
+        Shadow {
+            value: self.value - rhs.value,
+            exact: &self.exact - &rhs.exact,
+        }
+    }
+    fn mul_ref(&self, rhs: &Self) -> Self {
+        Shadow {
+            value: self.value * rhs.value,
+            exact: &self.exact * &rhs.exact,
+        }
+    }
+    fn neg_ref(&self) -> Self {
+        Shadow {
+            value: -self.value,
+            exact: -&self.exact,
+        }
+    }
+}
+
+forward_ring_ops!(Shadow);
+
+impl Scalar for Shadow {
+    const EXACT: bool = false;
+    const NAME: &'static str = "shadow";
+
+    /// Whether the float is zero (the branch the float code takes).
+    fn is_zero(&self) -> bool {
+        self.value == 0.0
     }
     fn from_bigint(n: &BigInt) -> Result<Self> {
         Self::from_rational(&BigRational::from_integer(n.clone()))

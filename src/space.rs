@@ -7,7 +7,7 @@
 //! `Copy` for `f64`, stored inline, with mismatched dimensions a type error.
 
 use crate::error::{Error, Result};
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 use std::fmt;
 use std::ops::{Index, IndexMut};
 use std::str::FromStr;
@@ -116,10 +116,7 @@ impl<T, const N: usize> IndexMut<usize> for PointN<T, N> {
     }
 }
 
-impl<T: Scalar, const N: usize> VectorSpace for PointN<T, N>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar, const N: usize> VectorSpace for PointN<T, N> {
     type Scalar = T;
 
     fn dim(&self) -> usize {
@@ -134,20 +131,20 @@ where
     #[inline]
     fn lerp_assign(&mut self, other: &Self, t: &T) {
         for (a, b) in self.0.iter_mut().zip(&other.0) {
-            let d = b - &*a;
-            *a += &(t * &d);
+            let d = b.sub_ref(&*a);
+            *a += &t.mul_ref(&d);
         }
     }
     #[inline]
     fn add_scaled_assign(&mut self, s: &T, v: &Self) {
         for (a, b) in self.0.iter_mut().zip(&v.0) {
-            *a += &(s * b);
+            *a += &s.mul_ref(b);
         }
     }
     #[inline]
     fn scale_assign(&mut self, s: &T) {
         for a in &mut self.0 {
-            *a = &*a * s;
+            *a = a.mul_ref(s);
         }
     }
     #[inline]
@@ -168,59 +165,59 @@ where
 /// written once for a point type through its [`VectorSpace`] methods.
 macro_rules! point_ops {
     ([$($gen:tt)*] $point:ty, $scalar:ty) => {
-        impl<$($gen)*> ::std::ops::Add<$point> for $point where for<'a> &'a $scalar: $crate::scalar::RefOps<$scalar> {
+        impl<$($gen)*> ::std::ops::Add<$point> for $point {
             type Output = $point;
             fn add(mut self, rhs: $point) -> $point {
                 $crate::space::VectorSpace::add_assign_ref(&mut self, &rhs);
                 self
             }
         }
-        impl<$($gen)*> ::std::ops::Add<&$point> for $point where for<'a> &'a $scalar: $crate::scalar::RefOps<$scalar> {
+        impl<$($gen)*> ::std::ops::Add<&$point> for $point {
             type Output = $point;
             fn add(mut self, rhs: &$point) -> $point {
                 $crate::space::VectorSpace::add_assign_ref(&mut self, rhs);
                 self
             }
         }
-        impl<$($gen)*> ::std::ops::Sub<$point> for $point where for<'a> &'a $scalar: $crate::scalar::RefOps<$scalar> {
+        impl<$($gen)*> ::std::ops::Sub<$point> for $point {
             type Output = $point;
             fn sub(mut self, rhs: $point) -> $point {
                 $crate::space::VectorSpace::sub_assign_ref(&mut self, &rhs);
                 self
             }
         }
-        impl<$($gen)*> ::std::ops::Sub<&$point> for $point where for<'a> &'a $scalar: $crate::scalar::RefOps<$scalar> {
+        impl<$($gen)*> ::std::ops::Sub<&$point> for $point {
             type Output = $point;
             fn sub(mut self, rhs: &$point) -> $point {
                 $crate::space::VectorSpace::sub_assign_ref(&mut self, rhs);
                 self
             }
         }
-        impl<$($gen)*> ::std::ops::AddAssign<&$point> for $point where for<'a> &'a $scalar: $crate::scalar::RefOps<$scalar> {
+        impl<$($gen)*> ::std::ops::AddAssign<&$point> for $point {
             fn add_assign(&mut self, rhs: &$point) {
                 $crate::space::VectorSpace::add_assign_ref(self, rhs);
             }
         }
-        impl<$($gen)*> ::std::ops::SubAssign<&$point> for $point where for<'a> &'a $scalar: $crate::scalar::RefOps<$scalar> {
+        impl<$($gen)*> ::std::ops::SubAssign<&$point> for $point {
             fn sub_assign(&mut self, rhs: &$point) {
                 $crate::space::VectorSpace::sub_assign_ref(self, rhs);
             }
         }
-        impl<$($gen)*> ::std::ops::Mul<$scalar> for $point where for<'a> &'a $scalar: $crate::scalar::RefOps<$scalar> {
+        impl<$($gen)*> ::std::ops::Mul<$scalar> for $point {
             type Output = $point;
             fn mul(mut self, rhs: $scalar) -> $point {
                 $crate::space::VectorSpace::scale_assign(&mut self, &rhs);
                 self
             }
         }
-        impl<$($gen)*> ::std::ops::Mul<&$scalar> for $point where for<'a> &'a $scalar: $crate::scalar::RefOps<$scalar> {
+        impl<$($gen)*> ::std::ops::Mul<&$scalar> for $point {
             type Output = $point;
             fn mul(mut self, rhs: &$scalar) -> $point {
                 $crate::space::VectorSpace::scale_assign(&mut self, rhs);
                 self
             }
         }
-        impl<$($gen)*> ::std::ops::Neg for $point where for<'a> &'a $scalar: $crate::scalar::RefOps<$scalar> {
+        impl<$($gen)*> ::std::ops::Neg for $point {
             type Output = $point;
             fn neg(self) -> $point {
                 let mut out = $crate::space::VectorSpace::zero_like(&self);

@@ -38,7 +38,7 @@
 use crate::curve::BezierCurve;
 use crate::error::{MAX_DEGREE, MAX_DIMENSION};
 use crate::point::{AffineMap, Point};
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::{Ring, Scalar};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use proptest::prelude::*;
@@ -154,7 +154,6 @@ pub fn f64_coordinate(max_abs: f64) -> BoxedStrategy<f64> {
 pub fn point_with<T, S>(coord: S, dim: usize) -> BoxedStrategy<Point<T>>
 where
     T: Scalar,
-    for<'a> &'a T: RefOps<T>,
     S: Strategy<Value = T> + 'static,
 {
     assert!(
@@ -189,7 +188,6 @@ pub fn curve_with<T, S>(
 ) -> BoxedStrategy<BezierCurve<T>>
 where
     T: Scalar,
-    for<'a> &'a T: RefOps<T>,
     S: Strategy<Value = T> + Clone + 'static,
 {
     assert!(!degrees.is_empty(), "curve_with: empty degree range {degrees:?}");
@@ -274,8 +272,8 @@ pub fn affine_weights(count: usize) -> BoxedStrategy<Vec<BigRational>> {
     assert!(count >= 1, "affine_weights: need at least one weight");
     proptest::collection::vec(small_rational(), count - 1)
         .prop_map(|mut w| {
-            let sum = w.iter().fold(<BigRational as Scalar>::zero(), |acc, x| acc + x);
-            w.push(<BigRational as Scalar>::one() - sum);
+            let sum = w.iter().fold(<BigRational as Ring>::zero(), |acc, x| acc + x);
+            w.push(<BigRational as Ring>::one() - sum);
             w
         })
         .boxed()
@@ -340,7 +338,7 @@ mod tests {
 
         #[test]
         fn weights_sum_to_one(a in affine_weights(4), b in nonnegative_weights(3)) {
-            let one = <BigRational as Scalar>::one();
+            let one = <BigRational as Ring>::one();
             prop_assert_eq!(a.iter().fold(q(0, 1), |s, x| s + x), one.clone());
             prop_assert_eq!(b.iter().fold(q(0, 1), |s, x| s + x), one);
             prop_assert!(b.iter().all(|x| *x >= q(0, 1)));

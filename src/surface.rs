@@ -6,7 +6,7 @@ use crate::error::{check_degree, Error, Result};
 use crate::hull::convex_weights;
 use crate::kernel::{de_casteljau, STACK_POINTS};
 use crate::point::{common_dimension, AffineMap, Point};
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 use smallvec::SmallVec;
 use std::fmt;
 
@@ -80,10 +80,7 @@ pub struct EnneperMatch<T> {
     pub lambda: T,
 }
 
-impl<T: Scalar> BezierSurface<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar> BezierSurface<T> {
     /// A surface from its net `net[i][j] = b_{i,j}`. Empty nets, empty rows, ragged nets (rows
     /// of different lengths), mixed dimensions and degrees above [`crate::MAX_DEGREE`] are
     /// errors.
@@ -114,7 +111,7 @@ where
     /// coeffs[0].len() - 1)`. Empty intervals and ragged coefficient arrays are errors.
     ///
     /// ```
-    /// use casteljau::{BezierSurface, BigRational, Point, Scalar};
+    /// use casteljau::{Ring, BezierSurface, BigRational, Point, Scalar};
     /// let q = BigRational::from_i64;
     /// let c = |v: &[i64]| Point::from_ints(v).unwrap();
     /// // (u, v, u² - v²) on [-1, 1]²: text 003, Example 2
@@ -172,11 +169,11 @@ where
         let inverse = |(a, b): (&T, &T)| -> Result<(T, T)> {
             // s = (u - a)/(b - a) maps [a, b] to [0, 1]: s = a' + (b' - a') u
             // with a' = -a/(b - a), b' = (1 - a)/(b - a).
-            let h = b - a;
+            let h = b.sub_ref(a);
             if h.is_zero() {
                 return Err(Error::Domain(format!("the parameter interval [{a}, {b}] is empty")));
             }
-            Ok(((-a).checked_div(&h)?, (&T::one() - a).checked_div(&h)?))
+            Ok((a.neg_ref().checked_div(&h)?, T::one().sub_ref(a).checked_div(&h)?))
         };
         let (ua, ub) = inverse(u_range)?;
         let (va, vb) = inverse(v_range)?;
@@ -224,10 +221,7 @@ where
     }
 
     /// Converts the coordinates to another scalar type (e.g. exact → `f64`).
-    pub fn try_map<U: Scalar>(&self, f: impl Fn(&T) -> Result<U> + Copy) -> Result<BezierSurface<U>>
-    where
-        for<'a> &'a U: RefOps<U>,
-    {
+    pub fn try_map<U: Scalar>(&self, f: impl Fn(&T) -> Result<U> + Copy) -> Result<BezierSurface<U>> {
         BezierSurface::new(
             self.net
                 .iter()
@@ -258,7 +252,7 @@ where
         let mut acc = Point::origin(self.dim());
         for (row, wu) in self.net.iter().zip(&bu) {
             for (p, wv) in row.iter().zip(&bv) {
-                acc.add_scaled_assign(&(wu * wv), p);
+                acc.add_scaled_assign(&wu.mul_ref(wv), p);
             }
         }
         acc
@@ -463,7 +457,7 @@ where
     /// point, so inexact scalars are an error. The surface must be in 3D.
     ///
     /// ```
-    /// use casteljau::{enneper_net, BezierSurface, BigRational, Scalar};
+    /// use casteljau::{Ring, enneper_net, BezierSurface, BigRational, Scalar};
     /// let e = enneper_net(&BigRational::from_i64(1)).unwrap();
     /// let found = e.enneper_matches().unwrap();
     /// assert_eq!(found.len(), 1);
@@ -496,10 +490,7 @@ where
 
 /// The power coefficients `c[k][l]` (of `u^k v^l`) of Enneper's minimal surface
 /// `E(u, v) = (u − u³/3 + u v², v − v³/3 + v u², u² − v²)`, a 4×4 array of 3D vectors.
-pub fn enneper_power<T: Scalar>() -> Result<Vec<Vec<Point<T>>>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn enneper_power<T: Scalar>() -> Result<Vec<Vec<Point<T>>>> {
     let third = T::from_ratio(-1, 3)?;
     let mut c = vec![vec![[T::zero(), T::zero(), T::zero()]; 4]; 4];
     c[1][0][0] = T::one();
@@ -519,25 +510,19 @@ where
 /// `u = r(2s − 1)`, `v = r(2t − 1)`). `r = 0` is an error.
 ///
 /// ```
-/// use casteljau::{enneper_net, AffineMap, BigRational, Scalar};
+/// use casteljau::{Ring, enneper_net, AffineMap, BigRational, Scalar};
 /// // text 003, Example 5 is 3 × (Enneper on [−2, 2]²)
 /// let e = enneper_net(&BigRational::from_i64(2)).unwrap();
 /// let e = e.transform(&AffineMap::scaling(3, &BigRational::from_i64(3))).unwrap();
 /// assert_eq!(e.net()[0][0], casteljau::Point::from_ints(&[-22, -22, 0]).unwrap());
 /// ```
-pub fn enneper_net<T: Scalar>(r: &T) -> Result<BezierSurface<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
-    let minus_r = -r;
+pub fn enneper_net<T: Scalar>(r: &T) -> Result<BezierSurface<T>> {
+    let minus_r = r.neg_ref();
     BezierSurface::from_power_on(&enneper_power()?, (&minus_r, r), (&minus_r, r))
 }
 
 /// Tries `power(s, t) = λ E(α s + β, γ t + δ)` with `power` the coefficients of a surface.
-fn match_enneper_power<T: Scalar>(power: &[Vec<Point<T>>], swapped: bool) -> Result<Option<EnneperMatch<T>>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn match_enneper_power<T: Scalar>(power: &[Vec<Point<T>>], swapped: bool) -> Result<Option<EnneperMatch<T>>> {
     let zero = T::zero();
     let c = |k: usize, l: usize, coord: usize| -> &T {
         power
@@ -553,13 +538,13 @@ where
     let two = T::from_i64(2);
     // z = λ(u² − v²) gives z20 = λα², z10 = 2λαβ, z02 = −λγ², z01 = −2λγδ;
     // x30 = −λα³/3 and y03 = −λγ³/3.
-    let alpha = (&(-&three) * x30).checked_div(z20)?;
-    let lambda = z20.checked_div(&(&alpha * &alpha))?;
-    let beta = z10.checked_div(&(&(&two * &lambda) * &alpha))?;
-    let gamma = (&three * y03).checked_div(z02)?;
-    let delta = (-z01).checked_div(&(&(&two * &lambda) * &gamma))?;
-    let alpha_plus_beta = &alpha + &beta;
-    let gamma_plus_delta = &gamma + &delta;
+    let alpha = three.neg_ref().mul_ref(x30).checked_div(z20)?;
+    let lambda = z20.checked_div(&alpha.mul_ref(&alpha))?;
+    let beta = z10.checked_div(&two.mul_ref(&lambda).mul_ref(&alpha))?;
+    let gamma = three.mul_ref(y03).checked_div(z02)?;
+    let delta = z01.neg_ref().checked_div(&two.mul_ref(&lambda).mul_ref(&gamma))?;
+    let alpha_plus_beta = alpha.add_ref(&beta);
+    let gamma_plus_delta = gamma.add_ref(&delta);
     let candidate = BezierSurface::<T>::from_power_on(
         &enneper_power()?,
         (&beta, &alpha_plus_beta),
@@ -593,10 +578,7 @@ where
 }
 
 /// Validates a rectangular array of points; returns `(m, n, dim)`.
-fn check_net<T: Scalar>(net: &[Vec<Point<T>>], what: &'static str) -> Result<(usize, usize, usize)>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn check_net<T: Scalar>(net: &[Vec<Point<T>>], what: &'static str) -> Result<(usize, usize, usize)> {
     let first = net.first().ok_or(Error::Empty(what))?;
     let cols = first.len();
     let dim = common_dimension(first, what)?;
@@ -627,19 +609,13 @@ where
 
 /// `Σ_i p_i B_i^m(t)` for the `m + 1` points given: de Casteljau's algorithm (1) on a
 /// column of the net, on the stack.
-fn reduce<T: Scalar>(points: impl IntoIterator<Item = Point<T>>, t: &T) -> Point<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn reduce<T: Scalar>(points: impl IntoIterator<Item = Point<T>>, t: &T) -> Point<T> {
     let mut column: SmallVec<[Point<T>; STACK_POINTS]> = points.into_iter().collect();
     de_casteljau(&mut column, t, |_| {});
     column.swap_remove(0)
 }
 
-fn curve_of<T: Scalar>(points: Vec<Point<T>>) -> BezierCurve<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn curve_of<T: Scalar>(points: Vec<Point<T>>) -> BezierCurve<T> {
     BezierCurve::new(points).expect("rows and columns of a valid net are valid polygons")
 }
 
@@ -651,20 +627,14 @@ fn transpose<P: Clone>(net: &[Vec<P>]) -> Vec<Vec<P>> {
 }
 
 /// The `k`-th coordinates of a rectangular array of points.
-fn coordinate<T: Scalar>(net: &[Vec<Point<T>>], k: usize) -> Vec<Vec<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn coordinate<T: Scalar>(net: &[Vec<Point<T>>], k: usize) -> Vec<Vec<T>> {
     net.iter()
         .map(|row| row.iter().map(|p| p.coords()[k].clone()).collect())
         .collect()
 }
 
 /// Points from per-coordinate arrays: `out[i][j] = (per_coord[0][i][j], …)`.
-fn assemble<T: Scalar>(per_coord: &[Vec<Vec<T>>]) -> Result<Vec<Vec<Point<T>>>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn assemble<T: Scalar>(per_coord: &[Vec<Vec<T>>]) -> Result<Vec<Vec<Point<T>>>> {
     let first = per_coord.first().ok_or(Error::ZeroDimension)?;
     (0..first.len())
         .map(|i| {
@@ -699,6 +669,7 @@ impl<T: fmt::Display> fmt::Display for BezierSurface<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scalar::Ring;
     use num_rational::BigRational;
     type Q = BigRational;
 

@@ -16,7 +16,7 @@
 
 use casteljau::eval_power;
 use casteljau::strategies::{f64_curve, unit_parameter_f64, wide_parameter_f64};
-use casteljau::{BezierCurve, BigRational, Point, Scalar};
+use casteljau::{BezierCurve, BigRational, Point, Ring, Scalar};
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 

@@ -10,7 +10,7 @@ use casteljau::strategies::{
 };
 use casteljau::{barycentric, linear_combination};
 use casteljau::{bernstein, bernstein_to_power, eval_power, power_to_bernstein};
-use casteljau::{AffineMap, BezierCurve, BigRational, Error, Point, Scalar};
+use casteljau::{AffineMap, BezierCurve, BigRational, Error, Point, Ring, Scalar};
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 

@@ -8,7 +8,7 @@ use casteljau::exact::BernsteinTable;
 use casteljau::strategies::{
     exact_curve, exact_points, large_exact_curve, large_rational, small_rational, wide_parameter,
 };
-use casteljau::{BezierCurve, BezierSurface, BigInt, BigRational, Point, RationalBezierCurve, Scalar};
+use casteljau::{BezierCurve, BezierSurface, BigInt, BigRational, Point, RationalBezierCurve, Ring, Scalar};
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 

@@ -4,7 +4,7 @@
 
 use casteljau::exact::SmallRational;
 use casteljau::strategies::{exact_curve, wide_parameter};
-use casteljau::{BigInt, BigRational, Scalar};
+use casteljau::{BigInt, BigRational, Ring, Scalar};
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 

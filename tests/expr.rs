@@ -4,7 +4,7 @@ use casteljau::verify::eval::{Evaluator, Value, VarEnv};
 use casteljau::verify::expr::Expr;
 use casteljau::verify::parse::parse;
 use casteljau::{bernstein, eval_power};
-use casteljau::{BigRational, Scalar};
+use casteljau::{BigRational, Ring, Scalar};
 use proptest::prelude::*;
 use std::collections::BTreeMap;
 

@@ -10,7 +10,7 @@ use casteljau::{
     fit_cubic_closed_form, fit_cubic_to, fit_least_squares, least_squares_gradient, least_squares_residual,
     uniform_params, CubicFitData, FitConstraints,
 };
-use casteljau::{BezierCurve, BigRational, Error, Point, Scalar};
+use casteljau::{BezierCurve, BigRational, Error, Point, Ring, Scalar};
 use proptest::prelude::*;
 
 type Q = BigRational;

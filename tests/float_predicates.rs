@@ -1,7 +1,7 @@
 //! The filtered predicates agree with exact arithmetic on the same floats, and fall back to
 //! it only when the interval straddles zero (counted).
 
-use casteljau::{classify_conic, BigRational, Point, RationalBezierCurve, Scalar};
+use casteljau::{classify_conic, BigRational, Point, RationalBezierCurve, Ring, Scalar};
 use casteljau::{filter_stats, filtered_conic_kind, filtered_hull_contains, filtered_orientation};
 use std::cmp::Ordering;
 

@@ -4,7 +4,7 @@
 use casteljau::linalg::{
     determinant, determinant_cofactor, identity, inverse, mat_mul, mat_vec, rank, solve, solve_many,
 };
-use casteljau::{BigRational, Error, Scalar};
+use casteljau::{BigRational, Error, Ring, Scalar};
 use proptest::prelude::*;
 
 type Q = BigRational;

@@ -3,7 +3,7 @@
 
 use casteljau::{
     classify_conic, conic_arc_passes_infinity, conic_shape_factor, implicit_conic, BezierCurve, BigRational, ConicKind,
-    Error, ImplicitConic, Point, QuadraticIrrational, RationalBezierCurve, Scalar,
+    Error, ImplicitConic, Point, QuadraticIrrational, RationalBezierCurve, Ring, Scalar,
 };
 use proptest::prelude::*;
 

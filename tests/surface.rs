@@ -4,7 +4,7 @@
 
 use casteljau::{bernstein, binomial};
 use casteljau::{enneper_net, enneper_power, BezierSurface, EnneperMatch};
-use casteljau::{AffineMap, BigRational, Error, Point, Scalar};
+use casteljau::{AffineMap, BigRational, Error, Point, Ring, Scalar};
 use proptest::prelude::*;
 
 type Q = BigRational;

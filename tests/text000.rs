@@ -6,7 +6,7 @@
 use casteljau::{barycentric, linear_combination};
 use casteljau::{bernstein, power_to_bernstein, reparametrize};
 use casteljau::{convex_weights, hull_contains};
-use casteljau::{BezierCurve, BigRational, Error, Point, Scalar};
+use casteljau::{BezierCurve, BigRational, Error, Point, Ring, Scalar};
 
 type Q = BigRational;
 

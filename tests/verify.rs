@@ -5,7 +5,7 @@ use casteljau::verify::claims::parse_file;
 use casteljau::verify::kinds::check_claim;
 use casteljau::verify::theorems::elevation_bound;
 use casteljau::verify::{explain, prove_paths, ExplainStyle, Verdict};
-use casteljau::{BezierCurve, BigRational, Point, Scalar};
+use casteljau::{BezierCurve, BigRational, Point, Ring, Scalar};
 use proptest::prelude::*;
 use std::path::{Path, PathBuf};
 

@@ -393,7 +393,7 @@ impl BernsteinTable {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scalar::Scalar;
+    use crate::scalar::{Ring, Scalar};
 
     #[test]
     fn rows_match_the_formula_and_are_shared() {

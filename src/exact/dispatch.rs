@@ -9,7 +9,7 @@
 
 use crate::curve::{Bezier, BezierCurve};
 use crate::point::Point;
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 use crate::space::{PointN, VectorSpace};
 use num_rational::BigRational;
 use std::any::{Any, TypeId};
@@ -82,7 +82,6 @@ pub(crate) fn point_back<P: 'static>(p: Point<BigRational>) -> P {
 pub(crate) fn curve_back<P: VectorSpace>(c: BezierCurve<BigRational>) -> Bezier<P>
 where
     P::Scalar: Scalar,
-    for<'a> &'a P::Scalar: RefOps<P::Scalar>,
 {
     match cast::<BezierCurve<BigRational>, Bezier<P>>(c) {
         Ok(c) => c,

@@ -12,7 +12,7 @@
 //! [`BigRational`] stays the type users exchange: convert with `From` both ways.
 //!
 //! ```
-//! use casteljau::{BigRational, Scalar, SmallRational};
+//! use casteljau::{BigRational, Ring, Scalar, SmallRational};
 //! let third = SmallRational::from_ratio(1, 3).unwrap();
 //! assert_eq!(&third + &third + &third, SmallRational::one());
 //! // Past i64 the value moves to a big integer, exactly.
@@ -22,14 +22,13 @@
 //! ```
 
 use crate::error::{Error, Result};
-use crate::scalar::Scalar;
+use crate::scalar::{forward_ring_ops, Ring, Scalar};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 use std::cmp::Ordering;
 use std::fmt;
-use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
 /// An exact rational number: two machine words while the value fits, a [`BigRational`]
 /// beyond. See the [module documentation](self).
@@ -170,29 +169,6 @@ impl SmallRational {
             _ => Self::from_big(big(&self.to_big(), &rhs.to_big())),
         }
     }
-
-    fn add_ref(&self, rhs: &Self) -> Self {
-        self.binary(rhs, add_small, |x, y| x + y)
-    }
-
-    fn sub_ref(&self, rhs: &Self) -> Self {
-        // -c never overflows in i128, so subtraction is addition of the negated numerator.
-        self.binary(rhs, sub_small, |x, y| x - y)
-    }
-
-    fn mul_ref(&self, rhs: &Self) -> Self {
-        self.binary(rhs, mul_small, |x, y| x * y)
-    }
-
-    fn neg_ref(&self) -> Self {
-        match &self.0 {
-            Repr::Small { num, den } => match num.checked_neg() {
-                Some(n) => SmallRational(Repr::Small { num: n, den: *den }),
-                None => Self::from_reduced_i128(-(*num as i128), *den as i128),
-            },
-            Repr::Big(b) => Self::from_big(-(**b).clone()),
-        }
-    }
 }
 
 /// `a/b + c/d` for reduced operands (Knuth 4.5.1: one gcd of the denominators, one of the
@@ -255,70 +231,46 @@ fn mul_small(a: i64, b: i64, c: i64, d: i64) -> SmallRational {
     SmallRational::from_reduced_i128(num, den)
 }
 
-/// Implements `op` for the four combinations of values and references, and `op=` for both,
-/// from one method on references (the num-rational pattern).
-macro_rules! forward_binop {
-    ($Op:ident, $op:ident, $OpAssign:ident, $op_assign:ident, $method:ident) => {
-        impl<'a> $Op<&'a SmallRational> for &'a SmallRational {
-            type Output = SmallRational;
-            #[inline]
-            fn $op(self, rhs: &'a SmallRational) -> SmallRational {
-                self.$method(rhs)
-            }
-        }
-        impl<'a> $Op<&'a SmallRational> for SmallRational {
-            type Output = SmallRational;
-            #[inline]
-            fn $op(self, rhs: &'a SmallRational) -> SmallRational {
-                self.$method(rhs)
-            }
-        }
-        impl<'a> $Op<SmallRational> for &'a SmallRational {
-            type Output = SmallRational;
-            #[inline]
-            fn $op(self, rhs: SmallRational) -> SmallRational {
-                self.$method(&rhs)
-            }
-        }
-        impl $Op<SmallRational> for SmallRational {
-            type Output = SmallRational;
-            #[inline]
-            fn $op(self, rhs: SmallRational) -> SmallRational {
-                self.$method(&rhs)
-            }
-        }
-        impl<'a> $OpAssign<&'a SmallRational> for SmallRational {
-            #[inline]
-            fn $op_assign(&mut self, rhs: &'a SmallRational) {
-                *self = self.$method(rhs);
-            }
-        }
-        impl $OpAssign<SmallRational> for SmallRational {
-            #[inline]
-            fn $op_assign(&mut self, rhs: SmallRational) {
-                *self = self.$method(&rhs);
-            }
-        }
-    };
-}
+impl Ring for SmallRational {
+    fn zero() -> Self {
+        SmallRational::from_int(0)
+    }
+    fn one() -> Self {
+        SmallRational::from_int(1)
+    }
+    fn from_i64(n: i64) -> Self {
+        SmallRational::from_int(n)
+    }
 
-forward_binop!(Add, add, AddAssign, add_assign, add_ref);
-forward_binop!(Sub, sub, SubAssign, sub_assign, sub_ref);
-forward_binop!(Mul, mul, MulAssign, mul_assign, mul_ref);
+    #[inline]
+    fn add_ref(&self, rhs: &Self) -> Self {
+        self.binary(rhs, add_small, |x, y| x + y)
+    }
 
-impl Neg for SmallRational {
-    type Output = SmallRational;
-    fn neg(self) -> SmallRational {
-        self.neg_ref()
+    #[inline]
+    fn sub_ref(&self, rhs: &Self) -> Self {
+        // -c never overflows in i128, so subtraction is addition of the negated numerator.
+        self.binary(rhs, sub_small, |x, y| x - y)
+    }
+
+    #[inline]
+    fn mul_ref(&self, rhs: &Self) -> Self {
+        self.binary(rhs, mul_small, |x, y| x * y)
+    }
+
+    #[inline]
+    fn neg_ref(&self) -> Self {
+        match &self.0 {
+            Repr::Small { num, den } => match num.checked_neg() {
+                Some(n) => SmallRational(Repr::Small { num: n, den: *den }),
+                None => Self::from_reduced_i128(-(*num as i128), *den as i128),
+            },
+            Repr::Big(b) => Self::from_big(-(**b).clone()),
+        }
     }
 }
 
-impl Neg for &SmallRational {
-    type Output = SmallRational;
-    fn neg(self) -> SmallRational {
-        self.neg_ref()
-    }
-}
+forward_ring_ops!(SmallRational);
 
 impl Ord for SmallRational {
     fn cmp(&self, other: &Self) -> Ordering {
@@ -402,18 +354,9 @@ impl Scalar for SmallRational {
     const EXACT: bool = true;
     const NAME: &'static str = "small rational";
 
-    fn zero() -> Self {
-        SmallRational::from_int(0)
-    }
-    fn one() -> Self {
-        SmallRational::from_int(1)
-    }
     fn is_zero(&self) -> bool {
         // Zero is small (it fits), so a big value is never zero.
         matches!(self.0, Repr::Small { num: 0, .. })
-    }
-    fn from_i64(n: i64) -> Self {
-        SmallRational::from_int(n)
     }
     fn from_bigint(n: &BigInt) -> Result<Self> {
         Ok(match n.to_i64() {

@@ -5,16 +5,13 @@ use super::{planar, AnyCurve};
 use crate::error::{Error, Result};
 use crate::point::Point;
 use crate::rational::{classify_conic, conic_arc_passes_infinity, ConicKind, RationalBezierCurve};
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 
 /// The arcs `x(t) = Σ w_i b_i B_i^2(t) / Σ w_i B_i^2(t)` over one planar polygon `b_0 b_1 b_2`
 /// with end weights `w0`, `w2` and each middle weight of `middles`, coloured by the conic
 /// the library's [`classify_conic`] finds (`w_1² < w_0 w_2` ellipse, `=` parabola,
 /// `>` hyperbola). Arcs that pass through infinity are refused.
-pub fn conics<T: Scalar>(points: &[Point<T>], w0: &T, w2: &T, middles: &[T]) -> Result<Figure>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn conics<T: Scalar>(points: &[Point<T>], w0: &T, w2: &T, middles: &[T]) -> Result<Figure> {
     if points.len() != 3 {
         return Err(Error::WrongCount {
             what: "a conic arc figure",
@@ -49,7 +46,7 @@ where
         }
         let kind = classify_conic(&arc)?;
         let color = kind_color(&kind);
-        let ratio = (w1 * w1).checked_div(&(w0 * w2))?;
+        let ratio = w1.mul_ref(w1).checked_div(&w0.mul_ref(w2))?;
         let samples = AnyCurve::Rational(arc.clone()).drawn_samples(160)?;
         let what = format!("w₁ = {w1}: {kind} (w₁²/(w₀w₂) = {ratio})");
         // a second arc of the same kind (two hyperbolas) is dashed to tell them apart

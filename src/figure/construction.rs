@@ -3,16 +3,13 @@
 use super::svg::{indexed, Figure, Panel, Style, CURVE, PALETTE, POINT, POLYGON};
 use super::{planar, planar_curve};
 use crate::error::Result;
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 use crate::BezierCurve;
 
 /// The construction of `b(t)` by the scheme (9): the control polygon, each level
 /// `b_0^r … b_{n−r}^r` joined and labelled, the point `b_0^n(t)` on the curve. Each point's
 /// tooltip is its exact value; the notes list every level.
-pub fn construction<T: Scalar>(curve: &BezierCurve<T>, t: &T) -> Result<Figure>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn construction<T: Scalar>(curve: &BezierCurve<T>, t: &T) -> Result<Figure> {
     super::check_figure_degree(curve.degree())?;
     let scheme = curve.scheme(t);
     let n = scheme.degree();

@@ -5,7 +5,7 @@ use super::{planar, planar_curve};
 use crate::curve::ElevationDistance;
 use crate::error::{Error, Result};
 use crate::point::Point;
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 use crate::BezierCurve;
 
 /// The largest number of elevation steps a figure draws (each polygon is drawn and its
@@ -15,10 +15,7 @@ pub const MAX_FIGURE_ELEVATION: usize = 1024;
 /// The control polygons of the curve elevated `r` times for each `r` in `steps` (formula (8),
 /// [`BezierCurve::elevate_by`]), over the curve, with the exact distance
 /// `max_i |b_i^(r) − b(i/(n+r))|_∞` of each ([`BezierCurve::elevation_distance`]).
-pub fn elevation<T: Scalar>(curve: &BezierCurve<T>, steps: &[usize]) -> Result<Figure>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn elevation<T: Scalar>(curve: &BezierCurve<T>, steps: &[usize]) -> Result<Figure> {
     if let Some(r) = steps.iter().find(|&&r| r > MAX_FIGURE_ELEVATION) {
         return Err(Error::TooLarge {
             what: "elevation steps in a figure",
@@ -90,15 +87,15 @@ where
 /// exact numbers, with each `b(i/N)`, `N = n + r`, as one sum of integer multiples
 /// `Σ_j C(n,j) i^j (N − i)^(n−j) b_j / N^n`: `n + 1` products per point instead of a whole
 /// de Casteljau scheme, whose lerps at `i/N` reduce a fraction at every step.
-fn distance<T: Scalar>(curve: &BezierCurve<T>, elevated: &BezierCurve<T>) -> Result<ElevationDistance<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn distance<T: Scalar>(curve: &BezierCurve<T>, elevated: &BezierCurve<T>) -> Result<ElevationDistance<T>> {
     let (n, total) = (curve.degree(), elevated.degree());
     let binomials: Vec<T> = (0..=n)
         .scan(T::one(), |c, j| {
             let here = c.clone();
-            *c = (&*c * &T::from_usize(n - j)).checked_div(&T::from_usize(j + 1)).ok()?;
+            *c = c
+                .mul_ref(&T::from_usize(n - j))
+                .checked_div(&T::from_usize(j + 1))
+                .ok()?;
             Some(here)
         })
         .collect();
@@ -110,15 +107,15 @@ where
         let powers_of_b = powers(&b, n);
         let mut sum = vec![T::zero(); curve.dim()];
         for (j, q) in curve.points().iter().enumerate() {
-            let weight = &(&binomials[j] * &powers_of_a[j]) * &powers_of_b[n - j];
+            let weight = binomials[j].mul_ref(&powers_of_a[j]).mul_ref(&powers_of_b[n - j]);
             if weight.is_zero() {
                 continue;
             }
             for (s, x) in sum.iter_mut().zip(q.coords()) {
-                *s = &*s + &(&weight * x);
+                *s += &weight.mul_ref(x);
             }
         }
-        let on_curve = Point::new(sum.iter().map(|s| s * &scale).collect())?;
+        let on_curve = Point::new(sum.iter().map(|s| s.mul_ref(&scale)).collect())?;
         let m = p.max_norm_distance(&on_curve);
         let sq = p.distance_squared(&on_curve);
         if m > max_norm {
@@ -136,21 +133,15 @@ where
 }
 
 /// `1, x, x², …, x^k`.
-fn powers<T: Scalar>(x: &T, k: usize) -> Vec<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn powers<T: Scalar>(x: &T, k: usize) -> Vec<T> {
     let mut out = vec![T::one()];
     for _ in 0..k {
-        let next = out.last().expect("starts with 1") * x;
+        let next = (out.last().expect("starts with 1")).mul_ref(x);
         out.push(next);
     }
     out
 }
 
-fn integer_power<T: Scalar>(x: &T, k: usize) -> T
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn integer_power<T: Scalar>(x: &T, k: usize) -> T {
     powers(x, k).pop().expect("starts with 1")
 }

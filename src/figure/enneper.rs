@@ -4,24 +4,18 @@ use super::net::net;
 use super::svg::Figure;
 use crate::error::Result;
 use crate::point::AffineMap;
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 use crate::surface::{enneper_net, BezierSurface};
 
 /// The net of text 003 Ex. 5, computed by the library: `3 · E` on `[−2, 2]²`, i.e.
 /// `3 · enneper_net(2)` (the 16 printed points).
-pub fn text003_example5<T: Scalar>() -> Result<BezierSurface<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn text003_example5<T: Scalar>() -> Result<BezierSurface<T>> {
     enneper_net(&T::from_i64(2))?.transform(&AffineMap::scaling(3, &T::from_i64(3)))
 }
 
 /// The figure of an Enneper net: [`net`] with six iso-curves each way, noting whether the net
 /// is exactly text 003's Example 5.
-pub fn enneper<T: Scalar>(surface: &BezierSurface<T>) -> Result<Figure>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn enneper<T: Scalar>(surface: &BezierSurface<T>) -> Result<Figure> {
     let mut fig = net(surface, 6, "Enneper's surface from a bicubic net")?;
     let example = text003_example5::<T>()?;
     if *surface == example {
@@ -44,14 +38,11 @@ where
 }
 
 /// `a·x + b` written as `4s − 2`.
-fn affine<T: Scalar>(a: &T, x: &str, b: &T) -> String
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn affine<T: Scalar>(a: &T, x: &str, b: &T) -> String {
     if b.is_zero() {
         format!("{a}{x}")
     } else if *b < T::zero() {
-        format!("{a}{x} − {}", -b)
+        format!("{a}{x} − {}", b.neg_ref())
     } else {
         format!("{a}{x} + {b}")
     }

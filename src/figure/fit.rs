@@ -4,16 +4,13 @@ use super::svg::{Figure, Panel, Style, CURVE, PALETTE, POINT, POLYGON};
 use super::{planar, planar_curve, AnyCurve};
 use crate::error::Result;
 use crate::fit::fit_cubic_to;
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 
 /// The curve `x(t)` (exact samples), text 004's cubic `a(t)` with control points
 /// `x(0), x(0) + k ẋ(0), x(1) − l ẋ(1), x(1)` ([`fit_cubic_to`]), and the residual
 /// `a(1/2) − x(1/2)` whose squared length is `δ²`, all exact; space curves in the fixed
 /// projection.
-pub fn fit<T: Scalar>(curve: &AnyCurve<T>) -> Result<Figure>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn fit<T: Scalar>(curve: &AnyCurve<T>) -> Result<Figure> {
     super::check_figure_degree(curve.points().len() - 1)?;
     let result = match curve {
         AnyCurve::Polynomial(c) => fit_cubic_to(c)?,

@@ -4,17 +4,14 @@ use super::svg::{indexed, Figure, Panel, Style, CURVE, PALETTE, POINT, POLYGON};
 use super::{list, planar, planar_curve};
 use crate::error::{Error, Result};
 use crate::point::Point;
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 use crate::BezierCurve;
 
 /// Left: the curve with its tangent vectors at the ends, `b′(0) = n(b_1 − b_0)` and
 /// `b′(1) = n(b_n − b_{n−1})` drawn at 1/n scale (so the first lies on the first leg of the
 /// polygon). Right: the hodograph, the curve `b′(t)` of degree n − 1 with control vectors
 /// `n Δb_i`, drawn from the origin.
-pub fn hodograph<T: Scalar>(curve: &BezierCurve<T>) -> Result<Figure>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn hodograph<T: Scalar>(curve: &BezierCurve<T>) -> Result<Figure> {
     super::check_figure_degree(curve.degree())?;
     let n = curve.degree();
     if n == 0 {

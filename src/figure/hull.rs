@@ -4,17 +4,14 @@ use super::svg::{indexed, Figure, Panel, Style, CURVE, POINT, POLYGON};
 use super::{list, planar, planar_curve};
 use crate::error::Result;
 use crate::point::Point;
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 use crate::BezierCurve;
 
 /// The curve, the convex hull of its control points (shaded), the point `p` and the convex
 /// weights `λ_i` of [`BezierCurve::hull_weights`] (the certificate `p = Σ λ_i b_i`,
 /// `λ_i ≥ 0`, `Σ λ_i = 1`), each written beside its control point; or the statement that
 /// `p` lies outside the hull.
-pub fn hull<T: Scalar>(curve: &BezierCurve<T>, p: &Point<T>) -> Result<Figure>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn hull<T: Scalar>(curve: &BezierCurve<T>, p: &Point<T>) -> Result<Figure> {
     super::check_figure_degree(curve.degree())?;
     let weights = curve.hull_weights(p)?;
     let mut fig = Figure::new(match &weights {
@@ -89,10 +86,7 @@ where
 }
 
 /// The convex hull of planar points, counter-clockwise (Andrew's monotone chain, exact).
-fn convex_hull<T: Scalar>(points: &[Point<T>]) -> Vec<Point<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn convex_hull<T: Scalar>(points: &[Point<T>]) -> Vec<Point<T>> {
     let mut pts: Vec<Point<T>> = points.to_vec();
     pts.sort_by(|a, b| {
         let (a, b) = (a.coords(), b.coords());
@@ -106,7 +100,9 @@ where
     }
     let cross = |o: &Point<T>, a: &Point<T>, b: &Point<T>| -> T {
         let (o, a, b) = (o.coords(), a.coords(), b.coords());
-        &(&(&a[0] - &o[0]) * &(&b[1] - &o[1])) - &(&(&a[1] - &o[1]) * &(&b[0] - &o[0]))
+        a[0].sub_ref(&o[0])
+            .mul_ref(&b[1].sub_ref(&o[1]))
+            .sub_ref(&a[1].sub_ref(&o[1]).mul_ref(&b[0].sub_ref(&o[0])))
     };
     let mut lower: Vec<Point<T>> = Vec::new();
     for p in &pts {

@@ -66,7 +66,7 @@ pub use svg::{Figure, Layout, Panel, PanelMap};
 use crate::error::{Error, Result};
 use crate::point::{AffineMap, Point};
 use crate::rational::RationalBezierCurve;
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 use crate::BezierCurve;
 
 /// The largest degree (of a curve, or of a net in either direction) a figure draws: the
@@ -90,10 +90,7 @@ pub(crate) fn check_figure_degree(degree: usize) -> Result<()> {
 /// the x axis towards the reader drawn down-left at a third of its length:
 /// `X = y − x/3`, `Y = z − x/3`. The map is exact, so projected curves and nets are exactly
 /// the projections of the exact ones.
-pub fn projection<T: Scalar>() -> Result<AffineMap<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn projection<T: Scalar>() -> Result<AffineMap<T>> {
     let third = T::from_ratio(-1, 3)?;
     AffineMap::new(
         vec![
@@ -108,10 +105,7 @@ where
 pub(crate) const PROJECTION_HEADING: &str = "oblique view, x towards the reader: X = y − x/3, Y = z − x/3";
 
 /// The point as drawn: planar points as they are, space points projected.
-pub fn planar<T: Scalar>(p: &Point<T>) -> Result<Point<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn planar<T: Scalar>(p: &Point<T>) -> Result<Point<T>> {
     match p.dim() {
         2 => Ok(p.clone()),
         3 => projection()?.apply(p),
@@ -122,10 +116,7 @@ where
 }
 
 /// A curve as drawn (see [`planar`]).
-pub fn planar_curve<T: Scalar>(c: &BezierCurve<T>) -> Result<BezierCurve<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn planar_curve<T: Scalar>(c: &BezierCurve<T>) -> Result<BezierCurve<T>> {
     BezierCurve::new(c.points().iter().map(planar).collect::<Result<Vec<_>>>()?)
 }
 
@@ -138,10 +129,7 @@ pub enum AnyCurve<T> {
     Rational(RationalBezierCurve<T>),
 }
 
-impl<T: Scalar> AnyCurve<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Scalar> AnyCurve<T> {
     /// The point at `t`.
     pub fn eval(&self, t: &T) -> Result<Point<T>> {
         match self {

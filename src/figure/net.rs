@@ -4,7 +4,7 @@ use super::svg::{Figure, Panel, Style, CURVE, POINT, POLYGON};
 use super::{planar, planar_curve, projection};
 use crate::error::{Error, Result};
 use crate::point::Point;
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 use crate::surface::BezierSurface;
 
 /// The largest number of iso-curves per direction a net figure draws.
@@ -14,10 +14,7 @@ pub const MAX_ISO: usize = 64;
 /// `x(u, v_k)` at `u_k, v_k = k/(iso+1)` ([`BezierSurface::iso_u`], [`BezierSurface::iso_v`]),
 /// the four boundary curves ([`BezierSurface::boundary`]) and the corners. Space nets are
 /// drawn in the fixed [`projection`], with a small axis tripod.
-pub fn net<T: Scalar>(surface: &BezierSurface<T>, iso: usize, title: &str) -> Result<Figure>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn net<T: Scalar>(surface: &BezierSurface<T>, iso: usize, title: &str) -> Result<Figure> {
     if iso > MAX_ISO {
         return Err(Error::TooLarge {
             what: "iso-curves per direction",
@@ -115,10 +112,7 @@ fn sub(k: usize) -> String {
 }
 
 /// The unit axes in the projection, so a reader can tell x, y and z apart.
-fn tripod<T: Scalar>() -> Result<Panel>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn tripod<T: Scalar>() -> Result<Panel> {
     let map = projection::<T>()?;
     let mut panel = Panel::new("").with_max_size(90.0, 90.0);
     let o = map.apply(&Point::origin(3))?;

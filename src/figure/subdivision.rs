@@ -3,16 +3,13 @@
 use super::svg::{indexed, Figure, Panel, Style, PALETTE, POINT, POLYGON};
 use super::{list, planar, planar_curve};
 use crate::error::Result;
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 use crate::BezierCurve;
 
 /// The curve split at `t` by [`BezierCurve::split_at`]: the left piece's polygon
 /// `b_0^0, b_0^1, …, b_0^n` and the right piece's `b_0^n, b_1^{n−1}, …, b_n^0`, each drawn with
 /// its own piece of the curve.
-pub fn subdivision<T: Scalar>(curve: &BezierCurve<T>, t: &T) -> Result<Figure>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn subdivision<T: Scalar>(curve: &BezierCurve<T>, t: &T) -> Result<Figure> {
     super::check_figure_degree(curve.degree())?;
     let (left, right) = curve.split_at(t);
     let n = curve.degree();

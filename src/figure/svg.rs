@@ -8,7 +8,7 @@
 
 use crate::error::{Error, Result};
 use crate::point::Point;
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 use crate::BezierCurve;
 use std::fmt::Write as _;
 
@@ -155,10 +155,7 @@ const NOTE_CHARS: usize = 88;
 const MIN_WIDTH: f64 = 766.0;
 
 /// Converts a 2D exact point for drawing; any other dimension is an error.
-pub(crate) fn xy<T: Scalar>(p: &Point<T>) -> Result<[f64; 2]>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub(crate) fn xy<T: Scalar>(p: &Point<T>) -> Result<[f64; 2]> {
     match p.coords() {
         [x, y] => Ok([x.to_f64(), y.to_f64()]),
         c => Err(Error::DimensionMismatch {
@@ -202,10 +199,7 @@ impl Panel {
         style: Style,
         class: &'static str,
         title: Option<String>,
-    ) -> Result<()>
-    where
-        for<'a> &'a T: RefOps<T>,
-    {
+    ) -> Result<()> {
         let pts = pts.iter().map(xy).collect::<Result<Vec<_>>>()?;
         self.push(Shape::Path { pts, closed }, style, class, title);
         Ok(())
@@ -231,10 +225,7 @@ impl Panel {
         style: Style,
         class: &'static str,
         title: Option<String>,
-    ) -> Result<()>
-    where
-        for<'a> &'a T: RefOps<T>,
-    {
+    ) -> Result<()> {
         let pts = curve.points().iter().map(xy).collect::<Result<Vec<_>>>()?;
         self.curve_f64(pts, style, class, title);
         Ok(())
@@ -250,10 +241,7 @@ impl Panel {
     }
 
     /// A dot at `p` with its exact value as the tooltip.
-    pub fn dot<T: Scalar>(&mut self, p: &Point<T>, radius: f64, color: &'static str, title: String) -> Result<()>
-    where
-        for<'a> &'a T: RefOps<T>,
-    {
+    pub fn dot<T: Scalar>(&mut self, p: &Point<T>, radius: f64, color: &'static str, title: String) -> Result<()> {
         let at = xy(p)?;
         self.push(Shape::Dot { at, radius }, Style::line(color, 1.0), "point", Some(title));
         Ok(())
@@ -267,10 +255,7 @@ impl Panel {
         style: Style,
         class: &'static str,
         title: Option<String>,
-    ) -> Result<()>
-    where
-        for<'a> &'a T: RefOps<T>,
-    {
+    ) -> Result<()> {
         let (from, to) = (xy(from)?, xy(to)?);
         self.push(Shape::Arrow { from, to }, style, class, title);
         Ok(())
@@ -284,10 +269,7 @@ impl Panel {
         color: &'static str,
         dx: f64,
         dy: f64,
-    ) -> Result<()>
-    where
-        for<'a> &'a T: RefOps<T>,
-    {
+    ) -> Result<()> {
         let at = xy(p)?;
         let text = text.into();
         // labels of coincident points (b₀ = b₃ of a closed polygon) are written once, joined

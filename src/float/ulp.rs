@@ -153,7 +153,7 @@ pub fn pow2_exact(q: i64) -> BigRational {
 /// below (the subnormal range, exact 0 included).
 ///
 /// ```
-/// use casteljau::{float::ulp, BigRational, Scalar};
+/// use casteljau::{float::ulp, BigRational, Ring, Scalar};
 /// assert_eq!(ulp(&BigRational::from_i64(1)), BigRational::from_f64(f64::EPSILON).unwrap());
 /// assert_eq!(ulp(&BigRational::from_i64(0)), BigRational::from_f64(f64::from_bits(1)).unwrap());
 /// ```

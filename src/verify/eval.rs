@@ -6,365 +6,16 @@
 //! very same walk as the values, every construct that has a value also has a bound, and the
 //! bound describes the formal numerator/denominator the walk builds (see [`Deg`]).
 
+pub use super::alg::{bernstein_formula, rational_sqrt, Alg, Deg};
 use super::expr::{check_index, eval_int, Expr, Op, MAX_SUM_TERMS};
 use crate::bernstein::binomial_signed;
 use crate::error::{Error, Result};
+use crate::linalg::{self, dot};
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{Signed, Zero};
+use num_traits::Zero;
 use std::collections::BTreeMap;
 use std::fmt;
-
-/// What the evaluator computes in: a commutative ring with a checked division.
-pub trait Alg: Clone + fmt::Debug + fmt::Display {
-    /// The rational constant `r`.
-    fn from_rat(r: &BigRational) -> Self;
-    /// `self + o`
-    fn add(&self, o: &Self) -> Self;
-    /// `self - o`
-    fn sub(&self, o: &Self) -> Self;
-    /// `self * o`
-    fn mul(&self, o: &Self) -> Self;
-    /// `-self`
-    fn neg(&self) -> Self;
-    /// `self / o`; an error when `o` is zero.
-    fn div(&self, o: &Self) -> Result<Self>;
-    /// `√r` of a rational constant; an error when it is not in this algebra.
-    fn sqrt_rat(r: &BigRational) -> Result<Self>;
-    /// Exact equality (`None` for algebras without one, like degree bounds).
-    fn equals(&self, o: &Self) -> Option<bool>;
-
-    /// `B_i^n(self)`, zero outside `0 ≤ i ≤ n` (the formula; an algebra may serve it from a
-    /// cached table).
-    fn bernstein(&self, i: i64, n: i64) -> Result<Self> {
-        bernstein_formula(i, n, self)
-    }
-
-    /// The integer `n`.
-    fn from_int(n: i64) -> Self {
-        Self::from_rat(&BigRational::from_integer(n.into()))
-    }
-    /// The big integer `n`.
-    fn from_bigint(n: &BigInt) -> Self {
-        Self::from_rat(&BigRational::from_integer(n.clone()))
-    }
-    /// `self^k` for an integer `k` (negative: `1 / self^|k|`).
-    fn pow(&self, k: i64) -> Result<Self> {
-        check_index(k)?;
-        let mut base = self.clone();
-        let mut acc = Self::from_int(1);
-        let mut e = k.unsigned_abs();
-        while e > 0 {
-            if e & 1 == 1 {
-                acc = acc.mul(&base);
-            }
-            e >>= 1;
-            if e > 0 {
-                base = base.mul(&base);
-            }
-        }
-        if k < 0 {
-            Self::from_int(1).div(&acc)
-        } else {
-            Ok(acc)
-        }
-    }
-}
-
-/// `√r` for a rational that is the square of a rational; other square roots need the
-/// quadratic irrationals.
-pub fn rational_sqrt(r: &BigRational) -> Result<BigRational> {
-    if r.is_negative() {
-        return Err(Error::Domain(format!(
-            "sqrt({r}): the square root of a negative number is not real"
-        )));
-    }
-    let (n, d) = (r.numer().sqrt(), r.denom().sqrt());
-    if &(&n * &n) == r.numer() && &(&d * &d) == r.denom() {
-        Ok(BigRational::new(n, d))
-    } else {
-        Err(Error::Domain(format!(
-            "sqrt({r}) is irrational (not a square of a rational)"
-        )))
-    }
-}
-
-impl Alg for BigRational {
-    fn from_rat(r: &BigRational) -> Self {
-        r.clone()
-    }
-    fn add(&self, o: &Self) -> Self {
-        self + o
-    }
-    fn sub(&self, o: &Self) -> Self {
-        self - o
-    }
-    fn mul(&self, o: &Self) -> Self {
-        self * o
-    }
-    fn neg(&self) -> Self {
-        -self
-    }
-    fn div(&self, o: &Self) -> Result<Self> {
-        if o.is_zero() {
-            return Err(Error::DivisionByZero(format!("{self} / 0")));
-        }
-        Ok(self / o)
-    }
-    fn sqrt_rat(r: &BigRational) -> Result<Self> {
-        rational_sqrt(r)
-    }
-    fn equals(&self, o: &Self) -> Option<bool> {
-        Some(self == o)
-    }
-    fn bernstein(&self, i: i64, n: i64) -> Result<Self> {
-        // Claims sample at the same parameters, so rows are shared across claims; where the
-        // table declines (its size limits), the formula decides as before.
-        crate::exact::BernsteinTable::shared()
-            .bernstein(i, n, self)
-            .or_else(|_| bernstein_formula(i, n, self))
-    }
-}
-
-/// The prover's rationals: the same exact values as `BigRational`, on machine words while
-/// they fit (most sample values do), so no heap and no big gcd per operation.
-impl Alg for crate::exact::SmallRational {
-    fn from_rat(r: &BigRational) -> Self {
-        r.into()
-    }
-    fn add(&self, o: &Self) -> Self {
-        self + o
-    }
-    fn sub(&self, o: &Self) -> Self {
-        self - o
-    }
-    fn mul(&self, o: &Self) -> Self {
-        self * o
-    }
-    fn neg(&self) -> Self {
-        -self
-    }
-    fn div(&self, o: &Self) -> Result<Self> {
-        crate::scalar::Scalar::checked_div(self, o)
-    }
-    fn sqrt_rat(r: &BigRational) -> Result<Self> {
-        rational_sqrt(r).map(Self::from)
-    }
-    fn equals(&self, o: &Self) -> Option<bool> {
-        Some(self == o)
-    }
-    fn from_int(n: i64) -> Self {
-        Self::from_int(n)
-    }
-    fn from_bigint(n: &BigInt) -> Self {
-        BigRational::from_integer(n.clone()).into()
-    }
-    fn bernstein(&self, i: i64, n: i64) -> Result<Self> {
-        // As for BigRational: a shared row, the formula where the table declines.
-        if i < 0 || i > n {
-            return Ok(Self::from_int(0));
-        }
-        match crate::exact::BernsteinTable::shared().at_small(n as usize, self) {
-            Ok(row) => Ok(row[i as usize].clone()),
-            Err(_) => bernstein_formula(i, n, self),
-        }
-    }
-}
-
-impl Alg for crate::quadratic::QuadraticIrrational {
-    fn from_rat(r: &BigRational) -> Self {
-        crate::quadratic::QuadraticIrrational::rational(r.clone())
-    }
-    fn add(&self, o: &Self) -> Self {
-        self + o
-    }
-    fn sub(&self, o: &Self) -> Self {
-        self - o
-    }
-    fn mul(&self, o: &Self) -> Self {
-        self * o
-    }
-    fn neg(&self) -> Self {
-        -self
-    }
-    fn div(&self, o: &Self) -> Result<Self> {
-        crate::scalar::Scalar::checked_div(self, o)
-    }
-    fn sqrt_rat(r: &BigRational) -> Result<Self> {
-        if r.is_negative() {
-            return Err(Error::Domain(format!(
-                "sqrt({r}): the square root of a negative number is not real"
-            )));
-        }
-        if let Ok(q) = rational_sqrt(r) {
-            return Ok(Self::from_rat(&q));
-        }
-        crate::quadratic::QuadraticIrrational::sqrt_rational(r)
-    }
-    fn equals(&self, o: &Self) -> Option<bool> {
-        // Mixing two fields (√2 and √3) poisons a value: it cannot be compared.
-        (self.is_valid() && o.is_valid()).then(|| self == o)
-    }
-}
-
-/// Degree bounds of a rational function: for each parameter `v`, the value is `P/Q` with
-/// `deg_v P ≤ num` and `deg_v Q ≤ den`, where `P` and `Q` are the formal numerator and
-/// denominator the evaluator builds (`a/b = (Pa Qb)/(Qa Pb)`, `a+b = (Pa Qb + Pb Qa)/(Qa Qb)`).
-/// `affine` is the degree in a symbolic control polygon (must stay ≤ 1).
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Deg {
-    /// `var → (num, den)`; missing vars are `(0, 0)`.
-    pub vars: BTreeMap<String, (u64, u64)>,
-    /// Degree in the symbolic control points.
-    pub poly: u64,
-}
-
-const DEG_LIMIT: u64 = 1 << 40;
-
-impl Deg {
-    /// The bound of a single parameter `v`.
-    pub fn var(v: &str) -> Deg {
-        let mut vars = BTreeMap::new();
-        vars.insert(v.to_string(), (1, 0));
-        Deg { vars, poly: 0 }
-    }
-    /// A control point of a symbolic polygon (degree 1 in the polygon, 0 in the parameters).
-    pub fn control_point() -> Deg {
-        Deg {
-            vars: BTreeMap::new(),
-            poly: 1,
-        }
-    }
-    /// `(num, den)` for `v`.
-    pub fn get(&self, v: &str) -> (u64, u64) {
-        self.vars.get(v).copied().unwrap_or((0, 0))
-    }
-    fn zip(&self, o: &Deg, poly: u64, f: impl Fn((u64, u64), (u64, u64)) -> (u64, u64)) -> Deg {
-        let mut vars = BTreeMap::new();
-        for k in self.vars.keys().chain(o.vars.keys()) {
-            let (n, d) = f(self.get(k), o.get(k));
-            vars.insert(k.clone(), (n.min(DEG_LIMIT), d.min(DEG_LIMIT)));
-        }
-        Deg { vars, poly }
-    }
-    /// The bound of `g ↦ p(g)` for a polynomial `p` of degree `n` with constant coefficients
-    /// (`Σ c_k P^k Q^(n-k) / Q^n`). The bound is a function of the inner bound in every
-    /// component: a `g` of degree `d` in the control points gives degree `n·d` in them.
-    pub fn compose(&self, n: u64) -> Deg {
-        let mut vars = BTreeMap::new();
-        for (k, &(num, den)) in &self.vars {
-            vars.insert(
-                k.clone(),
-                (
-                    n.saturating_mul(num.max(den)).min(DEG_LIMIT),
-                    n.saturating_mul(den).min(DEG_LIMIT),
-                ),
-            );
-        }
-        Deg {
-            vars,
-            poly: n.saturating_mul(self.poly).min(DEG_LIMIT),
-        }
-    }
-    /// The bound of a value affine in the symbolic control points with coefficients bounded
-    /// by `self` (a control point times `self`).
-    pub fn times_control_point(mut self) -> Deg {
-        self.poly = self.poly.saturating_add(1);
-        self
-    }
-    /// Whether the value is a polynomial in every parameter (no parameter in a denominator).
-    pub fn is_polynomial(&self) -> bool {
-        self.vars.values().all(|&(_, d)| d == 0)
-    }
-}
-
-impl fmt::Display for Deg {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let parts: Vec<String> = self
-            .vars
-            .iter()
-            .filter(|(_, &(n, d))| n > 0 || d > 0)
-            .map(|(v, &(n, d))| {
-                if d == 0 {
-                    format!("{v}:{n}")
-                } else {
-                    format!("{v}:{n}/{d}")
-                }
-            })
-            .collect();
-        if parts.is_empty() {
-            write!(f, "const")
-        } else {
-            write!(f, "{}", parts.join(","))
-        }
-    }
-}
-
-impl Alg for Deg {
-    fn from_rat(_: &BigRational) -> Self {
-        Deg::default()
-    }
-    fn add(&self, o: &Self) -> Self {
-        self.zip(o, self.poly.max(o.poly), |(na, da), (nb, db)| {
-            if da == 0 && db == 0 {
-                (na.max(nb), 0)
-            } else {
-                (na.saturating_add(db).max(nb.saturating_add(da)), da.saturating_add(db))
-            }
-        })
-    }
-    fn sub(&self, o: &Self) -> Self {
-        self.add(o)
-    }
-    fn mul(&self, o: &Self) -> Self {
-        self.zip(
-            o,
-            self.poly.saturating_add(o.poly).min(DEG_LIMIT),
-            |(na, da), (nb, db)| (na.saturating_add(nb), da.saturating_add(db)),
-        )
-    }
-    fn neg(&self) -> Self {
-        self.clone()
-    }
-    fn div(&self, o: &Self) -> Result<Self> {
-        if o.poly > 0 {
-            return Err(Error::Domain(
-                "division by an expression in the symbolic control points (not affine in them)".into(),
-            ));
-        }
-        Ok(self.zip(o, self.poly, |(na, da), (nb, db)| {
-            (na.saturating_add(db), da.saturating_add(nb))
-        }))
-    }
-    fn sqrt_rat(_: &BigRational) -> Result<Self> {
-        Ok(Deg::default())
-    }
-    fn equals(&self, _: &Self) -> Option<bool> {
-        None
-    }
-    fn pow(&self, k: i64) -> Result<Self> {
-        check_index(k)?;
-        let m = k.unsigned_abs();
-        let scaled = Deg {
-            vars: self
-                .vars
-                .iter()
-                .map(|(v, &(n, d))| {
-                    (
-                        v.clone(),
-                        (n.saturating_mul(m).min(DEG_LIMIT), d.saturating_mul(m).min(DEG_LIMIT)),
-                    )
-                })
-                .collect(),
-            poly: self.poly.saturating_mul(m).min(DEG_LIMIT),
-        };
-        if k < 0 {
-            Deg::default().div(&scaled)
-        } else {
-            Ok(scaled)
-        }
-    }
-}
 
 /// A value: a scalar, a vector (tuple, point) or a matrix.
 #[derive(Clone, Debug)]
@@ -462,21 +113,21 @@ impl<A: Alg> Value<A> {
     }
     /// `self + o`
     pub fn add(&self, o: &Value<A>) -> Result<Value<A>> {
-        self.zip(o, "add", A::add)
+        self.zip(o, "add", A::add_ref)
     }
     /// `self - o`
     pub fn sub(&self, o: &Value<A>) -> Result<Value<A>> {
-        self.zip(o, "subtract", A::sub)
+        self.zip(o, "subtract", A::sub_ref)
     }
     /// `-self`
     pub fn neg(&self) -> Value<A> {
-        self.map(A::neg)
+        self.map(A::neg_ref)
     }
     /// Products: scalar × anything, matrix × vector, matrix × matrix.
     pub fn mul(&self, o: &Value<A>) -> Result<Value<A>> {
         Ok(match (self, o) {
-            (Value::S(a), x) => x.map(|y| a.mul(y)),
-            (x, Value::S(b)) => x.map(|y| y.mul(b)),
+            (Value::S(a), x) => x.map(|y| a.mul_ref(y)),
+            (x, Value::S(b)) => x.map(|y| y.mul_ref(b)),
             (Value::M(m), Value::V(v)) => {
                 if m.first().map_or(0, Vec::len) != v.len() {
                     return Err(Error::Domain(format!(
@@ -544,87 +195,9 @@ impl<A: Alg> Value<A> {
     }
 }
 
-fn dot<A: Alg>(a: &[A], b: &[A]) -> A {
-    let mut acc = A::from_int(0);
-    for (x, y) in a.iter().zip(b) {
-        acc = acc.add(&x.mul(y));
-    }
-    acc
-}
-
 /// Largest matrix `det` and `inv` accept: Berkowitz's algorithm takes O(n⁴) products, so a
 /// 16 × 16 matrix costs about 65,000 per evaluation.
 pub const MAX_MATRIX: usize = 16;
-
-/// The determinant. Laplace expansion up to 4 × 4 (at most 24 products, and the tightest
-/// degree bounds in the degree algebra); beyond, Berkowitz's division-free algorithm, so that
-/// every algebra (degree bounds included) gets it from ring operations alone.
-fn det<A: Alg>(m: &[Vec<A>]) -> A {
-    if m.len() > 4 {
-        let p = berkowitz(m);
-        let last = p[m.len()].clone();
-        return if m.len() % 2 == 0 { last } else { last.neg() };
-    }
-    laplace_det(m)
-}
-
-/// The coefficients `1, p_1, …, p_n` of `det(xI − M) = x^n + p_1 x^{n−1} + … + p_n`, by the
-/// Samuelson–Berkowitz recursion: with `M = [a R; C M₁]`, the vector is the lower-triangular
-/// Toeplitz matrix of `1, −a, −RC, −RM₁C, …, −RM₁^{n−2}C` times the vector of `M₁`.
-fn berkowitz<A: Alg>(m: &[Vec<A>]) -> Vec<A> {
-    let n = m.len();
-    if n == 0 {
-        return vec![A::from_int(1)];
-    }
-    let a = &m[0][0];
-    let row = &m[0][1..];
-    let sub: Vec<Vec<A>> = m[1..].iter().map(|r| r[1..].to_vec()).collect();
-    let mut column: Vec<A> = m[1..].iter().map(|r| r[0].clone()).collect();
-    let mut diagonals = vec![A::from_int(1), a.neg()];
-    for k in 0..n.saturating_sub(1) {
-        if k > 0 {
-            column = sub.iter().map(|r| dot(r, &column)).collect();
-        }
-        diagonals.push(dot(row, &column).neg());
-    }
-    let inner = berkowitz(&sub);
-    (0..=n)
-        .map(|i| {
-            let mut acc = A::from_int(0);
-            for (j, v) in inner.iter().enumerate().take(i + 1) {
-                acc = acc.add(&diagonals[i - j].mul(v));
-            }
-            acc
-        })
-        .collect()
-}
-
-fn laplace_det<A: Alg>(m: &[Vec<A>]) -> A {
-    match m.len() {
-        0 => A::from_int(1),
-        1 => m[0][0].clone(),
-        2 => m[0][0].mul(&m[1][1]).sub(&m[0][1].mul(&m[1][0])),
-        n => {
-            // Laplace expansion along the first row (matrices here are tiny).
-            let mut acc = A::from_int(0);
-            for j in 0..n {
-                let minor: Vec<Vec<A>> = m[1..]
-                    .iter()
-                    .map(|r| {
-                        r.iter()
-                            .enumerate()
-                            .filter(|(k, _)| *k != j)
-                            .map(|(_, x)| x.clone())
-                            .collect()
-                    })
-                    .collect();
-                let term = m[0][j].mul(&laplace_det(&minor));
-                acc = if j % 2 == 0 { acc.add(&term) } else { acc.sub(&term) };
-            }
-            acc
-        }
-    }
-}
 
 /// What the names of a claim mean in one algebra.
 pub trait Env<A: Alg> {
@@ -809,7 +382,7 @@ impl<'e, A: Alg> Evaluator<'e, A> {
                 let (a, b) = (self.eval(&args[0])?, self.eval(&args[1])?);
                 match (&a, &b) {
                     (Value::V(x), Value::V(y)) if x.len() == y.len() => Value::S(dot(x, y)),
-                    (Value::S(x), Value::S(y)) => Value::S(x.mul(y)),
+                    (Value::S(x), Value::S(y)) => Value::S(x.mul_ref(y)),
                     _ => return Err(Error::Domain(format!("dot of {} and {}", a.shape(), b.shape()))),
                 }
             }
@@ -854,7 +427,7 @@ impl<'e, A: Alg> Evaluator<'e, A> {
                         )))
                     }
                 };
-                let d = det(&m);
+                let d = linalg::determinant_division_free(&m);
                 if name == "det" {
                     Value::S(d)
                 } else {
@@ -939,7 +512,7 @@ fn power_derivative<A: Alg>(g: &A, e: i64, k: i64) -> Result<A> {
     if ff.is_zero() {
         return Ok(A::from_int(0));
     }
-    Ok(A::from_bigint(&ff).mul(&g.pow(e - k)?))
+    Ok(A::from_bigint(&ff).mul_ref(&g.pow(e - k)?))
 }
 
 /// The `k`-th derivative of `B_i^n(g) = C(n,i) g^i (1-g)^(n-i)` with respect to `g`, by
@@ -948,31 +521,22 @@ fn bernstein_derivative<A: Alg>(i: i64, n: i64, g: &A, k: i64) -> Result<A> {
     if i < 0 || i > n {
         return Ok(A::from_int(0));
     }
-    let s = A::from_int(1).sub(g);
+    let s = A::from_int(1).sub_ref(g);
     let mut acc = A::from_int(0);
     for m in 0..=k {
         let left = power_derivative(g, i, m)?;
         let mut right = power_derivative(&s, n - i, k - m)?;
         if (k - m) % 2 == 1 {
-            right = right.neg(); // d/dg (1-g) = -1
+            right = right.neg_ref(); // d/dg (1-g) = -1
         }
-        acc = acc.add(&A::from_bigint(&binomial_signed(k, m)).mul(&left).mul(&right));
+        acc = acc.add_ref(&A::from_bigint(&binomial_signed(k, m)).mul_ref(&left).mul_ref(&right));
     }
-    Ok(A::from_bigint(&binomial_signed(n, i)).mul(&acc))
+    Ok(A::from_bigint(&binomial_signed(n, i)).mul_ref(&acc))
 }
 
 /// `B_i^n(g) = C(n,i) g^i (1-g)^(n-i)`, zero outside `0 ≤ i ≤ n`.
 pub fn bernstein<A: Alg>(i: i64, n: i64, g: &A) -> Result<A> {
     g.bernstein(i, n)
-}
-
-/// `B_i^n(g)` by its formula: the reference every table is checked against.
-pub fn bernstein_formula<A: Alg>(i: i64, n: i64, g: &A) -> Result<A> {
-    if i < 0 || i > n {
-        return Ok(A::from_int(0));
-    }
-    let c = A::from_bigint(&binomial_signed(n, i));
-    Ok(c.mul(&g.pow(i)?).mul(&A::from_int(1).sub(g).pow(n - i)?))
 }
 
 /// `∫_a^b e dt` for an integrand that is a polynomial in `t` alone (and the integer ranges):
@@ -987,7 +551,7 @@ fn integral<A: Alg>(ev: &mut Evaluator<'_, A>, e: &Expr, args: &[Expr]) -> Resul
     };
     let names: std::rc::Rc<[String]> = std::rc::Rc::from(vec![t.clone()]);
     let degrees = std::iter::once((t.clone(), Value::S(Deg::var(t)))).collect();
-    super::expansion::check_symbolic_degrees(degrees, &ev.ints, &[&args[0]])?;
+    check_symbolic_degrees(degrees, &ev.ints, &[&args[0]])?;
     let saved = current_names();
     set_names(&names);
     let mut vars = BTreeMap::new();
@@ -1011,7 +575,7 @@ fn integral<A: Alg>(ev: &mut Evaluator<'_, A>, e: &Expr, args: &[Expr]) -> Resul
     for (exp, c) in f.num.terms_list() {
         let k = exp[0] as usize;
         if coeffs.len() <= k + 1 {
-            coeffs.resize(k + 2, BigRational::zero());
+            coeffs.resize(k + 2, <BigRational as Zero>::zero());
         }
         coeffs[k + 1] = c / (&den * BigRational::from_integer(BigInt::from(k + 1)));
     }
@@ -1019,95 +583,64 @@ fn integral<A: Alg>(ev: &mut Evaluator<'_, A>, e: &Expr, args: &[Expr]) -> Resul
         coeffs
             .iter()
             .rev()
-            .fold(A::from_int(0), |acc, c| acc.mul(x).add(&A::from_rat(c)))
+            .fold(A::from_int(0), |acc, c| acc.mul_ref(x).add_ref(&A::from_rat(c)))
     };
-    Ok(at(&b).sub(&at(&a)))
+    Ok(at(&b).sub_ref(&at(&a)))
 }
 
+/// The transpose of a matrix value.
 fn transpose<A: Alg>(v: Value<A>) -> Result<Value<A>> {
     match v {
-        Value::M(m) => {
-            let cols = m.first().map_or(0, Vec::len);
-            Ok(Value::M(
-                (0..cols).map(|j| m.iter().map(|r| r[j].clone()).collect()).collect(),
-            ))
-        }
+        // `cols()` of no vectors: the empty matrix is its own transpose.
+        Value::M(m) if m.is_empty() => Ok(Value::M(m)),
+        Value::M(m) => linalg::transpose(&m).map(Value::M),
         other => Err(Error::Domain(format!("transpose of {}", other.shape()))),
     }
 }
 
+/// `M⁻¹ = adj(M) / det M`, entry by entry (a zero `d` is the first division's error).
 fn inverse<A: Alg>(m: &[Vec<A>], d: &A) -> Result<Value<A>> {
-    let n = m.len();
-    if n > 4 {
-        return inverse_cayley_hamilton(m, d);
-    }
-    let mut out = vec![vec![A::from_int(0); n]; n];
-    for (i, row) in out.iter_mut().enumerate() {
-        for (j, cell) in row.iter_mut().enumerate() {
-            // inverse[i][j] = cofactor(j, i) / det
-            let minor: Vec<Vec<A>> = m
-                .iter()
-                .enumerate()
-                .filter(|(r, _)| *r != j)
-                .map(|(_, r)| {
-                    r.iter()
-                        .enumerate()
-                        .filter(|(c, _)| *c != i)
-                        .map(|(_, x)| x.clone())
-                        .collect()
-                })
-                .collect();
-            let c = det(&minor);
-            let c = if (i + j) % 2 == 0 { c } else { c.neg() };
-            *cell = c.div(d)?;
-        }
-    }
-    Ok(Value::M(out))
+    let inverse = linalg::adjugate(m)
+        .into_iter()
+        .map(|row| row.iter().map(|x| x.div(d)).collect::<Result<Vec<_>>>())
+        .collect::<Result<_>>()?;
+    Ok(Value::M(inverse))
 }
 
-/// `M⁻¹ = adj(M) / det M` with `adj(M) = (−1)^{n+1} (M^{n−1} + p_1 M^{n−2} + … + p_{n−1} I)`
-/// (Cayley–Hamilton, the `p_k` from [`berkowitz`]), by Horner's rule: O(n⁴) products.
-fn inverse_cayley_hamilton<A: Alg>(m: &[Vec<A>], d: &A) -> Result<Value<A>> {
-    let n = m.len();
-    let p = berkowitz(m);
-    let identity = |c: &A| -> Vec<Vec<A>> {
-        (0..n)
-            .map(|i| {
-                (0..n)
-                    .map(|j| if i == j { c.clone() } else { A::from_int(0) })
-                    .collect()
-            })
-            .collect()
-    };
-    let mut acc = identity(&A::from_int(1));
-    for pk in &p[1..n] {
-        let mut next = identity(pk);
-        for (i, row) in next.iter_mut().enumerate() {
-            for (j, cell) in row.iter_mut().enumerate() {
-                for (k, mk) in m[i].iter().enumerate() {
-                    *cell = cell.add(&mk.mul(&acc[k][j]));
+/// Largest degree, in any one variable, of the numerators and denominators a symbolic
+/// expansion may build (checked on the derived bounds before expanding).
+pub const MAX_SYMBOLIC_DEGREE: u64 = 4_096;
+
+/// Checks, before expanding, that `exprs` expand to degrees at most [`MAX_SYMBOLIC_DEGREE`]
+/// in each of the variables `vars` (scalars and vector coordinates, as degree bounds).
+pub fn check_symbolic_degrees(
+    vars: BTreeMap<String, Value<Deg>>,
+    ints: &BTreeMap<String, i64>,
+    exprs: &[&Expr],
+) -> Result<()> {
+    let env = VarEnv(vars);
+    for e in exprs {
+        let d = Evaluator::new(&env, ints.clone()).eval(e)?;
+        for x in d.entries() {
+            for (v, &(num, den)) in &x.vars {
+                if num.max(den) > MAX_SYMBOLIC_DEGREE {
+                    return Err(Error::TooLarge {
+                        what: "degree of a symbolic expansion",
+                        value: format!("{} in {v}", num.max(den)),
+                        limit: format!("MAX_SYMBOLIC_DEGREE = {MAX_SYMBOLIC_DEGREE} per variable"),
+                    });
                 }
             }
         }
-        acc = next;
     }
-    let sign_odd = n % 2 == 0; // (−1)^{n+1} is −1 for even n
-    let mut out = Vec::with_capacity(n);
-    for row in acc {
-        let mut r = Vec::with_capacity(n);
-        for x in row {
-            let x = if sign_odd { x.neg() } else { x };
-            r.push(x.div(d)?);
-        }
-        out.push(r);
-    }
-    Ok(Value::M(out))
+    Ok(())
 }
 
 #[cfg(test)]
 mod tests {
     use super::super::parse::parse;
     use super::*;
+    use crate::scalar::Ring;
 
     fn q(p: i64, d: i64) -> BigRational {
         BigRational::new(p.into(), d.into())
@@ -1127,65 +660,6 @@ mod tests {
         Evaluator::new(&env, BTreeMap::new())
             .scalar(&parse(s, &[]).unwrap())
             .unwrap()
-    }
-
-    /// A deterministic matrix of small fractions, different for each `seed`.
-    fn matrix(n: usize, seed: u64) -> Vec<Vec<BigRational>> {
-        let mut state = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
-        (0..n)
-            .map(|_| {
-                (0..n)
-                    .map(|_| q((next() % 19) as i64 - 9, (next() % 5) as i64 + 1))
-                    .collect()
-            })
-            .collect()
-    }
-
-    #[test]
-    fn berkowitz_agrees_with_laplace_and_inverts() {
-        for n in 0..=7 {
-            for seed in 0..6 {
-                let m = matrix(n, seed + 100 * n as u64);
-                let p = berkowitz(&m);
-                let det_b = if n % 2 == 0 { p[n].clone() } else { -p[n].clone() };
-                assert_eq!(det_b, laplace_det(&m), "n = {n}, seed {seed}");
-                if n == 0 || det_b == q(0, 1) {
-                    continue;
-                }
-                let Value::M(inv) = inverse_cayley_hamilton(&m, &det_b).unwrap() else {
-                    panic!("a matrix")
-                };
-                for (i, row) in m.iter().enumerate() {
-                    for j in 0..n {
-                        let entry: BigRational = row.iter().zip(&inv).map(|(x, r)| x * &r[j]).sum();
-                        assert_eq!(entry, q(i64::from(i == j), 1), "M·M⁻¹ at ({i}, {j}), n = {n}");
-                    }
-                }
-            }
-        }
-        // A Vandermonde determinant: the product of the differences.
-        let xs = [q(1, 2), q(-2, 1), q(3, 1), q(5, 7), q(0, 1), q(4, 1)];
-        let v: Vec<Vec<BigRational>> = xs
-            .iter()
-            .map(|x| (0..xs.len()).map(|k| num_traits::pow(x.clone(), k)).collect())
-            .collect();
-        let mut expected = q(1, 1);
-        for j in 0..xs.len() {
-            for i in 0..j {
-                expected *= &xs[j] - &xs[i];
-            }
-        }
-        assert_eq!(det(&v), expected);
-        // A singular 5 × 5 matrix (two equal rows) has determinant 0, and inv refuses it.
-        let mut s = matrix(5, 7);
-        s[4] = s[1].clone();
-        assert_eq!(det(&s), q(0, 1));
     }
 
     #[test]
@@ -1223,7 +697,7 @@ mod tests {
         assert_eq!(Deg::var("t").compose(3).poly, 0);
         assert_eq!(Deg::var("t").compose(3).times_control_point().poly, 1);
         // Composition multiplies the inner bounds; it never resets them.
-        let g = Deg::var("t").mul(&cp);
+        let g = Deg::var("t").mul_ref(&cp);
         let c = g.compose(2);
         assert_eq!((c.get("t"), c.poly), ((2, 0), 2));
         assert!(

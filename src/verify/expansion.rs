@@ -9,7 +9,7 @@ use super::expr::Expr;
 use super::poly::{set_names, Poly, RatFunc};
 use super::sampling::{list, PairProof, PairResult};
 use crate::error::{Error, Result};
-use crate::scalar::Scalar;
+use crate::scalar::{Ring, Scalar};
 use num_rational::BigRational;
 use std::collections::BTreeMap;
 use std::rc::Rc;
@@ -110,35 +110,6 @@ fn sym_assignment(
     (parts.join(", "), vars)
 }
 
-/// Largest degree, in any one variable, of the numerators and denominators a symbolic
-/// expansion may build (checked on the derived bounds before expanding).
-pub const MAX_SYMBOLIC_DEGREE: u64 = 4_096;
-
-/// Checks, before expanding, that `exprs` expand to degrees at most [`MAX_SYMBOLIC_DEGREE`]
-/// in each of the variables `vars` (scalars and vector coordinates, as degree bounds).
-pub fn check_symbolic_degrees(
-    vars: BTreeMap<String, Value<Deg>>,
-    ints: &BTreeMap<String, i64>,
-    exprs: &[&Expr],
-) -> Result<()> {
-    let env = VarEnv(vars);
-    for e in exprs {
-        let d = Evaluator::new(&env, ints.clone()).eval(e)?;
-        for x in d.entries() {
-            for (v, &(num, den)) in &x.vars {
-                if num.max(den) > MAX_SYMBOLIC_DEGREE {
-                    return Err(Error::TooLarge {
-                        what: "degree of a symbolic expansion",
-                        value: format!("{} in {v}", num.max(den)),
-                        limit: format!("MAX_SYMBOLIC_DEGREE = {MAX_SYMBOLIC_DEGREE} per variable"),
-                    });
-                }
-            }
-        }
-    }
-    Ok(())
-}
-
 fn layout_degrees(layout: &[(String, usize)]) -> BTreeMap<String, Value<Deg>> {
     layout
         .iter()
@@ -158,7 +129,7 @@ pub fn symbolic_equal(ctx: &Ctx<'_>, lhs: &Expr, rhs: &Expr, ints: &BTreeMap<Str
     let extra = ctx.params(&[lhs, rhs]);
     let extra: Vec<String> = extra.into_iter().filter(|v| !ctx.is_bound(v)).collect();
     let (names, layout) = sym_names(ctx, &extra);
-    check_symbolic_degrees(layout_degrees(&layout), ints, &[lhs, rhs])?;
+    super::eval::check_symbolic_degrees(layout_degrees(&layout), ints, &[lhs, rhs])?;
     let env = sym_env(&names, &layout);
     let l = Evaluator::new(&env, ints.clone()).eval(lhs)?;
     let r = Evaluator::new(&env, ints.clone()).eval(rhs)?;

@@ -184,7 +184,7 @@ pub fn check_inequality(ctx: &Ctx<'_>, ineq: &Inequality, detail: bool) -> Resul
             format!("{}: ", at.join(", "))
         };
         let degrees = std::iter::once((t.clone(), Value::S(Deg::var(&t)))).collect();
-        super::expansion::check_symbolic_degrees(degrees, &ints, &[&p])?;
+        super::eval::check_symbolic_degrees(degrees, &ints, &[&p])?;
         set_names(&names);
         let mut vars = BTreeMap::new();
         vars.insert(t.clone(), Value::S(RatFunc::poly(Poly::var(&names, 0))));

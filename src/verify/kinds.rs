@@ -165,7 +165,7 @@ fn check_bezier_points(outer: &Ctx<'_>, claim: &BezierPoints, detail: bool) -> R
 fn library_power_on(power: &Expr, param: &str, a: &Number, b: &Number) -> Result<BezierCurve<BigRational>> {
     let names: Rc<[String]> = Rc::from(vec![param.to_string()]);
     let degrees = std::iter::once((param.to_string(), Value::S(Deg::var(param)))).collect();
-    super::expansion::check_symbolic_degrees(degrees, &BTreeMap::new(), &[power])?;
+    super::eval::check_symbolic_degrees(degrees, &BTreeMap::new(), &[power])?;
     set_names(&names);
     let mut vars = BTreeMap::new();
     vars.insert(param.to_string(), Value::S(RatFunc::poly(Poly::var(&names, 0))));
@@ -253,7 +253,7 @@ fn check_conic_type(ctx: &Ctx<'_>, claim: &ConicType) -> Result<Checked> {
         .iter()
         .map(|v| (v.to_string(), Value::S(Deg::var(v))))
         .collect();
-    super::expansion::check_symbolic_degrees(degrees, &BTreeMap::new(), &[&l, &r])?;
+    super::eval::check_symbolic_degrees(degrees, &BTreeMap::new(), &[&l, &r])?;
     set_names(&names);
     let mut vars = BTreeMap::new();
     vars.insert("x".into(), Value::S(RatFunc::poly(Poly::var(&names, 0))));

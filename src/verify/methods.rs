@@ -5,11 +5,10 @@
 
 use super::eval::{Alg, Deg, Evaluator};
 use super::expr::Expr;
-use super::objects::Exact;
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::point::Point;
-use crate::scalar::RefOps;
+use crate::scalar::{Ring, Scalar};
 use crate::surface::BezierSurface;
 use num_rational::BigRational;
 use num_traits::Zero;
@@ -112,10 +111,7 @@ impl PolygonMethod {
     }
 
     /// The value, computed by the library on the polygon `coeffs` (one coordinate).
-    pub fn value<T: Exact>(self, coeffs: &[T], args: &[Expr], ev: &mut Evaluator<'_, T>) -> Result<T>
-    where
-        for<'a> &'a T: RefOps<T>,
-    {
+    pub fn value<T: Scalar + Alg>(self, coeffs: &[T], args: &[Expr], ev: &mut Evaluator<'_, T>) -> Result<T> {
         let pts = coeffs
             .iter()
             .map(|c| Point::new(vec![c.clone()]))
@@ -187,8 +183,8 @@ impl PolygonMethod {
             Self::Elevp | Self::Derivp => Deg::default(),
             Self::Left | Self::Right => {
                 let t0 = ev.scalar(&args[1])?.compose(n);
-                let deg = zero.split_at(&BigRational::zero()).0.degree() as u64;
-                t0.mul(&ev.scalar(&args[2])?.compose(deg))
+                let deg = zero.split_at(&<BigRational as Zero>::zero()).0.degree() as u64;
+                t0.mul_ref(&ev.scalar(&args[2])?.compose(deg))
             }
             Self::Leftp | Self::Rightp => ev.scalar(&args[1])?.compose(n),
             Self::Deriv => {
@@ -256,10 +252,7 @@ impl NetMethod {
     }
 
     /// The value, computed by the library on the net (one coordinate).
-    pub fn value<T: Exact>(self, net: &[Vec<T>], args: &[Expr], ev: &mut Evaluator<'_, T>) -> Result<T>
-    where
-        for<'a> &'a T: RefOps<T>,
-    {
+    pub fn value<T: Scalar + Alg>(self, net: &[Vec<T>], args: &[Expr], ev: &mut Evaluator<'_, T>) -> Result<T> {
         let pts: Vec<Vec<Point<T>>> = net
             .iter()
             .map(|r| r.iter().map(|c| Point::new(vec![c.clone()])).collect::<Result<_>>())
@@ -284,11 +277,11 @@ impl NetMethod {
         let d = match self {
             Self::Vfirst | Self::Sbsum | Self::Isou => {
                 let (u, v) = (ev.scalar(&args[1])?, ev.scalar(&args[2])?);
-                u.compose(m).mul(&v.compose(n))
+                u.compose(m).mul_ref(&v.compose(n))
             }
             Self::Isov => {
                 let (v0, u) = (ev.scalar(&args[1])?, ev.scalar(&args[2])?);
-                v0.compose(n).mul(&u.compose(m))
+                v0.compose(n).mul_ref(&u.compose(m))
             }
             Self::Bnd => ev.scalar(&args[2])?.compose(m.max(n)),
             Self::Corner => Deg::default(),

@@ -32,6 +32,7 @@
 //! assert!(out.certificate.contains("degree ≤ 3 in t"));
 //! ```
 
+mod alg;
 pub mod ansatz;
 mod argue;
 pub mod checked;

@@ -10,7 +10,7 @@ use super::rewrite;
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::point::Point;
-use crate::scalar::{RefOps, Scalar};
+use crate::scalar::Scalar;
 use crate::surface::BezierSurface;
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -18,35 +18,22 @@ use std::collections::{BTreeMap, BTreeSet};
 // Numbers in claim files and objects.
 
 /// An exact number type the identity prover can evaluate in.
-pub trait Exact: Scalar + Alg
-where
-    for<'a> &'a Self: RefOps<Self>,
-{
-}
-impl<T: Scalar + Alg> Exact for T where for<'a> &'a T: RefOps<T> {}
+pub trait Exact: Scalar + Alg {}
+impl<T: Scalar + Alg> Exact for T {}
 
 /// Evaluates a constant expression (a coordinate in a claim file).
-pub fn constant<T: Exact>(text: &str) -> Result<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn constant<T: Exact>(text: &str) -> Result<T> {
     let e = parse(text, &[])?;
     let env = VarEnv::<T>(BTreeMap::new());
     Evaluator::new(&env, BTreeMap::new()).scalar(&e)
 }
 
-fn point<T: Exact>(coords: &[Number]) -> Result<Point<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn point<T: Exact>(coords: &[Number]) -> Result<Point<T>> {
     Point::new(coords.iter().map(|c| constant(&c.text()?)).collect::<Result<_>>()?)
 }
 
 /// Control points from a claim file.
-pub fn points<T: Exact>(list: &[Vec<Number>]) -> Result<Vec<Point<T>>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn points<T: Exact>(list: &[Vec<Number>]) -> Result<Vec<Point<T>>> {
     list.iter().map(|p| point(p)).collect()
 }
 
@@ -59,10 +46,7 @@ pub enum CurveObj<T> {
     Rational(crate::rational::RationalBezierCurve<T>),
 }
 
-impl<T: Exact> CurveObj<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Exact> CurveObj<T> {
     /// Builds the object from its specification.
     pub fn from_spec(spec: &CurveSpec) -> Result<Self> {
         let pts = points::<T>(&spec.points)?;
@@ -96,10 +80,7 @@ where
 }
 
 /// A concrete surface of a claim: `net[i][j] = b_{i,j}`.
-pub fn net_from_spec<T: Exact>(spec: &SurfaceSpec) -> Result<Vec<Vec<Point<T>>>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn net_from_spec<T: Exact>(spec: &SurfaceSpec) -> Result<Vec<Vec<Point<T>>>> {
     let net: Vec<Vec<Point<T>>> = spec.net.iter().map(|r| points(r)).collect::<Result<_>>()?;
     let cols = net.first().map_or(0, Vec::len);
     if net.is_empty() || cols == 0 || net.iter().any(|r| r.len() != cols) {
@@ -112,20 +93,14 @@ where
 }
 
 /// `Σ_i Σ_j b_ij B_i^m(u) B_j^n(v)` by the library ([`BezierSurface::eval`], u first).
-pub fn eval_net<T: Exact>(net: &[Vec<Point<T>>], u: &T, v: &T) -> Result<Point<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn eval_net<T: Exact>(net: &[Vec<Point<T>>], u: &T, v: &T) -> Result<Point<T>> {
     Ok(BezierSurface::new(net.to_vec())?.eval(u, v))
 }
 
 /// `∂^{ku+kv} x / ∂u^{ku} ∂v^{kv}` at `(u, v)` by the library: the surface of the derivative
 /// net (`m!/(m-ku)! n!/(n-kv)! Δ_u^{ku} Δ_v^{kv} b_{i,j}`), evaluated
 /// ([`BezierSurface::partial_at`]; zero beyond the degrees).
-pub fn partial_net<T: Exact>(net: &[Vec<Point<T>>], ku: usize, kv: usize, u: &T, v: &T) -> Result<Point<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn partial_net<T: Exact>(net: &[Vec<Point<T>>], ku: usize, kv: usize, u: &T, v: &T) -> Result<Point<T>> {
     let s = BezierSurface::new(net.to_vec())?;
     if ku + kv == 0 {
         return Ok(s.eval(u, v));
@@ -204,10 +179,7 @@ pub struct NumEnv<T> {
     pub net: Option<(String, Vec<Vec<T>>)>,
 }
 
-impl<T: Exact> NumEnv<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Exact> NumEnv<T> {
     /// The objects declared.
     pub fn new(decls: &Decls) -> Result<Self> {
         let mut curves = BTreeMap::new();
@@ -233,10 +205,7 @@ fn split_primes(name: &str) -> (&str, usize) {
     (base, name.len() - base.len())
 }
 
-impl<T: Exact> Env<T> for NumEnv<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+impl<T: Exact> Env<T> for NumEnv<T> {
     fn var(&self, name: &str) -> Option<Value<T>> {
         self.vars.get(name).cloned()
     }
@@ -349,10 +318,7 @@ fn curve_call<T: Exact>(
     order: usize,
     args: &[Expr],
     ev: &mut Evaluator<'_, T>,
-) -> Result<Value<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+) -> Result<Value<T>> {
     match (args.len(), c) {
         (1, _) if order == 0 => Ok(Value::V(c.eval(&ev.scalar(&args[0])?)?)),
         (1, CurveObj::Polynomial(curve)) => {
@@ -424,10 +390,7 @@ pub struct DegEnv {
 
 impl DegEnv {
     /// Degree information of the claim's objects, for the parameters `params`.
-    pub fn new<T: Exact>(num: &NumEnv<T>, params: &[String]) -> Self
-    where
-        for<'a> &'a T: RefOps<T>,
-    {
+    pub fn new<T: Exact>(num: &NumEnv<T>, params: &[String]) -> Self {
         DegEnv {
             params: params.iter().cloned().collect(),
             curves: num

@@ -2,8 +2,9 @@
 //! arbitrary vectors and unknowns (text 004): both sides are expanded and compared, which is
 //! a proof by algebra rather than by sampling.
 
-use super::eval::{rational_sqrt, Alg};
+use super::alg::{rational_sqrt, Alg};
 use crate::error::{Error, Result};
+use crate::scalar;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 use std::collections::BTreeMap;
@@ -274,11 +275,17 @@ pub fn current_names() -> Rc<[String]> {
     names()
 }
 
-impl Alg for RatFunc {
-    fn from_rat(r: &BigRational) -> Self {
-        RatFunc::poly(Poly::constant(&names(), r))
+impl scalar::Ring for RatFunc {
+    fn zero() -> Self {
+        Self::from_rat(&<BigRational as Zero>::zero())
     }
-    fn add(&self, o: &Self) -> Self {
+    fn one() -> Self {
+        Self::from_rat(&<BigRational as One>::one())
+    }
+    fn from_i64(n: i64) -> Self {
+        Self::from_rat(&BigRational::from_integer(n.into()))
+    }
+    fn add_ref(&self, o: &Self) -> Self {
         if self.den == o.den {
             return RatFunc::normal(self.num.add_scaled(&o.num, true), self.den.clone());
         }
@@ -287,17 +294,23 @@ impl Alg for RatFunc {
             self.den.mul(&o.den),
         )
     }
-    fn sub(&self, o: &Self) -> Self {
-        self.add(&o.neg())
+    fn sub_ref(&self, o: &Self) -> Self {
+        self.add_ref(&o.neg_ref())
     }
-    fn mul(&self, o: &Self) -> Self {
+    fn mul_ref(&self, o: &Self) -> Self {
         RatFunc::normal(self.num.mul(&o.num), self.den.mul(&o.den))
     }
-    fn neg(&self) -> Self {
+    fn neg_ref(&self) -> Self {
         RatFunc {
-            num: self.num.scale(&-BigRational::one()),
+            num: self.num.scale(&-<BigRational as One>::one()),
             den: self.den.clone(),
         }
+    }
+}
+
+impl Alg for RatFunc {
+    fn from_rat(r: &BigRational) -> Self {
+        RatFunc::poly(Poly::constant(&names(), r))
     }
     fn div(&self, o: &Self) -> Result<Self> {
         if o.num.is_zero() {

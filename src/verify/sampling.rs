@@ -9,7 +9,6 @@ use super::expr::{self, check_index, Expr};
 use super::objects::{DegEnv, Exact, NumEnv};
 use super::parse::parse;
 use crate::error::{Error, Result};
-use crate::scalar::RefOps;
 use num_rational::BigRational;
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
@@ -148,10 +147,7 @@ pub fn prove_equal<T: Exact>(
     rhs: &Expr,
     ints: &BTreeMap<String, i64>,
     detail: bool,
-) -> Result<PairResult>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+) -> Result<PairResult> {
     let prepared = prepare::<T>(ctx, lhs, rhs, ints, detail)?;
     prove_prepared(ctx, lhs, rhs, ints, detail, prepared)
 }
@@ -163,10 +159,7 @@ fn prove_prepared<T: Exact>(
     ints: &BTreeMap<String, i64>,
     detail: bool,
     prepared: Prepared<T>,
-) -> Result<PairResult>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+) -> Result<PairResult> {
     let Prepared {
         params,
         mut num,
@@ -289,10 +282,7 @@ fn literal_bits(e: &Expr) -> u64 {
 }
 
 /// The work of checking `lhs = rhs` at one instance, estimated before computing.
-pub fn estimate_work<T: Exact>(ctx: &Ctx<'_>, lhs: &Expr, rhs: &Expr, ints: &BTreeMap<String, i64>) -> Result<u128>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn estimate_work<T: Exact>(ctx: &Ctx<'_>, lhs: &Expr, rhs: &Expr, ints: &BTreeMap<String, i64>) -> Result<u128> {
     Ok(prepare::<T>(ctx, lhs, rhs, ints, false)?.work)
 }
 
@@ -302,10 +292,7 @@ fn prepare<T: Exact>(
     rhs: &Expr,
     ints: &BTreeMap<String, i64>,
     detail: bool,
-) -> Result<Prepared<T>>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+) -> Result<Prepared<T>> {
     let params = ctx.params(&[lhs, rhs]);
     let mut num: NumEnv<T> = NumEnv::new(ctx.decls)?;
     // Shape the symbolic polygon/net for this instance. Both sides are affine in all their
@@ -410,10 +397,7 @@ where
     })
 }
 
-fn set_basis<T: Exact>(num: &mut NumEnv<T>, b: &Basis)
-where
-    for<'a> &'a T: RefOps<T>,
-{
+fn set_basis<T: Exact>(num: &mut NumEnv<T>, b: &Basis) {
     if let Some((_, c)) = &mut num.polygon {
         c.iter_mut().for_each(|x| *x = T::zero());
         if let Basis::Unit(k) = b {
@@ -507,10 +491,7 @@ pub fn pair_summary(p: &PairProof) -> String {
 /// The estimated work of checking the chain `sides` for every instance of the claim's
 /// ranges, added to `before` (the work of earlier parts of the same claim); an error naming
 /// [`MAX_WORK`] as soon as the sum exceeds it, before anything is evaluated.
-pub fn chain_work<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], before: u128) -> Result<u128>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn chain_work<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], before: u128) -> Result<u128> {
     let mut work = before;
     for inst in &ctx.instances()? {
         for pair in sides.windows(2) {
@@ -532,10 +513,7 @@ fn too_much_work(work: u128) -> Error {
 }
 
 /// Checks a chain `e0 = e1 = …` for every instance of the integer ranges.
-pub fn check_chain<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Result<Checked>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn check_chain<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Result<Checked> {
     if sides.len() < 2 {
         return Err(Error::Parse(format!("claim {}: an identity needs two sides", ctx.id)));
     }

@@ -16,8 +16,7 @@ use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::exact::SmallRational;
 use crate::point::{AffineMap, Point};
-use crate::scalar::Scalar;
-use crate::RefOps;
+use crate::scalar::{Ring, Scalar};
 
 /// The exact numbers of these checks: machine words while values fit (most do), big
 /// integers beyond, so the same verdicts at a fraction of the cost of `BigRational`.
@@ -496,10 +495,7 @@ fn convex_hull(lo: i64, hi: i64, detail: bool) -> Result<Checked> {
 /// convex order (Hoeffding 1963), so `|E f(K) − E f(J)| ≤ M/2 (Var K − Var J)` with
 /// `M = max|Δ²f|`, and `Var K − Var J = n(n−1) i(N−i) / (N²(N−1)) ≤ n(n−1)/(4(N−1))`,
 /// `N = n + r`. That is at most half the bound stated here (`N ≥ 2`; for `n ≤ 1` both are 0).
-pub fn elevation_bound<T: Scalar>(curve: &BezierCurve<T>, r: usize) -> Result<T>
-where
-    for<'a> &'a T: RefOps<T>,
-{
+pub fn elevation_bound<T: Scalar>(curve: &BezierCurve<T>, r: usize) -> Result<T> {
     let n = curve.degree();
     if n < 2 {
         return Ok(T::zero());
