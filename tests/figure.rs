@@ -512,3 +512,64 @@ fn projection_points_are_the_parabola_divided_by_its_height() {
     r.input = Some("1,0; 1,1; 0,2".into());
     assert!(r.figure().unwrap_err().to_string().contains("quadratic in space"));
 }
+
+/// The hull figure's weights, read back from its legend: index → λ.
+fn legend_weights(notes: &[String]) -> Option<Vec<(usize, BigRational)>> {
+    let all = notes.join("\n").replace("\n    ", " ");
+    let line = all.lines().find(|l| l.contains("= Σ λᵢ bᵢ with "))?;
+    let terms = &line[line.find(" with ").unwrap() + 6..];
+    Some(
+        terms
+            .split(", ")
+            .map(|term| {
+                let (name, value) = term.split_once(" = ").unwrap();
+                let index: String = name
+                    .trim_start_matches('λ')
+                    .chars()
+                    .map(|c| char::from_digit(c as u32 - '₀' as u32, 10).unwrap())
+                    .collect();
+                (index.parse().unwrap(), value.parse().unwrap())
+            })
+            .collect(),
+    )
+}
+
+#[test]
+fn hull_certificates_in_space_are_exact_and_outside_agrees_with_the_library() {
+    let c = BezierCurve::new(
+        casteljau::input::parse_points("0,0,0; 5,-2,1; -3,4,2; 2,2,-4; 6,1,3; -1,-3,0; 4,4,4; 1,0,-2").unwrap(),
+    )
+    .unwrap();
+    let mut points: Vec<Point<BigRational>> = (0..=9).map(|k| c.eval(&q(k, 9))).collect();
+    points.extend(c.points().iter().cloned());
+    points.push(Point::new(vec![q(1, 2), q(1, 3), q(1, 5)]).unwrap());
+    points.push(Point::new(vec![q(9, 1), q(9, 1), q(9, 1)]).unwrap());
+    points.push(Point::new(vec![q(7, 1), q(-3, 1), q(0, 1)]).unwrap());
+    let (mut inside, mut outside) = (0, 0);
+    for p in &points {
+        let (_, notes) = check_svg(&figure::hull(&c, p).unwrap().to_svg().unwrap());
+        match legend_weights(&notes) {
+            Some(w) => {
+                inside += 1;
+                let mut sum = q(0, 1);
+                let mut combination = vec![q(0, 1); 3];
+                for (i, l) in &w {
+                    assert!(*l >= q(0, 1), "λ{i} = {l} < 0 for {p}");
+                    sum += l.clone();
+                    for (k, x) in combination.iter_mut().enumerate() {
+                        *x += l.clone() * c.points()[*i].coords()[k].clone();
+                    }
+                }
+                assert_eq!(sum, q(1, 1), "{p}");
+                assert_eq!(combination, p.coords(), "{p}");
+                assert!(c.hull_weights(p).unwrap().is_some());
+            }
+            None => {
+                outside += 1;
+                assert!(notes.iter().any(|n| n.contains("no convex weights exist")));
+                assert!(c.hull_weights(p).unwrap().is_none(), "{p}");
+            }
+        }
+    }
+    assert!(inside >= 10 && outside >= 1, "{inside} inside, {outside} outside");
+}

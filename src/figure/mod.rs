@@ -5,7 +5,7 @@
 //! (the private `place` module).
 //!
 //! Every figure is computed in exact arithmetic with the library's own operations (`scheme`,
-//! `split_at`, `elevate_by`, `derivative`, `hull_weights`, `classify_conic`, `iso_u`/`iso_v`,
+//! `split_at`, `elevate_by`, `derivative`, `convex_weights`, `classify_conic`, `iso_u`/`iso_v`,
 //! `enneper_net`, `fit_cubic_to`); values become `f64` pixel coordinates only when the SVG is
 //! written ([`svg`]). Each drawn point carries its exact value as a `<title>` tooltip, and
 //! the figure's notes print the exact numbers the figure is about, so a printed copy keeps

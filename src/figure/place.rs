@@ -6,11 +6,10 @@
 //! of room. Candidates are tried in order: the position the figure asked for, then rings of
 //! positions around the anchor (right, left, above, below, the diagonals) at growing
 //! distances. The first candidate that is inside the frame and touches nothing wins; when none
-//! is free, the one touching fewest things. Everything is in pixels (y downwards), and
-//! obstacles are kept in a grid of cells so that a figure with thousands of labels still
-//! places them in linear time.
-
-use std::collections::HashMap;
+//! is free, the one touching fewest things. Everything is in pixels (y downwards); obstacles
+//! are kept in a grid of cells, and the number of obstacle tests of one figure is bounded
+//! ([`MAX_TESTS`]: past it, labels stay where the figure asked), so that a figure with
+//! thousands of crowded labels is still quick.
 
 /// The font size of labels, in pixels (the SVG's default).
 pub(crate) const LABEL_FONT: f64 = 13.0;
@@ -24,6 +23,13 @@ const DESCENT_EM: f64 = 0.26;
 const GAP: f64 = 1.5;
 /// Distances from the anchor tried, in pixels.
 const RADII: [f64; 7] = [7.0, 11.0, 16.0, 23.0, 32.0, 44.0, 60.0];
+/// The cost of a label outside the frame, in obstacles touched: worse than any overlap.
+const OUTSIDE: usize = 1 << 20;
+/// Overlaps counted per candidate: beyond this many, a candidate is as bad as any.
+const MOST_COUNTED: usize = 16;
+/// Obstacle tests one figure's placement may make: past this, the remaining labels stay where
+/// the figure asked (a figure with thousands of crowded labels is placed in bounded time).
+const MAX_TESTS: u64 = 4_000_000;
 /// Grid cell size for the obstacle index, in pixels.
 const CELL: f64 = 24.0;
 
@@ -72,34 +78,63 @@ pub(crate) fn label_box(text: &str, x: f64, y: f64, anchor: Anchor) -> [f64; 4] 
     [left, y - ASCENT_EM * LABEL_FONT, left + w, y + DESCENT_EM * LABEL_FONT]
 }
 
-/// What labels must avoid, indexed by grid cell.
-#[derive(Default)]
+/// What labels must avoid, indexed by grid cell over the frame (cells outside it are
+/// clamped to its border cells, which only makes those cells fuller).
 pub(crate) struct Obstacles {
     segments: Vec<[f64; 4]>,
     dots: Vec<([f64; 2], f64)>,
     boxes: Vec<[f64; 4]>,
-    cells: HashMap<(i64, i64), Vec<Obstacle>>,
+    frame: [f64; 4],
+    origin: [f64; 2],
+    columns: usize,
+    rows: usize,
+    cells: Vec<Vec<Obstacle>>,
+    tests: std::cell::Cell<u64>,
 }
 
-#[derive(Clone, Copy)]
+#[derive(Clone, Copy, PartialEq)]
 enum Obstacle {
     Segment(usize),
     Dot(usize),
     Box(usize),
 }
 
-fn cell(v: f64) -> i64 {
-    (v / CELL).floor().clamp(-1e6, 1e6) as i64
-}
-
 impl Obstacles {
-    fn index(&mut self, bounds: [f64; 4], o: Obstacle) {
-        if !bounds.iter().all(|v| v.is_finite()) {
-            return;
+    /// No obstacles yet, in a frame `[left, top, right, bottom]`.
+    pub(crate) fn new(frame: [f64; 4]) -> Self {
+        let count = |span: f64| ((span / CELL).ceil().clamp(1.0, 4096.0)) as usize;
+        let (columns, rows) = (count(frame[2] - frame[0]), count(frame[3] - frame[1]));
+        Obstacles {
+            segments: Vec::new(),
+            dots: Vec::new(),
+            boxes: Vec::new(),
+            frame,
+            origin: [frame[0], frame[1]],
+            columns,
+            rows,
+            cells: vec![Vec::new(); columns * rows],
+            tests: std::cell::Cell::new(0),
         }
-        for i in cell(bounds[0])..=cell(bounds[2]) {
-            for j in cell(bounds[1])..=cell(bounds[3]) {
-                self.cells.entry((i, j)).or_default().push(o);
+    }
+
+    /// The cells' column and row ranges a box covers.
+    fn span(&self, b: [f64; 4]) -> Option<(std::ops::RangeInclusive<usize>, std::ops::RangeInclusive<usize>)> {
+        if !b.iter().all(|v| v.is_finite()) {
+            return None;
+        }
+        let at = |v: f64, o: f64, n: usize| ((v - o) / CELL).floor().clamp(0.0, (n - 1) as f64) as usize;
+        Some((
+            at(b[0], self.origin[0], self.columns)..=at(b[2], self.origin[0], self.columns),
+            at(b[1], self.origin[1], self.rows)..=at(b[3], self.origin[1], self.rows),
+        ))
+    }
+
+    fn index(&mut self, bounds: [f64; 4], o: Obstacle) {
+        if let Some((xs, ys)) = self.span(bounds) {
+            for j in ys {
+                for i in xs.clone() {
+                    self.cells[j * self.columns + i].push(o);
+                }
             }
         }
     }
@@ -138,20 +173,28 @@ impl Obstacles {
         self.index(b, Obstacle::Box(self.boxes.len() - 1));
     }
 
-    /// How many obstacles the box (grown by [`GAP`]) touches.
-    fn hits(&self, b: [f64; 4]) -> usize {
+    /// How many obstacles the box (grown by [`GAP`]) touches, counting no further than `limit`.
+    fn hits(&self, b: [f64; 4], limit: usize) -> usize {
         let g = [b[0] - GAP, b[1] - GAP, b[2] + GAP, b[3] + GAP];
-        let mut seen: Vec<(u8, usize)> = Vec::new();
-        for i in cell(g[0])..=cell(g[2]) {
-            for j in cell(g[1])..=cell(g[3]) {
-                for o in self.cells.get(&(i, j)).into_iter().flatten() {
-                    let (key, hit) = match *o {
-                        Obstacle::Segment(k) => ((0, k), segment_meets_box(self.segments[k], g)),
-                        Obstacle::Dot(k) => ((1, k), dot_meets_box(self.dots[k], g)),
-                        Obstacle::Box(k) => ((2, k), boxes_meet(self.boxes[k], g)),
+        let Some((xs, ys)) = self.span(g) else {
+            return limit;
+        };
+        let mut seen: Vec<Obstacle> = Vec::new();
+        for j in ys {
+            for i in xs.clone() {
+                let cell = &self.cells[j * self.columns + i];
+                self.tests.set(self.tests.get() + cell.len() as u64);
+                for &o in cell {
+                    let hit = match o {
+                        Obstacle::Segment(k) => segment_meets_box(self.segments[k], g),
+                        Obstacle::Dot(k) => dot_meets_box(self.dots[k], g),
+                        Obstacle::Box(k) => boxes_meet(self.boxes[k], g),
                     };
-                    if hit && !seen.contains(&key) {
-                        seen.push(key);
+                    if hit && !seen.contains(&o) {
+                        seen.push(o);
+                        if seen.len() >= limit {
+                            return limit;
+                        }
                     }
                 }
             }
@@ -161,15 +204,27 @@ impl Obstacles {
 
     /// Places the labels in order, each avoiding what is drawn and the labels before it, and
     /// keeping inside `frame` (`[left, top, right, bottom]`) when it can.
-    pub(crate) fn place(&mut self, labels: &[Wanted], frame: [f64; 4]) -> Vec<Placed> {
+    pub(crate) fn place(&mut self, labels: &[Wanted]) -> Vec<Placed> {
+        let frame = self.frame;
         labels
             .iter()
             .map(|l| {
                 let mut best: Option<(usize, Placed, [f64; 4])> = None;
-                for c in candidates(l) {
+                let candidates = candidates(l);
+                let tried = if self.tests.get() > MAX_TESTS {
+                    1
+                } else {
+                    candidates.len()
+                };
+                for c in candidates.into_iter().take(tried) {
                     let b = label_box(l.text, c.x, c.y, c.anchor);
                     let outside = b[0] < frame[0] || b[1] < frame[1] || b[2] > frame[2] || b[3] > frame[3];
-                    let cost = self.hits(b) + if outside { 1000 } else { 0 };
+                    let penalty = if outside { OUTSIDE } else { 0 };
+                    let least = best.as_ref().map_or(usize::MAX, |(least, _, _)| *least);
+                    if penalty >= least {
+                        continue;
+                    }
+                    let cost = penalty + self.hits(b, (least - penalty).min(MOST_COUNTED));
                     if best.as_ref().is_none_or(|(least, _, _)| cost < *least) {
                         best = Some((cost, c, b));
                     }
@@ -276,7 +331,7 @@ mod tests {
 
     #[test]
     fn a_label_moves_off_a_line_through_its_asked_place() {
-        let mut o = Obstacles::default();
+        let mut o = Obstacles::new([0.0, 0.0, 400.0, 400.0]);
         // a horizontal line right through where the label asks to be
         o.segment([0.0, 100.0], [400.0, 100.0]);
         let wanted = Wanted {
@@ -285,19 +340,16 @@ mod tests {
             dy: 4.0,
             text: "w₁ = 1/2",
         };
-        let placed = o.place(&[wanted], [0.0, 0.0, 400.0, 400.0]);
+        let placed = o.place(&[wanted]);
         let b = label_box("w₁ = 1/2", placed[0].x, placed[0].y, placed[0].anchor);
         assert!(!segment_meets_box([0.0, 100.0, 400.0, 100.0], b), "{placed:?}");
         // a second label at the same anchor goes elsewhere
-        let again = o.place(
-            &[Wanted {
-                at: [200.0, 100.0],
-                dx: 6.0,
-                dy: 4.0,
-                text: "w₁ = 1/2",
-            }],
-            [0.0, 0.0, 400.0, 400.0],
-        );
+        let again = o.place(&[Wanted {
+            at: [200.0, 100.0],
+            dx: 6.0,
+            dy: 4.0,
+            text: "w₁ = 1/2",
+        }]);
         let b2 = label_box("w₁ = 1/2", again[0].x, again[0].y, again[0].anchor);
         assert!(!boxes_meet(b, b2));
     }

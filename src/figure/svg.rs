@@ -323,7 +323,7 @@ impl Panel {
     /// Where each label goes (in item order), clear of this panel's lines, points, heading
     /// and other labels ([`super::place`]).
     fn place_labels(&self, map: &PanelMap, frame: [f64; 4]) -> Vec<Placed> {
-        let mut obstacles = Obstacles::default();
+        let mut obstacles = Obstacles::new(frame);
         let screen = |q: &[f64; 2]| {
             let (x, y) = map.to_screen(q[0], q[1]);
             [x, y]
@@ -360,7 +360,7 @@ impl Panel {
                 }),
             }
         }
-        obstacles.place(&wanted, frame)
+        obstacles.place(&wanted)
     }
 
     fn bounds(&self) -> Option<[f64; 4]> {
