@@ -660,6 +660,7 @@ enum Topic {
     Hull,
     Fit,
     Conics,
+    Projection,
 }
 
 fn topic(c: &Claim) -> Option<Topic> {
@@ -680,6 +681,9 @@ fn topic(c: &Claim) -> Option<Topic> {
         .is_some_and(|v| v.contains_key("d0") && v.contains_key("d1"));
     if tangents || c.polygon.as_ref().is_some_and(|p| p.name == "a") {
         return Some(Topic::Fit);
+    }
+    if c.source.starts_with("001") && c.source.contains("(10)") {
+        return Some(Topic::Projection); // (10) as the projection of a parabola in space
     }
     // text 001's notation: a symbolic middle weight w1 of a rational quadratic
     if c.symbols
@@ -723,6 +727,12 @@ fn illustrate(t: Topic) -> Result<Figure> {
                 .collect::<Result<Vec<_>>>()?;
             figure::conics(&pts, &q(1, 1), &q(1, 1), &[q(1, 2), q(1, 1), q(2, 1)])
         }
+        Topic::Projection => figure::conic_projection(&BezierCurve::new(
+            crate::input::parse_points(figure::DEFAULT_PARABOLA)?
+                .iter()
+                .map(|p| p.try_map(|x| Ok(Q::rational(x.clone()))))
+                .collect::<Result<_>>()?,
+        )?),
         Topic::Fit => {
             let rows = crate::input::parse_points(figure::DEFAULT_FIT_CURVE)?;
             let pts = rows
@@ -838,6 +848,7 @@ pub fn claim_figure(c: &Claim) -> Result<Option<ClaimFigure>> {
         let caption = match t {
             Topic::Fit => "illustration of text 004's method on our worked example x(t) = (t, 1 + t², t⁴)",
             Topic::Conics => "illustration on the control polygon of text 001's Ex. 3 and Ex. 4, w₀ = w₂ = 1",
+            Topic::Projection => "illustration on the parabola of text 001's Ex. 1 of the proof of (10)",
             _ => ON_EXAMPLE,
         };
         return Ok(Some(ClaimFigure {
