@@ -71,6 +71,12 @@ fn degree_20(c: &mut Criterion) {
             b.iter(|| black_box(r.figure().and_then(|f| f.to_svg()).unwrap()))
         });
     }
+    let mut r = FigureRequest::new(FigureKind::Hull);
+    r.input = Some(points(20, 3, 0));
+    r.point = Some("100,100,100".into());
+    group.bench_function(BenchmarkId::new("figure_3d", "hull_outside"), |b| {
+        b.iter(|| black_box(r.figure().and_then(|f| f.to_svg()).unwrap()))
+    });
     let curve: BezierCurve<BigRational> =
         BezierCurve::new(casteljau::input::parse_points(&points(20, 2, 0)).unwrap()).unwrap();
     let params: Vec<BigRational> = (0..=200).map(|k| BigRational::new(k.into(), 200.into())).collect();

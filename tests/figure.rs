@@ -545,6 +545,10 @@ fn hull_certificates_in_space_are_exact_and_outside_agrees_with_the_library() {
     points.push(Point::new(vec![q(1, 2), q(1, 3), q(1, 5)]).unwrap());
     points.push(Point::new(vec![q(9, 1), q(9, 1), q(9, 1)]).unwrap());
     points.push(Point::new(vec![q(7, 1), q(-3, 1), q(0, 1)]).unwrap());
+    // just beyond a control point, and on an edge between two
+    points.push(Point::new(vec![q(6001, 1000), q(1, 1), q(3, 1)]).unwrap());
+    points.push(Point::new(vec![q(-3, 1), q(4, 1), q(2001, 1000)]).unwrap());
+    points.push(Point::new(vec![q(5, 2), q(-1, 1), q(1, 2)]).unwrap());
     let (mut inside, mut outside) = (0, 0);
     for p in &points {
         let (_, notes) = check_svg(&figure::hull(&c, p).unwrap().to_svg().unwrap());

@@ -92,10 +92,10 @@ where
 /// Convex weights of `p` over `points`, exactly checked: the subsets of at most `dim + 1`
 /// points are tried in [`crate::hull::convex_weights`]'s order, but a subset is solved
 /// exactly only when its floating-point barycentric weights are not clearly negative (or
-/// cannot be computed in floating point); the first exact solution is the certificate. When
-/// no subset passes, the full exact search decides, so "outside the hull" is never a
-/// floating-point verdict. The exact solve of a subset is the library's own, over that
-/// subset alone.
+/// cannot be computed in floating point); the first exact solution is the certificate. The
+/// exact solve of a subset is the library's own, over that subset alone. When no subset
+/// passes, "outside the hull" is never a floating-point verdict: it is a separating plane
+/// checked exactly ([`separated`]) or, failing that, the full exact search.
 pub(crate) fn certificate<T: Scalar>(points: &[Point<T>], p: &Point<T>) -> Result<Option<Vec<T>>>
 where
     for<'a> &'a T: RefOps<T>,
@@ -139,7 +139,53 @@ where
             }
         }
     }
+    if separated(points, p, &floats, &target)? {
+        return Ok(None);
+    }
     convex_weights(points, p)
+}
+
+/// Whether a plane exactly separates `p` from every point: `n·b_i < n·p` checked in exact
+/// arithmetic for a normal `n` found in floating point (`p` minus its nearest point of the
+/// hull, by Gilbert's iteration). `false` only means that no certificate was found this way.
+fn separated<T: Scalar>(points: &[Point<T>], p: &Point<T>, floats: &[Vec<f64>], target: &[f64]) -> Result<bool>
+where
+    for<'a> &'a T: RefOps<T>,
+{
+    let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
+    let Some(mut x) = floats.first().cloned() else {
+        return Ok(false);
+    };
+    for _ in 0..1000 {
+        let d: Vec<f64> = target.iter().zip(&x).map(|(t, x)| t - x).collect();
+        // the hull's point furthest along d
+        let Some(v) = floats.iter().max_by(|a, b| dot(a, &d).total_cmp(&dot(b, &d))) else {
+            return Ok(false);
+        };
+        let e: Vec<f64> = v.iter().zip(&x).map(|(v, x)| v - x).collect();
+        let (along, length) = (dot(&e, &d), dot(&e, &e));
+        if !(along.is_finite() && length.is_finite()) || along <= 1e-12 * dot(&d, &d).sqrt() * length.sqrt() {
+            break;
+        }
+        let s = (along / length).min(1.0);
+        x = x.iter().zip(&e).map(|(x, e)| x + s * e).collect();
+    }
+    let normal = target
+        .iter()
+        .zip(&x)
+        .map(|(t, x)| T::from_f64(t - x))
+        .collect::<Result<Vec<T>>>();
+    let Ok(normal) = normal else {
+        return Ok(false);
+    };
+    let along = |q: &Point<T>| {
+        q.coords()
+            .iter()
+            .zip(&normal)
+            .fold(T::zero(), |s, (a, b)| &s + &(a * b))
+    };
+    let beyond = along(p);
+    Ok(points.iter().all(|b| along(b) < beyond))
 }
 
 /// Whether `target` may be a convex combination of the subset's points, by a floating-point
