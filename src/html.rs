@@ -683,6 +683,12 @@ fn illustrate(t: Illustration) -> Result<Figure> {
                 .collect::<Result<Vec<_>>>()?;
             figure::conics(&pts, &q(1, 1), &q(1, 1), &[q(1, 2), q(1, 1), q(2, 1)])
         }
+        Illustration::Projection => figure::conic_projection(&BezierCurve::new(
+            crate::input::parse_points(figure::DEFAULT_PARABOLA)?
+                .iter()
+                .map(|p| p.try_map(|x| Ok(Q::rational(x.clone()))))
+                .collect::<Result<_>>()?,
+        )?),
         Illustration::Fit => {
             let rows = crate::input::parse_points(figure::DEFAULT_FIT_CURVE)?;
             let pts = rows
@@ -797,6 +803,7 @@ pub fn claim_figure(c: &Claim) -> Result<Option<ClaimFigure>> {
         let caption = match t {
             Illustration::Fit => "illustration of text 004's method on our worked example x(t) = (t, 1 + t², t⁴)",
             Illustration::Conics => "illustration on the control polygon of text 001's Ex. 3 and Ex. 4, w₀ = w₂ = 1",
+            Illustration::Projection => "illustration on the parabola of text 001's Ex. 1 of the proof of (10)",
             _ => ON_EXAMPLE,
         };
         return Ok(Some(ClaimFigure {

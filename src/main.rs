@@ -175,16 +175,17 @@ enum Command {
     #[command(
         after_help = "Figures: construction, subdivision (--t), elevation (--steps), hodograph, \
                             hull (--point), conics (--weights: middle weights), net (--iso), enneper, \
-                            fit (--weights: a rational curve's weights).\nInput: control points \
+                            fit (--weights: a rational curve's weights), bernstein (--degree, --t), projection.\nInput: control points \
                             \"0,0; 1,2; 3,0\", or a net with rows separated by '|'."
     )]
     Figure {
-        /// construction, subdivision, elevation, hodograph, hull, conics, net, enneper or fit.
+        /// construction, subdivision, elevation, hodograph, hull, conics, net, enneper, fit,
+        /// bernstein or projection.
         what: String,
         /// Control points or a control net (default: the texts' example).
         #[arg(allow_hyphen_values = true)]
         input: Option<String>,
-        /// The parameter (construction, subdivision; default 1/2).
+        /// The parameter (construction, subdivision; default 1/2; bernstein: 1/3).
         #[arg(long, allow_hyphen_values = true)]
         t: Option<String>,
         /// Elevation steps, e.g. "1, 2, 4, 8" (elevation).
@@ -199,6 +200,9 @@ enum Command {
         /// Iso-curves per direction (net; default 4).
         #[arg(long)]
         iso: Option<String>,
+        /// The degree of the basis (bernstein; default 3).
+        #[arg(long)]
+        degree: Option<String>,
         /// Write the SVG here (default: standard output).
         #[arg(short, long, value_name = "FILE")]
         output: Option<PathBuf>,
@@ -271,6 +275,7 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             point,
             weights,
             iso,
+            degree,
             output: out,
         } => {
             if cli.format.is_some() {
@@ -284,6 +289,7 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
                 point,
                 weights,
                 iso,
+                degree,
             };
             let svg = request.figure().and_then(|f| f.to_svg()).map_err(e)?;
             match out {

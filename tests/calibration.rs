@@ -369,9 +369,25 @@ fn figure_request(kind: FigureKind, numbers: Kind, n: usize) -> FigureRequest {
         FigureKind::Conics => {
             request.input = Some(points_text(&(0..3).map(|_| g.point(numbers, 2)).collect::<Vec<_>>()));
         }
+        FigureKind::Bernstein => request.degree = Some(n.to_string()),
+        FigureKind::Projection => {
+            // a quadratic in space above the plane z = 0: heights x² + 1
+            let lifted: Vec<_> = (0..3)
+                .map(|_| {
+                    let p = g.point(numbers, 2);
+                    let (x, y) = (p.coords()[0].clone(), p.coords()[1].clone());
+                    let z = &(&x * &x) + &BigRational::from_integer(1.into());
+                    casteljau::Point::new(vec![x, y, z]).unwrap()
+                })
+                .collect();
+            request.input = Some(points_text(&lifted));
+        }
         _ => request.input = Some(points_text(g.curve(numbers, n, dim).points())),
     }
-    if matches!(kind, FigureKind::Construction | FigureKind::Subdivision) {
+    if matches!(
+        kind,
+        FigureKind::Construction | FigureKind::Subdivision | FigureKind::Bernstein
+    ) {
         request.t = Some(text(&g.param(numbers)));
     }
     request

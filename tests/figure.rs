@@ -409,3 +409,171 @@ fn committed_figures_are_what_the_command_draws() {
         );
     }
 }
+
+/// `B_i^n(a/b) = C(n, i) a^i (b − a)^(n−i) / b^n`, in integers.
+fn bernstein_by_hand(i: usize, n: usize, t: &BigRational) -> BigRational {
+    use casteljau::BigInt;
+    let (a, b) = (t.numer().clone(), t.denom().clone());
+    let mut c = BigInt::from(1);
+    for k in 0..i {
+        c = c * BigInt::from(n - k) / BigInt::from(k + 1);
+    }
+    let num = c * num_pow(&a, i) * num_pow(&(&b - &a), n - i);
+    BigRational::new(num, num_pow(&b, n))
+}
+
+fn num_pow(x: &casteljau::BigInt, k: usize) -> casteljau::BigInt {
+    (0..k).fold(casteljau::BigInt::from(1), |p, _| p * x)
+}
+
+#[test]
+fn bernstein_values_are_the_exact_basis_and_are_plotted_there() {
+    for (n, t) in [(3, q(1, 3)), (7, q(2, 5)), (1, q(1, 1))] {
+        let fig = figure::bernstein_basis(n, &t).unwrap();
+        let svg = fig.to_svg().unwrap();
+        let (titles, notes) = check_svg(&svg);
+        let map = fig.layout().panels[0];
+        let doc = roxmltree::Document::parse(&svg).unwrap();
+        let mut sum = q(0, 1);
+        for i in 0..=n {
+            let exact = bernstein_by_hand(i, n, &t);
+            sum += exact.clone();
+            let name = figure::svg::indexed("B", &i.to_string(), Some(&n.to_string()));
+            let prefix = format!("{name}({t}) = ");
+            assert_eq!(titled(&titles, &prefix), exact.to_string());
+            assert!(notes.contains(&format!("{prefix}{exact}")), "{notes:?}");
+            // the dot is drawn at (t, B_i^n(t))
+            let dot = doc
+                .descendants()
+                .find(|d| {
+                    d.has_tag_name("circle")
+                        && d.first_child().and_then(|c| c.text()) == Some(&format!("{prefix}{exact}"))
+                })
+                .unwrap();
+            let (x, y) = map.to_screen(t.to_f64(), exact.to_f64());
+            let at = |a: &str| dot.attribute(a).unwrap().parse::<f64>().unwrap();
+            assert!((at("cx") - x).abs() < 0.01 && (at("cy") - y).abs() < 0.01, "{name}");
+        }
+        assert_eq!(sum, q(1, 1));
+    }
+    // the request: defaults, limits, bad input
+    let fig = FigureRequest::new(FigureKind::Bernstein).figure().unwrap();
+    assert!(
+        fig.title().contains("at t = 1/3") && fig.notes()[0] == "B₀³(1/3) = 8/27",
+        "{:?}",
+        fig.notes()
+    );
+    let mut r = FigureRequest::new(FigureKind::Bernstein);
+    r.t = Some("3/2".into());
+    assert!(r.figure().unwrap_err().to_string().contains("[0, 1]"));
+    r.t = Some(format!("1/{}", "7".repeat(300)));
+    r.degree = Some("64".into());
+    let e = r.figure().unwrap_err().to_string();
+    assert!(e.contains("degree × bits of --t") && e.contains("limit 4096"), "{e}");
+    r.degree = Some("65".into());
+    assert!(r.figure().unwrap_err().to_string().contains("limit 64"));
+    let mut r = FigureRequest::new(FigureKind::Bernstein);
+    r.input = Some("0,0; 1,1".into());
+    assert!(r.figure().unwrap_err().to_string().contains("no control points"));
+}
+
+#[test]
+fn projection_points_are_the_parabola_divided_by_its_height() {
+    for input in [figure::DEFAULT_PARABOLA, "3,-2,1; 1,0,3; 3,2,1"] {
+        let mut r = FigureRequest::new(FigureKind::Projection);
+        r.input = Some(input.into());
+        let (titles, notes) = check_svg(&r.figure().unwrap().to_svg().unwrap());
+        let p: Vec<Vec<BigRational>> = casteljau::parse_points(input)
+            .unwrap()
+            .iter()
+            .map(|p| p.coords().to_vec())
+            .collect();
+        let divided = |v: &[BigRational]| format!("({}, {})", &v[0] / &v[2], &v[1] / &v[2]);
+        for (i, v) in p.iter().enumerate() {
+            let b = format!("{}, weight {}", divided(v), v[2]);
+            assert_eq!(titled(&titles, &format!("b{} = ", ['₀', '₁', '₂'][i])), b);
+        }
+        // p(1/2) = (p0 + 2 p1 + p2)/4 and its projection
+        let half: Vec<BigRational> = (0..3)
+            .map(|k| (&p[0][k] + &(&p[1][k] * q(2, 1)) + &p[2][k]) * q(1, 4))
+            .collect();
+        let line = format!(
+            "p(1/2) = ({}, {}, {}) projects to x(1/2) = {}",
+            half[0],
+            half[1],
+            half[2],
+            divided(&half)
+        );
+        assert!(notes.contains(&line), "{line} not in {notes:?}");
+    }
+    let mut r = FigureRequest::new(FigureKind::Projection);
+    r.input = Some("1,0,1; 1,1,0; 0,2,2".into());
+    assert!(r.figure().unwrap_err().to_string().contains("z > 0"));
+    r.input = Some("1,0; 1,1; 0,2".into());
+    assert!(r.figure().unwrap_err().to_string().contains("quadratic in space"));
+}
+
+/// The hull figure's weights, read back from its legend: index → λ.
+fn legend_weights(notes: &[String]) -> Option<Vec<(usize, BigRational)>> {
+    let all = notes.join("\n").replace("\n    ", " ");
+    let line = all.lines().find(|l| l.contains("= Σ λᵢ bᵢ with "))?;
+    let terms = &line[line.find(" with ").unwrap() + 6..];
+    Some(
+        terms
+            .split(", ")
+            .map(|term| {
+                let (name, value) = term.split_once(" = ").unwrap();
+                let index: String = name
+                    .trim_start_matches('λ')
+                    .chars()
+                    .map(|c| char::from_digit(c as u32 - '₀' as u32, 10).unwrap())
+                    .collect();
+                (index.parse().unwrap(), value.parse().unwrap())
+            })
+            .collect(),
+    )
+}
+
+#[test]
+fn hull_certificates_in_space_are_exact_and_outside_agrees_with_the_library() {
+    let c = BezierCurve::new(
+        casteljau::parse_points("0,0,0; 5,-2,1; -3,4,2; 2,2,-4; 6,1,3; -1,-3,0; 4,4,4; 1,0,-2").unwrap(),
+    )
+    .unwrap();
+    let mut points: Vec<Point<BigRational>> = (0..=9).map(|k| c.eval(&q(k, 9))).collect();
+    points.extend(c.points().iter().cloned());
+    points.push(Point::new(vec![q(1, 2), q(1, 3), q(1, 5)]).unwrap());
+    points.push(Point::new(vec![q(9, 1), q(9, 1), q(9, 1)]).unwrap());
+    points.push(Point::new(vec![q(7, 1), q(-3, 1), q(0, 1)]).unwrap());
+    // just beyond a control point, and on an edge between two
+    points.push(Point::new(vec![q(6001, 1000), q(1, 1), q(3, 1)]).unwrap());
+    points.push(Point::new(vec![q(-3, 1), q(4, 1), q(2001, 1000)]).unwrap());
+    points.push(Point::new(vec![q(5, 2), q(-1, 1), q(1, 2)]).unwrap());
+    let (mut inside, mut outside) = (0, 0);
+    for p in &points {
+        let (_, notes) = check_svg(&figure::hull(&c, p).unwrap().to_svg().unwrap());
+        match legend_weights(&notes) {
+            Some(w) => {
+                inside += 1;
+                let mut sum = q(0, 1);
+                let mut combination = vec![q(0, 1); 3];
+                for (i, l) in &w {
+                    assert!(*l >= q(0, 1), "λ{i} = {l} < 0 for {p}");
+                    sum += l.clone();
+                    for (k, x) in combination.iter_mut().enumerate() {
+                        *x += l.clone() * c.points()[*i].coords()[k].clone();
+                    }
+                }
+                assert_eq!(sum, q(1, 1), "{p}");
+                assert_eq!(combination, p.coords(), "{p}");
+                assert!(c.hull_weights(p).unwrap().is_some());
+            }
+            None => {
+                outside += 1;
+                assert!(notes.iter().any(|n| n.contains("no convex weights exist")));
+                assert!(c.hull_weights(p).unwrap().is_none(), "{p}");
+            }
+        }
+    }
+    assert!(inside >= 10 && outside >= 1, "{inside} inside, {outside} outside");
+}

@@ -4,7 +4,6 @@ use super::svg::{Figure, Panel, Style, CURVE, PALETTE, POLYGON};
 use super::{planar, planar_curve};
 use crate::curve::ElevationDistance;
 use crate::error::{Error, Result};
-use crate::point::Point;
 use crate::scalar::Scalar;
 use crate::BezierCurve;
 
@@ -84,38 +83,18 @@ pub fn elevation<T: Scalar>(curve: &BezierCurve<T>, steps: &[usize]) -> Result<F
 }
 
 /// [`BezierCurve::elevation_distance`] of `elevated` (the curve elevated `r` times), the same
-/// exact numbers, with each `b(i/N)`, `N = n + r`, as one sum of integer multiples
-/// `Σ_j C(n,j) i^j (N − i)^(n−j) b_j / N^n`: `n + 1` products per point instead of a whole
-/// de Casteljau scheme, whose lerps at `i/N` reduce a fraction at every step.
+/// exact numbers by the same steps, without elevating again: each `b(i/N)`, `N = n + r`, is
+/// one exact evaluation ([`BezierCurve::eval`], fraction-free for exact rationals).
 fn distance<T: Scalar>(curve: &BezierCurve<T>, elevated: &BezierCurve<T>) -> Result<ElevationDistance<T>> {
-    let (n, total) = (curve.degree(), elevated.degree());
-    let binomials: Vec<T> = (0..=n)
-        .scan(T::one(), |c, j| {
-            let here = c.clone();
-            *c = c
-                .mul_ref(&T::from_usize(n - j))
-                .checked_div(&T::from_usize(j + 1))
-                .ok()?;
-            Some(here)
-        })
-        .collect();
-    let scale = T::one().checked_div(&integer_power(&T::from_usize(total), n))?;
+    let total = elevated.degree();
     let (mut max_norm, mut max_squared) = (T::zero(), T::zero());
     for (i, p) in elevated.points().iter().enumerate() {
-        let (a, b) = (T::from_usize(i), T::from_usize(total - i));
-        let powers_of_a = powers(&a, n);
-        let powers_of_b = powers(&b, n);
-        let mut sum = vec![T::zero(); curve.dim()];
-        for (j, q) in curve.points().iter().enumerate() {
-            let weight = binomials[j].mul_ref(&powers_of_a[j]).mul_ref(&powers_of_b[n - j]);
-            if weight.is_zero() {
-                continue;
-            }
-            for (s, x) in sum.iter_mut().zip(q.coords()) {
-                *s += &weight.mul_ref(x);
-            }
-        }
-        let on_curve = Point::new(sum.iter().map(|s| s.mul_ref(&scale)).collect())?;
+        let t = if total == 0 {
+            T::zero()
+        } else {
+            T::from_usize(i).checked_div(&T::from_usize(total))?
+        };
+        let on_curve = curve.eval(&t);
         let m = p.max_norm_distance(&on_curve);
         let sq = p.distance_squared(&on_curve);
         if m > max_norm {
@@ -126,22 +105,8 @@ fn distance<T: Scalar>(curve: &BezierCurve<T>, elevated: &BezierCurve<T>) -> Res
         }
     }
     Ok(ElevationDistance {
-        r: total - n,
+        r: total - curve.degree(),
         max_norm,
         max_squared,
     })
-}
-
-/// `1, x, x², …, x^k`.
-fn powers<T: Scalar>(x: &T, k: usize) -> Vec<T> {
-    let mut out = vec![T::one()];
-    for _ in 0..k {
-        let next = (out.last().expect("starts with 1")).mul_ref(x);
-        out.push(next);
-    }
-    out
-}
-
-fn integer_power<T: Scalar>(x: &T, k: usize) -> T {
-    powers(x, k).pop().expect("starts with 1")
 }

@@ -1,6 +1,6 @@
 //! Enneper's surface as a bicubic net (text 003, Example 5).
 
-use super::net::net;
+use super::net::draw_net;
 use super::svg::Figure;
 use crate::error::Result;
 use crate::point::AffineMap;
@@ -13,10 +13,11 @@ pub fn text003_example5<T: Scalar>() -> Result<BezierSurface<T>> {
     enneper_net(&T::from_i64(2))?.transform(&AffineMap::scaling(3, &T::from_i64(3)))
 }
 
-/// The figure of an Enneper net: [`net`] with six iso-curves each way, noting whether the net
-/// is exactly text 003's Example 5.
+/// The figure of an Enneper net: [`super::net()`] with three iso-curves each way shaded by
+/// depth (the surface folds over itself, and depth tells its sheets apart), noting whether
+/// the net is exactly text 003's Example 5.
 pub fn enneper<T: Scalar>(surface: &BezierSurface<T>) -> Result<Figure> {
-    let mut fig = net(surface, 6, "Enneper's surface from a bicubic net")?;
+    let mut fig = draw_net(surface, 3, "Enneper's surface from a bicubic net", true)?;
     let example = text003_example5::<T>()?;
     if *surface == example {
         fig.note(None, "this net is exactly 3 · E(4s − 2, 4t − 2) with E(u, v) = (u − u³/3 + uv², v − v³/3 + vu², u² − v²): text 003 Ex. 5");

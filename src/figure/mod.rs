@@ -1,9 +1,11 @@
 //! Figures for teaching, computed from exact data: the de Casteljau construction, subdivision,
-//! degree elevation, the hodograph, the convex hull, conic arcs, control nets, Enneper's net
-//! and text 004's fit, each written as a standalone SVG.
+//! degree elevation, the hodograph, the convex hull, conic arcs, control nets, Enneper's net,
+//! text 004's fit, the Bernstein basis and text 001's projection of a parabola to a conic,
+//! each written as a standalone SVG. Labels are placed clear of lines, points and each other
+//! (the private `place` module).
 //!
 //! Every figure is computed in exact arithmetic with the library's own operations (`scheme`,
-//! `split_at`, `elevate_by`, `derivative`, `hull_weights`, `classify_conic`, `iso_u`/`iso_v`,
+//! `split_at`, `elevate_by`, `derivative`, `convex_weights`, `classify_conic`, `iso_u`/`iso_v`,
 //! `enneper_net`, `fit_cubic_to`); values become `f64` pixel coordinates only when the SVG is
 //! written ([`svg`]). Each drawn point carries its exact value as a `<title>` tooltip, and
 //! the figure's notes print the exact numbers the figure is about, so a printed copy keeps
@@ -20,7 +22,8 @@
 //! [`MAX_FIGURE_DEGREE`]; every number (coordinates, `--t`, `--point`, `--weights`) at most
 //! [`MAX_FIGURE_NUMBER_BITS`] bits in its numerator and in its denominator; at most
 //! [`MAX_FIGURE_STEPS`] elevation steps, each at most [`MAX_FIGURE_ELEVATION`]; at most
-//! [`MAX_FIGURE_ARCS`] conic arcs and [`MAX_ISO`] iso-curves per direction; the hull search at
+//! [`MAX_FIGURE_ARCS`] conic arcs and [`MAX_ISO`] iso-curves per direction; the Bernstein
+//! basis's degree times the bits of `--t` at most [`MAX_BERNSTEIN_BITS`]; the hull search at
 //! most [`crate::hull::MAX_SUBSETS`] subsets. The exact computations a figure prints (the
 //! scheme, the pieces, elevated polygons and their distances, hull weights, the fit, the
 //! Enneper match) are given a work estimate in the oracle's units (the oracle's `Op::work`)
@@ -35,30 +38,35 @@
 //! assert!(svg.contains("b₀³(1/2) = (2, 3/2)"));
 //! ```
 
+mod bernstein;
 mod conics;
 mod construction;
 mod elevation;
 mod enneper;
 mod fit;
 mod hodograph;
+mod homogeneous;
 mod hull;
 mod net;
+mod place;
 mod request;
 mod sample;
 mod subdivision;
 pub mod svg;
 
+pub use bernstein::bernstein_basis;
 pub use conics::conics;
 pub use construction::construction;
 pub use elevation::{elevation, MAX_FIGURE_ELEVATION};
 pub use enneper::{enneper, text003_example5};
 pub use fit::fit;
 pub use hodograph::hodograph;
+pub use homogeneous::conic_projection;
 pub use hull::hull;
 pub use net::{net, MAX_ISO};
 pub use request::{
-    FigureKind, FigureRequest, DEFAULT_CONIC_POLYGON, DEFAULT_CURVE, DEFAULT_FIT_CURVE, DEFAULT_NET, MAX_FIGURE_ARCS,
-    MAX_FIGURE_NUMBER_BITS, MAX_FIGURE_STEPS, MAX_FIGURE_WORK,
+    FigureKind, FigureRequest, DEFAULT_CONIC_POLYGON, DEFAULT_CURVE, DEFAULT_FIT_CURVE, DEFAULT_NET, DEFAULT_PARABOLA,
+    MAX_BERNSTEIN_BITS, MAX_FIGURE_ARCS, MAX_FIGURE_NUMBER_BITS, MAX_FIGURE_STEPS, MAX_FIGURE_WORK,
 };
 pub use subdivision::subdivision;
 pub use svg::{Figure, Layout, Panel, PanelMap};

@@ -30,11 +30,15 @@ pub enum FigureKind {
     Enneper,
     /// [`super::fit`]: text 004's cubic fit.
     Fit,
+    /// [`super::bernstein_basis`]: `B_i^n` on `[0, 1]` and the values at `t`.
+    Bernstein,
+    /// [`super::conic_projection`]: text 001's parabola in space projected to `z = 1`.
+    Projection,
 }
 
 impl FigureKind {
     /// Every kind, in the order the help lists them.
-    pub const ALL: [FigureKind; 9] = [
+    pub const ALL: [FigureKind; 11] = [
         FigureKind::Construction,
         FigureKind::Subdivision,
         FigureKind::Elevation,
@@ -44,6 +48,8 @@ impl FigureKind {
         FigureKind::Net,
         FigureKind::Enneper,
         FigureKind::Fit,
+        FigureKind::Bernstein,
+        FigureKind::Projection,
     ];
 
     /// The command-line name.
@@ -58,6 +64,8 @@ impl FigureKind {
             FigureKind::Net => "net",
             FigureKind::Enneper => "enneper",
             FigureKind::Fit => "fit",
+            FigureKind::Bernstein => "bernstein",
+            FigureKind::Projection => "projection",
         }
     }
 
@@ -66,7 +74,8 @@ impl FigureKind {
         match self {
             FigureKind::Construction | FigureKind::Subdivision => &["--t"],
             FigureKind::Elevation => &["--steps"],
-            FigureKind::Hodograph | FigureKind::Enneper => &[],
+            FigureKind::Hodograph | FigureKind::Enneper | FigureKind::Projection => &[],
+            FigureKind::Bernstein => &["--t", "--degree"],
             FigureKind::Hull => &["--point"],
             FigureKind::Conics | FigureKind::Fit => &["--weights"],
             FigureKind::Net => &["--iso"],
@@ -92,6 +101,8 @@ pub const DEFAULT_CURVE: &str = "0,0; 4/3,-4/3; 4/3,4/3; 0,0";
 pub const DEFAULT_CONIC_POLYGON: &str = "-1,1; 0,-1; 1,1";
 /// Text 003's Ex. 2 net (a hyperbolic paraboloid).
 pub const DEFAULT_NET: &str = "-1,-1,0; -1,0,2; -1,1,0 | 0,-1,-2; 0,0,0; 0,1,-2 | 1,-1,0; 1,0,2; 1,1,0";
+/// Text 001's parabola in space whose projection is the quarter circle (its Ex. 1 of (10)).
+pub const DEFAULT_PARABOLA: &str = "1,0,1; 1,1,1; 0,2,2";
 /// The space curve (t, 1 + t², t⁴) as a quartic, our worked example of text 004.
 pub const DEFAULT_FIT_CURVE: &str = "0,1,0; 1/4,1,0; 1/2,7/6,0; 3/4,3/2,0; 1,2,1";
 
@@ -114,6 +125,8 @@ pub struct FigureRequest {
     pub weights: Option<String>,
     /// `--iso`: iso-curves per direction of `net` (default 4).
     pub iso: Option<String>,
+    /// `--degree`: the degree of the Bernstein basis (default 3).
+    pub degree: Option<String>,
 }
 
 impl FigureRequest {
@@ -127,6 +140,7 @@ impl FigureRequest {
             point: None,
             weights: None,
             iso: None,
+            degree: None,
         }
     }
 
@@ -138,6 +152,7 @@ impl FigureRequest {
             ("--point", self.point.is_some()),
             ("--weights", self.weights.is_some()),
             ("--iso", self.iso.is_some()),
+            ("--degree", self.degree.is_some()),
         ];
         if let Some((flag, _)) = given
             .iter()
@@ -153,7 +168,10 @@ impl FigureRequest {
                 .t
                 .as_deref()
                 .map(|t| parse_number(t).map_err(|e| ctx("--t", e)))
-                .unwrap_or_else(|| Ok(BigRational::new(1.into(), 2.into())))?;
+                .unwrap_or_else(|| {
+                    let third = self.kind == FigureKind::Bernstein;
+                    Ok(BigRational::new(1.into(), if third { 3 } else { 2 }.into()))
+                })?;
             check_bits("a number of --t in a figure", [&t])?;
             Ok(t)
         };
@@ -252,6 +270,37 @@ impl FigureRequest {
                     super::enneper(&surface)
                 }
             },
+            FigureKind::Bernstein => {
+                if self.input.is_some() {
+                    return Err(Error::Domain(
+                        "`figure bernstein` takes no control points (use --degree and --t)".into(),
+                    ));
+                }
+                let n = match &self.degree {
+                    Some(d) => parse_count(d, "--degree")?,
+                    None => 3,
+                };
+                super::check_figure_degree(n)?;
+                let t = t()?;
+                let bits = n as u64 * t.numer().bits().max(t.denom().bits());
+                if bits > MAX_BERNSTEIN_BITS {
+                    return Err(Error::TooLarge {
+                        what: "Bernstein figure (degree × bits of --t)",
+                        value: bits.to_string(),
+                        limit: format!("{MAX_BERNSTEIN_BITS}; use a lower degree or a shorter t"),
+                    });
+                }
+                super::bernstein_basis(n, &t)
+            }
+            FigureKind::Projection => {
+                let points = parse_points(self.input.as_deref().unwrap_or(DEFAULT_PARABOLA))
+                    .map_err(|e| ctx("control points", e))?;
+                check_bits(
+                    "a control point coordinate in a figure",
+                    points.iter().flat_map(|p| p.coords()),
+                )?;
+                super::conic_projection(&BezierCurve::new(points).map_err(|e| ctx("control points", e))?)
+            }
             FigureKind::Fit => {
                 let points = parse_points(self.input.as_deref().unwrap_or(DEFAULT_FIT_CURVE))
                     .map_err(|e| ctx("control points", e))?;
@@ -310,6 +359,10 @@ impl FigureRequest {
 /// (coordinates, `--t`, `--point`, `--weights`): about 301 decimal digits. A figure is drawn
 /// in `f64`, whose range ends near 2^1024, and the exact values it prints grow from these.
 pub const MAX_FIGURE_NUMBER_BITS: u64 = 1000;
+
+/// The largest degree of the Bernstein figure times the bits in the numerator or denominator of
+/// its `--t`: the printed values `B_i^n(t)` have up to that many bits.
+pub const MAX_BERNSTEIN_BITS: u64 = 4096;
 
 /// The most elevation steps (`--steps`) one figure draws.
 pub const MAX_FIGURE_STEPS: usize = 16;

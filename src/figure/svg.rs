@@ -6,6 +6,7 @@
 //! segments (`L`, `Q`, `C`) from their control points, so the renderer draws the curve itself;
 //! other curves are written through exact samples.
 
+use super::place::{Anchor, Obstacles, Placed, Wanted};
 use crate::error::{Error, Result};
 use crate::point::Point;
 use crate::scalar::Scalar;
@@ -301,6 +302,49 @@ impl Panel {
         Ok(())
     }
 
+    /// Where each label goes (in item order), clear of this panel's lines, points, heading
+    /// and other labels ([`super::place`]).
+    fn place_labels(&self, map: &PanelMap, frame: [f64; 4]) -> Vec<Placed> {
+        let mut obstacles = Obstacles::new(frame);
+        let screen = |q: &[f64; 2]| {
+            let (x, y) = map.to_screen(q[0], q[1]);
+            [x, y]
+        };
+        if !self.heading.is_empty() {
+            let (x, y) = (map.left - SIDE + 16.0, map.top - MARGIN - 4.0);
+            obstacles.boxed(super::place::label_box(&self.heading, x, y, Anchor::Start));
+        }
+        let mut wanted = Vec::new();
+        for it in &self.items {
+            match &it.shape {
+                Shape::Path { pts, closed } => {
+                    let pts: Vec<[f64; 2]> = pts.iter().map(screen).collect();
+                    for w in pts.windows(2) {
+                        obstacles.segment(w[0], w[1]);
+                    }
+                    if *closed && pts.len() > 2 {
+                        obstacles.segment(pts[pts.len() - 1], pts[0]);
+                    }
+                }
+                Shape::Bezier { pts } => {
+                    let flat = super::sample::polynomial(pts, 32);
+                    for w in flat.windows(2) {
+                        obstacles.segment(screen(&w[0]), screen(&w[1]));
+                    }
+                }
+                Shape::Arrow { from, to } => obstacles.segment(screen(from), screen(to)),
+                Shape::Dot { at, radius } => obstacles.dot(screen(at), radius + 1.0),
+                Shape::Label { at, text, dx, dy } => wanted.push(Wanted {
+                    at: screen(at),
+                    dx: *dx,
+                    dy: *dy,
+                    text,
+                }),
+            }
+        }
+        obstacles.place(&wanted)
+    }
+
     fn bounds(&self) -> Option<[f64; 4]> {
         let mut b: Option<[f64; 4]> = None;
         let mut add = |p: &[f64; 2]| {
@@ -445,7 +489,10 @@ impl Figure {
             r##"<text x="16" y="23" font-size="16" font-weight="bold" fill="#222222">{}</text>"##,
             esc(&self.title)
         );
+        let mut y = TITLE_H + layout.panels.iter().fold(0.0f64, |m, p| m.max(p.top - TITLE_H)) + 6.0;
+        y = y.max(h - self.notes.len() as f64 * NOTE_H - 12.0);
         for (panel, map) in self.panels.iter().zip(&layout.panels) {
+            let mut placed = panel.place_labels(map, [2.0, TITLE_H, w - 2.0, y + 4.0]).into_iter();
             let _ = writeln!(s, r#"<g class="panel">"#);
             if !panel.heading.is_empty() {
                 let _ = writeln!(
@@ -457,12 +504,15 @@ impl Figure {
                 );
             }
             for it in &panel.items {
-                write_item(&mut s, it, map)?;
+                let at = if matches!(it.shape, Shape::Label { .. }) {
+                    placed.next()
+                } else {
+                    None
+                };
+                write_item(&mut s, it, map, at)?;
             }
             let _ = writeln!(s, "</g>");
         }
-        let mut y = TITLE_H + layout.panels.iter().fold(0.0f64, |m, p| m.max(p.top - TITLE_H)) + 6.0;
-        y = y.max(h - self.notes.len() as f64 * NOTE_H - 12.0);
         for n in &self.notes {
             y += NOTE_H;
             if let Some(c) = n.swatch {
@@ -484,7 +534,7 @@ impl Figure {
     }
 }
 
-fn write_item(s: &mut String, it: &Item, map: &PanelMap) -> Result<()> {
+fn write_item(s: &mut String, it: &Item, map: &PanelMap, placed: Option<Placed>) -> Result<()> {
     let screen = |q: &[f64; 2]| -> Result<(f64, f64)> {
         let (x, y) = map.to_screen(q[0], q[1]);
         if !x.is_finite() || !y.is_finite() {
@@ -560,8 +610,10 @@ fn write_item(s: &mut String, it: &Item, map: &PanelMap) -> Result<()> {
         }
         Shape::Label { at, text, dx, dy } => {
             let (x, y) = screen(at)?;
-            let (x, y) = (x + dx, y + dy);
-            let anchor = if *dx < 0.0 { "end" } else { "start" };
+            let (x, y, anchor) = match placed {
+                Some(p) => (p.x, p.y, p.anchor.svg()),
+                None => (x + dx, y + dy, if *dx < 0.0 { "end" } else { "start" }),
+            };
             let _ = writeln!(
                 s,
                 r##"<text class="{class}" x="{}" y="{}" text-anchor="{anchor}" fill="{}" stroke="#ffffff" stroke-width="3" paint-order="stroke">{}</text>"##,

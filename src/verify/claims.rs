@@ -595,6 +595,8 @@ pub enum Illustration {
     Fit,
     /// Text 001's family of conic arcs.
     Conics,
+    /// Text 001's parabola in space projected to the plane z = 1.
+    Projection,
 }
 
 /// The fields every claim has.

@@ -1,0 +1,202 @@
+//! Labels as a reader sees them: in every figure `casteljau figure` draws and every figure of
+//! the HTML report, no label's box crosses a drawn line or curve, covers a point marker or
+//! overlaps another label.
+//!
+//! The SVG is read back as text (roxmltree) and checked with its own geometry: a label's box
+//! from its character count at 0.6 em per character (DejaVu Sans's digits and capitals are
+//! 0.6–0.7 em wide, so this is no larger than the glyphs), ascent 0.75 em, descent 0.2 em;
+//! paths from their `d` data, curves flattened.
+
+use casteljau::figure::{FigureKind, FigureRequest};
+use casteljau::html::render_pages;
+use casteljau::verify::claims::load_paths;
+use casteljau::verify::prove_paths;
+use std::path::PathBuf;
+
+type Box2 = [f64; 4];
+/// A point marker: centre and radius.
+type Dot = ([f64; 2], f64);
+
+#[derive(Debug)]
+struct Label {
+    text: String,
+    bounds: Box2,
+}
+
+/// The drawn segments, dots and labels of one `<svg>` element.
+fn read_svg(svg: roxmltree::Node) -> (Vec<Box2>, Vec<Dot>, Vec<Label>) {
+    let font: f64 = svg.attribute("font-size").unwrap_or("13").parse().unwrap();
+    let (mut segments, mut dots, mut labels) = (Vec::new(), Vec::new(), Vec::new());
+    for n in svg.descendants().filter(|n| n.is_element()) {
+        // arrowheads are drawn in <defs> in their own coordinates
+        if n.ancestors().any(|a| a.has_tag_name("defs")) {
+            continue;
+        }
+        match n.tag_name().name() {
+            "path" => segments.extend(path_segments(n.attribute("d").unwrap())),
+            "circle" => {
+                let f = |a: &str| n.attribute(a).unwrap().parse::<f64>().unwrap();
+                dots.push(([f("cx"), f("cy")], f("r")));
+            }
+            "text" if n.attribute("class") == Some("label") => {
+                let text: String = n.text().unwrap_or("").to_string();
+                let f = |a: &str| n.attribute(a).unwrap().parse::<f64>().unwrap();
+                let w = text.chars().count() as f64 * 0.6 * font;
+                let (x, y) = (f("x"), f("y"));
+                let left = match n.attribute("text-anchor").unwrap_or("start") {
+                    "start" => x,
+                    "middle" => x - w / 2.0,
+                    "end" => x - w,
+                    a => panic!("text-anchor {a}"),
+                };
+                labels.push(Label {
+                    text,
+                    bounds: [left, y - 0.75 * font, left + w, y + 0.2 * font],
+                });
+            }
+            _ => {}
+        }
+    }
+    (segments, dots, labels)
+}
+
+/// The straight pieces of a path (`M`, `L`, `Q`, `C`, `Z`; curves as 64 chords).
+fn path_segments(d: &str) -> Vec<Box2> {
+    let tokens: Vec<&str> = d.split_whitespace().collect();
+    let (mut out, mut pos, mut start) = (Vec::new(), [0.0, 0.0], [0.0, 0.0]);
+    let mut k = 0;
+    let num = |k: usize| tokens[k].parse::<f64>().unwrap();
+    while k < tokens.len() {
+        let cmd = tokens[k];
+        k += 1;
+        match cmd {
+            "M" => {
+                pos = [num(k), num(k + 1)];
+                start = pos;
+                k += 2;
+            }
+            "L" => {
+                let to = [num(k), num(k + 1)];
+                out.push([pos[0], pos[1], to[0], to[1]]);
+                pos = to;
+                k += 2;
+            }
+            "Q" | "C" => {
+                let count = if cmd == "Q" { 2 } else { 3 };
+                let mut ctrl = vec![pos];
+                for i in 0..count {
+                    ctrl.push([num(k + 2 * i), num(k + 2 * i + 1)]);
+                }
+                k += 2 * count;
+                let mut prev = pos;
+                for s in 1..=64 {
+                    let t = s as f64 / 64.0;
+                    let mut p = ctrl.clone();
+                    for r in 1..p.len() {
+                        for i in 0..p.len() - r {
+                            p[i] = [
+                                (1.0 - t) * p[i][0] + t * p[i + 1][0],
+                                (1.0 - t) * p[i][1] + t * p[i + 1][1],
+                            ];
+                        }
+                    }
+                    out.push([prev[0], prev[1], p[0][0], p[0][1]]);
+                    prev = p[0];
+                }
+                pos = prev;
+            }
+            "Z" => out.push([pos[0], pos[1], start[0], start[1]]),
+            other => panic!("path command {other} in {d}"),
+        }
+    }
+    out
+}
+
+fn crosses(s: Box2, b: Box2) -> bool {
+    // sampled densely enough for boxes a few pixels high
+    let steps = (((s[2] - s[0]).abs() + (s[3] - s[1]).abs()) / 0.5).ceil().max(1.0) as usize;
+    (0..=steps).any(|i| {
+        let t = i as f64 / steps as f64;
+        let (x, y) = (s[0] + t * (s[2] - s[0]), s[1] + t * (s[3] - s[1]));
+        x > b[0] && x < b[2] && y > b[1] && y < b[3]
+    })
+}
+
+/// Every overlap in one figure, described.
+fn overlaps(svg: roxmltree::Node) -> Vec<String> {
+    let (segments, dots, labels) = read_svg(svg);
+    let mut found = Vec::new();
+    for (i, l) in labels.iter().enumerate() {
+        let b = l.bounds;
+        if segments.iter().any(|&s| crosses(s, b)) {
+            found.push(format!("'{}' crosses a line", l.text));
+        }
+        for (c, r) in &dots {
+            let dx = c[0] - c[0].clamp(b[0], b[2]);
+            let dy = c[1] - c[1].clamp(b[1], b[3]);
+            if dx * dx + dy * dy < r * r {
+                found.push(format!("'{}' covers the point at {c:?}", l.text));
+            }
+        }
+        for m in &labels[i + 1..] {
+            let o = m.bounds;
+            if b[0] < o[2] && o[0] < b[2] && b[1] < o[3] && o[1] < b[3] {
+                found.push(format!("'{}' overlaps '{}'", l.text, m.text));
+            }
+        }
+    }
+    found
+}
+
+#[test]
+fn the_checker_sees_an_overlap() {
+    let svg = r#"<svg xmlns="http://www.w3.org/2000/svg" font-size="13"><path d="M 0 10 L 200 10"/>
+        <text class="label" x="20" y="14">w₁ = 1/2</text><text class="label" x="40" y="40">a</text>
+        <text class="label" x="38" y="42">b</text><circle cx="100" cy="80" r="3"/>
+        <text class="label" x="96" y="84">c</text></svg>"#;
+    let doc = roxmltree::Document::parse(svg).unwrap();
+    let found = overlaps(doc.root_element());
+    assert_eq!(
+        found,
+        [
+            "'w₁ = 1/2' crosses a line",
+            "'a' overlaps 'b'",
+            "'c' covers the point at [100.0, 80.0]"
+        ]
+    );
+}
+
+#[test]
+fn no_label_overlaps_a_line_a_point_or_a_label_in_any_figure() {
+    let mut svgs: Vec<(String, String)> = FigureKind::ALL
+        .into_iter()
+        .map(|k| {
+            let svg = FigureRequest::new(k).figure().unwrap().to_svg().unwrap();
+            (format!("figure {}", k.name()), svg)
+        })
+        .collect();
+    let proofs = vec![PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("proofs")];
+    let report = prove_paths(&proofs, &mut |_, _, _| {}).unwrap();
+    let pages = render_pages(&report, &load_paths(&proofs).unwrap()).unwrap();
+    let mut report_figures = 0;
+    for (name, html) in &pages {
+        let opts = roxmltree::ParsingOptions {
+            allow_dtd: true,
+            ..Default::default()
+        };
+        let doc = roxmltree::Document::parse_with_options(html, opts).unwrap();
+        for svg in doc.descendants().filter(|n| n.has_tag_name("svg")) {
+            report_figures += 1;
+            let id = svg.attribute("id").unwrap_or("?");
+            svgs.push((format!("{name}#{id}"), html[svg.range()].to_string()));
+        }
+    }
+    assert!(report_figures >= 15, "only {report_figures} figures in the report");
+    let mut bad = Vec::new();
+    for (name, svg) in &svgs {
+        let doc = roxmltree::Document::parse(svg).unwrap();
+        bad.extend(overlaps(doc.root_element()).into_iter().map(|o| format!("{name}: {o}")));
+    }
+    assert!(bad.is_empty(), "{} SVGs checked:\n{}", svgs.len(), bad.join("\n"));
+    eprintln!("{} SVGs checked, no overlaps", svgs.len());
+}
