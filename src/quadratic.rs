@@ -57,7 +57,7 @@ enum Field {
 /// read back; `√` is accepted on input too (`3 - 2√2`).
 ///
 /// ```
-/// use casteljau::{QuadraticIrrational, Scalar, BigRational};
+/// use casteljau::{QuadraticIrrational, Ring, Scalar, BigRational};
 /// let r2 = QuadraticIrrational::sqrt(2).unwrap();
 /// let x = QuadraticIrrational::from_i64(3) - &(&QuadraticIrrational::from_i64(2) * &r2);
 /// assert_eq!(x.to_string(), "3 - 2*sqrt(2)");

@@ -10,7 +10,7 @@ use crate::BezierCurve;
 
 /// The curve, the convex hull of its control points (shaded), the point `p` and convex
 /// weights `λ_i` (the certificate `p = Σ λ_i b_i`, `λ_i ≥ 0`, `Σ λ_i = 1`, found as
-/// [`BezierCurve::hull_weights`] finds it but faster, see [`certificate`]), each written
+/// [`BezierCurve::hull_weights`] finds it but faster, by `certificate` in this file), each written
 /// beside its control point; or the statement that `p` lies outside the hull.
 pub fn hull<T: Scalar>(curve: &BezierCurve<T>, p: &Point<T>) -> Result<Figure> {
     super::check_figure_degree(curve.degree())?;

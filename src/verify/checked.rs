@@ -12,7 +12,7 @@ pub enum Verdict {
     /// of degree ≤ d checked exactly at d+1 points).
     Proved,
     /// Every case of the stated finite integer ranges is proved (each case for every value of
-    /// its continuous parameters); the ranges are in [`ClaimOutcome::range`]. Not a proof for
+    /// its continuous parameters); the ranges are in [`super::ClaimOutcome::range`]. Not a proof for
     /// values outside them.
     ProvedInRange,
     /// Bounded evidence (e.g. a limit checked up to some r), saying exactly what was checked.

@@ -32,6 +32,21 @@
 //! assert!(out.certificate.contains("degree ≤ 3 in t"));
 //! ```
 
+// The modules, bottom up: each imports only modules named before it in this list (checked
+// by `tests/layers.rs`).
+//
+// - the data: `expr` (expression trees), `checked` (verdicts, methods, outcomes), `claims`
+//   (the claim file format);
+// - expressions: `alg` (the algebras evaluated in), `poly` (rational functions), `parse`,
+//   `rewrite` (definitions, substitution, `diff`), `eval` (the evaluator), `methods` (library
+//   operations callable in expressions);
+// - hypergeometric terms: `hyper`, `pieces` (zero on every piece of a domain), `ansatz`;
+// - a claim's context: `objects`, `context`, `names`;
+// - provers: `sampling` (degree bounds and exact evaluation), `expansion` (symbolic expansion,
+//   `implies`), `identity` (the identity goal), `translate` and `symbolic` (for every n),
+//   `theorems`, `inequality`;
+// - the kinds and the scope of a verdict: `kinds`, `scope`;
+// - the reports: `argue`, `latex`, `report`.
 mod alg;
 pub mod ansatz;
 mod argue;
@@ -50,6 +65,7 @@ pub mod methods;
 mod names;
 pub mod objects;
 pub mod parse;
+pub mod pieces;
 pub mod poly;
 mod report;
 pub mod rewrite;
@@ -57,6 +73,7 @@ pub mod sampling;
 pub mod scope;
 pub mod symbolic;
 pub mod theorems;
+mod translate;
 
 use crate::error::{Error, Result};
 use std::path::PathBuf;

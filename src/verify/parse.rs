@@ -25,7 +25,7 @@
 //! `Δ^k b_j` of a control polygon). Claim objects are called by name: `b(t)` (a curve),
 //! `b(i, r, t)` (the de Casteljau point `b_i^r(t)`), `b'(t)` (derivative), `b[j]` (a control
 //! point), `x(u, v)` (a surface), `x_u(u, v)`, `x_uv(u, v)`, … (its partials: `u` by the
-//! first argument, `v` by the second; see [`split_partial`]).
+//! first argument, `v` by the second; see [`super::rewrite::split_partial`]).
 
 use super::claims::IntRange;
 use super::expr::*;
@@ -115,7 +115,7 @@ struct Parser<'a> {
 /// symbols, definitions) so that they are not split into one-letter variables.
 ///
 /// ```
-/// use casteljau::verify::expr::parse;
+/// use casteljau::verify::parse::parse;
 /// let e = parse("4x^2 + 3y^2 - 10y + 3", &[]).unwrap();
 /// assert_eq!(e.to_string(), "4*x^2 + 3*y^2 - 10*y + 3");
 /// assert!(parse("(1 + t", &[]).is_err());

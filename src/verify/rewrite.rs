@@ -495,7 +495,7 @@ fn derive_call(e: &Expr, name: &str, args: &[Expr], var: &str) -> Result<Expr> {
 /// after the last `_`; `None` for any other name.
 ///
 /// ```
-/// use casteljau::verify::expr::split_partial;
+/// use casteljau::verify::rewrite::split_partial;
 /// assert_eq!(split_partial("x_uvu"), Some(("x", 2, 1)));
 /// assert_eq!(split_partial("x"), None);
 /// assert_eq!(split_partial("x_w"), None);

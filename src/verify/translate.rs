@@ -1,0 +1,766 @@
+//! Translation of expressions into sums of hypergeometric terms over symbolic integers
+//! (sums with symbolic bounds evaluated by their WZ certificates or by induction from a
+//! closed form), for the symbolic route of [`super::symbolic`].
+
+use super::claims::{Decls, IntRange};
+use super::context::Ctx;
+use super::eval::Alg;
+use super::expr::{self, Expr, Op};
+use super::hyper::{lin_mul, lin_neg, lin_subst, power_of, Aff, Lin, Symbols, Term};
+use super::pieces::{prove_zero, Domain, ZeroOutcome};
+use super::poly::RatFunc;
+use super::{parse, rewrite};
+use crate::error::{Error, Result};
+use num_traits::Zero;
+
+/// The name of the symbolic index of the unit control polygon.
+pub(crate) const UNIT: &str = "__j";
+
+fn sum_vars(e: &Expr, out: &mut Vec<String>) {
+    match e {
+        Expr::Sum(v, a, b, body) => {
+            if !out.contains(v) {
+                out.push(v.clone());
+            }
+            sum_vars(a, out);
+            sum_vars(b, out);
+            sum_vars(body, out);
+        }
+        Expr::Neg(a) | Expr::Fact(a) => sum_vars(a, out),
+        Expr::Bin(_, a, b) => {
+            sum_vars(a, out);
+            sum_vars(b, out);
+        }
+        Expr::Call(_, args) | Expr::Index(_, args) | Expr::Tuple(args) => {
+            for a in args {
+                sum_vars(a, out);
+            }
+        }
+        Expr::Matrix(rows) => {
+            for r in rows {
+                for a in r {
+                    sum_vars(a, out);
+                }
+            }
+        }
+        Expr::Num(_) | Expr::Var(_) => {}
+    }
+}
+
+/// Translates expressions into sums of hypergeometric terms, evaluating symbolic sums by their
+/// certificates.
+pub struct Translator<'a> {
+    sym: &'a Symbols,
+    /// The symbolic polygon's name and degree.
+    pub(crate) polygon: Option<(String, Aff)>,
+    /// Whether control points are the unit polygon at [`UNIT`] (else the zero polygon).
+    pub(crate) unit: bool,
+    certs: &'a [Expr],
+    pub(crate) next_cert: usize,
+    /// The proof's log.
+    pub log: Vec<String>,
+    /// The certificates used, for the one-line summary.
+    pub used: Vec<String>,
+}
+
+impl<'a> Translator<'a> {
+    /// A translator for the zero polygon (or none), with the claim's certificates.
+    pub(crate) fn new(sym: &'a Symbols, certs: &'a [Expr]) -> Self {
+        Translator {
+            sym,
+            polygon: None,
+            unit: false,
+            certs,
+            next_cert: 0,
+            log: Vec::new(),
+            used: Vec::new(),
+        }
+    }
+}
+
+fn is_scalar(t: &Term) -> bool {
+    t.facts.is_empty()
+        && t.pows.is_empty()
+        && t.support.is_empty()
+        && t.deltas.is_empty()
+        && t.defined.is_empty()
+        && t.nonzero.is_empty()
+        && t.bdeg == 0
+}
+
+impl<'a> Translator<'a> {
+    fn scalar_of(&self, l: &[Term], what: &Expr) -> Result<RatFunc> {
+        let mut out = RatFunc::from_int(0);
+        for t in l {
+            if !is_scalar(t) {
+                return Err(Error::Domain(format!(
+                    "'{what}' must be a polynomial or rational function here (an index, exponent or argument)"
+                )));
+            }
+            out = out.add(&t.coef);
+        }
+        Ok(out)
+    }
+
+    /// An integer expression affine in the integer symbols.
+    fn aff(&mut self, e: &Expr) -> Result<Aff> {
+        let l = self.lin(e, &Domain::default())?;
+        let r = self.scalar_of(&l, e)?;
+        self.sym.rf_to_aff(&r).ok_or_else(|| {
+            Error::Domain(format!(
+                "'{e}' is not affine in the integer symbols with integer coefficients"
+            ))
+        })
+    }
+
+    /// A polynomial in the continuous parameters only.
+    fn cont_poly(&mut self, e: &Expr) -> Result<RatFunc> {
+        let l = self.lin(e, &Domain::default())?;
+        let r = self.scalar_of(&l, e)?;
+        if self.sym.poly_has_ints(&r.num) || self.sym.poly_has_ints(&r.den) {
+            return Err(Error::Domain(format!(
+                "'{e}' involves an integer symbol where only the continuous parameters may occur"
+            )));
+        }
+        Ok(r)
+    }
+
+    /// A polynomial (constant denominator folded in) in the continuous parameters only.
+    fn cont_polynomial(&mut self, arg: &Expr, whole: &Expr) -> Result<RatFunc> {
+        let g = self.cont_poly(arg)?;
+        let Some(c) = g.den.as_constant() else {
+            return Err(Error::Domain(format!("'{whole}': the argument must be a polynomial")));
+        };
+        RatFunc::poly(g.num.clone()).div(&RatFunc::from_rat(&c))
+    }
+
+    fn powers(&mut self, base: &Expr, e: &Aff) -> Result<Term> {
+        let r = self.cont_poly(base)?;
+        let mut t = Term::scalar(RatFunc::from_int(1));
+        t.pows = power_of(self.sym, &r.num, e)?;
+        if r.den.as_constant().is_none() {
+            t.pows.extend(power_of(self.sym, &r.den, &e.scaled(-1))?);
+        } else if let Some(c) = r.den.as_constant() {
+            if c.is_zero() {
+                return Err(Error::DivisionByZero(format!("'{base}'")));
+            }
+            let inv = super::hyper::Base::Const(num_rational::BigRational::from_integer(1.into()) / c);
+            if inv != super::hyper::Base::Const(num_rational::BigRational::from_integer(1.into())) {
+                t.pows.push((inv, e.clone()));
+            }
+        }
+        Ok(t)
+    }
+
+    fn binom(&self, a: &Aff, b: &Aff) -> Term {
+        let mut t = Term::scalar(RatFunc::from_int(1));
+        // Zero outside 0 ≤ b ≤ a by the reciprocal factorials alone (1/m! = 0 for m < 0; then
+        // a = b + (a − b) ≥ 0 wherever the term lives), so a certificate times it keeps the
+        // boundary values of the shifted factorials rather than the support of C(a, b).
+        t.facts = vec![(a.clone(), 1), (b.clone(), -1), (a.minus(b), -1)];
+        t
+    }
+
+    /// The reciprocal of a divisor, as one term.
+    fn recip(&mut self, e: &Expr, d: &Domain) -> Result<Term> {
+        match e {
+            Expr::Bin(Op::Mul, a, b) => self.recip(a, d)?.times(&self.recip(b, d)?),
+            Expr::Bin(Op::Div, a, b) => {
+                let r = self.recip(a, d)?;
+                let l = self.lin(b, d)?;
+                match l.as_slice() {
+                    [t] => r.times(t),
+                    _ => {
+                        let s = self.scalar_of(&l, b)?;
+                        r.times(&Term::scalar(s))
+                    }
+                }
+            }
+            Expr::Neg(a) => {
+                let mut r = self.recip(a, d)?;
+                r.coef = r.coef.neg();
+                Ok(r)
+            }
+            _ => {
+                let l = self.lin(e, d)?;
+                if let [t] = l.as_slice() {
+                    if !is_scalar(t) {
+                        return t.recip(self.sym);
+                    }
+                }
+                let s = self.scalar_of(&l, e)?;
+                if s.num.is_zero() {
+                    return Err(Error::DivisionByZero(format!("division by '{e}' = 0")));
+                }
+                let has_ints = self.sym.poly_has_ints(&s.num);
+                let mut t = Term::scalar(RatFunc {
+                    num: s.den.clone(),
+                    den: s.num.clone(),
+                });
+                if has_ints {
+                    let a = self
+                        .sym
+                        .rf_to_aff(&RatFunc::poly(s.num.clone()))
+                        .filter(|_| !self.sym.poly_has_conts(&s.num))
+                        .ok_or_else(|| {
+                            Error::Domain(format!(
+                                "the divisor '{e}' involves the integer symbols but is not affine in them (write it as a product)"
+                            ))
+                        })?;
+                    t.nonzero.push(a);
+                }
+                Ok(t)
+            }
+        }
+    }
+
+    /// The expression as a finite sum of terms, on the domain `d` (which symbolic sums need).
+    pub fn lin(&mut self, e: &Expr, d: &Domain) -> Result<Lin> {
+        self.lin_hint(e, d, None)
+    }
+
+    pub(crate) fn lin_hint(&mut self, e: &Expr, d: &Domain, hint: Option<Lin>) -> Result<Lin> {
+        let scalar = |r: RatFunc| vec![Term::scalar(r)];
+        Ok(match e {
+            Expr::Num(r) => scalar(RatFunc::from_rat(r)),
+            Expr::Var(v) => {
+                if self.sym.index(v).is_none() {
+                    return Err(Error::Domain(format!("unknown name '{v}' in a symbolic claim")));
+                }
+                scalar(self.sym.var(v))
+            }
+            Expr::Neg(a) => lin_neg(&self.lin(a, d)?),
+            Expr::Bin(Op::Add, a, b) => {
+                let mut l = self.lin(a, d)?;
+                l.extend(self.lin(b, d)?);
+                l
+            }
+            Expr::Bin(Op::Sub, a, b) => {
+                let mut l = self.lin(a, d)?;
+                l.extend(lin_neg(&self.lin(b, d)?));
+                l
+            }
+            Expr::Bin(Op::Mul, a, b) => lin_mul(&self.lin(a, d)?, &self.lin(b, d)?)?,
+            Expr::Bin(Op::Div, a, b) => {
+                let r = self.recip(b, d)?;
+                lin_mul(&self.lin(a, d)?, &[r])?
+            }
+            Expr::Bin(Op::Pow, a, k) => {
+                if let Ok(c) = expr::eval_int(k, &Default::default()) {
+                    if !(-64..=64).contains(&c) {
+                        let r = self.cont_poly(a)?;
+                        return Ok(scalar(r.pow(c)?));
+                    }
+                    let unit = if c >= 0 {
+                        self.lin(a, d)?
+                    } else {
+                        vec![self.recip(a, d)?]
+                    };
+                    let mut acc = scalar(RatFunc::from_int(1));
+                    for _ in 0..c.abs() {
+                        acc = lin_mul(&acc, &unit)?;
+                    }
+                    acc
+                } else {
+                    let ex = self.aff(k)?;
+                    vec![self.powers(a, &ex)?]
+                }
+            }
+            Expr::Fact(a) => {
+                let mut t = Term::scalar(RatFunc::from_int(1));
+                let a = self.aff(a)?;
+                t.defined.push(a.clone());
+                t.facts.push((a, 1));
+                vec![t]
+            }
+            Expr::Call(name, args) => self.call(e, name, args, d)?,
+            Expr::Sum(v, a, b, body) => self.sum(v, a, b, body, d, hint)?,
+            Expr::Index(name, args) => {
+                let Some((pname, deg)) = self.polygon.clone() else {
+                    return Err(Error::Domain(format!("'{e}': no symbolic polygon named {name}")));
+                };
+                if *name != pname || args.len() != 1 {
+                    return Err(Error::Domain(format!(
+                        "'{e}' is not a control point of the polygon {pname}"
+                    )));
+                }
+                if !self.unit {
+                    return Ok(Vec::new());
+                }
+                let at = self.aff(&args[0])?;
+                let mut t = Term::scalar(RatFunc::from_int(1));
+                t.deltas.push(at.minus(&Aff::var(UNIT)));
+                t.support = vec![at.clone(), deg.minus(&at)];
+                t.bdeg = 1;
+                vec![t]
+            }
+            _ => {
+                return Err(Error::Domain(format!(
+                    "'{e}' is not supported for symbolic integers (vectors, matrices)"
+                )))
+            }
+        })
+    }
+
+    fn call(&mut self, e: &Expr, name: &str, args: &[Expr], d: &Domain) -> Result<Lin> {
+        let one = || RatFunc::from_int(1);
+        match (name, args.len()) {
+            ("B", 3) => {
+                let (i, n) = (self.aff(&args[0])?, self.aff(&args[1])?);
+                let g = self.cont_polynomial(&args[2], e)?;
+                let mut t = self.binom(&n, &i);
+                t.pows = power_of(self.sym, &g.num, &i)?;
+                t.pows.extend(power_of(self.sym, &one().sub(&g).num, &n.minus(&i))?);
+                Ok(vec![t])
+            }
+            ("C" | "binom", 2) => {
+                let (a, b) = (self.aff(&args[0])?, self.aff(&args[1])?);
+                Ok(vec![self.binom(&a, &b)])
+            }
+            ("__dB", 4) if expr::eval_int(&args[3], &Default::default()) == Ok(1) => {
+                // d/dg [C(n,i) g^i (1−g)^(n−i)] = C(n,i) (i g^(i−1) (1−g)^(n−i) − (n−i) g^i (1−g)^(n−i−1)),
+                // the product rule for rational functions (integer exponents).
+                let (i, n) = (self.aff(&args[0])?, self.aff(&args[1])?);
+                let g = self.cont_polynomial(&args[2], e)?;
+                let h = one().sub(&g);
+                let mk = |s: &Self, ei: &Aff, eh: &Aff, c: RatFunc| -> Result<Term> {
+                    let mut t = s.binom(&n, &i);
+                    t.coef = c;
+                    t.pows = power_of(s.sym, &g.num, ei)?;
+                    t.pows.extend(power_of(s.sym, &h.num, eh)?);
+                    Ok(t)
+                };
+                let a = mk(self, &i.shifted(-1), &n.minus(&i), i.to_rf(self.sym))?;
+                let b = mk(self, &i, &n.minus(&i).shifted(-1), n.minus(&i).to_rf(self.sym).neg())?;
+                Ok(vec![a, b])
+            }
+            ("__dpow", 3) if expr::eval_int(&args[2], &Default::default()) == Ok(1) => {
+                // d/dg g^e = e g^(e−1).
+                let ex = self.aff(&args[1])?;
+                let mut t = if ex.is_const() {
+                    let p = Expr::pow(args[0].clone(), Expr::int(ex.c - 1));
+                    return lin_mul(&self.lin(&p, d)?, &[Term::scalar(RatFunc::from_int(ex.c))]);
+                } else {
+                    self.powers(&args[0], &ex.shifted(-1))?
+                };
+                t.coef = ex.to_rf(self.sym);
+                Ok(vec![t])
+            }
+            _ => Err(Error::Domain(format!(
+                "'{e}' is not supported for symbolic integers (only B, C, sums, powers, factorials, diff and control points b[j])"
+            ))),
+        }
+    }
+
+    fn sum(&mut self, v: &str, a: &Expr, b: &Expr, body: &Expr, d: &Domain, hint: Option<Lin>) -> Result<Lin> {
+        if d.cons.iter().any(|c| c.coef(v) != 0) {
+            return Err(Error::Domain(format!("the summation variable {v} is already in use")));
+        }
+        let (av, bv) = (self.aff(a)?, self.aff(b)?);
+        let dk = d.with(Aff::var(v).minus(&av)).with(bv.minus(&Aff::var(v)));
+        let body = self.lin(body, &dk)?;
+        let mut resolved = Vec::new();
+        let mut rest = Vec::new();
+        for mut t in body {
+            if let Some(pos) = t.deltas.iter().position(|x| x.coef(v).abs() == 1) {
+                let delta = t.deltas.remove(pos);
+                let k = delta.coef(v);
+                let mut other = delta.clone();
+                other.v.remove(v);
+                let at = other.scaled(-k);
+                let mut s = t.subst(self.sym, v, &at);
+                s.support.push(at.minus(&av));
+                s.support.push(bv.minus(&at));
+                resolved.push(s);
+            } else {
+                rest.push(t);
+            }
+        }
+        if rest.is_empty() {
+            return Ok(resolved);
+        }
+        let width = bv.minus(&av);
+        if width.is_const() {
+            if width.c > 10_000 {
+                return Err(Error::TooLarge {
+                    what: "terms of a sum with constant bounds",
+                    value: width.c.to_string(),
+                    limit: "10000".into(),
+                });
+            }
+            for m in 0..=width.c {
+                resolved.extend(lin_subst(self.sym, &rest, v, &av.shifted(m)));
+            }
+            return Ok(resolved);
+        }
+        let hint = hint.map(|h| {
+            let mut h = h;
+            h.extend(lin_neg(&resolved));
+            h
+        });
+        let closed = self.wz(v, &av, &bv, rest, d, hint)?;
+        resolved.extend(closed);
+        Ok(resolved)
+    }
+
+    /// Evaluates `Σ_{k=a}^{b} F` by a WZ certificate (see the module documentation); returns
+    /// its value (`hint` when given, else the value at the least `n`).
+    fn wz(&mut self, k: &str, a: &Aff, b: &Aff, f: Lin, d: &Domain, hint: Option<Lin>) -> Result<Lin> {
+        let sym = self.sym;
+        let what = format!("Σ_{{{k}={a}}}^{{{b}}}");
+        // The induction variable: coefficient 1 in the upper bound, bounded below only.
+        let n = b
+            .v
+            .iter()
+            .filter(|(x, c)| **c == 1 && a.coef(x) == 0)
+            .map(|(x, _)| x.clone())
+            .find(|x| {
+                d.cons.iter().all(|c| c.coef(x) >= 0)
+                    && d.cons.iter().filter(|c| c.coef(x) != 0).count() == 1
+                    && d.cons.iter().any(|c| c.coef(x) == 1)
+            })
+            .ok_or_else(|| {
+                Error::Domain(format!(
+                    "{what}: the upper bound must be m + c for an integer symbol m with only a lower bound (an open range), and the lower bound must not depend on it"
+                ))
+            })?;
+        let low = d.cons.iter().find(|c| c.coef(&n) == 1).expect("found above");
+        let n0 = low.minus(&Aff::var(&n)).scaled(-1);
+        let rest = Domain {
+            cons: d.cons.iter().filter(|c| c.coef(&n) == 0).cloned().collect(),
+        };
+        if !d.implies_ge(&b.minus(a).shifted(1)) {
+            return Err(Error::Domain(format!("{what}: cannot show b − a ≥ −1 on {}", d.show())));
+        }
+        // Normalise by a one-term value depending on n. Where that term's coefficient
+        // vanishes the quotient means nothing: those values of n are checked directly, and the
+        // induction starts past them.
+        let mut n0 = n0;
+        let mut d_ind = d.clone();
+        let mut direct = String::new();
+        let (f, rhs, value) = match hint {
+            Some(h) if h.len() == 1 && h[0].mentions(sym, &n) => {
+                let start = induction_start(sym, &h[0], &n, &n0, &what)?;
+                for m in 0..start.minus(&n0).c {
+                    let at = n0.shifted(m);
+                    let mut case = base_case_terms(sym, &f, (k, a, b), (&n, &at), &what)?;
+                    case.extend(lin_neg(&lin_subst(sym, &h, &n, &at)));
+                    self.expect_zero(
+                        &case,
+                        &rest,
+                        &format!("{what}: the case {n} = {at}, where the closed form's coefficient vanishes (checked directly)"),
+                    )?;
+                }
+                if start != n0 {
+                    direct = format!("; {n} = {n0}..={} checked directly", start.shifted(-1));
+                    d_ind = rest.with(Aff::var(&n).minus(&start));
+                    n0 = start;
+                }
+                let r = h[0].recip(sym)?;
+                (lin_mul(&f, &[r])?, vec![Term::scalar(RatFunc::from_int(1))], Some(h))
+            }
+            Some(h) => (f, h.clone(), Some(h)),
+            None => {
+                let base = base_case_terms(sym, &f, (k, a, b), (&n, &n0), &what)?;
+                (f, base, None)
+            }
+        };
+        let (cert, found) = match self.certs.get(self.next_cert).cloned() {
+            Some(c) => {
+                self.next_cert += 1;
+                (c, false)
+            }
+            None => match f.as_slice() {
+                [single] => (
+                    super::ansatz::find(sym, single, &n, k).map_err(|e| Error::Domain(format!("{what}: {e}")))?,
+                    true,
+                ),
+                _ => {
+                    return Err(Error::Domain(format!(
+                        "{what}: a sum with a symbolic bound needs a WZ certificate R (certificate = [\"R\"], one per such sum, innermost first); none is searched for a summand of {} terms",
+                        f.len()
+                    )))
+                }
+            },
+        };
+        let cert_note = if found {
+            " (found by the ansatz search, then checked)"
+        } else {
+            ""
+        };
+        let g = self.times_certificate(&cert, &f)?;
+        self.used.push(format!(
+            "{what} (induction on {n} ≥ {n0}{direct}): R = {cert}{cert_note}"
+        ));
+        self.log.push(format!(
+            "{what} by induction on {n} ≥ {n0}: F = {}; certificate R = {cert}, G = R·F = {}",
+            show(&f),
+            show(&g)
+        ));
+        let n1 = Aff::var(&n).shifted(1);
+        let k1 = Aff::var(k).shifted(1);
+        // 1. The WZ equation on a ≤ k ≤ b.
+        let mut wzeq = lin_subst(sym, &f, &n, &n1);
+        wzeq.extend(lin_neg(&f));
+        wzeq.extend(lin_neg(&lin_subst(sym, &g, k, &k1)));
+        wzeq.extend(g.iter().cloned());
+        let dk = d_ind.with(Aff::var(k).minus(a)).with(b.minus(&Aff::var(k)));
+        self.expect_zero(
+            &wzeq,
+            &dk,
+            &format!("{what}: F({n}+1, {k}) − F({n}, {k}) = G({n}, {k}+1) − G({n}, {k})"),
+        )?;
+        // 2. The ends.
+        let mut ends = lin_subst(sym, &g, k, &b.shifted(1));
+        ends.extend(lin_neg(&lin_subst(sym, &g, k, a)));
+        // F(n+1, b(n)+1): shift n first, then put k = b(n) + 1 (which is written in the old n).
+        ends.extend(lin_subst(sym, &lin_subst(sym, &f, &n, &n1), k, &b.shifted(1)));
+        ends.extend(lin_neg(&lin_subst(sym, &rhs, &n, &n1)));
+        ends.extend(rhs.iter().cloned());
+        self.expect_zero(
+            &ends,
+            &d_ind,
+            &format!("{what}: G({n}, {b}+1) − G({n}, {a}) + F({n}+1, {b}+1) = rhs({n}+1) − rhs({n})"),
+        )?;
+        // 3. The base case.
+        if value.is_some() {
+            let mut base = base_case_terms(sym, &f, (k, a, b), (&n, &n0), &what)?;
+            base.extend(lin_neg(&lin_subst(sym, &rhs, &n, &n0)));
+            self.expect_zero(&base, &rest, &format!("{what}: the base case {n} = {n0}"))?;
+        } else {
+            self.log
+                .push(format!("{what}: its value is its value at {n} = {n0}: {}", show(&rhs)));
+        }
+        Ok(value.unwrap_or(rhs))
+    }
+
+    pub(crate) fn expect_zero(&mut self, lin: &[Term], d: &Domain, what: &str) -> Result<()> {
+        let mut log = Vec::new();
+        match prove_zero(self.sym, lin, d, &mut log)? {
+            ZeroOutcome::Zero(pieces) => {
+                self.log.push(format!(
+                    "{what}: proved on {} ({pieces} piece{})",
+                    d.show(),
+                    if pieces == 1 { "" } else { "s" }
+                ));
+                self.log.extend(log.into_iter().map(|l| format!("  {l}")));
+                Ok(())
+            }
+            ZeroOutcome::NonZero { region, residue } => Err(Error::Domain(format!(
+                "{what} does not hold as an identity on {region}: {residue}"
+            ))),
+        }
+    }
+
+    /// `G = R · F`, the factors of `R` affine in the integers cancelled against factorials.
+    fn times_certificate(&mut self, r: &Expr, f: &[Term]) -> Result<Lin> {
+        let mut factors = Vec::new();
+        flatten(r, true, &mut factors)?;
+        let mut out: Lin = f.to_vec();
+        for (fac, up) in factors {
+            let l = self.lin(&fac, &Domain::default())?;
+            let s = self.scalar_of(&l, &fac)?;
+            let aff = self
+                .sym
+                .rf_to_aff(&s)
+                .filter(|a| !a.is_const() && !self.sym.poly_has_conts(&s.num));
+            for t in &mut out {
+                match &aff {
+                    Some(a) => cancel(t, a, up, self.sym),
+                    None if up => t.coef = t.coef.mul(&s),
+                    None => {
+                        if self.sym.poly_has_ints(&s.num) {
+                            return Err(Error::Domain(format!(
+                                "the certificate's divisor '{fac}' involves the integers but is not affine in them"
+                            )));
+                        }
+                        t.coef = t.coef.div(&s)?;
+                    }
+                }
+            }
+        }
+        Ok(out)
+    }
+}
+
+fn flatten(e: &Expr, up: bool, out: &mut Vec<(Expr, bool)>) -> Result<()> {
+    match e {
+        Expr::Bin(Op::Mul, a, b) => {
+            flatten(a, up, out)?;
+            flatten(b, up, out)
+        }
+        Expr::Bin(Op::Div, a, b) => {
+            flatten(a, up, out)?;
+            flatten(b, !up, out)
+        }
+        Expr::Neg(a) => {
+            out.push((Expr::int(-1), up));
+            flatten(a, up, out)
+        }
+        Expr::Bin(Op::Pow, a, k) if expr::eval_int(k, &Default::default()).is_ok_and(|c| c.abs() <= 64) => {
+            let c = expr::eval_int(k, &Default::default())?;
+            for _ in 0..c.abs() {
+                flatten(a, up == (c > 0), out)?;
+            }
+            Ok(())
+        }
+        _ => {
+            out.push((e.clone(), up));
+            Ok(())
+        }
+    }
+}
+
+/// Multiplies (`up`) or divides the term by the affine factor `a`, cancelling against a
+/// factorial when one fits: `a / a! = 1/(a−1)!`, `a · (a−1)! = a!`, `1/(a · (a−1)!) = 1/a!`,
+/// `a!/a = (a−1)!`.
+fn cancel(t: &mut Term, a: &Aff, up: bool, sym: &Symbols) {
+    let find = |t: &Term, arg: &Aff, e: i8| t.facts.iter().position(|(x, s)| x == arg && *s == e);
+    if up {
+        if let Some(p) = find(t, a, -1) {
+            t.facts[p].0 = a.shifted(-1);
+        } else if let Some(p) = find(t, &a.shifted(-1), 1) {
+            t.facts[p].0 = a.clone();
+        } else {
+            t.coef = t.coef.mul(&a.to_rf(sym));
+        }
+    } else if let Some(p) = find(t, &a.shifted(-1), -1) {
+        t.facts[p].0 = a.clone();
+    } else if let Some(p) = find(t, a, 1) {
+        t.facts[p].0 = a.shifted(-1);
+    } else {
+        t.coef = RatFunc {
+            num: t.coef.num.clone(),
+            den: t.coef.den.mul(&a.to_rf(sym).num),
+        };
+        t.nonzero.push(a.clone());
+    }
+}
+
+fn show(l: &[Term]) -> String {
+    if l.is_empty() {
+        return "0".into();
+    }
+    l.iter().map(Term::show).collect::<Vec<_>>().join(" + ")
+}
+
+/// The certificates, the symbol list (integers: ranges, summation variables, the unit index)
+/// and the continuous parameters of a claim with open ranges.
+pub(crate) fn prepare(
+    certificates: &[String],
+    ctx: &Ctx<'_>,
+    sides: &[Expr],
+) -> Result<(Vec<Expr>, Symbols, Vec<String>)> {
+    let rs = &ctx.decls.ranges;
+    let certs: Vec<Expr> = certificates
+        .iter()
+        .map(|c| parse::parse(c, &ctx.known).and_then(|e| rewrite::expand(&e, &ctx.defs)))
+        .collect::<Result<_>>()?;
+    let refs: Vec<&Expr> = sides.iter().chain(&certs).collect();
+    let mut ints: Vec<String> = rs.iter().map(|r| r.var.clone()).collect();
+    for e in &refs {
+        let mut found = Vec::new();
+        sum_vars(e, &mut found);
+        for v in found {
+            if ints.contains(&v) {
+                if rs.iter().any(|r| r.var == v) {
+                    return Err(Error::Domain(format!(
+                        "the summation variable {v} shadows a range variable"
+                    )));
+                }
+            } else {
+                ints.push(v);
+            }
+        }
+    }
+    if ctx.decls.polygon.is_some() {
+        ints.push(UNIT.into());
+    }
+    let conts: Vec<String> = ctx
+        .params(&refs[..sides.len()])
+        .into_iter()
+        .filter(|v| !ints.contains(v))
+        .collect();
+    let sym = Symbols::new(&ints, &conts);
+    Ok((certs, sym, conts))
+}
+
+impl Translator<'_> {
+    /// The domain of the ranges (and records the polygon).
+    pub(crate) fn domain(&mut self, decls: &Decls, rs: &[IntRange]) -> Result<Domain> {
+        let mut dom = Domain::default();
+        for r in rs {
+            let v = Aff::var(&r.var);
+            let from = self.aff(&parse::parse(&r.from, &[])?)?;
+            dom = dom.with(v.minus(&from));
+            if let Some(to) = &r.to {
+                let to = self.aff(&parse::parse(to, &[])?)?;
+                dom = dom.with(to.minus(&v));
+            }
+        }
+        if let Some(p) = &decls.polygon {
+            let deg = self.aff(&parse::parse(&p.degree, &[])?)?;
+            self.polygon = Some((p.name.clone(), deg));
+        }
+        Ok(dom)
+    }
+}
+
+/// The first `n ≥ n0` past every integer zero (in `n`) of the coefficient of the closed-form
+/// term `h`, so that dividing by `h` is defined for the whole induction; at most
+/// [`MAX_DIRECT_CASES`] values past `n0`.
+fn induction_start(sym: &Symbols, h: &Term, n: &str, n0: &Aff, what: &str) -> Result<Aff> {
+    let mut start = n0.clone();
+    for z in sym.integer_zeros(&h.coef.num)? {
+        let c = z.coef(n);
+        if c == 0 {
+            continue;
+        }
+        let moving = z.v.keys().any(|x| x != n);
+        if moving || !n0.is_const() {
+            return Err(Error::Domain(format!(
+                "{what}: the closed form's coefficient vanishes where {z} = 0, which moves with the other symbols: the induction cannot start past it"
+            )));
+        }
+        if z.c % c != 0 {
+            continue;
+        }
+        let root = -z.c / c;
+        if root >= start.c {
+            start = Aff::constant(root + 1);
+        }
+    }
+    if start.minus(n0).c > MAX_DIRECT_CASES {
+        return Err(Error::Domain(format!(
+            "{what}: the closed form's coefficient vanishes at {n} = {}, more than {MAX_DIRECT_CASES} values past {n0}",
+            start.c - 1
+        )));
+    }
+    Ok(start)
+}
+
+/// How many values of the induction variable may be checked directly before an induction.
+const MAX_DIRECT_CASES: i64 = 64;
+
+/// The terms of `Σ_{k=a}^{b} F` at the base case `n = n0`, where the sum must have a fixed
+/// number of terms (at most 10 001).
+fn base_case_terms(
+    sym: &Symbols,
+    f: &[Term],
+    (k, a, b): (&str, &Aff, &Aff),
+    (n, n0): (&str, &Aff),
+    what: &str,
+) -> Result<Lin> {
+    let width = b.subst(n, n0).minus(a);
+    if !width.is_const() || width.c < -1 || width.c > 10_000 {
+        return Err(Error::Domain(format!(
+            "{what}: at {n} = {n0} the sum does not have a fixed number of terms"
+        )));
+    }
+    let at0 = lin_subst(sym, f, n, n0);
+    let mut base = Vec::new();
+    for m in 0..=width.c {
+        base.extend(lin_subst(sym, &at0, k, &a.shifted(m)));
+    }
+    Ok(base)
+}
