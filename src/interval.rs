@@ -21,10 +21,11 @@
 //! assert!(x.lo() < x.hi() && x.hi() - x.lo() < 1e-15);
 //! ```
 
+use crate::conic::{classify_conic, ConicKind};
 use crate::error::{Error, Result};
 use crate::float::{nearest_f64, next_down, next_up, two_product, two_sum, ulp_exponent_f64};
 use crate::point::Point;
-use crate::rational::{classify_conic, ConicKind, RationalBezierCurve};
+use crate::rational::RationalBezierCurve;
 use crate::scalar::{forward_ring_ops, Ring, Scalar};
 use num_bigint::BigInt;
 use num_rational::BigRational;

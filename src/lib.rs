@@ -37,6 +37,7 @@
 #![warn(missing_docs)]
 
 mod bernstein;
+mod conic;
 mod curve;
 mod error;
 pub mod exact;
@@ -50,6 +51,7 @@ mod hull;
 mod input;
 mod interval;
 mod kernel;
+mod least_squares;
 pub mod linalg;
 #[cfg(feature = "oracle")]
 pub mod oracle;
@@ -85,21 +87,23 @@ pub use scalar::{format_exact, parse_exact, RefOps, Ring, Scalar, MAX_DECIMAL_EX
 pub use space::{Point2, Point3, PointN, VectorSpace};
 
 // --- rational curves, conics, quadratic irrationals
-pub use quadratic::{QuadraticIrrational, MAX_RADICAND};
-pub use rational::{
-    classify_conic, conic_arc_passes_infinity, conic_shape_factor, implicit_conic, ConicKind, ExactSqrt, ImplicitConic,
-    RationalBezierCurve,
+pub use conic::{
+    classify_conic, conic_arc_passes_infinity, conic_shape_factor, implicit_conic, ConicKind, ImplicitConic,
 };
+pub use quadratic::{QuadraticIrrational, MAX_RADICAND};
+pub use rational::{ExactSqrt, RationalBezierCurve};
 
 // --- surfaces
 pub use surface::{enneper_net, enneper_power, BezierSurface, EnneperMatch};
 
 // --- fitting
 pub use fit::{
-    centripetal_params, chord_length_params, chord_length_params_via_f64, cubic_with_tangent_lengths, delta_squared,
-    delta_squared_gradient, fit_cubic, fit_cubic_closed_form, fit_cubic_to, fit_least_squares, least_squares_gradient,
-    least_squares_residual, uniform_params, CubicFit, CubicFitData, CubicFitSource, FitConstraints, LeastSquaresFit,
-    MAX_FIT_DEGREE,
+    cubic_with_tangent_lengths, delta_squared, delta_squared_gradient, fit_cubic, fit_cubic_closed_form, fit_cubic_to,
+    CubicFit, CubicFitData, CubicFitSource,
+};
+pub use least_squares::{
+    centripetal_params, chord_length_params, chord_length_params_via_f64, fit_least_squares, least_squares_gradient,
+    least_squares_residual, uniform_params, FitConstraints, LeastSquaresFit, MAX_FIT_DEGREE,
 };
 
 // --- judging floats: interval enclosures, filtered predicates, a float with its exact shadow

@@ -2,9 +2,10 @@
 
 use super::svg::{indexed, Figure, Panel, Style, POLYGON};
 use super::{planar, AnyCurve};
+use crate::conic::{classify_conic, conic_arc_passes_infinity, ConicKind};
 use crate::error::{Error, Result};
 use crate::point::Point;
-use crate::rational::{classify_conic, conic_arc_passes_infinity, ConicKind, RationalBezierCurve};
+use crate::rational::RationalBezierCurve;
 use crate::scalar::Scalar;
 
 /// The arcs `x(t) = Σ w_i b_i B_i^2(t) / Σ w_i B_i^2(t)` over one planar polygon `b_0 b_1 b_2`

@@ -6,12 +6,13 @@ use super::judge::{
 };
 use super::values::{number_to_json, point_to_json, points_to_json};
 use super::{MAX_DEGREE, MAX_POINTS, MAX_REQUEST_DIMENSION, MAX_REQUEST_WORK};
+use crate::conic::{classify_conic, implicit_conic, ConicKind};
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::fit::{fit_cubic, CubicFit, CubicFitData};
 use crate::float::{eval_dyadic, ulp_error, UlpError};
 use crate::point::Point;
-use crate::rational::{classify_conic, implicit_conic, ConicKind, RationalBezierCurve};
+use crate::rational::RationalBezierCurve;
 use crate::surface::BezierSurface;
 use num_bigint::BigInt;
 use num_rational::BigRational;
