@@ -101,7 +101,8 @@ fn simplex_weights<T: Scalar>(
     }
 }
 
-fn next_subset(subset: &mut [usize], m: usize) -> bool {
+/// The next `k`-subset of `0..m` in lexicographic order (`false` after the last).
+pub(crate) fn next_subset(subset: &mut [usize], m: usize) -> bool {
     let k = subset.len();
     for i in (0..k).rev() {
         if subset[i] < m - k + i {

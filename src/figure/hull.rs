@@ -3,7 +3,7 @@
 use super::svg::{indexed, Figure, Panel, Style, CURVE, POINT, POLYGON};
 use super::{list, planar, planar_curve};
 use crate::error::Result;
-use crate::hull::convex_weights;
+use crate::hull::{convex_weights, next_subset};
 use crate::point::Point;
 use crate::scalar::Scalar;
 use crate::BezierCurve;
@@ -225,20 +225,6 @@ fn plausible(points: &[Vec<f64>], subset: &[usize], target: &[f64]) -> bool {
         return false;
     }
     (0..k).all(|i| a[i][k] / a[i][i] > -1e-6)
-}
-
-fn next_subset(subset: &mut [usize], m: usize) -> bool {
-    let k = subset.len();
-    for i in (0..k).rev() {
-        if subset[i] < m - k + i {
-            subset[i] += 1;
-            for j in i + 1..k {
-                subset[j] = subset[j - 1] + 1;
-            }
-            return true;
-        }
-    }
-    false
 }
 
 /// The convex hull of planar points, counter-clockwise (Andrew's monotone chain, exact).

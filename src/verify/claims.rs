@@ -878,3 +878,15 @@ pub fn load_paths(paths: &[PathBuf]) -> Result<Vec<ClaimFile>> {
     }
     Ok(files)
 }
+
+/// An identity claim `1 = 1` with `body` appended (declarations for a test).
+#[cfg(test)]
+pub(crate) fn test_claim(body: &str) -> Claim {
+    parse_file(
+        &format!("[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\nlhs = \"1\"\nrhs = \"1\"\n{body}"),
+        Path::new("t.toml"),
+    )
+    .unwrap()
+    .claim
+    .remove(0)
+}

@@ -188,19 +188,8 @@ impl<'c> Ctx<'c> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::claims::{parse_file, Claim};
+    use super::super::claims::test_claim as claim;
     use super::*;
-    use std::path::Path;
-
-    fn claim(body: &str) -> Claim {
-        parse_file(
-            &format!("[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\nlhs = \"1\"\nrhs = \"1\"\n{body}"),
-            Path::new("t.toml"),
-        )
-        .unwrap()
-        .claim[0]
-            .clone()
-    }
 
     #[test]
     fn ranges_enumerate_every_case_and_refuse_empty_ones() {

@@ -647,19 +647,8 @@ pub fn check_chain<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Res
 
 #[cfg(test)]
 mod tests {
-    use super::super::claims::{parse_file, Claim};
+    use super::super::claims::test_claim as claim;
     use super::*;
-    use std::path::Path;
-
-    fn claim(body: &str) -> Claim {
-        parse_file(
-            &format!("[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\nlhs = \"1\"\nrhs = \"1\"\n{body}"),
-            Path::new("t.toml"),
-        )
-        .unwrap()
-        .claim[0]
-            .clone()
-    }
 
     #[test]
     fn the_work_estimate_grows_with_degree_and_basis() {
