@@ -628,7 +628,8 @@ impl<T: Scalar> BezierCurve<T> {
         Ok(out)
     }
 
-    fn distance_of_elevated(&self, elevated: &Self, r: usize) -> ElevationDistance<T> {
+    /// [`Self::elevation_distance`] of `elevated`, this curve already elevated `r` times.
+    pub(crate) fn distance_of_elevated(&self, elevated: &Self, r: usize) -> ElevationDistance<T> {
         let total = elevated.degree();
         let mut max_norm = T::zero();
         let mut max_squared = T::zero();

@@ -2,7 +2,6 @@
 
 use super::svg::{Figure, Panel, Style, CURVE, PALETTE, POLYGON};
 use super::{planar, planar_curve};
-use crate::curve::ElevationDistance;
 use crate::error::{Error, Result};
 use crate::scalar::Scalar;
 use crate::BezierCurve;
@@ -34,7 +33,7 @@ pub fn elevation<T: Scalar>(curve: &BezierCurve<T>, steps: &[usize]) -> Result<F
     for (i, p) in curve.points().iter().enumerate() {
         panel.dot(&original[i], 3.0, POLYGON, format!("b_{i} = {p}"))?;
     }
-    let d0 = distance(curve, curve)?;
+    let d0 = curve.distance_of_elevated(curve, 0);
     fig.note(
         Some(POLYGON),
         format!("r = 0 (degree {n}): max_i |b_i − b(i/{n})|∞ = {}", d0.max_norm),
@@ -43,7 +42,7 @@ pub fn elevation<T: Scalar>(curve: &BezierCurve<T>, steps: &[usize]) -> Result<F
         let color = PALETTE[k % PALETTE.len()];
         let elevated = curve.elevate_by(r)?;
         let drawn = elevated.points().iter().map(planar).collect::<Result<Vec<_>>>()?;
-        let d = distance(curve, &elevated)?;
+        let d = curve.distance_of_elevated(&elevated, r);
         let title = format!(
             "r = {r}: the {} Bézier points of degree {}; max_i |b_i^({r}) − b(i/{})|∞ = {}",
             elevated.points().len(),
@@ -80,33 +79,4 @@ pub fn elevation<T: Scalar>(curve: &BezierCurve<T>, steps: &[usize]) -> Result<F
         "the curve b(t); the elevated polygons approach it as r grows",
     );
     Ok(fig)
-}
-
-/// [`BezierCurve::elevation_distance`] of `elevated` (the curve elevated `r` times), the same
-/// exact numbers by the same steps, without elevating again: each `b(i/N)`, `N = n + r`, is
-/// one exact evaluation ([`BezierCurve::eval`], fraction-free for exact rationals).
-fn distance<T: Scalar>(curve: &BezierCurve<T>, elevated: &BezierCurve<T>) -> Result<ElevationDistance<T>> {
-    let total = elevated.degree();
-    let (mut max_norm, mut max_squared) = (T::zero(), T::zero());
-    for (i, p) in elevated.points().iter().enumerate() {
-        let t = if total == 0 {
-            T::zero()
-        } else {
-            T::from_usize(i).checked_div(&T::from_usize(total))?
-        };
-        let on_curve = curve.eval(&t);
-        let m = p.max_norm_distance(&on_curve);
-        let sq = p.distance_squared(&on_curve);
-        if m > max_norm {
-            max_norm = m;
-        }
-        if sq > max_squared {
-            max_squared = sq;
-        }
-    }
-    Ok(ElevationDistance {
-        r: total - curve.degree(),
-        max_norm,
-        max_squared,
-    })
 }
