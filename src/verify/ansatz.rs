@@ -153,11 +153,11 @@ pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str) -> Result<Expr> {
         let mut rows: BTreeMap<Vec<u16>, Vec<BigRational>> = BTreeMap::new();
         let width = cols.len() + 1;
         for (j, c) in cols.iter().enumerate() {
-            for (e, v) in c.terms_list() {
+            for (e, v) in c.terms_in(sym.names.len()) {
                 rows.entry(e).or_insert_with(|| vec![BigRational::zero(); width])[j] += v;
             }
         }
-        for (e, v) in rhs.terms_list() {
+        for (e, v) in rhs.terms_in(sym.names.len()) {
             rows.entry(e).or_insert_with(|| vec![BigRational::zero(); width])[width - 1] -= v;
         }
         let mut a: Vec<Vec<BigRational>> = rows.into_values().collect();

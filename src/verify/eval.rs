@@ -543,7 +543,7 @@ pub fn bernstein<A: Alg>(i: i64, n: i64, g: &A) -> Result<A> {
 /// expanded exactly, integrated term by term, its antiderivative evaluated at `b` and `a` in
 /// the evaluator's algebra (so the bounds may be parameters, and degree bounds compose).
 fn integral<A: Alg>(ev: &mut Evaluator<'_, A>, e: &Expr, args: &[Expr]) -> Result<A> {
-    use super::poly::{current_names, set_names, Poly, RatFunc};
+    use super::poly::{Poly, RatFunc};
     let Expr::Var(t) = &args[1] else {
         return Err(Error::Domain(format!(
             "'{e}': the variable of integration must be a name"
@@ -552,13 +552,10 @@ fn integral<A: Alg>(ev: &mut Evaluator<'_, A>, e: &Expr, args: &[Expr]) -> Resul
     let names: std::rc::Rc<[String]> = std::rc::Rc::from(vec![t.clone()]);
     let degrees = std::iter::once((t.clone(), Value::S(Deg::var(t)))).collect();
     check_symbolic_degrees(degrees, &ev.ints, &[&args[0]])?;
-    let saved = current_names();
-    set_names(&names);
     let mut vars = BTreeMap::new();
     vars.insert(t.clone(), Value::S(RatFunc::poly(Poly::var(&names, 0))));
     let env = VarEnv(vars);
     let expanded = Evaluator::new(&env, ev.ints.clone()).scalar(&args[0]);
-    set_names(&saved);
     let f = expanded.map_err(|err| {
         Error::Domain(format!(
             "'{e}': the integrand must be a polynomial in {t} (and the integer ranges) only: {err}"
@@ -572,7 +569,7 @@ fn integral<A: Alg>(ev: &mut Evaluator<'_, A>, e: &Expr, args: &[Expr]) -> Resul
     let (a, b) = (ev.scalar(&args[2])?, ev.scalar(&args[3])?);
     // F(x) = Σ c_k x^(k+1) / (k+1), by Horner on the coefficients of F.
     let mut coeffs: Vec<BigRational> = Vec::new();
-    for (exp, c) in f.num.terms_list() {
+    for (exp, c) in f.num.terms_in(1) {
         let k = exp[0] as usize;
         if coeffs.len() <= k + 1 {
             coeffs.resize(k + 2, <BigRational as Zero>::zero());

@@ -6,7 +6,7 @@ use super::claims::Implies;
 use super::context::Ctx;
 use super::eval::{Deg, Env, Evaluator, Value, VarEnv};
 use super::expr::Expr;
-use super::poly::{set_names, Poly, RatFunc};
+use super::poly::{Poly, RatFunc};
 use super::sampling::{list, PairProof, PairResult};
 use crate::error::{Error, Result};
 use crate::scalar::{Ring, Scalar};
@@ -53,7 +53,6 @@ fn sym_names(ctx: &Ctx<'_>, extra: &[String]) -> (Rc<[String]>, Vec<(String, usi
 }
 
 fn sym_env(names: &Rc<[String]>, layout: &[(String, usize)]) -> SymEnv {
-    set_names(names);
     let mut vars = BTreeMap::new();
     let mut k = 0;
     for (v, dim) in layout {

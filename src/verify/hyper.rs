@@ -168,7 +168,6 @@ impl Symbols {
     pub fn new(ints: &[String], conts: &[String]) -> Symbols {
         let names: Vec<String> = ints.iter().chain(conts).cloned().collect();
         let names: Rc<[String]> = Rc::from(names);
-        super::poly::set_names(&names);
         Symbols {
             names,
             ints: ints.len(),
@@ -208,13 +207,13 @@ impl Symbols {
     }
     /// Whether a polynomial mentions an integer symbol.
     pub fn poly_has_ints(&self, p: &Poly) -> bool {
-        p.terms_list()
+        p.terms_in(self.names.len())
             .iter()
             .any(|(e, _)| e[..self.ints].iter().any(|&x| x > 0))
     }
     /// Whether a polynomial mentions a continuous parameter.
     pub fn poly_has_conts(&self, p: &Poly) -> bool {
-        p.terms_list()
+        p.terms_in(self.names.len())
             .iter()
             .any(|(e, _)| e[self.ints..].iter().any(|&x| x > 0))
     }
@@ -222,7 +221,7 @@ impl Symbols {
     /// continuous parameter, as an affine form.
     pub fn poly_to_aff(&self, p: &Poly) -> Option<Aff> {
         let mut out = Aff::constant(0);
-        for (e, c) in p.terms_list() {
+        for (e, c) in p.terms_in(self.names.len()) {
             if !c.is_integer() {
                 return None;
             }
@@ -261,7 +260,7 @@ impl Symbols {
         }
         // p = Σ_α c_α(ints) x^α: p ≢ 0 wherever one c_α ≠ 0; take the simplest c_α.
         let mut groups: BTreeMap<Vec<u16>, Vec<(Vec<u16>, BigRational)>> = BTreeMap::new();
-        for (mut e, c) in p.terms_list() {
+        for (mut e, c) in p.terms_in(self.names.len()) {
             let cont = e[self.ints..].to_vec();
             e[self.ints..].iter_mut().for_each(|x| *x = 0);
             groups.entry(cont).or_default().push((e, c));
@@ -279,7 +278,7 @@ impl Symbols {
 
     /// `p` scaled to integer coefficients (by the lcm of their denominators).
     fn integral(&self, p: &Poly) -> Poly {
-        let l = p.terms_list().iter().fold(BigInt::one(), |l, (_, c)| l.lcm(c.denom()));
+        let l = p.terms_in(self.names.len()).iter().fold(BigInt::one(), |l, (_, c)| l.lcm(c.denom()));
         p.mul(&Poly::constant(&self.names, &BigRational::from_integer(l)))
     }
 
@@ -301,7 +300,7 @@ impl Symbols {
                 return Some(out);
             }
             let used: Vec<usize> = (0..self.ints)
-                .filter(|&k| c.terms_list().iter().any(|(e, _)| e[k] > 0))
+                .filter(|&k| c.terms_in(self.names.len()).iter().any(|(e, _)| e[k] > 0))
                 .collect();
             for &k in &used {
                 if let Some(q) = c.exact_div(&Poly::var(&self.names, k)) {
@@ -318,7 +317,7 @@ impl Symbols {
             };
             // One symbol s, c(0) ≠ 0: an integer root divides the constant of integral(c).
             let ic = self.integral(&c);
-            let (_, c0) = ic.terms_list().into_iter().find(|(e, _)| e.iter().all(|&x| x == 0))?;
+            let (_, c0) = ic.terms_in(self.names.len()).into_iter().find(|(e, _)| e.iter().all(|&x| x == 0))?;
             let c0 = c0.to_integer().abs();
             if c0 > BigInt::from(MAX_ROOT_SEARCH) {
                 return None;
@@ -342,7 +341,7 @@ impl Symbols {
         let Some(k) = self.index(name) else {
             return p.clone();
         };
-        let terms = p.terms_list();
+        let terms = p.terms_in(self.names.len());
         if terms.iter().all(|(e, _)| e[k] == 0) {
             return p.clone();
         }
@@ -402,7 +401,7 @@ impl fmt::Display for Base {
 /// Splits a nonzero polynomial in the continuous parameters into `c · Π x^α · q` and returns
 /// the powers `base^(k·e)` of `p^e`.
 pub fn power_of(sym: &Symbols, p: &Poly, e: &Aff) -> Result<Vec<(Base, Aff)>> {
-    let terms = p.terms_list();
+    let terms = p.terms_in(sym.names.len());
     if terms.is_empty() {
         return Err(Error::Domain(format!(
             "the base of the power with symbolic exponent {e} is zero"
@@ -509,7 +508,7 @@ impl Term {
     pub fn mentions(&self, sym: &Symbols, name: &str) -> bool {
         let in_aff = |v: &[Aff]| v.iter().any(|a| a.coef(name) != 0);
         let k = sym.index(name);
-        let in_poly = |p: &Poly| k.is_some_and(|k| p.terms_list().iter().any(|(e, _)| e[k] > 0));
+        let in_poly = |p: &Poly| k.is_some_and(|k| p.terms_in(sym.names.len()).iter().any(|(e, _)| e[k] > 0));
         in_poly(&self.coef.num)
             || in_poly(&self.coef.den)
             || self.facts.iter().any(|(a, _)| a.coef(name) != 0)

@@ -22,7 +22,7 @@ use super::claims::{Decls, Inequality, Relation};
 use super::context::Ctx;
 use super::eval::{Alg, Deg, Evaluator, Value, VarEnv};
 use super::expr::Expr;
-use super::poly::{set_names, Poly, RatFunc};
+use super::poly::{Poly, RatFunc};
 use crate::bernstein::{power_to_bernstein, reparametrize};
 use crate::error::{Error, Result};
 use num_rational::BigRational;
@@ -113,7 +113,7 @@ pub fn bernstein_sign(power: &[BigRational], a: &BigRational, b: &BigRational, s
 
 fn coeffs_1d(p: &Poly) -> Vec<BigRational> {
     let mut out = Vec::new();
-    for (e, c) in p.terms_list() {
+    for (e, c) in p.terms_in(1) {
         let k = e[0] as usize;
         if out.len() <= k {
             out.resize(k + 1, BigRational::zero());
@@ -185,7 +185,6 @@ pub fn check_inequality(ctx: &Ctx<'_>, ineq: &Inequality, detail: bool) -> Resul
         };
         let degrees = std::iter::once((t.clone(), Value::S(Deg::var(&t)))).collect();
         super::eval::check_symbolic_degrees(degrees, &ints, &[&p])?;
-        set_names(&names);
         let mut vars = BTreeMap::new();
         vars.insert(t.clone(), Value::S(RatFunc::poly(Poly::var(&names, 0))));
         let env = VarEnv(vars);
@@ -316,7 +315,7 @@ pub fn check_for_every(id: &str, decls: &Decls, ineq: &Inequality, detail: bool)
 /// symbolic proof; the integer symbols must not occur).
 fn coeffs_last(q: &RatFunc) -> Vec<BigRational> {
     let mut out = Vec::new();
-    for (e, c) in q.num.terms_list() {
+    for (e, c) in q.num.terms_in(q.num.var_count()) {
         let k = *e.last().unwrap_or(&0) as usize;
         if out.len() <= k {
             out.resize(k + 1, BigRational::zero());

@@ -21,7 +21,7 @@ use super::expansion::check_implies;
 use super::expr::Expr;
 use super::identity::{chain_in_field, check_identity, uses_sqrt};
 use super::objects::{points, CurveObj};
-use super::poly::{set_names, Poly, RatFunc};
+use super::poly::{Poly, RatFunc};
 use super::rewrite::substitute;
 use super::sampling::check_chain;
 use super::theorems;
@@ -167,7 +167,6 @@ fn library_power_on(power: &Expr, param: &str, a: &Number, b: &Number) -> Result
     let names: Rc<[String]> = Rc::from(vec![param.to_string()]);
     let degrees = std::iter::once((param.to_string(), Value::S(Deg::var(param)))).collect();
     super::eval::check_symbolic_degrees(degrees, &BTreeMap::new(), &[power])?;
-    set_names(&names);
     let mut vars = BTreeMap::new();
     vars.insert(param.to_string(), Value::S(RatFunc::poly(Poly::var(&names, 0))));
     let env = super::eval::VarEnv(vars);
@@ -197,7 +196,7 @@ fn poly_coeffs_1d(r: &RatFunc) -> Result<Vec<BigRational>> {
         .as_constant()
         .ok_or_else(|| Error::Domain("the power form must be a polynomial".into()))?;
     let mut out = Vec::new();
-    for (e, c) in poly_terms(&r.num) {
+    for (e, c) in r.num.terms_in(1) {
         let k = e[0] as usize;
         if out.len() <= k {
             out.resize(k + 1, BigRational::zero());
@@ -208,10 +207,6 @@ fn poly_coeffs_1d(r: &RatFunc) -> Result<Vec<BigRational>> {
         out.push(BigRational::zero());
     }
     Ok(out)
-}
-
-fn poly_terms(p: &Poly) -> Vec<(Vec<u16>, BigRational)> {
-    p.terms_list()
 }
 
 /// The type of the conic `A x² + B xy + C y² + D x + E y + F = 0`, exactly.
@@ -255,7 +250,6 @@ fn check_conic_type(ctx: &Ctx<'_>, claim: &ConicType) -> Result<Checked> {
         .map(|v| (v.to_string(), Value::S(Deg::var(v))))
         .collect();
     super::eval::check_symbolic_degrees(degrees, &BTreeMap::new(), &[&l, &r])?;
-    set_names(&names);
     let mut vars = BTreeMap::new();
     vars.insert("x".into(), Value::S(RatFunc::poly(Poly::var(&names, 0))));
     vars.insert("y".into(), Value::S(RatFunc::poly(Poly::var(&names, 1))));
@@ -268,7 +262,7 @@ fn check_conic_type(ctx: &Ctx<'_>, claim: &ConicType) -> Result<Checked> {
         .as_constant()
         .ok_or_else(|| Error::Domain("the conic's equation must be a polynomial in x, y".into()))?;
     let mut coef: [BigRational; 6] = Default::default();
-    for (e, k) in poly_terms(&diff.num) {
+    for (e, k) in diff.num.terms_in(2) {
         let slot = match (e[0], e[1]) {
             (2, 0) => 0,
             (1, 1) => 1,

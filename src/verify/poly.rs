@@ -7,6 +7,7 @@ use crate::error::{Error, Result};
 use crate::scalar;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
+use std::borrow::Cow;
 use std::collections::BTreeMap;
 use std::fmt;
 use std::rc::Rc;
@@ -15,13 +16,34 @@ use std::rc::Rc;
 pub const MAX_TERMS: usize = 200_000;
 
 /// A polynomial: monomial exponents (one per variable) → coefficient, no zero coefficients.
+///
+/// A constant may be built without names ([`Alg::from_rat`] has no context): it takes the
+/// names of the first polynomial it meets, so no variable list has to be set beforehand.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Poly {
     names: Rc<[String]>,
     terms: BTreeMap<Vec<u16>, BigRational>,
 }
 
+/// Two polynomials over one variable list: a constant built without names is lifted to the
+/// other's names.
+fn aligned<'a>(a: &'a Poly, b: &'a Poly) -> (Cow<'a, Poly>, Cow<'a, Poly>) {
+    match (a.names.len(), b.names.len()) {
+        (0, m) if m > 0 => (Cow::Owned(a.over(&b.names)), Cow::Borrowed(b)),
+        (m, 0) if m > 0 => (Cow::Borrowed(a), Cow::Owned(b.over(&a.names))),
+        _ => {
+            debug_assert!(a.names == b.names, "polynomials over different variables");
+            (Cow::Borrowed(a), Cow::Borrowed(b))
+        }
+    }
+}
+
 impl Poly {
+    /// A constant built without names, over `names`.
+    fn over(&self, names: &Rc<[String]>) -> Poly {
+        debug_assert!(self.names.is_empty() && self.as_constant().is_some());
+        Poly::constant(names, &self.as_constant().unwrap_or_default())
+    }
     /// The constant `c` over the variables `names`.
     pub fn constant(names: &Rc<[String]>, c: &BigRational) -> Poly {
         let mut terms = BTreeMap::new();
@@ -48,6 +70,10 @@ impl Poly {
     pub fn is_zero(&self) -> bool {
         self.terms.is_empty()
     }
+    /// The number of variables it is written over (0 for a constant built without names).
+    pub fn var_count(&self) -> usize {
+        self.names.len()
+    }
     /// The number of terms.
     pub fn len(&self) -> usize {
         self.terms.len()
@@ -68,7 +94,8 @@ impl Poly {
         }
     }
     fn add_scaled(&self, o: &Poly, sign: bool) -> Poly {
-        let mut terms = self.terms.clone();
+        let (a, o) = aligned(self, o);
+        let mut terms = a.terms.clone();
         for (e, c) in &o.terms {
             let entry = terms.entry(e.clone()).or_insert_with(BigRational::zero);
             if sign {
@@ -81,14 +108,15 @@ impl Poly {
             }
         }
         Poly {
-            names: self.names.clone(),
+            names: a.names.clone(),
             terms,
         }
     }
     /// `self · o`.
     pub fn mul(&self, o: &Poly) -> Poly {
+        let (a, o) = aligned(self, o);
         let mut terms: BTreeMap<Vec<u16>, BigRational> = BTreeMap::new();
-        for (e1, c1) in &self.terms {
+        for (e1, c1) in &a.terms {
             for (e2, c2) in &o.terms {
                 let e: Vec<u16> = e1.iter().zip(e2).map(|(a, b)| a.saturating_add(*b)).collect();
                 let entry = terms.entry(e.clone()).or_insert_with(BigRational::zero);
@@ -99,7 +127,7 @@ impl Poly {
             }
         }
         Poly {
-            names: self.names.clone(),
+            names: a.names.clone(),
             terms,
         }
     }
@@ -112,9 +140,18 @@ impl Poly {
             terms: self.terms.iter().map(|(e, x)| (e.clone(), x * c)).collect(),
         }
     }
-    /// The terms (exponents, coefficient), in increasing monomial order.
-    pub fn terms_list(&self) -> Vec<(Vec<u16>, BigRational)> {
-        self.terms.iter().map(|(e, c)| (e.clone(), c.clone())).collect()
+    /// The terms (exponents, coefficient), in increasing monomial order, over a list of
+    /// `vars` variables (the polynomial's own, or any list for a constant built without names).
+    pub fn terms_in(&self, vars: usize) -> Vec<(Vec<u16>, BigRational)> {
+        debug_assert!(self.names.is_empty() || self.names.len() == vars);
+        self.terms
+            .iter()
+            .map(|(e, c)| {
+                let mut e = e.clone();
+                e.resize(vars, 0);
+                (e, c.clone())
+            })
+            .collect()
     }
 
     /// `self / d` when the polynomial `d` divides `self` exactly, else `None` (also `None`
@@ -124,9 +161,10 @@ impl Poly {
     /// leading term of `self` is that of `q` times that of `d`, so a leading term that the
     /// leading term of `d` does not divide proves that `d` does not divide `self`.
     pub fn exact_div(&self, d: &Poly) -> Option<Poly> {
+        let (num, d) = aligned(self, d);
         let (ed, cd) = d.terms.iter().next_back()?;
-        let mut rem = self.clone();
-        let mut q = Poly::constant(&self.names, &BigRational::zero());
+        let mut rem = num.into_owned();
+        let mut q = Poly::constant(&rem.names, &BigRational::zero());
         for _ in 0..MAX_TERMS {
             let Some((er, cr)) = rem.terms.iter().next_back() else {
                 return Some(q);
@@ -139,10 +177,10 @@ impl Poly {
             let mut t = BTreeMap::new();
             t.insert(mono, c);
             let term = Poly {
-                names: self.names.clone(),
+                names: rem.names.clone(),
                 terms: t,
             };
-            rem = rem.add_scaled(&term.mul(d), false);
+            rem = rem.add_scaled(&term.mul(&d), false);
             q = q.add_scaled(&term, true);
         }
         None
@@ -256,25 +294,6 @@ impl fmt::Display for RatFunc {
     }
 }
 
-thread_local! {
-    static NAMES: std::cell::RefCell<Rc<[String]>> = std::cell::RefCell::new(Rc::from(Vec::new()));
-}
-
-/// Sets the variable names that constants created by [`Alg::from_rat`] are built over
-/// (all polynomials of one check share one variable list).
-pub fn set_names(names: &Rc<[String]>) {
-    NAMES.with(|n| *n.borrow_mut() = names.clone());
-}
-
-fn names() -> Rc<[String]> {
-    NAMES.with(|n| n.borrow().clone())
-}
-
-/// The variable names set by [`set_names`] (to restore them after a nested expansion).
-pub fn current_names() -> Rc<[String]> {
-    names()
-}
-
 impl scalar::Ring for RatFunc {
     fn zero() -> Self {
         Self::from_rat(&<BigRational as Zero>::zero())
@@ -310,7 +329,7 @@ impl scalar::Ring for RatFunc {
 
 impl Alg for RatFunc {
     fn from_rat(r: &BigRational) -> Self {
-        RatFunc::poly(Poly::constant(&names(), r))
+        RatFunc::poly(Poly::constant(&Rc::from(Vec::new()), r))
     }
     fn div(&self, o: &Self) -> Result<Self> {
         if o.num.is_zero() {
@@ -337,7 +356,6 @@ mod tests {
     #[test]
     fn exact_division() {
         let names: Rc<[String]> = Rc::from(vec!["x".to_string(), "y".to_string()]);
-        set_names(&names);
         let x = RatFunc::poly(Poly::var(&names, 0));
         let y = RatFunc::poly(Poly::var(&names, 1));
         let a = x.add(&y).mul(&x.sub(&y)).mul(&x); // x³ − x y²
@@ -352,7 +370,6 @@ mod tests {
     #[test]
     fn expands_and_compares() {
         let names: Rc<[String]> = Rc::from(vec!["x".to_string(), "y".to_string()]);
-        set_names(&names);
         let x = RatFunc::poly(Poly::var(&names, 0));
         let y = RatFunc::poly(Poly::var(&names, 1));
         let lhs = x.add(&y).mul(&x.add(&y));

@@ -139,7 +139,7 @@ pub fn nonneg_for_every(
                     .as_constant()
                     .is_some_and(|c| c > num_rational::BigRational::from_integer(0.into()));
                 let mut monomials = positive_den;
-                for (e, c) in t.coef.num.terms_list() {
+                for (e, c) in t.coef.num.terms_in(sym.names.len()) {
                     monomials &= c > num_rational::BigRational::from_integer(0.into());
                     for (k, &x) in e.iter().enumerate() {
                         if x == 0 || !monomials {
