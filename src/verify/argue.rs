@@ -2,7 +2,7 @@
 //! the argument (from the typed [`Method`]), the cases of the log and the worked case, the
 //! misprint lines and the de Casteljau scheme that goes with a case.
 
-use super::checked::{Checked, Method, Verdict};
+use super::checked::{Checked, Evaluation, Method, Step, StepKind, Verdict};
 use super::claims::{Claim, ClaimFile, Kind};
 use super::objects::CurveObj;
 use crate::bernstein::bernstein_all;
@@ -21,21 +21,40 @@ pub(crate) fn verdict_text(v: Verdict, range: Option<&str>) -> String {
     }
 }
 
-/// One case of the log: its header line and the lines under it.
+/// One case of the log: its header and the lines under it.
 pub(crate) struct Case<'a> {
-    pub(crate) header: &'a str,
-    pub(crate) lines: Vec<&'a str>,
+    pub(crate) header: &'a Step,
+    pub(crate) lines: Vec<&'a Step>,
 }
 
-pub(crate) fn cases(steps: &[String]) -> Vec<Case<'_>> {
+impl Case<'_> {
+    /// The lines that are not exact evaluations.
+    pub(crate) fn other_lines(&self) -> impl Iterator<Item = &Step> {
+        self.lines
+            .iter()
+            .copied()
+            .filter(|l| !matches!(l.kind, StepKind::Evaluation(_)))
+    }
+    /// The exact evaluations.
+    pub(crate) fn evaluations(&self) -> impl Iterator<Item = &Evaluation> {
+        self.lines.iter().filter_map(|l| match &l.kind {
+            StepKind::Evaluation(e) => Some(e),
+            _ => None,
+        })
+    }
+}
+
+pub(crate) fn cases(steps: &[Step]) -> Vec<Case<'_>> {
     let mut out: Vec<Case<'_>> = Vec::new();
-    for line in steps {
+    for step in steps {
         match out.last_mut() {
-            Some(case) if line.starts_with(' ') => case.lines.push(line.trim()),
+            Some(case) if step.depth > 0 => case.lines.push(step),
             // a label such as "the zero polygon:" heads the equality checked under it
-            Some(case) if case.lines.is_empty() && case.header.ends_with(':') => case.lines.push(line.trim()),
+            Some(case) if case.lines.is_empty() && matches!(case.header.kind, StepKind::Label(_)) => {
+                case.lines.push(step)
+            }
             _ => out.push(Case {
-                header: line.trim(),
+                header: step,
                 lines: Vec::new(),
             }),
         }
@@ -47,12 +66,21 @@ pub(crate) fn cases(steps: &[String]) -> Vec<Case<'_>> {
 /// chain), else the first of those showing the most (the zero polygon of a symbolic proof only
 /// says that every term vanishes), else the first.
 pub(crate) fn worked_case<'a>(all: &'a [Case<'a>]) -> Option<&'a Case<'a>> {
+    let degree_3 = |c: &&Case<'_>| match &c.header.kind {
+        StepKind::Instance { ints, .. } => ints.last().is_some_and(|(k, v)| k.ends_with('n') && *v == 3),
+        _ => false,
+    };
     all.iter()
         .rev()
-        .find(|c| c.header.starts_with('[') && c.header.split(']').next().is_some_and(|h| h.ends_with("n = 3")))
+        .find(degree_3)
         .or_else(|| {
             // the first case with the most to show (a piece where every term vanishes shows little)
-            let shown = |c: &Case<'_>| c.lines.iter().filter(|l| !l.ends_with("every term vanishes")).count();
+            let shown = |c: &Case<'_>| {
+                c.lines
+                    .iter()
+                    .filter(|l| !matches!(l.kind, StepKind::Vanishes { .. }))
+                    .count()
+            };
             all.iter().rev().filter(|c| shown(c) > 0).max_by_key(|c| shown(c))
         })
         .or_else(|| all.first())
@@ -111,17 +139,19 @@ pub(crate) fn misprint_lines(f: &ClaimFile, c: &Claim) -> Vec<String> {
 }
 
 /// Up to `k` evaluations of a case, preferring those whose value is a proper fraction.
-pub(crate) fn sample_evaluations<'a>(case: &Case<'a>, k: usize) -> Vec<&'a str> {
-    let evals: Vec<&str> = case
+pub(crate) fn sample_evaluations<'a>(case: &Case<'a>, k: usize) -> Vec<&'a Evaluation> {
+    let evals: Vec<&Evaluation> = case
         .lines
         .iter()
-        .copied()
-        .filter(|l| l.contains("both sides"))
+        .filter_map(|l| match &l.kind {
+            StepKind::Evaluation(e) => Some(e),
+            _ => None,
+        })
         .collect();
-    let mut pick: Vec<&str> = evals
+    let mut pick: Vec<&Evaluation> = evals
         .iter()
         .copied()
-        .filter(|l| l.rsplit('=').next().is_some_and(|v| v.contains('/')))
+        .filter(|e| e.value.contains('/'))
         .take(k)
         .collect();
     if pick.is_empty() {
@@ -211,19 +241,6 @@ fn kind_argument(kind: &Kind) -> &'static [&'static str] {
     }
 }
 
-/// The value of `name` in an evaluation line such as `n = 3, t0 = 1/2, t = 1/3, b[1] = 1, …`.
-pub(crate) fn value_in(line: &str, name: &str) -> Option<BigRational> {
-    let head = line.split(':').next()?;
-    head.split(", ").find_map(|part| {
-        let (k, v) = part.split_once(" = ")?;
-        if k.trim() == name {
-            v.trim().parse().ok()
-        } else {
-            None
-        }
-    })
-}
-
 /// The members of an identity claim's chain (none for another kind).
 fn identity_members(c: &Claim) -> Vec<String> {
     match &c.kind {
@@ -239,26 +256,24 @@ fn identity_members(c: &Claim) -> Vec<String> {
 pub(crate) fn worked_scheme(
     c: &Claim,
     checked: &Checked,
-    eval: Option<&str>,
+    eval: Option<&Evaluation>,
 ) -> Option<DeCasteljauScheme<BigRational>> {
     if let (Some(poly), Some(line), Some(var)) = (&c.decls.polygon, eval, c.decls.vars.as_ref().and_then(|v| v.first()))
     {
         let uses_scheme = identity_members(c)
             .iter()
             .any(|e| e.contains(&format!("{}(0, ", poly.name)));
-        let n: usize = value_in(line, &poly.degree).and_then(|v| v.to_integer().try_into().ok())?;
-        let t = value_in(line, var)?;
-        let unit = line.split(", ").find_map(|p| {
-            let rest = p.strip_prefix(&format!("{}[", poly.name))?;
-            let (k, v) = rest.split_once("] = ")?;
-            (v.trim() == "1").then(|| k.parse::<usize>().ok()).flatten()
-        })?;
+        let n: usize = line
+            .value_of(&poly.degree)
+            .and_then(|v| v.to_integer().try_into().ok())?;
+        let t = line.value_of(var)?;
+        let unit = line.unit?;
         if uses_scheme && n <= 6 {
             let points = (0..=n)
                 .map(|j| Point::from_ints(&[i64::from(j == unit)]))
                 .collect::<crate::error::Result<Vec<_>>>()
                 .ok()?;
-            return Some(BezierCurve::new(points).ok()?.scheme(&t));
+            return Some(BezierCurve::new(points).ok()?.scheme(t));
         }
         return None;
     }
@@ -280,7 +295,7 @@ pub(crate) fn worked_scheme(
 
 /// For a claim whose expressions contain `Σ_r b_0^r(t0) B_r^n(t)` (`b(0, r, t0)*B(r, n, t)`):
 /// that sum written out at the worked evaluation, from the scheme's upper edge, and its value.
-pub(crate) fn worked_sum(c: &Claim, scheme: &DeCasteljauScheme<BigRational>, eval: &str) -> Option<String> {
+pub(crate) fn worked_sum(c: &Claim, scheme: &DeCasteljauScheme<BigRational>, eval: &Evaluation) -> Option<String> {
     let poly = c.decls.polygon.as_ref()?;
     let vars = c.decls.vars.as_ref()?;
     let (v0, v1) = (vars.first()?, vars.get(1)?);
@@ -288,7 +303,7 @@ pub(crate) fn worked_sum(c: &Claim, scheme: &DeCasteljauScheme<BigRational>, eva
     if !identity_members(c).iter().any(|e| e.contains(&pattern)) {
         return None;
     }
-    let t = value_in(eval, v1)?;
+    let t = eval.value_of(v1)?.clone();
     let n = scheme.degree();
     let bern = bernstein_all(n, &t);
     let mut terms = Vec::new();

@@ -1,7 +1,7 @@
 //! Exact symbolic expansion: identities in scalar and vector unknowns, and `implies`.
 
-use super::checked::Checked;
 use super::checked::Verdict;
+use super::checked::{Checked, Step};
 use super::claims::Implies;
 use super::context::Ctx;
 use super::eval::{Deg, Env, Evaluator, Value, VarEnv};
@@ -153,11 +153,11 @@ pub fn symbolic_equal(ctx: &Ctx<'_>, lhs: &Expr, rhs: &Expr, ints: &BTreeMap<Str
         terms += a.num.len() + b.num.len();
     }
     let mut proof = PairProof::default();
-    proof.lines.push(format!(
+    proof.lines.push(Step::text(format!(
         "expanded exactly in {} variables ({}); both sides agree term by term after clearing denominators ({terms} terms)",
         names.len(),
         names.join(", ")
-    ));
+    )));
     Ok(PairResult::Proved(proof))
 }
 
@@ -181,8 +181,8 @@ pub fn check_chain_symbolic(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Resu
                 }
                 PairResult::Proved(p) => {
                     if detail {
-                        steps.push(format!("'{}' = '{}':", pair[0], pair[1]));
-                        steps.extend(p.lines.iter().map(|l| format!("    {l}")));
+                        steps.push(Step::text(format!("'{}' = '{}':", pair[0], pair[1])));
+                        steps.extend(p.lines.iter().cloned().map(|l| l.nested(2)));
                     }
                     nvars = sym_names(ctx, &[]).0.len();
                 }

@@ -278,7 +278,10 @@ impl Symbols {
 
     /// `p` scaled to integer coefficients (by the lcm of their denominators).
     fn integral(&self, p: &Poly) -> Poly {
-        let l = p.terms_in(self.names.len()).iter().fold(BigInt::one(), |l, (_, c)| l.lcm(c.denom()));
+        let l = p
+            .terms_in(self.names.len())
+            .iter()
+            .fold(BigInt::one(), |l, (_, c)| l.lcm(c.denom()));
         p.mul(&Poly::constant(&self.names, &BigRational::from_integer(l)))
     }
 
@@ -317,7 +320,10 @@ impl Symbols {
             };
             // One symbol s, c(0) ≠ 0: an integer root divides the constant of integral(c).
             let ic = self.integral(&c);
-            let (_, c0) = ic.terms_in(self.names.len()).into_iter().find(|(e, _)| e.iter().all(|&x| x == 0))?;
+            let (_, c0) = ic
+                .terms_in(self.names.len())
+                .into_iter()
+                .find(|(e, _)| e.iter().all(|&x| x == 0))?;
             let c0 = c0.to_integer().abs();
             if c0 > BigInt::from(MAX_ROOT_SEARCH) {
                 return None;

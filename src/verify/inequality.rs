@@ -16,8 +16,8 @@
 //! [`super::symbolic::nonneg_for_every`] (each term a product of factors ≥ 0 on `[a, b]`), after
 //! the first values are evaluated as above.
 
-use super::checked::Checked;
 use super::checked::Verdict;
+use super::checked::{Checked, Step};
 use super::claims::{Decls, Inequality, Relation};
 use super::context::Ctx;
 use super::eval::{Alg, Deg, Evaluator, Value, VarEnv};
@@ -235,14 +235,14 @@ pub fn check_inequality(ctx: &Ctx<'_>, ineq: &Inequality, detail: bool) -> Resul
                         .iter()
                         .map(|(lo, hi, l)| format!("[{lo}, {hi}]: least coefficient {l}"))
                         .collect();
-                    lines.push(format!(
+                    lines.push(Step::text(format!(
                         "{at}numerator {} (denominator {}), Bernstein coefficients on {} subinterval{}: {}",
                         v.num,
                         v.den,
                         parts.len(),
                         if parts.len() == 1 { "" } else { "s" },
                         list.join("; ")
-                    ));
+                    )));
                 }
             }
         }

@@ -403,18 +403,18 @@ pub(super) fn explain(f: &ClaimFile, c: &Claim, checked: &Checked, range_bound: 
     let all = cases(&checked.steps);
     let case = worked_case(&all);
     let evals = case.map(|c| sample_evaluations(c, 4)).unwrap_or_default();
-    let (header, lines): (String, Vec<&str>) = match case {
+    let (header, lines): (String, Vec<String>) = match case {
         Some(case) => (
-            case.header.to_string(),
+            case.header.line(),
             if evals.is_empty() {
-                case.lines.iter().copied().take(4).collect()
+                case.lines.iter().take(4).map(|l| l.line()).collect()
             } else {
-                evals.clone()
+                evals.iter().map(|e| e.to_string()).collect()
             },
         ),
         None => {
             let (h, l) = certificate_case(checked);
-            (h.to_string(), l)
+            (h.to_string(), l.into_iter().map(String::from).collect())
         }
     };
     let _ = writeln!(s, "\\noindent Worked case: {}", text(&header));

@@ -2,6 +2,7 @@
 //! for every integer point of a polyhedral domain: the domain split by affine conditions
 //! (Fourier–Motzkin with integer tightening), each piece divided by its first live term.
 
+use super::checked::Step;
 use super::eval::Alg;
 use super::hyper::*;
 use super::poly::{Poly, RatFunc};
@@ -276,22 +277,22 @@ fn pick_split(lin: &[Term], d: &Domain, alive: &mut [bool]) -> Result<Option<Spl
 
 /// Proves `Σ lin = 0` at every integer point of `d` (see the module documentation), logging
 /// each piece to `log`.
-pub fn prove_zero(sym: &Symbols, lin: &[Term], d: &Domain, log: &mut Vec<String>) -> Result<ZeroOutcome> {
+pub fn prove_zero(sym: &Symbols, lin: &[Term], d: &Domain, log: &mut Vec<Step>) -> Result<ZeroOutcome> {
     let mut check =
-        |live: &[&Term], _: &Domain, place: &str, log: &mut Vec<String>| classes_cancel(sym, live, place, log);
+        |live: &[&Term], _: &Domain, place: &str, log: &mut Vec<Step>| classes_cancel(sym, live, place, log);
     prove_pieces(sym, lin, d, log, &mut check)
 }
 
 /// What a piece must satisfy: given its live terms (every condition decided, every factorial
 /// argument ≥ 0), the piece and its description, `None` when it does, else the reason.
-pub type PieceCheck<'a> = dyn FnMut(&[&Term], &Domain, &str, &mut Vec<String>) -> Result<Option<String>> + 'a;
+pub type PieceCheck<'a> = dyn FnMut(&[&Term], &Domain, &str, &mut Vec<Step>) -> Result<Option<String>> + 'a;
 
 /// Splits `d` into pieces on which every term of `lin` is decided, and runs `check` on each.
 pub fn prove_pieces(
     sym: &Symbols,
     lin: &[Term],
     d: &Domain,
-    log: &mut Vec<String>,
+    log: &mut Vec<Step>,
     check: &mut PieceCheck<'_>,
 ) -> Result<ZeroOutcome> {
     let mut count = 0usize;
@@ -309,7 +310,7 @@ fn prove_rec(
     lin: Lin,
     d: Domain,
     path: Vec<String>,
-    log: &mut Vec<String>,
+    log: &mut Vec<Step>,
     count: &mut usize,
     check: &mut PieceCheck<'_>,
 ) -> Result<Found> {
@@ -383,7 +384,7 @@ fn prove_rec(
                 format!("{} (piece {})", d.show(), path.join(", "))
             };
             if live.is_empty() {
-                log.push(format!("on {place}: every term vanishes"));
+                log.push(Step::vanishes(place));
                 return Ok(None);
             }
             Ok(check(&live, &d, &place, log)?.map(|why| (place, why)))
@@ -394,7 +395,7 @@ fn prove_rec(
 /// The live terms of a piece sum to zero: each class of similar terms (rational quotients)
 /// cancels on its own (enough for the sum to vanish; a class that does not cancel is
 /// reported, never taken as a disproof).
-fn classes_cancel(sym: &Symbols, live: &[&Term], place: &str, log: &mut Vec<String>) -> Result<Option<String>> {
+fn classes_cancel(sym: &Symbols, live: &[&Term], place: &str, log: &mut Vec<Step>) -> Result<Option<String>> {
     let mut classes: Vec<(&Term, RatFunc, usize)> = Vec::new();
     for t in live {
         let mut placed = false;
@@ -419,13 +420,13 @@ fn classes_cancel(sym: &Symbols, live: &[&Term], place: &str, log: &mut Vec<Stri
             )));
         }
     }
-    log.push(format!(
+    log.push(Step::text(format!(
         "on {place}: {} live term{} in {} class{} of similar terms, each Σ T_j / T_0 = 0 identically",
         live.len(),
         if live.len() == 1 { "" } else { "s" },
         classes.len(),
         if classes.len() == 1 { "" } else { "es" },
-    ));
+    )));
     Ok(None)
 }
 

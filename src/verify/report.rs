@@ -379,9 +379,9 @@ pub(super) fn explain_text(
     let case = worked_case(&all);
     let evals = case.map(|c| sample_evaluations(c, 4)).unwrap_or_default();
     if let Some(case) = case {
-        let _ = writeln!(s, "\nworked case: {}", case.header);
-        for l in case.lines.iter().filter(|l| !l.contains("both sides")).take(4) {
-            let _ = writeln!(s, "  {l}");
+        let _ = writeln!(s, "\nworked case: {}", case.header.line());
+        for l in case.other_lines().take(4) {
+            let _ = writeln!(s, "  {}", l.line());
         }
         for l in &evals {
             let _ = writeln!(s, "  {l}");
@@ -408,9 +408,7 @@ pub(super) fn explain_text(
             }
         }
     } else if lines > 0 {
-        let shown = case
-            .map(|c| c.lines.iter().filter(|l| l.contains("both sides")).count())
-            .unwrap_or(0);
+        let shown = case.map(|c| c.evaluations().count()).unwrap_or(0);
         let _ = writeln!(
             s,
             "\nthe full log ({lines} lines, {} case{}; {shown} evaluations in the worked case): --explain {} --verbose",
@@ -424,7 +422,6 @@ pub(super) fn explain_text(
 
 #[cfg(test)]
 mod tests {
-    use super::super::argue::value_in;
     use super::*;
     use num_rational::BigRational;
 
@@ -477,27 +474,46 @@ mod tests {
 
     #[test]
     fn the_worked_case_is_the_last_of_degree_3_with_fractions_first() {
-        let steps: Vec<String> = [
-            "[n = 2] 'a' = 'b': …",
-            "    n = 2, t = 1/2: both sides = 1/4",
-            "[n = 3] 'a' = 'b': …",
-            "    degree in t: … so 4 points suffice",
-            "    n = 3, t = 0: both sides = 0",
-            "[n = 3] 'b' = 'c': …",
-            "    n = 3, t = 0: both sides = 0",
-            "    n = 3, t = 1/3, b[1] = 1, other b[j] = 0: both sides = 4/9",
-            "[n = 13] 'b' = 'c': …",
-        ]
-        .map(String::from)
-        .to_vec();
+        use super::super::checked::{Evaluation, Step};
+        let q = |s: &str| s.parse::<BigRational>().unwrap();
+        let eval = |n: i64, t: &str, unit: Option<usize>, value: &str| {
+            let basis = unit
+                .map(|k| format!(", b[{k}] = 1, other b[j] = 0"))
+                .unwrap_or_default();
+            Step::evaluation(Evaluation {
+                at: format!("n = {n}, t = {t}{basis}"),
+                values: vec![("n".into(), q(&n.to_string())), ("t".into(), q(t))],
+                unit,
+                value: value.into(),
+            })
+            .nested(2)
+        };
+        let case = |n: i64, text: &str| Step::instance(vec![("n".into(), n)], text.into());
+        let steps = vec![
+            case(2, "'a' = 'b': …"),
+            eval(2, "1/2", None, "1/4"),
+            case(3, "'a' = 'b': …"),
+            Step::text("degree in t: … so 4 points suffice").nested(2),
+            eval(3, "0", None, "0"),
+            case(3, "'b' = 'c': …"),
+            eval(3, "0", None, "0"),
+            eval(3, "1/3", Some(1), "4/9"),
+            case(13, "'b' = 'c': …"),
+        ];
+        assert_eq!(steps[1].to_string(), "    n = 2, t = 1/2: both sides = 1/4");
         let all = cases(&steps);
         assert_eq!(all.len(), 4);
         let case = worked_case(&all).unwrap();
-        assert_eq!(case.header, "[n = 3] 'b' = 'c': …");
+        assert_eq!(case.header.line(), "[n = 3] 'b' = 'c': …");
         let evals = sample_evaluations(case, 4);
-        assert_eq!(evals, ["n = 3, t = 1/3, b[1] = 1, other b[j] = 0: both sides = 4/9"]);
-        assert_eq!(value_in(evals[0], "t"), Some(BigRational::new(1.into(), 3.into())));
-        assert_eq!(value_in(evals[0], "n"), Some(BigRational::from_integer(3.into())));
-        assert_eq!(value_in(evals[0], "u"), None);
+        assert_eq!(evals.len(), 1);
+        assert_eq!(
+            evals[0].to_string(),
+            "n = 3, t = 1/3, b[1] = 1, other b[j] = 0: both sides = 4/9"
+        );
+        assert_eq!(evals[0].value_of("t"), Some(&q("1/3")));
+        assert_eq!(evals[0].value_of("n"), Some(&q("3")));
+        assert_eq!(evals[0].value_of("u"), None);
+        assert_eq!(evals[0].unit, Some(1));
     }
 }

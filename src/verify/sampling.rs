@@ -2,7 +2,7 @@
 //! points, on a basis of control polygons; the work of a claim estimated before it runs.
 
 use super::checked::Verdict;
-use super::checked::{Checked, Method};
+use super::checked::{Checked, Evaluation, Method, Step};
 use super::context::Ctx;
 use super::eval::{Deg, Evaluator, Value};
 use super::expr::{self, check_index, Expr};
@@ -103,7 +103,7 @@ pub struct PairProof {
     /// Candidate parameters skipped because a denominator vanished.
     pub skipped: usize,
     /// Detailed lines (for explain).
-    pub lines: Vec<String>,
+    pub lines: Vec<Step>,
 }
 
 /// The outcome of one equality check.
@@ -217,7 +217,19 @@ fn prove_prepared<T: Exact>(
                 match l.equals(&r) {
                     Some(true) => {
                         if detail {
-                            lines.push(format!("{}: both sides = {l}", at()));
+                            lines.push(Step::evaluation(Evaluation {
+                                at: at(),
+                                values: ints
+                                    .iter()
+                                    .map(|(k, v)| (k.clone(), BigRational::from_integer((*v).into())))
+                                    .chain(params.iter().cloned().zip(values.iter().cloned()))
+                                    .collect(),
+                                unit: match b {
+                                    Basis::Unit(k) => Some(*k),
+                                    _ => None,
+                                },
+                                value: l.to_string(),
+                            }));
                         }
                     }
                     Some(false) => {
@@ -357,12 +369,12 @@ fn prepare<T: Exact>(
             dr.entries().first().map(|x| (*x).clone()).unwrap_or_default(),
         ));
         if detail {
-            proof.lines.push(format!(
+            proof.lines.push(Step::text(format!(
                 "degree in {v}: left side {}, right side {} (num/den bounds from the expression) ⇒ the cleared difference has degree ≤ {need}, so {} points suffice",
                 describe_deg(&dl, v),
                 describe_deg(&dr, v),
                 need + 1
-            ));
+            )));
         }
     }
     let object_degree = num.polygon.as_ref().map_or(0, |p| p.1.len() - 1)
@@ -562,7 +574,7 @@ pub fn check_chain<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Res
                     let mut c = Checked::new(Verdict::Fails, format!("{which}{cx}"));
                     c.method = method(sampled, basis);
                     c.steps = steps;
-                    c.steps.push(format!("FAILS {which}{cx}"));
+                    c.steps.push(Step::text(format!("FAILS {which}{cx}")));
                     return Ok(c);
                 }
                 PairResult::Proved(p) => {
@@ -576,19 +588,11 @@ pub fn check_chain<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Res
                     basis |= p.polygons > 1;
                     evaluations += p.evaluations;
                     if detail {
-                        let head = if inst.is_empty() {
-                            String::new()
-                        } else {
-                            format!(
-                                "[{}] ",
-                                inst.iter()
-                                    .map(|(k, v)| format!("{k} = {v}"))
-                                    .collect::<Vec<_>>()
-                                    .join(", ")
-                            )
-                        };
-                        steps.push(format!("{head}'{}' = '{}': {}", pair[0], pair[1], pair_summary(&p)));
-                        steps.extend(p.lines.iter().map(|l| format!("    {l}")));
+                        steps.push(Step::instance(
+                            inst.iter().map(|(k, v)| (k.clone(), *v)).collect(),
+                            format!("'{}' = '{}': {}", pair[0], pair[1], pair_summary(&p)),
+                        ));
+                        steps.extend(p.lines.iter().cloned().map(|l| l.nested(2)));
                     }
                     if first_params.is_empty() {
                         first_params = p.points.first().cloned().unwrap_or_default();

@@ -30,7 +30,7 @@
 //! exact values; a symbolic check that does not go through is an error, never a verdict.
 
 use super::checked::Verdict;
-use super::checked::{Checked, Method};
+use super::checked::{Checked, Method, Step};
 use super::claims::{Decls, Identity, IntRange};
 use super::context::Ctx;
 use super::expr::Expr;
@@ -127,7 +127,7 @@ pub fn nonneg_for_every(
     let dom = tr.domain(decls, rs)?;
     let lin = tr.lin(p, &dom)?;
     let mut log = Vec::new();
-    let mut check = |live: &[&Term], d: &Domain, place: &str, log: &mut Vec<String>| -> Result<Option<String>> {
+    let mut check = |live: &[&Term], d: &Domain, place: &str, log: &mut Vec<Step>| -> Result<Option<String>> {
         for t in live {
             if sym.poly_has_ints(&t.coef.num) || sym.poly_has_ints(&t.coef.den) {
                 // An affine coefficient in the integers (n, i + 1, …) shown ≥ 0 on the piece, or
@@ -172,10 +172,10 @@ pub fn nonneg_for_every(
                 }
             }
         }
-        log.push(format!(
+        log.push(Step::text(format!(
             "on {place}: {} live terms, each a product of factors ≥ 0",
             live.len()
-        ));
+        )));
         Ok(None)
     };
     let out = super::pieces::prove_pieces(&sym, &lin, &dom, &mut log, &mut check)?;
@@ -298,7 +298,7 @@ pub(crate) fn attempt_for_every(id: &str, decls: &Decls, identity: &Identity) ->
 
 /// The symbolic proof of `identity` over the open ranges of `decls`, parsed in the context of
 /// `closed` (the same declarations over finite ranges): the certificate and the proof's log.
-fn prove_symbolic(id: &str, decls: &Decls, identity: &Identity, closed: &Decls) -> Result<(String, Vec<String>)> {
+fn prove_symbolic(id: &str, decls: &Decls, identity: &Identity, closed: &Decls) -> Result<(String, Vec<Step>)> {
     let rs = &decls.ranges;
     let ctx = Ctx::new(id, closed, Vec::new())?;
     let sides: Vec<Expr> = identity
@@ -324,11 +324,11 @@ fn prove_symbolic(id: &str, decls: &Decls, identity: &Identity, closed: &Decls) 
             if unit {
                 let (_, deg) = tr.polygon.clone().expect("polygon");
                 d = d.with(Aff::var(UNIT)).with(deg.minus(&Aff::var(UNIT)));
-                tr.log.push(format!(
+                tr.log.push(Step::label(format!(
                     "the unit polygon b[{UNIT}] = 1 (others 0), for every 0 ≤ {UNIT} ≤ {deg}:"
-                ));
+                )));
             } else if decls.polygon.is_some() {
-                tr.log.push("the zero polygon:".into());
+                tr.log.push(Step::label("the zero polygon:"));
             }
             let (l, r) = match (&pair[0], &pair[1]) {
                 (Expr::Sum(..), other) if !matches!(other, Expr::Sum(..)) => {

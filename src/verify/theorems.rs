@@ -8,7 +8,7 @@
 //! invariance, the convex hull property, Theorem 1.2) have their own exact checks here.
 
 use super::checked::Verdict;
-use super::checked::{Checked, Method};
+use super::checked::{Checked, Method, Step};
 use super::claims::{Convergence, Decls, IntRange, PolygonSpec, Theorem};
 use super::context::Ctx;
 use super::sampling::{chain_work, check_chain, MAX_WORK};
@@ -306,8 +306,8 @@ pub fn check_theorem(id: &str, theorem: &Theorem, detail: bool) -> Result<Checke
         let out = check_chain::<Q>(&sub, &sides, detail)?;
         method = method.join(out.method);
         if detail {
-            steps.push(format!("{}: {}", p.label, p.chain.join(" = ")));
-            steps.extend(out.steps.iter().map(|s| format!("  {s}")));
+            steps.push(Step::text(format!("{}: {}", p.label, p.chain.join(" = "))));
+            steps.extend(out.steps.iter().cloned().map(|s| s.nested(1)));
         }
         if out.verdict == Verdict::Fails {
             let mut f = Checked::new(
@@ -459,10 +459,10 @@ fn convex_hull(lo: i64, hi: i64, detail: bool) -> Result<Checked> {
                 Some(w) => {
                     hull_checks += 1;
                     if detail && n == hi as usize {
-                        steps.push(format!(
+                        steps.push(Step::text(format!(
                             "n = {n}, t = {t}: b(t) = {p} = Σ w_i b_i with w = {:?}",
                             w.iter().map(|x| x.to_string()).collect::<Vec<_>>()
-                        ));
+                        )));
                     }
                 }
                 None => {
@@ -553,10 +553,10 @@ pub fn check_convergence(ctx: &Ctx<'_>, c: &Convergence, detail: bool) -> Result
                 ));
             }
             if detail {
-                lines.push(format!(
+                lines.push(Step::text(format!(
                     "{name}, r = {}: max_i |b_i^(r) − b(i/(n+r))|_∞ = {} ≤ {bound}",
                     e.r, e.max_norm
-                ));
+                )));
             }
         }
         let last = d.last().expect("r = 0 is always there");

@@ -2,6 +2,7 @@
 //! (sums with symbolic bounds evaluated by their WZ certificates or by induction from a
 //! closed form), for the symbolic route of [`super::symbolic`].
 
+use super::checked::Step;
 use super::claims::{Decls, IntRange};
 use super::context::Ctx;
 use super::eval::Alg;
@@ -58,7 +59,7 @@ pub struct Translator<'a> {
     certs: &'a [Expr],
     pub(crate) next_cert: usize,
     /// The proof's log.
-    pub log: Vec<String>,
+    pub log: Vec<Step>,
     /// The certificates used, for the one-line summary.
     pub used: Vec<String>,
 }
@@ -492,11 +493,11 @@ impl<'a> Translator<'a> {
         self.used.push(format!(
             "{what} (induction on {n} ≥ {n0}{direct}): R = {cert}{cert_note}"
         ));
-        self.log.push(format!(
+        self.log.push(Step::text(format!(
             "{what} by induction on {n} ≥ {n0}: F = {}; certificate R = {cert}, G = R·F = {}",
             show(&f),
             show(&g)
-        ));
+        )));
         let n1 = Aff::var(&n).shifted(1);
         let k1 = Aff::var(k).shifted(1);
         // 1. The WZ equation on a ≤ k ≤ b.
@@ -528,8 +529,10 @@ impl<'a> Translator<'a> {
             base.extend(lin_neg(&lin_subst(sym, &rhs, &n, &n0)));
             self.expect_zero(&base, &rest, &format!("{what}: the base case {n} = {n0}"))?;
         } else {
-            self.log
-                .push(format!("{what}: its value is its value at {n} = {n0}: {}", show(&rhs)));
+            self.log.push(Step::text(format!(
+                "{what}: its value is its value at {n} = {n0}: {}",
+                show(&rhs)
+            )));
         }
         Ok(value.unwrap_or(rhs))
     }
@@ -538,12 +541,12 @@ impl<'a> Translator<'a> {
         let mut log = Vec::new();
         match prove_zero(self.sym, lin, d, &mut log)? {
             ZeroOutcome::Zero(pieces) => {
-                self.log.push(format!(
+                self.log.push(Step::text(format!(
                     "{what}: proved on {} ({pieces} piece{})",
                     d.show(),
                     if pieces == 1 { "" } else { "s" }
-                ));
-                self.log.extend(log.into_iter().map(|l| format!("  {l}")));
+                )));
+                self.log.extend(log.into_iter().map(|l| l.nested(1)));
                 Ok(())
             }
             ZeroOutcome::NonZero { region, residue } => Err(Error::Domain(format!(
