@@ -312,3 +312,49 @@ fn derivatives_of_rational_curve_objects() {
     let e = identity("b''''(t)", "b''''(t)", curve).unwrap_err().to_string();
     assert!(e.contains("at most 3 times"), "{e}");
 }
+
+#[test]
+fn vanishes_is_the_identity_it_states() {
+    let v = |body: &str| {
+        check(&format!(
+            "[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"vanishes\"\n{body}"
+        ))
+    };
+    // for every value, for a range, and for every n (the alternating binomial sum, n ≥ 1)
+    assert_eq!(
+        v("vars = [\"t\"]\nexpr = \"B(0, 2, t) + B(1, 2, t) + B(2, 2, t) - 1\"")
+            .unwrap()
+            .0,
+        Verdict::Proved
+    );
+    assert_eq!(
+        v("for = [\"n = 1..=6\"]\nexpr = \"sum(k, 0, n, (-1)^k*C(n, k))\"")
+            .unwrap()
+            .0,
+        Verdict::ProvedInRange
+    );
+    let pascal = |rhs: &str| {
+        v(&format!(
+            "for = [\"n = 0..\", \"k = 1..=n+1\"]\nexpr = \"C(n+2, k) - {rhs}\""
+        ))
+    };
+    let (verdict, cert) = pascal("C(n+1, k) - C(n+1, k-1)").unwrap();
+    assert_eq!(verdict, Verdict::Proved, "{cert}");
+    // false: n = 0 gives 1, a shifted index for every n, a wrong sign, a nonzero polynomial
+    assert_eq!(
+        v("for = [\"n = 0..=6\"]\nexpr = \"sum(k, 0, n, (-1)^k*C(n, k))\"")
+            .unwrap()
+            .0,
+        Verdict::Fails
+    );
+    assert_eq!(pascal("C(n+1, k) - C(n+1, k+1)").unwrap().0, Verdict::Fails);
+    assert_eq!(
+        v("vars = [\"t\"]\nexpr = \"B(0, 2, t) - B(1, 2, t) + B(2, 2, t) - 1\"")
+            .unwrap()
+            .0,
+        Verdict::Fails
+    );
+    assert_eq!(v("vars = [\"t\"]\nexpr = \"t^5 - t^4\"").unwrap().0, Verdict::Fails);
+    let err = v("expr = \"0\"\nlhs = \"1\"").unwrap_err().to_string();
+    assert!(err.contains("unknown field `lhs`"), "{err}");
+}

@@ -273,12 +273,45 @@ impl Sides {
 }
 
 /// `kind = "identity"`: `lhs = rhs`, or every step of `chain`.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Deserialize)]
+#[serde(try_from = "IdentityFields")]
 pub struct Identity {
     /// The sides.
     pub sides: Sides,
     /// With open ranges: WZ certificates `R`, one per sum with a symbolic bound (innermost first).
     pub certificates: Vec<String>,
+}
+
+/// An identity's fields as written.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct IdentityFields {
+    lhs: Option<String>,
+    rhs: Option<String>,
+    chain: Option<Vec<String>>,
+    #[serde(default, deserialize_with = "one_or_many")]
+    certificate: Vec<String>,
+}
+
+fn one_or_many<'de, D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Vec<String>, D::Error> {
+    Certificates::deserialize(d)
+        .map(Certificates::into_list)
+        .map_err(|_| serde::de::Error::custom("certificate must be a string or a list of strings"))
+}
+
+impl TryFrom<IdentityFields> for Identity {
+    type Error = String;
+    fn try_from(f: IdentityFields) -> std::result::Result<Self, String> {
+        let sides = match (f.lhs, f.rhs, f.chain) {
+            (Some(l), Some(r), None) => Sides::Pair(l, r),
+            (None, None, Some(c)) => Sides::Chain(c),
+            _ => return Err("an identity needs either lhs and rhs, or chain".into()),
+        };
+        Ok(Identity {
+            sides,
+            certificates: f.certificate,
+        })
+    }
 }
 
 /// `kind = "implicit"`: the curve `on` satisfies `equation` for every parameter.
@@ -410,77 +443,105 @@ pub struct Inequality {
     pub interval: Option<[Number; 2]>,
 }
 
-/// What a claim states, one variant per kind, with the kind's own fields.
-#[derive(Clone, Debug)]
-pub enum Kind {
-    /// `identity`.
-    Identity(Identity),
-    /// `implicit`.
-    Implicit(Implicit),
-    /// `bezier_points`.
-    BezierPoints(BezierPoints),
-    /// `conic_type`.
-    ConicType(ConicType),
-    /// `weight_type` (of the curve in `curves`).
-    WeightType(WeightType),
-    /// `enneper` (the surface in `surfaces` is Enneper's surface).
-    Enneper,
-    /// `implies`.
-    Implies(Implies),
-    /// `theorem`.
-    Theorem(Theorem),
-    /// `convergence` (of the curve in `curves`).
-    Convergence(Convergence),
-    /// `fit` (of the curve in `curves`).
-    Fit(Fit),
-    /// `inequality`.
-    Inequality(Inequality),
+/// Writes [`Kind`] (one variant per kind, with the kind's own fields), [`KINDS`], the
+/// kind's name and declarations and the reading of its fields: a new kind is one line here,
+/// its struct, and its lowering in `kinds::check_kind`.
+macro_rules! claim_kinds {
+    ($( $(#[$doc:meta])* $variant:ident $(($fields:ty))? = $name:literal, declares $declares:expr; )*) => {
+        /// `kind = "vanishes"`: `expr = 0` for every value of the variables and ranges.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Vanishes {
+    /// The expression.
+    pub expr: String,
 }
 
-/// The kinds by their names in the file.
-pub const KINDS: [&str; 11] = [
-    "identity",
-    "implicit",
-    "bezier_points",
-    "conic_type",
-    "weight_type",
-    "enneper",
-    "implies",
-    "theorem",
-    "convergence",
-    "fit",
-    "inequality",
-];
-
-impl Kind {
-    /// The kind's name in the file.
-    pub fn name(&self) -> &'static str {
-        match self {
-            Kind::Identity(_) => "identity",
-            Kind::Implicit(_) => "implicit",
-            Kind::BezierPoints(_) => "bezier_points",
-            Kind::ConicType(_) => "conic_type",
-            Kind::WeightType(_) => "weight_type",
-            Kind::Enneper => "enneper",
-            Kind::Implies(_) => "implies",
-            Kind::Theorem(_) => "theorem",
-            Kind::Convergence(_) => "convergence",
-            Kind::Fit(_) => "fit",
-            Kind::Inequality(_) => "inequality",
+impl Vanishes {
+    /// The identity `expr = 0`.
+    pub fn identity(&self) -> Identity {
+        Identity {
+            sides: Sides::Pair(self.expr.clone(), "0".into()),
+            certificates: Vec::new(),
         }
     }
+}
 
-    /// The declarations ([`Decls`]) the kind takes.
-    pub fn declares(&self) -> &'static [&'static str] {
+/// What a claim states, one variant per kind, with the kind's own fields.
+        #[derive(Clone, Debug)]
+        pub enum Kind {
+            $( $(#[$doc])* $variant $(($fields))?, )*
+        }
+
+        /// The kinds by their names in the file.
+        pub const KINDS: &[&str] = &[$($name),*];
+
+        impl Kind {
+            /// The kind's name in the file.
+            pub fn name(&self) -> &'static str {
+                match self {
+                    $( Kind::$variant { .. } => $name, )*
+                }
+            }
+
+            /// The declarations ([`Decls`]) the kind takes.
+            pub fn declares(&self) -> &'static [&'static str] {
+                match self {
+                    $( Kind::$variant { .. } => $declares, )*
+                }
+            }
+
+            /// The kind named `kind`, from its own fields (unknown fields refused).
+            fn from_table(kind: &str, own: toml::Table) -> std::result::Result<Self, String> {
+                match kind {
+                    $( $name => claim_kinds!(@read $variant $(($fields))?, own), )*
+                    other => Err(format!("unknown kind '{other}' ({})", KINDS.join(", "))),
+                }
+            }
+        }
+    };
+    (@read $variant:ident ($fields:ty), $own:expr) => {
+        $own.try_into::<$fields>().map(Kind::$variant).map_err(|e| e.message().to_string())
+    };
+    (@read $variant:ident, $own:expr) => {
+        $own.try_into::<Empty>().map(|_| Kind::$variant).map_err(|e| e.message().to_string())
+    };
+}
+
+claim_kinds! {
+    /// `identity`.
+    Identity(Identity) = "identity", declares &DECLARATIONS;
+    /// `implicit`.
+    Implicit(Implicit) = "implicit", declares &["vars", "for", "let", "polygon", "net", "curves", "surfaces"];
+    /// `bezier_points`.
+    BezierPoints(BezierPoints) = "bezier_points", declares &["let"];
+    /// `conic_type`.
+    ConicType(ConicType) = "conic_type", declares &["let"];
+    /// `weight_type` (of the curve in `curves`).
+    WeightType(WeightType) = "weight_type", declares &["curves"];
+    /// `enneper` (the surface in `surfaces` is Enneper's surface).
+    Enneper = "enneper", declares &["surfaces"];
+    /// `implies`.
+    Implies(Implies) = "implies", declares &["symbols", "vectors", "let"];
+    /// `theorem`.
+    Theorem(Theorem) = "theorem", declares &[];
+    /// `convergence` (of the curve in `curves`).
+    Convergence(Convergence) = "convergence", declares &["curves"];
+    /// `fit` (of the curve in `curves`).
+    Fit(Fit) = "fit", declares &["curves"];
+    /// `inequality`.
+    Inequality(Inequality) = "inequality", declares &["vars", "for", "let"];
+    /// `vanishes`.
+    Vanishes(Vanishes) = "vanishes", declares &DECLARATIONS;
+}
+
+impl Kind {
+    /// The identity the kind states, for the kinds that state one (the every-n route and the
+    /// range-bound note take it).
+    pub fn identity(&self) -> Option<std::borrow::Cow<'_, Identity>> {
         match self {
-            Kind::Identity(_) => &DECLARATIONS,
-            Kind::Implicit(_) => &["vars", "for", "let", "polygon", "net", "curves", "surfaces"],
-            Kind::BezierPoints(_) | Kind::ConicType(_) => &["let"],
-            Kind::WeightType(_) | Kind::Convergence(_) | Kind::Fit(_) => &["curves"],
-            Kind::Enneper => &["surfaces"],
-            Kind::Implies(_) => &["symbols", "vectors", "let"],
-            Kind::Theorem(_) => &[],
-            Kind::Inequality(_) => &["vars", "for", "let"],
+            Kind::Identity(i) => Some(std::borrow::Cow::Borrowed(i)),
+            Kind::Vanishes(v) => Some(std::borrow::Cow::Owned(v.identity())),
+            _ => None,
         }
     }
 
@@ -504,54 +565,9 @@ impl Kind {
                 ("factor", &i.factor),
             ],
             Kind::BezierPoints(b) => vec![("power", &b.power)],
+            Kind::Vanishes(v) => vec![("expr", &v.expr)],
             _ => Vec::new(),
         }
-    }
-
-    fn from_table(kind: &str, mut own: toml::Table) -> std::result::Result<Self, String> {
-        fn take<T: serde::de::DeserializeOwned>(own: toml::Table) -> std::result::Result<T, String> {
-            own.try_into().map_err(|e: toml::de::Error| e.message().to_string())
-        }
-        Ok(match kind {
-            "identity" => {
-                let certificates = match own.remove("certificate") {
-                    None => Vec::new(),
-                    Some(v) => v
-                        .try_into::<Certificates>()
-                        .map_err(|_| "certificate must be a string or a list of strings".to_string())?
-                        .into_list(),
-                };
-                let (lhs, rhs, chain) = (own.remove("lhs"), own.remove("rhs"), own.remove("chain"));
-                if let Some(k) = own.keys().next() {
-                    return Err(format!(
-                        "unknown field `{k}`, expected one of `lhs`, `rhs`, `chain`, `certificate`"
-                    ));
-                }
-                let text = |v: toml::Value| v.try_into::<String>().map_err(|e| e.message().to_string());
-                let sides = match (lhs, rhs, chain) {
-                    (Some(l), Some(r), None) => Sides::Pair(text(l)?, text(r)?),
-                    (None, None, Some(c)) => {
-                        Sides::Chain(c.try_into().map_err(|e: toml::de::Error| e.message().to_string())?)
-                    }
-                    _ => return Err("an identity needs either lhs and rhs, or chain".into()),
-                };
-                Kind::Identity(Identity { sides, certificates })
-            }
-            "implicit" => Kind::Implicit(take(own)?),
-            "bezier_points" => Kind::BezierPoints(take(own)?),
-            "conic_type" => Kind::ConicType(take(own)?),
-            "weight_type" => Kind::WeightType(take(own)?),
-            "enneper" => {
-                take::<Empty>(own)?;
-                Kind::Enneper
-            }
-            "implies" => Kind::Implies(take(own)?),
-            "theorem" => Kind::Theorem(take(own)?),
-            "convergence" => Kind::Convergence(take(own)?),
-            "fit" => Kind::Fit(take(own)?),
-            "inequality" => Kind::Inequality(take(own)?),
-            other => return Err(format!("unknown kind '{other}' ({})", KINDS.join(", "))),
-        })
     }
 }
 

@@ -45,10 +45,10 @@ use std::rc::Rc;
 pub fn check_claim(claim: &Claim, detail: bool) -> Result<Checked> {
     super::names::check_declarations(claim)?;
     if claim.for_every() {
+        if let (Some(identity), false) = (claim.kind.identity(), claim.decls.symbolic()) {
+            return super::symbolic::check(&claim.id, &claim.decls, &identity, detail);
+        }
         return match &claim.kind {
-            Kind::Identity(identity) if !claim.decls.symbolic() => {
-                super::symbolic::check(&claim.id, &claim.decls, identity, detail)
-            }
             Kind::Inequality(ineq) => super::inequality::check_for_every(&claim.id, &claim.decls, ineq, detail),
             _ => Err(Error::Parse(format!(
                 "claim {}: open ranges (n = 0..) are for identity (without symbols or vectors) and inequality claims",
@@ -96,6 +96,7 @@ fn check_kind(ctx: &Ctx<'_>, kind: &Kind, detail: bool) -> Result<Checked> {
         Kind::Convergence(c) => theorems::check_convergence(ctx, c, detail),
         Kind::Fit(f) => check_fit(ctx, f),
         Kind::Inequality(i) => super::inequality::check_inequality(ctx, i, detail),
+        Kind::Vanishes(v) => check_identity(ctx.id, ctx.decls, &v.identity().sides.members(), detail),
     }
 }
 

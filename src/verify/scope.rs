@@ -29,20 +29,19 @@ pub fn range_bound(claim: &Claim, verdict: Verdict) -> Option<String> {
 }
 
 fn reason(claim: &Claim) -> String {
-    let identity = match &claim.kind {
-        Kind::Theorem(t) => return theorem_reason(&claim.id, t),
-        Kind::Identity(identity) => identity,
-        other => {
-            return format!(
-                "kind `{}` is checked case by case; the symbolic route takes identity claims",
-                other.name()
-            )
-        }
+    if let Kind::Theorem(t) = &claim.kind {
+        return theorem_reason(&claim.id, t);
+    }
+    let Some(identity) = claim.kind.identity() else {
+        return format!(
+            "kind `{}` is checked case by case; the symbolic route takes identity claims",
+            claim.kind.name()
+        );
     };
     let goal = Goal {
         id: claim.id.clone(),
         decls: claim.decls.clone(),
-        identity: identity.clone(),
+        identity: identity.into_owned(),
     };
     let decls = &goal.decls;
     if decls.symbolic() {
