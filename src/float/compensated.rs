@@ -272,4 +272,16 @@ mod tests {
         assert_eq!(compensated_derivative(&[2.0], 0.5), (0.0, 0.0));
         assert_eq!(a_priori_bound(&[2.0], 0.3), 0.0);
     }
+
+    /// A line's derivative `b_1 − b_0` is rounded once: its bound is not 0 (it was).
+    #[test]
+    fn a_lines_derivative_has_a_sound_bound() {
+        use crate::float::error_at_most;
+        use crate::scalar::Scalar;
+        use num_rational::BigRational;
+        let b = [0.1, 1e20];
+        let (res, e) = compensated_derivative(&b, 0.3);
+        let exact = BigRational::from_f64(1e20).unwrap() - BigRational::from_f64(0.1).unwrap();
+        assert!(e > 0.0 && error_at_most(res, &exact, e), "{res} ± {e}");
+    }
 }

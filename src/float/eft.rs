@@ -84,7 +84,7 @@ pub fn two_product_fma(a: f64, b: f64) -> (f64, f64) {
 pub fn two_product_dekker(a: f64, b: f64) -> (f64, f64) {
     let p = a * b;
     let ap = p.abs();
-    if ap >= MIN_EXACT_PRODUCT && ap < MAX_EXACT_PRODUCT && a.abs() <= MAX_SPLIT && b.abs() <= MAX_SPLIT {
+    if (MIN_EXACT_PRODUCT..MAX_EXACT_PRODUCT).contains(&ap) && a.abs() <= MAX_SPLIT && b.abs() <= MAX_SPLIT {
         return (p, dekker_error(split(a), split(b), p));
     }
     (p, dekker_edge(a, b, p))
