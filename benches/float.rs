@@ -1,11 +1,12 @@
 //! Float evaluators side by side: plain de Casteljau, with its running bound, compensated,
-//! the generic algorithm on `f64` and on `Interval`, and kurbo's cubic, one coordinate of a
-//! curve of degree 3, 10, 20 at t = 0.3.
+//! the generic algorithm on `f64` and on `Interval`, `interval_de_casteljau`, and kurbo's
+//! cubic, one coordinate of a curve of degree 3, 10, 20 at t = 0.3. `plain` is the floor they
+//! are measured against: the obvious hand loop of de Casteljau (convex form) on a stack array.
 //!
 //! `cargo bench --bench float`.
 
 use casteljau::float::{compensated_de_casteljau, de_casteljau, de_casteljau_running};
-use casteljau::Interval;
+use casteljau::{interval_de_casteljau, Interval};
 use casteljau::{BezierCurve, Scalar};
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use kurbo::{CubicBez, ParamCurve};
@@ -13,6 +14,29 @@ use std::time::Duration;
 
 fn coefficients(n: usize) -> Vec<f64> {
     (0..=n).map(|i| ((i * 7919) % 13) as f64 / 6.5 - 1.0).collect()
+}
+
+/// de Casteljau by hand, `b_i ← (1 − t) b_i + t b_{i+1}` in place on a copy on the stack.
+fn plain<const N: usize>(points: &[f64; N], t: f64) -> f64 {
+    let mut b = *points;
+    let s = 1.0 - t;
+    for len in (1..N).rev() {
+        for i in 0..len {
+            b[i] = s * b[i] + t * b[i + 1];
+        }
+    }
+    b[0]
+}
+
+fn bench_plain<const N: usize>(
+    group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+    b: &[f64],
+    t: f64,
+) {
+    let array: [f64; N] = b.try_into().expect("N coefficients");
+    group.bench_function(BenchmarkId::new("plain", N - 1), |bch| {
+        bch.iter(|| plain(black_box(&array), black_box(t)))
+    });
 }
 
 fn evaluators(c: &mut Criterion) {
@@ -25,6 +49,11 @@ fn evaluators(c: &mut Criterion) {
         let interval: BezierCurve<Interval> =
             BezierCurve::from_coords(b.iter().map(|x| vec![Interval::from_f64(*x).unwrap()]).collect()).unwrap();
         let ti = Interval::from_f64(t).unwrap();
+        match n {
+            3 => bench_plain::<4>(&mut group, &b, t),
+            10 => bench_plain::<11>(&mut group, &b, t),
+            _ => bench_plain::<21>(&mut group, &b, t),
+        }
         group.bench_with_input(BenchmarkId::new("de_casteljau", n), &b, |bch, b| {
             bch.iter(|| de_casteljau(black_box(b), black_box(t)))
         });
@@ -39,6 +68,9 @@ fn evaluators(c: &mut Criterion) {
         });
         group.bench_with_input(BenchmarkId::new("interval", n), &interval, |bch, c| {
             bch.iter(|| c.eval(black_box(&ti)))
+        });
+        group.bench_with_input(BenchmarkId::new("interval_de_casteljau", n), &b, |bch, b| {
+            bch.iter(|| interval_de_casteljau(black_box(b), black_box(t)))
         });
         if n == 3 {
             let p = |x: f64| kurbo::Point::new(x, 0.0);

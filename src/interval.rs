@@ -23,7 +23,9 @@
 
 use crate::conic::{classify_conic, ConicKind};
 use crate::error::{Error, Result};
-use crate::float::{nearest_f64, next_down, next_up, two_product, two_sum, ulp_exponent_f64};
+use crate::float::{
+    nearest_f64, next_down, next_up, two_product, two_sum, ulp_exponent_f64, with_scratch, ExactRange, Factor,
+};
 use crate::point::Point;
 use crate::rational::RationalBezierCurve;
 use crate::scalar::{forward_ring_ops, Ring, Scalar};
@@ -454,7 +456,8 @@ pub fn filtered_hull_contains(points: &[[f64; 2]], p: [f64; 2]) -> Result<bool> 
 /// in the convex form `[1 − t]·a + [t]·b` (with `[1 − t]` the two floats around `1 − t`
 /// when it is no float). Unlike the lerp form `a + t·(b − a)` of the generic algorithm, its
 /// intermediate values stay within the coefficients' range for `t ∈ [0, 1]`, so inputs up to
-/// the largest `f64` give finite enclosures. An error for a non-finite input.
+/// the largest `f64` give finite enclosures. An error for a non-finite input. No heap
+/// allocation up to [`crate::float::STACK_COEFFICIENTS`] coefficients.
 ///
 /// ```
 /// use casteljau::interval_de_casteljau;
@@ -463,17 +466,87 @@ pub fn filtered_hull_contains(points: &[[f64; 2]], p: [f64; 2]) -> Result<bool> 
 /// ```
 pub fn interval_de_casteljau(b: &[f64], t: f64) -> Result<Interval> {
     let t = Interval::from_f64(t)?;
+    if let Some(x) = b.iter().find(|x| !x.is_finite()) {
+        return Err(Error::NotFinite(x.to_string()));
+    }
     let (s, rho) = two_sum(1.0, -t.lo);
     let s = Interval {
         lo: down(s, rho),
         hi: up(s, rho),
     };
-    let mut buf = b.iter().map(|x| Interval::from_f64(*x)).collect::<Result<Vec<_>>>()?;
-    let n = b.len() - 1;
-    for r in 1..=n {
-        for i in 0..=n - r {
-            buf[i] = s * buf[i] + t * buf[i + 1];
+    let fill = |buf: &mut [Interval]| {
+        for (x, y) in buf.iter_mut().zip(b) {
+            *x = Interval { lo: *y, hi: *y };
+        }
+    };
+    Ok(with_scratch(b.len(), Interval::zero(), |buf| {
+        fill(buf);
+        if t.lo > 0.0 && t.lo < 1.0 {
+            if let Some(x) = convex_triangle(buf, s, t.lo) {
+                return x;
+            }
+            fill(buf);
+        }
+        for len in (1..buf.len()).rev() {
+            for i in 0..len {
+                buf[i] = s * buf[i] + t * buf[i + 1];
+            }
+        }
+        buf[0]
+    }))
+}
+
+/// `[s]·a + [t]·b` for every node of de Casteljau's triangle in place, for `0 < t < 1`
+/// (so `0 < s.lo ≤ s.hi`): the same endpoints as the interval operations, computed with
+/// the two products each endpoint needs instead of four (the sign of `a`'s endpoint picks
+/// `s.lo` or `s.hi`; rounding down is monotone, so the other candidates never win). That
+/// holds while every rounding error is a float and nothing nears overflow: `None` when a
+/// value left that range (the buffer is then spent).
+#[inline(always)]
+fn convex_triangle(buf: &mut [Interval], s: Interval, t: f64) -> Option<Interval> {
+    let (s_lo, s_hi, by_t) = (Factor::new(s.lo), Factor::new(s.hi), Factor::new(t));
+    // products below 2^1020 (t, s ≤ 1), so their sums stay finite
+    let range = ExactRange::exact(&[s_lo, s_hi, by_t]).capped(MAX_ENDPOINT);
+    let in_range = |x: &Interval| range.contains(x.lo) & range.contains(x.hi);
+    let halves = |x: &Interval| (Factor::halves(x.lo), Factor::halves(x.hi));
+    // `+ 0.0` makes a product's −0 the +0 the interval product gives it
+    let product_down = |x: f64, h, f: &Factor, k: f64| {
+        let p = k * x;
+        down(p, f.error(x, h, p)) + 0.0
+    };
+    let product_up = |x: f64, h, f: &Factor, k: f64| {
+        let p = k * x;
+        up(p, f.error(x, h, p)) + 0.0
+    };
+    let mut ok = true;
+    for len in (1..buf.len()).rev() {
+        let mut a = buf[0];
+        let mut a_halves = halves(&a);
+        ok &= in_range(&a);
+        for i in 0..len {
+            let b = buf[i + 1];
+            let b_halves = halves(&b);
+            ok &= in_range(&b);
+            let lo = {
+                let (f, k) = if a.lo >= 0.0 { (&s_lo, s.lo) } else { (&s_hi, s.hi) };
+                let x = product_down(a.lo, a_halves.0, f, k);
+                let y = product_down(b.lo, b_halves.0, &by_t, t);
+                let (l, e) = two_sum(x, y);
+                down(l, e)
+            };
+            let hi = {
+                let (f, k) = if a.hi >= 0.0 { (&s_hi, s.hi) } else { (&s_lo, s.lo) };
+                let x = product_up(a.hi, a_halves.1, f, k);
+                let y = product_up(b.hi, b_halves.1, &by_t, t);
+                let (h, e) = two_sum(x, y);
+                up(h, e)
+            };
+            buf[i] = Interval { lo, hi };
+            (a, a_halves) = (b, b_halves);
         }
     }
-    Ok(buf[0])
+    ok.then_some(buf[0])
 }
+
+/// The largest endpoint [`convex_triangle`] takes: `2^1020`.
+const MAX_ENDPOINT: f64 = f64::from_bits((1020 + 1023) << 52);

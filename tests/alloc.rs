@@ -74,3 +74,67 @@ fn runtime_dimension_points_are_inline() {
     let (n, _) = allocations(|| c.split_at(&0.3));
     assert_eq!(n, 0, "BezierCurve<f64>::split_at allocated");
 }
+
+/// Every `f64` evaluator of `casteljau::float` (plain, lerp, running bound, a priori
+/// bounds, compensated value, derivative and surface) and `interval_de_casteljau` work on
+/// stack copies: no allocation at any degree up to the documented limit, and the counter does
+/// see the heap copy one coefficient beyond it.
+#[test]
+fn float_evaluators_allocate_nothing_up_to_the_stack_limit() {
+    use casteljau::float::*;
+    use casteljau::interval_de_casteljau;
+    fn evaluate_all(b: &[f64], t: f64) -> f64 {
+        let mut acc = de_casteljau(b, t);
+        acc += lerp_de_casteljau(b, t) + lerp_bound(b, t);
+        acc += abs_bernstein_sum(b, t) + a_priori_bound(b, t);
+        let (v, e) = de_casteljau_running(b, t);
+        acc += v + e;
+        let (v, e) = compensated_de_casteljau(b, t);
+        acc += v + e + compensated_a_priori_bound(b, t, v);
+        let (v, e) = compensated_derivative(b, t);
+        acc += v + e;
+        let iv = interval_de_casteljau(b, t).expect("finite");
+        acc + iv.lo() + iv.hi()
+    }
+    for len in 1..=STACK_COEFFICIENTS {
+        let b: Vec<f64> = (0..len).map(|i| ((i * 7919) % 13) as f64 / 6.5 - 1.0).collect();
+        for t in [0.3, 0.75, 1.0, 0.0, -0.5, 1e-310] {
+            let (n, value) = allocations(|| evaluate_all(&b, t));
+            assert_eq!(n, 0, "an evaluator allocated at degree {} and t = {t}", len - 1);
+            assert!(value.is_finite());
+        }
+        // a value near underflow sends the compensated and interval triangles to their
+        // second run, which must not allocate either
+        let mut tiny = b.clone();
+        tiny[0] = 1e-300;
+        let (n, _) = allocations(|| evaluate_all(&tiny, 0.3));
+        assert_eq!(n, 0, "a second run allocated at degree {}", len - 1);
+    }
+    let net: Vec<Vec<f64>> = (0..8)
+        .map(|i| (0..6).map(|j| (i * j % 5) as f64 - 2.0).collect())
+        .collect();
+    let (n, _) = allocations(|| compensated_surface(&net, 0.3, 0.6));
+    assert_eq!(n, 0, "compensated_surface allocated");
+    let long = vec![0.5; STACK_COEFFICIENTS + 1];
+    let (n, _) = allocations(|| compensated_de_casteljau(&long, 0.3));
+    assert!(n > 0, "the counter misses the heap copy above the stack limit");
+}
+
+/// The generic algorithm on `Interval` scalars keeps its column on the stack too (up to the
+/// kernel's `STACK_POINTS` points).
+#[test]
+fn generic_interval_eval_allocates_nothing() {
+    use casteljau::{BezierCurve, Interval, Scalar};
+    for len in [4, 11, 21] {
+        let c: BezierCurve<Interval> = BezierCurve::from_coords(
+            (0..len)
+                .map(|i| vec![Interval::from_f64(((i * 7919) % 13) as f64 / 6.5 - 1.0).unwrap()])
+                .collect(),
+        )
+        .unwrap();
+        let t = Interval::from_f64(0.3).unwrap();
+        let (n, p) = allocations(|| c.eval(&t));
+        assert_eq!(n, 0, "BezierCurve<Interval>::eval allocated at degree {}", len - 1);
+        assert!(p.coords()[0].lo() <= p.coords()[0].hi());
+    }
+}

@@ -5,6 +5,7 @@
 //! derivations are in `docs/float-bounds.md` and the tests check each bound exactly.
 
 use super::casteljau::{abs_bernstein_sum, add_up, gamma, mul_up, next_up, underflow_term};
+use super::scratch::{with_copy, with_mapped};
 use super::ulp::{round_scaled, scale_pow2_up};
 use num_bigint::{BigInt, BigUint, Sign};
 use num_traits::{One, Zero};
@@ -16,14 +17,14 @@ use num_traits::{One, Zero};
 /// assert_eq!(lerp_de_casteljau(&[0.0, 1.0, 3.0], 0.5), 1.25);
 /// ```
 pub fn lerp_de_casteljau(b: &[f64], t: f64) -> f64 {
-    let mut buf = b.to_vec();
-    let n = b.len() - 1;
-    for r in 1..=n {
-        for i in 0..=n - r {
-            buf[i] += t * (buf[i + 1] - buf[i]);
+    with_copy(b, |buf| {
+        for len in (1..buf.len()).rev() {
+            for i in 0..len {
+                buf[i] += t * (buf[i + 1] - buf[i]);
+            }
         }
-    }
-    buf[0]
+        buf[0]
+    })
 }
 
 /// The a priori bound of [`lerp_de_casteljau`]: `γ_{4n} Σ|b_i| L_i(t) + U`, where `L_i` are
@@ -40,13 +41,15 @@ pub fn lerp_bound(b: &[f64], t: f64) -> f64 {
     let alpha = add_up(s.abs(), rho.abs());
     let beta = t.abs();
     let wa = add_up(alpha, beta);
-    let mut buf: Vec<f64> = b.iter().map(|x| x.abs()).collect();
-    for r in 1..=n {
-        for i in 0..=n - r {
-            buf[i] = add_up(mul_up(wa, buf[i]), mul_up(beta, buf[i + 1]));
+    let sum = with_mapped(b, f64::abs, |buf| {
+        for len in (1..buf.len()).rev() {
+            for i in 0..len {
+                buf[i] = add_up(mul_up(wa, buf[i]), mul_up(beta, buf[i + 1]));
+            }
         }
-    }
-    add_up(mul_up(gamma(4 * n), buf[0]), underflow_term(n, 1.0, add_up(wa, beta)))
+        buf[0]
+    });
+    add_up(mul_up(gamma(4 * n), sum), underflow_term(n, 1.0, add_up(wa, beta)))
 }
 
 /// The power-basis coefficients `a_0..a_n` of `Σ b_i B_i^n(t) = Σ a_i t^i`, each rounded to

@@ -10,22 +10,29 @@
 //! whole `f64` range, underflow included, and is checked exactly, in rationals, by the tests.
 
 mod casteljau;
+mod compensated;
 mod dyadic;
 mod eft;
 mod methods;
+mod scratch;
 mod ulp;
 
 pub use casteljau::{
-    a_priori_bound, a_priori_index, abs_bernstein_sum, compensated_a_priori_bound, compensated_de_casteljau,
-    compensated_derivative, compensated_surface, de_casteljau, de_casteljau_running, gamma, gamma_exact, next_down,
-    next_up, rational_a_priori_bound, surface_a_priori_bound, underflow_term, UNIT_ROUNDOFF,
+    a_priori_bound, a_priori_index, abs_bernstein_sum, de_casteljau, de_casteljau_running, gamma, gamma_exact,
+    next_down, next_up, rational_a_priori_bound, surface_a_priori_bound, underflow_term, UNIT_ROUNDOFF,
+};
+pub use compensated::{
+    compensated_a_priori_bound, compensated_de_casteljau, compensated_derivative, compensated_surface,
 };
 pub use dyadic::{dyadic_ratio, eval_dyadic};
-pub use eft::{fast_two_sum, two_product, two_sum};
+pub use eft::{fast_two_sum, two_product, two_product_dekker, two_product_fma, two_sum, TWO_PRODUCT_METHOD};
+pub(crate) use eft::{ExactRange, Factor};
 pub use methods::{
     bernstein_bound, bernstein_sum, binomials, condition_number, horner, horner_bound, lerp_bound, lerp_de_casteljau,
     power_coefficients,
 };
+pub(crate) use scratch::with_scratch;
+pub use scratch::STACK_COEFFICIENTS;
 pub use ulp::{
     decompose, error_at_most, exact_f64, f64_to_rational, nearest_f64, pow2_exact, round_scaled, scale_pow2_up, ulp,
     ulp_distance, ulp_error, ulp_exponent, ulp_exponent_f64, UlpError,

@@ -1,0 +1,131 @@
+//! TwoProduct is exact on every target: the method this build uses
+//! (`casteljau::float::TWO_PRODUCT_METHOD`), Dekker's product and the FMA form are compared
+//! with the exact `a·b − p` computed in rationals, on random floats of every magnitude and
+//! on the edges: subnormals, products near underflow, operands beyond Dekker's split limit
+//! (2^995) and products near overflow, signed zeros, infinities and NaN.
+
+use casteljau::float::{nearest_f64, two_product, two_product_dekker, two_product_fma, TWO_PRODUCT_METHOD};
+use casteljau::{BigRational, Scalar};
+
+#[path = "support/rng.rs"]
+mod rng;
+use rng::Rng;
+
+fn exact(x: f64) -> BigRational {
+    BigRational::from_f64(x).unwrap()
+}
+
+/// Checks one pair: `p` is the rounded product, the error is `a·b − p` rounded to nearest
+/// (exactly it when that is a float), and all three methods agree bit for bit.
+fn check(a: f64, b: f64) {
+    let (p, e) = two_product(a, b);
+    let (pd, ed) = two_product_dekker(a, b);
+    let (pf, ef) = two_product_fma(a, b);
+    assert_eq!(p.to_bits(), (a * b).to_bits(), "{a:e} * {b:e}");
+    assert_eq!((pd.to_bits(), pf.to_bits()), (p.to_bits(), p.to_bits()));
+    if !p.is_finite() {
+        // no exact error exists; both methods give what the FMA gives
+        assert_eq!(ed.is_nan(), ef.is_nan(), "{a:e} * {b:e}");
+        if !ef.is_nan() {
+            assert_eq!(ed.to_bits(), ef.to_bits(), "{a:e} * {b:e}");
+        }
+        return;
+    }
+    let err = exact(a) * exact(b) - exact(p);
+    let rounded = nearest_f64(&err);
+    for (name, x) in [("chosen", e), ("dekker", ed), ("fma", ef)] {
+        assert_eq!(
+            x.to_bits(),
+            // an exact zero error is +0 (a·b + (−p) with equal magnitudes); a tiny one
+            // rounds to the zero of its sign
+            if num_traits::Zero::is_zero(&err) {
+                0.0f64.to_bits()
+            } else {
+                rounded.to_bits()
+            },
+            "{name}: {a:e} * {b:e} = {p:e} + {x:e}, exactly + {rounded:e}"
+        );
+    }
+    // when the error is a float, p + e is the product exactly
+    if exact(rounded) == err {
+        assert_eq!(exact(p) + exact(e), exact(a) * exact(b));
+    }
+}
+
+/// A float with random significand bits and an exponent in `lo..hi` (binary), random sign.
+fn random_float(rng: &mut Rng, lo: i32, hi: i32) -> f64 {
+    let m = 1.0 + rng.unit();
+    let e = lo + ((rng.next() % (hi - lo) as u64) as i32);
+    let x = m * 2f64.powi(e / 2) * 2f64.powi(e - e / 2);
+    if rng.next() % 2 == 0 {
+        -x
+    } else {
+        x
+    }
+}
+
+#[test]
+fn the_chosen_method_is_named() {
+    let expected = if cfg!(target_feature = "fma") { "fma" } else { "dekker" };
+    assert_eq!(TWO_PRODUCT_METHOD, expected);
+}
+
+#[test]
+fn random_products_of_every_magnitude_are_exact() {
+    let mut rng = Rng(24);
+    for _ in 0..20_000 {
+        let a = random_float(&mut rng, -1074, 1024);
+        let b = random_float(&mut rng, -1074, 1024);
+        check(a, b);
+        // products near 1, where compensated algorithms live
+        check(random_float(&mut rng, -60, 60), random_float(&mut rng, -60, 60));
+        // random bit patterns: subnormals, zeros, infinities and NaN included
+        check(f64::from_bits(rng.next()), f64::from_bits(rng.next()));
+    }
+}
+
+#[test]
+fn edge_products_are_exact() {
+    let two = |e: i32| 2f64.powi(e / 2) * 2f64.powi(e - e / 2);
+    let odd = 1.0 + f64::EPSILON; // every significand bit matters
+    let mut values = vec![
+        0.0,
+        -0.0,
+        f64::MIN_POSITIVE,
+        5e-324,
+        1e-310,
+        -2.5e-320,
+        f64::MAX,
+        -f64::MAX,
+        1e308,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NAN,
+        0.1,
+        0.3,
+        1.0 / 3.0,
+        134_217_729.0,
+    ];
+    // around Dekker's limits: operands near 2^995 (the split overflows above 2^996),
+    // products near 2^1023 and 2^−967, near 2^−1022 and the smallest subnormal
+    for e in [
+        995, 996, 997, 1000, 1023, 511, 512, 28, 27, -967, -968, -1022, -1000, -53, -100, -500,
+    ] {
+        values.extend([two(e), two(e) * odd, -two(e) * (2.0 - f64::EPSILON), two(e) * 1.5]);
+    }
+    for &a in &values {
+        for &b in &values {
+            check(a, b);
+        }
+    }
+    // near overflow with full significands: the scaled path
+    let mut rng = Rng(1024);
+    for _ in 0..5_000 {
+        let big = random_float(&mut rng, 960, 1024);
+        let small = random_float(&mut rng, -10, 1023 - (big.abs().log2() as i32));
+        check(big, small);
+        check(small, big);
+        let tiny = random_float(&mut rng, -1074, -900);
+        check(tiny, random_float(&mut rng, -100, 100));
+    }
+}
