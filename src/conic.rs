@@ -29,6 +29,12 @@ pub enum ConicKind {
     /// An implicit conic whose 3×3 matrix is singular: a pair of lines, a double line or a
     /// point (only from [`ImplicitConic::kind`]).
     DegenerateSingular,
+    /// An implicit conic with `B² − 4AC < 0` and no real points, like `x² + y² + 1 = 0` (only
+    /// from [`ImplicitConic::kind`]).
+    ImaginaryEllipse,
+    /// An implicit equation with `A = B = C = 0`: a line or nothing, not a conic (only from
+    /// [`ImplicitConic::kind`]).
+    NoQuadraticTerms,
 }
 
 impl ConicKind {
@@ -41,12 +47,35 @@ impl ConicKind {
             ConicKind::DegenerateCollinear => "degenerate (collinear control points)",
             ConicKind::DegenerateZeroWeight => "degenerate (zero weight)",
             ConicKind::DegenerateSingular => "degenerate (singular conic)",
+            ConicKind::ImaginaryEllipse => "imaginary ellipse (no real points)",
+            ConicKind::NoQuadraticTerms => "not a conic (no quadratic terms)",
         }
     }
 
-    /// Whether this is one of the degenerate cases.
+    /// The name a claim file gives the kind (`conic = "…"`): the three types, `degenerate`
+    /// for every degenerate case, and the two implicit equations without a real conic.
+    pub fn family(&self) -> &'static str {
+        match self {
+            ConicKind::Ellipse => "ellipse",
+            ConicKind::Parabola => "parabola",
+            ConicKind::Hyperbola => "hyperbola",
+            ConicKind::DegenerateCollinear | ConicKind::DegenerateZeroWeight | ConicKind::DegenerateSingular => {
+                "degenerate"
+            }
+            ConicKind::ImaginaryEllipse | ConicKind::NoQuadraticTerms => self.as_str(),
+        }
+    }
+
+    /// Whether this is one of the degenerate cases (the arc or the conic is a line, a line pair
+    /// or a point, or the equation has no quadratic terms).
     pub fn is_degenerate(&self) -> bool {
-        !matches!(self, ConicKind::Ellipse | ConicKind::Parabola | ConicKind::Hyperbola)
+        matches!(
+            self,
+            ConicKind::DegenerateCollinear
+                | ConicKind::DegenerateZeroWeight
+                | ConicKind::DegenerateSingular
+                | ConicKind::NoQuadraticTerms
+        )
     }
 }
 
@@ -194,10 +223,16 @@ impl<T: Scalar> ImplicitConic<T> {
         a2.mul_ref(&m1).sub_ref(&b.mul_ref(&m2)).add_ref(&d.mul_ref(&m3))
     }
 
-    /// The affine type by `B² − 4AC`, or [`ConicKind::DegenerateSingular`] when
-    /// [`Self::matrix_determinant`] is zero.
+    /// The affine type by `B² − 4AC`; [`ConicKind::NoQuadraticTerms`] when `A = B = C = 0`,
+    /// [`ConicKind::DegenerateSingular`] when [`Self::matrix_determinant`] is zero, and
+    /// [`ConicKind::ImaginaryEllipse`] for `B² − 4AC < 0` with `(A + C)·det > 0` (no real
+    /// points). Exact for exact scalars: every sign is decided.
     pub fn kind(&self) -> ConicKind {
-        if self.matrix_determinant().is_zero() {
+        if [&self.a, &self.b, &self.c].iter().all(|x| x.is_zero()) {
+            return ConicKind::NoQuadraticTerms;
+        }
+        let det = self.matrix_determinant();
+        if det.is_zero() {
             return ConicKind::DegenerateSingular;
         }
         let disc = self.discriminant();
@@ -205,8 +240,10 @@ impl<T: Scalar> ImplicitConic<T> {
             ConicKind::Parabola
         } else if disc > T::zero() {
             ConicKind::Hyperbola
-        } else {
+        } else if self.a.add_ref(&self.c).mul_ref(&det) < T::zero() {
             ConicKind::Ellipse
+        } else {
+            ConicKind::ImaginaryEllipse
         }
     }
 

@@ -107,6 +107,23 @@ fn conic_types_and_misnamed_conics() {
     assert_eq!(conic("4x^2 + 3y^2 - 10y + 3 = 0", "ellipse"), Verdict::Proved);
     assert_eq!(conic("4x^2 + 3y^2 - 10y + 3 = 0", "hyperbola"), Verdict::Fails);
     assert_eq!(conic("y = x^2", "parabola"), Verdict::Proved);
+    // one classifier for claims and the library: no real points, no quadratic terms, a line pair
+    let imaginary = "imaginary ellipse (no real points)";
+    assert_eq!(conic("x^2 + y^2 + 1 = 0", imaginary), Verdict::Proved);
+    assert_eq!(conic("x^2 + y^2 + 1 = 0", "ellipse"), Verdict::Fails);
+    assert_eq!(conic("x^2 + y^2 - 1 = 0", "ellipse"), Verdict::Proved);
+    assert_eq!(
+        conic("2x + y + 1 = 0", "not a conic (no quadratic terms)"),
+        Verdict::Proved
+    );
+    assert_eq!(conic("x^2 - y^2 = 0", "degenerate"), Verdict::Proved);
+    let kind = |k: [i64; 6]| casteljau::ImplicitConic::<BigRational>::from_ints(k).kind();
+    assert_eq!(kind([1, 0, 1, 0, 0, 1]), casteljau::ConicKind::ImaginaryEllipse);
+    assert_eq!(kind([-1, 0, -1, 0, 0, -1]), casteljau::ConicKind::ImaginaryEllipse);
+    assert_eq!(kind([1, 0, 1, 0, 0, -1]), casteljau::ConicKind::Ellipse);
+    assert_eq!(kind([-1, 0, -1, 0, 0, 1]), casteljau::ConicKind::Ellipse);
+    assert_eq!(kind([0, 0, 0, 2, 1, 1]), casteljau::ConicKind::NoQuadraticTerms);
+    assert_eq!(kind([1, 0, -1, 0, 0, 0]), casteljau::ConicKind::DegenerateSingular);
 }
 
 #[test]

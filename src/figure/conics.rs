@@ -74,10 +74,10 @@ pub fn conics<T: Scalar>(points: &[Point<T>], w0: &T, w2: &T, middles: &[T]) -> 
 
 /// The colour of a conic kind in figures.
 pub(crate) fn kind_color(kind: &ConicKind) -> &'static str {
-    match kind.as_str() {
-        "ellipse" => "#2c7fb8",
-        "parabola" => "#1b9e77",
-        "hyperbola" => "#c0392b",
+    match kind {
+        ConicKind::Ellipse => "#2c7fb8",
+        ConicKind::Parabola => "#1b9e77",
+        ConicKind::Hyperbola => "#c0392b",
         _ => "#555555",
     }
 }

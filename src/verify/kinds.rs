@@ -25,13 +25,12 @@ use super::poly::{Poly, RatFunc};
 use super::rewrite::substitute;
 use super::sampling::check_chain;
 use super::theorems;
-use crate::conic::classify_conic;
+use crate::conic::{classify_conic, ConicKind, ImplicitConic};
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::point::Point;
 use crate::quadratic::QuadraticIrrational;
 use crate::rational::RationalBezierCurve;
-use crate::scalar::sign;
 use crate::surface::BezierSurface;
 use num_rational::BigRational;
 use num_traits::Zero;
@@ -210,38 +209,6 @@ fn poly_coeffs_1d(r: &RatFunc) -> Result<Vec<BigRational>> {
     Ok(out)
 }
 
-/// The type of the conic `A x² + B xy + C y² + D x + E y + F = 0`, exactly.
-pub fn conic_type_of(coef: &[BigRational; 6]) -> &'static str {
-    let [a, b, c, d, e, f] = coef;
-    let two = BigRational::from_integer(2.into());
-    let m = [
-        [a.clone(), b / &two, d / &two],
-        [b / &two, c.clone(), e / &two],
-        [d / &two, e / &two, f.clone()],
-    ];
-    let det = &m[0][0] * (&m[1][1] * &m[2][2] - &m[1][2] * &m[2][1])
-        - &m[0][1] * (&m[1][0] * &m[2][2] - &m[1][2] * &m[2][0])
-        + &m[0][2] * (&m[1][0] * &m[2][1] - &m[1][1] * &m[2][0]);
-    let disc = b * b - BigRational::from_integer(4.into()) * a * c;
-    if a.is_zero() && b.is_zero() && c.is_zero() {
-        return "not a conic (no quadratic terms)";
-    }
-    if det.is_zero() {
-        return "degenerate";
-    }
-    match sign(&disc) {
-        -1 => {
-            if sign(&((a + c) * &det)) < 0 {
-                "ellipse"
-            } else {
-                "imaginary ellipse (no real points)"
-            }
-        }
-        0 => "parabola",
-        _ => "hyperbola",
-    }
-}
-
 fn check_conic_type(ctx: &Ctx<'_>, claim: &ConicType) -> Result<Checked> {
     let (l, r) = ctx.equation(&claim.equation)?;
     let printed = claim.conic.as_str();
@@ -275,15 +242,20 @@ fn check_conic_type(ctx: &Ctx<'_>, claim: &ConicType) -> Result<Checked> {
         };
         coef[slot] = &k / &den;
     }
-    let kind = conic_type_of(&coef);
+    let kind = ImplicitConic::from_coefficients(coef.clone()).kind();
     let [a, b, cc, d, e, f] = &coef;
     let disc = b * b - BigRational::from_integer(4.into()) * a * cc;
     let cert = format!(
         "A x² + B xy + C y² + D x + E y + F with (A, B, C, D, E, F) = ({a}, {b}, {cc}, {d}, {e}, {f}): \
-         B² − 4AC = {disc}, the 3×3 matrix of the conic is {}singular ⇒ {kind}",
-        if kind == "degenerate" { "" } else { "non-" }
+         B² − 4AC = {disc}, the 3×3 matrix of the conic is {}singular ⇒ {}",
+        if kind == ConicKind::DegenerateSingular {
+            ""
+        } else {
+            "non-"
+        },
+        kind.family()
     );
-    if kind == printed {
+    if kind.family() == printed {
         Ok(Checked::new(Verdict::Proved, format!("{cert}: proof")))
     } else {
         Ok(Checked::new(Verdict::Fails, format!("{cert}, not {printed}")))
