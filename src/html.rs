@@ -14,7 +14,7 @@ use crate::quadratic::QuadraticIrrational;
 use crate::rational::RationalBezierCurve;
 use crate::scalar::{Ring, Scalar};
 use crate::surface::BezierSurface;
-use crate::verify::claims::{Claim, ClaimFile, CurveSpec, Illustration, Kind, Number, SurfaceSpec};
+use crate::verify::claims::{Claim, ClaimFile, Illustration, Kind, Number, SurfaceSpec};
 use crate::verify::{ClaimOutcome, Report, TextSummary, Verdict};
 use crate::BezierCurve;
 use std::collections::BTreeMap;
@@ -619,17 +619,6 @@ fn points(rows: &[Vec<Number>]) -> Result<Vec<Point<Q>>> {
         .collect()
 }
 
-fn curve_of(spec: &CurveSpec) -> Result<AnyCurve<Q>> {
-    let pts = points(&spec.points)?;
-    Ok(match &spec.weights {
-        None => AnyCurve::Polynomial(BezierCurve::new(pts)?),
-        Some(w) => AnyCurve::Rational(RationalBezierCurve::new(
-            pts,
-            w.iter().map(number).collect::<Result<_>>()?,
-        )?),
-    })
-}
-
 fn surface_of(spec: &SurfaceSpec) -> Result<BezierSurface<Q>> {
     BezierSurface::new(spec.net.iter().map(|row| points(row)).collect::<Result<_>>()?)
 }
@@ -732,7 +721,7 @@ pub fn claim_figure(c: &Claim) -> Result<Option<ClaimFigure>> {
     if let Some(curves) = &c.decls.curves {
         let objs: Vec<(&String, AnyCurve<Q>)> = curves
             .iter()
-            .map(|(n, spec)| Ok((n, curve_of(spec)?)))
+            .map(|(n, spec)| Ok((n, crate::verify::objects::curve_from_spec::<Q>(spec)?)))
             .collect::<Result<_>>()?;
         if matches!(c.kind, Kind::Fit(_)) {
             if let Some((name, x)) = objs.first() {

@@ -36,6 +36,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+mod any_curve;
 mod bernstein;
 mod conic;
 mod curve;
@@ -71,6 +72,7 @@ pub mod verify;
 #[cfg_attr(not(feature = "oracle"), allow(dead_code))]
 mod work;
 
+pub use any_curve::AnyCurve;
 pub use bernstein::{
     bernstein, bernstein_to_power, binomial, binomial_signed, eval_power, power_to_bernstein, reparametrize,
 };

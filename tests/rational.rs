@@ -682,3 +682,34 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn any_curve_is_one_curve_for_both_kinds() {
+    use casteljau::{AnyCurve, ParamCurve, ParamCurveDeriv};
+    let q = |a: i64, b: i64| BigRational::new(a.into(), b.into());
+    let pts = vec![
+        Point::from_ints(&[0, 0]).unwrap(),
+        Point::from_ints(&[2, 3]).unwrap(),
+        Point::from_ints(&[5, -1]).unwrap(),
+    ];
+    let poly = BezierCurve::new(pts.clone()).unwrap();
+    let rat = RationalBezierCurve::new(pts, vec![q(1, 1), q(3, 2), q(2, 1)]).unwrap();
+    for (any, t) in [
+        (AnyCurve::from(poly.clone()), q(1, 3)),
+        (AnyCurve::from(rat.clone()), q(2, 7)),
+    ] {
+        let direct = match &any {
+            AnyCurve::Polynomial(c) => (c.eval(&t), ParamCurveDeriv::deriv_at(c, &t).unwrap()),
+            AnyCurve::Rational(c) => (c.eval(&t).unwrap(), ParamCurveDeriv::deriv_at(c, &t).unwrap()),
+        };
+        assert_eq!(any.eval(&t).unwrap(), direct.0);
+        assert_eq!(any.deriv_at(&t).unwrap(), direct.1);
+        assert_eq!(any.deriv().unwrap().eval(&t).unwrap(), direct.1);
+        // the halves of a split reparametrise the curve: left(s) = c(t·s), right(s) = c(t + (1−t)s)
+        let (left, right) = any.split_at(&t).unwrap();
+        let s = q(3, 5);
+        assert_eq!(left.eval(&s).unwrap(), any.eval(&(&t * &s)).unwrap());
+        assert_eq!(right.eval(&s).unwrap(), any.eval(&(&t + (q(1, 1) - &t) * &s)).unwrap());
+        assert_eq!(any.degree(), 2);
+    }
+}

@@ -4,6 +4,7 @@ use super::svg::{Figure, Panel, Style, CURVE, PALETTE, POINT, POLYGON};
 use super::{planar, planar_curve, AnyCurve};
 use crate::error::Result;
 use crate::fit::fit_cubic_to;
+use crate::param::ParamCurve;
 use crate::scalar::Scalar;
 
 /// The curve `x(t)` (exact samples), text 004's cubic `a(t)` with control points
@@ -12,10 +13,7 @@ use crate::scalar::Scalar;
 /// projection.
 pub fn fit<T: Scalar>(curve: &AnyCurve<T>) -> Result<Figure> {
     super::check_figure_degree(curve.points().len() - 1)?;
-    let result = match curve {
-        AnyCurve::Polynomial(c) => fit_cubic_to(c)?,
-        AnyCurve::Rational(c) => fit_cubic_to(c)?,
-    };
+    let result = fit_cubic_to(curve)?;
     let half = T::from_ratio(1, 2)?;
     let xh = curve.eval(&half)?;
     let ah = result.curve.eval(&half);

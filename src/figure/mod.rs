@@ -73,7 +73,6 @@ pub use svg::{Figure, Layout, Panel, PanelMap};
 
 use crate::error::{Error, Result};
 use crate::point::{AffineMap, Point};
-use crate::rational::RationalBezierCurve;
 use crate::scalar::Scalar;
 use crate::BezierCurve;
 
@@ -128,37 +127,9 @@ pub fn planar_curve<T: Scalar>(c: &BezierCurve<T>) -> Result<BezierCurve<T>> {
     BezierCurve::new(c.points().iter().map(planar).collect::<Result<Vec<_>>>()?)
 }
 
-/// A polynomial or a rational Bézier curve, as claims and the `fit` figure take them.
-#[derive(Clone, Debug)]
-pub enum AnyCurve<T> {
-    /// `Σ b_i B_i^n(t)`.
-    Polynomial(BezierCurve<T>),
-    /// `Σ w_i b_i B_i^n(t) / Σ w_i B_i^n(t)`.
-    Rational(RationalBezierCurve<T>),
-}
+pub use crate::AnyCurve;
 
 impl<T: Scalar> AnyCurve<T> {
-    /// The point at `t`.
-    pub fn eval(&self, t: &T) -> Result<Point<T>> {
-        match self {
-            AnyCurve::Polynomial(c) => Ok(c.eval(t)),
-            AnyCurve::Rational(c) => c.eval(t),
-        }
-    }
-
-    /// The control points.
-    pub fn points(&self) -> &[Point<T>] {
-        match self {
-            AnyCurve::Polynomial(c) => c.points(),
-            AnyCurve::Rational(c) => c.points(),
-        }
-    }
-
-    /// The dimension.
-    pub fn dim(&self) -> usize {
-        self.points()[0].dim()
-    }
-
     /// `k/n` samples for drawing, projected: the exact control data rounded to `f64` once,
     /// then evaluated in `f64` ([`sample`]).
     pub(crate) fn drawn_samples(&self, n: usize) -> Result<Vec<[f64; 2]>> {

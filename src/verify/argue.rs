@@ -4,7 +4,7 @@
 
 use super::checked::{Checked, Evaluation, Method, Step, StepKind, Verdict};
 use super::claims::{Claim, ClaimFile, Kind};
-use super::objects::CurveObj;
+use super::objects::curve_from_spec;
 use crate::bernstein::bernstein_all;
 use crate::curve::{BezierCurve, DeCasteljauScheme};
 use crate::point::Point;
@@ -287,8 +287,8 @@ pub(crate) fn worked_scheme(
         .curves
         .as_ref()?
         .values()
-        .find_map(|spec| match CurveObj::<BigRational>::from_spec(spec) {
-            Ok(CurveObj::Polynomial(curve)) => Some(curve.scheme(&t)),
+        .find_map(|spec| match curve_from_spec::<BigRational>(spec) {
+            Ok(crate::AnyCurve::Polynomial(curve)) => Some(curve.scheme(&t)),
             _ => None,
         })
 }

@@ -20,7 +20,7 @@ use super::eval::{Alg, Deg, Evaluator, Value};
 use super::expansion::check_implies;
 use super::expr::Expr;
 use super::identity::{chain_in_field, check_identity, uses_sqrt};
-use super::objects::{points, CurveObj};
+use super::objects::{curve_from_spec, points};
 use super::poly::{Poly, RatFunc};
 use super::rewrite::substitute;
 use super::sampling::check_chain;
@@ -279,9 +279,9 @@ fn check_fit(ctx: &Ctx<'_>, c: &Fit) -> Result<Checked> {
         .filter(|m| m.len() == 1)
         .and_then(|m| m.iter().next())
         .ok_or_else(|| Error::Parse(format!("claim {}: fit needs exactly one curve", ctx.id)))?;
-    let data = match CurveObj::<BigRational>::from_spec(spec)? {
-        CurveObj::Polynomial(curve) => curve.cubic_fit_data()?,
-        CurveObj::Rational(curve) => curve.cubic_fit_data()?,
+    let data = match curve_from_spec::<BigRational>(spec)? {
+        crate::AnyCurve::Polynomial(curve) => curve.cubic_fit_data()?,
+        crate::AnyCurve::Rational(curve) => curve.cubic_fit_data()?,
     };
     let fit = fit_cubic(&data)?;
     let (k13, l13) = fit_cubic_closed_form(&data)?;

@@ -7,8 +7,10 @@ use super::expr::Expr;
 use super::methods::{NetMethod, PolygonMethod};
 use super::parse::parse;
 use super::rewrite;
+use crate::any_curve::AnyCurve;
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
+use crate::param::ParamCurve;
 use crate::point::Point;
 use crate::scalar::Scalar;
 use crate::surface::BezierSurface;
@@ -37,46 +39,16 @@ pub fn points<T: Exact>(list: &[Vec<Number>]) -> Result<Vec<Point<T>>> {
     list.iter().map(|p| point(p)).collect()
 }
 
-/// A concrete curve of a claim.
-#[derive(Clone, Debug)]
-pub enum CurveObj<T> {
-    /// `Σ b_i B_i^n(t)`.
-    Polynomial(BezierCurve<T>),
-    /// `Σ w_i b_i B_i^n(t) / Σ w_i B_i^n(t)` (the library's rational curve).
-    Rational(crate::rational::RationalBezierCurve<T>),
-}
-
-impl<T: Exact> CurveObj<T> {
-    /// Builds the object from its specification.
-    pub fn from_spec(spec: &CurveSpec) -> Result<Self> {
-        let pts = points::<T>(&spec.points)?;
-        match &spec.weights {
-            None => Ok(CurveObj::Polynomial(BezierCurve::new(pts)?)),
-            Some(w) => {
-                let w = w.iter().map(|x| constant(&x.text()?)).collect::<Result<Vec<T>>>()?;
-                Ok(CurveObj::Rational(crate::rational::RationalBezierCurve::new(pts, w)?))
-            }
+/// A concrete curve of a claim, from its specification.
+pub fn curve_from_spec<T: Exact>(spec: &CurveSpec) -> Result<AnyCurve<T>> {
+    let pts = points::<T>(&spec.points)?;
+    Ok(match &spec.weights {
+        None => AnyCurve::Polynomial(BezierCurve::new(pts)?),
+        Some(w) => {
+            let w = w.iter().map(|x| constant(&x.text()?)).collect::<Result<Vec<T>>>()?;
+            AnyCurve::Rational(crate::rational::RationalBezierCurve::new(pts, w)?)
         }
-    }
-    fn degree(&self) -> usize {
-        match self {
-            CurveObj::Polynomial(c) => c.degree(),
-            CurveObj::Rational(c) => c.degree(),
-        }
-    }
-    fn dim(&self) -> usize {
-        match self {
-            CurveObj::Polynomial(c) => c.dim(),
-            CurveObj::Rational(c) => c.dim(),
-        }
-    }
-    /// The point at `t` (the projection of the lift for a rational curve).
-    pub fn eval(&self, t: &T) -> Result<Vec<T>> {
-        match self {
-            CurveObj::Polynomial(c) => Ok(c.eval(t).into_coords()),
-            CurveObj::Rational(c) => Ok(c.eval(t)?.into_coords()),
-        }
-    }
+    })
 }
 
 /// A concrete surface of a claim: `net[i][j] = b_{i,j}`.
@@ -170,7 +142,7 @@ pub struct NumEnv<T> {
     /// Parameter and data values.
     pub vars: BTreeMap<String, Value<T>>,
     /// Concrete curves.
-    pub curves: BTreeMap<String, CurveObj<T>>,
+    pub curves: BTreeMap<String, AnyCurve<T>>,
     /// Concrete surfaces.
     pub surfaces: BTreeMap<String, Vec<Vec<Point<T>>>>,
     /// The symbolic polygon (name, one-dimensional instance).
@@ -184,7 +156,7 @@ impl<T: Exact> NumEnv<T> {
     pub fn new(decls: &Decls) -> Result<Self> {
         let mut curves = BTreeMap::new();
         for (k, spec) in decls.curves.iter().flatten() {
-            curves.insert(k.clone(), CurveObj::from_spec(spec)?);
+            curves.insert(k.clone(), curve_from_spec(spec)?);
         }
         let mut surfaces = BTreeMap::new();
         for (k, spec) in decls.surfaces.iter().flatten() {
@@ -232,7 +204,7 @@ impl<T: Exact> Env<T> for NumEnv<T> {
                     .iter()
                     .map(|c| Point::new(vec![c.clone()]))
                     .collect::<Result<_>>()?;
-                let c = CurveObj::Polynomial(BezierCurve::new(pts)?);
+                let c = AnyCurve::Polynomial(BezierCurve::new(pts)?);
                 return Ok(Some(Value::S(
                     curve_call(&c, base, order, args, ev)?.entries()[0].clone(),
                 )));
@@ -278,7 +250,7 @@ impl<T: Exact> Env<T> for NumEnv<T> {
         }
         if let Some(c) = self.curves.get(name) {
             one_index(name, idx)?;
-            let CurveObj::Polynomial(c) = c else {
+            let AnyCurve::Polynomial(c) = c else {
                 return Err(Error::Domain(format!(
                     "{name} is rational: index its control points by hand"
                 )));
@@ -313,19 +285,19 @@ fn one_index(name: &str, idx: &[i64]) -> Result<()> {
 }
 
 fn curve_call<T: Exact>(
-    c: &CurveObj<T>,
+    c: &AnyCurve<T>,
     name: &str,
     order: usize,
     args: &[Expr],
     ev: &mut Evaluator<'_, T>,
 ) -> Result<Value<T>> {
     match (args.len(), c) {
-        (1, _) if order == 0 => Ok(Value::V(c.eval(&ev.scalar(&args[0])?)?)),
-        (1, CurveObj::Polynomial(curve)) => {
+        (1, _) if order == 0 => Ok(Value::V(c.eval(&ev.scalar(&args[0])?)?.into_coords())),
+        (1, AnyCurve::Polynomial(curve)) => {
             let t = ev.scalar(&args[0])?;
             Ok(Value::V(curve.derivative_at(order, &t)?.into_coords()))
         }
-        (1, CurveObj::Rational(curve)) => {
+        (1, AnyCurve::Rational(curve)) => {
             check_rational_order(name, order)?;
             let t = ev.scalar(&args[0])?;
             if order == 1 {
@@ -338,7 +310,7 @@ fn curve_call<T: Exact>(
             }
             Ok(Value::V(d.eval(&t)?.into_coords()))
         }
-        (3, CurveObj::Polynomial(curve)) if order == 0 => {
+        (3, AnyCurve::Polynomial(curve)) if order == 0 => {
             let (i, r) = (ev.int(&args[0])?, ev.int(&args[1])?);
             let t = ev.scalar(&args[2])?;
             let n = curve.degree() as i64;
@@ -399,7 +371,7 @@ impl DegEnv {
                 .map(|(k, c)| {
                     (
                         k.clone(),
-                        (c.degree() as u64, c.dim(), matches!(c, CurveObj::Rational(_))),
+                        (c.degree() as u64, c.dim(), matches!(c, AnyCurve::Rational(_))),
                     )
                 })
                 .collect(),
