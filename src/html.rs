@@ -721,7 +721,7 @@ pub fn claim_figure(c: &Claim) -> Result<Option<ClaimFigure>> {
     if let Some(curves) = &c.decls.curves {
         let objs: Vec<(&String, AnyCurve<Q>)> = curves
             .iter()
-            .map(|(n, spec)| Ok((n, crate::verify::objects::curve_from_spec::<Q>(spec)?)))
+            .map(|(n, spec)| Ok((n, crate::verify::curve_from_spec::<Q>(spec)?)))
             .collect::<Result<_>>()?;
         if matches!(c.kind, Kind::Fit(_)) {
             if let Some((name, x)) = objs.first() {

@@ -1,8 +1,8 @@
 //! The `inequality` kind: Bernstein certificates on an interval, exact refutations, and `B ≥ 0`
 //! for every n; false inequalities are never proved.
 
+use casteljau::verify::check_claim;
 use casteljau::verify::claims::parse_file;
-use casteljau::verify::kinds::check_claim;
 use casteljau::verify::Verdict;
 use std::path::Path;
 

@@ -1,10 +1,10 @@
 //! The range-bound note: why a claim proved over finite ranges stays bound to them, or that
 //! its open-range version is proved too — never a change of the verdict itself.
 
+use casteljau::verify::check_claim;
 use casteljau::verify::claims::parse_file;
-use casteljau::verify::kinds::check_claim;
-use casteljau::verify::scope::{range_bound, PROVABLE};
 use casteljau::verify::{explain, prove_paths, ExplainStyle, Verdict};
+use casteljau::verify::{range_bound, PROVABLE};
 use std::path::{Path, PathBuf};
 
 /// The verdict of the one claim in `toml` and its range-bound note.

@@ -10,8 +10,8 @@
 //! - Work is bounded before it starts: the size of the numbers counts, and the certificate
 //!   search stops at its budget, saying which degree it reached.
 
+use casteljau::verify::check_claim;
 use casteljau::verify::claims::parse_file;
-use casteljau::verify::kinds::check_claim;
 use casteljau::verify::Verdict;
 use std::path::Path;
 use std::time::Instant;

@@ -2,8 +2,8 @@
 //! proved for every value, false ones fail with an exact counterexample or are refused, and a
 //! wrong certificate is rejected — never `proved`.
 
+use casteljau::verify::check_claim;
 use casteljau::verify::claims::parse_file;
-use casteljau::verify::kinds::check_claim;
 use casteljau::verify::Verdict;
 use std::path::Path;
 

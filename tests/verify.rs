@@ -1,9 +1,9 @@
 //! The engine: false claims are caught with exact counterexamples, true ones proved, the
 //! convergence bound is true, reports and explain say what was checked.
 
+use casteljau::verify::check_claim;
 use casteljau::verify::claims::parse_file;
-use casteljau::verify::kinds::check_claim;
-use casteljau::verify::theorems::elevation_bound;
+use casteljau::verify::elevation_bound;
 use casteljau::verify::{explain, prove_paths, ExplainStyle, Verdict};
 use casteljau::{BezierCurve, BigRational, Point, Ring, Scalar};
 use proptest::prelude::*;

@@ -2,8 +2,8 @@
 //! `fails` with an exact counterexample or a one-line error, never `proved`; a finite range is
 //! `proved_in_range` with its range; random false claims are never proved.
 
+use casteljau::verify::check_claim;
 use casteljau::verify::claims::parse_file;
-use casteljau::verify::kinds::check_claim;
 use casteljau::verify::Verdict;
 use proptest::prelude::*;
 use std::path::Path;

@@ -6,7 +6,7 @@
 //! very same walk as the values, every construct that has a value also has a bound, and the
 //! bound describes the formal numerator/denominator the walk builds (see [`Deg`]).
 
-pub use super::alg::{bernstein_formula, rational_sqrt, Alg, Deg};
+pub use super::alg::{Alg, Deg};
 use super::expr::{check_index, eval_int, Expr, Op, MAX_SUM_TERMS};
 use crate::bernstein::binomial_signed;
 use crate::error::{Error, Result};

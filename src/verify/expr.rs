@@ -8,7 +8,7 @@
 
 use crate::error::{Error, Result};
 use num_rational::BigRational;
-use num_traits::{One, Signed, Zero};
+use num_traits::Signed;
 use std::collections::BTreeMap;
 use std::fmt;
 
@@ -375,14 +375,4 @@ pub fn check_index(n: i64) -> Result<()> {
         });
     }
     Ok(())
-}
-
-/// `1` as a rational (used by printing code elsewhere).
-pub fn one() -> BigRational {
-    BigRational::one()
-}
-
-/// `0` as a rational.
-pub fn zero() -> BigRational {
-    BigRational::zero()
 }

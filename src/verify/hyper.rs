@@ -177,14 +177,6 @@ impl Symbols {
     pub fn index(&self, name: &str) -> Option<usize> {
         self.names.iter().position(|n| n == name)
     }
-    /// Whether `name` is an integer symbol.
-    pub fn is_int(&self, name: &str) -> bool {
-        self.index(name).is_some_and(|k| k < self.ints)
-    }
-    /// Whether `name` is a continuous parameter.
-    pub fn is_cont(&self, name: &str) -> bool {
-        self.index(name).is_some_and(|k| k >= self.ints)
-    }
     /// The variable `name` as a rational function (0 if unknown: callers check names first).
     pub fn var(&self, name: &str) -> RatFunc {
         match self.index(name) {

@@ -6,18 +6,18 @@
 //! verdict decided in exact arithmetic only:
 //!
 //! - **proved**: the finite check is a proof. A polynomial identity of degree ≤ d (the bound is
-//!   *derived* from the expressions by [`eval::Deg`], never guessed) is checked exactly at d+1
+//!   *derived* from the expressions by the degree-bound algebra, never guessed) is checked exactly at d+1
 //!   distinct parameters; rational functions by their cleared numerators at points where no
 //!   denominator vanishes; identities affine in the control points on the zero and unit
 //!   polygons; two parameters on a grid; claims about arbitrary vectors by exact symbolic
-//!   expansion ([`poly`]).
+//!   expansion (rational functions).
 //! - **proved_in_range**: every case of the claim's finite integer ranges (`for`, a theorem's
 //!   `degrees`) proved as above; the ranges are reported with the verdict. Never "proved".
 //! - **verified**: bounded evidence for a statement about a limit, saying exactly what was checked.
 //! - **fails**: an exact counterexample (the parameters and both sides' values).
 //!
 //! ```
-//! use casteljau::verify::{claims::parse_file, kinds::check_claim, Verdict};
+//! use casteljau::verify::{check_claim, claims::parse_file, Verdict};
 //! let file = parse_file(r#"
 //! [[claim]]
 //! id = "ex"
@@ -48,38 +48,46 @@
 // - the kinds and the scope of a verdict: `kinds`, `scope`;
 // - the reports: `argue`, `latex`, `report`.
 mod alg;
-pub mod ansatz;
+mod ansatz;
 mod argue;
-pub mod checked;
+mod checked;
 pub mod claims;
-pub mod context;
-pub mod eval;
-pub mod expansion;
-pub mod expr;
-pub mod hyper;
-pub mod identity;
-pub mod inequality;
-pub mod kinds;
+mod context;
+mod eval;
+mod expansion;
+mod expr;
+mod hyper;
+mod identity;
+mod inequality;
+mod kinds;
 mod latex;
-pub mod methods;
+mod methods;
 mod names;
-pub mod objects;
-pub mod parse;
-pub mod pieces;
-pub mod poly;
+mod objects;
+mod parse;
+mod pieces;
+mod poly;
 mod report;
-pub mod rewrite;
-pub mod sampling;
-pub mod scope;
-pub mod symbolic;
-pub mod theorems;
+mod rewrite;
+mod sampling;
+mod scope;
+mod symbolic;
+mod theorems;
 mod translate;
 
 use crate::error::{Error, Result};
 use std::path::PathBuf;
 
-pub use checked::Verdict;
+pub use checked::{Checked, Evaluation, Method, Step, StepKind, Verdict};
+pub use kinds::check_claim;
 pub use report::{ClaimOutcome, ExplainStyle, Report, TextSummary};
+pub use scope::{range_bound, PROVABLE};
+pub use theorems::elevation_bound;
+
+pub(crate) use objects::curve_from_spec;
+
+#[cfg(test)]
+mod expr_tests;
 
 /// Loads every claim file under `paths` (files, or directories whose `.toml` files are read in
 /// name order) and checks every claim; `progress(done, total, id)` is called after each claim,

@@ -64,11 +64,6 @@ pub fn net_from_spec<T: Exact>(spec: &SurfaceSpec) -> Result<Vec<Vec<Point<T>>>>
     Ok(net)
 }
 
-/// `Σ_i Σ_j b_ij B_i^m(u) B_j^n(v)` by the library ([`BezierSurface::eval`], u first).
-pub fn eval_net<T: Exact>(net: &[Vec<Point<T>>], u: &T, v: &T) -> Result<Point<T>> {
-    Ok(BezierSurface::new(net.to_vec())?.eval(u, v))
-}
-
 /// `∂^{ku+kv} x / ∂u^{ku} ∂v^{kv}` at `(u, v)` by the library: the surface of the derivative
 /// net (`m!/(m-ku)! n!/(n-kv)! Δ_u^{ku} Δ_v^{kv} b_{i,j}`), evaluated
 /// ([`BezierSurface::partial_at`]; zero beyond the degrees).

@@ -113,13 +113,6 @@ struct Parser<'a> {
 
 /// Parses an expression; `known` lists the multi-letter names of the claim (objects,
 /// symbols, definitions) so that they are not split into one-letter variables.
-///
-/// ```
-/// use casteljau::verify::parse::parse;
-/// let e = parse("4x^2 + 3y^2 - 10y + 3", &[]).unwrap();
-/// assert_eq!(e.to_string(), "4*x^2 + 3*y^2 - 10*y + 3");
-/// assert!(parse("(1 + t", &[]).is_err());
-/// ```
 pub fn parse(text: &str, known: &[String]) -> Result<Expr> {
     let toks = lex(text, known)?;
     if toks.is_empty() {

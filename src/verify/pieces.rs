@@ -7,7 +7,6 @@ use super::eval::Alg;
 use super::hyper::*;
 use super::poly::{Poly, RatFunc};
 use crate::error::{Error, Result};
-use num_rational::BigRational;
 use num_traits::{One, Signed};
 use std::collections::{BTreeMap, BTreeSet};
 /// Most constraints Fourier–Motzkin may hold while eliminating one variable (beyond it the
@@ -559,11 +558,6 @@ fn factorial(c: i64) -> Result<RatFunc> {
         f *= k;
     }
     Ok(RatFunc::from_bigint(&f))
-}
-
-/// Whether a rational constant is ≥ 0 (for callers that classify coefficients).
-pub fn nonneg(r: &BigRational) -> bool {
-    !r.is_negative()
 }
 
 #[cfg(test)]

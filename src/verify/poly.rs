@@ -78,10 +78,6 @@ impl Poly {
     pub fn len(&self) -> usize {
         self.terms.len()
     }
-    /// Whether there are no terms.
-    pub fn is_empty(&self) -> bool {
-        self.terms.is_empty()
-    }
     /// The constant value, when the polynomial is constant.
     pub fn as_constant(&self) -> Option<BigRational> {
         match self.terms.len() {

@@ -492,14 +492,7 @@ fn derive_call(e: &Expr, name: &str, args: &[Expr], var: &str) -> Result<Expr> {
 
 /// The partial-derivative notation of a surface: `x_u`, `x_vv`, `x_uuv`, … is
 /// `(x, ku, kv)`, `ku` the count of `u` (the first argument) and `kv` of `v` (the second)
-/// after the last `_`; `None` for any other name.
-///
-/// ```
-/// use casteljau::verify::rewrite::split_partial;
-/// assert_eq!(split_partial("x_uvu"), Some(("x", 2, 1)));
-/// assert_eq!(split_partial("x"), None);
-/// assert_eq!(split_partial("x_w"), None);
-/// ```
+/// after the last `_`; `None` for any other name (`x_uvu` is `(x, 2, 1)`, `x_w` is `None`).
 pub fn split_partial(name: &str) -> Option<(&str, usize, usize)> {
     let (base, suffix) = name.rsplit_once('_')?;
     if base.is_empty() || suffix.is_empty() || !suffix.chars().all(|c| c == 'u' || c == 'v') {

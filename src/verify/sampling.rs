@@ -140,18 +140,6 @@ fn needed_degree(l: &Value<Deg>, r: &Value<Deg>, v: &str) -> Result<u64> {
     Ok(need)
 }
 
-/// Proves or refutes `lhs = rhs` for all parameter values, at one integer instance, exactly.
-pub fn prove_equal<T: Exact>(
-    ctx: &Ctx<'_>,
-    lhs: &Expr,
-    rhs: &Expr,
-    ints: &BTreeMap<String, i64>,
-    detail: bool,
-) -> Result<PairResult> {
-    let prepared = prepare::<T>(ctx, lhs, rhs, ints, detail)?;
-    prove_prepared(ctx, lhs, rhs, ints, detail, prepared)
-}
-
 fn prove_prepared<T: Exact>(
     ctx: &Ctx<'_>,
     lhs: &Expr,

@@ -1,8 +1,8 @@
 //! One `identity` claim checked from the body of its TOML table: the verdict and the
 //! certificate (or counterexample). Shared by the claim-language tests.
 
+use casteljau::verify::check_claim;
 use casteljau::verify::claims::parse_file;
-use casteljau::verify::kinds::check_claim;
 use casteljau::verify::Verdict;
 use std::path::Path;
 

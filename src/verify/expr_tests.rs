@@ -1,16 +1,16 @@
-//! The expression parser and evaluator: round trips, agreement with the library, bad input.
+// The expression parser and evaluator: round trips, agreement with the library, bad input.
 
-use casteljau::verify::eval::{Evaluator, Value, VarEnv};
-use casteljau::verify::expr::Expr;
-use casteljau::verify::parse::parse;
-use casteljau::{bernstein, eval_power};
-use casteljau::{BigRational, Ring, Scalar};
+use super::eval::{Evaluator, Value, VarEnv};
+use super::expr::Expr;
+use super::parse::parse;
+use crate::{bernstein, eval_power};
+use crate::{BigRational, Ring, Scalar};
 use proptest::prelude::*;
 use std::collections::BTreeMap;
 
 type Q = BigRational;
 
-fn eval_t(e: &Expr, t: &Q) -> casteljau::Result<Q> {
+fn eval_t(e: &Expr, t: &Q) -> crate::Result<Q> {
     let mut vars = BTreeMap::new();
     vars.insert("t".to_string(), Value::S(t.clone()));
     vars.insert("s".to_string(), Value::S(Q::from_ratio(2, 7).unwrap()));
