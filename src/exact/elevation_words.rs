@@ -90,9 +90,10 @@ impl U256 {
         self.0.iter().rev().cmp(o.0.iter().rev()).is_ge()
     }
 
-    /// The 32-bit halves, most significant first.
+    /// The 32-bit halves up to the highest nonzero word, most significant first.
     fn halves(&self) -> impl Iterator<Item = (usize, u64)> + '_ {
-        (0..8)
+        let top = self.0.iter().rposition(|&w| w != 0).map_or(0, |i| 2 * i + 2);
+        (0..top)
             .rev()
             .map(move |h| (h, (self.0[h / 2] >> (32 * (h % 2))) & 0xFFFF_FFFF))
     }
@@ -228,23 +229,24 @@ pub(crate) fn elevate_pairwise(points: &[Point<BigRational>]) -> Vec<Point<BigRa
     let n = points.len() - 1;
     let total = u32::try_from(n + 1).expect("degrees are limited far below 2^32");
     let total_big = BigInt::from(total);
-    let words: Vec<Vec<Option<WordFraction>>> = points
+    let dim = points[0].dim();
+    let words: Vec<Option<WordFraction>> = points
         .iter()
-        .map(|p| p.coords().iter().map(WordFraction::of).collect())
+        .flat_map(|p| p.coords().iter().map(WordFraction::of))
         .collect();
     let mut out = Vec::with_capacity(n + 2);
     out.push(points[0].clone());
     for i in 1..=n {
         let (alpha, beta) = (i as u32, total - i as u32);
         let (before, here) = (points[i - 1].coords(), points[i].coords());
-        let coords = (0..before.len()).map(|k| {
-            let fast = match (words[i - 1][k], words[i][k]) {
+        let coords = (0..dim).map(|k| {
+            let fast = match (words[(i - 1) * dim + k], words[i * dim + k]) {
                 (Some(x), Some(y)) => pair_words(x, alpha, y, beta, total),
                 _ => None,
             };
             fast.unwrap_or_else(|| pair_big(&before[k], alpha, &here[k], beta, &total_big))
         });
-        out.push(Point::new(coords.collect()).expect("as many coordinates as a valid point"));
+        out.push(Point::from_valid(coords));
     }
     out.push(points[n].clone());
     out

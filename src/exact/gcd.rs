@@ -39,8 +39,8 @@ fn lehmer_cofactors(x: u64, y: u64) -> (i64, i64, i64, i64) {
     let (mut x, mut y) = (x as i64, y as i64);
     let (mut a, mut b, mut c, mut d) = (1i64, 0i64, 0i64, 1i64);
     while y + c != 0 && y + d != 0 {
-        let q = (x + a) / (y + c);
-        if q != (x + b) / (y + d) {
+        let q = quotient(x + a, y + c);
+        if q != quotient(x + b, y + d) {
             break;
         }
         (a, c) = (c, a - q * c);
@@ -48,6 +48,17 @@ fn lehmer_cofactors(x: u64, y: u64) -> (i64, i64, i64, i64) {
         (x, y) = (y, x - q * y);
     }
     (a, b, c, d)
+}
+
+/// `n / d` (truncated), with the quotients 1 to 3 (two in three of Euclid's quotients, by
+/// Gauss–Kuzmin) found by comparisons instead of a division.
+#[inline]
+fn quotient(n: i64, d: i64) -> i64 {
+    if d > 0 && d <= i64::MAX / 4 && n >= d && n < 4 * d {
+        1 + i64::from(n >= 2 * d) + i64::from(n >= 3 * d)
+    } else {
+        n / d
+    }
 }
 
 /// `|u x + v y|` for cofactors of opposite signs (or zero), where the result is known to be
