@@ -430,8 +430,11 @@ mod tests {
             ("1e-20", BigRational::new(big("1"), big("100000000000000000000"))),
             ("-744/12", BigRational::new(big("-744"), big("12"))),
             ("744/-12", BigRational::new(big("744"), big("-12"))),
-            ("-9223372036854775808/-9223372036854775808", BigRational::one()),
-            ("0/-5", BigRational::zero()),
+            (
+                "-9223372036854775808/-9223372036854775808",
+                BigRational::from_integer(big("1")),
+            ),
+            ("0/-5", BigRational::from_integer(big("0"))),
             ("3/4.5", BigRational::new(big("2"), big("3"))),
         ];
         for (text, expected) in cases {

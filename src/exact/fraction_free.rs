@@ -5,10 +5,12 @@
 //! `D`, a parameter `t = p/q` stays the pair of integers `(p, q)`, and every step is integer
 //! arithmetic; each output coordinate is reduced once, part by part ([`crate::exact::gcd`]).
 //! The integers are machine words (`i128`, every operation overflow-checked) while they fit;
-//! on the first overflow the whole kernel runs again on [`BigInt`] (one elevation step then
-//! combines neighbouring points pairwise instead). The public generic methods choose these
-//! kernels for exact rationals (`exact::dispatch`); the tests compare them with `==`
-//! against the step-by-step `*_reference` methods.
+//! on the first overflow the whole kernel runs again on [`BigInt`]. Two kernels change
+//! algorithm there: the point of a curve is then summed by binary splitting
+//! (`exact::splitting`), and one elevation step combines neighbouring points pairwise, on
+//! 256-bit words where they fit (`exact::elevation_words`). The public generic methods
+//! choose these kernels for exact rationals (`exact::dispatch`); the tests compare them
+//! with `==` against the step-by-step `*_reference` methods.
 //!
 //! | kernel | here | reference |
 //! |---|---|---|
