@@ -246,7 +246,7 @@ pub fn parse_exact(text: &str) -> Result<BigRational> {
         if Zero::is_zero(&den) {
             return Err(Error::DivisionByZero(format!("'{text}' has a zero denominator")));
         }
-        return Ok(num / den);
+        return Ok(quotient(num, den));
     }
     parse_decimal(s, text)
 }
@@ -313,6 +313,9 @@ fn parse_decimal(s: &str, whole: &str) -> Result<BigRational> {
             limit: format!("±{MAX_DECIMAL_EXPONENT}"),
         });
     }
+    if let Some(small) = small_decimal(&value, scale) {
+        return Ok(small);
+    }
     let ten = BigInt::from(10);
     let power = num_traits::pow(ten, scale.unsigned_abs() as usize);
     Ok(if scale >= 0 {
@@ -320,6 +323,37 @@ fn parse_decimal(s: &str, whole: &str) -> Result<BigRational> {
     } else {
         BigRational::new(value, power)
     })
+}
+
+/// `value · 10^scale` in lowest terms on machine words, when `value` and `10^|scale|` fit
+/// 64 bits: the oracle reads thousands of short decimals, and `BigRational::new` reduces
+/// each with num-bigint's binary gcd.
+fn small_decimal(value: &BigInt, scale: i64) -> Option<BigRational> {
+    let v = value.to_i64()?;
+    let power = 10u64.checked_pow(u32::try_from(scale.unsigned_abs()).ok()?)?;
+    if scale >= 0 {
+        let n = i128::from(v) * i128::from(power);
+        return Some(BigRational::from_integer(BigInt::from(n)));
+    }
+    let g = crate::exact::small_rational::gcd_u128(u128::from(v.unsigned_abs()), u128::from(power)) as u64;
+    let (num, den) = (v / g as i64, power / g);
+    Some(BigRational::new_raw(BigInt::from(num), BigInt::from(den)))
+}
+
+/// `num / den` of two parsed numbers, `den ≠ 0`, on machine words when both are integers of
+/// 64 bits (the usual `"p/q"`).
+fn quotient(num: BigRational, den: BigRational) -> BigRational {
+    if num.denom().is_one() && den.denom().is_one() {
+        if let (Some(p), Some(q)) = (num.numer().to_i64(), den.numer().to_i64()) {
+            let negative = (p < 0) != (q < 0);
+            let (p, q) = (u128::from(p.unsigned_abs()), u128::from(q.unsigned_abs()));
+            let g = crate::exact::small_rational::gcd_u128(p, q);
+            // |p|/g and |q|/g fit 64 bits unsigned; the sign goes to the numerator.
+            let (p, q) = ((p / g) as i128, (q / g) as i128);
+            return BigRational::new_raw(BigInt::from(if negative { -p } else { p }), BigInt::from(q));
+        }
+    }
+    num / den
 }
 
 /// Formats an exact rational in lowest terms as `p` or `p/q` with a positive denominator.
@@ -373,6 +407,40 @@ mod tests {
 
     fn q(p: i64, d: i64) -> BigRational {
         BigRational::new(p.into(), d.into())
+    }
+
+    /// The machine-word paths of decimals and `p/q` give what `BigRational::new` gives, in
+    /// the same canonical form, at and beyond the edges of 64 bits.
+    #[test]
+    fn short_decimals_and_fractions_are_exact() {
+        let big = |s: &str| s.parse::<BigInt>().unwrap();
+        let cases: [(&str, BigRational); 12] = [
+            ("668.45", BigRational::new(big("66845"), big("100"))),
+            ("-0.0040", BigRational::new(big("-40"), big("10000"))),
+            ("12e3", BigRational::from_integer(big("12000"))),
+            (
+                "9223372036854775807.5",
+                BigRational::new(big("92233720368547758075"), big("10")),
+            ),
+            (
+                "-9.223372036854775808",
+                BigRational::new(big("-9223372036854775808"), big("1000000000000000000")),
+            ),
+            ("1e-19", BigRational::new(big("1"), big("10000000000000000000"))),
+            ("1e-20", BigRational::new(big("1"), big("100000000000000000000"))),
+            ("-744/12", BigRational::new(big("-744"), big("12"))),
+            ("744/-12", BigRational::new(big("744"), big("-12"))),
+            (
+                "-9223372036854775808/-9223372036854775808",
+                BigRational::from_integer(big("1")),
+            ),
+            ("0/-5", BigRational::from_integer(big("0"))),
+            ("3/4.5", BigRational::new(big("2"), big("3"))),
+        ];
+        for (text, expected) in cases {
+            let parsed = parse_exact(text).unwrap();
+            assert_eq!(format!("{parsed:?}"), format!("{expected:?}"), "{text}");
+        }
     }
 
     #[test]

@@ -5,10 +5,12 @@
 //! `D`, a parameter `t = p/q` stays the pair of integers `(p, q)`, and every step is integer
 //! arithmetic; each output coordinate is reduced once, part by part ([`crate::exact::gcd`]).
 //! The integers are machine words (`i128`, every operation overflow-checked) while they fit;
-//! on the first overflow the whole kernel runs again on [`BigInt`] (one elevation step then
-//! combines neighbouring points pairwise instead). The public generic methods choose these
-//! kernels for exact rationals (`exact::dispatch`); the tests compare them with `==`
-//! against the step-by-step `*_reference` methods.
+//! on the first overflow the whole kernel runs again on [`BigInt`]. Two kernels change
+//! algorithm there: the point of a curve is then summed by binary splitting
+//! (`exact::splitting`), and one elevation step combines neighbouring points pairwise, on
+//! 256-bit words where they fit (`exact::elevation_words`). The public generic methods
+//! choose these kernels for exact rationals (`exact::dispatch`); the tests compare them
+//! with `==` against the step-by-step `*_reference` methods.
 //!
 //! | kernel | here | reference |
 //! |---|---|---|
@@ -30,6 +32,7 @@ use crate::curve::{BezierCurve, DeCasteljauScheme};
 use crate::error::{check_degree, Error, Result};
 use crate::exact::gcd::{self, Part};
 use crate::exact::small_rational::gcd_u128;
+use crate::exact::{elevation_words, splitting};
 use crate::point::Point;
 use crate::rational::RationalBezierCurve;
 use crate::surface::BezierSurface;
@@ -40,6 +43,8 @@ use num_traits::{Signed, ToPrimitive, Zero};
 /// The integers a kernel runs on: `i128` with checked arithmetic (`None` on overflow) or
 /// [`BigInt`] (never `None`).
 pub(crate) trait Int: Clone + Sized {
+    /// Whether this is [`BigInt`] (the tier that never overflows).
+    const IS_BIG: bool;
     fn from_big(x: &BigInt) -> Option<Self>;
     fn from_u64(x: u64) -> Self;
     fn zero() -> Self {
@@ -71,6 +76,7 @@ pub(crate) trait Int: Clone + Sized {
 }
 
 impl Int for i128 {
+    const IS_BIG: bool = false;
     fn from_big(x: &BigInt) -> Option<Self> {
         x.to_i128()
     }
@@ -129,6 +135,7 @@ impl Int for i128 {
 }
 
 impl Int for BigInt {
+    const IS_BIG: bool = true;
     fn from_big(x: &BigInt) -> Option<Self> {
         Some(x.clone())
     }
@@ -301,6 +308,13 @@ fn point_by_coordinate(dim: usize, each: impl FnMut(usize) -> Option<BigRational
 // denominators in the coordinates, a denominator shared by all would be their product,
 // and every integer of the sum that much longer.
 fn curve_eval<I: Int>(c: &BezierCurve<BigRational>, t: &BigRational) -> Option<Point<BigRational>> {
+    if I::IS_BIG {
+        // Past machine words the sum is split in balanced halves (see `splitting`).
+        return point_by_coordinate(c.dim(), |k| {
+            let values: Vec<&BigRational> = coordinate(c.points(), k).collect();
+            Some(splitting::bernstein_sum(&values, t.numer(), t.denom()))
+        });
+    }
     let (p, q, s) = parameter::<I>(t)?;
     point_by_coordinate(c.dim(), |k| {
         let x = common_denominator::<I>(coordinate(c.points(), k))?;
@@ -476,30 +490,6 @@ fn curve_elevate_by<I: Int>(c: &BezierCurve<BigRational>, r: usize) -> Option<Ve
     Some(out)
 }
 
-/// One elevation step (7) point by point, each coordinate over the common denominator of
-/// the two values it combines: for big integers, where one denominator for the whole
-/// curve would make every output as long as all the inputs together.
-fn curve_elevate_pairwise(c: &BezierCurve<BigRational>) -> Vec<Point<BigRational>> {
-    let points = c.points();
-    let n = points.len() - 1;
-    let n1 = BigInt::from(n + 1);
-    let mut out = Vec::with_capacity(n + 2);
-    out.push(points[0].clone());
-    for i in 1..=n {
-        let (before, here) = (points[i - 1].coords(), points[i].coords());
-        let coords = before.iter().zip(here).map(|(a, b)| {
-            // (i a + (n+1−i) b) / (n+1) with a = x/d, b = y/e over lcm(d, e) = L.
-            let l = gcd::lcm_int(a.denom(), b.denom());
-            let x = a.numer() * (&l / a.denom()) * i;
-            let y = b.numer() * (&l / b.denom()) * (n + 1 - i);
-            gcd::reduce(x + y, &[Part::Number(&l), Part::Number(&n1)])
-        });
-        out.push(Point::new(coords.collect()).expect("as many coordinates as a valid point"));
-    }
-    out.push(points[n].clone());
-    out
-}
-
 fn curve_elevate<I: Int>(c: &BezierCurve<BigRational>) -> Option<Vec<Point<BigRational>>> {
     let (n, dim) = (c.degree(), c.dim());
     let x = common_denominator::<I>(coordinates(c.points()))?;
@@ -637,7 +627,7 @@ impl BezierCurve<BigRational> {
     /// One degree elevation step (7) over integers; equals [`BezierCurve::elevate`].
     pub fn elevate_fraction_free(&self) -> Result<Self> {
         check_degree("degree after elevation", self.degree() as u128 + 1)?;
-        let points = curve_elevate::<i128>(self).unwrap_or_else(|| curve_elevate_pairwise(self));
+        let points = curve_elevate::<i128>(self).unwrap_or_else(|| elevation_words::elevate_pairwise(self.points()));
         BezierCurve::new(points)
     }
 

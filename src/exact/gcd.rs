@@ -28,15 +28,19 @@ fn word_at(x: &BigUint, shift: u64) -> u64 {
     }
 }
 
-/// Cofactors `(A, B, C, D)` of Lehmer's inner Euclid on the leading words `x ≥ y` of two
-/// big numbers: while the quotients agree for both ends of the words' uncertainty, they are
-/// the quotients of the big numbers too (Knuth, TAOCP vol. 2, Algorithm 4.5.2L).
-fn lehmer_cofactors(x: u64, y: u64) -> (i128, i128, i128, i128) {
-    let (mut x, mut y) = (i128::from(x), i128::from(y));
-    let (mut a, mut b, mut c, mut d) = (1i128, 0i128, 0i128, 1i128);
+/// Cofactors `(A, B, C, D)` of Lehmer's inner Euclid on the leading bits `x ≥ y` of two
+/// big numbers (below 2^62): while the quotients agree for both ends of the words'
+/// uncertainty, they are the quotients of the big numbers too (Knuth, TAOCP vol. 2,
+/// Algorithm 4.5.2L). With 62-bit words every cofactor stays below 2^62 in magnitude, so
+/// `x + A` and `y + C` fit an `i64`: the quotients are machine divisions, not the 128-bit
+/// library routine that made this loop the cost of every reduction.
+fn lehmer_cofactors(x: u64, y: u64) -> (i64, i64, i64, i64) {
+    debug_assert!(x < 1 << 62 && y <= x);
+    let (mut x, mut y) = (x as i64, y as i64);
+    let (mut a, mut b, mut c, mut d) = (1i64, 0i64, 0i64, 1i64);
     while y + c != 0 && y + d != 0 {
-        let q = (x + a) / (y + c);
-        if q != (x + b) / (y + d) {
+        let q = quotient(x + a, y + c);
+        if q != quotient(x + b, y + d) {
             break;
         }
         (a, c) = (c, a - q * c);
@@ -46,9 +50,20 @@ fn lehmer_cofactors(x: u64, y: u64) -> (i128, i128, i128, i128) {
     (a, b, c, d)
 }
 
+/// `n / d` (truncated), with the quotients 1 to 3 (two in three of Euclid's quotients, by
+/// Gauss–Kuzmin) found by comparisons instead of a division.
+#[inline]
+fn quotient(n: i64, d: i64) -> i64 {
+    if d > 0 && d <= i64::MAX / 4 && n >= d && n < 4 * d {
+        1 + i64::from(n >= 2 * d) + i64::from(n >= 3 * d)
+    } else {
+        n / d
+    }
+}
+
 /// `|u x + v y|` for cofactors of opposite signs (or zero), where the result is known to be
 /// nonnegative.
-fn combine(x: &BigUint, u: i128, y: &BigUint, v: i128) -> BigUint {
+fn combine(x: &BigUint, u: i64, y: &BigUint, v: i64) -> BigUint {
     let (ux, vy) = (x * u.unsigned_abs(), y * v.unsigned_abs());
     if v <= 0 {
         ux - vy
@@ -77,7 +92,8 @@ pub fn gcd(a: &BigUint, b: &BigUint) -> BigUint {
             std::mem::swap(&mut a, &mut b);
             continue;
         }
-        let shift = a.bits().saturating_sub(64);
+        // 62 leading bits: see `lehmer_cofactors`.
+        let shift = a.bits().saturating_sub(62);
         let (x, y) = (word_at(&a, shift), word_at(&b, shift));
         let (ca, cb, cc, cd) = lehmer_cofactors(x, y);
         if cb == 0 {
@@ -93,7 +109,53 @@ pub fn gcd(a: &BigUint, b: &BigUint) -> BigUint {
 
 /// `gcd(a, b)` of integers, nonnegative.
 pub fn gcd_int(a: &BigInt, b: &BigInt) -> BigInt {
+    // Two double words: no copies of the operands.
+    if let (Some(x), Some(y)) = (a.magnitude().to_u128(), b.magnitude().to_u128()) {
+        return BigInt::from(gcd_u128(x, y));
+    }
     BigInt::from_biguint(Sign::Plus, gcd(a.magnitude(), b.magnitude()))
+}
+
+/// `gcd(num, Π f_j)` from the gcds `h_j = gcd(num, f_j)` of `num` with each factor (the
+/// `h_j ≠ 1` suffice): it is `gcd(num, Π h_j)`, a gcd with a product of short numbers
+/// instead of the long product of the factors.
+///
+/// For a prime `p` with exponent `v` in `num` and `e_j` in `f_j`: `Π h_j` has exponent
+/// `Σ_j min(v, e_j)`, which is at least `min(v, Σ_j e_j)` (the exponent in `gcd(num, Π f_j)`)
+/// and at most `Σ_j e_j`; so its gcd with `num`, exponent `min(v, Σ_j min(v, e_j))`, has
+/// exactly `min(v, Σ_j e_j)`.
+pub fn gcd_with_product(num: &BigInt, factor_gcds: &[BigInt]) -> BigInt {
+    match factor_gcds {
+        [] => BigInt::one(),
+        [h] => h.clone(),
+        _ => gcd_int(num, &product(factor_gcds)),
+    }
+}
+
+/// `Π xs` by halves, so that the long products are of balanced operands.
+pub fn product(xs: &[BigInt]) -> BigInt {
+    match xs {
+        [] => BigInt::one(),
+        [x] => x.clone(),
+        _ => {
+            let (left, right) = xs.split_at(xs.len() / 2);
+            product(left) * product(right)
+        }
+    }
+}
+
+/// `num` and `base^e` divided by their gcd, `base > 0`: `base^e` whole when `base` is prime
+/// to `num` (one division by `base`), else one gcd with the power.
+pub fn reduce_by_power(num: BigInt, base: &BigInt, e: usize) -> (BigInt, BigInt) {
+    if num.is_zero() {
+        return (num, BigInt::one());
+    }
+    let power = num_traits::pow(base.clone(), e);
+    if e == 0 || base.is_one() || gcd_int(&num.mod_floor(base), base).is_one() {
+        return (num, power);
+    }
+    let g = gcd_int(&num, &power);
+    (num.div_floor(&g), power.div_floor(&g))
 }
 
 /// `lcm(a, b)` of positive integers.
@@ -177,6 +239,49 @@ mod tests {
             prop_assert_eq!(gcd(&x, &y), Integer::gcd(&x, &y));
             prop_assert_eq!(gcd(&a, &b), Integer::gcd(&a, &b));
             prop_assert_eq!(gcd(&x, &b), Integer::gcd(&x, &b));
+        }
+
+        /// `gcd(num, Π f_j) = gcd(num, Π gcd(num, f_j))`, on factors that repeat primes,
+        /// share them, are 1, or are long, against num-bigint's gcd of the whole product.
+        #[test]
+        fn gcd_with_a_product_from_the_factors_gcds(
+            num in proptest::collection::vec(any::<u64>(), 1..6),
+            num_primes in proptest::collection::vec((0usize..8, 0u32..6), 0..6),
+            factors in proptest::collection::vec(
+                (proptest::collection::vec((0usize..8, 0u32..4), 0..4), proptest::collection::vec(any::<u64>(), 0..3)),
+                0..12,
+            ),
+            negative in any::<bool>(),
+        ) {
+            const PRIMES: [u64; 8] = [2, 3, 5, 7, 11, 13, 1_000_003, 18_446_744_073_709_551_557];
+            let with_primes = |base: BigUint, powers: &[(usize, u32)]| {
+                powers.iter().fold(base, |acc, &(p, e)| acc * BigUint::from(PRIMES[p]).pow(e))
+            };
+            let n = with_primes(big(&num), &num_primes);
+            let n = BigInt::from_biguint(if negative { Sign::Minus } else { Sign::Plus }, n);
+            let factors: Vec<BigInt> = factors
+                .iter()
+                .map(|(powers, rest)| {
+                    let rest = if rest.is_empty() { BigUint::one() } else { big(rest).max(BigUint::one()) };
+                    BigInt::from_biguint(Sign::Plus, with_primes(rest, powers))
+                })
+                .collect();
+            let gcds: Vec<BigInt> = factors.iter().map(|f| Integer::gcd(&n, f)).filter(|h| !h.is_one()).collect();
+            let whole = Integer::gcd(&n, &factors.iter().product::<BigInt>());
+            prop_assert_eq!(gcd_with_product(&n, &gcds), whole);
+        }
+
+        /// `reduce_by_power` is lowest terms of `num / base^e`.
+        #[test]
+        fn reduce_by_power_is_lowest_terms(
+            n in prop_oneof![Just(0i64), any::<i64>()], k in 0u32..5, base in 1u64..60, e in 0usize..8,
+        ) {
+            let b = BigInt::from(base);
+            let num = BigInt::from(n) * b.pow(k);
+            let (reduced, den) = reduce_by_power(num.clone(), &b, e);
+            let expected = BigRational::new(num, b.pow(e as u32));
+            prop_assert_eq!(&reduced, expected.numer());
+            prop_assert_eq!(&den, expected.denom());
         }
 
         /// The reduction part by part is `BigRational::new` on the product.

@@ -9,13 +9,19 @@
 //! - [`basis_table`]: [`BernsteinTable`], Bernstein rows at integer and rational parameters,
 //!   computed once and shared across threads;
 //! - [`gcd`]: Lehmer's gcd and the part-by-part reduction the kernels end with;
+//! - `splitting`: the exact Bernstein sum on big integers by binary splitting (what `eval`
+//!   runs when machine words overflow), reduced through a remainder tree;
+//! - `elevation_words`: one elevation step point by point, each coordinate on machine
+//!   words where it fits 256 bits;
 //! - `dispatch`: how the public generic methods hand exact rationals to the kernels.
 
 pub mod basis_table;
 pub(crate) mod dispatch;
+pub(crate) mod elevation_words;
 pub mod fraction_free;
 pub mod gcd;
 pub mod small_rational;
+pub(crate) mod splitting;
 
 pub use basis_table::{BernsteinTable, RationalBasisRow};
 pub use small_rational::SmallRational;

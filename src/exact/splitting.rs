@@ -1,0 +1,287 @@
+//! The exact Bernstein sum of one coordinate on big integers, by binary splitting.
+//!
+//! With `t = a/b`, `s = b − a` and coordinates `x_i = c_i / d_i`,
+//!
+//! ```text
+//! b(t) = Σ_i C(n,i) aⁱ s^(n−i) c_i/d_i  /  bⁿ.
+//! ```
+//!
+//! The nested (Horner) sum of [`super::fraction_free`] multiplies an accumulator that grows
+//! to the size of the result by the next term `n` times: `n` products of a big number by a
+//! small one, `O(n · N)` word operations for a result of `N` words, and its inputs over one
+//! common denominator are each as long as that denominator. Here the sum is split in halves
+//! down to single terms and the halves are combined with a few products of balanced
+//! operands, where num-bigint's Karatsuba and Toom-3 multiplication pay: `O(M(N) log n)`.
+//!
+//! A node `[lo, hi)` holds `T, P, Q, D` with
+//!
+//! ```text
+//! Σ_{i=lo}^{hi−1} (Π_{k=lo}^{i} p(k)/q(k)) · c_i/d_i · a^(i−lo) s^(hi−1−i) = T / (Q D),
+//! ```
+//!
+//! `p(k)/q(k) = (n−k+1)/k` the ratio of consecutive binomials (`p(0) = q(0) = 1`),
+//! `P = Π p(k)`, `Q = Π q(k)` and `D = Π d_i` over the node; two halves `l`, `r` combine as
+//!
+//! ```text
+//! T = T_l · s^len(r) Q_r D_r + T_r · a^len(l) P_l D_l,   P = P_l P_r,  Q = Q_l Q_r,  D = D_l D_r.
+//! ```
+//!
+//! At the root `Q = n!` divides `T` exactly, leaving `b(t) = N / (D bⁿ)`.
+//!
+//! **Denominators.** Unrelated denominators (the general case: 30-digit fractions from
+//! different sources) are kept as the product `D`, which is then as long as their lcm and
+//! costs no gcd at all. Denominators that share most of their factors (decimals, floats,
+//! one denominator for the whole curve) would make that product far longer than their
+//! lcm `L`: when `L` stays short, the numerators are put over `L` instead and `D = 1`.
+//!
+//! **The one reduction.** `N / (D bⁿ)` is brought to lowest terms without a gcd of two long
+//! numbers: the remainders `N mod d_i` come down the product tree of the `d_i` (a remainder
+//! tree), each gives `h_i = gcd(N, d_i)` on short numbers, and `gcd(N, D) = gcd(N, Π h_i)`
+//! ([`super::gcd::gcd_with_product`]), where `Π h_i` is short (usually a few small primes);
+//! `bⁿ` is skipped whole when `gcd(N mod b, b) = 1`.
+
+use crate::exact::gcd::{self, Part};
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{One, Zero};
+use std::collections::BTreeMap;
+
+/// The products of the denominators over the nodes of the splitting tree, in pre-order: the
+/// node of `[lo, hi)` with index `i` has its left child at `i + 1` and its right child at
+/// `i + 2 (mid − lo)` (a subtree of `m` leaves has `2m − 1` nodes).
+pub(crate) struct ProductTree {
+    nodes: Vec<BigInt>,
+    leaves: usize,
+}
+
+/// The split point of `[lo, hi)`, the same in every tree of this module.
+fn middle(lo: usize, hi: usize) -> usize {
+    lo + (hi - lo) / 2
+}
+
+impl ProductTree {
+    /// The tree of `factors` (at least one).
+    pub(crate) fn new(factors: &[&BigInt]) -> Self {
+        let mut nodes = vec![BigInt::zero(); 2 * factors.len() - 1];
+        fn build(nodes: &mut [BigInt], factors: &[&BigInt], lo: usize, hi: usize, id: usize) {
+            if hi - lo == 1 {
+                nodes[id] = factors[lo].clone();
+                return;
+            }
+            let mid = middle(lo, hi);
+            let (left, right) = (id + 1, id + 2 * (mid - lo));
+            build(nodes, factors, lo, mid, left);
+            build(nodes, factors, mid, hi, right);
+            nodes[id] = &nodes[left] * &nodes[right];
+        }
+        build(&mut nodes, factors, 0, factors.len(), 0);
+        ProductTree {
+            nodes,
+            leaves: factors.len(),
+        }
+    }
+
+    /// The product of all factors.
+    pub(crate) fn product(&self) -> &BigInt {
+        &self.nodes[0]
+    }
+
+    /// `x mod f` for every factor `f`, in order, nonnegative (a remainder tree).
+    pub(crate) fn remainders(&self, x: &BigInt) -> Vec<BigInt> {
+        let mut out = vec![BigInt::zero(); self.leaves];
+        fn down(tree: &ProductTree, out: &mut [BigInt], x: BigInt, lo: usize, hi: usize, id: usize) {
+            let r = x.mod_floor(&tree.nodes[id]);
+            if hi - lo == 1 {
+                out[lo] = r;
+                return;
+            }
+            let mid = middle(lo, hi);
+            down(tree, out, r.clone(), lo, mid, id + 1);
+            down(tree, out, r, mid, hi, id + 2 * (mid - lo));
+        }
+        down(self, &mut out, x.clone(), 0, self.leaves, 0);
+        out
+    }
+}
+
+/// The powers `base^m` for every length `m` of a node of the splitting tree of `n + 1`
+/// terms, each the product of its two halves' powers.
+fn node_powers(base: &BigInt, terms: usize) -> BTreeMap<usize, BigInt> {
+    let mut lengths = Vec::new();
+    let mut level = vec![terms];
+    while !level.is_empty() {
+        lengths.extend(&level);
+        let mut next: Vec<usize> = level
+            .iter()
+            .filter(|&&m| m > 1)
+            .flat_map(|&m| [m / 2, m - m / 2])
+            .collect();
+        next.sort_unstable();
+        next.dedup();
+        level = next;
+    }
+    lengths.sort_unstable();
+    lengths.dedup();
+    let mut powers = BTreeMap::new();
+    for m in lengths {
+        let value = if m == 1 {
+            base.clone()
+        } else {
+            &powers[&(m / 2)] * &powers[&(m - m / 2)]
+        };
+        powers.insert(m, value);
+    }
+    powers
+}
+
+/// One node's `T, P, Q` (its `D` is in the [`ProductTree`]).
+struct Node {
+    t: BigInt,
+    p: BigInt,
+    q: BigInt,
+}
+
+/// What the splitting of one coordinate reads.
+struct Sum<'a> {
+    n: usize,
+    numerators: &'a [BigInt],
+    denominators: Option<&'a ProductTree>,
+    a_powers: &'a BTreeMap<usize, BigInt>,
+    s_powers: &'a BTreeMap<usize, BigInt>,
+}
+
+impl Sum<'_> {
+    fn node(&self, lo: usize, hi: usize, id: usize) -> Node {
+        if hi - lo == 1 {
+            let (p, q) = if lo == 0 {
+                (BigInt::one(), BigInt::one())
+            } else {
+                (BigInt::from(self.n - lo + 1), BigInt::from(lo))
+            };
+            return Node {
+                t: &p * &self.numerators[lo],
+                p,
+                q,
+            };
+        }
+        let mid = middle(lo, hi);
+        let (left_id, right_id) = (id + 1, id + 2 * (mid - lo));
+        let left = self.node(lo, mid, left_id);
+        let right = self.node(mid, hi, right_id);
+        // The cofactors first, so that each product with a T is of balanced operands.
+        let mut right_factor = &self.s_powers[&(hi - mid)] * &right.q;
+        let mut left_factor = &self.a_powers[&(mid - lo)] * &left.p;
+        if let Some(tree) = self.denominators {
+            right_factor *= &tree.nodes[right_id];
+            left_factor *= &tree.nodes[left_id];
+        }
+        Node {
+            t: left.t * right_factor + right.t * left_factor,
+            p: left.p * right.p,
+            q: left.q * right.q,
+        }
+    }
+}
+
+/// `Σ_i C(n,i) aⁱ s^(n−i) x_i / bⁿ` for `x_i = values[i]`, `t = a/b`, `s = b − a`, in lowest
+/// terms (see the [module documentation](self)).
+pub(crate) fn bernstein_sum(values: &[&BigRational], a: &BigInt, b: &BigInt) -> BigRational {
+    let n = values.len() - 1;
+    let s = b - a;
+    let a_powers = node_powers(a, n + 1);
+    let s_powers = node_powers(&s, n + 1);
+    let run = |numerators: &[BigInt], denominators: Option<&ProductTree>| {
+        let sum = Sum {
+            n,
+            numerators,
+            denominators,
+            a_powers: &a_powers,
+            s_powers: &s_powers,
+        };
+        let root = sum.node(0, n + 1, 0);
+        // Q = n! divides T (see the module documentation).
+        root.t / root.q
+    };
+    match short_common_denominator(values) {
+        Some(common) => {
+            let numerators: Vec<BigInt> = values
+                .iter()
+                .map(|v| {
+                    if v.denom().is_one() {
+                        v.numer() * &common
+                    } else {
+                        v.numer() * (&common / v.denom())
+                    }
+                })
+                .collect();
+            let num = run(&numerators, None);
+            gcd::reduce(num, &[Part::Power(b, n), Part::Number(&common)])
+        }
+        None => {
+            let denominators: Vec<&BigInt> = values.iter().map(|v| v.denom()).collect();
+            let tree = ProductTree::new(&denominators);
+            let numerators: Vec<BigInt> = values.iter().map(|v| v.numer().clone()).collect();
+            let num = run(&numerators, Some(&tree));
+            reduce_over_tree(num, &tree, b, n)
+        }
+    }
+}
+
+/// The lcm of the denominators when it stays short (at most twice the longest one plus two
+/// words): denominators that share their factors. `None` as soon as it grows past that.
+fn short_common_denominator(values: &[&BigRational]) -> Option<BigInt> {
+    let longest = values.iter().map(|v| v.denom().bits()).max().unwrap_or(1);
+    let limit = 2 * longest + 128;
+    let mut common = BigInt::one();
+    for v in values {
+        if v.denom().is_one() || v.denom() == &common {
+            continue;
+        }
+        common = gcd::lcm_int(&common, v.denom());
+        if common.bits() > limit {
+            return None;
+        }
+    }
+    Some(common)
+}
+
+/// `num / (Π tree's factors · bⁿ)` in lowest terms, `b > 0`.
+fn reduce_over_tree(num: BigInt, tree: &ProductTree, b: &BigInt, n: usize) -> BigRational {
+    if num.is_zero() {
+        return BigRational::new_raw(num, BigInt::one());
+    }
+    // The remainder tree gives every gcd(num, d_i) at the cost of about one division of
+    // num by Π d_i; their product has the primes num shares with Π d_i
+    // (`gcd::gcd_with_product`).
+    let remainders = tree.remainders(&num);
+    let shared: Vec<BigInt> = (0..tree.leaves)
+        .zip(&remainders)
+        .map(|(i, r)| gcd::gcd_int(r, &tree.nodes[leaf_id(tree.leaves, i)]))
+        .filter(|h| !h.is_one())
+        .collect();
+    let g = gcd::gcd_with_product(&num, &shared);
+    let (num, den) = if g.is_one() {
+        (num, tree.product().clone())
+    } else {
+        (num.div_floor(&g), tree.product().div_floor(&g))
+    };
+    let (num, power_left) = gcd::reduce_by_power(num, b, n);
+    BigRational::new_raw(num, den * power_left)
+}
+
+/// The pre-order index of leaf `i` in a tree of `leaves` leaves.
+fn leaf_id(leaves: usize, i: usize) -> usize {
+    let (mut lo, mut hi, mut id) = (0, leaves, 0);
+    while hi - lo > 1 {
+        let mid = middle(lo, hi);
+        if i < mid {
+            id += 1;
+            hi = mid;
+        } else {
+            id += 2 * (mid - lo);
+            lo = mid;
+        }
+    }
+    id
+}

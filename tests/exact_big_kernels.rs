@@ -1,0 +1,206 @@
+//! The big-number kernels — eval by binary splitting, elevation on words — against the
+//! step-by-step references with `==` and in lowest terms, on the inputs they exist for:
+//! 30-digit rationals each with its own denominator, negative values, zero coordinates,
+//! coordinates sharing one long denominator, and parameters 0, 1, outside [0, 1], with 20
+//! digits or with a huge denominator.
+//!
+//! Above degree 20 the reference for eval is an independent nested sum over the lcm of the
+//! denominators, reduced by num-rational itself (`BigRational::new`): de Casteljau's steps
+//! on `BigRational` take minutes there.
+
+use casteljau::{BezierCurve, BigInt, BigRational, Point};
+use num_integer::Integer;
+use num_traits::{One, Zero};
+use proptest::prelude::*;
+use proptest::test_runner::Config;
+
+type Q = BigRational;
+
+/// Equal and in the same form (`Debug` shows numerator and denominator).
+fn same<X: PartialEq + std::fmt::Debug>(a: &X, b: &X) -> bool {
+    a == b && format!("{a:?}") == format!("{b:?}")
+}
+
+fn ten_to(k: u32) -> u128 {
+    10u128.pow(k)
+}
+
+/// A 30-digit numerator (or fewer, or zero) over a 30-digit denominator, any sign.
+fn thirty_digits() -> impl Strategy<Value = Q> {
+    (any::<u128>(), any::<u128>(), any::<bool>()).prop_map(|(a, b, negative)| {
+        let num = BigInt::from(a % ten_to(30));
+        let den = BigInt::from(ten_to(29) + b % (9 * ten_to(29)));
+        Q::new(if negative { -num } else { num }, den)
+    })
+}
+
+/// One coordinate: mostly 30-digit fractions, sometimes zero, a small integer, or a value
+/// over the curve's shared denominator `shared`.
+fn coordinate(shared: BigInt) -> impl Strategy<Value = Q> {
+    prop_oneof![
+        6 => thirty_digits(),
+        1 => Just(Q::zero()),
+        1 => (-50i64..=50).prop_map(|k| Q::from_integer(k.into())),
+        2 => any::<i128>().prop_map(move |k| Q::new(k.into(), shared.clone())),
+    ]
+}
+
+/// Curves of the given degrees, in 1 or 2 dimensions; with `all_shared`, every coordinate
+/// is over one 30-digit denominator (the elevation's gcd of two denominators is then that
+/// whole denominator, and the eval kernel puts the numerators over it).
+fn big_curve(degrees: &'static [usize]) -> impl Strategy<Value = BezierCurve<Q>> {
+    (
+        proptest::sample::select(degrees),
+        1..=2usize,
+        any::<u128>(),
+        any::<bool>(),
+    )
+        .prop_flat_map(|(n, dim, shared, all_shared)| {
+            let shared = BigInt::from(ten_to(29) + shared % (9 * ten_to(29)));
+            let coordinate = if all_shared {
+                any::<i128>()
+                    .prop_map(move |k| Q::new(k.into(), shared.clone()))
+                    .boxed()
+            } else {
+                coordinate(shared).boxed()
+            };
+            proptest::collection::vec(proptest::collection::vec(coordinate, dim), n + 1)
+                .prop_map(|points| BezierCurve::from_coords(points).unwrap())
+        })
+}
+
+/// Parameters: 0, 1, 20-digit ones in (0, 1), outside [0, 1], and huge denominators.
+fn parameter() -> impl Strategy<Value = Q> {
+    prop_oneof![
+        1 => Just(Q::zero()),
+        1 => Just(Q::one()),
+        4 => (any::<u64>(), any::<u64>()).prop_map(|(a, b)| {
+            let q = u128::from(b) % (9 * ten_to(19)) + ten_to(19) + 1;
+            Q::new(BigInt::from(u128::from(a) % q), BigInt::from(q))
+        }),
+        2 => (-40i64..=40, 1i64..=13).prop_map(|(p, q)| Q::new(p.into(), q.into())),
+        1 => (any::<u64>(), 0u32..300).prop_map(|(a, k)| Q::new(BigInt::from(a), (BigInt::one() << 200) + k)),
+        1 => thirty_digits(),
+    ]
+}
+
+/// `Σ C(n,i) pⁱ (q−p)^(n−i) x_i / qⁿ` by the nested sum over the lcm of the denominators,
+/// reduced by `BigRational::new`: nothing of casteljau's.
+fn nested_reference(c: &BezierCurve<Q>, t: &Q) -> Point<Q> {
+    let n = c.degree();
+    let (p, q) = (t.numer(), t.denom());
+    let s = q - p;
+    let coords = (0..c.dim())
+        .map(|k| {
+            let values: Vec<&Q> = c.points().iter().map(|pt| &pt.coords()[k]).collect();
+            let l = values.iter().fold(BigInt::one(), |l, v| l.lcm(v.denom()));
+            let mut acc = BigInt::zero();
+            let mut binomial = BigInt::one();
+            for (i, v) in values.iter().enumerate() {
+                if i > 0 {
+                    binomial = binomial * (n - i + 1) / i;
+                }
+                let x = v.numer() * (&l / v.denom());
+                acc = acc * &s + &binomial * num_traits::pow(p.clone(), i) * x;
+            }
+            // The nested sum above weighs term i by s^(n−i) through the accumulator.
+            Q::new(acc, l * num_traits::pow(q.clone(), n))
+        })
+        .collect();
+    Point::new(coords).unwrap()
+}
+
+proptest! {
+    #![proptest_config(Config::with_cases(160))]
+
+    #[test]
+    fn eval_by_binary_splitting(c in big_curve(&[0, 1, 2, 3, 7, 20]), t in parameter()) {
+        let fast = c.eval(&t);
+        prop_assert!(same(&fast, &nested_reference(&c, &t)));
+        if c.degree() <= 7 {
+            prop_assert!(same(&fast, &c.eval_reference(&t)));
+        }
+        prop_assert!(same(&c.eval_nested(&t), &fast));
+    }
+
+    #[test]
+    fn elevation_on_words(c in big_curve(&[0, 1, 2, 3, 20])) {
+        let reference = c.elevate_reference().unwrap();
+        prop_assert!(same(&c.elevate().unwrap(), &reference));
+        prop_assert!(same(&c.elevate_fraction_free().unwrap(), &reference));
+    }
+
+    #[test]
+    fn split_of_big_numbers(c in big_curve(&[0, 1, 2, 3, 6]), t in parameter()) {
+        prop_assert!(same(&c.split_at(&t), &c.split_at_reference(&t)));
+    }
+}
+
+proptest! {
+    #![proptest_config(Config::with_cases(6))]
+
+    #[test]
+    fn degree_200(c in big_curve(&[200]), t in parameter()) {
+        prop_assert!(same(&c.eval(&t), &nested_reference(&c, &t)));
+        prop_assert!(same(&c.elevate().unwrap(), &c.elevate_reference().unwrap()));
+    }
+}
+
+/// The bench's case shape at degree 1000: splitmix-drawn 30-digit fractions, a 20-digit t.
+#[test]
+fn degree_1000_eval() {
+    let mut state = 7u64;
+    let mut next = move || {
+        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        u128::from(z ^ (z >> 31))
+    };
+    let mut digits = |k: u32| ten_to(k - 1) + ((next() << 64) | next()) % (9 * ten_to(k - 1));
+    let coords: Vec<Vec<Q>> = (0..=1000)
+        .map(|i| {
+            (0..2)
+                .map(|k| {
+                    let num = BigInt::from(digits(30));
+                    let num = if (i + k) % 3 == 0 { -num } else { num };
+                    Q::new(num, BigInt::from(digits(30)))
+                })
+                .collect()
+        })
+        .collect();
+    let c = BezierCurve::from_coords(coords).unwrap();
+    let (p, q) = (digits(20), digits(20));
+    let t = Q::new(BigInt::from(p.min(q)), BigInt::from(p.max(q) + 1));
+    assert!(same(&c.eval(&t), &nested_reference(&c, &t)));
+}
+
+/// Denominators sharing a factor wider than 32 bits, and inputs wider than the 110 bits the
+/// word path takes: the elevation's big-integer path, coordinate by coordinate.
+#[test]
+fn elevation_beyond_words() {
+    let wide = BigInt::from(ten_to(35)) + BigInt::from(7);
+    let shared = BigInt::from(4_294_967_311u64) * BigInt::from(4_294_967_357u64);
+    let coords = vec![
+        vec![
+            Q::new(BigInt::from(3), shared.clone() * BigInt::from(5)),
+            Q::new(wide.clone(), BigInt::from(7)),
+        ],
+        vec![
+            Q::new(BigInt::from(-11), shared.clone() * BigInt::from(6)),
+            Q::new(BigInt::from(1), wide.clone()),
+        ],
+        vec![
+            Q::new(BigInt::from(13), shared.clone()),
+            Q::new(BigInt::from(-2), BigInt::from(9)),
+        ],
+        vec![
+            Q::new(BigInt::from(2), BigInt::from(3)),
+            Q::new(-wide.clone(), BigInt::from(5)),
+        ],
+    ];
+    let c = BezierCurve::from_coords(coords).unwrap();
+    assert!(same(&c.elevate().unwrap(), &c.elevate_reference().unwrap()));
+    let t = Q::new(BigInt::from(5), BigInt::from(9));
+    assert!(same(&c.eval(&t), &c.eval_reference(&t)));
+}
