@@ -320,6 +320,7 @@ fn prove_symbolic(id: &str, decls: &Decls, identity: &Identity, closed: &Decls) 
             tr.unit = unit;
             tr.next_cert = 0;
             tr.used.clear();
+            tr.recurrences.clear();
             let mut d = dom.clone();
             if unit {
                 let (_, deg) = tr.polygon.clone().expect("polygon");
@@ -357,6 +358,9 @@ fn prove_symbolic(id: &str, decls: &Decls, identity: &Identity, closed: &Decls) 
     }
     if !tr.used.is_empty() {
         cert.push_str(&format!("; WZ certificates: {}", tr.used.join("; ")));
+    }
+    if !tr.recurrences.is_empty() {
+        cert.push_str(&format!("; {}", tr.recurrences.join("; ")));
     }
     Ok((cert, tr.log))
 }

@@ -8,6 +8,7 @@ use super::eval::Alg;
 use super::expr::{self, Expr, Op};
 use super::hyper::{lin_mul, lin_neg, lin_subst, power_of, Aff, Lin, Symbols, Term};
 use super::pieces::{prove_zero, Domain, ZeroOutcome};
+use super::telescope::{self, cancel, Coefficients, SumShape};
 use super::poly::RatFunc;
 use super::{parse, rewrite};
 use crate::error::{Error, Result};
@@ -47,6 +48,39 @@ fn sum_vars(e: &Expr, out: &mut Vec<String>) {
     }
 }
 
+/// The variables of integration of `integral(e, t, a, b)` in `e`, appended to `out`.
+fn integral_vars(e: &Expr, out: &mut Vec<String>) {
+    match e {
+        Expr::Call(name, args) => {
+            if let (true, Some(Expr::Var(t))) = (name == "integral" && args.len() == 4, args.get(1)) {
+                if !out.contains(t) {
+                    out.push(t.clone());
+                }
+            }
+            args.iter().for_each(|a| integral_vars(a, out));
+        }
+        Expr::Sum(_, a, b, body) => {
+            integral_vars(a, out);
+            integral_vars(b, out);
+            integral_vars(body, out);
+        }
+        Expr::Neg(a) | Expr::Fact(a) => integral_vars(a, out),
+        Expr::Bin(_, a, b) => {
+            integral_vars(a, out);
+            integral_vars(b, out);
+        }
+        Expr::Index(_, args) | Expr::Tuple(args) => args.iter().for_each(|a| integral_vars(a, out)),
+        Expr::Matrix(rows) => rows.iter().flatten().for_each(|a| integral_vars(a, out)),
+        Expr::Num(_) | Expr::Var(_) => {}
+    }
+}
+
+/// Whether the bounds of an integral are exactly 0 and 1.
+fn is_unit_interval(lo: &Expr, hi: &Expr) -> bool {
+    let value = |e: &Expr| expr::eval_int(e, &Default::default()).ok();
+    value(lo) == Some(0) && value(hi) == Some(1)
+}
+
 /// Translates expressions into sums of hypergeometric terms, evaluating symbolic sums by their
 /// certificates.
 pub struct Translator<'a> {
@@ -61,6 +95,8 @@ pub struct Translator<'a> {
     pub log: Vec<String>,
     /// The certificates used, for the one-line summary.
     pub used: Vec<String>,
+    /// The recurrences found by creative telescoping, for the one-line summary.
+    pub recurrences: Vec<String>,
 }
 
 impl<'a> Translator<'a> {
@@ -74,6 +110,7 @@ impl<'a> Translator<'a> {
             next_cert: 0,
             log: Vec::new(),
             used: Vec::new(),
+            recurrences: Vec::new(),
         }
     }
 }
@@ -346,8 +383,17 @@ impl<'a> Translator<'a> {
                 t.coef = ex.to_rf(self.sym);
                 Ok(vec![t])
             }
+            ("integral", 4) => {
+                let (Expr::Var(t), true) = (&args[1], is_unit_interval(&args[2], &args[3])) else {
+                    return Err(Error::Domain(format!(
+                        "'{e}': for symbolic integers only integrals over [0, 1] are evaluated (Euler's Beta integral)"
+                    )));
+                };
+                let integrand = self.lin(&args[0], d)?;
+                super::beta::integrate(self.sym, &integrand, t, d)
+            }
             _ => Err(Error::Domain(format!(
-                "'{e}' is not supported for symbolic integers (only B, C, sums, powers, factorials, diff and control points b[j])"
+                "'{e}' is not supported for symbolic integers (only B, C, sums, powers, factorials, diff, integrals over [0, 1] and control points b[j])"
             ))),
         }
     }
@@ -435,6 +481,8 @@ impl<'a> Translator<'a> {
         // Normalise by a one-term value depending on n. Where that term's coefficient
         // vanishes the quotient means nothing: those values of n are checked directly, and the
         // induction starts past them.
+        // The sum as written, for creative telescoping when no WZ certificate is found.
+        let original = (f.clone(), hint.clone(), n0.clone());
         let mut n0 = n0;
         let mut d_ind = d.clone();
         let mut direct = String::new();
@@ -471,10 +519,27 @@ impl<'a> Translator<'a> {
                 (c, false)
             }
             None => match f.as_slice() {
-                [single] => (
-                    super::ansatz::find(sym, single, &n, k).map_err(|e| Error::Domain(format!("{what}: {e}")))?,
-                    true,
-                ),
+                [single] => match super::ansatz::find(sym, single, &n, k) {
+                    Ok(c) => (c, true),
+                    // No WZ pair: a recurrence of higher order may still prove a closed form.
+                    Err(e) => match (&original.0[..], original.1) {
+                        ([summand], Some(rhs)) => {
+                            let shape = SumShape {
+                                k,
+                                a,
+                                b,
+                                n: &n,
+                                n0: &original.2,
+                                rest: &rest,
+                            };
+                            return self
+                                .telescope(summand, &shape, &rhs, &what)
+                                .map(|()| rhs)
+                                .map_err(|t| Error::Domain(format!("{what}: {e}; {t}")));
+                        }
+                        _ => return Err(Error::Domain(format!("{what}: {e}"))),
+                    },
+                },
                 _ => {
                     return Err(Error::Domain(format!(
                         "{what}: a sum with a symbolic bound needs a WZ certificate R (certificate = [\"R\"], one per such sum, innermost first); none is searched for a summand of {} terms",
@@ -532,6 +597,27 @@ impl<'a> Translator<'a> {
                 .push(format!("{what}: its value is its value at {n} = {n0}: {}", show(&rhs)));
         }
         Ok(value.unwrap_or(rhs))
+    }
+
+    /// Proves `Σ_{k=a}^{b(n)} F = rhs` for every `n ≥ n₀` by a recurrence found by creative
+    /// telescoping ([`telescope`]): every identity it rests on is proved here.
+    fn telescope(&mut self, f: &Term, s: &SumShape<'_>, rhs: &[Term], what: &str) -> Result<()> {
+        let rec = telescope::find(self.sym, f, s.n, s.k, Coefficients::Search)?;
+        let (obligations, text) = telescope::closed_form(self.sym, f, &rec, s, rhs, what)?;
+        let mark = self.log.len();
+        self.log.push(format!(
+            "{what} by creative telescoping: F = {}; G = R·F = {}",
+            f.show(),
+            rec.g.show()
+        ));
+        for o in &obligations {
+            if let Err(e) = self.expect_zero(&o.lin, &o.domain, &o.what) {
+                self.log.truncate(mark);
+                return Err(e);
+            }
+        }
+        self.recurrences.push(format!("{what}: {text}"));
+        Ok(())
     }
 
     pub(crate) fn expect_zero(&mut self, lin: &[Term], d: &Domain, what: &str) -> Result<()> {
@@ -611,32 +697,6 @@ fn flatten(e: &Expr, up: bool, out: &mut Vec<(Expr, bool)>) -> Result<()> {
     }
 }
 
-/// Multiplies (`up`) or divides the term by the affine factor `a`, cancelling against a
-/// factorial when one fits: `a / a! = 1/(a−1)!`, `a · (a−1)! = a!`, `1/(a · (a−1)!) = 1/a!`,
-/// `a!/a = (a−1)!`.
-fn cancel(t: &mut Term, a: &Aff, up: bool, sym: &Symbols) {
-    let find = |t: &Term, arg: &Aff, e: i8| t.facts.iter().position(|(x, s)| x == arg && *s == e);
-    if up {
-        if let Some(p) = find(t, a, -1) {
-            t.facts[p].0 = a.shifted(-1);
-        } else if let Some(p) = find(t, &a.shifted(-1), 1) {
-            t.facts[p].0 = a.clone();
-        } else {
-            t.coef = t.coef.mul(&a.to_rf(sym));
-        }
-    } else if let Some(p) = find(t, &a.shifted(-1), -1) {
-        t.facts[p].0 = a.clone();
-    } else if let Some(p) = find(t, a, 1) {
-        t.facts[p].0 = a.shifted(-1);
-    } else {
-        t.coef = RatFunc {
-            num: t.coef.num.clone(),
-            den: t.coef.den.mul(&a.to_rf(sym).num),
-        };
-        t.nonzero.push(a.clone());
-    }
-}
-
 fn show(l: &[Term]) -> String {
     if l.is_empty() {
         return "0".into();
@@ -681,7 +741,13 @@ pub(crate) fn prepare(
         .into_iter()
         .filter(|v| !ints.contains(v))
         .collect();
-    let sym = Symbols::new(&ints, &conts);
+    // The variables of integration are parameters of the integrands only.
+    let mut all = conts.clone();
+    for e in &refs {
+        integral_vars(e, &mut all);
+    }
+    let all: Vec<String> = all.into_iter().filter(|v| !ints.contains(v)).collect();
+    let sym = Symbols::new(&ints, &all);
     Ok((certs, sym, conts))
 }
 

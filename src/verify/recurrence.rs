@@ -1,0 +1,1 @@
+//! Claims that state a recurrence of sums (placeholder).
