@@ -223,51 +223,43 @@ fn shifts(sym: &Symbols, f: &Term, n: &str, k: &str, order: usize) -> Result<Shi
     })
 }
 
-/// One column of the linear system: `num / den`.
-struct Column {
-    num: Poly,
-    den: Poly,
+/// A common multiple `M` of the denominators (their product, skipping those that already
+/// divide it) and the cofactor `M / d` of each.
+fn cofactors(sym: &Symbols, dens: &[&Poly]) -> Result<Vec<Poly>> {
+    let mut m = one(sym);
+    for d in dens {
+        if m.exact_div(d).is_none() {
+            m = m.mul(d);
+        }
+    }
+    dens.iter()
+        .map(|d| {
+            m.exact_div(d).ok_or_else(|| {
+                Error::Domain("creative telescoping: a denominator does not divide their product".into())
+            })
+        })
+        .collect()
 }
 
-/// The solution of one linear system: the coefficient of each column (the given part has 1).
+/// The solution of one linear system `Σ x_i cols_i = given` (each a polynomial, denominators
+/// cleared), or with no `given` a null vector whose first `first_free` entries (the `p_j`) are
+/// not all zero.
 fn solve(
     sym: &Symbols,
-    cols: &[Column],
-    given: Option<&Column>,
+    cols: &[Poly],
+    given: Option<&Poly>,
     first_free: usize,
     work: &mut u128,
 ) -> Result<Option<Vec<BigRational>>> {
-    // A common multiple of the denominators: their product, skipping those that divide it.
-    let mut m = one(sym);
-    let mut dens: Vec<&Poly> = Vec::new();
-    for c in cols.iter().chain(given) {
-        if !dens.contains(&&c.den) {
-            dens.push(&c.den);
-            if m.exact_div(&c.den).is_none() {
-                m = m.mul(&c.den);
-            }
-        }
-    }
-    let mut cofactor: Vec<(&Poly, Poly)> = Vec::new();
-    for d in dens {
-        let q = m
-            .exact_div(d)
-            .ok_or_else(|| Error::Domain("creative telescoping: a denominator does not divide their product".into()))?;
-        cofactor.push((d, q));
-    }
-    let times = |c: &Column| -> Poly {
-        let q = &cofactor.iter().find(|(d, _)| *d == &c.den).expect("every denominator is listed").1;
-        c.num.mul(q)
-    };
     let width = cols.len() + 1;
     let mut rows: BTreeMap<Vec<u16>, Vec<BigRational>> = BTreeMap::new();
     for (j, c) in cols.iter().enumerate() {
-        for (e, v) in terms(sym, &times(c)) {
+        for (e, v) in terms(sym, c) {
             rows.entry(e).or_insert_with(|| vec![BigRational::zero(); width])[j] += v;
         }
     }
     if let Some(g) = given {
-        for (e, v) in terms(sym, &times(g)) {
+        for (e, v) in terms(sym, g) {
             rows.entry(e).or_insert_with(|| vec![BigRational::zero(); width])[width - 1] -= v;
         }
     }
@@ -401,6 +393,30 @@ pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str, coefficients: Coefficient
     for &order in &orders {
         let sh = shifts(sym, f, n, k, order).map_err(|e| none(e.to_string()))?;
         let deg_d = total_degree(sym, &sh.dc.num);
+        // The denominators: of each r_j, of the certificate's part (D·c)(k)·(D·c)(k+1)·r2.den,
+        // and of the given part; the system is multiplied by a common multiple of them.
+        let q_den = sh.dc.num.mul(&sh.dc1.num).mul(&sh.r2.den);
+        let given_rf = match &coefficients {
+            Coefficients::Given(p) => {
+                let mut s = RatFunc::from_int(0);
+                for (pj, rj) in p.iter().zip(&sh.r) {
+                    s = s.add(&pj.mul(rj));
+                }
+                Some(s)
+            }
+            Coefficients::Search => None,
+        };
+        let mut dens: Vec<&Poly> = sh.r.iter().map(|r| &r.den).collect();
+        dens.push(&q_den);
+        if let Some(g) = &given_rf {
+            dens.push(&g.den);
+        }
+        let cof = cofactors(sym, &dens)?;
+        let cof_r = &cof[..sh.r.len()];
+        let cof_q = &cof[sh.r.len()];
+        let cert_a = sh.dc.den.mul(&sh.dc1.num).mul(&sh.r2.den).mul(cof_q);
+        let cert_b = sh.dc1.den.mul(&sh.r2.num).mul(&sh.dc.num).mul(cof_q);
+        let given = given_rf.map(|g| g.num.mul(&cof[sh.r.len() + 1]));
         let extra: Vec<u32> = match &coefficients {
             Coefficients::Search => vec![1],
             Coefficients::Given(_) => (0..=MAX_COEFFICIENT_DEGREE + 2).collect(),
@@ -420,36 +436,16 @@ pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str, coefficients: Coefficient
                     )));
                 }
                 let mut cols = Vec::with_capacity(unknowns);
-                for r in &sh.r {
-                    for e in &pmonos {
-                        cols.push(Column {
-                            num: monomial(sym, e).mul(&r.num),
-                            den: r.den.clone(),
-                        });
-                    }
+                for (r, cof) in sh.r.iter().zip(cof_r) {
+                    let base = r.num.mul(cof);
+                    cols.extend(pmonos.iter().map(|e| monomial(sym, e).mul(&base)));
                 }
-                // −R(k+1)·r2 + R(k) with R = m/(D·c).
-                let q_den = sh.dc.num.mul(&sh.dc1.num).mul(&sh.r2.den);
+                // −R(k+1)·r2 + R(k) with R = m/(D·c), over the common denominator.
                 for e in &cmonos {
                     let m = monomial(sym, e);
                     let m1 = sym.subst_poly(&m, k, &Aff::var(k).shifted(1));
-                    let a = m.mul(&sh.dc.den).mul(&sh.dc1.num).mul(&sh.r2.den);
-                    let b = m1.mul(&sh.dc1.den).mul(&sh.r2.num).mul(&sh.dc.num);
-                    cols.push(Column {
-                        num: RatFunc::poly(a).cleared_difference(&RatFunc::poly(b)),
-                        den: q_den.clone(),
-                    });
+                    cols.push(RatFunc::poly(m.mul(&cert_a)).cleared_difference(&RatFunc::poly(m1.mul(&cert_b))));
                 }
-                let given = match &coefficients {
-                    Coefficients::Given(p) => {
-                        let mut s = RatFunc::from_int(0);
-                        for (pj, rj) in p.iter().zip(&sh.r) {
-                            s = s.add(&pj.mul(rj));
-                        }
-                        Some(Column { num: s.num, den: s.den })
-                    }
-                    Coefficients::Search => None,
-                };
                 let first_free = (order + 1) * pmonos.len();
                 let found = solve(sym, &cols, given.as_ref(), first_free, &mut work).map_err(|e| {
                     none(format!(
@@ -552,15 +548,16 @@ pub fn telescoping_equation(sym: &Symbols, f: &Term, t: &Telescoper, n: &str, k:
     Ok(out)
 }
 
-/// `Σ_j p_j(n) S(n+j)` by the telescoped ends: `G(n, b+1) − G(n, a) + Σ_j p_j Σ_{m=1}^{j} F(n+j, b+m)`.
-pub fn telescoped_sum(sym: &Symbols, f: &Term, t: &Telescoper, s: &SumShape<'_>) -> Result<Lin> {
-    let mut out = vec![t.g.subst(sym, s.k, &s.b.shifted(1))];
-    out.extend(lin_neg(&[t.g.subst(sym, s.k, s.a)]));
+/// `Σ_j p_j(n) S(n+j)` for `S(n) = Σ_{k=a}^{b(n)} F(n, k)`, by the telescoped ends:
+/// `G(n, b+1) − G(n, a) + Σ_j p_j Σ_{m=1}^{j} F(n+j, b+m)`.
+pub fn telescoped_sum(sym: &Symbols, f: &Term, t: &Telescoper, (n, k, a, b): (&str, &str, &Aff, &Aff)) -> Result<Lin> {
+    let mut out = vec![t.g.subst(sym, k, &b.shifted(1))];
+    out.extend(lin_neg(&[t.g.subst(sym, k, a)]));
     for (j, p) in t.p.iter().enumerate() {
         // Shift n first, then put k = b(n) + m (written in the old n).
-        let fj = f.subst(sym, s.n, &Aff::var(s.n).shifted(j as i64));
+        let fj = f.subst(sym, n, &Aff::var(n).shifted(j as i64));
         for m in 1..=j as i64 {
-            out.extend(scaled(p, &[fj.subst(sym, s.k, &s.b.shifted(m))])?);
+            out.extend(scaled(p, &[fj.subst(sym, k, &b.shifted(m))])?);
         }
     }
     Ok(out)
@@ -633,7 +630,7 @@ pub fn closed_form(
     for (j, p) in t.p.iter().enumerate() {
         ends.extend(scaled(p, &lin_subst(sym, rhs, n, &Aff::var(n).shifted(j as i64)))?);
     }
-    ends.extend(lin_neg(&telescoped_sum(sym, f, t, s)?));
+    ends.extend(lin_neg(&telescoped_sum(sym, f, t, (n, s.k, s.a, s.b))?));
     out.push(Obligation {
         lin: ends,
         domain: d_rec.clone(),

@@ -139,6 +139,22 @@ impl<'a> Translator<'a> {
         Ok(out)
     }
 
+    /// The symbol list.
+    pub(crate) fn sym(&self) -> &'a Symbols {
+        self.sym
+    }
+
+    /// `e` as one rational function of the symbols, with no condition (`None` otherwise).
+    pub(crate) fn scalar(&mut self, e: &Expr, d: &Domain) -> Option<RatFunc> {
+        let l = self.lin(e, d).ok()?;
+        l.iter().all(is_scalar).then(|| self.scalar_of(&l, e).ok()).flatten()
+    }
+
+    /// An integer expression affine in the integer symbols.
+    pub(crate) fn affine(&mut self, e: &Expr) -> Result<Aff> {
+        self.aff(e)
+    }
+
     /// An integer expression affine in the integer symbols.
     fn aff(&mut self, e: &Expr) -> Result<Aff> {
         let l = self.lin(e, &Domain::default())?;
