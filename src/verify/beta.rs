@@ -10,6 +10,7 @@
 //! Anything else is an error (the claim can still be checked on a finite range).
 
 use super::eval::Alg;
+use super::expr::Expr;
 use super::hyper::{Aff, Base, Lin, Symbols, Term};
 use super::pieces::Domain;
 use super::poly::{Poly, RatFunc};
@@ -25,16 +26,14 @@ fn refuse(why: String) -> Error {
 /// `∫_0^1 Σ lin dt` as a sum of terms, on the domain `d` (see the module documentation).
 pub fn integrate(sym: &Symbols, lin: &[Term], t: &str, d: &Domain) -> Result<Lin> {
     let Some(tx) = sym.index(t).filter(|_| sym.is_cont(t)) else {
-        return Err(refuse(format!("the variable of integration {t} must be a continuous parameter")));
+        return Err(refuse(format!(
+            "the variable of integration {t} must be a continuous parameter"
+        )));
     };
     let names = &sym.names;
     let t_poly = Poly::var(names, tx);
     let one_minus_t = RatFunc::from_int(1).sub(&RatFunc::poly(t_poly.clone())).num;
-    let mentions_t = |p: &Poly| {
-        p.terms_list()
-            .iter()
-            .any(|(e, _)| e.get(tx).is_some_and(|&x| x > 0))
-    };
+    let mentions_t = |p: &Poly| p.terms_list().iter().any(|(e, _)| e.get(tx).is_some_and(|&x| x > 0));
     let mut out = Vec::new();
     for term in lin {
         if mentions_t(&term.coef.den) {
@@ -113,4 +112,37 @@ fn from_terms(names: &std::rc::Rc<[String]>, terms: &[(Vec<u16>, BigRational)]) 
         out = out.add(&RatFunc::poly(m));
     }
     out.num
+}
+
+/// The variables of integration of `integral(e, t, a, b)` in `e`, appended to `out`.
+pub(crate) fn integral_vars(e: &Expr, out: &mut Vec<String>) {
+    match e {
+        Expr::Call(name, args) => {
+            if let (true, Some(Expr::Var(t))) = (name == "integral" && args.len() == 4, args.get(1)) {
+                if !out.contains(t) {
+                    out.push(t.clone());
+                }
+            }
+            args.iter().for_each(|a| integral_vars(a, out));
+        }
+        Expr::Sum(_, a, b, body) => {
+            integral_vars(a, out);
+            integral_vars(b, out);
+            integral_vars(body, out);
+        }
+        Expr::Neg(a) | Expr::Fact(a) => integral_vars(a, out),
+        Expr::Bin(_, a, b) => {
+            integral_vars(a, out);
+            integral_vars(b, out);
+        }
+        Expr::Index(_, args) | Expr::Tuple(args) => args.iter().for_each(|a| integral_vars(a, out)),
+        Expr::Matrix(rows) => rows.iter().flatten().for_each(|a| integral_vars(a, out)),
+        Expr::Num(_) | Expr::Var(_) => {}
+    }
+}
+
+/// Whether the bounds of an integral are exactly 0 and 1.
+pub(crate) fn is_unit_interval(lo: &Expr, hi: &Expr) -> bool {
+    let value = |e: &Expr| super::expr::eval_int(e, &Default::default()).ok();
+    value(lo) == Some(0) && value(hi) == Some(1)
 }

@@ -118,7 +118,11 @@ pub(crate) fn prove(tr: &mut Translator<'_>, lhs: &Expr, rhs: &Expr, d: &Domain)
             return Ok(None);
         }
         let kk = k.get_or_insert_with(|| v.clone()).clone();
-        let summand = if v == kk { t.clone() } else { t.subst(sym, &v, &Aff::var(&kk)) };
+        let summand = if v == kk {
+            t.clone()
+        } else {
+            t.subst(sym, &v, &Aff::var(&kk))
+        };
         sums.push(Part { coef, a, b, summand });
     }
     let (Some(k), Some(first)) = (k, sums.first()) else {
@@ -126,19 +130,16 @@ pub(crate) fn prove(tr: &mut Translator<'_>, lhs: &Expr, rhs: &Expr, d: &Domain)
     };
     // One lower bound; upper bounds b(n) + j_s with constant j_s ≥ 0 from the least.
     let base = sums.iter().min_by_key(|p| p.b.c).expect("not empty");
-    if sums.len() < 2
-        || sums.iter().any(|p| p.a != first.a || !p.b.minus(&base.b).is_const())
-        || first.a.coef(&k) != 0
+    if sums.len() < 2 || sums.iter().any(|p| p.a != first.a || !p.b.minus(&base.b).is_const()) || first.a.coef(&k) != 0
     {
         return Ok(None);
     }
     let (a, b) = (first.a.clone(), base.b.clone());
-    let Some(n) = b
-        .v
-        .iter()
-        .filter(|(x, c)| **c == 1 && a.coef(x) == 0)
-        .map(|(x, _)| x.clone())
-        .next()
+    let Some(n) =
+        b.v.iter()
+            .filter(|(x, c)| **c == 1 && a.coef(x) == 0)
+            .map(|(x, _)| x.clone())
+            .next()
     else {
         return Ok(None);
     };
@@ -157,7 +158,11 @@ pub(crate) fn prove(tr: &mut Translator<'_>, lhs: &Expr, rhs: &Expr, d: &Domain)
         let dk = d.with(Aff::var(&k).minus(&a)).with(s.b.minus(&Aff::var(&k)));
         let check = vec![s.summand.clone(), lin_neg(&[fj])[0].clone()];
         if tr
-            .expect_zero(&check, &dk, &format!("{what}: the summand of Σ^{{{}}} is F({n}+{j}, {k})", s.b))
+            .expect_zero(
+                &check,
+                &dk,
+                &format!("{what}: the summand of Σ^{{{}}} is F({n}+{j}, {k})", s.b),
+            )
             .is_err()
         {
             tr.log.truncate(mark);
@@ -167,7 +172,8 @@ pub(crate) fn prove(tr: &mut Translator<'_>, lhs: &Expr, rhs: &Expr, d: &Domain)
     if !d.implies_ge(&b.minus(&a).shifted(1)) {
         return Err(Error::Domain(format!("{what}: cannot show b − a ≥ −1 on {}", d.show())));
     }
-    let rec = telescope::find(sym, &f, &n, &k, Coefficients::Given(&p)).map_err(|e| Error::Domain(format!("{what}: {e}")))?;
+    let rec =
+        telescope::find(sym, &f, &n, &k, Coefficients::Given(&p)).map_err(|e| Error::Domain(format!("{what}: {e}")))?;
     tr.log.push(format!(
         "{what} by creative telescoping: F = {}; G = R·F = {}",
         f.show(),

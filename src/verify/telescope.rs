@@ -52,8 +52,8 @@ pub const MAX_UNKNOWNS: usize = 400;
 /// The work the search may spend over all orders and degrees: Σ nonzero coefficients ×
 /// min(rows, columns) × (64-bit words of the largest coefficient) of its linear systems.
 pub const MAX_TELESCOPE_WORK: u128 = 200_000_000;
-/// Most values of `n` checked directly before the induction (initial values and the zeros
-/// of the leading coefficient).
+/// Most values of `n` checked directly before an induction (initial values, and the zeros of
+/// a leading coefficient or of a closed form's coefficient).
 pub const MAX_DIRECT_CASES: i64 = 64;
 
 /// The coefficients `p_j` of the recurrence: searched, or given by the claim.
@@ -332,7 +332,11 @@ fn normalise(x: &mut [BigRational], count: usize) {
     if g.is_zero() {
         return;
     }
-    let sign = head.iter().rev().find(|c| !c.is_zero()).map_or(1, |c| if c.is_negative() { -1 } else { 1 });
+    let sign = head
+        .iter()
+        .rev()
+        .find(|c| !c.is_zero())
+        .map_or(1, |c| if c.is_negative() { -1 } else { 1 });
     let s = BigRational::new(l * sign, g);
     for v in x.iter_mut() {
         *v = &*v * &s;
@@ -519,21 +523,60 @@ fn scaled(p: &RatFunc, lin: &[Term]) -> Result<Lin> {
     lin_mul(&[Term::scalar(p.clone())], lin)
 }
 
-/// The finite sum `Σ_{k=a}^{b(m)} F(m, k)` at the value `m` of `n`, a fixed number of terms.
-pub fn finite_sum(sym: &Symbols, f: &[Term], s: &SumShape<'_>, m: &Aff, what: &str) -> Result<Lin> {
-    let width = s.b.subst(s.n, m).minus(s.a);
+/// The terms of `Σ_{k=a}^{b} F` at `n = n0`, where the sum must have a fixed number of terms
+/// (at most 10 001).
+pub fn finite_sum(
+    sym: &Symbols,
+    f: &[Term],
+    (k, a, b): (&str, &Aff, &Aff),
+    (n, n0): (&str, &Aff),
+    what: &str,
+) -> Result<Lin> {
+    let width = b.subst(n, n0).minus(a);
     if !width.is_const() || width.c < -1 || width.c > 10_000 {
         return Err(Error::Domain(format!(
-            "{what}: at {} = {m} the sum does not have a fixed number of terms",
-            s.n
+            "{what}: at {n} = {n0} the sum does not have a fixed number of terms"
         )));
     }
-    let at = lin_subst(sym, f, s.n, m);
+    let at0 = lin_subst(sym, f, n, n0);
     let mut out = Vec::new();
-    for j in 0..=width.c {
-        out.extend(lin_subst(sym, &at, s.k, &s.a.shifted(j)));
+    for m in 0..=width.c {
+        out.extend(lin_subst(sym, &at0, k, &a.shifted(m)));
     }
     Ok(out)
+}
+
+/// The first `n ≥ n0` past every integer zero (in `n`) of the coefficient of the closed-form
+/// term `h`, so that dividing by `h` is defined for the whole induction; at most
+/// [`MAX_DIRECT_CASES`] values past `n0`.
+pub(crate) fn induction_start(sym: &Symbols, h: &Term, n: &str, n0: &Aff, what: &str) -> Result<Aff> {
+    let mut start = n0.clone();
+    for z in sym.integer_zeros(&h.coef.num)? {
+        let c = z.coef(n);
+        if c == 0 {
+            continue;
+        }
+        let moving = z.v.keys().any(|x| x != n);
+        if moving || !n0.is_const() {
+            return Err(Error::Domain(format!(
+                "{what}: the closed form's coefficient vanishes where {z} = 0, which moves with the other symbols: the induction cannot start past it"
+            )));
+        }
+        if z.c % c != 0 {
+            continue;
+        }
+        let root = -z.c / c;
+        if root >= start.c {
+            start = Aff::constant(root + 1);
+        }
+    }
+    if start.minus(n0).c > MAX_DIRECT_CASES {
+        return Err(Error::Domain(format!(
+            "{what}: the closed form's coefficient vanishes at {n} = {}, more than {MAX_DIRECT_CASES} values past {n0}",
+            start.c - 1
+        )));
+    }
+    Ok(start)
 }
 
 /// `Σ_j p_j(n) F(n+j, k) − G(n, k+1) + G(n, k)`, the telescoping equation as one sum.
@@ -634,12 +677,14 @@ pub fn closed_form(
     out.push(Obligation {
         lin: ends,
         domain: d_rec.clone(),
-        what: format!("{what}: the closed form satisfies the recurrence (Σ_j p_j({n}) rhs({n}+j) = the telescoped ends)"),
+        what: format!(
+            "{what}: the closed form satisfies the recurrence (Σ_j p_j({n}) rhs({n}+j) = the telescoped ends)"
+        ),
     });
     let cases = span.c + order as i64;
     for m in 0..cases {
         let at = s.n0.shifted(m);
-        let mut case = finite_sum(sym, std::slice::from_ref(f), s, &at, what)?;
+        let mut case = finite_sum(sym, std::slice::from_ref(f), (s.k, s.a, s.b), (n, &at), what)?;
         case.extend(lin_neg(&lin_subst(sym, rhs, n, &at)));
         out.push(Obligation {
             lin: case,
@@ -649,7 +694,7 @@ pub fn closed_form(
     }
     let last = s.n0.shifted(cases - 1);
     let text = format!(
-        "creative telescoping: {} = the telescoped ends, R = {}; leading coefficient ≠ 0 for {n} ≥ {n1}; {n} = {}..={last} checked directly",
+        "{what}: {} = the telescoped ends, R = {}; leading coefficient ≠ 0 for {n} ≥ {n1}; {n} = {}..={last} checked directly",
         t.show("S", n),
         t.r,
         s.n0

@@ -8,8 +8,8 @@ use super::eval::Alg;
 use super::expr::{self, Expr, Op};
 use super::hyper::{lin_mul, lin_neg, lin_subst, power_of, Aff, Lin, Symbols, Term};
 use super::pieces::{prove_zero, Domain, ZeroOutcome};
-use super::telescope::{self, cancel, Coefficients, SumShape};
 use super::poly::RatFunc;
+use super::telescope::{self, cancel, Coefficients, SumShape};
 use super::{parse, rewrite};
 use crate::error::{Error, Result};
 use num_traits::Zero;
@@ -46,39 +46,6 @@ fn sum_vars(e: &Expr, out: &mut Vec<String>) {
         }
         Expr::Num(_) | Expr::Var(_) => {}
     }
-}
-
-/// The variables of integration of `integral(e, t, a, b)` in `e`, appended to `out`.
-fn integral_vars(e: &Expr, out: &mut Vec<String>) {
-    match e {
-        Expr::Call(name, args) => {
-            if let (true, Some(Expr::Var(t))) = (name == "integral" && args.len() == 4, args.get(1)) {
-                if !out.contains(t) {
-                    out.push(t.clone());
-                }
-            }
-            args.iter().for_each(|a| integral_vars(a, out));
-        }
-        Expr::Sum(_, a, b, body) => {
-            integral_vars(a, out);
-            integral_vars(b, out);
-            integral_vars(body, out);
-        }
-        Expr::Neg(a) | Expr::Fact(a) => integral_vars(a, out),
-        Expr::Bin(_, a, b) => {
-            integral_vars(a, out);
-            integral_vars(b, out);
-        }
-        Expr::Index(_, args) | Expr::Tuple(args) => args.iter().for_each(|a| integral_vars(a, out)),
-        Expr::Matrix(rows) => rows.iter().flatten().for_each(|a| integral_vars(a, out)),
-        Expr::Num(_) | Expr::Var(_) => {}
-    }
-}
-
-/// Whether the bounds of an integral are exactly 0 and 1.
-fn is_unit_interval(lo: &Expr, hi: &Expr) -> bool {
-    let value = |e: &Expr| expr::eval_int(e, &Default::default()).ok();
-    value(lo) == Some(0) && value(hi) == Some(1)
 }
 
 /// Translates expressions into sums of hypergeometric terms, evaluating symbolic sums by their
@@ -400,7 +367,7 @@ impl<'a> Translator<'a> {
                 Ok(vec![t])
             }
             ("integral", 4) => {
-                let (Expr::Var(t), true) = (&args[1], is_unit_interval(&args[2], &args[3])) else {
+                let (Expr::Var(t), true) = (&args[1], super::beta::is_unit_interval(&args[2], &args[3])) else {
                     return Err(Error::Domain(format!(
                         "'{e}': for symbolic integers only integrals over [0, 1] are evaluated (Euler's Beta integral)"
                     )));
@@ -504,10 +471,10 @@ impl<'a> Translator<'a> {
         let mut direct = String::new();
         let (f, rhs, value) = match hint {
             Some(h) if h.len() == 1 && h[0].mentions(sym, &n) => {
-                let start = induction_start(sym, &h[0], &n, &n0, &what)?;
+                let start = telescope::induction_start(sym, &h[0], &n, &n0, &what)?;
                 for m in 0..start.minus(&n0).c {
                     let at = n0.shifted(m);
-                    let mut case = base_case_terms(sym, &f, (k, a, b), (&n, &at), &what)?;
+                    let mut case = telescope::finite_sum(sym, &f, (k, a, b), (&n, &at), &what)?;
                     case.extend(lin_neg(&lin_subst(sym, &h, &n, &at)));
                     self.expect_zero(
                         &case,
@@ -525,7 +492,7 @@ impl<'a> Translator<'a> {
             }
             Some(h) => (f, h.clone(), Some(h)),
             None => {
-                let base = base_case_terms(sym, &f, (k, a, b), (&n, &n0), &what)?;
+                let base = telescope::finite_sum(sym, &f, (k, a, b), (&n, &n0), &what)?;
                 (f, base, None)
             }
         };
@@ -569,70 +536,105 @@ impl<'a> Translator<'a> {
         } else {
             ""
         };
-        let g = self.times_certificate(&cert, &f)?;
-        self.used.push(format!(
-            "{what} (induction on {n} ≥ {n0}{direct}): R = {cert}{cert_note}"
-        ));
-        self.log.push(format!(
-            "{what} by induction on {n} ≥ {n0}: F = {}; certificate R = {cert}, G = R·F = {}",
-            show(&f),
-            show(&g)
-        ));
-        let n1 = Aff::var(&n).shifted(1);
-        let k1 = Aff::var(k).shifted(1);
-        // 1. The WZ equation on a ≤ k ≤ b.
-        let mut wzeq = lin_subst(sym, &f, &n, &n1);
-        wzeq.extend(lin_neg(&f));
-        wzeq.extend(lin_neg(&lin_subst(sym, &g, k, &k1)));
-        wzeq.extend(g.iter().cloned());
-        let dk = d_ind.with(Aff::var(k).minus(a)).with(b.minus(&Aff::var(k)));
-        self.expect_zero(
-            &wzeq,
-            &dk,
-            &format!("{what}: F({n}+1, {k}) − F({n}, {k}) = G({n}, {k}+1) − G({n}, {k})"),
-        )?;
-        // 2. The ends.
-        let mut ends = lin_subst(sym, &g, k, &b.shifted(1));
-        ends.extend(lin_neg(&lin_subst(sym, &g, k, a)));
-        // F(n+1, b(n)+1): shift n first, then put k = b(n) + 1 (which is written in the old n).
-        ends.extend(lin_subst(sym, &lin_subst(sym, &f, &n, &n1), k, &b.shifted(1)));
-        ends.extend(lin_neg(&lin_subst(sym, &rhs, &n, &n1)));
-        ends.extend(rhs.iter().cloned());
-        self.expect_zero(
-            &ends,
-            &d_ind,
-            &format!("{what}: G({n}, {b}+1) − G({n}, {a}) + F({n}+1, {b}+1) = rhs({n}+1) − rhs({n})"),
-        )?;
-        // 3. The base case.
-        if value.is_some() {
-            let mut base = base_case_terms(sym, &f, (k, a, b), (&n, &n0), &what)?;
-            base.extend(lin_neg(&lin_subst(sym, &rhs, &n, &n0)));
-            self.expect_zero(&base, &rest, &format!("{what}: the base case {n} = {n0}"))?;
-        } else {
-            self.log
-                .push(format!("{what}: its value is its value at {n} = {n0}: {}", show(&rhs)));
+        let marks = (self.log.len(), self.used.len());
+        let checked: Result<()> = 'checks: {
+            let g = match self.times_certificate(&cert, &f) {
+                Ok(g) => g,
+                Err(e) => break 'checks Err(e),
+            };
+            self.used.push(format!(
+                "{what} (induction on {n} ≥ {n0}{direct}): R = {cert}{cert_note}"
+            ));
+            self.log.push(format!(
+                "{what} by induction on {n} ≥ {n0}: F = {}; certificate R = {cert}, G = R·F = {}",
+                show(&f),
+                show(&g)
+            ));
+            let n1 = Aff::var(&n).shifted(1);
+            let k1 = Aff::var(k).shifted(1);
+            // 1. The WZ equation on a ≤ k ≤ b.
+            let mut wzeq = lin_subst(sym, &f, &n, &n1);
+            wzeq.extend(lin_neg(&f));
+            wzeq.extend(lin_neg(&lin_subst(sym, &g, k, &k1)));
+            wzeq.extend(g.iter().cloned());
+            let dk = d_ind.with(Aff::var(k).minus(a)).with(b.minus(&Aff::var(k)));
+            if let Err(e) = self.expect_zero(
+                &wzeq,
+                &dk,
+                &format!("{what}: F({n}+1, {k}) − F({n}, {k}) = G({n}, {k}+1) − G({n}, {k})"),
+            ) {
+                break 'checks Err(e);
+            }
+            // 2. The ends.
+            let mut ends = lin_subst(sym, &g, k, &b.shifted(1));
+            ends.extend(lin_neg(&lin_subst(sym, &g, k, a)));
+            // F(n+1, b(n)+1): shift n first, then put k = b(n) + 1 (which is written in the old n).
+            ends.extend(lin_subst(sym, &lin_subst(sym, &f, &n, &n1), k, &b.shifted(1)));
+            ends.extend(lin_neg(&lin_subst(sym, &rhs, &n, &n1)));
+            ends.extend(rhs.iter().cloned());
+            if let Err(e) = self.expect_zero(
+                &ends,
+                &d_ind,
+                &format!("{what}: G({n}, {b}+1) − G({n}, {a}) + F({n}+1, {b}+1) = rhs({n}+1) − rhs({n})"),
+            ) {
+                break 'checks Err(e);
+            }
+            // 3. The base case.
+            if value.is_some() {
+                let base = telescope::finite_sum(sym, &f, (k, a, b), (&n, &n0), &what).and_then(|mut base| {
+                    base.extend(lin_neg(&lin_subst(sym, &rhs, &n, &n0)));
+                    self.expect_zero(&base, &rest, &format!("{what}: the base case {n} = {n0}"))
+                });
+                if let Err(e) = base {
+                    break 'checks Err(e);
+                }
+            } else {
+                self.log
+                    .push(format!("{what}: its value is its value at {n} = {n0}: {}", show(&rhs)));
+            }
+            Ok(())
+        };
+        match (checked, &original.0[..], original.1) {
+            (Ok(()), ..) => Ok(value.unwrap_or(rhs)),
+            // A WZ candidate of the search that does not prove the closed form: a recurrence
+            // of higher order may; if not, the WZ reason stands.
+            (Err(e), [summand], Some(closed)) if found => {
+                self.log.truncate(marks.0);
+                self.used.truncate(marks.1);
+                let shape = SumShape {
+                    k,
+                    a,
+                    b,
+                    n: &n,
+                    n0: &original.2,
+                    rest: &rest,
+                };
+                match self.telescope(summand, &shape, &closed, &what) {
+                    Ok(()) => Ok(closed),
+                    Err(_) => Err(e),
+                }
+            }
+            (Err(e), ..) => Err(e),
         }
-        Ok(value.unwrap_or(rhs))
     }
 
     /// Proves `Σ_{k=a}^{b(n)} F = rhs` for every `n ≥ n₀` by a recurrence found by creative
     /// telescoping ([`telescope`]): every identity it rests on is proved here.
     fn telescope(&mut self, f: &Term, s: &SumShape<'_>, rhs: &[Term], what: &str) -> Result<()> {
-        let rec = telescope::find(self.sym, f, s.n, s.k, Coefficients::Search)?;
-        let (obligations, text) = telescope::closed_form(self.sym, f, &rec, s, rhs, what)?;
+        let what = format!("{what} by creative telescoping");
+        let rec = telescope::find(self.sym, f, s.n, s.k, Coefficients::Search)
+            .map_err(|e| Error::Domain(format!("{what}: {e}")))?;
+        let (obligations, text) = telescope::closed_form(self.sym, f, &rec, s, rhs, &what)?;
         let mark = self.log.len();
-        self.log.push(format!(
-            "{what} by creative telescoping: F = {}; G = R·F = {}",
-            f.show(),
-            rec.g.show()
-        ));
+        self.log
+            .push(format!("{what}: F = {}; G = R·F = {}", f.show(), rec.g.show()));
         for o in &obligations {
             if let Err(e) = self.expect_zero(&o.lin, &o.domain, &o.what) {
                 self.log.truncate(mark);
                 return Err(e);
             }
         }
-        self.recurrences.push(format!("{what}: {text}"));
+        self.recurrences.push(text);
         Ok(())
     }
 
@@ -760,7 +762,7 @@ pub(crate) fn prepare(
     // The variables of integration are parameters of the integrands only.
     let mut all = conts.clone();
     for e in &refs {
-        integral_vars(e, &mut all);
+        super::beta::integral_vars(e, &mut all);
     }
     let all: Vec<String> = all.into_iter().filter(|v| !ints.contains(v)).collect();
     let sym = Symbols::new(&ints, &all);
@@ -786,63 +788,4 @@ impl Translator<'_> {
         }
         Ok(dom)
     }
-}
-
-/// The first `n ≥ n0` past every integer zero (in `n`) of the coefficient of the closed-form
-/// term `h`, so that dividing by `h` is defined for the whole induction; at most
-/// [`MAX_DIRECT_CASES`] values past `n0`.
-fn induction_start(sym: &Symbols, h: &Term, n: &str, n0: &Aff, what: &str) -> Result<Aff> {
-    let mut start = n0.clone();
-    for z in sym.integer_zeros(&h.coef.num)? {
-        let c = z.coef(n);
-        if c == 0 {
-            continue;
-        }
-        let moving = z.v.keys().any(|x| x != n);
-        if moving || !n0.is_const() {
-            return Err(Error::Domain(format!(
-                "{what}: the closed form's coefficient vanishes where {z} = 0, which moves with the other symbols: the induction cannot start past it"
-            )));
-        }
-        if z.c % c != 0 {
-            continue;
-        }
-        let root = -z.c / c;
-        if root >= start.c {
-            start = Aff::constant(root + 1);
-        }
-    }
-    if start.minus(n0).c > MAX_DIRECT_CASES {
-        return Err(Error::Domain(format!(
-            "{what}: the closed form's coefficient vanishes at {n} = {}, more than {MAX_DIRECT_CASES} values past {n0}",
-            start.c - 1
-        )));
-    }
-    Ok(start)
-}
-
-/// How many values of the induction variable may be checked directly before an induction.
-const MAX_DIRECT_CASES: i64 = 64;
-
-/// The terms of `Σ_{k=a}^{b} F` at the base case `n = n0`, where the sum must have a fixed
-/// number of terms (at most 10 001).
-fn base_case_terms(
-    sym: &Symbols,
-    f: &[Term],
-    (k, a, b): (&str, &Aff, &Aff),
-    (n, n0): (&str, &Aff),
-    what: &str,
-) -> Result<Lin> {
-    let width = b.subst(n, n0).minus(a);
-    if !width.is_const() || width.c < -1 || width.c > 10_000 {
-        return Err(Error::Domain(format!(
-            "{what}: at {n} = {n0} the sum does not have a fixed number of terms"
-        )));
-    }
-    let at0 = lin_subst(sym, f, n, n0);
-    let mut base = Vec::new();
-    for m in 0..=width.c {
-        base.extend(lin_subst(sym, &at0, k, &a.shifted(m)));
-    }
-    Ok(base)
 }
