@@ -118,6 +118,10 @@ pub(crate) fn prove(tr: &mut Translator<'_>, lhs: &Expr, rhs: &Expr, d: &Domain)
             return Ok(None);
         }
         let kk = k.get_or_insert_with(|| v.clone()).clone();
+        if v != kk && t.mentions(sym, &kk) {
+            // Renaming v to the first sum's variable would capture a free k.
+            return Ok(None);
+        }
         let summand = if v == kk {
             t.clone()
         } else {
