@@ -157,6 +157,19 @@ fn false_beyond_the_search_is_an_error_never_proved() {
 }
 
 #[test]
+fn a_search_past_its_budget_ends_and_the_claim_still_gets_its_verdict() {
+    // Σ C(n, k)^5 has no recurrence within MAX_TELESCOPE_WORK; this closed form matches it
+    // for n ≤ 3 (the cross-check) and is wrong from n = 4: the bounded search gives up, and
+    // the refutation search finds the counterexample.
+    let start = std::time::Instant::now();
+    assert_fails_at(
+        "for = [\"n = 0..\"]\nlhs = \"sum(k, 0, n, C(n, k)^5)\"\nrhs = \"1 + n + 31*C(n, 2) + 391*C(n, 3)\"",
+        "n = 4",
+    );
+    assert!(start.elapsed().as_secs() < 60, "{:?}", start.elapsed());
+}
+
+#[test]
 fn wrong_recurrences_fail() {
     for (c2, c1, c0) in [
         ("(n+2)^2", "7n^2+21n+15", "8(n+1)^2"),

@@ -49,9 +49,11 @@ pub const MAX_ORDER: usize = 3;
 pub const MAX_COEFFICIENT_DEGREE: u32 = 4;
 /// Most unknowns in one linear system of the search.
 pub const MAX_UNKNOWNS: usize = 400;
-/// The work the search may spend over all orders and degrees: Σ nonzero coefficients ×
-/// min(rows, columns) × (64-bit words of the largest coefficient) of its linear systems.
-pub const MAX_TELESCOPE_WORK: u128 = 200_000_000;
+/// The work the search may spend over all orders and degrees (about a microsecond each): the
+/// polynomial terms it builds (16 per term), and Σ nonzero coefficients × min(rows, columns) ×
+/// (64-bit words of the largest coefficient) of its linear systems (a 32nd of it for the
+/// modular pass that rules most of them out).
+pub const MAX_TELESCOPE_WORK: u128 = 5_000_000;
 /// Most values of `n` checked directly before an induction (initial values, and the zeros of
 /// a leading coefficient or of a closed form's coefficient).
 pub const MAX_DIRECT_CASES: i64 = 64;
@@ -241,6 +243,23 @@ fn cofactors(sym: &Symbols, dens: &[&Poly]) -> Result<Vec<Poly>> {
         .collect()
 }
 
+/// How much cheaper a modular pass is counted than exact elimination.
+const MODULAR_DISCOUNT: u128 = 32;
+
+/// Adds `cost` to the search's work, or stops it at [`MAX_TELESCOPE_WORK`].
+fn charge(work: &mut u128, cost: u128, what: &str) -> Result<()> {
+    *work = work.saturating_add(cost);
+    if *work > MAX_TELESCOPE_WORK {
+        return Err(Error::TooLarge {
+            what:
+                "creative telescoping work (polynomial terms built, nonzero coefficients × pivots × words eliminated)",
+            value: format!("{} ({what})", *work),
+            limit: MAX_TELESCOPE_WORK.to_string(),
+        });
+    }
+    Ok(())
+}
+
 /// The solution of one linear system `Σ x_i cols_i = given` (each a polynomial, denominators
 /// cleared), or with no `given` a null vector whose first `first_free` entries (the `p_j`) are
 /// not all zero.
@@ -264,6 +283,10 @@ fn solve(
         }
     }
     let mut a: Vec<Vec<BigRational>> = rows.into_values().collect();
+    if a.is_empty() {
+        // Every column is zero: nothing to solve for (it never happens with a nonzero summand).
+        return Ok(None);
+    }
     let nonzero = a.iter().flatten().filter(|x| !x.is_zero()).count() as u128;
     let words = a
         .iter()
@@ -274,16 +297,45 @@ fn solve(
         / 64
         + 1;
     let (h, w) = (a.len(), width);
-    *work = work.saturating_add(nonzero * h.min(w) as u128 * u128::from(words));
-    if *work > MAX_TELESCOPE_WORK {
-        return Err(Error::TooLarge {
-            what: "creative telescoping work (nonzero coefficients × pivots × words of its linear systems)",
-            value: format!("{} (a system of {h} equations in {w} unknowns)", *work),
-            limit: MAX_TELESCOPE_WORK.to_string(),
-        });
+    let estimate = nonzero * h.min(w) as u128 * u128::from(words);
+    let system = format!("a system of {h} equations in {w} unknowns");
+    // Most systems of the search have no solution: a pass modulo a prime, far cheaper than
+    // exact elimination, says so first.
+    charge(work, estimate / MODULAR_DISCOUNT, &system)?;
+    let Some(basis) = modular::may_solve(&a, given.is_some(), first_free) else {
+        return Ok(None);
+    };
+    // Exact elimination on the rows that span the system modulo the prime (almost surely its
+    // rows over Q too); a solution of them is checked on every row, else all rows are used.
+    let mut sub: Vec<Vec<BigRational>> = basis.iter().map(|&r| a[r].clone()).collect();
+    let sub_estimate = estimate * (sub.len() as u128 + 1) / (h as u128 + 1);
+    charge(work, sub_estimate, &system)?;
+    if let Some(x) = exact(&mut sub, given.is_some(), first_free)? {
+        if a.iter().all(|row| satisfied(row, &x)) {
+            return Ok(Some(x));
+        }
     }
-    let pivots = row_reduce(&mut a)?;
-    if given.is_some() {
+    charge(work, estimate, &system)?;
+    exact(&mut a, given.is_some(), first_free)
+}
+
+/// Whether `row · (x, −1) = 0` (the last entry of `row` is the right-hand side).
+fn satisfied(row: &[BigRational], x: &[BigRational]) -> bool {
+    let (rhs, lhs) = row.split_last().expect("a row has a right-hand side");
+    let mut total = -rhs.clone();
+    for (c, v) in lhs.iter().zip(x) {
+        if !c.is_zero() && !v.is_zero() {
+            total += c * v;
+        }
+    }
+    total.is_zero()
+}
+
+/// Exact elimination of `a`: a solution (see [`solve`]) or `None`.
+fn exact(a: &mut [Vec<BigRational>], given: bool, first_free: usize) -> Result<Option<Vec<BigRational>>> {
+    let width = a.first().map_or(1, Vec::len);
+    let pivots = row_reduce(a)?;
+    if given {
         if pivots.contains(&(width - 1)) {
             return Ok(None);
         }
@@ -387,8 +439,8 @@ pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str, coefficients: Coefficient
     let mut reached = String::from("nothing searched");
     let orders: Vec<usize> = match &coefficients {
         Coefficients::Search => (1..=MAX_ORDER).collect(),
-        Coefficients::Given(p) if p.len() >= 2 => vec![p.len() - 1],
-        Coefficients::Given(_) => return Err(none("a recurrence needs at least two shifts".into())),
+        Coefficients::Given(p) if !p.is_empty() => vec![p.len() - 1],
+        Coefficients::Given(_) => return Err(none("no coefficients".into())),
     };
     let degrees: Vec<u32> = match &coefficients {
         Coefficients::Search => (0..=MAX_COEFFICIENT_DEGREE).collect(),
@@ -439,6 +491,18 @@ pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str, coefficients: Coefficient
                         "{reached}; at order {order}, coefficient degree {dp} and certificate degree {d_cert}: {unknowns} unknowns, more than MAX_UNKNOWNS = {MAX_UNKNOWNS}"
                     )));
                 }
+                // Building the columns: each multiplies a monomial into these products.
+                let size = |p: &Poly| p.len() as u128;
+                let build = (cmonos.len() as u128) * (size(&cert_a) + size(&cert_b))
+                    + (pmonos.len() as u128)
+                        * cof_r
+                            .iter()
+                            .zip(&sh.r)
+                            .map(|(c, r)| size(c) * size(&r.num))
+                            .sum::<u128>();
+                charge(&mut work, 16 * build, &format!("building the system of order {order}, coefficient degree {dp}, certificate degree {d_cert}")).map_err(|e| {
+                    none(format!("{reached}; stopped at order {order}, coefficient degree {dp}, certificate degree {d_cert}: {e}"))
+                })?;
                 let mut cols = Vec::with_capacity(unknowns);
                 for (r, cof) in sh.r.iter().zip(cof_r) {
                     let base = r.num.mul(cof);
@@ -700,4 +764,89 @@ pub fn closed_form(
         s.n0
     );
     Ok((out, text))
+}
+
+/// Arithmetic modulo the prime `2^61 − 1`, for a quick pass over a linear system.
+mod modular {
+    use num_bigint::BigInt;
+    use num_integer::Integer;
+    use num_rational::BigRational;
+    use num_traits::ToPrimitive;
+
+    const PRIME: u64 = (1 << 61) - 1;
+
+    fn mul(a: u64, b: u64) -> u64 {
+        ((u128::from(a) * u128::from(b)) % u128::from(PRIME)) as u64
+    }
+
+    fn inverse(a: u64) -> u64 {
+        let (mut base, mut e, mut out) = (a, PRIME - 2, 1u64);
+        while e > 0 {
+            if e & 1 == 1 {
+                out = mul(out, base);
+            }
+            base = mul(base, base);
+            e >>= 1;
+        }
+        out
+    }
+
+    fn reduce(x: &BigRational) -> Option<u64> {
+        let p = BigInt::from(PRIME);
+        let n = x.numer().mod_floor(&p).to_u64()?;
+        let d = x.denom().mod_floor(&p).to_u64()?;
+        (d != 0).then(|| mul(n, inverse(d)))
+    }
+
+    /// Whether the system (its last column the right-hand side) may have a solution — with
+    /// `given` false, a null vector whose first `first_free` entries are not all zero — and if
+    /// so, rows spanning it modulo the prime. `None` is then also the answer over Q (a rational
+    /// solution reduces to one modulo the prime, unless the prime divides a denominator or
+    /// every entry of its first part: a candidate is then merely missed); every row when the
+    /// data does not reduce.
+    pub(super) fn may_solve(a: &[Vec<BigRational>], given: bool, first_free: usize) -> Option<Vec<usize>> {
+        let all = || Some((0..a.len()).collect());
+        let Some(mut m) = a
+            .iter()
+            .map(|r| r.iter().map(reduce).collect::<Option<Vec<u64>>>())
+            .collect::<Option<Vec<Vec<u64>>>>()
+        else {
+            return all();
+        };
+        let mut origin: Vec<usize> = (0..m.len()).collect();
+        let width = m.first().map_or(0, Vec::len);
+        let mut pivots = Vec::new();
+        for col in 0..width {
+            let row = pivots.len();
+            let Some(p) = (row..m.len()).find(|&r| m[r][col] != 0) else {
+                continue;
+            };
+            m.swap(row, p);
+            origin.swap(row, p);
+            let inv = inverse(m[row][col]);
+            m[row].iter_mut().for_each(|x| *x = mul(*x, inv));
+            let pivot_row = m[row].clone();
+            for (r, other) in m.iter_mut().enumerate() {
+                let f = other[col];
+                if r == row || f == 0 {
+                    continue;
+                }
+                for (x, y) in other.iter_mut().zip(&pivot_row) {
+                    *x = (*x + PRIME - mul(f, *y)) % PRIME;
+                }
+            }
+            pivots.push(col);
+            if pivots.len() == m.len() {
+                break;
+            }
+        }
+        let solvable = if given {
+            !pivots.contains(&(width - 1))
+        } else {
+            (0..width - 1)
+                .filter(|c| !pivots.contains(c))
+                .any(|f| f < first_free || pivots.iter().enumerate().any(|(r, &p)| p < first_free && m[r][f] != 0))
+        };
+        solvable.then(|| origin[..pivots.len()].to_vec())
+    }
 }
