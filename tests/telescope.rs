@@ -183,6 +183,12 @@ fn wrong_recurrences_fail() {
             check(&body)
         );
     }
+    // A coefficient wrong only from n = 5 on (right for every n the cross-check evaluates):
+    // the stated recurrence has no certificate G; the counterexample search finds n = 5.
+    assert_fails_at(
+        &format!("{FRANEL}lhs = \"(n+2)^2*f(n+2) - (7n^2+21n+16 + n*(n-1)*(n-2)*(n-3)*(n-4))*f(n+1) - 8(n+1)^2*f(n)\"\nrhs = \"0\""),
+        "n = 5",
+    );
     // True for n ≤ 6, wrong from n = 7 on.
     assert_fails_at(
         &format!("{FRANEL}lhs = \"(n+2)^2*f(n+2) - (7n^2+21n+16)*f(n+1) - 8(n+1)^2*f(n)\"\nrhs = \"C(n, 7)\""),
