@@ -133,11 +133,15 @@ fn a_wrong_certificate_or_claim_is_rejected() {
         &format!("{POU}rhs = \"1\"\ncertificate = \"-(1-t)/(n+1-i)\""),
         "does not hold",
     );
-    // A sum whose certificate the ansatz cannot find (Σ C(n, i)³ has none of this form): refused.
+    // A sum whose certificate the ansatz cannot find (Σ C(n, i)³ has none of this form) equal
+    // to another sum (Strehl's identity, true): refused, with the reason.
     assert_error(
-        "for = [\"n = 0..\"]\nlhs = \"sum(i, 0, n, C(n, i)^3)\"\nrhs = \"sum(j, 0, n, C(n, j)^3)\"",
+        "for = [\"n = 0..\"]\nlhs = \"sum(i, 0, n, C(n, i)^3)\"\nrhs = \"sum(j, 0, n, C(n, j)^2*C(2j, n))\"",
         "none found",
     );
+    // The same sum with its variable renamed: one sum at the same n, proved (a recurrence
+    // with coefficient 0, G = 0).
+    assert_proved("for = [\"n = 0..\"]\nlhs = \"sum(i, 0, n, C(n, i)^3)\"\nrhs = \"sum(j, 0, n, C(n, j)^3)\"");
     // True for n ≤ 10 (and so for the evaluated n ≤ 3), false from n = 11 on: never proved,
     // and the search finds n = 11.
     assert_fails_at(

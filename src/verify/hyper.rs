@@ -177,6 +177,10 @@ impl Symbols {
     pub fn index(&self, name: &str) -> Option<usize> {
         self.names.iter().position(|n| n == name)
     }
+    /// Whether `name` is a continuous parameter.
+    pub fn is_cont(&self, name: &str) -> bool {
+        self.index(name).is_some_and(|k| k >= self.ints)
+    }
     /// The variable `name` as a rational function (0 if unknown: callers check names first).
     pub fn var(&self, name: &str) -> RatFunc {
         match self.index(name) {

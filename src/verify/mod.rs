@@ -40,16 +40,18 @@
 // - expressions: `alg` (the algebras evaluated in), `poly` (rational functions), `parse`,
 //   `rewrite` (definitions, substitution, `diff`), `eval` (the evaluator), `methods` (library
 //   operations callable in expressions);
-// - hypergeometric terms: `hyper`, `pieces` (zero on every piece of a domain), `ansatz`;
+// - hypergeometric terms: `hyper`, `pieces` (zero on every piece of a domain), `ansatz`,
+//   `telescope` (recurrences by creative telescoping), `beta` (integrals over [0, 1]);
 // - a claim's context: `objects`, `context`, `names`;
 // - provers: `sampling` (degree bounds and exact evaluation), `expansion` (symbolic expansion,
-//   `implies`), `identity` (the identity goal), `translate` and `symbolic` (for every n),
-//   `theorems`, `inequality`;
+//   `implies`), `identity` (the identity goal), `translate`, `recurrence` and `symbolic` (for
+//   every n), `theorems`, `inequality`;
 // - the kinds and the scope of a verdict: `kinds`, `scope`;
 // - the reports: `argue`, `latex`, `report`.
 mod alg;
 mod ansatz;
 mod argue;
+mod beta;
 mod checked;
 pub mod claims;
 mod context;
@@ -67,11 +69,13 @@ mod objects;
 mod parse;
 mod pieces;
 mod poly;
+mod recurrence;
 mod report;
 mod rewrite;
 mod sampling;
 mod scope;
 mod symbolic;
+mod telescope;
 mod theorems;
 mod translate;
 

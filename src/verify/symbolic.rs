@@ -38,6 +38,7 @@ use super::hyper::{lin_neg, Aff, Term};
 use super::identity::check_identity;
 use super::pieces::{Domain, ZeroOutcome};
 use super::poly::RatFunc;
+use super::recurrence;
 use super::translate::{prepare, Translator, UNIT};
 use crate::error::{Error, Result};
 use std::time::{Duration, Instant};
@@ -320,6 +321,7 @@ fn prove_symbolic(id: &str, decls: &Decls, identity: &Identity, closed: &Decls) 
             tr.unit = unit;
             tr.next_cert = 0;
             tr.used.clear();
+            tr.recurrences.clear();
             let mut d = dom.clone();
             if unit {
                 let (_, deg) = tr.polygon.clone().expect("polygon");
@@ -330,20 +332,31 @@ fn prove_symbolic(id: &str, decls: &Decls, identity: &Identity, closed: &Decls) 
             } else if decls.polygon.is_some() {
                 tr.log.push(Step::label("the zero polygon:"));
             }
-            let (l, r) = match (&pair[0], &pair[1]) {
-                (Expr::Sum(..), other) if !matches!(other, Expr::Sum(..)) => {
-                    let r = tr.lin(other, &d)?;
-                    (tr.lin_hint(&pair[0], &d, Some(r.clone()))?, r)
-                }
-                (other, Expr::Sum(..)) => {
-                    let l = tr.lin(other, &d)?;
-                    (l.clone(), tr.lin_hint(&pair[1], &d, Some(l))?)
-                }
-                _ => (tr.lin(&pair[0], &d)?, tr.lin(&pair[1], &d)?),
+            let mark = tr.log.len();
+            let mut equal = || -> Result<()> {
+                let (l, r) = match (&pair[0], &pair[1]) {
+                    (Expr::Sum(..), other) if !matches!(other, Expr::Sum(..)) => {
+                        let r = tr.lin(other, &d)?;
+                        (tr.lin_hint(&pair[0], &d, Some(r.clone()))?, r)
+                    }
+                    (other, Expr::Sum(..)) => {
+                        let l = tr.lin(other, &d)?;
+                        (l.clone(), tr.lin_hint(&pair[1], &d, Some(l))?)
+                    }
+                    _ => (tr.lin(&pair[0], &d)?, tr.lin(&pair[1], &d)?),
+                };
+                let mut diff = l;
+                diff.extend(lin_neg(&r));
+                tr.expect_zero(&diff, &d, &format!("{} = {}", pair[0], pair[1]))
             };
-            let mut diff = l;
-            diff.extend(lin_neg(&r));
-            tr.expect_zero(&diff, &d, &format!("{} = {}", pair[0], pair[1]))?;
+            if let Err(reason) = equal() {
+                // A claim stating a recurrence of sums: proved by creative telescoping, or
+                // the reason of the direct route stands.
+                tr.log.truncate(mark);
+                if recurrence::prove(&mut tr, &pair[0], &pair[1], &d)?.is_none() {
+                    return Err(reason);
+                }
+            }
         }
     }
     let open = scope(rs);
@@ -357,6 +370,9 @@ fn prove_symbolic(id: &str, decls: &Decls, identity: &Identity, closed: &Decls) 
     }
     if !tr.used.is_empty() {
         cert.push_str(&format!("; WZ certificates: {}", tr.used.join("; ")));
+    }
+    if !tr.recurrences.is_empty() {
+        cert.push_str(&format!("; {}", tr.recurrences.join("; ")));
     }
     Ok((cert, tr.log))
 }

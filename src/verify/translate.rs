@@ -10,6 +10,7 @@ use super::expr::{self, Expr, Op};
 use super::hyper::{lin_mul, lin_neg, lin_subst, power_of, Aff, Lin, Symbols, Term};
 use super::pieces::{prove_zero, Domain, ZeroOutcome};
 use super::poly::RatFunc;
+use super::telescope::{self, cancel, Coefficients, SumShape};
 use super::{parse, rewrite};
 use crate::error::{Error, Result};
 use num_traits::Zero;
@@ -62,6 +63,8 @@ pub struct Translator<'a> {
     pub log: Vec<Step>,
     /// The certificates used, for the one-line summary.
     pub used: Vec<String>,
+    /// The recurrences found by creative telescoping, for the one-line summary.
+    pub recurrences: Vec<String>,
 }
 
 impl<'a> Translator<'a> {
@@ -75,6 +78,7 @@ impl<'a> Translator<'a> {
             next_cert: 0,
             log: Vec::new(),
             used: Vec::new(),
+            recurrences: Vec::new(),
         }
     }
 }
@@ -101,6 +105,22 @@ impl<'a> Translator<'a> {
             out = out.add(&t.coef);
         }
         Ok(out)
+    }
+
+    /// The symbol list.
+    pub(crate) fn sym(&self) -> &'a Symbols {
+        self.sym
+    }
+
+    /// `e` as one rational function of the symbols, with no condition (`None` otherwise).
+    pub(crate) fn scalar(&mut self, e: &Expr, d: &Domain) -> Option<RatFunc> {
+        let l = self.lin(e, d).ok()?;
+        l.iter().all(is_scalar).then(|| self.scalar_of(&l, e).ok()).flatten()
+    }
+
+    /// An integer expression affine in the integer symbols.
+    pub(crate) fn affine(&mut self, e: &Expr) -> Result<Aff> {
+        self.aff(e)
     }
 
     /// An integer expression affine in the integer symbols.
@@ -347,8 +367,17 @@ impl<'a> Translator<'a> {
                 t.coef = ex.to_rf(self.sym);
                 Ok(vec![t])
             }
+            ("integral", 4) => {
+                let (Expr::Var(t), true) = (&args[1], super::beta::is_unit_interval(&args[2], &args[3])) else {
+                    return Err(Error::Domain(format!(
+                        "'{e}': for symbolic integers only integrals over [0, 1] are evaluated (Euler's Beta integral)"
+                    )));
+                };
+                let integrand = self.lin(&args[0], d)?;
+                super::beta::integrate(self.sym, &integrand, t, d)
+            }
             _ => Err(Error::Domain(format!(
-                "'{e}' is not supported for symbolic integers (only B, C, sums, powers, factorials, diff and control points b[j])"
+                "'{e}' is not supported for symbolic integers (only B, C, sums, powers, factorials, diff, integrals over [0, 1] and control points b[j])"
             ))),
         }
     }
@@ -436,15 +465,17 @@ impl<'a> Translator<'a> {
         // Normalise by a one-term value depending on n. Where that term's coefficient
         // vanishes the quotient means nothing: those values of n are checked directly, and the
         // induction starts past them.
+        // The sum as written, for creative telescoping when no WZ certificate is found.
+        let original = (f.clone(), hint.clone(), n0.clone());
         let mut n0 = n0;
         let mut d_ind = d.clone();
         let mut direct = String::new();
         let (f, rhs, value) = match hint {
             Some(h) if h.len() == 1 && h[0].mentions(sym, &n) => {
-                let start = induction_start(sym, &h[0], &n, &n0, &what)?;
+                let start = telescope::induction_start(sym, &h[0], &n, &n0, &what)?;
                 for m in 0..start.minus(&n0).c {
                     let at = n0.shifted(m);
-                    let mut case = base_case_terms(sym, &f, (k, a, b), (&n, &at), &what)?;
+                    let mut case = telescope::finite_sum(sym, &f, (k, a, b), (&n, &at), &what)?;
                     case.extend(lin_neg(&lin_subst(sym, &h, &n, &at)));
                     self.expect_zero(
                         &case,
@@ -462,7 +493,7 @@ impl<'a> Translator<'a> {
             }
             Some(h) => (f, h.clone(), Some(h)),
             None => {
-                let base = base_case_terms(sym, &f, (k, a, b), (&n, &n0), &what)?;
+                let base = telescope::finite_sum(sym, &f, (k, a, b), (&n, &n0), &what)?;
                 (f, base, None)
             }
         };
@@ -472,10 +503,27 @@ impl<'a> Translator<'a> {
                 (c, false)
             }
             None => match f.as_slice() {
-                [single] => (
-                    super::ansatz::find(sym, single, &n, k).map_err(|e| Error::Domain(format!("{what}: {e}")))?,
-                    true,
-                ),
+                [single] => match super::ansatz::find(sym, single, &n, k) {
+                    Ok(c) => (c, true),
+                    // No WZ pair: a recurrence of higher order may still prove a closed form.
+                    Err(e) => match (&original.0[..], original.1) {
+                        ([summand], Some(rhs)) => {
+                            let shape = SumShape {
+                                k,
+                                a,
+                                b,
+                                n: &n,
+                                n0: &original.2,
+                                rest: &rest,
+                            };
+                            return self
+                                .telescope(summand, &shape, &rhs, &what)
+                                .map(|()| rhs)
+                                .map_err(|t| Error::Domain(format!("{what}: {e}; {t}")));
+                        }
+                        _ => return Err(Error::Domain(format!("{what}: {e}"))),
+                    },
+                },
                 _ => {
                     return Err(Error::Domain(format!(
                         "{what}: a sum with a symbolic bound needs a WZ certificate R (certificate = [\"R\"], one per such sum, innermost first); none is searched for a summand of {} terms",
@@ -489,52 +537,111 @@ impl<'a> Translator<'a> {
         } else {
             ""
         };
-        let g = self.times_certificate(&cert, &f)?;
-        self.used.push(format!(
-            "{what} (induction on {n} ≥ {n0}{direct}): R = {cert}{cert_note}"
-        ));
-        self.log.push(Step::text(format!(
-            "{what} by induction on {n} ≥ {n0}: F = {}; certificate R = {cert}, G = R·F = {}",
-            show(&f),
-            show(&g)
-        )));
-        let n1 = Aff::var(&n).shifted(1);
-        let k1 = Aff::var(k).shifted(1);
-        // 1. The WZ equation on a ≤ k ≤ b.
-        let mut wzeq = lin_subst(sym, &f, &n, &n1);
-        wzeq.extend(lin_neg(&f));
-        wzeq.extend(lin_neg(&lin_subst(sym, &g, k, &k1)));
-        wzeq.extend(g.iter().cloned());
-        let dk = d_ind.with(Aff::var(k).minus(a)).with(b.minus(&Aff::var(k)));
-        self.expect_zero(
-            &wzeq,
-            &dk,
-            &format!("{what}: F({n}+1, {k}) − F({n}, {k}) = G({n}, {k}+1) − G({n}, {k})"),
-        )?;
-        // 2. The ends.
-        let mut ends = lin_subst(sym, &g, k, &b.shifted(1));
-        ends.extend(lin_neg(&lin_subst(sym, &g, k, a)));
-        // F(n+1, b(n)+1): shift n first, then put k = b(n) + 1 (which is written in the old n).
-        ends.extend(lin_subst(sym, &lin_subst(sym, &f, &n, &n1), k, &b.shifted(1)));
-        ends.extend(lin_neg(&lin_subst(sym, &rhs, &n, &n1)));
-        ends.extend(rhs.iter().cloned());
-        self.expect_zero(
-            &ends,
-            &d_ind,
-            &format!("{what}: G({n}, {b}+1) − G({n}, {a}) + F({n}+1, {b}+1) = rhs({n}+1) − rhs({n})"),
-        )?;
-        // 3. The base case.
-        if value.is_some() {
-            let mut base = base_case_terms(sym, &f, (k, a, b), (&n, &n0), &what)?;
-            base.extend(lin_neg(&lin_subst(sym, &rhs, &n, &n0)));
-            self.expect_zero(&base, &rest, &format!("{what}: the base case {n} = {n0}"))?;
-        } else {
+        let marks = (self.log.len(), self.used.len());
+        let checked: Result<()> = 'checks: {
+            let g = match self.times_certificate(&cert, &f) {
+                Ok(g) => g,
+                Err(e) => break 'checks Err(e),
+            };
+            self.used.push(format!(
+                "{what} (induction on {n} ≥ {n0}{direct}): R = {cert}{cert_note}"
+            ));
             self.log.push(Step::text(format!(
-                "{what}: its value is its value at {n} = {n0}: {}",
-                show(&rhs)
+                "{what} by induction on {n} ≥ {n0}: F = {}; certificate R = {cert}, G = R·F = {}",
+                show(&f),
+                show(&g)
             )));
+            let n1 = Aff::var(&n).shifted(1);
+            let k1 = Aff::var(k).shifted(1);
+            // 1. The WZ equation on a ≤ k ≤ b.
+            let mut wzeq = lin_subst(sym, &f, &n, &n1);
+            wzeq.extend(lin_neg(&f));
+            wzeq.extend(lin_neg(&lin_subst(sym, &g, k, &k1)));
+            wzeq.extend(g.iter().cloned());
+            let dk = d_ind.with(Aff::var(k).minus(a)).with(b.minus(&Aff::var(k)));
+            if let Err(e) = self.expect_zero(
+                &wzeq,
+                &dk,
+                &format!("{what}: F({n}+1, {k}) − F({n}, {k}) = G({n}, {k}+1) − G({n}, {k})"),
+            ) {
+                break 'checks Err(e);
+            }
+            // 2. The ends.
+            let mut ends = lin_subst(sym, &g, k, &b.shifted(1));
+            ends.extend(lin_neg(&lin_subst(sym, &g, k, a)));
+            // F(n+1, b(n)+1): shift n first, then put k = b(n) + 1 (which is written in the old n).
+            ends.extend(lin_subst(sym, &lin_subst(sym, &f, &n, &n1), k, &b.shifted(1)));
+            ends.extend(lin_neg(&lin_subst(sym, &rhs, &n, &n1)));
+            ends.extend(rhs.iter().cloned());
+            if let Err(e) = self.expect_zero(
+                &ends,
+                &d_ind,
+                &format!("{what}: G({n}, {b}+1) − G({n}, {a}) + F({n}+1, {b}+1) = rhs({n}+1) − rhs({n})"),
+            ) {
+                break 'checks Err(e);
+            }
+            // 3. The base case.
+            if value.is_some() {
+                let base = telescope::finite_sum(sym, &f, (k, a, b), (&n, &n0), &what).and_then(|mut base| {
+                    base.extend(lin_neg(&lin_subst(sym, &rhs, &n, &n0)));
+                    self.expect_zero(&base, &rest, &format!("{what}: the base case {n} = {n0}"))
+                });
+                if let Err(e) = base {
+                    break 'checks Err(e);
+                }
+            } else {
+                self.log.push(Step::text(format!(
+                    "{what}: its value is its value at {n} = {n0}: {}",
+                    show(&rhs)
+                )));
+            }
+            Ok(())
+        };
+        match (checked, &original.0[..], original.1) {
+            (Ok(()), ..) => Ok(value.unwrap_or(rhs)),
+            // A WZ candidate of the search that does not prove the closed form: a recurrence
+            // of higher order may; if not, the WZ reason stands.
+            (Err(e), [summand], Some(closed)) if found => {
+                self.log.truncate(marks.0);
+                self.used.truncate(marks.1);
+                let shape = SumShape {
+                    k,
+                    a,
+                    b,
+                    n: &n,
+                    n0: &original.2,
+                    rest: &rest,
+                };
+                match self.telescope(summand, &shape, &closed, &what) {
+                    Ok(()) => Ok(closed),
+                    Err(_) => Err(e),
+                }
+            }
+            (Err(e), ..) => Err(e),
         }
-        Ok(value.unwrap_or(rhs))
+    }
+
+    /// Proves `Σ_{k=a}^{b(n)} F = rhs` for every `n ≥ n₀` by a recurrence found by creative
+    /// telescoping ([`telescope`]): every identity it rests on is proved here.
+    fn telescope(&mut self, f: &Term, s: &SumShape<'_>, rhs: &[Term], what: &str) -> Result<()> {
+        let what = format!("{what} by creative telescoping");
+        let rec = telescope::find(self.sym, f, s.n, s.k, Coefficients::Search)
+            .map_err(|e| Error::Domain(format!("{what}: {e}")))?;
+        let (obligations, text) = telescope::closed_form(self.sym, f, &rec, s, rhs, &what)?;
+        let mark = self.log.len();
+        self.log.push(Step::text(format!(
+            "{what}: F = {}; G = R·F = {}",
+            f.show(),
+            rec.g.show()
+        )));
+        for o in &obligations {
+            if let Err(e) = self.expect_zero(&o.lin, &o.domain, &o.what) {
+                self.log.truncate(mark);
+                return Err(e);
+            }
+        }
+        self.recurrences.push(text);
+        Ok(())
     }
 
     pub(crate) fn expect_zero(&mut self, lin: &[Term], d: &Domain, what: &str) -> Result<()> {
@@ -614,32 +721,6 @@ fn flatten(e: &Expr, up: bool, out: &mut Vec<(Expr, bool)>) -> Result<()> {
     }
 }
 
-/// Multiplies (`up`) or divides the term by the affine factor `a`, cancelling against a
-/// factorial when one fits: `a / a! = 1/(a−1)!`, `a · (a−1)! = a!`, `1/(a · (a−1)!) = 1/a!`,
-/// `a!/a = (a−1)!`.
-fn cancel(t: &mut Term, a: &Aff, up: bool, sym: &Symbols) {
-    let find = |t: &Term, arg: &Aff, e: i8| t.facts.iter().position(|(x, s)| x == arg && *s == e);
-    if up {
-        if let Some(p) = find(t, a, -1) {
-            t.facts[p].0 = a.shifted(-1);
-        } else if let Some(p) = find(t, &a.shifted(-1), 1) {
-            t.facts[p].0 = a.clone();
-        } else {
-            t.coef = t.coef.mul(&a.to_rf(sym));
-        }
-    } else if let Some(p) = find(t, &a.shifted(-1), -1) {
-        t.facts[p].0 = a.clone();
-    } else if let Some(p) = find(t, a, 1) {
-        t.facts[p].0 = a.shifted(-1);
-    } else {
-        t.coef = RatFunc {
-            num: t.coef.num.clone(),
-            den: t.coef.den.mul(&a.to_rf(sym).num),
-        };
-        t.nonzero.push(a.clone());
-    }
-}
-
 fn show(l: &[Term]) -> String {
     if l.is_empty() {
         return "0".into();
@@ -684,7 +765,13 @@ pub(crate) fn prepare(
         .into_iter()
         .filter(|v| !ints.contains(v))
         .collect();
-    let sym = Symbols::new(&ints, &conts);
+    // The variables of integration are parameters of the integrands only.
+    let mut all = conts.clone();
+    for e in &refs {
+        super::beta::integral_vars(e, &mut all);
+    }
+    let all: Vec<String> = all.into_iter().filter(|v| !ints.contains(v)).collect();
+    let sym = Symbols::new(&ints, &all);
     Ok((certs, sym, conts))
 }
 
@@ -707,63 +794,4 @@ impl Translator<'_> {
         }
         Ok(dom)
     }
-}
-
-/// The first `n ≥ n0` past every integer zero (in `n`) of the coefficient of the closed-form
-/// term `h`, so that dividing by `h` is defined for the whole induction; at most
-/// [`MAX_DIRECT_CASES`] values past `n0`.
-fn induction_start(sym: &Symbols, h: &Term, n: &str, n0: &Aff, what: &str) -> Result<Aff> {
-    let mut start = n0.clone();
-    for z in sym.integer_zeros(&h.coef.num)? {
-        let c = z.coef(n);
-        if c == 0 {
-            continue;
-        }
-        let moving = z.v.keys().any(|x| x != n);
-        if moving || !n0.is_const() {
-            return Err(Error::Domain(format!(
-                "{what}: the closed form's coefficient vanishes where {z} = 0, which moves with the other symbols: the induction cannot start past it"
-            )));
-        }
-        if z.c % c != 0 {
-            continue;
-        }
-        let root = -z.c / c;
-        if root >= start.c {
-            start = Aff::constant(root + 1);
-        }
-    }
-    if start.minus(n0).c > MAX_DIRECT_CASES {
-        return Err(Error::Domain(format!(
-            "{what}: the closed form's coefficient vanishes at {n} = {}, more than {MAX_DIRECT_CASES} values past {n0}",
-            start.c - 1
-        )));
-    }
-    Ok(start)
-}
-
-/// How many values of the induction variable may be checked directly before an induction.
-const MAX_DIRECT_CASES: i64 = 64;
-
-/// The terms of `Σ_{k=a}^{b} F` at the base case `n = n0`, where the sum must have a fixed
-/// number of terms (at most 10 001).
-fn base_case_terms(
-    sym: &Symbols,
-    f: &[Term],
-    (k, a, b): (&str, &Aff, &Aff),
-    (n, n0): (&str, &Aff),
-    what: &str,
-) -> Result<Lin> {
-    let width = b.subst(n, n0).minus(a);
-    if !width.is_const() || width.c < -1 || width.c > 10_000 {
-        return Err(Error::Domain(format!(
-            "{what}: at {n} = {n0} the sum does not have a fixed number of terms"
-        )));
-    }
-    let at0 = lin_subst(sym, f, n, n0);
-    let mut base = Vec::new();
-    for m in 0..=width.c {
-        base.extend(lin_subst(sym, &at0, k, &a.shifted(m)));
-    }
-    Ok(base)
 }

@@ -1,0 +1,762 @@
+//! Creative telescoping (Zeilberger's method, found by a bounded ansatz): a recurrence in `n`
+//! with polynomial coefficients for a sum `S(n) = Σ_{k=a}^{b(n)} F(n, k)` of one
+//! hypergeometric term, and the identities that prove a closed form from it.
+//!
+//! The search looks for polynomials `p_0(n), …, p_J(n)` (in every symbol but `k`, so also in
+//! the continuous parameters) and a certificate `G = R·F` with
+//!
+//! `Σ_j p_j(n) F(n+j, k) = G(n, k+1) − G(n, k)`.
+//!
+//! Divided by `F(n, k)` this is `Σ_j p_j r_j = R(k+1)·F(n, k+1)/F(n, k) − R(k)` with
+//! `r_j = F(n+j, k)/F(n, k)` rational ([`super::pieces::ratio`]). `R = P / (D·c)`: `D` the
+//! factors of the denominator of `r_J` (the factorials of `F` that grow with `n`, as in
+//! Gosper's algorithm), `c` the numerator of `F`'s rational coefficient (so `G` is `P` times
+//! `F` without it), and `P` a polynomial with unknown coefficients, like the `p_j`. Cleared of
+//! denominators it is a linear system over `Q`, row-reduced exactly; its solutions with some
+//! `p_j ≠ 0` are candidates. With the `p_j` given ([`Coefficients::Given`]), only `P` is
+//! unknown (a claim that *states* a recurrence).
+//!
+//! Nothing found here is trusted: [`closed_form`] turns a candidate into identities of
+//! hypergeometric terms ([`Obligation`]s) that the caller proves on every piece of the domain
+//! ([`super::pieces::prove_zero`]):
+//!
+//! 1. the telescoping equation for every `a ≤ k ≤ b(n)` and every `n ≥ n₁`;
+//! 2. `Σ_j p_j(n) rhs(n+j) = G(n, b(n)+1) − G(n, a) + Σ_j p_j(n) Σ_{m=1}^{j} F(n+j, b(n)+m)`
+//!    for every `n ≥ n₁` — summing 1 over `k` shows the same of `S`, so `Δ = S − rhs` satisfies
+//!    `Σ_j p_j(n) Δ(n+j) = 0` there;
+//! 3. `S(n) = rhs(n)` for `n = n₀, …, n₁ + J − 1`, finite sums,
+//!
+//! where `n₁ ≥ n₀` is past every integer zero of the leading coefficient `p_J` (which is then a
+//! nonzero polynomial in the parameters for every `n ≥ n₁`, whatever the other integers).
+//! Induction on `n`: `Δ(n+J) = −Σ_{j<J} p_j(n) Δ(n+j) / p_J(n)`, so `Δ = 0` for every `n ≥ n₀`.
+//! Any `p_j` and `G` satisfying 1–3 prove the claim; a wrong candidate can only be rejected.
+
+use super::eval::Alg;
+use super::hyper::{lin_mul, lin_neg, lin_subst, Aff, Lin, Symbols, Term};
+use super::pieces::{ratio, ratio_denominator, Domain};
+use super::poly::{Poly, RatFunc};
+use crate::error::{Error, Result};
+use crate::linalg::row_reduce;
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{One, Signed, Zero};
+use std::collections::BTreeMap;
+
+mod modular;
+
+/// Highest order `J` of the recurrence searched.
+pub const MAX_ORDER: usize = 3;
+/// Highest total degree of the coefficients `p_j` searched.
+pub const MAX_COEFFICIENT_DEGREE: u32 = 4;
+/// Most unknowns in one linear system of the search.
+pub const MAX_UNKNOWNS: usize = 400;
+/// The work the search may spend over all orders and degrees (about a microsecond each): the
+/// polynomial terms it builds (16 per term), and Σ nonzero coefficients × min(rows, columns) ×
+/// (64-bit words of the largest coefficient) of its linear systems (a 32nd of it for the
+/// modular pass that rules most of them out).
+pub const MAX_TELESCOPE_WORK: u128 = 5_000_000;
+/// Most values of `n` checked directly before an induction (initial values, and the zeros of
+/// a leading coefficient or of a closed form's coefficient).
+pub const MAX_DIRECT_CASES: i64 = 64;
+
+/// The coefficients `p_j` of the recurrence: searched, or given by the claim.
+pub enum Coefficients<'a> {
+    /// Unknown, up to [`MAX_ORDER`] and [`MAX_COEFFICIENT_DEGREE`].
+    Search,
+    /// `p_0, …, p_J` as stated.
+    Given(&'a [RatFunc]),
+}
+
+/// A recurrence with its certificate: `Σ_j p[j](n) F(n+j, k) = G(n, k+1) − G(n, k)`.
+pub struct Telescoper {
+    /// `p_0, …, p_J`, polynomials in every symbol but `k` (or as given).
+    pub p: Vec<RatFunc>,
+    /// `G = R·F`, a term.
+    pub g: Term,
+    /// `R`, readable.
+    pub r: String,
+}
+
+impl Telescoper {
+    /// The order `J`.
+    pub fn order(&self) -> usize {
+        self.p.len() - 1
+    }
+    /// The recurrence as text: `(p_J)·S(n+J) + … + (p_0)·S(n)`.
+    pub fn show(&self, s: &str, n: &str) -> String {
+        let mut parts = Vec::new();
+        for (j, p) in self.p.iter().enumerate().rev() {
+            if p.num.is_zero() {
+                continue;
+            }
+            let at = if j == 0 { n.to_string() } else { format!("{n}+{j}") };
+            parts.push(format!("({p})·{s}({at})"));
+        }
+        parts.join(" + ")
+    }
+}
+
+/// The exponent vectors of `p` over every symbol (a constant built without names has none).
+fn terms(sym: &Symbols, p: &Poly) -> Vec<(Vec<u16>, BigRational)> {
+    p.terms_in(sym.names.len()).into_iter().collect()
+}
+
+fn total_degree(sym: &Symbols, p: &Poly) -> u32 {
+    terms(sym, p)
+        .iter()
+        .map(|(e, _)| e.iter().map(|&x| u32::from(x)).sum())
+        .max()
+        .unwrap_or(0)
+}
+
+/// Exponent vectors of total degree ≤ `deg` in the variables `vars` (indices), 0 elsewhere.
+fn monomials(width: usize, vars: &[usize], deg: u32) -> Vec<Vec<u16>> {
+    let mut out = vec![vec![0u16; width]];
+    for &v in vars {
+        let mut next = Vec::new();
+        for m in &out {
+            let used: u32 = m.iter().map(|&x| u32::from(x)).sum();
+            for e in 0..=(deg - used) {
+                let mut m2 = m.clone();
+                m2[v] = e as u16;
+                next.push(m2);
+            }
+        }
+        out = next;
+    }
+    out
+}
+
+fn monomial(sym: &Symbols, e: &[u16]) -> Poly {
+    let mut m = Poly::constant(&sym.names, &BigRational::one());
+    for (k, &x) in e.iter().enumerate() {
+        for _ in 0..x {
+            m = m.mul(&Poly::var(&sym.names, k));
+        }
+    }
+    m
+}
+
+fn one(sym: &Symbols) -> Poly {
+    Poly::constant(&sym.names, &BigRational::one())
+}
+
+/// `g / f` as a rational function (coefficients included), `None` when not similar.
+fn quotient(sym: &Symbols, g: &Term, f: &Term) -> Result<Option<RatFunc>> {
+    Ok(match ratio(sym, g, f)? {
+        Some(r) => Some(g.coef.mul(&r).div(&f.coef)?),
+        None => None,
+    })
+}
+
+/// Multiplies (`up`) or divides the term by the affine factor `a`, cancelling against a
+/// factorial when one fits: `a / a! = 1/(a−1)!`, `a · (a−1)! = a!`, `1/(a · (a−1)!) = 1/a!`,
+/// `a!/a = (a−1)!`; a divisor that cancels nothing becomes a `nonzero` condition.
+pub(crate) fn cancel(t: &mut Term, a: &Aff, up: bool, sym: &Symbols) {
+    let find = |t: &Term, arg: &Aff, e: i8| t.facts.iter().position(|(x, s)| x == arg && *s == e);
+    if up {
+        if let Some(p) = find(t, a, -1) {
+            t.facts[p].0 = a.shifted(-1);
+        } else if let Some(p) = find(t, &a.shifted(-1), 1) {
+            t.facts[p].0 = a.clone();
+        } else {
+            t.coef = t.coef.mul(&a.to_rf(sym));
+        }
+    } else if let Some(p) = find(t, &a.shifted(-1), -1) {
+        t.facts[p].0 = a.clone();
+    } else if let Some(p) = find(t, a, 1) {
+        t.facts[p].0 = a.shifted(-1);
+    } else {
+        t.coef = RatFunc {
+            num: t.coef.num.clone(),
+            den: t.coef.den.mul(&a.to_rf(sym).num),
+        };
+        t.nonzero.push(a.clone());
+    }
+}
+
+/// What one order of the search works with: the quotients and the certificate's denominator.
+struct Shifts {
+    /// `r_j = F(n+j, k)/F(n, k)`, j = 0..=J.
+    r: Vec<RatFunc>,
+    /// `F(n, k+1)/F(n, k)`.
+    r2: RatFunc,
+    /// The affine factors of `D` (cancelled against factorials in `G`).
+    affs: Vec<Aff>,
+    /// The polynomial factors of `D` (in the parameters).
+    polys: Vec<Poly>,
+    /// `D·c` as a rational function, and at `k + 1`.
+    dc: RatFunc,
+    dc1: RatFunc,
+}
+
+fn shifts(sym: &Symbols, f: &Term, n: &str, k: &str, order: usize) -> Result<Shifts> {
+    let not_hyper = || Error::Domain("the summand is not hypergeometric in n and k".into());
+    let mut r = Vec::with_capacity(order + 1);
+    for j in 0..=order {
+        let fj = f.subst(sym, n, &Aff::var(n).shifted(j as i64));
+        r.push(quotient(sym, &fj, f)?.ok_or_else(not_hyper)?);
+    }
+    let k1 = f.subst(sym, k, &Aff::var(k).shifted(1));
+    let r2 = quotient(sym, &k1, f)?.ok_or_else(not_hyper)?;
+    let fj = f.subst(sym, n, &Aff::var(n).shifted(order as i64));
+    let (affs, polys) = ratio_denominator(&fj, f);
+    let mut dc = RatFunc::poly(f.coef.num.clone());
+    for a in &affs {
+        dc = dc.mul(&a.to_rf(sym));
+    }
+    for p in &polys {
+        dc = dc.mul(&RatFunc::poly(p.clone()));
+    }
+    let dc1 = sym.subst_rf(&dc, k, &Aff::var(k).shifted(1));
+    Ok(Shifts {
+        r,
+        r2,
+        affs,
+        polys,
+        dc,
+        dc1,
+    })
+}
+
+/// A common multiple `M` of the denominators (their product, skipping those that already
+/// divide it) and the cofactor `M / d` of each.
+fn cofactors(sym: &Symbols, dens: &[&Poly]) -> Result<Vec<Poly>> {
+    let mut m = one(sym);
+    for d in dens {
+        if m.exact_div(d).is_none() {
+            m = m.mul(d);
+        }
+    }
+    dens.iter()
+        .map(|d| {
+            m.exact_div(d).ok_or_else(|| {
+                Error::Domain("creative telescoping: a denominator does not divide their product".into())
+            })
+        })
+        .collect()
+}
+
+/// How much cheaper a modular pass is counted than exact elimination.
+const MODULAR_DISCOUNT: u128 = 32;
+
+/// Adds `cost` to the search's work, or stops it at [`MAX_TELESCOPE_WORK`].
+fn charge(work: &mut u128, cost: u128, what: &str) -> Result<()> {
+    *work = work.saturating_add(cost);
+    if *work > MAX_TELESCOPE_WORK {
+        return Err(Error::TooLarge {
+            what:
+                "creative telescoping work (polynomial terms built, nonzero coefficients × pivots × words eliminated)",
+            value: format!("{} ({what})", *work),
+            limit: MAX_TELESCOPE_WORK.to_string(),
+        });
+    }
+    Ok(())
+}
+
+/// The solution of one linear system `Σ x_i cols_i = given` (each a polynomial, denominators
+/// cleared), or with no `given` a null vector whose first `first_free` entries (the `p_j`) are
+/// not all zero.
+fn solve(
+    sym: &Symbols,
+    cols: &[Poly],
+    given: Option<&Poly>,
+    first_free: usize,
+    work: &mut u128,
+) -> Result<Option<Vec<BigRational>>> {
+    let width = cols.len() + 1;
+    let mut rows: BTreeMap<Vec<u16>, Vec<BigRational>> = BTreeMap::new();
+    for (j, c) in cols.iter().enumerate() {
+        for (e, v) in terms(sym, c) {
+            rows.entry(e).or_insert_with(|| vec![BigRational::zero(); width])[j] += v;
+        }
+    }
+    if let Some(g) = given {
+        for (e, v) in terms(sym, g) {
+            rows.entry(e).or_insert_with(|| vec![BigRational::zero(); width])[width - 1] -= v;
+        }
+    }
+    let mut a: Vec<Vec<BigRational>> = rows.into_values().collect();
+    if a.is_empty() {
+        // Every column is zero: nothing to solve for (it never happens with a nonzero summand).
+        return Ok(None);
+    }
+    let nonzero = a.iter().flatten().filter(|x| !x.is_zero()).count() as u128;
+    let words = a
+        .iter()
+        .flatten()
+        .map(|x| x.numer().bits() + x.denom().bits())
+        .max()
+        .unwrap_or(0)
+        / 64
+        + 1;
+    let (h, w) = (a.len(), width);
+    let estimate = nonzero * h.min(w) as u128 * u128::from(words);
+    let system = format!("a system of {h} equations in {w} unknowns");
+    // Most systems of the search have no solution: a pass modulo a prime, far cheaper than
+    // exact elimination, says so first.
+    charge(work, estimate / MODULAR_DISCOUNT, &system)?;
+    let Some(basis) = modular::may_solve(&a, given.is_some(), first_free) else {
+        return Ok(None);
+    };
+    // Exact elimination on the rows that span the system modulo the prime (almost surely its
+    // rows over Q too); a solution of them is checked on every row, else all rows are used.
+    let mut sub: Vec<Vec<BigRational>> = basis.iter().map(|&r| a[r].clone()).collect();
+    let sub_estimate = estimate * (sub.len() as u128 + 1) / (h as u128 + 1);
+    charge(work, sub_estimate, &system)?;
+    if let Some(x) = exact(&mut sub, given.is_some(), first_free)? {
+        if a.iter().all(|row| satisfied(row, &x)) {
+            return Ok(Some(x));
+        }
+    }
+    charge(work, estimate, &system)?;
+    exact(&mut a, given.is_some(), first_free)
+}
+
+/// Whether `row · (x, −1) = 0` (the last entry of `row` is the right-hand side).
+fn satisfied(row: &[BigRational], x: &[BigRational]) -> bool {
+    let (rhs, lhs) = row.split_last().expect("a row has a right-hand side");
+    let mut total = -rhs.clone();
+    for (c, v) in lhs.iter().zip(x) {
+        if !c.is_zero() && !v.is_zero() {
+            total += c * v;
+        }
+    }
+    total.is_zero()
+}
+
+/// Exact elimination of `a`: a solution (see [`solve`]) or `None`.
+fn exact(a: &mut [Vec<BigRational>], given: bool, first_free: usize) -> Result<Option<Vec<BigRational>>> {
+    let width = a.first().map_or(1, Vec::len);
+    let pivots = row_reduce(a)?;
+    if given {
+        if pivots.contains(&(width - 1)) {
+            return Ok(None);
+        }
+        let mut x = vec![BigRational::zero(); width - 1];
+        for (r, &p) in pivots.iter().enumerate() {
+            x[p] = a[r][width - 1].clone() / &a[r][p];
+        }
+        return Ok(Some(x));
+    }
+    // Homogeneous: a vector of the null space whose first `first_free` entries (the p_j) are
+    // not all zero.
+    for f in (0..width - 1).filter(|c| !pivots.contains(c)) {
+        let mut x = vec![BigRational::zero(); width - 1];
+        x[f] = BigRational::one();
+        for (r, &p) in pivots.iter().enumerate() {
+            x[p] = -a[r][f].clone() / &a[r][p];
+        }
+        if x[..first_free].iter().any(|v| !v.is_zero()) {
+            return Ok(Some(x));
+        }
+    }
+    Ok(None)
+}
+
+fn poly_of(sym: &Symbols, monos: &[Vec<u16>], x: &[BigRational]) -> Poly {
+    let mut p = Poly::constant(&sym.names, &BigRational::zero());
+    for (e, c) in monos.iter().zip(x) {
+        if !c.is_zero() {
+            p = RatFunc::poly(p)
+                .add(&RatFunc::poly(monomial(sym, e).mul(&Poly::constant(&sym.names, c))))
+                .num;
+        }
+    }
+    p
+}
+
+/// Scales `x` so that its first `count` entries are integers with gcd 1, the last nonzero of
+/// them positive (the leading coefficient of the recurrence, for a readable certificate).
+fn normalise(x: &mut [BigRational], count: usize) {
+    let head = &x[..count];
+    let l = head.iter().fold(BigInt::one(), |l, c| l.lcm(c.denom()));
+    let g = head
+        .iter()
+        .filter(|c| !c.is_zero())
+        .fold(BigInt::zero(), |g, c| g.gcd(&(c.numer() * (&l / c.denom()))));
+    if g.is_zero() {
+        return;
+    }
+    let sign = head
+        .iter()
+        .rev()
+        .find(|c| !c.is_zero())
+        .map_or(1, |c| if c.is_negative() { -1 } else { 1 });
+    let s = BigRational::new(l * sign, g);
+    for v in x.iter_mut() {
+        *v = &*v * &s;
+    }
+}
+
+/// Builds `G = P / (D·c) · F` as a term: `F` with its coefficient's numerator replaced by `P`,
+/// the affine factors of `D` cancelled against its factorials.
+fn certificate_term(sym: &Symbols, f: &Term, sh: &Shifts, p: &Poly) -> Result<(Term, String)> {
+    let mut g = f.clone();
+    g.coef = RatFunc {
+        num: p.clone(),
+        den: f.coef.den.clone(),
+    };
+    for a in &sh.affs {
+        cancel(&mut g, a, false, sym);
+    }
+    for q in &sh.polys {
+        g.coef = g.coef.div(&RatFunc::poly(q.clone()))?;
+    }
+    let mut den: Vec<String> = sh.affs.iter().map(|a| format!("({a})")).collect();
+    den.extend(sh.polys.iter().map(|q| format!("({q})")));
+    if f.coef.num.as_constant().is_none_or(|c| !c.is_one()) {
+        den.push(format!("({})", f.coef.num));
+    }
+    let text = if den.is_empty() {
+        format!("{p}")
+    } else {
+        format!("({p})/({})", den.join("*"))
+    };
+    Ok((g, text))
+}
+
+/// Finds the recurrence and certificate of `Σ_k F(n, k)` (see the module documentation), or
+/// says how far the search went.
+pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str, coefficients: Coefficients<'_>) -> Result<Telescoper> {
+    let none = |why: String| Error::Domain(format!("creative telescoping found no recurrence: {why}"));
+    if f.coef.num.is_zero() {
+        return Err(none("the summand is 0".into()));
+    }
+    let width = sym.names.len();
+    let kx = sym
+        .index(k)
+        .ok_or_else(|| none(format!("{k} is not a symbol of the claim")))?;
+    let all: Vec<usize> = (0..width).collect();
+    let not_k: Vec<usize> = (0..width).filter(|&x| x != kx).collect();
+    let mut work = 0u128;
+    let mut reached = String::from("nothing searched");
+    let orders: Vec<usize> = match &coefficients {
+        Coefficients::Search => (1..=MAX_ORDER).collect(),
+        Coefficients::Given(p) if !p.is_empty() => vec![p.len() - 1],
+        Coefficients::Given(_) => return Err(none("no coefficients".into())),
+    };
+    let degrees: Vec<u32> = match &coefficients {
+        Coefficients::Search => (0..=MAX_COEFFICIENT_DEGREE).collect(),
+        Coefficients::Given(_) => vec![0],
+    };
+    for &order in &orders {
+        let sh = shifts(sym, f, n, k, order).map_err(|e| none(e.to_string()))?;
+        let deg_d = total_degree(sym, &sh.dc.num);
+        // The denominators: of each r_j, of the certificate's part (D·c)(k)·(D·c)(k+1)·r2.den,
+        // and of the given part; the system is multiplied by a common multiple of them.
+        let q_den = sh.dc.num.mul(&sh.dc1.num).mul(&sh.r2.den);
+        let given_rf = match &coefficients {
+            Coefficients::Given(p) => {
+                let mut s = RatFunc::from_int(0);
+                for (pj, rj) in p.iter().zip(&sh.r) {
+                    s = s.add(&pj.mul(rj));
+                }
+                Some(s)
+            }
+            Coefficients::Search => None,
+        };
+        let mut dens: Vec<&Poly> = sh.r.iter().map(|r| &r.den).collect();
+        dens.push(&q_den);
+        if let Some(g) = &given_rf {
+            dens.push(&g.den);
+        }
+        let cof = cofactors(sym, &dens)?;
+        let cof_r = &cof[..sh.r.len()];
+        let cof_q = &cof[sh.r.len()];
+        let cert_a = sh.dc.den.mul(&sh.dc1.num).mul(&sh.r2.den).mul(cof_q);
+        let cert_b = sh.dc1.den.mul(&sh.r2.num).mul(&sh.dc.num).mul(cof_q);
+        let given = given_rf.map(|g| g.num.mul(&cof[sh.r.len() + 1]));
+        let extra: Vec<u32> = match &coefficients {
+            Coefficients::Search => vec![1],
+            Coefficients::Given(_) => (0..=MAX_COEFFICIENT_DEGREE + 2).collect(),
+        };
+        for &dp in &degrees {
+            for &x in &extra {
+                let d_cert = deg_d + dp + x;
+                let pmonos = match &coefficients {
+                    Coefficients::Search => monomials(width, &not_k, dp),
+                    Coefficients::Given(_) => Vec::new(),
+                };
+                let cmonos = monomials(width, &all, d_cert);
+                let unknowns = (order + 1) * pmonos.len() + cmonos.len();
+                if unknowns > MAX_UNKNOWNS {
+                    return Err(none(format!(
+                        "{reached}; at order {order}, coefficient degree {dp} and certificate degree {d_cert}: {unknowns} unknowns, more than MAX_UNKNOWNS = {MAX_UNKNOWNS}"
+                    )));
+                }
+                // Building the columns: each multiplies a monomial into these products.
+                let size = |p: &Poly| p.len() as u128;
+                let build = (cmonos.len() as u128) * (size(&cert_a) + size(&cert_b))
+                    + (pmonos.len() as u128)
+                        * cof_r
+                            .iter()
+                            .zip(&sh.r)
+                            .map(|(c, r)| size(c) * size(&r.num))
+                            .sum::<u128>();
+                charge(&mut work, 16 * build, &format!("building the system of order {order}, coefficient degree {dp}, certificate degree {d_cert}")).map_err(|e| {
+                    none(format!("{reached}; stopped at order {order}, coefficient degree {dp}, certificate degree {d_cert}: {e}"))
+                })?;
+                let mut cols = Vec::with_capacity(unknowns);
+                for (r, cof) in sh.r.iter().zip(cof_r) {
+                    let base = r.num.mul(cof);
+                    cols.extend(pmonos.iter().map(|e| monomial(sym, e).mul(&base)));
+                }
+                // −R(k+1)·r2 + R(k) with R = m/(D·c), over the common denominator.
+                for e in &cmonos {
+                    let m = monomial(sym, e);
+                    let m1 = sym.subst_poly(&m, k, &Aff::var(k).shifted(1));
+                    cols.push(RatFunc::poly(m.mul(&cert_a)).cleared_difference(&RatFunc::poly(m1.mul(&cert_b))));
+                }
+                let first_free = (order + 1) * pmonos.len();
+                let found = solve(sym, &cols, given.as_ref(), first_free, &mut work).map_err(|e| {
+                    none(format!(
+                        "{reached}; stopped at order {order}, coefficient degree {dp}, certificate degree {d_cert}: {e}"
+                    ))
+                })?;
+                reached = match &coefficients {
+                    Coefficients::Search => format!(
+                        "none of order ≤ {order} with coefficients of degree ≤ {dp} (certificate numerators of degree ≤ {d_cert})"
+                    ),
+                    Coefficients::Given(_) => {
+                        format!("no certificate numerator of degree ≤ {d_cert} for the stated recurrence")
+                    }
+                };
+                let Some(mut x) = found else { continue };
+                let p: Vec<RatFunc> = match &coefficients {
+                    Coefficients::Search => {
+                        normalise(&mut x, first_free);
+                        (0..=order)
+                            .map(|j| {
+                                let part = &x[j * pmonos.len()..(j + 1) * pmonos.len()];
+                                RatFunc::poly(poly_of(sym, &pmonos, part))
+                            })
+                            .collect()
+                    }
+                    Coefficients::Given(p) => p.to_vec(),
+                };
+                // The order actually used: the last nonzero coefficient.
+                let top = p.iter().rposition(|q| !q.num.is_zero()).unwrap_or(0);
+                let p = p[..=top].to_vec();
+                let cert = poly_of(sym, &cmonos, &x[first_free..]);
+                let (g, r) = certificate_term(sym, f, &sh, &cert)?;
+                return Ok(Telescoper { p, g, r });
+            }
+        }
+    }
+    Err(none(format!(
+        "{reached} (MAX_ORDER = {MAX_ORDER}, MAX_COEFFICIENT_DEGREE = {MAX_COEFFICIENT_DEGREE})"
+    )))
+}
+
+/// One identity a proof rests on: `Σ lin = 0` at every integer point of `domain`.
+pub struct Obligation {
+    /// The terms.
+    pub lin: Lin,
+    /// Where.
+    pub domain: Domain,
+    /// What it says, for the log and the error.
+    pub what: String,
+}
+
+/// A sum `Σ_{k=a}^{b(n)} F(n, k)` over the induction variable `n ≥ n₀`, the other integers on
+/// `rest`.
+pub struct SumShape<'a> {
+    /// The summation variable.
+    pub k: &'a str,
+    /// The lower bound (free of `n`).
+    pub a: &'a Aff,
+    /// The upper bound `n + c`.
+    pub b: &'a Aff,
+    /// The induction variable.
+    pub n: &'a str,
+    /// Its least value.
+    pub n0: &'a Aff,
+    /// The domain of the other integers.
+    pub rest: &'a Domain,
+}
+
+/// `p · lin` for a scalar `p`.
+fn scaled(p: &RatFunc, lin: &[Term]) -> Result<Lin> {
+    lin_mul(&[Term::scalar(p.clone())], lin)
+}
+
+/// The terms of `Σ_{k=a}^{b} F` at `n = n0`, where the sum must have a fixed number of terms
+/// (at most 10 001).
+pub fn finite_sum(
+    sym: &Symbols,
+    f: &[Term],
+    (k, a, b): (&str, &Aff, &Aff),
+    (n, n0): (&str, &Aff),
+    what: &str,
+) -> Result<Lin> {
+    let width = b.subst(n, n0).minus(a);
+    if !width.is_const() || width.c < -1 || width.c > 10_000 {
+        return Err(Error::Domain(format!(
+            "{what}: at {n} = {n0} the sum does not have a fixed number of terms"
+        )));
+    }
+    let at0 = lin_subst(sym, f, n, n0);
+    let mut out = Vec::new();
+    for m in 0..=width.c {
+        out.extend(lin_subst(sym, &at0, k, &a.shifted(m)));
+    }
+    Ok(out)
+}
+
+/// The first `n ≥ n0` past every integer zero (in `n`) of the coefficient of the closed-form
+/// term `h`, so that dividing by `h` is defined for the whole induction; at most
+/// [`MAX_DIRECT_CASES`] values past `n0`.
+pub(crate) fn induction_start(sym: &Symbols, h: &Term, n: &str, n0: &Aff, what: &str) -> Result<Aff> {
+    let mut start = n0.clone();
+    for z in sym.integer_zeros(&h.coef.num)? {
+        let c = z.coef(n);
+        if c == 0 {
+            continue;
+        }
+        let moving = z.v.keys().any(|x| x != n);
+        if moving || !n0.is_const() {
+            return Err(Error::Domain(format!(
+                "{what}: the closed form's coefficient vanishes where {z} = 0, which moves with the other symbols: the induction cannot start past it"
+            )));
+        }
+        if z.c % c != 0 {
+            continue;
+        }
+        let root = -z.c / c;
+        if root >= start.c {
+            start = Aff::constant(root + 1);
+        }
+    }
+    if start.minus(n0).c > MAX_DIRECT_CASES {
+        return Err(Error::Domain(format!(
+            "{what}: the closed form's coefficient vanishes at {n} = {}, more than {MAX_DIRECT_CASES} values past {n0}",
+            start.c - 1
+        )));
+    }
+    Ok(start)
+}
+
+/// `Σ_j p_j(n) F(n+j, k) − G(n, k+1) + G(n, k)`, the telescoping equation as one sum.
+pub fn telescoping_equation(sym: &Symbols, f: &Term, t: &Telescoper, n: &str, k: &str) -> Result<Lin> {
+    let mut out = Vec::new();
+    for (j, p) in t.p.iter().enumerate() {
+        let fj = f.subst(sym, n, &Aff::var(n).shifted(j as i64));
+        out.extend(scaled(p, &[fj])?);
+    }
+    out.extend(lin_neg(&[t.g.subst(sym, k, &Aff::var(k).shifted(1))]));
+    out.push(t.g.clone());
+    Ok(out)
+}
+
+/// `Σ_j p_j(n) S(n+j)` for `S(n) = Σ_{k=a}^{b(n)} F(n, k)`, by the telescoped ends:
+/// `G(n, b+1) − G(n, a) + Σ_j p_j Σ_{m=1}^{j} F(n+j, b+m)`.
+pub fn telescoped_sum(sym: &Symbols, f: &Term, t: &Telescoper, (n, k, a, b): (&str, &str, &Aff, &Aff)) -> Result<Lin> {
+    let mut out = vec![t.g.subst(sym, k, &b.shifted(1))];
+    out.extend(lin_neg(&[t.g.subst(sym, k, a)]));
+    for (j, p) in t.p.iter().enumerate() {
+        // Shift n first, then put k = b(n) + m (written in the old n).
+        let fj = f.subst(sym, n, &Aff::var(n).shifted(j as i64));
+        for m in 1..=j as i64 {
+            out.extend(scaled(p, &[fj.subst(sym, k, &b.shifted(m))])?);
+        }
+    }
+    Ok(out)
+}
+
+/// The first `n ≥ n₀` past every integer zero in `n` of the leading coefficient `p_J`; an
+/// error when it may vanish at a point that moves with the other integers.
+fn past_leading_zeros(sym: &Symbols, lead: &RatFunc, s: &SumShape<'_>, what: &str) -> Result<Aff> {
+    let mut start = s.n0.clone();
+    for z in sym.integer_zeros(&lead.num)? {
+        let c = z.coef(s.n);
+        if c == 0 {
+            // Free of n: harmless only where the domain rules z = 0 out.
+            if s.rest.with(z.clone()).with(z.scaled(-1)).feasible() {
+                return Err(Error::Domain(format!(
+                    "{what}: the recurrence's leading coefficient {lead} vanishes where {z} = 0, for every {}",
+                    s.n
+                )));
+            }
+            continue;
+        }
+        if z.v.len() > 1 || !s.n0.is_const() {
+            return Err(Error::Domain(format!(
+                "{what}: the recurrence's leading coefficient {lead} vanishes where {z} = 0, which moves with the other symbols"
+            )));
+        }
+        if z.c % c != 0 {
+            continue;
+        }
+        let root = -z.c / c;
+        if root >= start.c {
+            start = Aff::constant(root + 1);
+        }
+    }
+    Ok(start)
+}
+
+/// The identities proving `Σ_{k=a}^{b(n)} F(n, k) = rhs(n)` for every `n ≥ n₀` by the
+/// recurrence `t` (see the module documentation), and the text of the certificate.
+pub fn closed_form(
+    sym: &Symbols,
+    f: &Term,
+    t: &Telescoper,
+    s: &SumShape<'_>,
+    rhs: &[Term],
+    what: &str,
+) -> Result<(Vec<Obligation>, String)> {
+    let n = s.n;
+    let order = t.order();
+    let lead = &t.p[order];
+    let n1 = past_leading_zeros(sym, lead, s, what)?;
+    let span = n1.minus(s.n0);
+    if !span.is_const() || span.c + order as i64 > MAX_DIRECT_CASES {
+        return Err(Error::Domain(format!(
+            "{what}: the recurrence needs the values n = {}..{n1}+{order} directly, more than MAX_DIRECT_CASES = {MAX_DIRECT_CASES}",
+            s.n0
+        )));
+    }
+    let d_rec = s.rest.with(Aff::var(n).minus(&n1));
+    let d_k = d_rec.with(Aff::var(s.k).minus(s.a)).with(s.b.minus(&Aff::var(s.k)));
+    let mut out = vec![Obligation {
+        lin: telescoping_equation(sym, f, t, n, s.k)?,
+        domain: d_k,
+        what: format!(
+            "{what}: Σ_j p_j({n}) F({n}+j, {k}) = G({n}, {k}+1) − G({n}, {k})",
+            k = s.k
+        ),
+    }];
+    let mut ends = Vec::new();
+    for (j, p) in t.p.iter().enumerate() {
+        ends.extend(scaled(p, &lin_subst(sym, rhs, n, &Aff::var(n).shifted(j as i64)))?);
+    }
+    ends.extend(lin_neg(&telescoped_sum(sym, f, t, (n, s.k, s.a, s.b))?));
+    out.push(Obligation {
+        lin: ends,
+        domain: d_rec.clone(),
+        what: format!(
+            "{what}: the closed form satisfies the recurrence (Σ_j p_j({n}) rhs({n}+j) = the telescoped ends)"
+        ),
+    });
+    let cases = span.c + order as i64;
+    for m in 0..cases {
+        let at = s.n0.shifted(m);
+        let mut case = finite_sum(sym, std::slice::from_ref(f), (s.k, s.a, s.b), (n, &at), what)?;
+        case.extend(lin_neg(&lin_subst(sym, rhs, n, &at)));
+        out.push(Obligation {
+            lin: case,
+            domain: s.rest.clone(),
+            what: format!("{what}: the initial value {n} = {at}"),
+        });
+    }
+    let last = s.n0.shifted(cases - 1);
+    let text = format!(
+        "{what}: {} = the telescoped ends, R = {}; leading coefficient ≠ 0 for {n} ≥ {n1}; {n} = {}..={last} checked directly",
+        t.show("S", n),
+        t.r,
+        s.n0
+    );
+    Ok((out, text))
+}
