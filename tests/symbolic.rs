@@ -2,26 +2,10 @@
 //! proved for every value, false ones fail with an exact counterexample or are refused, and a
 //! wrong certificate is rejected — never `proved`.
 
-use casteljau::verify::check_claim;
-use casteljau::verify::claims::parse_file;
+#[path = "support/identity.rs"]
+mod identity;
 use casteljau::verify::Verdict;
-use std::path::Path;
-
-fn check(body: &str) -> casteljau::Result<(Verdict, Option<String>, String)> {
-    let f = parse_file(
-        &format!("[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\n{body}"),
-        Path::new("test.toml"),
-    )?;
-    let out = check_claim(&f.claim[0], true)?;
-    Ok((out.verdict, out.range, out.certificate))
-}
-
-fn assert_proved(body: &str) -> String {
-    match check(body) {
-        Ok((Verdict::Proved, None, c)) => c,
-        other => panic!("{body}: expected proved for every n, got {other:?}"),
-    }
-}
+use identity::{assert_proved, check_scoped as check};
 
 fn assert_error(body: &str, needle: &str) {
     match check(body) {

@@ -3,27 +3,11 @@
 //! `∫_0^1 B_i^n = 1/(n+1)` proved for every value — and their false variants never `proved`:
 //! each fails with an exact counterexample or is an error.
 
-use casteljau::verify::check_claim;
-use casteljau::verify::claims::parse_file;
+#[path = "support/identity.rs"]
+mod identity;
 use casteljau::verify::Verdict;
+use identity::{assert_proved, check_scoped as check};
 use proptest::prelude::*;
-use std::path::Path;
-
-fn check(body: &str) -> casteljau::Result<(Verdict, Option<String>, String)> {
-    let f = parse_file(
-        &format!("[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\n{body}"),
-        Path::new("test.toml"),
-    )?;
-    let out = check_claim(&f.claim[0], true)?;
-    Ok((out.verdict, out.range, out.certificate))
-}
-
-fn assert_proved(body: &str) -> String {
-    match check(body) {
-        Ok((Verdict::Proved, None, c)) => c,
-        other => panic!("{body}: expected proved for every n, got {other:?}"),
-    }
-}
 
 fn assert_fails_at(body: &str, at: &str) {
     match check(body) {

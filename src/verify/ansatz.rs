@@ -82,6 +82,21 @@ fn show_monomial(sym: &Symbols, e: &[u16]) -> String {
     }
 }
 
+/// The cost of eliminating the `width` columns of `a`: each of at most min(rows, columns)
+/// pivots updates the nonzero entries, on numbers of the largest entry's words.
+pub(super) fn elimination_work(a: &[Vec<BigRational>], width: usize) -> u128 {
+    let nonzero = a.iter().flatten().filter(|x| !x.is_zero()).count() as u128;
+    let words = a
+        .iter()
+        .flatten()
+        .map(|x| x.numer().bits() + x.denom().bits())
+        .max()
+        .unwrap_or(0)
+        / 64
+        + 1;
+    nonzero * a.len().min(width) as u128 * u128::from(words)
+}
+
 /// A candidate certificate `R` for `Σ_k F(n, k)` with `F` one term, or an error saying why none
 /// was found.
 pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str) -> Result<Expr> {
@@ -161,19 +176,9 @@ pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str) -> Result<Expr> {
             rows.entry(e).or_insert_with(|| vec![BigRational::zero(); width])[width - 1] -= v;
         }
         let mut a: Vec<Vec<BigRational>> = rows.into_values().collect();
-        // Elimination: each of at most min(rows, columns) pivots updates the nonzero entries,
-        // on numbers of this many words.
-        let nonzero = a.iter().flatten().filter(|x| !x.is_zero()).count() as u128;
-        let words = a
-            .iter()
-            .flatten()
-            .map(|x| x.numer().bits() + x.denom().bits())
-            .max()
-            .unwrap_or(0)
-            / 64
-            + 1;
         let (h, w) = (a.len(), width);
-        work = work.saturating_add(nonzero * h.min(w) as u128 * u128::from(words));
+        let nonzero = a.iter().flatten().filter(|x| !x.is_zero()).count();
+        work = work.saturating_add(elimination_work(&a, w));
         if work > MAX_ANSATZ_WORK {
             stopped = Some(format!(
                 "its linear system of {h} equations in {w} unknowns ({nonzero} nonzero coefficients) passes MAX_ANSATZ_WORK = {MAX_ANSATZ_WORK} (nonzero coefficients × pivots × words, over all degrees)"

@@ -282,17 +282,8 @@ fn solve(
         // Every column is zero: nothing to solve for (it never happens with a nonzero summand).
         return Ok(None);
     }
-    let nonzero = a.iter().flatten().filter(|x| !x.is_zero()).count() as u128;
-    let words = a
-        .iter()
-        .flatten()
-        .map(|x| x.numer().bits() + x.denom().bits())
-        .max()
-        .unwrap_or(0)
-        / 64
-        + 1;
     let (h, w) = (a.len(), width);
-    let estimate = nonzero * h.min(w) as u128 * u128::from(words);
+    let estimate = super::ansatz::elimination_work(&a, w);
     let system = format!("a system of {h} equations in {w} unknowns");
     // Most systems of the search have no solution: a pass modulo a prime, far cheaper than
     // exact elimination, says so first.

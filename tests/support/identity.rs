@@ -1,6 +1,8 @@
 //! One `identity` claim checked from the body of its TOML table: the verdict and the
 //! certificate (or counterexample). Shared by the claim-language tests.
 
+#![allow(dead_code)]
+
 use casteljau::verify::check_claim;
 use casteljau::verify::claims::parse_file;
 use casteljau::verify::Verdict;
@@ -13,4 +15,22 @@ pub fn check(body: &str) -> casteljau::Result<(Verdict, String)> {
     )?;
     let out = check_claim(&f.claim[0], false)?;
     Ok((out.verdict, out.certificate))
+}
+
+/// The verdict, its range and the certificate, with the proof's steps recorded (as `--explain`).
+pub fn check_scoped(body: &str) -> casteljau::Result<(Verdict, Option<String>, String)> {
+    let f = parse_file(
+        &format!("[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\n{body}"),
+        Path::new("test.toml"),
+    )?;
+    let out = check_claim(&f.claim[0], true)?;
+    Ok((out.verdict, out.range, out.certificate))
+}
+
+/// The certificate of a claim `proved` for every n; a panic naming what came instead.
+pub fn assert_proved(body: &str) -> String {
+    match check_scoped(body) {
+        Ok((Verdict::Proved, None, c)) => c,
+        other => panic!("{body}: expected proved for every n, got {other:?}"),
+    }
 }
