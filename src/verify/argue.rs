@@ -168,6 +168,9 @@ pub(crate) fn argument(c: &Claim, checked: &Checked) -> Vec<String> {
         if checked.method == Method::ForEvery {
             a.extend(super::inequality::ARGUMENT_FOR_EVERY.iter().map(|l| l.to_string()));
         }
+    } else if checked.method == Method::Induction {
+        a.extend(super::symbolic::INDUCTION_ARGUMENT.iter().map(|l| l.to_string()));
+        a.extend(super::symbolic::ARGUMENT.iter().map(|l| l.to_string()));
     } else if checked.method == Method::ForEvery && checked.range.is_none() {
         a.extend(super::symbolic::ARGUMENT.iter().map(|l| l.to_string()));
     } else if let Method::Sampling { basis } = checked.method {

@@ -56,6 +56,9 @@ pub enum Method {
     /// For every value of the open ranges: hypergeometric terms, WZ certificates, Fourier–Motzkin
     /// pieces or Bernstein certificates of the factors.
     ForEvery,
+    /// For every value by induction on a range variable: its base and its step, each proved
+    /// for every value of the others.
+    Induction,
 }
 
 impl Method {
@@ -64,6 +67,7 @@ impl Method {
         match (self, other) {
             (Method::Sampling { basis: a }, Method::Sampling { basis: b }) => Method::Sampling { basis: a || b },
             (s @ Method::Sampling { .. }, _) | (_, s @ Method::Sampling { .. }) => s,
+            (Method::Induction, _) | (_, Method::Induction) => Method::Induction,
             (Method::ForEvery, _) | (_, Method::ForEvery) => Method::ForEvery,
             _ => Method::Direct,
         }

@@ -191,6 +191,22 @@ impl Decls {
         self.ranges.iter().any(IntRange::is_open)
     }
 
+    /// The declarations with each open range closed after `extra` values past its first.
+    pub(crate) fn closed_after(&self, extra: i64) -> Decls {
+        let ranges = self
+            .ranges
+            .iter()
+            .map(|r| IntRange {
+                to: Some(r.to.clone().unwrap_or_else(|| format!("({}) + {extra}", r.from))),
+                ..r.clone()
+            })
+            .collect();
+        Decls {
+            ranges,
+            ..self.clone()
+        }
+    }
+
     /// Whether the claim is decided by symbolic expansion (it declares symbols or vectors).
     pub fn symbolic(&self) -> bool {
         self.symbols.is_some() || self.vectors.is_some()
@@ -280,6 +296,9 @@ pub struct Identity {
     pub sides: Sides,
     /// With open ranges: WZ certificates `R`, one per sum with a symbolic bound (innermost first).
     pub certificates: Vec<String>,
+    /// With open ranges: proved by induction on this range variable (`induction = "r"`), the
+    /// library objects unfolded by their defining recursion.
+    pub induction: Option<String>,
 }
 
 /// An identity's fields as written.
@@ -291,6 +310,7 @@ struct IdentityFields {
     chain: Option<Vec<String>>,
     #[serde(default, deserialize_with = "one_or_many")]
     certificate: Vec<String>,
+    induction: Option<String>,
 }
 
 fn one_or_many<'de, D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Vec<String>, D::Error> {
@@ -310,6 +330,7 @@ impl TryFrom<IdentityFields> for Identity {
         Ok(Identity {
             sides,
             certificates: f.certificate,
+            induction: f.induction,
         })
     }
 }
@@ -462,6 +483,7 @@ impl Vanishes {
         Identity {
             sides: Sides::Pair(self.expr.clone(), "0".into()),
             certificates: Vec::new(),
+            induction: None,
         }
     }
 }
@@ -627,9 +649,11 @@ struct Header {
     corrects: Option<String>,
     note: Option<String>,
     figure: Option<Illustration>,
+    #[serde(default)]
+    uses: Vec<String>,
 }
 
-const HEADER: [&str; 8] = [
+const HEADER: [&str; 9] = [
     "id",
     "source",
     "statement",
@@ -638,6 +662,7 @@ const HEADER: [&str; 8] = [
     "corrects",
     "note",
     "figure",
+    "uses",
 ];
 
 /// One claim: what every claim has, its declarations and what its kind states
@@ -658,6 +683,9 @@ pub struct Claim {
     pub note: Option<String>,
     /// The illustration of a general statement in the report (`figure = "subdivision"`).
     pub figure: Option<Illustration>,
+    /// The claims it cites as lemmas (`uses = ["000-9-intermediate"]`): a library object is
+    /// replaced by its formula in a proof for every value only through such a proved lemma.
+    pub uses: Vec<String>,
     /// What its expressions may use.
     pub decls: Decls,
     /// What it states.
@@ -724,6 +752,7 @@ impl Claim {
             corrects: head.corrects,
             note: head.note,
             figure: head.figure,
+            uses: head.uses,
             decls,
             kind,
         })

@@ -20,6 +20,7 @@ use super::eval::{Alg, Deg, Evaluator, Value};
 use super::expansion::check_implies;
 use super::expr::Expr;
 use super::identity::{chain_in_field, check_identity, uses_sqrt};
+use super::lemma::Lemma;
 use super::objects::{curve_from_spec, points};
 use super::poly::{Poly, RatFunc};
 use super::rewrite::substitute;
@@ -41,11 +42,29 @@ use std::rc::Rc;
 ///
 /// A `proved` over finite ranges (`for`, a theorem's `degrees`) is reported as
 /// `proved_in_range` with the ranges: the scope is decided here, once, for every kind.
+///
+/// A claim that cites lemmas (`uses`) is checked with its claim files ([`super::prove_files`]),
+/// which decide the lemmas first; here it is an error.
 pub fn check_claim(claim: &Claim, detail: bool) -> Result<Checked> {
+    if !claim.uses.is_empty() {
+        return Err(Error::Domain(format!(
+            "claim {} cites lemmas ({}): check it with the claim files that hold them",
+            claim.id,
+            claim.uses.join(", ")
+        )));
+    }
+    check_citing(claim, &Ok(Vec::new()), detail)
+}
+
+/// Checks one claim with the lemmas it cites, or the reason they cannot serve (a cited claim
+/// not proved for every value): a claim with open ranges then is that error, one over finite
+/// ranges is checked case by case as without them.
+pub(crate) fn check_citing(claim: &Claim, lemmas: &Result<Vec<Lemma>>, detail: bool) -> Result<Checked> {
     super::names::check_declarations(claim)?;
     if claim.for_every() {
         if let (Some(identity), false) = (claim.kind.identity(), claim.decls.symbolic()) {
-            return super::symbolic::check(&claim.id, &claim.decls, &identity, detail);
+            let lemmas = lemmas.as_ref().map_err(|e| Error::Domain(e.to_string()))?;
+            return super::symbolic::check(&claim.id, &claim.decls, &identity, lemmas, detail);
         }
         return match &claim.kind {
             Kind::Inequality(ineq) => super::inequality::check_for_every(&claim.id, &claim.decls, ineq, detail),
@@ -54,6 +73,12 @@ pub fn check_claim(claim: &Claim, detail: bool) -> Result<Checked> {
                 claim.id
             ))),
         };
+    }
+    if matches!(&claim.kind, Kind::Identity(i) if i.induction.is_some()) {
+        return Err(Error::Parse(format!(
+            "claim {}: induction belongs to a claim with an open range (r = 0..)",
+            claim.id
+        )));
     }
     if matches!(&claim.kind, Kind::Identity(i) if !i.certificates.is_empty()) {
         return Err(Error::Parse(format!(

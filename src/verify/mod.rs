@@ -42,7 +42,8 @@
 //   operations callable in expressions);
 // - hypergeometric terms: `hyper`, `pieces` (zero on every piece of a domain), `ansatz`,
 //   `telescope` (recurrences by creative telescoping), `beta` (integrals over [0, 1]);
-// - a claim's context: `objects`, `context`, `names`;
+// - a claim's context: `objects`, `context`, `names`, `lemma` (library objects by their
+//   definitions and by lemmas);
 // - provers: `sampling` (degree bounds and exact evaluation), `expansion` (symbolic expansion,
 //   `implies`), `identity` (the identity goal), `translate`, `recurrence` and `symbolic` (for
 //   every n), `theorems`, `inequality`;
@@ -63,6 +64,7 @@ mod identity;
 mod inequality;
 mod kinds;
 mod latex;
+mod lemma;
 mod methods;
 mod names;
 mod objects;
@@ -106,39 +108,146 @@ pub fn prove_paths(paths: &[PathBuf], progress: &mut dyn FnMut(usize, usize, &st
 /// Checks every claim of claim files already loaded (e.g. [`claims::builtin_files`]), as
 /// [`prove_paths`] does.
 pub fn prove_files(files: &[claims::ClaimFile], progress: &mut dyn FnMut(usize, usize, &str)) -> Result<Report> {
-    use rayon::prelude::*;
-    let jobs: Vec<(&claims::ClaimFile, &claims::Claim)> =
-        files.iter().flat_map(|f| f.claim.iter().map(move |c| (f, c))).collect();
-    let total = jobs.len();
-    let (done_tx, done_rx) = std::sync::mpsc::channel::<usize>();
-    let jobs = &jobs;
-    let results: Vec<Result<ClaimOutcome>> = std::thread::scope(|scope| {
-        let worker = scope.spawn(move || {
-            jobs.par_iter()
-                .enumerate()
-                .map_with(done_tx, |done_tx, (index, &(f, c))| {
-                    let outcome = check_one(f, c);
-                    // The receiver lives until every claim is done; a send cannot fail.
-                    let _ = done_tx.send(index);
-                    outcome
-                })
-                .collect()
-        });
-        // Completions arrive in any order; count them here so `done` rises by one each time.
-        for (done, index) in done_rx.iter().enumerate() {
-            progress(done + 1, total, &jobs[index].1.id);
-        }
-        worker.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic))
-    });
-    let outcomes = results.into_iter().collect::<Result<Vec<_>>>()?;
+    let jobs: Vec<Job<'_>> = files.iter().flat_map(|f| f.claim.iter().map(move |c| (f, c))).collect();
+    let decided = decide(&jobs, progress);
+    let outcomes = jobs
+        .iter()
+        .zip(decided)
+        .map(|(&(f, c), checked)| outcome(f, c, checked))
+        .collect();
     Ok(Report { outcomes })
 }
 
-fn check_one(f: &claims::ClaimFile, c: &claims::Claim) -> Result<ClaimOutcome> {
-    // A claim that cannot be decided is reported as such; it never hides the others.
-    let checked = kinds::check_claim(c, false).unwrap_or_else(|e| checked::Checked::new(Verdict::Error, e.to_string()));
+type Job<'a> = (&'a claims::ClaimFile, &'a claims::Claim);
+
+/// Every claim of `jobs` checked, the cited ones first (see [`prove_files`]).
+fn decide(jobs: &[Job<'_>], progress: &mut dyn FnMut(usize, usize, &str)) -> Vec<Checked> {
+    use rayon::prelude::*;
+    let total = jobs.len();
+    let rounds = citation_rounds(jobs);
+    let mut decided: Vec<Option<Checked>> = vec![None; total];
+    let mut done = 0;
+    for round in rounds {
+        // Each round's claims cite only claims decided in earlier rounds.
+        let (done_tx, done_rx) = std::sync::mpsc::channel::<usize>();
+        let jobs = &jobs;
+        let decided_so_far = &decided;
+        let round = &round;
+        let results: Vec<(usize, Checked)> = std::thread::scope(|scope| {
+            let worker = scope.spawn(move || {
+                round
+                    .par_iter()
+                    .map_with(done_tx, |done_tx, &(index, ref cited)| {
+                        let lemmas = cited.clone().and_then(|cited| lemmas_of(jobs, decided_so_far, &cited));
+                        let claim = jobs[index].1;
+                        // A claim that cannot be decided is reported as such; it never hides the others.
+                        let checked = kinds::check_citing(claim, &lemmas, false)
+                            .unwrap_or_else(|e| Checked::new(Verdict::Error, e.to_string()));
+                        // The receiver lives until every claim is done; a send cannot fail.
+                        let _ = done_tx.send(index);
+                        (index, checked)
+                    })
+                    .collect()
+            });
+            // Completions arrive in any order; count them here so `done` rises by one each time.
+            for index in done_rx.iter() {
+                done += 1;
+                progress(done, total, &jobs[index].1.id);
+            }
+            worker.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic))
+        });
+        for (index, checked) in results {
+            decided[index] = Some(checked);
+        }
+    }
+    decided
+        .into_iter()
+        .map(|c| c.expect("every claim is in a round"))
+        .collect()
+}
+
+/// The claims in rounds: a claim comes after every claim it cites (`uses`), each with the
+/// indices of the claims it cites, or why they cannot be cited (an unknown id, a cycle).
+fn citation_rounds(jobs: &[Job<'_>]) -> Vec<Vec<(usize, Result<Vec<usize>>)>> {
+    let index_of = |id: &str| jobs.iter().position(|(_, c)| c.id == id);
+    // depth[k]: the round of claim k, or the reason it has none.
+    let mut depth: Vec<Option<std::result::Result<usize, String>>> = vec![None; jobs.len()];
+    fn round_of(
+        k: usize,
+        jobs: &[Job<'_>],
+        index_of: &dyn Fn(&str) -> Option<usize>,
+        depth: &mut Vec<Option<std::result::Result<usize, String>>>,
+        path: &mut Vec<usize>,
+    ) -> std::result::Result<usize, String> {
+        if let Some(d) = &depth[k] {
+            return d.clone();
+        }
+        if let Some(at) = path.iter().position(|&p| p == k) {
+            let cycle: Vec<&str> = path[at..].iter().chain([&k]).map(|&p| jobs[p].1.id.as_str()).collect();
+            return Err(format!("the citations form a cycle: {}", cycle.join(" → ")));
+        }
+        path.push(k);
+        let mut d = Ok(0);
+        for id in &jobs[k].1.uses {
+            let cited = match index_of(id) {
+                None => Err(format!("it cites {id}, which is not a claim of the files checked")),
+                Some(c) => round_of(c, jobs, index_of, depth, path).map_err(|e| format!("it cites {id}: {e}")),
+            };
+            d = match (d, cited) {
+                (Ok(a), Ok(b)) => Ok(a.max(b + 1)),
+                (Err(e), _) | (_, Err(e)) => Err(e),
+            };
+        }
+        path.pop();
+        depth[k] = Some(d.clone());
+        d
+    }
+    for k in 0..jobs.len() {
+        round_of(k, jobs, &index_of, &mut depth, &mut Vec::new()).ok();
+    }
+    let mut rounds: Vec<Vec<(usize, Result<Vec<usize>>)>> = Vec::new();
+    for (k, d) in depth.into_iter().enumerate() {
+        let (r, cited) = match d.expect("every claim has a depth") {
+            Ok(r) => (
+                r,
+                Ok(jobs[k].1.uses.iter().filter_map(|id| index_of(id)).collect()),
+            ),
+            Err(e) => (0, Err(Error::Domain(format!("claim {}: {e}", jobs[k].1.id)))),
+        };
+        if rounds.len() <= r {
+            rounds.resize_with(r + 1, Vec::new);
+        }
+        rounds[r].push((k, cited));
+    }
+    rounds
+}
+
+/// The lemmas of the cited claims, each proved for every value; otherwise why not.
+fn lemmas_of(
+    jobs: &[Job<'_>],
+    decided: &[Option<Checked>],
+    cited: &[usize],
+) -> Result<Vec<lemma::Lemma>> {
+    cited
+        .iter()
+        .map(|&k| {
+            let claim = jobs[k].1;
+            match decided[k].as_ref().map(|c| c.verdict) {
+                Some(Verdict::Proved) if claim.for_every() => lemma::Lemma::from_claim(claim),
+                Some(v) => Err(Error::Domain(format!(
+                    "it cites {}, which is {} and not proved for every value (a lemma must be; a claim resting on a lemma proved in a range is at most proved in that range)",
+                    claim.id,
+                    v.as_str()
+                ))),
+                None => Err(Error::Domain(format!("{} is not decided before the claims citing it", claim.id))),
+            }
+        })
+        .collect()
+}
+
+fn outcome(f: &claims::ClaimFile, c: &claims::Claim, checked: Checked) -> ClaimOutcome {
     let range_bound = scope::range_bound(c, checked.verdict);
-    Ok(ClaimOutcome {
+    ClaimOutcome {
         id: c.id.clone(),
         source: c.source.clone(),
         statement: c.statement.clone(),
@@ -151,7 +260,42 @@ fn check_one(f: &claims::ClaimFile, c: &claims::Claim) -> Result<ClaimOutcome> {
         corrects: c.corrects.clone(),
         note: c.note.clone(),
         range_bound,
-    })
+    }
+}
+
+/// One claim checked with its steps, after the claims it cites (and theirs).
+fn explained(files: &[claims::ClaimFile], claim: &claims::Claim) -> Result<Checked> {
+    if claim.uses.is_empty() {
+        return kinds::check_claim(claim, true);
+    }
+    let all: Vec<Job<'_>> = files.iter().flat_map(|f| f.claim.iter().map(move |c| (f, c))).collect();
+    let mut wanted: Vec<&str> = claim.uses.iter().map(String::as_str).collect();
+    let mut k = 0;
+    while k < wanted.len() {
+        if let Some((_, c)) = all.iter().find(|(_, c)| c.id == wanted[k]) {
+            for id in &c.uses {
+                if !wanted.contains(&id.as_str()) && *id != claim.id {
+                    wanted.push(id);
+                }
+            }
+        }
+        k += 1;
+    }
+    let mut jobs: Vec<Job<'_>> = all.iter().copied().filter(|(_, c)| wanted.contains(&c.id.as_str())).collect();
+    jobs.push(all.iter().copied().find(|(_, c)| c.id == claim.id).expect("the claim is in its files"));
+    let rounds = citation_rounds(&jobs);
+    let cited = rounds
+        .iter()
+        .flatten()
+        .find(|(k, _)| *k == jobs.len() - 1)
+        .map(|(_, cited)| cited.clone())
+        .expect("every claim is in a round");
+    let decided: Vec<Option<Checked>> = decide(&jobs[..jobs.len() - 1], &mut |_, _, _| {})
+        .into_iter()
+        .map(Some)
+        .collect();
+    let lemmas = cited.and_then(|cited| lemmas_of(&jobs, &decided, &cited));
+    kinds::check_citing(claim, &lemmas, true)
 }
 
 fn text_name(f: &claims::ClaimFile) -> String {
@@ -180,7 +324,7 @@ pub fn explain(paths: &[PathBuf], id: &str, style: ExplainStyle) -> Result<Strin
 pub fn explain_files(files: &[claims::ClaimFile], id: &str, style: ExplainStyle) -> Result<String> {
     for f in files {
         if let Some(c) = f.claim.iter().find(|c| c.id == id) {
-            let checked = kinds::check_claim(c, true).map_err(|e| in_claim(f, id, e))?;
+            let checked = explained(files, c).map_err(|e| in_claim(f, id, e))?;
             let range_bound = scope::range_bound(c, checked.verdict);
             return Ok(report::explain_text(f, c, &checked, range_bound.as_deref(), style));
         }

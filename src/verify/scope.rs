@@ -112,6 +112,7 @@ fn attempt_equalities(goal: &Goal) -> Result<(), (usize, Error)> {
                 let step = Identity {
                     sides: Sides::Chain(pair.to_vec()),
                     certificates: goal.identity.certificates.clone(),
+                    induction: None,
                 };
                 attempt(&step).map_err(|e| (k, e))?;
             }
@@ -239,6 +240,7 @@ fn theorem_reason(id: &str, theorem: &Theorem) -> String {
             identity: Identity {
                 sides: Sides::Chain(chain),
                 certificates: Vec::new(),
+                induction: None,
             },
         };
         let used = objects_of(&goal);

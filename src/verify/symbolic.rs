@@ -35,8 +35,11 @@ use super::claims::{Decls, Identity, IntRange};
 use super::context::Ctx;
 use super::expr::Expr;
 use super::hyper::{lin_neg, Aff, Term};
+use super::lemma::{self, Lemma, Obligation, Rewritten};
 use super::identity::check_identity;
 use super::pieces::{Domain, ZeroOutcome};
+
+mod induction;
 use super::poly::RatFunc;
 use super::recurrence;
 use super::translate::{prepare, Translator, UNIT};
@@ -51,6 +54,16 @@ pub const ARGUMENT: &[&str] = &[
     "class of similar terms cancelling is an exact identity of rational functions in all the symbols.",
     "A sum with a symbolic bound is evaluated by its WZ certificate R (G = R·F): the WZ equation, the",
     "telescoped ends and the base case are such identities, and induction on n gives the sum for every n.",
+];
+
+/// Why an induction suffices, as `--explain` prints it (before [`ARGUMENT`], which proves its
+/// base and its step).
+pub const INDUCTION_ARGUMENT: &[&str] = &[
+    "Induction on the variable named: the base is the claim at its first value, the library objects there",
+    "read by the base of their defining recursion; the step is the claim at r + 1 for every r in range,",
+    "the objects at r + 1 unfolded by one step of their recursion and those at r replaced by the claim at r",
+    "(the hypothesis, used only at r and only within the claim's ranges). Base and step are each proved",
+    "for every value of the other symbols as below, so the claim holds for every r.",
 ];
 
 /// How many values of each open range the evaluation cross-check covers.
@@ -88,18 +101,7 @@ pub fn closed_decls(decls: &Decls) -> Decls {
 
 /// The declarations with each open range closed after `extra` values past its first.
 fn closed_after(decls: &Decls, extra: i64) -> Decls {
-    let ranges = decls
-        .ranges
-        .iter()
-        .map(|r| IntRange {
-            to: Some(r.to.clone().unwrap_or_else(|| format!("({}) + {extra}", r.from))),
-            ..r.clone()
-        })
-        .collect();
-    Decls {
-        ranges,
-        ..decls.clone()
-    }
+    decls.closed_after(extra)
 }
 
 /// `p ≥ 0` for every integer point of the open ranges and every `t` in `[a, b]`: on each
@@ -207,8 +209,8 @@ pub fn nonneg_for_every(
 /// counterexample (in widening windows, within [`REFUTATION_COMBINATIONS`] and
 /// [`REFUTATION_TIME`], up to the first window that cannot be evaluated); without one the claim
 /// is an error with the reason and the extent of the search.
-pub fn check(id: &str, decls: &Decls, identity: &Identity, detail: bool) -> Result<Checked> {
-    prove_for_every(id, decls, identity, detail).or_else(|reason| refute_in_search(id, decls, identity, reason))
+pub(crate) fn check(id: &str, decls: &Decls, identity: &Identity, lemmas: &[Lemma], detail: bool) -> Result<Checked> {
+    prove_for_every(id, decls, identity, lemmas, detail).or_else(|reason| refute_in_search(id, decls, identity, reason))
 }
 
 fn refute_in_search(id: &str, decls: &Decls, identity: &Identity, reason: Error) -> Result<Checked> {
@@ -265,7 +267,7 @@ fn refutation_windows(open: u32) -> Vec<i64> {
     w
 }
 
-fn prove_for_every(id: &str, decls: &Decls, identity: &Identity, detail: bool) -> Result<Checked> {
+fn prove_for_every(id: &str, decls: &Decls, identity: &Identity, lemmas: &[Lemma], detail: bool) -> Result<Checked> {
     let closed = closed_decls(decls);
     let evaluated = check_identity(id, &closed, &identity.sides.members(), false)?;
     if evaluated.verdict == Verdict::Fails {
@@ -273,7 +275,7 @@ fn prove_for_every(id: &str, decls: &Decls, identity: &Identity, detail: bool) -
         out.range = None;
         return Ok(out);
     }
-    let (cert, log) = prove_symbolic(id, decls, identity, &closed)?;
+    let (cert, log) = prove_symbolic(id, decls, identity, &closed, lemmas)?;
     let mut out = Checked::new(
         Verdict::Proved,
         format!(
@@ -282,7 +284,11 @@ fn prove_for_every(id: &str, decls: &Decls, identity: &Identity, detail: bool) -
             evaluated.verdict.as_str()
         ),
     );
-    out.method = Method::ForEvery;
+    out.method = if identity.induction.is_some() {
+        Method::Induction
+    } else {
+        Method::ForEvery
+    };
     if detail {
         out.steps = log;
     }
@@ -294,13 +300,22 @@ fn prove_for_every(id: &str, decls: &Decls, identity: &Identity, detail: bool) -
 /// No verdict comes from here: the caller only reports the outcome.
 pub(crate) fn attempt_for_every(id: &str, decls: &Decls, identity: &Identity) -> Result<String> {
     let closed = closed_decls(decls);
-    prove_symbolic(id, decls, identity, &closed).map(|(cert, _)| cert)
+    prove_symbolic(id, decls, identity, &closed, &[]).map(|(cert, _)| cert)
 }
 
 /// The symbolic proof of `identity` over the open ranges of `decls`, parsed in the context of
-/// `closed` (the same declarations over finite ranges): the certificate and the proof's log.
-fn prove_symbolic(id: &str, decls: &Decls, identity: &Identity, closed: &Decls) -> Result<(String, Vec<Step>)> {
-    let rs = &decls.ranges;
+/// `closed` (the same declarations over finite ranges), the library objects read through
+/// `lemmas`: the certificate and the proof's log.
+fn prove_symbolic(
+    id: &str,
+    decls: &Decls,
+    identity: &Identity,
+    closed: &Decls,
+    lemmas: &[Lemma],
+) -> Result<(String, Vec<Step>)> {
+    if let Some(var) = &identity.induction {
+        return induction::prove(id, decls, identity, var, lemmas);
+    }
     let ctx = Ctx::new(id, closed, Vec::new())?;
     let sides: Vec<Expr> = identity
         .sides
@@ -308,15 +323,69 @@ fn prove_symbolic(id: &str, decls: &Decls, identity: &Identity, closed: &Decls) 
         .iter()
         .map(|s| ctx.expr(s))
         .collect::<Result<_>>()?;
-    let (certs, sym, conts) = prepare(&identity.certificates, &ctx, &sides)?;
+    let rewritten = lemma::apply(&sides, decls, lemmas)?;
+    prove_sides(decls, &ctx, rewritten, &identity.certificates)
+}
+
+/// Each condition of `obligations` shown on `dom` (with the bounds of the sums around it).
+fn check_obligations(tr: &mut Translator<'_>, dom: &Domain, obligations: &[Obligation]) -> Result<()> {
+    for o in obligations {
+        let mut d = dom.clone();
+        for (v, lo, hi) in &o.sums {
+            let var = Aff::var(v);
+            d = d.with(var.minus(&tr.affine(lo)?)).with(tr.affine(hi)?.minus(&var));
+        }
+        let holds = tr.affine(&o.condition).is_ok_and(|c| d.implies_ge(&c));
+        if !holds {
+            return Err(Error::Domain(format!(
+                "{}: cannot show {} ≥ 0 there (a lemma or definition applies only in its ranges)",
+                o.what, o.condition
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// The equalities of consecutive members, vectors component by component.
+fn component_pairs(sides: &[Expr]) -> Result<Vec<[Expr; 2]>> {
+    fn split(a: &Expr, b: &Expr, out: &mut Vec<[Expr; 2]>) -> Result<()> {
+        match (a, b) {
+            (Expr::Tuple(x), Expr::Tuple(y)) if x.len() == y.len() => {
+                x.iter().zip(y).try_for_each(|(p, q)| split(p, q, out))
+            }
+            (Expr::Tuple(_), _) | (_, Expr::Tuple(_)) => Err(Error::Domain(format!(
+                "'{a} = {b}': a vector equals only a vector of as many components"
+            ))),
+            _ => {
+                out.push([a.clone(), b.clone()]);
+                Ok(())
+            }
+        }
+    }
+    let mut out = Vec::new();
+    for pair in sides.windows(2) {
+        split(&pair[0], &pair[1], &mut out)?;
+    }
+    Ok(out)
+}
+
+/// The symbolic proof of the parsed `rewritten` sides over the open ranges of `decls`.
+fn prove_sides(decls: &Decls, ctx: &Ctx<'_>, rewritten: Rewritten, certificates: &[String]) -> Result<(String, Vec<Step>)> {
+    let rs = &decls.ranges;
+    let sides = rewritten.sides;
+    let (certs, sym, conts) = prepare(certificates, ctx, &sides)?;
     let mut tr = Translator::new(&sym, &certs);
-    let dom = tr.domain(decls, rs)?;
+    let mut dom = tr.domain(decls, rs)?;
+    for a in &rewritten.assumptions {
+        dom = dom.with(tr.affine(a)?);
+    }
+    check_obligations(&mut tr, &dom, &rewritten.obligations)?;
     let modes: Vec<bool> = if decls.polygon.is_some() {
         vec![false, true]
     } else {
         vec![false]
     };
-    for pair in sides.windows(2) {
+    for pair in &component_pairs(&sides)? {
         for &unit in &modes {
             tr.unit = unit;
             tr.next_cert = 0;
@@ -373,6 +442,15 @@ fn prove_symbolic(id: &str, decls: &Decls, identity: &Identity, closed: &Decls) 
     }
     if !tr.recurrences.is_empty() {
         cert.push_str(&format!("; {}", tr.recurrences.join("; ")));
+    }
+    if !rewritten.definitions.is_empty() {
+        cert.push_str(&format!("; objects read by their definitions: {}", rewritten.definitions.join("; ")));
+    }
+    if !rewritten.lemmas.is_empty() {
+        cert.push_str(&format!(
+            "; lemmas (proved for every value, each applied within its ranges): {}",
+            rewritten.lemmas.join(", ")
+        ));
     }
     Ok((cert, tr.log))
 }

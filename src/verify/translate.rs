@@ -49,6 +49,10 @@ fn sum_vars(e: &Expr, out: &mut Vec<String>) {
     }
 }
 
+/// The widest sum with constant bounds written out term by term before its control points
+/// are collapsed.
+const SHORT_SUM: i64 = 16;
+
 /// Translates expressions into sums of hypergeometric terms, evaluating symbolic sums by their
 /// certificates.
 pub struct Translator<'a> {
@@ -338,22 +342,31 @@ impl<'a> Translator<'a> {
                 let (a, b) = (self.aff(&args[0])?, self.aff(&args[1])?);
                 Ok(vec![self.binom(&a, &b)])
             }
-            ("__dB", 4) if expr::eval_int(&args[3], &Default::default()) == Ok(1) => {
-                // d/dg [C(n,i) g^i (1−g)^(n−i)] = C(n,i) (i g^(i−1) (1−g)^(n−i) − (n−i) g^i (1−g)^(n−i−1)),
-                // the product rule for rational functions (integer exponents).
+            ("__dB", 4) if matches!(expr::eval_int(&args[3], &Default::default()), Ok(1..=16)) => {
+                // The k-th derivative by g of C(n,i) g^i (1−g)^(n−i), by Leibniz's rule:
+                // C(n,i) Σ_a C(k,a) (i)_a g^(i−a) (−1)^(k−a) (n−i)_(k−a) (1−g)^(n−i−k+a), with the
+                // falling factorials (x)_m = x(x−1)…(x−m+1) (integer exponents throughout).
+                let k = expr::eval_int(&args[3], &Default::default()).expect("matched");
                 let (i, n) = (self.aff(&args[0])?, self.aff(&args[1])?);
                 let g = self.cont_polynomial(&args[2], e)?;
                 let h = one().sub(&g);
-                let mk = |s: &Self, ei: &Aff, eh: &Aff, c: RatFunc| -> Result<Term> {
-                    let mut t = s.binom(&n, &i);
-                    t.coef = c;
-                    t.pows = power_of(s.sym, &g.num, ei)?;
-                    t.pows.extend(power_of(s.sym, &h.num, eh)?);
-                    Ok(t)
+                let falling = |x: &Aff, m: i64| -> RatFunc {
+                    (0..m).fold(one(), |acc, q| acc.mul(&x.shifted(-q).to_rf(self.sym)))
                 };
-                let a = mk(self, &i.shifted(-1), &n.minus(&i), i.to_rf(self.sym))?;
-                let b = mk(self, &i, &n.minus(&i).shifted(-1), n.minus(&i).to_rf(self.sym).neg())?;
-                Ok(vec![a, b])
+                let mut out = Vec::new();
+                for a in 0..=k {
+                    let sign = if (k - a) % 2 == 0 { 1 } else { -1 };
+                    let binom_ka = (0..a).fold(1i64, |acc, q| acc * (k - q) / (q + 1));
+                    let c = RatFunc::from_int(sign * binom_ka)
+                        .mul(&falling(&i, a))
+                        .mul(&falling(&n.minus(&i), k - a));
+                    let mut t = self.binom(&n, &i);
+                    t.coef = c;
+                    t.pows = power_of(self.sym, &g.num, &i.shifted(-a))?;
+                    t.pows.extend(power_of(self.sym, &h.num, &n.minus(&i).shifted(a - k))?);
+                    out.push(t);
+                }
+                Ok(out)
             }
             ("__dpow", 3) if expr::eval_int(&args[2], &Default::default()) == Ok(1) => {
                 // d/dg g^e = e g^(e−1).
@@ -389,6 +402,16 @@ impl<'a> Translator<'a> {
         let (av, bv) = (self.aff(a)?, self.aff(b)?);
         let dk = d.with(Aff::var(v).minus(&av)).with(bv.minus(&Aff::var(v)));
         let body = self.lin(body, &dk)?;
+        let width = bv.minus(&av);
+        if width.is_const() && width.c <= SHORT_SUM {
+            // A short sum is written out before any control point collapses it: a sum around
+            // it (`Σ_j Σ_{i=0}^{1} b[j+i] …`) then still finds its control points.
+            let mut out = Vec::new();
+            for m in 0..=width.c {
+                out.extend(lin_subst(self.sym, &body, v, &av.shifted(m)));
+            }
+            return Ok(out);
+        }
         let mut resolved = Vec::new();
         let mut rest = Vec::new();
         for mut t in body {
@@ -409,7 +432,6 @@ impl<'a> Translator<'a> {
         if rest.is_empty() {
             return Ok(resolved);
         }
-        let width = bv.minus(&av);
         if width.is_const() {
             if width.c > 10_000 {
                 return Err(Error::TooLarge {
@@ -428,6 +450,7 @@ impl<'a> Translator<'a> {
             h.extend(lin_neg(&resolved));
             h
         });
+        let av = support_start(v, &av, &rest, d);
         let closed = self.wz(v, &av, &bv, rest, d, hint)?;
         resolved.extend(closed);
         Ok(resolved)
@@ -437,6 +460,9 @@ impl<'a> Translator<'a> {
     /// its value (`hint` when given, else the value at the least `n`).
     fn wz(&mut self, k: &str, a: &Aff, b: &Aff, f: Lin, d: &Domain, hint: Option<Lin>) -> Result<Lin> {
         let sym = self.sym;
+        // The same integer points with fewer constraints: a symbol of the upper bound bounded
+        // below twice (n ≥ 0 and n ≥ ĵ, with ĵ ≥ 0) keeps only the bound that implies the other.
+        let d = &without_redundant(d, |c| b.v.keys().any(|x| c.coef(x) != 0));
         let what = format!("Σ_{{{k}={a}}}^{{{b}}}");
         // The induction variable: coefficient 1 in the upper bound, bounded below only.
         let n = b
@@ -472,11 +498,26 @@ impl<'a> Translator<'a> {
         let mut direct = String::new();
         let (f, rhs, value) = match hint {
             Some(h) if h.len() == 1 && h[0].mentions(sym, &n) => {
-                let start = telescope::induction_start(sym, &h[0], &n, &n0, &what)?;
+                // On the unit polygon a control point's factor is 1 once its delta is resolved:
+                // the sum and its one-term value, of the same degree in the control points, are
+                // divided as numbers.
+                let same_degree = h[0].deltas.is_empty()
+                    && h[0].bdeg > 0
+                    && f.iter().all(|t| t.deltas.is_empty() && t.bdeg == h[0].bdeg);
+                let numbers = |l: &[Term]| -> Lin {
+                    l.iter()
+                        .map(|t| Term {
+                            bdeg: 0,
+                            ..t.clone()
+                        })
+                        .collect()
+                };
+                let (f, hn) = if same_degree { (numbers(&f), numbers(&h)) } else { (f, h.clone()) };
+                let start = telescope::induction_start(sym, &hn[0], &n, &n0, &what)?;
                 for m in 0..start.minus(&n0).c {
                     let at = n0.shifted(m);
                     let mut case = telescope::finite_sum(sym, &f, (k, a, b), (&n, &at), &what)?;
-                    case.extend(lin_neg(&lin_subst(sym, &h, &n, &at)));
+                    case.extend(lin_neg(&lin_subst(sym, &hn, &n, &at)));
                     self.expect_zero(
                         &case,
                         &rest,
@@ -488,7 +529,7 @@ impl<'a> Translator<'a> {
                     d_ind = rest.with(Aff::var(&n).minus(&start));
                     n0 = start;
                 }
-                let r = h[0].recip(sym)?;
+                let r = hn[0].recip(sym)?;
                 (lin_mul(&f, &[r])?, vec![Term::scalar(RatFunc::from_int(1))], Some(h))
             }
             Some(h) => (f, h.clone(), Some(h)),
@@ -691,6 +732,41 @@ impl<'a> Translator<'a> {
         }
         Ok(out)
     }
+}
+
+/// The first index where a sum's terms can be nonzero: `X` when every term has the support
+/// condition `v − X ≥ 0` (so is zero below `X`) and `X ≥ a` on the domain; else `a`.
+fn support_start(v: &str, a: &Aff, terms: &[Term], d: &Domain) -> Aff {
+    let Some(first) = terms.first() else {
+        return a.clone();
+    };
+    for s in first.support.iter().filter(|s| s.coef(v) == 1) {
+        let start = Aff::var(v).minus(s);
+        if start.coef(v) == 0 && terms.iter().all(|t| t.support.contains(s)) && d.implies_ge(&start.minus(a)) {
+            return start;
+        }
+    }
+    a.clone()
+}
+
+/// `d` without the constraints that `pick` selects and the others imply (the same integer
+/// points).
+fn without_redundant(d: &Domain, pick: impl Fn(&Aff) -> bool) -> Domain {
+    let mut cons = d.cons.clone();
+    let mut k = 0;
+    while k < cons.len() {
+        if pick(&cons[k]) {
+            let others = Domain {
+                cons: cons.iter().enumerate().filter(|(j, _)| *j != k).map(|(_, c)| c.clone()).collect(),
+            };
+            if others.implies_ge(&cons[k]) {
+                cons.remove(k);
+                continue;
+            }
+        }
+        k += 1;
+    }
+    Domain { cons }
 }
 
 fn flatten(e: &Expr, up: bool, out: &mut Vec<(Expr, bool)>) -> Result<()> {

@@ -1,0 +1,195 @@
+//! Lemmas (`uses`) and induction (`induction = "r"`): library objects proved for every n
+//! through their definitions, and false variants of every new form never proved.
+
+use casteljau::verify::claims::parse_file;
+use casteljau::verify::{prove_files, Verdict};
+use std::path::Path;
+
+/// One claim's TOML table over the polygon `b` of degree `n`, in the parameter `t`.
+fn claim(id: &str, ranges: &str, lhs: &str, rhs: &str, extra: &str) -> String {
+    format!(
+        "[[claim]]\nid = \"{id}\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\n{extra}\npolygon = {{ name = \"b\", degree = \"n\" }}\nfor = [{ranges}]\nvars = [\"t\"]\nlhs = \"{lhs}\"\nrhs = \"{rhs}\"\n"
+    )
+}
+
+const SCHEME_RANGES: &str = r#""n = 0..", "r = 0..=n", "i = 0..=n-r""#;
+const STEP_RANGES: &str = r#""n = 1..", "r = 1..=n", "i = 0..=n-r""#;
+
+/// The closed form of the scheme (9), by induction on r.
+fn scheme() -> String {
+    claim(
+        "scheme",
+        SCHEME_RANGES,
+        "b(i, r, t)",
+        "sum(j, 0, r, b[i+j]*B(j, r, t))",
+        "induction = \"r\"",
+    )
+}
+
+/// Every claim's verdict and certificate (or error), by id.
+fn verdicts(claims: &[String]) -> Vec<(String, Verdict, String)> {
+    let file = parse_file(&claims.join("\n"), Path::new("lemmas.toml")).expect("claims parse");
+    let report = prove_files(&[file], &mut |_, _, _| {}).expect("files are checked");
+    report
+        .outcomes
+        .into_iter()
+        .map(|o| (o.id, o.verdict, o.certificate))
+        .collect()
+}
+
+fn verdict_of(claims: &[String], id: &str) -> (Verdict, String) {
+    verdicts(claims)
+        .into_iter()
+        .find(|(i, _, _)| i == id)
+        .map(|(_, v, c)| (v, c))
+        .expect("the claim is reported")
+}
+
+#[test]
+fn the_scheme_is_proved_by_induction_and_its_lemma_proves_the_recursion() {
+    let rec = claim(
+        "rec",
+        STEP_RANGES,
+        "b(i, r, t)",
+        "(1 - t)*b(i, r-1, t) + t*b(i+1, r-1, t)",
+        "uses = [\"scheme\"]",
+    );
+    let out = verdicts(&[scheme(), rec]);
+    assert_eq!(out[0].1, Verdict::Proved, "{}", out[0].2);
+    assert!(out[0].2.starts_with("by induction on r from 0"), "{}", out[0].2);
+    assert!(out[0].2.contains("the claim at r its only hypothesis"), "{}", out[0].2);
+    assert_eq!(out[1].1, Verdict::Proved, "{}", out[1].2);
+    assert!(out[1].2.contains("lemmas (proved for every value, each applied within its ranges): scheme"));
+}
+
+#[test]
+fn the_evaluation_and_its_derivative_are_read_through_the_scheme() {
+    let derivative = claim(
+        "derivative",
+        r#""n = 1..""#,
+        "diff(b(t), t)",
+        "n*sum(j, 0, n-1, (b[j+1] - b[j])*B(j, n-1, t))",
+        "uses = [\"scheme\"]",
+    );
+    let second = claim(
+        "second",
+        r#""n = 2..""#,
+        "b''(t)",
+        "n*(n-1)*sum(j, 0, n-2, (b[j+2] - 2*b[j+1] + b[j])*B(j, n-2, t))",
+        "uses = [\"scheme\"]",
+    );
+    for id in ["derivative", "second"] {
+        let (v, c) = verdict_of(&[scheme(), derivative.clone(), second.clone()], id);
+        assert_eq!(v, Verdict::Proved, "{id}: {c}");
+        assert!(c.contains("b(g) = b(0, n, g), the last point of the scheme (9)"), "{c}");
+    }
+}
+
+#[test]
+fn false_variants_are_never_proved() {
+    let false_claims = [
+        // An index shifted by one, in the lemma or in a claim using it.
+        claim("shift", SCHEME_RANGES, "b(i, r, t)", "sum(j, 0, r, b[i+j+1]*B(j, r, t))", "induction = \"r\""),
+        claim(
+            "wrong-index",
+            STEP_RANGES,
+            "b(i, r, t)",
+            "(1 - t)*b(i, r-1, t) + t*b(i, r-1, t)",
+            "uses = [\"scheme\"]",
+        ),
+        // A wrong range end of a sum.
+        claim("sum-end", SCHEME_RANGES, "b(i, r, t)", "sum(j, 0, r-1, b[i+j]*B(j, r, t))", "induction = \"r\""),
+        // A false derivative (the factor n missing).
+        claim(
+            "no-factor",
+            r#""n = 1..""#,
+            "diff(b(t), t)",
+            "sum(j, 0, n-1, (b[j+1] - b[j])*B(j, n-1, t))",
+            "uses = [\"scheme\"]",
+        ),
+        // An induction whose hypothesis would be needed at r + 1.
+        claim(
+            "next",
+            r#""n = 1..", "r = 0..=n-1", "i = 0..=n-r-1""#,
+            "b(i, r, t)",
+            "b(i, r+1, t)",
+            "induction = \"r\"",
+        ),
+    ];
+    let mut all = vec![scheme()];
+    all.extend(false_claims.iter().cloned());
+    for (id, v, c) in verdicts(&all).into_iter().skip(1) {
+        assert!(matches!(v, Verdict::Fails | Verdict::Error), "{id}: {v:?} {c}");
+    }
+}
+
+#[test]
+fn a_lemma_only_proved_in_a_range_proves_nothing_for_every_n() {
+    let in_range = claim(
+        "in-range",
+        r#""n = 0..=5", "r = 0..=n", "i = 0..=n-r""#,
+        "b(i, r, t)",
+        "sum(j, 0, r, b[i+j]*B(j, r, t))",
+        "",
+    );
+    let rec = claim(
+        "rec",
+        STEP_RANGES,
+        "b(i, r, t)",
+        "(1 - t)*b(i, r-1, t) + t*b(i+1, r-1, t)",
+        "uses = [\"in-range\"]",
+    );
+    let (v, c) = verdict_of(&[in_range, rec], "rec");
+    assert_eq!(v, Verdict::Error, "{c}");
+    assert!(c.contains("it cites in-range, which is proved_in_range"), "{c}");
+}
+
+#[test]
+fn cyclic_and_unknown_citations_are_errors_and_hide_no_other_verdict() {
+    let a = claim("a", SCHEME_RANGES, "b(i, r, t)", "sum(j, 0, r, b[i+j]*B(j, r, t))", "uses = [\"b\"]");
+    let b = claim("b", SCHEME_RANGES, "b(i, r, t)", "sum(j, 0, r, b[i+j]*B(j, r, t))", "uses = [\"a\"]");
+    let c = claim("c", SCHEME_RANGES, "b(i, r, t)", "sum(j, 0, r, b[i+j]*B(j, r, t))", "uses = [\"nowhere\"]");
+    let out = verdicts(&[a, b, c, scheme()]);
+    assert_eq!(out[0].1, Verdict::Error);
+    assert!(out[0].2.contains("the citations form a cycle: a → b → a"), "{}", out[0].2);
+    assert_eq!(out[1].1, Verdict::Error);
+    assert!(out[2].2.contains("it cites nowhere, which is not a claim"), "{}", out[2].2);
+    assert_eq!(out[3].1, Verdict::Proved);
+}
+
+#[test]
+fn a_lemma_applies_only_within_its_ranges() {
+    // True, but proved only for r < n: the recursion at r = n may not use it.
+    let narrow = claim(
+        "narrow",
+        r#""n = 1..", "r = 0..=n-1", "i = 0..=n-r""#,
+        "b(i, r, t)",
+        "sum(j, 0, r, b[i+j]*B(j, r, t))",
+        "induction = \"r\"",
+    );
+    let top = claim(
+        "top",
+        r#""n = 1..""#,
+        "b(0, n, t)",
+        "sum(j, 0, n, b[j]*B(j, n, t))",
+        "uses = [\"narrow\"]",
+    );
+    let out = verdicts(&[narrow, top]);
+    assert_eq!(out[0].1, Verdict::Proved, "{}", out[0].2);
+    assert_eq!(out[1].1, Verdict::Error, "{}", out[1].2);
+    assert!(out[1].2.contains("lemma narrow at b(0, n, t): cannot show"), "{}", out[1].2);
+}
+
+#[test]
+fn induction_on_the_polygons_degree_is_refused() {
+    let on_n = claim(
+        "on-n",
+        SCHEME_RANGES,
+        "b(i, r, t)",
+        "sum(j, 0, r, b[i+j]*B(j, r, t))",
+        "induction = \"n\"",
+    );
+    let (v, c) = verdict_of(&[on_n], "on-n");
+    assert_eq!(v, Verdict::Error);
+    assert!(c.contains("induction on n: it is the polygon's degree"), "{c}");
+}
