@@ -193,3 +193,83 @@ fn induction_on_the_polygons_degree_is_refused() {
     assert_eq!(v, Verdict::Error);
     assert!(c.contains("induction on n: it is the polygon's degree"), "{c}");
 }
+
+/// One claim's TOML table over the net `b` of degrees `m`, `n`.
+fn net_claim(id: &str, ranges: &str, lhs: &str, rhs: &str) -> String {
+    format!(
+        "[[claim]]\nid = \"{id}\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\nnet = {{ name = \"b\", degree = [\"m\", \"n\"] }}\nfor = [{ranges}]\nvars = [\"u\", \"v\"]\nlhs = \"{lhs}\"\nrhs = \"{rhs}\"\n"
+    )
+}
+
+#[test]
+fn surfaces_and_their_partials_are_proved_for_every_degree_on_the_unit_net() {
+    let claims = [
+        net_claim(
+            "twist",
+            r#""m = 1..", "n = 1..""#,
+            "b_uv(u, v)",
+            "m*n*sum(i, 0, m-1, sum(j, 0, n-1, (b[i+1,j+1] - b[i+1,j] - b[i,j+1] + b[i,j])*B(i, m-1, u)*B(j, n-1, v)))",
+        ),
+        net_claim(
+            "corners",
+            r#""m = 0..", "n = 0..""#,
+            "(b(0, 0), b(1, 0), b(0, 1), b(1, 1))",
+            "(b[0,0], b[m,0], b[0,n], b[m,n])",
+        ),
+        net_claim(
+            "corner-twist",
+            r#""m = 1..", "n = 1..""#,
+            "b_uv(1, 0)",
+            "m*n*(b[m,1] - b[m,0] - b[m-1,1] + b[m-1,0])",
+        ),
+    ];
+    for (id, v, c) in verdicts(&claims) {
+        assert_eq!(v, Verdict::Proved, "{id}: {c}");
+        assert!(c.contains("the zero net and the unit net"), "{c}");
+    }
+}
+
+#[test]
+fn false_surface_claims_are_never_proved() {
+    let claims = [
+        // The twist with a wrong sign, a missing factor, a shifted index, a wrong corner.
+        net_claim(
+            "sign",
+            r#""m = 1..", "n = 1..""#,
+            "b_uv(u, v)",
+            "m*n*sum(i, 0, m-1, sum(j, 0, n-1, (b[i+1,j+1] - b[i+1,j] + b[i,j+1] - b[i,j])*B(i, m-1, u)*B(j, n-1, v)))",
+        ),
+        net_claim(
+            "factor",
+            r#""m = 1..", "n = 1..""#,
+            "b_uv(u, v)",
+            "m*sum(i, 0, m-1, sum(j, 0, n-1, (b[i+1,j+1] - b[i+1,j] - b[i,j+1] + b[i,j])*B(i, m-1, u)*B(j, n-1, v)))",
+        ),
+        net_claim("corner", r#""m = 0..", "n = 0..""#, "b(1, 0)", "b[0,m]"),
+        net_claim("corner-shift", r#""m = 1..", "n = 1..""#, "b_u(0, 0)", "m*(b[1,1] - b[0,0])"),
+    ];
+    for (id, v, c) in verdicts(&claims) {
+        assert!(matches!(v, Verdict::Fails | Verdict::Error), "{id}: {v:?} {c}");
+    }
+}
+
+#[test]
+fn the_end_values_of_derivatives_are_read_without_powers_of_zero() {
+    let ends = claim(
+        "ends",
+        r#""n = 1..""#,
+        "(b'(0), b'(1))",
+        "(n*(b[1] - b[0]), n*(b[n] - b[n-1]))",
+        "uses = [\"scheme\"]",
+    );
+    let wrong = claim(
+        "wrong-end",
+        r#""n = 1..""#,
+        "b'(1)",
+        "n*(b[n] - b[n-2])",
+        "uses = [\"scheme\"]",
+    );
+    let out = verdicts(&[scheme(), ends, wrong]);
+    assert_eq!(out[1].1, Verdict::Proved, "{}", out[1].2);
+    assert!(matches!(out[2].1, Verdict::Fails | Verdict::Error), "{:?}", out[2]);
+}

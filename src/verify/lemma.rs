@@ -409,19 +409,26 @@ fn rename_polygon(e: &Expr, from: &str, to: &str) -> Expr {
 /// they are (the prover then says it cannot read them).
 pub(crate) fn apply(sides: &[Expr], decls: &Decls, lemmas: &[Lemma]) -> Result<Rewritten> {
     let mut out = Rewritten::default();
-    let Some(polygon) = &decls.polygon else {
-        out.sides = sides.to_vec();
-        return Ok(out);
+    let degree = match &decls.polygon {
+        Some(p) => Some(super::parse::parse(&p.degree, &[])?),
+        None => None,
     };
-    let degree = super::parse::parse(&polygon.degree, &[])?;
+    let net = match &decls.net {
+        Some(net) => Some((
+            net.name.as_str(),
+            super::parse::parse(&net.degree[0], &[])?,
+            super::parse::parse(&net.degree[1], &[])?,
+        )),
+        None => None,
+    };
     let mut avoid = Vec::new();
     for s in sides {
         names_in(s, &mut avoid);
     }
     avoid.extend(decls.ranges.iter().map(|r| r.var.clone()));
     let mut rw = Rewriter {
-        polygon: &polygon.name,
-        degree: &degree,
+        polygon: decls.polygon.as_ref().map(|p| p.name.as_str()).zip(degree.as_ref()),
+        net: net.as_ref().map(|(name, m, n)| (*name, m, n)),
         lemmas,
         avoid,
         out: &mut out,
@@ -435,8 +442,10 @@ pub(crate) fn apply(sides: &[Expr], decls: &Decls, lemmas: &[Lemma]) -> Result<R
 }
 
 struct Rewriter<'a> {
-    polygon: &'a str,
-    degree: &'a Expr,
+    /// The polygon's name and degree.
+    polygon: Option<(&'a str, &'a Expr)>,
+    /// The net's name and degrees.
+    net: Option<(&'a str, &'a Expr, &'a Expr)>,
     lemmas: &'a [Lemma],
     avoid: Vec<String>,
     out: &'a mut Rewritten,
@@ -467,7 +476,13 @@ impl Rewriter<'_> {
         if let Some(e) = err {
             return Err(e);
         }
-        let Some((object, args)) = Object::of(&inner, self.polygon) else {
+        if let Some(surface) = self.surface(&inner)? {
+            return Ok(surface);
+        }
+        let Some((polygon, degree)) = self.polygon else {
+            return Ok(inner);
+        };
+        let Some((object, args)) = Object::of(&inner, polygon) else {
             return Ok(inner);
         };
         if let Some(found) = self.by_lemma(object, &args, sums)? {
@@ -475,25 +490,21 @@ impl Rewriter<'_> {
         }
         match object {
             Object::Evaluation => {
-                self.definition(format!("{p}(g) = {p}(0, n, g), the last point of the scheme (9)", p = self.polygon));
-                let top = Object::Scheme.apply(self.polygon, vec![Expr::int(0), self.degree.clone(), args[0].clone()]);
+                self.definition(format!("{p}(g) = {p}(0, n, g), the last point of the scheme (9)", p = polygon));
+                let top = Object::Scheme.apply(polygon, vec![Expr::int(0), degree.clone(), args[0].clone()]);
                 self.expr(&top, sums, depth + 1)
             }
             Object::Derivative(k) => {
                 // The k-th derivative of b(x) at x = g: the formula of b(x), differentiated.
-                let x = (1..)
-                    .map(|m| format!("x{m}"))
-                    .find(|n| !self.avoid.contains(n))
-                    .expect("a fresh name");
-                self.avoid.push(x.clone());
-                let curve = Object::Evaluation.apply(self.polygon, vec![Expr::Var(x.clone())]);
+                let x = self.fresh("x");
+                let curve = Object::Evaluation.apply(polygon, vec![Expr::Var(x.clone())]);
                 let formula = self.expr(&curve, sums, depth + 1)?;
-                if Object::of(&formula, self.polygon).is_some() {
+                if Object::of(&formula, polygon).is_some() {
                     return Ok(inner);
                 }
                 self.definition(format!(
                     "{p}{primes}(g) = d{k}/dx{k} {p}(x) at x = g",
-                    p = self.polygon,
+                    p = polygon,
                     primes = "'".repeat(k),
                     k = if k == 1 { String::new() } else { format!("^{k}") }
                 ));
@@ -511,15 +522,67 @@ impl Rewriter<'_> {
         self.out.read(text);
     }
 
+    /// A name used nowhere yet.
+    fn fresh(&mut self, stem: &str) -> String {
+        let name = (1..)
+            .map(|m| format!("{stem}{m}"))
+            .find(|n| !self.avoid.contains(n))
+            .expect("a fresh name");
+        self.avoid.push(name.clone());
+        name
+    }
+
+    /// The net's surface `b(g, h)` or a partial `b_uv(g, h)` by text 003's definition of the
+    /// tensor-product surface, `b(u, v) = Σ_i Σ_j b[i, j] B(i, m, u) B(j, n, v)`, differentiated
+    /// (`None` for any other expression).
+    fn surface(&mut self, e: &Expr) -> Result<Option<Expr>> {
+        let (Some((net, m, n)), Expr::Call(name, args)) = (self.net, e) else {
+            return Ok(None);
+        };
+        let (ku, kv) = match super::rewrite::split_partial(name) {
+            Some((base, ku, kv)) if base == net => (ku, kv),
+            _ if name == net => (0, 0),
+            _ => return Ok(None),
+        };
+        if args.len() != 2 {
+            return Ok(None);
+        }
+        let (x, y, i, j) = (self.fresh("x"), self.fresh("y"), self.fresh("i"), self.fresh("j"));
+        let var = |v: &String| Expr::Var(v.clone());
+        let term = Expr::mul(
+            Expr::mul(
+                Expr::Index(net.into(), vec![var(&i), var(&j)]),
+                Expr::Call("B".into(), vec![var(&i), m.clone(), var(&x)]),
+            ),
+            Expr::Call("B".into(), vec![var(&j), n.clone(), var(&y)]),
+        );
+        let inner = Expr::Sum(j.clone(), Box::new(Expr::int(0)), Box::new(n.clone()), Box::new(term));
+        let mut d = Expr::Sum(i, Box::new(Expr::int(0)), Box::new(m.clone()), Box::new(inner));
+        for _ in 0..ku {
+            d = derive(&d, &x)?;
+        }
+        for _ in 0..kv {
+            d = derive(&d, &y)?;
+        }
+        self.definition(format!(
+            "{net}(u, v) = Σ_i Σ_j {net}[i, j] B_i^m(u) B_j^n(v), the tensor-product surface as text 003 defines it{}",
+            if ku + kv > 0 { " (its partials by differentiating)" } else { "" }
+        ));
+        Ok(Some(substitute(&d, &[x, y], &[args[0].clone(), args[1].clone()])))
+    }
+
     /// The first lemma for `object` that matches `args`: its formula, with its conditions
     /// recorded as obligations.
     fn by_lemma(&mut self, object: Object, args: &[Expr], sums: &[(String, Expr, Expr)]) -> Result<Option<Expr>> {
+        let Some((polygon, degree)) = self.polygon else {
+            return Ok(None);
+        };
         for lemma in self.lemmas.iter().filter(|l| l.object == object) {
-            let Some((formula, conditions)) = lemma.at(args, self.polygon, self.degree, &self.avoid) else {
+            let Some((formula, conditions)) = lemma.at(args, polygon, degree, &self.avoid) else {
                 continue;
             };
             names_in(&formula, &mut self.avoid);
-            let site = object.apply(self.polygon, args.to_vec());
+            let site = object.apply(polygon, args.to_vec());
             for condition in conditions {
                 self.out.obligations.push(Obligation {
                     condition,

@@ -42,7 +42,7 @@ use super::pieces::{Domain, ZeroOutcome};
 mod induction;
 use super::poly::RatFunc;
 use super::recurrence;
-use super::translate::{prepare, Translator, UNIT};
+use super::translate::{prepare, Translator, UNIT, UNIT2};
 use crate::error::{Error, Result};
 use std::time::{Duration, Instant};
 
@@ -380,7 +380,7 @@ fn prove_sides(decls: &Decls, ctx: &Ctx<'_>, rewritten: Rewritten, certificates:
         dom = dom.with(tr.affine(a)?);
     }
     check_obligations(&mut tr, &dom, &rewritten.obligations)?;
-    let modes: Vec<bool> = if decls.polygon.is_some() {
+    let modes: Vec<bool> = if decls.polygon.is_some() || decls.net.is_some() {
         vec![false, true]
     } else {
         vec![false]
@@ -392,12 +392,20 @@ fn prove_sides(decls: &Decls, ctx: &Ctx<'_>, rewritten: Rewritten, certificates:
             tr.used.clear();
             tr.recurrences.clear();
             let mut d = dom.clone();
-            if unit {
+            if let (true, Some((name, m, n))) = (unit, tr.net.clone()) {
+                let (i, j) = (Aff::var(UNIT), Aff::var(UNIT2));
+                d = d.with(i.clone()).with(m.minus(&i)).with(j.clone()).with(n.minus(&j));
+                tr.log.push(Step::label(format!(
+                    "the unit net {name}[{UNIT}, {UNIT2}] = 1 (others 0), for every 0 ≤ {UNIT} ≤ {m}, 0 ≤ {UNIT2} ≤ {n}:"
+                )));
+            } else if unit {
                 let (_, deg) = tr.polygon.clone().expect("polygon");
                 d = d.with(Aff::var(UNIT)).with(deg.minus(&Aff::var(UNIT)));
                 tr.log.push(Step::label(format!(
                     "the unit polygon b[{UNIT}] = 1 (others 0), for every 0 ≤ {UNIT} ≤ {deg}:"
                 )));
+            } else if decls.net.is_some() {
+                tr.log.push(Step::label("the zero net:"));
             } else if decls.polygon.is_some() {
                 tr.log.push(Step::label("the zero polygon:"));
             }
@@ -436,6 +444,9 @@ fn prove_sides(decls: &Decls, ctx: &Ctx<'_>, rewritten: Rewritten, certificates:
     );
     if decls.polygon.is_some() {
         cert.push_str("; affine in the control polygon: the zero polygon and the unit polygon at a symbolic index");
+    }
+    if decls.net.is_some() {
+        cert.push_str("; affine in the control net: the zero net and the unit net at a symbolic pair of indices");
     }
     if !tr.used.is_empty() {
         cert.push_str(&format!("; WZ certificates: {}", tr.used.join("; ")));

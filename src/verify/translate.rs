@@ -15,39 +15,18 @@ use super::{parse, rewrite};
 use crate::error::{Error, Result};
 use num_traits::Zero;
 
+mod bounds;
+mod setup;
+
+use bounds::{end_point, support_start, without_redundant};
+pub(crate) use setup::prepare;
+
 /// The name of the symbolic index of the unit control polygon.
 pub(crate) const UNIT: &str = "__j";
 
-fn sum_vars(e: &Expr, out: &mut Vec<String>) {
-    match e {
-        Expr::Sum(v, a, b, body) => {
-            if !out.contains(v) {
-                out.push(v.clone());
-            }
-            sum_vars(a, out);
-            sum_vars(b, out);
-            sum_vars(body, out);
-        }
-        Expr::Neg(a) | Expr::Fact(a) => sum_vars(a, out),
-        Expr::Bin(_, a, b) => {
-            sum_vars(a, out);
-            sum_vars(b, out);
-        }
-        Expr::Call(_, args) | Expr::Index(_, args) | Expr::Tuple(args) => {
-            for a in args {
-                sum_vars(a, out);
-            }
-        }
-        Expr::Matrix(rows) => {
-            for r in rows {
-                for a in r {
-                    sum_vars(a, out);
-                }
-            }
-        }
-        Expr::Num(_) | Expr::Var(_) => {}
-    }
-}
+/// The second index of the unit net `b[__j, __k] = 1`.
+pub(crate) const UNIT2: &str = "__k";
+
 
 /// The widest sum with constant bounds written out term by term before its control points
 /// are collapsed.
@@ -59,6 +38,8 @@ pub struct Translator<'a> {
     sym: &'a Symbols,
     /// The symbolic polygon's name and degree.
     pub(crate) polygon: Option<(String, Aff)>,
+    /// The symbolic net's name and degrees.
+    pub(crate) net: Option<(String, Aff, Aff)>,
     /// Whether control points are the unit polygon at [`UNIT`] (else the zero polygon).
     pub(crate) unit: bool,
     certs: &'a [Expr],
@@ -77,6 +58,7 @@ impl<'a> Translator<'a> {
         Translator {
             sym,
             polygon: None,
+            net: None,
             unit: false,
             certs,
             next_cert: 0,
@@ -157,6 +139,24 @@ impl<'a> Translator<'a> {
             return Err(Error::Domain(format!("'{whole}': the argument must be a polynomial")));
         };
         RatFunc::poly(g.num.clone()).div(&RatFunc::from_rat(&c))
+    }
+
+    /// The `k`-th derivative of `B(i, n, g)` at `g = 0` (`end` false) or `g = 1` (`end` true):
+    /// `(n)_k (−1)^(k−i) C(k, i)`, or `(n)_k (−1)^(n−i) C(k, n−i)` — of Leibniz's terms only
+    /// the one without a power of `g` (of `1 − g`) survives there, and `(n)_k = n(n−1)…(n−k+1)`
+    /// is zero when `k > n`, as the derivative of a polynomial of degree `n` is. (A power
+    /// `0^i` with a symbolic exponent never arises.)
+    fn at_end(&mut self, i: &Aff, n: &Aff, end: bool, k: i64) -> Result<Lin> {
+        let falling = (0..k).fold(RatFunc::from_int(1), |acc, q| acc.mul(&n.shifted(-q).to_rf(self.sym)));
+        let order = Aff::constant(k);
+        let (sign, low) = if end {
+            (n.minus(i), n.minus(i))
+        } else {
+            (order.minus(i), i.clone())
+        };
+        let mut t = self.binom(&order, &low);
+        t.coef = t.coef.mul(&falling);
+        lin_mul(&[t], &[self.powers(&Expr::int(-1), &sign)?])
     }
 
     fn powers(&mut self, base: &Expr, e: &Aff) -> Result<Term> {
@@ -300,6 +300,22 @@ impl<'a> Translator<'a> {
             }
             Expr::Call(name, args) => self.call(e, name, args, d)?,
             Expr::Sum(v, a, b, body) => self.sum(v, a, b, body, d, hint)?,
+            Expr::Index(name, args) if self.net.as_ref().is_some_and(|(net, _, _)| net == name) => {
+                let (_, m, n) = self.net.clone().expect("matched");
+                if args.len() != 2 {
+                    return Err(Error::Domain(format!("'{e}' is not a control point b[i, j] of the net {name}")));
+                }
+                if !self.unit {
+                    return Ok(Vec::new());
+                }
+                let (i, j) = (self.aff(&args[0])?, self.aff(&args[1])?);
+                let mut t = Term::scalar(RatFunc::from_int(1));
+                t.deltas.push(i.minus(&Aff::var(UNIT)));
+                t.deltas.push(j.minus(&Aff::var(UNIT2)));
+                t.support = vec![i.clone(), m.minus(&i), j.clone(), n.minus(&j)];
+                t.bdeg = 1;
+                vec![t]
+            }
             Expr::Index(name, args) => {
                 let Some((pname, deg)) = self.polygon.clone() else {
                     return Err(Error::Domain(format!("'{e}': no symbolic polygon named {name}")));
@@ -333,6 +349,9 @@ impl<'a> Translator<'a> {
             ("B", 3) => {
                 let (i, n) = (self.aff(&args[0])?, self.aff(&args[1])?);
                 let g = self.cont_polynomial(&args[2], e)?;
+                if let Some(end) = end_point(&g) {
+                    return self.at_end(&i, &n, end, 0);
+                }
                 let mut t = self.binom(&n, &i);
                 t.pows = power_of(self.sym, &g.num, &i)?;
                 t.pows.extend(power_of(self.sym, &one().sub(&g).num, &n.minus(&i))?);
@@ -349,6 +368,9 @@ impl<'a> Translator<'a> {
                 let k = expr::eval_int(&args[3], &Default::default()).expect("matched");
                 let (i, n) = (self.aff(&args[0])?, self.aff(&args[1])?);
                 let g = self.cont_polynomial(&args[2], e)?;
+                if let Some(end) = end_point(&g) {
+                    return self.at_end(&i, &n, end, k);
+                }
                 let h = one().sub(&g);
                 let falling = |x: &Aff, m: i64| -> RatFunc {
                     (0..m).fold(one(), |acc, q| acc.mul(&x.shifted(-q).to_rf(self.sym)))
@@ -734,41 +756,6 @@ impl<'a> Translator<'a> {
     }
 }
 
-/// The first index where a sum's terms can be nonzero: `X` when every term has the support
-/// condition `v − X ≥ 0` (so is zero below `X`) and `X ≥ a` on the domain; else `a`.
-fn support_start(v: &str, a: &Aff, terms: &[Term], d: &Domain) -> Aff {
-    let Some(first) = terms.first() else {
-        return a.clone();
-    };
-    for s in first.support.iter().filter(|s| s.coef(v) == 1) {
-        let start = Aff::var(v).minus(s);
-        if start.coef(v) == 0 && terms.iter().all(|t| t.support.contains(s)) && d.implies_ge(&start.minus(a)) {
-            return start;
-        }
-    }
-    a.clone()
-}
-
-/// `d` without the constraints that `pick` selects and the others imply (the same integer
-/// points).
-fn without_redundant(d: &Domain, pick: impl Fn(&Aff) -> bool) -> Domain {
-    let mut cons = d.cons.clone();
-    let mut k = 0;
-    while k < cons.len() {
-        if pick(&cons[k]) {
-            let others = Domain {
-                cons: cons.iter().enumerate().filter(|(j, _)| *j != k).map(|(_, c)| c.clone()).collect(),
-            };
-            if others.implies_ge(&cons[k]) {
-                cons.remove(k);
-                continue;
-            }
-        }
-        k += 1;
-    }
-    Domain { cons }
-}
-
 fn flatten(e: &Expr, up: bool, out: &mut Vec<(Expr, bool)>) -> Result<()> {
     match e {
         Expr::Bin(Op::Mul, a, b) => {
@@ -802,72 +789,4 @@ fn show(l: &[Term]) -> String {
         return "0".into();
     }
     l.iter().map(Term::show).collect::<Vec<_>>().join(" + ")
-}
-
-/// The certificates, the symbol list (integers: ranges, summation variables, the unit index)
-/// and the continuous parameters of a claim with open ranges.
-pub(crate) fn prepare(
-    certificates: &[String],
-    ctx: &Ctx<'_>,
-    sides: &[Expr],
-) -> Result<(Vec<Expr>, Symbols, Vec<String>)> {
-    let rs = &ctx.decls.ranges;
-    let certs: Vec<Expr> = certificates
-        .iter()
-        .map(|c| parse::parse(c, &ctx.known).and_then(|e| rewrite::expand(&e, &ctx.defs)))
-        .collect::<Result<_>>()?;
-    let refs: Vec<&Expr> = sides.iter().chain(&certs).collect();
-    let mut ints: Vec<String> = rs.iter().map(|r| r.var.clone()).collect();
-    for e in &refs {
-        let mut found = Vec::new();
-        sum_vars(e, &mut found);
-        for v in found {
-            if ints.contains(&v) {
-                if rs.iter().any(|r| r.var == v) {
-                    return Err(Error::Domain(format!(
-                        "the summation variable {v} shadows a range variable"
-                    )));
-                }
-            } else {
-                ints.push(v);
-            }
-        }
-    }
-    if ctx.decls.polygon.is_some() {
-        ints.push(UNIT.into());
-    }
-    let conts: Vec<String> = ctx
-        .params(&refs[..sides.len()])
-        .into_iter()
-        .filter(|v| !ints.contains(v))
-        .collect();
-    // The variables of integration are parameters of the integrands only.
-    let mut all = conts.clone();
-    for e in &refs {
-        super::beta::integral_vars(e, &mut all);
-    }
-    let all: Vec<String> = all.into_iter().filter(|v| !ints.contains(v)).collect();
-    let sym = Symbols::new(&ints, &all);
-    Ok((certs, sym, conts))
-}
-
-impl Translator<'_> {
-    /// The domain of the ranges (and records the polygon).
-    pub(crate) fn domain(&mut self, decls: &Decls, rs: &[IntRange]) -> Result<Domain> {
-        let mut dom = Domain::default();
-        for r in rs {
-            let v = Aff::var(&r.var);
-            let from = self.aff(&parse::parse(&r.from, &[])?)?;
-            dom = dom.with(v.minus(&from));
-            if let Some(to) = &r.to {
-                let to = self.aff(&parse::parse(to, &[])?)?;
-                dom = dom.with(to.minus(&v));
-            }
-        }
-        if let Some(p) = &decls.polygon {
-            let deg = self.aff(&parse::parse(&p.degree, &[])?)?;
-            self.polygon = Some((p.name.clone(), deg));
-        }
-        Ok(dom)
-    }
 }

@@ -1,0 +1,56 @@
+//! Facts about a sum's range used before its evaluation: where its terms start, a domain
+//! without redundant bounds, and the ends of the parameter interval.
+
+use super::super::hyper::{Aff, Term};
+use super::super::pieces::Domain;
+use super::super::poly::RatFunc;
+use num_traits::{CheckedDiv, One, Zero};
+
+/// Whether the polynomial `g` is the end `0` (`Some(false)`) or `1` (`Some(true)`) of the
+/// parameter interval.
+pub(super) fn end_point(g: &RatFunc) -> Option<bool> {
+    let c = g.num.as_constant()?.checked_div(&g.den.as_constant()?)?;
+    if c.is_zero() {
+        Some(false)
+    } else if c.is_one() {
+        Some(true)
+    } else {
+        None
+    }
+}
+
+/// The first index where a sum's terms can be nonzero: `X` when every term has the support
+/// condition `v − X ≥ 0` (so is zero below `X`) and `X ≥ a` on the domain; else `a`.
+pub(super) fn support_start(v: &str, a: &Aff, terms: &[Term], d: &Domain) -> Aff {
+    let Some(first) = terms.first() else {
+        return a.clone();
+    };
+    for s in first.support.iter().filter(|s| s.coef(v) == 1) {
+        let start = Aff::var(v).minus(s);
+        if start.coef(v) == 0 && terms.iter().all(|t| t.support.contains(s)) && d.implies_ge(&start.minus(a)) {
+            return start;
+        }
+    }
+    a.clone()
+}
+
+/// `d` without the constraints that `pick` selects and the others imply (the same integer
+/// points).
+pub(super) fn without_redundant(d: &Domain, pick: impl Fn(&Aff) -> bool) -> Domain {
+    let mut cons = d.cons.clone();
+    let mut k = 0;
+    while k < cons.len() {
+        if pick(&cons[k]) {
+            let others = Domain {
+                cons: cons.iter().enumerate().filter(|(j, _)| *j != k).map(|(_, c)| c.clone()).collect(),
+            };
+            if others.implies_ge(&cons[k]) {
+                cons.remove(k);
+                continue;
+            }
+        }
+        k += 1;
+    }
+    Domain { cons }
+}
+
