@@ -198,7 +198,7 @@ fn prove_reports_and_sets_the_status() {
         );
         assert_eq!(claim["range"].is_string(), verdict == "proved_in_range", "{claim}");
     }
-    assert_eq!(report["summary"]["proved_in_range"].as_u64(), Some(37));
+    assert_eq!(report["summary"]["proved_in_range"].as_u64(), Some(21));
     // progress goes to stderr only on a terminal, never into a piped run
     assert!(out.stderr.is_empty());
 
@@ -470,7 +470,7 @@ fn prove_without_a_checkout_uses_the_builtin_claims() {
     );
     let here = ok(&["prove"]);
     assert_eq!(String::from_utf8(anywhere.stdout).unwrap(), here);
-    assert!(here.contains("total                           149"), "{here}");
+    assert!(here.contains("total                           155"), "{here}");
     let explained = run(&["prove", "--explain", "004-8"]);
     assert!(String::from_utf8_lossy(&explained.stdout).contains("correction: 004-8-corrected"));
     // a path that is not there is an error, never a silent fallback to the built-in claims

@@ -27,7 +27,7 @@ fn every_claim_has_a_reason_and_a_worked_case() {
         .iter()
         .flat_map(|f| f.claim.iter().map(move |c| (f, c.id.clone())))
         .collect();
-    assert_eq!(claims.len(), 149);
+    assert_eq!(claims.len(), 155);
     claims.par_iter().for_each(|(_, id)| {
         let text = explain_files(&files, id, ExplainStyle::Short).unwrap();
         let (_, why) = section(&text, "why this suffices:");

@@ -59,7 +59,9 @@ fn the_scheme_is_proved_by_induction_and_its_lemma_proves_the_recursion() {
     assert!(out[0].2.starts_with("by induction on r from 0"), "{}", out[0].2);
     assert!(out[0].2.contains("the claim at r its only hypothesis"), "{}", out[0].2);
     assert_eq!(out[1].1, Verdict::Proved, "{}", out[1].2);
-    assert!(out[1].2.contains("lemmas (proved for every value, each applied within its ranges): scheme"));
+    assert!(out[1]
+        .2
+        .contains("lemmas (proved for every value, each applied within its ranges): scheme"));
 }
 
 #[test]
@@ -89,7 +91,13 @@ fn the_evaluation_and_its_derivative_are_read_through_the_scheme() {
 fn false_variants_are_never_proved() {
     let false_claims = [
         // An index shifted by one, in the lemma or in a claim using it.
-        claim("shift", SCHEME_RANGES, "b(i, r, t)", "sum(j, 0, r, b[i+j+1]*B(j, r, t))", "induction = \"r\""),
+        claim(
+            "shift",
+            SCHEME_RANGES,
+            "b(i, r, t)",
+            "sum(j, 0, r, b[i+j+1]*B(j, r, t))",
+            "induction = \"r\"",
+        ),
         claim(
             "wrong-index",
             STEP_RANGES,
@@ -98,7 +106,13 @@ fn false_variants_are_never_proved() {
             "uses = [\"scheme\"]",
         ),
         // A wrong range end of a sum.
-        claim("sum-end", SCHEME_RANGES, "b(i, r, t)", "sum(j, 0, r-1, b[i+j]*B(j, r, t))", "induction = \"r\""),
+        claim(
+            "sum-end",
+            SCHEME_RANGES,
+            "b(i, r, t)",
+            "sum(j, 0, r-1, b[i+j]*B(j, r, t))",
+            "induction = \"r\"",
+        ),
         // A false derivative (the factor n missing).
         claim(
             "no-factor",
@@ -146,14 +160,40 @@ fn a_lemma_only_proved_in_a_range_proves_nothing_for_every_n() {
 
 #[test]
 fn cyclic_and_unknown_citations_are_errors_and_hide_no_other_verdict() {
-    let a = claim("a", SCHEME_RANGES, "b(i, r, t)", "sum(j, 0, r, b[i+j]*B(j, r, t))", "uses = [\"b\"]");
-    let b = claim("b", SCHEME_RANGES, "b(i, r, t)", "sum(j, 0, r, b[i+j]*B(j, r, t))", "uses = [\"a\"]");
-    let c = claim("c", SCHEME_RANGES, "b(i, r, t)", "sum(j, 0, r, b[i+j]*B(j, r, t))", "uses = [\"nowhere\"]");
+    let a = claim(
+        "a",
+        SCHEME_RANGES,
+        "b(i, r, t)",
+        "sum(j, 0, r, b[i+j]*B(j, r, t))",
+        "uses = [\"b\"]",
+    );
+    let b = claim(
+        "b",
+        SCHEME_RANGES,
+        "b(i, r, t)",
+        "sum(j, 0, r, b[i+j]*B(j, r, t))",
+        "uses = [\"a\"]",
+    );
+    let c = claim(
+        "c",
+        SCHEME_RANGES,
+        "b(i, r, t)",
+        "sum(j, 0, r, b[i+j]*B(j, r, t))",
+        "uses = [\"nowhere\"]",
+    );
     let out = verdicts(&[a, b, c, scheme()]);
     assert_eq!(out[0].1, Verdict::Error);
-    assert!(out[0].2.contains("the citations form a cycle: a → b → a"), "{}", out[0].2);
+    assert!(
+        out[0].2.contains("the citations form a cycle: a → b → a"),
+        "{}",
+        out[0].2
+    );
     assert_eq!(out[1].1, Verdict::Error);
-    assert!(out[2].2.contains("it cites nowhere, which is not a claim"), "{}", out[2].2);
+    assert!(
+        out[2].2.contains("it cites nowhere, which is not a claim"),
+        "{}",
+        out[2].2
+    );
     assert_eq!(out[3].1, Verdict::Proved);
 }
 
@@ -177,7 +217,11 @@ fn a_lemma_applies_only_within_its_ranges() {
     let out = verdicts(&[narrow, top]);
     assert_eq!(out[0].1, Verdict::Proved, "{}", out[0].2);
     assert_eq!(out[1].1, Verdict::Error, "{}", out[1].2);
-    assert!(out[1].2.contains("lemma narrow at b(0, n, t): cannot show"), "{}", out[1].2);
+    assert!(
+        out[1].2.contains("lemma narrow at b(0, n, t): cannot show"),
+        "{}",
+        out[1].2
+    );
 }
 
 #[test]
@@ -246,7 +290,12 @@ fn false_surface_claims_are_never_proved() {
             "m*sum(i, 0, m-1, sum(j, 0, n-1, (b[i+1,j+1] - b[i+1,j] - b[i,j+1] + b[i,j])*B(i, m-1, u)*B(j, n-1, v)))",
         ),
         net_claim("corner", r#""m = 0..", "n = 0..""#, "b(1, 0)", "b[0,m]"),
-        net_claim("corner-shift", r#""m = 1..", "n = 1..""#, "b_u(0, 0)", "m*(b[1,1] - b[0,0])"),
+        net_claim(
+            "corner-shift",
+            r#""m = 1..", "n = 1..""#,
+            "b_u(0, 0)",
+            "m*(b[1,1] - b[0,0])",
+        ),
     ];
     for (id, v, c) in verdicts(&claims) {
         assert!(matches!(v, Verdict::Fails | Verdict::Error), "{id}: {v:?} {c}");

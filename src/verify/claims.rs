@@ -201,10 +201,7 @@ impl Decls {
                 ..r.clone()
             })
             .collect();
-        Decls {
-            ranges,
-            ..self.clone()
-        }
+        Decls { ranges, ..self.clone() }
     }
 
     /// Whether the claim is decided by symbolic expansion (it declares symbols or vectors).

@@ -306,7 +306,11 @@ impl Lemma {
         }
         let formula = fresh_binders(&rename_polygon(&self.formula, &self.polygon, polygon), avoid);
         let formula = substitute(&formula, &params, &values);
-        let conditions = self.conditions.iter().map(|c| substitute(c, &params, &values)).collect();
+        let conditions = self
+            .conditions
+            .iter()
+            .map(|c| substitute(c, &params, &values))
+            .collect();
         Some((formula, conditions))
     }
 }
@@ -354,7 +358,10 @@ fn fresh_binders(e: &Expr, avoid: &[String]) -> Expr {
 fn rename_binders(e: &Expr, used: &mut Vec<String>) -> Expr {
     match e {
         Expr::Sum(v, a, b, body) => {
-            let fresh = (1..).map(|k| format!("{v}{k}")).find(|n| !used.contains(n)).expect("a fresh name");
+            let fresh = (1..)
+                .map(|k| format!("{v}{k}"))
+                .find(|n| !used.contains(n))
+                .expect("a fresh name");
             used.push(fresh.clone());
             let body = substitute(body, std::slice::from_ref(v), &[Expr::Var(fresh.clone())]);
             Expr::Sum(
@@ -490,7 +497,10 @@ impl Rewriter<'_> {
         }
         match object {
             Object::Evaluation => {
-                self.definition(format!("{p}(g) = {p}(0, n, g), the last point of the scheme (9)", p = polygon));
+                self.definition(format!(
+                    "{p}(g) = {p}(0, n, g), the last point of the scheme (9)",
+                    p = polygon
+                ));
                 let top = Object::Scheme.apply(polygon, vec![Expr::int(0), degree.clone(), args[0].clone()]);
                 self.expr(&top, sums, depth + 1)
             }
@@ -566,7 +576,11 @@ impl Rewriter<'_> {
         }
         self.definition(format!(
             "{net}(u, v) = Σ_i Σ_j {net}[i, j] B_i^m(u) B_j^n(v), the tensor-product surface as text 003 defines it{}",
-            if ku + kv > 0 { " (its partials by differentiating)" } else { "" }
+            if ku + kv > 0 {
+                " (its partials by differentiating)"
+            } else {
+                ""
+            }
         ));
         Ok(Some(substitute(&d, &[x, y], &[args[0].clone(), args[1].clone()])))
     }
@@ -627,7 +641,10 @@ fn unfold_in(
     out: &mut Rewritten,
 ) -> Result<Expr> {
     if let Expr::Sum(v, a, b, body) = e {
-        let (a, b) = (unfold_in(a, p, degree, how, sums, out)?, unfold_in(b, p, degree, how, sums, out)?);
+        let (a, b) = (
+            unfold_in(a, p, degree, how, sums, out)?,
+            unfold_in(b, p, degree, how, sums, out)?,
+        );
         sums.push((v.clone(), a.clone(), b.clone()));
         let body = unfold_in(body, p, degree, how, sums, out);
         sums.pop();
@@ -654,7 +671,10 @@ fn unfold_in(
     let unfolded = match how {
         Unfold::Base(lo) if args[k] == **lo => {
             let at = if object == Object::Scheme { &args[0] } else { &args[1] };
-            out.read(format!("{} at {lo}: {p}[…] (the base of its recursion)", object.phrase()));
+            out.read(format!(
+                "{} at {lo}: {p}[…] (the base of its recursion)",
+                object.phrase()
+            ));
             Expr::Index(p.into(), vec![at.clone()])
         }
         Unfold::Step(var) if args[k] == step_of(var) => {
@@ -677,7 +697,11 @@ fn unfold_in(
                     Expr::sub(right, here)
                 }
             };
-            out.read(format!("{} at {} by one step of its recursion", object.phrase(), args[k]));
+            out.read(format!(
+                "{} at {} by one step of its recursion",
+                object.phrase(),
+                args[k]
+            ));
             text
         }
         _ => return Ok(inner),

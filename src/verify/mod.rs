@@ -208,10 +208,7 @@ fn citation_rounds(jobs: &[Job<'_>]) -> Vec<Vec<(usize, Result<Vec<usize>>)>> {
     let mut rounds: Vec<Vec<(usize, Result<Vec<usize>>)>> = Vec::new();
     for (k, d) in depth.into_iter().enumerate() {
         let (r, cited) = match d.expect("every claim has a depth") {
-            Ok(r) => (
-                r,
-                Ok(jobs[k].1.uses.iter().filter_map(|id| index_of(id)).collect()),
-            ),
+            Ok(r) => (r, Ok(jobs[k].1.uses.iter().filter_map(|id| index_of(id)).collect())),
             Err(e) => (0, Err(Error::Domain(format!("claim {}: {e}", jobs[k].1.id)))),
         };
         if rounds.len() <= r {
@@ -223,11 +220,7 @@ fn citation_rounds(jobs: &[Job<'_>]) -> Vec<Vec<(usize, Result<Vec<usize>>)>> {
 }
 
 /// The lemmas of the cited claims, each proved for every value; otherwise why not.
-fn lemmas_of(
-    jobs: &[Job<'_>],
-    decided: &[Option<Checked>],
-    cited: &[usize],
-) -> Result<Vec<lemma::Lemma>> {
+fn lemmas_of(jobs: &[Job<'_>], decided: &[Option<Checked>], cited: &[usize]) -> Result<Vec<lemma::Lemma>> {
     cited
         .iter()
         .map(|&k| {
@@ -281,8 +274,17 @@ fn explained(files: &[claims::ClaimFile], claim: &claims::Claim) -> Result<Check
         }
         k += 1;
     }
-    let mut jobs: Vec<Job<'_>> = all.iter().copied().filter(|(_, c)| wanted.contains(&c.id.as_str())).collect();
-    jobs.push(all.iter().copied().find(|(_, c)| c.id == claim.id).expect("the claim is in its files"));
+    let mut jobs: Vec<Job<'_>> = all
+        .iter()
+        .copied()
+        .filter(|(_, c)| wanted.contains(&c.id.as_str()))
+        .collect();
+    jobs.push(
+        all.iter()
+            .copied()
+            .find(|(_, c)| c.id == claim.id)
+            .expect("the claim is in its files"),
+    );
     let rounds = citation_rounds(&jobs);
     let cited = rounds
         .iter()

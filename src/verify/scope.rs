@@ -47,24 +47,13 @@ fn reason(claim: &Claim) -> String {
     if decls.symbolic() {
         return "it expands symbols or vectors exactly, which the symbolic route does not take".into();
     }
-    if decls.net.is_some() || decls.surfaces.is_some() {
-        let objects = library_objects(&goal);
-        return format!(
-            "a surface: the symbolic route takes a control polygon `b[j]`, not a control net `b[i, j]`{}",
-            if objects.is_empty() {
-                String::new()
-            } else {
-                format!("; it also uses {}", listed(&objects))
-            }
-        );
-    }
-    if decls.curves.is_some() {
-        return "it uses concrete curves, evaluated per degree".into();
+    if decls.curves.is_some() || decls.surfaces.is_some() {
+        return "it uses concrete curves or surfaces, evaluated per degree".into();
     }
     let objects = library_objects(&goal);
     if !objects.is_empty() {
         return format!(
-            "uses {}: library code evaluated per degree, not a formula in n",
+            "uses {}: library code evaluated per degree, not a formula in n (a proof for every n reads a polygon's objects only through lemmas the claim cites, `uses`)",
             listed(&objects)
         );
     }
@@ -419,7 +408,6 @@ fn objects_in(decls: &Decls, e: &Expr, out: &mut Vec<(String, String)>) {
         }
     };
     let polygon = decls.polygon.as_ref().map(|p| p.name.as_str());
-    let net = decls.net.as_ref().map(|p| p.name.as_str());
     match e {
         Expr::Call(name, args) => {
             let base = name.trim_end_matches('\'');
@@ -433,8 +421,6 @@ fn objects_in(decls: &Decls, e: &Expr, out: &mut Vec<(String, String)>) {
                     ),
                     _ => add("the library object {}", format!("{name}(…)")),
                 }
-            } else if Some(base) == net {
-                add("the surface evaluation {}", format!("{name}(u, v)"));
             } else if name == "delta" {
                 add("the forward differences {}", name.clone());
             } else if let Some(what) = operation(name) {

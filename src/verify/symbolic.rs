@@ -35,8 +35,8 @@ use super::claims::{Decls, Identity, IntRange};
 use super::context::Ctx;
 use super::expr::Expr;
 use super::hyper::{lin_neg, Aff, Term};
-use super::lemma::{self, Lemma, Obligation, Rewritten};
 use super::identity::check_identity;
+use super::lemma::{self, Lemma, Obligation, Rewritten};
 use super::pieces::{Domain, ZeroOutcome};
 
 mod induction;
@@ -370,7 +370,12 @@ fn component_pairs(sides: &[Expr]) -> Result<Vec<[Expr; 2]>> {
 }
 
 /// The symbolic proof of the parsed `rewritten` sides over the open ranges of `decls`.
-fn prove_sides(decls: &Decls, ctx: &Ctx<'_>, rewritten: Rewritten, certificates: &[String]) -> Result<(String, Vec<Step>)> {
+fn prove_sides(
+    decls: &Decls,
+    ctx: &Ctx<'_>,
+    rewritten: Rewritten,
+    certificates: &[String],
+) -> Result<(String, Vec<Step>)> {
     let rs = &decls.ranges;
     let sides = rewritten.sides;
     let (certs, sym, conts) = prepare(certificates, ctx, &sides)?;
@@ -455,7 +460,10 @@ fn prove_sides(decls: &Decls, ctx: &Ctx<'_>, rewritten: Rewritten, certificates:
         cert.push_str(&format!("; {}", tr.recurrences.join("; ")));
     }
     if !rewritten.definitions.is_empty() {
-        cert.push_str(&format!("; objects read by their definitions: {}", rewritten.definitions.join("; ")));
+        cert.push_str(&format!(
+            "; objects read by their definitions: {}",
+            rewritten.definitions.join("; ")
+        ));
     }
     if !rewritten.lemmas.is_empty() {
         cert.push_str(&format!(

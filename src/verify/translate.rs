@@ -3,15 +3,12 @@
 //! closed form), for the symbolic route of [`super::symbolic`].
 
 use super::checked::Step;
-use super::claims::{Decls, IntRange};
-use super::context::Ctx;
 use super::eval::Alg;
 use super::expr::{self, Expr, Op};
 use super::hyper::{lin_mul, lin_neg, lin_subst, power_of, Aff, Lin, Symbols, Term};
 use super::pieces::{prove_zero, Domain, ZeroOutcome};
 use super::poly::RatFunc;
 use super::telescope::{self, cancel, Coefficients, SumShape};
-use super::{parse, rewrite};
 use crate::error::{Error, Result};
 use num_traits::Zero;
 
@@ -26,7 +23,6 @@ pub(crate) const UNIT: &str = "__j";
 
 /// The second index of the unit net `b[__j, __k] = 1`.
 pub(crate) const UNIT2: &str = "__k";
-
 
 /// The widest sum with constant bounds written out term by term before its control points
 /// are collapsed.
@@ -303,7 +299,9 @@ impl<'a> Translator<'a> {
             Expr::Index(name, args) if self.net.as_ref().is_some_and(|(net, _, _)| net == name) => {
                 let (_, m, n) = self.net.clone().expect("matched");
                 if args.len() != 2 {
-                    return Err(Error::Domain(format!("'{e}' is not a control point b[i, j] of the net {name}")));
+                    return Err(Error::Domain(format!(
+                        "'{e}' is not a control point b[i, j] of the net {name}"
+                    )));
                 }
                 if !self.unit {
                     return Ok(Vec::new());
@@ -482,26 +480,33 @@ impl<'a> Translator<'a> {
     /// its value (`hint` when given, else the value at the least `n`).
     fn wz(&mut self, k: &str, a: &Aff, b: &Aff, f: Lin, d: &Domain, hint: Option<Lin>) -> Result<Lin> {
         let sym = self.sym;
-        // The same integer points with fewer constraints: a symbol of the upper bound bounded
-        // below twice (n ≥ 0 and n ≥ ĵ, with ĵ ≥ 0) keeps only the bound that implies the other.
-        let d = &without_redundant(d, |c| b.v.keys().any(|x| c.coef(x) != 0));
         let what = format!("Σ_{{{k}={a}}}^{{{b}}}");
         // The induction variable: coefficient 1 in the upper bound, bounded below only.
-        let n = b
-            .v
-            .iter()
-            .filter(|(x, c)| **c == 1 && a.coef(x) == 0)
-            .map(|(x, _)| x.clone())
-            .find(|x| {
-                d.cons.iter().all(|c| c.coef(x) >= 0)
-                    && d.cons.iter().filter(|c| c.coef(x) != 0).count() == 1
-                    && d.cons.iter().any(|c| c.coef(x) == 1)
-            })
-            .ok_or_else(|| {
-                Error::Domain(format!(
-                    "{what}: the upper bound must be m + c for an integer symbol m with only a lower bound (an open range), and the lower bound must not depend on it"
-                ))
-            })?;
+        let induction_variable = |d: &Domain| {
+            b.v.iter()
+                .filter(|(x, c)| **c == 1 && a.coef(x) == 0)
+                .map(|(x, _)| x.clone())
+                .find(|x| {
+                    d.cons.iter().all(|c| c.coef(x) >= 0)
+                        && d.cons.iter().filter(|c| c.coef(x) != 0).count() == 1
+                        && d.cons.iter().any(|c| c.coef(x) == 1)
+                })
+        };
+        // Failing that, the same integer points with fewer constraints: a symbol of the upper
+        // bound bounded below twice (n ≥ 0 and n ≥ ĵ, with ĵ ≥ 0) keeps the bound implying the other.
+        let pruned;
+        let (d, n) = match induction_variable(d) {
+            Some(n) => (d, Some(n)),
+            None => {
+                pruned = without_redundant(d, |c| b.v.keys().any(|x| c.coef(x) != 0));
+                (&pruned, induction_variable(&pruned))
+            }
+        };
+        let n = n.ok_or_else(|| {
+            Error::Domain(format!(
+                "{what}: the upper bound must be m + c for an integer symbol m with only a lower bound (an open range), and the lower bound must not depend on it"
+            ))
+        })?;
         let low = d.cons.iter().find(|c| c.coef(&n) == 1).expect("found above");
         let n0 = low.minus(&Aff::var(&n)).scaled(-1);
         let rest = Domain {
@@ -526,15 +531,12 @@ impl<'a> Translator<'a> {
                 let same_degree = h[0].deltas.is_empty()
                     && h[0].bdeg > 0
                     && f.iter().all(|t| t.deltas.is_empty() && t.bdeg == h[0].bdeg);
-                let numbers = |l: &[Term]| -> Lin {
-                    l.iter()
-                        .map(|t| Term {
-                            bdeg: 0,
-                            ..t.clone()
-                        })
-                        .collect()
+                let numbers = |l: &[Term]| -> Lin { l.iter().map(|t| Term { bdeg: 0, ..t.clone() }).collect() };
+                let (f, hn) = if same_degree {
+                    (numbers(&f), numbers(&h))
+                } else {
+                    (f, h.clone())
                 };
-                let (f, hn) = if same_degree { (numbers(&f), numbers(&h)) } else { (f, h.clone()) };
                 let start = telescope::induction_start(sym, &hn[0], &n, &n0, &what)?;
                 for m in 0..start.minus(&n0).c {
                     let at = n0.shifted(m);

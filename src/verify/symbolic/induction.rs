@@ -62,7 +62,14 @@ pub(super) fn prove(
     }
     let at_lo: Vec<Expr> = sides
         .iter()
-        .map(|s| lemma::unfold(&substitute(s, &name, std::slice::from_ref(&lo)), decls, &Unfold::Base(&lo), &mut base))
+        .map(|s| {
+            lemma::unfold(
+                &substitute(s, &name, std::slice::from_ref(&lo)),
+                decls,
+                &Unfold::Base(&lo),
+                &mut base,
+            )
+        })
         .collect::<Result<_>>()?;
     let base_decls = Decls {
         ranges: ranges_at(&decls.ranges, k, None, &lo)?,
@@ -75,7 +82,14 @@ pub(super) fn prove(
     let mut step = Rewritten::default();
     let at_next: Vec<Expr> = sides
         .iter()
-        .map(|s| lemma::unfold(&substitute(s, &name, std::slice::from_ref(&next)), decls, &Unfold::Step(var), &mut step))
+        .map(|s| {
+            lemma::unfold(
+                &substitute(s, &name, std::slice::from_ref(&next)),
+                decls,
+                &Unfold::Step(var),
+                &mut step,
+            )
+        })
         .collect::<Result<_>>()?;
     let own_range = IntRange {
         to: match &range.to {

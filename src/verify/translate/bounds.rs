@@ -4,6 +4,7 @@
 use super::super::hyper::{Aff, Term};
 use super::super::pieces::Domain;
 use super::super::poly::RatFunc;
+use super::{UNIT, UNIT2};
 use num_traits::{CheckedDiv, One, Zero};
 
 /// Whether the polynomial `g` is the end `0` (`Some(false)`) or `1` (`Some(true)`) of the
@@ -34,17 +35,27 @@ pub(super) fn support_start(v: &str, a: &Aff, terms: &[Term], d: &Domain) -> Aff
     a.clone()
 }
 
-/// `d` without the constraints that `pick` selects and the others imply (the same integer
-/// points).
+/// `d` without the constraints that `pick` selects and the others imply through a constraint
+/// on a unit index (the same integer points): the bounds `0 ≤ ĵ ≤ n` of the unit polygon's
+/// index make a range's own `n ≥ 0` redundant, and a sum over `n` must see `n ≥ ĵ` alone. A
+/// range's bounds as written are kept (they say which variable an induction runs on).
 pub(super) fn without_redundant(d: &Domain, pick: impl Fn(&Aff) -> bool) -> Domain {
+    let on_unit = |c: &Aff| c.coef(UNIT) != 0 || c.coef(UNIT2) != 0;
     let mut cons = d.cons.clone();
     let mut k = 0;
     while k < cons.len() {
-        if pick(&cons[k]) {
-            let others = Domain {
-                cons: cons.iter().enumerate().filter(|(j, _)| *j != k).map(|(_, c)| c.clone()).collect(),
+        if pick(&cons[k]) && !on_unit(&cons[k]) {
+            let others: Vec<Aff> = cons
+                .iter()
+                .enumerate()
+                .filter(|(j, _)| *j != k)
+                .map(|(_, c)| c.clone())
+                .collect();
+            let without_unit = Domain {
+                cons: others.iter().filter(|c| !on_unit(c)).cloned().collect(),
             };
-            if others.implies_ge(&cons[k]) {
+            let others = Domain { cons: others };
+            if others.implies_ge(&cons[k]) && !without_unit.implies_ge(&cons[k]) {
                 cons.remove(k);
                 continue;
             }
@@ -53,4 +64,3 @@ pub(super) fn without_redundant(d: &Domain, pick: impl Fn(&Aff) -> bool) -> Doma
     }
     Domain { cons }
 }
-

@@ -84,7 +84,7 @@ pub(crate) fn prepare(
     // The variables of integration are parameters of the integrands only.
     let mut all = conts.clone();
     for e in &refs {
-        super::beta::integral_vars(e, &mut all);
+        super::super::beta::integral_vars(e, &mut all);
     }
     let all: Vec<String> = all.into_iter().filter(|v| !ints.contains(v)).collect();
     let sym = Symbols::new(&ints, &all);
