@@ -468,6 +468,7 @@ pub fn filtered_hull_contains(points: &[[f64; 2]], p: [f64; 2]) -> Result<bool> 
 /// assert!(e.lo() <= 4e307 && 4e307 <= e.hi() && e.hi().is_finite());
 /// assert!(interval_de_casteljau(&[1.0, f64::NAN], 0.3).is_err());
 /// ```
+#[inline]
 pub fn interval_de_casteljau(b: &[f64], t: f64) -> Result<Interval> {
     if (0.0..=1.0).contains(&t) {
         if let Some(e) = sign_split_enclosure(b, t) {
@@ -493,11 +494,12 @@ pub fn interval_de_casteljau(b: &[f64], t: f64) -> Result<Interval> {
 /// `(1−u)^{3n} P − 2nη ≤ P̂ ≤ (1+u)^{3n} (P + 2nη)`, and since
 /// `(1−u)^{−3n} ≤ 1/(1 − 3nu) = 1 + γ_{3n}` and `(1+u)^{−3n} ≥ 1 − 3nu`,
 /// `P̂(1 − γ_{3n}) − 2nη ≤ P ≤ (P̂ + 2nη)(1 + γ_{3n})`. Subtracting,
-/// `|p − (P̂⁺ − P̂⁻)| ≤ γ_{3n} (P̂⁺ + P̂⁻) + 4nη(1 + γ_{3n})`, and the endpoints below are
-/// computed rounded outward (each `next_up` of a rounded result is at least the exact
-/// one; the comments there account for each rounding). A float that overflowed is infinite and reaches the result (products by `s, t ≥
-/// 0` and sums keep ∞, or make NaN with 0), so a finite result had no overflow.
+/// `|p − (P̂⁺ − P̂⁻)| ≤ γ_{3n} (P̂⁺ + P̂⁻) + 4nη(1 + γ_{3n})`; the comments in the body
+/// account for the roundings of the endpoints. A float that overflowed is infinite and
+/// reaches the result (products by `s, t ≥ 0` and sums keep ∞, or make NaN with 0), so a
+/// finite result had no overflow.
 /// `tests/interval_enclosure.rs` checks the enclosure against the exact rational value.
+#[inline]
 fn sign_split_enclosure(b: &[f64], t: f64) -> Option<Interval> {
     let n = b.len().checked_sub(1)?;
     if n == 0 {
@@ -512,12 +514,16 @@ fn sign_split_enclosure(b: &[f64], t: f64) -> Option<Interval> {
         5 => sign_split_triangle(&mut [[0.0; 2]; 5], b, t),
         len => with_scratch(len, [0.0; 2], |buf| sign_split_triangle(buf, b, t)),
     };
-    // Rounded: d = fl(P̂⁺ − P̂⁻) is off by at most u·m (m = P̂⁺ + P̂⁻ ≥ |P̂⁺ − P̂⁻|), and
-    // fl(c · fl(m)) ≥ (γ_{3n} + u)·m for c from [`reach_factor`] when the product is
-    // normal. The underflow term 4nη(1 + γ_{3n}) is below (4n + 1)η as 4nγ_{3n} < 1 up to
-    // the degree limit; above 2^−1000 one step up covers it (the ulp is at least 2^−1052),
-    // below it is added, with η more for a subnormal product. It is written as bits: a
-    // product with a subnormal result costs a hundred cycles on some processors.
+    // Rounded, with R = γ_{3n}·m + 4nη(1 + γ_{3n}) the reach above (m = P̂⁺ + P̂⁻ exactly):
+    // d = fl(P̂⁺ − P̂⁻) is off by at most u·m (m ≥ |P̂⁺ − P̂⁻|, so |d| ≤ (1 + u)m), and
+    // fl(d ± r) by at most u(|d| + r), so `d ± r` rounded to nearest are outward enough when
+    // r(1 − u) ≥ (γ_{3n} + 2u + u²)·m + 4nη(1 + γ_{3n}). The product fl(c · fl(m)) is at
+    // least c(1 − u)²m when normal, and c(1 − u)³ ≥ (γ_{3n} + 2u)(1 + u/2) covers the
+    // first term ([`reach_factor`]).
+    // The underflow term is below (4n + 1)η, as 4nγ_{3n} < 1 up to the degree limit: above
+    // 2^−1000 one step up covers it (an ulp is then at least 2^−1052), below it is added,
+    // with η more for a subnormal product. It is written as bits: a product with a
+    // subnormal result costs a hundred cycles on some processors.
     let spread = reach_factor(n) * (pos + neg);
     let reach = if spread > NO_UNDERFLOW_BELOW {
         next_up(spread)
@@ -525,7 +531,7 @@ fn sign_split_enclosure(b: &[f64], t: f64) -> Option<Interval> {
         add_up(spread, f64::from_bits(4 * n as u64 + 2))
     };
     let d = pos - neg;
-    let (lo, hi) = (next_down(d - reach), next_up(d + reach));
+    let (lo, hi) = (d - reach, d + reach);
     if lo.is_finite() && hi.is_finite() {
         return Some(Interval { lo, hi });
     }
@@ -548,12 +554,12 @@ fn clamped_to_coefficients(b: &[f64], pos: f64, neg: f64, lo: f64, hi: f64) -> O
     })
 }
 
-/// `c ≥ (γ_{3n} + u)/(1 − u)²` (the factor `1 + 4u` covers the square), looked up below
-/// degree 341.
+/// `c ≥ (γ_{3n} + 2u)(1 + u/2)/(1 − u)³`: `(1 + 4u)(1 − u)³ ≥ 1 + u − 9u² ≥ 1 + u/2`.
+/// Looked up below degree 341.
 #[inline(always)]
 fn reach_factor(n: usize) -> f64 {
     const fn computed(n: usize) -> f64 {
-        next_up(next_up(gamma_computed(3 * n) + UNIT_ROUNDOFF) * (1.0 + 4.0 * UNIT_ROUNDOFF))
+        next_up(next_up(gamma_computed(3 * n) + 2.0 * UNIT_ROUNDOFF) * (1.0 + 4.0 * UNIT_ROUNDOFF))
     }
     static FACTORS: [f64; 341] = {
         let mut table = [0.0; 341];

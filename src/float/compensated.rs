@@ -31,6 +31,7 @@ use super::scratch::{with_copy, with_scratch, with_scratch2};
 /// assert!((res - exact).abs() < 1e-13 * exact && bound < 1e-30); // 13 digits
 /// assert!((de_casteljau(&b, t) - exact).abs() > 100.0 * exact); // none
 /// ```
+#[inline]
 pub fn compensated_de_casteljau(b: &[f64], t: f64) -> (f64, f64) {
     let n = b.len() - 1;
     // low degrees on arrays of constant length: unrolled, in registers (the same steps)
