@@ -457,10 +457,12 @@ pub fn filtered_hull_contains(points: &[[f64; 2]], p: [f64; 2]) -> Result<bool> 
 /// non-finite input or no coefficients. No heap allocation up to
 /// [`crate::float::STACK_COEFFICIENTS`] coefficients.
 ///
-/// For `t ∈ [0, 1]` it costs two plain float triangles ([`sign_split_enclosure`]): the
-/// enclosure is `d ± E` with `E ≈ γ_{3n} Σ|b_i|B_i^n(t)`, at most a few times wider than
-/// the operation-by-operation interval of [`tight_interval_de_casteljau`] (which the oracle
-/// serves, and every other `t` takes). Inputs up to the largest `f64` give finite enclosures.
+/// For `t ∈ [0, 1]` it costs two plain float triangles, on the coefficients' positive and
+/// negative parts (the proof is in the source): the enclosure is `d ± E` with
+/// `E ≈ γ_{3n} Σ|b_i|B_i^n(t)`, the a priori bound's width, clamped to the coefficients'
+/// range. The operation-by-operation interval of [`tight_interval_de_casteljau`] (which the
+/// oracle serves, and every other `t` takes) is narrower where most operations are exact.
+/// Inputs up to the largest `f64` give finite enclosures.
 ///
 /// ```
 /// use casteljau::interval_de_casteljau;

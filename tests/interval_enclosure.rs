@@ -1,8 +1,8 @@
 //! `interval_de_casteljau`'s two-triangle enclosure (`t ∈ [0, 1]`) holds the exact value
 //! of the curve on its float inputs, decided in rationals, on random curves of every scale:
-//! subnormal, ordinary, near `f64::MAX`, mixed, with signed zeros and cancellation; it is at
-//! most a few times wider than the operation-by-operation interval, and non-finite inputs
-//! or no coefficients are errors, never a panic.
+//! subnormal, ordinary, near `f64::MAX`, mixed, with signed zeros and cancellation; its width
+//! stays within the a priori bound's order, `6(n + 1)u max|b_i|`, and non-finite inputs or
+//! no coefficients are errors, never a panic.
 
 #[path = "support/rng.rs"]
 mod rng;
@@ -65,8 +65,8 @@ fn the_enclosure_holds_the_exact_value_at_every_scale() {
         let exact = exact_value(&b, t);
         assert!(e.contains(&exact), "{e} misses the exact value: {b:?} at {t:e}");
         assert!(e.lo().is_finite() && e.hi().is_finite(), "{e}: {b:?} at {t:e}");
-        // against the tight interval: wider by a factor of the degree's order at most (both
-        // grow with n u Σ|b_i|B_i); the absolute slack covers subnormal results
+        // against the tight interval (printed): wider where most of its operations are exact;
+        // the absolute slack skips subnormal widths
         let tight = tight_interval_de_casteljau(&b, t).unwrap();
         let slack = 1e-300 * f64::MIN_POSITIVE;
         if tight.width() > slack {
