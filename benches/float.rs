@@ -3,14 +3,18 @@
 //! cubic, one coordinate of a curve of degree 3, 10, 20 at t = 0.3. `plain` is the floor they
 //! are measured against: the obvious hand loop of de Casteljau (convex form) on a stack array.
 //!
-//! `cargo bench --bench float`.
+//! CPU time of the bench thread (`support/cpu_time.rs`): the figures come from a shared
+//! machine. `cargo bench --bench float`.
 
 use casteljau::float::{compensated_de_casteljau, de_casteljau, de_casteljau_running};
-use casteljau::{interval_de_casteljau, Interval};
+use casteljau::{interval_de_casteljau, tight_interval_de_casteljau, Interval};
 use casteljau::{BezierCurve, Scalar};
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use kurbo::{CubicBez, ParamCurve};
-use std::time::Duration;
+
+#[path = "support/cpu_time.rs"]
+mod cpu_time;
+use cpu_time::{cpu_time_of, long_samples};
 
 fn coefficients(n: usize) -> Vec<f64> {
     (0..=n).map(|i| ((i * 7919) % 13) as f64 / 6.5 - 1.0).collect()
@@ -35,14 +39,14 @@ fn bench_plain<const N: usize>(
 ) {
     let array: [f64; N] = b.try_into().expect("N coefficients");
     group.bench_function(BenchmarkId::new("plain", N - 1), |bch| {
-        bch.iter(|| plain(black_box(&array), black_box(t)))
+        bch.iter_custom(|iters| cpu_time_of(iters, || plain(black_box(&array), black_box(t))))
     });
 }
 
 fn evaluators(c: &mut Criterion) {
     let t = 0.3;
     let mut group = c.benchmark_group("float_eval");
-    group.sample_size(30).measurement_time(Duration::from_secs(2));
+    long_samples(&mut group);
     for n in [3usize, 10, 20] {
         let b = coefficients(n);
         let generic: BezierCurve<f64> = BezierCurve::from_coords(b.iter().map(|x| vec![*x]).collect()).unwrap();
@@ -55,28 +59,31 @@ fn evaluators(c: &mut Criterion) {
             _ => bench_plain::<21>(&mut group, &b, t),
         }
         group.bench_with_input(BenchmarkId::new("de_casteljau", n), &b, |bch, b| {
-            bch.iter(|| de_casteljau(black_box(b), black_box(t)))
+            bch.iter_custom(|iters| cpu_time_of(iters, || de_casteljau(black_box(b), black_box(t))))
         });
         group.bench_with_input(BenchmarkId::new("running_bound", n), &b, |bch, b| {
-            bch.iter(|| de_casteljau_running(black_box(b), black_box(t)))
+            bch.iter_custom(|iters| cpu_time_of(iters, || de_casteljau_running(black_box(b), black_box(t))))
         });
         group.bench_with_input(BenchmarkId::new("compensated", n), &b, |bch, b| {
-            bch.iter(|| compensated_de_casteljau(black_box(b), black_box(t)))
+            bch.iter_custom(|iters| cpu_time_of(iters, || compensated_de_casteljau(black_box(b), black_box(t))))
         });
         group.bench_with_input(BenchmarkId::new("generic_f64", n), &generic, |bch, c| {
-            bch.iter(|| c.eval(black_box(&t)))
+            bch.iter_custom(|iters| cpu_time_of(iters, || c.eval(black_box(&t))))
         });
         group.bench_with_input(BenchmarkId::new("interval", n), &interval, |bch, c| {
-            bch.iter(|| c.eval(black_box(&ti)))
+            bch.iter_custom(|iters| cpu_time_of(iters, || c.eval(black_box(&ti))))
         });
         group.bench_with_input(BenchmarkId::new("interval_de_casteljau", n), &b, |bch, b| {
-            bch.iter(|| interval_de_casteljau(black_box(b), black_box(t)))
+            bch.iter_custom(|iters| cpu_time_of(iters, || interval_de_casteljau(black_box(b), black_box(t))))
+        });
+        group.bench_with_input(BenchmarkId::new("tight_interval_de_casteljau", n), &b, |bch, b| {
+            bch.iter_custom(|iters| cpu_time_of(iters, || tight_interval_de_casteljau(black_box(b), black_box(t))))
         });
         if n == 3 {
             let p = |x: f64| kurbo::Point::new(x, 0.0);
             let k = CubicBez::new(p(b[0]), p(b[1]), p(b[2]), p(b[3]));
             group.bench_function(BenchmarkId::new("kurbo", n), |bch| {
-                bch.iter(|| black_box(k).eval(black_box(t)))
+                bch.iter_custom(|iters| cpu_time_of(iters, || black_box(k).eval(black_box(t))))
             });
         }
     }

@@ -10,12 +10,17 @@
 //! the parameter as an opaque value, `black_box(T)` (casteljau then borrows it, as a caller
 //! with a `t` in hand does), never through a pointer only one side has to follow.
 //!
-//! `cargo bench --bench peers`
+//! CPU time of the bench thread (`support/cpu_time.rs`): the figures come from a shared
+//! machine. `cargo bench --bench peers`
 
 use casteljau::{Bezier, Cubic, Point2, Quad};
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use kurbo::{CubicBez, ParamCurve as _, QuadBez};
 use lyon_geom::{point, CubicBezierSegment, QuadraticBezierSegment};
+
+#[path = "support/cpu_time.rs"]
+mod cpu_time;
+use cpu_time::{cpu_time_of, long_samples};
 
 const T: f64 = 0.3;
 const CUBIC: [[f64; 2]; 4] = [[0.0, 0.0], [1.0, 2.0], [3.0, 2.5], [4.0, 0.5]];
@@ -61,27 +66,41 @@ fn peers(c: &mut Criterion) {
     let (ours, theirs, lyon) = (cubic(), kurbo_cubic(), lyon_cubic());
     let any = Bezier::from(ours);
     let mut g = c.benchmark_group("cubic_eval");
-    g.bench_function("casteljau", |b| b.iter(|| black_box(&ours).eval(&black_box(T))));
-    g.bench_function("casteljau_any_degree", |b| {
-        b.iter(|| black_box(&any).eval(&black_box(T)))
+    long_samples(&mut g);
+    g.bench_function("casteljau", |b| {
+        b.iter_custom(|iters| cpu_time_of(iters, || black_box(&ours).eval(&black_box(T))))
     });
-    g.bench_function("kurbo", |b| b.iter(|| black_box(&theirs).eval(black_box(T))));
-    g.bench_function("lyon", |b| b.iter(|| black_box(&lyon).sample(black_box(T))));
+    g.bench_function("casteljau_any_degree", |b| {
+        b.iter_custom(|iters| cpu_time_of(iters, || black_box(&any).eval(&black_box(T))))
+    });
+    g.bench_function("kurbo", |b| {
+        b.iter_custom(|iters| cpu_time_of(iters, || black_box(&theirs).eval(black_box(T))))
+    });
+    g.bench_function("lyon", |b| {
+        b.iter_custom(|iters| cpu_time_of(iters, || black_box(&lyon).sample(black_box(T))))
+    });
     g.finish();
 
     // kurbo has no split at a parameter: its two subsegments are the same curves.
     let mut g = c.benchmark_group("cubic_split");
-    g.bench_function("casteljau", |b| b.iter(|| black_box(&ours).split_at(&black_box(T))));
+    long_samples(&mut g);
+    g.bench_function("casteljau", |b| {
+        b.iter_custom(|iters| cpu_time_of(iters, || black_box(&ours).split_at(&black_box(T))))
+    });
     g.bench_function("casteljau_any_degree", |b| {
-        b.iter(|| black_box(&any).split_at(&black_box(T)))
+        b.iter_custom(|iters| cpu_time_of(iters, || black_box(&any).split_at(&black_box(T))))
     });
     g.bench_function("kurbo", |b| {
-        b.iter(|| {
-            let (c, t) = (black_box(&theirs), black_box(T));
-            (c.subsegment(0.0..t), c.subsegment(t..1.0))
+        b.iter_custom(|iters| {
+            cpu_time_of(iters, || {
+                let (c, t) = (black_box(&theirs), black_box(T));
+                (c.subsegment(0.0..t), c.subsegment(t..1.0))
+            })
         })
     });
-    g.bench_function("lyon", |b| b.iter(|| black_box(&lyon).split(black_box(T))));
+    g.bench_function("lyon", |b| {
+        b.iter_custom(|iters| cpu_time_of(iters, || black_box(&lyon).split(black_box(T))))
+    });
     g.finish();
 
     let quad = Quad::new(QUAD.map(Point2::from));
@@ -95,32 +114,59 @@ fn peers(c: &mut Criterion) {
         to: c2,
     };
     let mut g = c.benchmark_group("quad_elevate");
-    g.bench_function("casteljau", |b| b.iter(|| black_box(&quad).elevate()));
-    g.bench_function("casteljau_any_degree", |b| {
-        b.iter(|| black_box(&any).elevate().unwrap())
+    long_samples(&mut g);
+    g.bench_function("casteljau", |b| {
+        b.iter_custom(|iters| cpu_time_of(iters, || black_box(&quad).elevate()))
     });
-    g.bench_function("kurbo", |b| b.iter(|| black_box(&kquad).raise()));
-    g.bench_function("lyon", |b| b.iter(|| black_box(&lquad).to_cubic()));
+    g.bench_function("casteljau_any_degree", |b| {
+        b.iter_custom(|iters| cpu_time_of(iters, || black_box(&any).elevate().unwrap()))
+    });
+    g.bench_function("kurbo", |b| {
+        b.iter_custom(|iters| cpu_time_of(iters, || black_box(&kquad).raise()))
+    });
+    g.bench_function("lyon", |b| {
+        b.iter_custom(|iters| cpu_time_of(iters, || black_box(&lquad).to_cubic()))
+    });
+    g.finish();
+
+    // a cubic's quartic: more points than the any-degree curve keeps inline
+    let mut g = c.benchmark_group("cubic_elevate");
+    long_samples(&mut g);
+    let ours = cubic();
+    let any = Bezier::from(ours);
+    g.bench_function("casteljau", |b| {
+        b.iter_custom(|iters| cpu_time_of(iters, || black_box(&ours).elevate()))
+    });
+    g.bench_function("casteljau_any_degree", |b| {
+        b.iter_custom(|iters| cpu_time_of(iters, || black_box(&any).elevate().unwrap()))
+    });
     g.finish();
 
     let array = degree_20();
     let ours = Bezier::from_points(array.map(Point2::from)).unwrap();
     let lyon_points = array.map(|[x, y]| point(x, y));
     let mut g = c.benchmark_group("deg20_eval");
-    g.bench_function("casteljau", |b| b.iter(|| black_box(&ours).eval(&black_box(T))));
-    g.bench_function("array", |b| b.iter(|| array_casteljau(black_box(&array), black_box(T))));
+    long_samples(&mut g);
+    g.bench_function("casteljau", |b| {
+        b.iter_custom(|iters| cpu_time_of(iters, || black_box(&ours).eval(&black_box(T))))
+    });
+    g.bench_function("array", |b| {
+        b.iter_custom(|iters| cpu_time_of(iters, || array_casteljau(black_box(&array), black_box(T))))
+    });
     // Neither kurbo nor lyon_geom has curves above degree 3: lyon's point lerp in the same
     // de Casteljau loop stands in for them.
     g.bench_function("lyon", |b| {
-        b.iter(|| {
-            let mut p = *black_box(&lyon_points);
-            let t = black_box(T);
-            for len in (1..21).rev() {
-                for i in 0..len {
-                    p[i] = p[i].lerp(p[i + 1], t);
+        b.iter_custom(|iters| {
+            cpu_time_of(iters, || {
+                let mut p = *black_box(&lyon_points);
+                let t = black_box(T);
+                for len in (1..21).rev() {
+                    for i in 0..len {
+                        p[i] = p[i].lerp(p[i + 1], t);
+                    }
                 }
-            }
-            p[0]
+                p[0]
+            })
         })
     });
     g.finish();

@@ -24,7 +24,8 @@
 use crate::conic::{classify_conic, ConicKind};
 use crate::error::{Error, Result};
 use crate::float::{
-    nearest_f64, next_down, next_up, two_product, two_sum, ulp_exponent_f64, with_scratch, ExactRange, Factor,
+    add_up, gamma_computed, nearest_f64, next_down, next_up, two_product, two_sum, ulp_exponent_f64, with_scratch,
+    ExactRange, Factor, UNIT_ROUNDOFF,
 };
 use crate::point::Point;
 use crate::rational::RationalBezierCurve;
@@ -452,20 +453,174 @@ pub fn filtered_hull_contains(points: &[[f64; 2]], p: [f64; 2]) -> Result<bool> 
     Ok(true)
 }
 
-/// An enclosure of `Σ b_i B_i^n(t)` for float coefficients and a float `t`, by de Casteljau
-/// in the convex form `[1 − t]·a + [t]·b` (with `[1 − t]` the two floats around `1 − t`
-/// when it is no float). Unlike the lerp form `a + t·(b − a)` of the generic algorithm, its
-/// intermediate values stay within the coefficients' range for `t ∈ [0, 1]`, so inputs up to
-/// the largest `f64` give finite enclosures. An error for a non-finite input. No heap
-/// allocation up to [`crate::float::STACK_COEFFICIENTS`] coefficients.
+/// An enclosure of `Σ b_i B_i^n(t)` for float coefficients and a float `t`; an error for a
+/// non-finite input or no coefficients. No heap allocation up to
+/// [`crate::float::STACK_COEFFICIENTS`] coefficients.
+///
+/// For `t ∈ [0, 1]` it costs two plain float triangles, on the coefficients' positive and
+/// negative parts (the proof is in the source): the enclosure is `d ± E` with
+/// `E ≈ γ_{3n} Σ|b_i|B_i^n(t)`, the a priori bound's width, clamped to the coefficients'
+/// range. The operation-by-operation interval of [`tight_interval_de_casteljau`] (which the
+/// oracle serves, and every other `t` takes) is narrower where most operations are exact.
+/// Inputs up to the largest `f64` give finite enclosures.
 ///
 /// ```
 /// use casteljau::interval_de_casteljau;
 /// let e = interval_de_casteljau(&[1e308, -1e308], 0.3).unwrap();
 /// assert!(e.lo() <= 4e307 && 4e307 <= e.hi() && e.hi().is_finite());
+/// assert!(interval_de_casteljau(&[1.0, f64::NAN], 0.3).is_err());
 /// ```
+#[inline]
 pub fn interval_de_casteljau(b: &[f64], t: f64) -> Result<Interval> {
+    if (0.0..=1.0).contains(&t) {
+        if let Some(e) = sign_split_enclosure(b, t) {
+            return Ok(e);
+        }
+    }
+    tight_interval_de_casteljau(b, t)
+}
+
+/// The enclosure of [`interval_de_casteljau`] for `t ∈ [0, 1]` by two float triangles on
+/// nonnegative data; `None` for no coefficients, and when a value is not finite (a
+/// non-finite input, which reaches the result through every path, or an overflow).
+///
+/// Split the coefficients `b_i = b⁺_i − b⁻_i` into nonnegative parts, so that
+/// `p = P⁺ − P⁻` with `P^± = Σ b^±_i B_i^n(t)`, and run de Casteljau's convex form
+/// `fl(fl(ŝ·a) + fl(t·c))`, `ŝ = fl(1 − t)`, on each. Why it is sound: with `s = 1 − t`
+/// exactly, `ŝ = s(1 + δ₀)`, and every rounding `fl(x) = x(1 + δ) + ε` (`|δ| ≤ u`,
+/// `|ε| ≤ η/2`, `η = 2^−1074`, `ε` only for a product, sums of floats being exact below
+/// `2^−1022`), a node on nonnegative `a, c` computes
+/// `ẑ = (s a (1+δ₀)(1+δ₁) + t c (1+δ₂) + ε₁ + ε₂)(1+δ₃)`, so, with `w = s a + t c`,
+/// `(1−u)³ w − 2η ≤ ẑ ≤ (1+u)³ w + 2η`. No cancellation can amplify this: every value is
+/// nonnegative. By induction over the `n` levels (using `s, t ≥ 0` and `s + t = 1`),
+/// `(1−u)^{3n} P − 2nη ≤ P̂ ≤ (1+u)^{3n} (P + 2nη)`, and since
+/// `(1−u)^{−3n} ≤ 1/(1 − 3nu) = 1 + γ_{3n}` and `(1+u)^{−3n} ≥ 1 − 3nu`,
+/// `P̂(1 − γ_{3n}) − 2nη ≤ P ≤ (P̂ + 2nη)(1 + γ_{3n})`. Subtracting,
+/// `|p − (P̂⁺ − P̂⁻)| ≤ γ_{3n} (P̂⁺ + P̂⁻) + 4nη(1 + γ_{3n})`; the comments in the body
+/// account for the roundings of the endpoints. A float that overflowed is infinite and
+/// reaches the result (products by `s, t ≥ 0` and sums keep ∞, or make NaN with 0), so a
+/// finite result had no overflow.
+/// `tests/interval_enclosure.rs` checks the enclosure against the exact rational value.
+#[inline]
+fn sign_split_enclosure(b: &[f64], t: f64) -> Option<Interval> {
+    let n = b.len().checked_sub(1)?;
+    if n == 0 {
+        let x = b[0];
+        return x.is_finite().then_some(Interval { lo: x, hi: x });
+    }
+    // low degrees on arrays of constant length: unrolled, in registers
+    let [pos, neg] = match b.len() {
+        2 => sign_split_triangle(&mut [[0.0; 2]; 2], b, t),
+        3 => sign_split_triangle(&mut [[0.0; 2]; 3], b, t),
+        4 => sign_split_triangle(&mut [[0.0; 2]; 4], b, t),
+        5 => sign_split_triangle(&mut [[0.0; 2]; 5], b, t),
+        len => with_scratch(len, [0.0; 2], |buf| sign_split_triangle(buf, b, t)),
+    };
+    // Rounded, with R = γ_{3n}·m + 4nη(1 + γ_{3n}) the reach above (m = P̂⁺ + P̂⁻ exactly):
+    // d = fl(P̂⁺ − P̂⁻) is off by at most u·m (m ≥ |P̂⁺ − P̂⁻|, so |d| ≤ (1 + u)m), and
+    // fl(d ± r) by at most u(|d| + r), so `d ± r` rounded to nearest are outward enough when
+    // r(1 − u) ≥ (γ_{3n} + 2u + u²)·m + 4nη(1 + γ_{3n}). The product fl(c · fl(m)) is at
+    // least c(1 − u)²m when normal, and c(1 − u)³ ≥ (γ_{3n} + 2u)(1 + u/2) covers the
+    // first term ([`reach_factor`]).
+    // The underflow term is below (4n + 1)η, as 4nγ_{3n} < 1 up to the degree limit: above
+    // 2^−1000 one step up covers it (an ulp is then at least 2^−1052), below it is added,
+    // with η more for a subnormal product. It is written as bits: a product with a
+    // subnormal result costs a hundred cycles on some processors.
+    let spread = reach_factor(n) * (pos + neg);
+    let reach = if spread > NO_UNDERFLOW_BELOW {
+        next_up(spread)
+    } else {
+        add_up(spread, f64::from_bits(4 * n as u64 + 2))
+    };
+    let d = pos - neg;
+    let (lo, hi) = (d - reach, d + reach);
+    if lo.is_finite() && hi.is_finite() {
+        return Some(Interval { lo, hi });
+    }
+    clamped_to_coefficients(b, pos, neg, lo, hi)
+}
+
+/// The enclosure `[lo, hi]` of [`sign_split_enclosure`] when an endpoint overflowed (or an
+/// input is not finite: `None`): for `t ∈ [0, 1]` the value is a convex combination of the
+/// `b_i`, so within their least and largest.
+#[cold]
+fn clamped_to_coefficients(b: &[f64], pos: f64, neg: f64, lo: f64, hi: f64) -> Option<Interval> {
+    if !(pos.is_finite() && neg.is_finite()) {
+        return None;
+    }
+    let min = b.iter().fold(f64::INFINITY, |m, x| m.min(*x));
+    let max = b.iter().fold(f64::NEG_INFINITY, |m, x| m.max(*x));
+    Some(Interval {
+        lo: lo.max(min),
+        hi: hi.min(max),
+    })
+}
+
+/// `c ≥ (γ_{3n} + 2u)(1 + u/2)/(1 − u)³`: `(1 + 4u)(1 − u)³ ≥ 1 + u − 9u² ≥ 1 + u/2`.
+/// Looked up below degree 341.
+#[inline(always)]
+fn reach_factor(n: usize) -> f64 {
+    const fn computed(n: usize) -> f64 {
+        next_up(next_up(gamma_computed(3 * n) + 2.0 * UNIT_ROUNDOFF) * (1.0 + 4.0 * UNIT_ROUNDOFF))
+    }
+    static FACTORS: [f64; 341] = {
+        let mut table = [0.0; 341];
+        let mut n = 0;
+        while n < table.len() {
+            table[n] = computed(n);
+            n += 1;
+        }
+        table
+    };
+    match FACTORS.get(n) {
+        Some(c) => *c,
+        None => computed(n),
+    }
+}
+
+/// `2^−1000`: the ulp of a float above it, at least `2^−1052`, exceeds every underflow term
+/// of [`sign_split_enclosure`] (`(4n + 1) · 2^−1074 < 2^−1058` up to degree 4096).
+const NO_UNDERFLOW_BELOW: f64 = f64::from_bits((1023 - 1000) << 52);
+
+/// De Casteljau's convex form on the pairs `(b⁺_i, b⁻_i)` of `b` in `buf` (as long as
+/// `b`), both triangles in one loop (two independent lanes): `[P̂⁺, P̂⁻]`.
+#[inline(always)]
+fn sign_split_triangle(buf: &mut [[f64; 2]], b: &[f64], t: f64) -> [f64; 2] {
+    let s = 1.0 - t;
+    for (x, &c) in buf.iter_mut().zip(b) {
+        // `max` drops a NaN; `p − c` brings it back (and makes +∞'s negative part NaN)
+        let p = c.max(0.0);
+        *x = [p, p - c];
+    }
+    for len in (1..buf.len()).rev() {
+        for i in 0..len {
+            let (a, c) = (buf[i], buf[i + 1]);
+            buf[i] = [s * a[0] + t * c[0], s * a[1] + t * c[1]];
+        }
+    }
+    buf[0]
+}
+
+/// An enclosure of `Σ b_i B_i^n(t)` for float coefficients and a float `t`, by de Casteljau
+/// in the convex form `[1 − t]·a + [t]·b` (with `[1 − t]` the two floats around `1 − t`
+/// when it is no float), every operation rounded outward exactly as the [`Interval`]
+/// operations round it: the oracle's `float_eval` answers (recorded byte for byte) come
+/// from here. Unlike the lerp form `a + t·(b − a)` of the generic algorithm, its
+/// intermediate values stay within the coefficients' range for `t ∈ [0, 1]`, so inputs up to
+/// the largest `f64` give finite enclosures. An error for a non-finite input or no
+/// coefficients. No heap allocation up to [`crate::float::STACK_COEFFICIENTS`]
+/// coefficients.
+///
+/// ```
+/// use casteljau::tight_interval_de_casteljau;
+/// let e = tight_interval_de_casteljau(&[1e308, -1e308], 0.3).unwrap();
+/// assert!(e.lo() <= 4e307 && 4e307 <= e.hi() && e.hi().is_finite());
+/// ```
+pub fn tight_interval_de_casteljau(b: &[f64], t: f64) -> Result<Interval> {
     let t = Interval::from_f64(t)?;
+    if b.is_empty() {
+        return Err(Error::Domain("de Casteljau needs at least one coefficient".into()));
+    }
     if let Some(x) = b.iter().find(|x| !x.is_finite()) {
         return Err(Error::NotFinite(x.to_string()));
     }

@@ -111,7 +111,7 @@ pub use least_squares::{
 // --- judging floats: interval enclosures, filtered predicates, a float with its exact shadow
 pub use interval::{
     filter_stats, filtered_conic_kind, filtered_hull_contains, filtered_orientation, interval_de_casteljau,
-    FilterStats, Interval,
+    tight_interval_de_casteljau, FilterStats, Interval,
 };
 pub use shadow::Shadow;
 

@@ -1,12 +1,12 @@
 //! The fast `f64` kernels give the bits of the straightforward ones: compensated
 //! de Casteljau (products' errors by a prepared factor, redone by TwoProduct when a value
 //! leaves the exact range) against the textbook loop with `f64::mul_add`, and
-//! `interval_de_casteljau` (two products per endpoint) against the interval operations on
+//! `tight_interval_de_casteljau` (two products per endpoint) against the interval operations on
 //! every node, on random curves and on the edges: subnormals, values near 1e308, zeros of
 //! both signs, t outside [0, 1] and at its ends.
 
 use casteljau::float::{compensated_de_casteljau, next_down, next_up, two_product_fma, two_sum};
-use casteljau::{interval_de_casteljau, Interval};
+use casteljau::{tight_interval_de_casteljau, Interval};
 
 #[path = "support/rng.rs"]
 mod rng;
@@ -55,7 +55,7 @@ fn check(b: &[f64], t: f64) {
         "compensated: {b:?} at {t}: {fast:e} against {reference:e}"
     );
     if b.iter().all(|x| x.is_finite()) && t.is_finite() {
-        let fast = interval_de_casteljau(b, t).unwrap();
+        let fast = tight_interval_de_casteljau(b, t).unwrap();
         let reference = interval_reference(b, t);
         assert_eq!(
             (fast.lo().to_bits(), fast.hi().to_bits()),

@@ -47,13 +47,36 @@ pub(crate) const ETA: f64 = 5e-324;
 /// use casteljau::float::{gamma, UNIT_ROUNDOFF};
 /// assert!(gamma(6) > 6.0 * UNIT_ROUNDOFF && gamma(6) < 6.0000001 * UNIT_ROUNDOFF);
 /// ```
+#[inline]
 pub fn gamma(k: usize) -> f64 {
+    // the bounds ask for γ at every call: a division and four steps, more than a low-degree
+    // triangle costs, so the common indices are looked up (the same bits, computed once)
+    match GAMMAS.get(k) {
+        Some(g) => *g,
+        None => gamma_computed(k),
+    }
+}
+
+/// [`gamma`] computed: `next_up(next_up(ku / next_down(1 − ku)))`.
+pub(crate) const fn gamma_computed(k: usize) -> f64 {
     let ku = k as f64 * UNIT_ROUNDOFF; // exact below 2^53
     if ku >= 1.0 {
         return f64::INFINITY;
     }
     next_up(next_up(ku / next_down(1.0 - ku)))
 }
+
+/// `γ_k` for `k < 1024` (degrees up to 340 at `3n`), evaluated at compile time by
+/// [`gamma_computed`] itself.
+static GAMMAS: [f64; 1024] = {
+    let mut table = [0.0; 1024];
+    let mut k = 0;
+    while k < table.len() {
+        table[k] = gamma_computed(k);
+        k += 1;
+    }
+    table
+};
 
 /// `γ_k = k u / (1 − k u)` exactly, for checking bounds in rationals.
 ///
@@ -69,7 +92,7 @@ pub fn gamma_exact(k: usize) -> num_rational::BigRational {
 
 /// The next float above `x` (for finite `x`; `+∞` stays).
 #[inline]
-pub fn next_up(x: f64) -> f64 {
+pub const fn next_up(x: f64) -> f64 {
     if x.is_nan() || x == f64::INFINITY {
         return x;
     }
@@ -82,7 +105,7 @@ pub fn next_up(x: f64) -> f64 {
 
 /// The next float below `x`.
 #[inline]
-pub fn next_down(x: f64) -> f64 {
+pub const fn next_down(x: f64) -> f64 {
     -next_up(-x)
 }
 
@@ -115,12 +138,31 @@ pub fn underflow_term(n: usize, per_node: f64, growth: f64) -> f64 {
     if n == 0 {
         return 0.0;
     }
+    if let Some(term) = underflow_term_near_one(n, per_node, growth) {
+        return term;
+    }
     let g = growth.max(1.0);
     let nodes = (n as f64) * (n as f64 + 1.0) / 2.0;
     // a factor at least 1, then one product with 2^−1074: if that lands in the subnormal
     // range its rounding is absolute, and the step up covers it
     let factor = per_node * nodes * g.powi(n as i32 - 1) * (1.0 + 1e-9);
     next_up(factor * ETA)
+}
+
+/// [`underflow_term`] without its `powi` when the growth is at most `1 + 2^−48` (every
+/// `t ∈ [0, 1]`: `|s| + |t|` is 1 within a few ulps), the count `K = per_node · n(n+1)/2`
+/// a whole number up to `10^8` and `n ≤ 2^12`: the same bits. Why: the factor computed
+/// there, `K · g^{n−1} · (1 + 10^−9)`, lies in `(K, K + 1/2)` (`g^{n−1} ≤ 1 + 2^−35` and
+/// the roundings add less than `K · 2^−50`), and its product with `2^−1074` is subnormal, so
+/// it rounds to `K · 2^−1074`, whose next float up is `(K + 1) · 2^−1074`. A unit test
+/// compares both ways on every degree up to 600.
+#[inline]
+fn underflow_term_near_one(n: usize, per_node: f64, growth: f64) -> Option<f64> {
+    const NEAR_ONE: f64 = 1.0 + 1.0 / (1u64 << 48) as f64;
+    let nodes = (n as f64) * (n as f64 + 1.0) / 2.0;
+    let count = per_node * nodes;
+    let whole = count == count.trunc() && (0.0..=1e8).contains(&count);
+    (growth <= NEAR_ONE && n <= 1 << 12 && whole).then(|| f64::from_bits(count as u64 + 1))
 }
 
 /// `a + b` rounded up (for nonnegative `a`, `b`): the exact sum lies between the rounded one
@@ -173,13 +215,25 @@ pub fn abs_bernstein_sum(b: &[f64], t: f64) -> f64 {
 /// the triangle's working space.
 pub(crate) fn abs_bernstein_sum_in(buf: &mut [f64], t: f64) -> f64 {
     let n = buf.len() - 1;
-    let (s, rho) = one_minus(t);
-    // |1 − t| ≤ |s| + |ρ|, and a float de Casteljau on nonnegative inputs is within γ_2n
-    let (s, t) = (next_up(s.abs() + rho.abs()), t.abs());
+    let (s, t) = abs_factors(t);
     for x in buf.iter_mut() {
         *x = x.abs();
     }
-    let sum = convex_triangle(buf, s, t);
+    abs_sum_rounded_up(convex_triangle(buf, s, t), n, s, t)
+}
+
+/// The factors `(s', |t|)` of the triangle of [`abs_bernstein_sum_in`]: `s' ≥ |1 − t|`.
+#[inline(always)]
+pub(crate) fn abs_factors(t: f64) -> (f64, f64) {
+    let (s, rho) = one_minus(t);
+    // |1 − t| ≤ |s| + |ρ|, and a float de Casteljau on nonnegative inputs is within γ_2n
+    (next_up(s.abs() + rho.abs()), t.abs())
+}
+
+/// `Σ |b_i| |B_i^n(t)|` rounded up from the float triangle's `sum` on `|b_i|` with the
+/// factors `s, t` of [`abs_factors`].
+#[inline(always)]
+pub(crate) fn abs_sum_rounded_up(sum: f64, n: usize, s: f64, t: f64) -> f64 {
     add_up(inflate(sum, 2 * n), underflow_term(n, 1.0, add_up(s, t)))
 }
 
@@ -286,6 +340,36 @@ pub fn surface_a_priori_bound(net: &[Vec<f64>], u: f64, v: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_gamma_table_is_gamma() {
+        for k in 0..2048 {
+            assert_eq!(gamma(k).to_bits(), gamma_computed(k).to_bits(), "γ_{k}");
+        }
+        assert_eq!(gamma(1 << 60), f64::INFINITY);
+    }
+
+    /// The shortcut of `underflow_term` gives the bits of the full computation.
+    #[test]
+    fn the_underflow_shortcut_is_the_full_term() {
+        fn full(n: usize, per_node: f64, growth: f64) -> f64 {
+            let g = growth.max(1.0);
+            let nodes = (n as f64) * (n as f64 + 1.0) / 2.0;
+            next_up(per_node * nodes * g.powi(n as i32 - 1) * (1.0 + 1e-9) * ETA)
+        }
+        let mut near_one = vec![0.5, 1.0 - UNIT_ROUNDOFF, 1.0, 1.0 + 1.0 / (1u64 << 48) as f64];
+        near_one.extend((1..=4).map(|k| 1.0 + k as f64 * f64::EPSILON));
+        near_one.extend([0.0, 0.3, 0.5, 0.7, 1e-310, 1.0].iter().map(|t| level_growth(*t)));
+        for n in (1..=600).chain([1000, 2000, 4096]) {
+            for per_node in [1.0, 3.0, 0.5, 2.5] {
+                for &g in &near_one {
+                    let term = underflow_term(n, per_node, g);
+                    assert_eq!(term.to_bits(), full(n, per_node, g).to_bits(), "n {n}, {per_node}, {g}");
+                }
+            }
+        }
+        assert_eq!(underflow_term(3, 1.0, 2.0), full(3, 1.0, 2.0));
+    }
 
     #[test]
     fn gamma_is_rounded_up() {

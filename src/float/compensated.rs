@@ -12,8 +12,8 @@
 //! [`super::STACK_COEFFICIENTS`] coefficients: no heap allocation.
 
 use super::casteljau::{
-    abs_bernstein_sum_in, add_up, gamma, inflate, level_growth, mul_up, next_up, one_minus, underflow_term, ETA,
-    UNIT_ROUNDOFF,
+    abs_bernstein_sum_in, abs_factors, abs_sum_rounded_up, add_up, convex_triangle, gamma, inflate, level_growth,
+    mul_up, next_up, one_minus, underflow_term, ETA, UNIT_ROUNDOFF,
 };
 use super::eft::{two_product, two_sum, ExactRange, Factor};
 use super::scratch::{with_copy, with_scratch, with_scratch2};
@@ -31,25 +31,53 @@ use super::scratch::{with_copy, with_scratch, with_scratch2};
 /// assert!((res - exact).abs() < 1e-13 * exact && bound < 1e-30); // 13 digits
 /// assert!((de_casteljau(&b, t) - exact).abs() > 100.0 * exact); // none
 /// ```
+#[inline]
 pub fn compensated_de_casteljau(b: &[f64], t: f64) -> (f64, f64) {
     let n = b.len() - 1;
-    let (hi, lo) = compensated_parts(
-        n + 1,
-        |hi, lo| {
-            hi.copy_from_slice(b);
-            lo.fill(0.0);
-        },
-        t,
-    );
+    // low degrees on arrays of constant length: unrolled, in registers (the same steps)
+    let (hi, lo, abs_triangle) = match b.len() {
+        2 => compensated_with_abs(&mut [0.0; 2], &mut [0.0; 2], &mut [0.0; 2], b, t),
+        3 => compensated_with_abs(&mut [0.0; 3], &mut [0.0; 3], &mut [0.0; 3], b, t),
+        4 => compensated_with_abs(&mut [0.0; 4], &mut [0.0; 4], &mut [0.0; 4], b, t),
+        5 => compensated_with_abs(&mut [0.0; 5], &mut [0.0; 5], &mut [0.0; 5], b, t),
+        len => with_scratch2(len, 0.0, |hi, lo| {
+            with_scratch(len, 0.0, |abs| compensated_with_abs(hi, lo, abs, b, t))
+        }),
+    };
     let res = hi + lo;
     if n == 0 {
         return (res, 0.0);
     }
-    let abs_sum = with_copy(b, |buf| abs_bernstein_sum_in(buf, t));
+    let (s_abs, t_abs) = abs_factors(t);
+    let abs_sum = abs_sum_rounded_up(abs_triangle, n, s_abs, t_abs);
     (
         res,
         compensated_bound(res, n, abs_sum, 0.0, compensated_underflow(n, t)),
     )
+}
+
+/// The compensated triangle of `b` in `hi`, `lo` (run again by [`two_product`] when a value
+/// left the fast triangle's range) and the float triangle of [`abs_bernstein_sum_in`] on
+/// `|b_i|` in `abs`, all as long as `b`: `(hi, lo, the |b_i| triangle's value)`.
+#[inline(always)]
+fn compensated_with_abs(hi: &mut [f64], lo: &mut [f64], abs: &mut [f64], b: &[f64], t: f64) -> (f64, f64, f64) {
+    let fill = |hi: &mut [f64], lo: &mut [f64]| {
+        hi.copy_from_slice(b);
+        lo.fill(0.0);
+    };
+    fill(hi, lo);
+    let (hi_part, lo_part) = match compensated_triangle(hi, lo, t) {
+        Some(parts) => parts,
+        None => {
+            fill(hi, lo);
+            compensated_triangle_any(hi, lo, t)
+        }
+    };
+    for (x, y) in abs.iter_mut().zip(b) {
+        *x = y.abs();
+    }
+    let (s_abs, t_abs) = abs_factors(t);
+    (hi_part, lo_part, convex_triangle(abs, s_abs, t_abs))
 }
 
 /// The underflow term of compensated de Casteljau: per node, the two TwoProduct errors may

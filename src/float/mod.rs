@@ -21,6 +21,7 @@ pub use casteljau::{
     a_priori_bound, a_priori_index, abs_bernstein_sum, de_casteljau, de_casteljau_running, gamma, gamma_exact,
     next_down, next_up, rational_a_priori_bound, surface_a_priori_bound, underflow_term, UNIT_ROUNDOFF,
 };
+pub(crate) use casteljau::{add_up, gamma_computed};
 pub use compensated::{
     compensated_a_priori_bound, compensated_de_casteljau, compensated_derivative, compensated_surface,
 };

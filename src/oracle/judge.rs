@@ -9,7 +9,7 @@ use crate::float::{
     horner_bound, lerp_bound, lerp_de_casteljau, nearest_f64, power_coefficients, rational_a_priori_bound,
     scale_pow2_up, surface_a_priori_bound, ulp_distance, ulp_error, ulp_exponent, UlpError, UNIT_ROUNDOFF,
 };
-use crate::interval::{interval_de_casteljau, Interval};
+use crate::interval::{tight_interval_de_casteljau, Interval};
 use crate::point::Point;
 use crate::rational::RationalBezierCurve;
 use crate::scalar::Scalar;
@@ -304,7 +304,7 @@ pub fn float_eval(
             Some(
                 coords
                     .iter()
-                    .map(|b| interval_de_casteljau(b, tf))
+                    .map(|b| tight_interval_de_casteljau(b, tf))
                     .collect::<Result<Vec<_>>>()?,
             )
         }

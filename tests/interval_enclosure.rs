@@ -1,0 +1,124 @@
+//! `interval_de_casteljau`'s two-triangle enclosure (`t ∈ [0, 1]`) holds the exact value
+//! of the curve on its float inputs, decided in rationals, on random curves of every scale:
+//! subnormal, ordinary, near `f64::MAX`, mixed, with signed zeros and cancellation; its width
+//! stays within the a priori bound's order, `6(n + 1)u max|b_i|`, and non-finite inputs or
+//! no coefficients are errors, never a panic.
+
+#[path = "support/rng.rs"]
+mod rng;
+
+use casteljau::float::{eval_dyadic, UNIT_ROUNDOFF};
+use casteljau::{interval_de_casteljau, tight_interval_de_casteljau};
+use casteljau::{BezierCurve, BigRational, Scalar};
+use rng::Rng;
+
+fn exact_value(b: &[f64], t: f64) -> BigRational {
+    let curve: BezierCurve<BigRational> =
+        BezierCurve::from_coords(b.iter().map(|x| vec![BigRational::from_f64(*x).unwrap()]).collect()).unwrap();
+    eval_dyadic(&curve, &BigRational::from_f64(t).unwrap())
+        .unwrap()
+        .coords()[0]
+        .clone()
+}
+
+fn coefficient(rng: &mut Rng, scale: f64) -> f64 {
+    const SPECIALS: [f64; 9] = [
+        0.0,
+        -0.0,
+        5e-324,
+        -1e-310,
+        f64::MIN_POSITIVE,
+        1.0,
+        -0.5,
+        f64::MAX,
+        -f64::MAX,
+    ];
+    if rng.next() % 8 == 0 {
+        SPECIALS[(rng.next() % SPECIALS.len() as u64) as usize]
+    } else {
+        (2.0 * rng.unit() - 1.0) * scale
+    }
+}
+
+#[test]
+fn the_enclosure_holds_the_exact_value_at_every_scale() {
+    let mut rng = Rng(24);
+    let ts = [0.0, 1.0, 0.5, 0.3, 1e-310, 5e-324, 0.9999999999999999, 1e-20, 0.7500001];
+    let mut wider = 0.0f64;
+    for case in 0..4_000 {
+        let n = [0, 1, 2, 3, 5, 10, 20, 40, 63, 64][case % 10];
+        let scale = match case % 6 {
+            0 => 1.0,
+            1 => 1e-300,
+            2 => 1e300,
+            3 => 1e-310,
+            4 => f64::MAX,
+            _ => 2f64.powi((rng.next() % 2000) as i32 - 1000),
+        };
+        let b: Vec<f64> = (0..=n).map(|_| coefficient(&mut rng, scale)).collect();
+        let t = if case % 3 == 0 {
+            ts[(rng.next() % ts.len() as u64) as usize]
+        } else {
+            rng.unit()
+        };
+        let e = interval_de_casteljau(&b, t).unwrap();
+        let exact = exact_value(&b, t);
+        assert!(e.contains(&exact), "{e} misses the exact value: {b:?} at {t:e}");
+        assert!(e.lo().is_finite() && e.hi().is_finite(), "{e}: {b:?} at {t:e}");
+        // against the tight interval (printed): wider where most of its operations are exact;
+        // the absolute slack skips subnormal widths
+        let tight = tight_interval_de_casteljau(&b, t).unwrap();
+        let slack = 1e-300 * f64::MIN_POSITIVE;
+        if tight.width() > slack {
+            wider = wider.max(e.width() / tight.width());
+        }
+        let abs_sum: f64 = b.iter().map(|x| x.abs() / 4.0).fold(0.0, f64::max) * 4.0;
+        let reach = 6.0 * (n as f64 + 1.0) * UNIT_ROUNDOFF * abs_sum;
+        assert!(
+            e.width() <= 2.0 * reach + 1e-320 || !reach.is_finite(),
+            "{e} is wider than 6(n+1)u max|b_i|: {b:?} at {t:e}"
+        );
+    }
+    println!("widest against the tight interval: {wider:.2}×");
+}
+
+#[test]
+fn a_cancellation_near_a_root_is_still_enclosed() {
+    // (t − 3/4)^3 near its triple root: the enclosure straddles zero, narrowly
+    let b = [-0.421875, 0.140625, -0.046875, 0.015625];
+    for k in 0..400 {
+        let t = 0.75 + (k as f64 - 200.0) * 1e-9;
+        let e = interval_de_casteljau(&b, t).unwrap();
+        assert!(e.contains(&exact_value(&b, t)), "{e} at {t}");
+        assert!(e.width() < 1e-15, "{e} at {t}");
+    }
+}
+
+#[test]
+fn bad_input_is_an_error() {
+    for b in [
+        vec![1.0, f64::NAN],
+        vec![f64::INFINITY, 1.0, 2.0],
+        vec![0.0, f64::NEG_INFINITY],
+        vec![f64::NAN],
+    ] {
+        for t in [0.0, 0.3, 1.0, 1.5, -0.25] {
+            assert!(interval_de_casteljau(&b, t).is_err(), "{b:?} at {t}");
+        }
+    }
+    assert!(interval_de_casteljau(&[1.0, 2.0], f64::NAN).is_err());
+    assert!(interval_de_casteljau(&[1.0, 2.0], f64::INFINITY).is_err());
+    assert!(interval_de_casteljau(&[], 0.3).is_err());
+    assert!(tight_interval_de_casteljau(&[], 0.3).is_err());
+}
+
+#[test]
+fn outside_the_unit_interval_it_is_the_tight_interval() {
+    let b = [0.1, -2.5, 3.25, 1e-3];
+    for t in [-0.25, 1.5, -1e-300] {
+        assert_eq!(
+            interval_de_casteljau(&b, t).unwrap(),
+            tight_interval_de_casteljau(&b, t).unwrap()
+        );
+    }
+}
