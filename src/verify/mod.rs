@@ -42,6 +42,7 @@
 //   operations callable in expressions);
 // - hypergeometric terms: `hyper`, `pieces` (zero on every piece of a domain), `ansatz`,
 //   `telescope` (recurrences by creative telescoping), `beta` (integrals over [0, 1]);
+//   their shared per-claim work `budget` comes first of all (it imports nothing of verify);
 // - a claim's context: `objects`, `context`, `names`;
 // - provers: `sampling` (degree bounds and exact evaluation), `expansion` (symbolic expansion,
 //   `implies`), `identity` (the identity goal), `translate`, `recurrence` and `symbolic` (for
@@ -52,6 +53,7 @@ mod alg;
 mod ansatz;
 mod argue;
 mod beta;
+mod budget;
 mod checked;
 pub mod claims;
 mod context;
