@@ -2,9 +2,9 @@
 //! a sum, digits of the literals, closed and open ranges, integer symbols — and every theorem
 //! at growing degrees. Each must end with its verdict (`proved`, `proved_in_range`) or with
 //! one line naming the limit that refused it, and nothing may run past the stated budget:
-//! a claim takes at most about 2 s of CPU on an idle core (docs/limits.md). The test allows
-//! [`CPU_BOUND`] = 5 s of the thread's own CPU time, for a loaded 2-core machine (shared
-//! caches slow a thread's CPU time too, by well under 2×).
+//! the test allows [`CPU_BOUND`] = 5 s of the thread's own CPU time per claim (the largest
+//! seen is 1.3 s; the margin is for a loaded 2-core machine, whose shared caches slow a
+//! thread's CPU time too).
 //!
 //! Run with `--nocapture` to see the table of sizes, outcomes and times.
 
