@@ -35,6 +35,7 @@
 // The modules, bottom up: each imports only modules named before it in this list (checked
 // by `tests/layers.rs`).
 //
+// - the work `budget` a proof's searches share (it imports nothing of verify);
 // - the data: `expr` (expression trees), `checked` (verdicts, methods, outcomes), `claims`
 //   (the claim file format);
 // - expressions: `alg` (the algebras evaluated in), `poly` (rational functions), `parse`,
@@ -42,7 +43,6 @@
 //   operations callable in expressions);
 // - hypergeometric terms: `hyper`, `pieces` (zero on every piece of a domain), `ansatz`,
 //   `telescope` (recurrences by creative telescoping), `beta` (integrals over [0, 1]);
-//   their shared per-claim work `budget` comes first of all (it imports nothing of verify);
 // - a claim's context: `objects`, `context`, `names`;
 // - provers: `sampling` (degree bounds and exact evaluation), `expansion` (symbolic expansion,
 //   `implies`), `identity` (the identity goal), `translate`, `recurrence` and `symbolic` (for
