@@ -178,13 +178,17 @@ pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str) -> Result<Expr> {
         let mut a: Vec<Vec<BigRational>> = rows.into_values().collect();
         let (h, w) = (a.len(), width);
         let nonzero = a.iter().flatten().filter(|x| !x.is_zero()).count();
-        work = work.saturating_add(elimination_work(&a, w));
+        let system_work = elimination_work(&a, w);
+        work = work.saturating_add(system_work);
         if work > MAX_ANSATZ_WORK {
             stopped = Some(format!(
                 "its linear system of {h} equations in {w} unknowns ({nonzero} nonzero coefficients) passes MAX_ANSATZ_WORK = {MAX_ANSATZ_WORK} (nonzero coefficients × pivots × words, over all degrees)"
             ));
             break;
         }
+        // The search's own limit first (its message names it), then the claim's.
+        sym.budget
+            .draw("work of the WZ certificate search", system_work, MAX_ANSATZ_WORK)?;
         let pivots = row_reduce(&mut a)?;
         searched = Some(deg);
         if pivots.contains(&(width - 1)) {

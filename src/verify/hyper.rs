@@ -161,6 +161,8 @@ pub struct Symbols {
     pub names: Rc<[String]>,
     /// How many of them are integer symbols.
     pub ints: usize,
+    /// The claim's work budget, shared by every search of the proof (clones share it).
+    pub budget: Rc<super::budget::Budget>,
 }
 
 impl Symbols {
@@ -171,6 +173,7 @@ impl Symbols {
         Symbols {
             names,
             ints: ints.len(),
+            budget: Rc::default(),
         }
     }
     /// The index of a name.

@@ -35,6 +35,7 @@
 // The modules, bottom up: each imports only modules named before it in this list (checked
 // by `tests/layers.rs`).
 //
+// - the work `budget` a proof's searches share (it imports nothing of verify);
 // - the data: `expr` (expression trees), `checked` (verdicts, methods, outcomes), `claims`
 //   (the claim file format);
 // - expressions: `alg` (the algebras evaluated in), `poly` (rational functions), `parse`,
@@ -53,6 +54,7 @@ mod alg;
 mod ansatz;
 mod argue;
 mod beta;
+mod budget;
 mod checked;
 pub mod claims;
 mod context;

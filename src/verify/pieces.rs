@@ -304,6 +304,12 @@ pub fn prove_pieces(
 
 type Found = Option<(String, String)>;
 
+/// The work the pieces of one symbolic proof may take: Σ over the sums of similar terms of the
+/// products of their coefficients' sizes in machine words (each product of two words of
+/// rational coefficients is a few microseconds: a big-integer gcd), drawn from the claim's
+/// budget (this much is all of it).
+pub const MAX_PIECES_WORK: u128 = 500_000;
+
 fn prove_rec(
     sym: &Symbols,
     lin: Lin,
@@ -400,7 +406,13 @@ fn classes_cancel(sym: &Symbols, live: &[&Term], place: &str, log: &mut Vec<Step
         let mut placed = false;
         for (first, total, size) in classes.iter_mut() {
             if let Some(r) = ratio(sym, t, first)? {
-                *total = total.add(&t.coef.mul(&r));
+                // Each product of polynomials costs about the product of their sizes in words.
+                let words = |f: &RatFunc| f.num.words() + f.den.words();
+                let term = t.coef.mul(&r);
+                let cost = words(&t.coef) * words(&r) + words(total) * words(&term);
+                sym.budget
+                    .draw("work of the pieces of a symbolic proof", cost, MAX_PIECES_WORK)?;
+                *total = total.add(&term);
                 *size += 1;
                 placed = true;
                 break;

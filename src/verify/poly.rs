@@ -78,6 +78,14 @@ impl Poly {
     pub fn len(&self) -> usize {
         self.terms.len()
     }
+    /// The machine words of its coefficients (numerators and denominators), at least one per
+    /// term: what one pass over it costs.
+    pub fn words(&self) -> u128 {
+        self.terms
+            .values()
+            .map(|c| u128::from((c.numer().bits() + c.denom().bits()) / 64 + 1))
+            .sum()
+    }
     /// The constant value, when the polynomial is constant.
     pub fn as_constant(&self) -> Option<BigRational> {
         match self.terms.len() {

@@ -382,7 +382,17 @@ fn prepare<T: Exact>(
     let size = 1 + needs.iter().copied().max().unwrap_or(0) as u128 + object_degree as u128;
     // Numbers grow with the degree: a literal of L bits raised to degree d has d·L bits, and
     // one product of such numbers costs about (d·L/64)² word operations.
-    let words = (size * u128::from(literal_bits(lhs).max(literal_bits(rhs))) / 64).max(1);
+    // The sample points k/d (d: the largest degree needed) have about 2·log2(d + 1) bits, as
+    // much a number size as the literals: a value of degree `size` at them has `size` times
+    // as many bits.
+    let largest_need = needs.iter().copied().max().unwrap_or(0) as u64;
+    let point_bits = if needs.is_empty() {
+        0
+    } else {
+        2 * u64::from(u64::BITS - (largest_need + 1).leading_zeros())
+    };
+    let bits = literal_bits(lhs).max(literal_bits(rhs)).max(point_bits);
+    let words = (size * u128::from(bits) / 64).max(1);
     let work = (total as u128)
         .saturating_mul(2)
         .saturating_mul(size * size)

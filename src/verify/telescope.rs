@@ -241,8 +241,9 @@ fn cofactors(sym: &Symbols, dens: &[&Poly]) -> Result<Vec<Poly>> {
 /// How much cheaper a modular pass is counted than exact elimination.
 const MODULAR_DISCOUNT: u128 = 32;
 
-/// Adds `cost` to the search's work, or stops it at [`MAX_TELESCOPE_WORK`].
-fn charge(work: &mut u128, cost: u128, what: &str) -> Result<()> {
+/// Adds `cost` to the search's work (and draws it from the claim's budget), or stops it at
+/// [`MAX_TELESCOPE_WORK`].
+fn charge(sym: &Symbols, work: &mut u128, cost: u128, what: &str) -> Result<()> {
     *work = work.saturating_add(cost);
     if *work > MAX_TELESCOPE_WORK {
         return Err(Error::TooLarge {
@@ -252,7 +253,9 @@ fn charge(work: &mut u128, cost: u128, what: &str) -> Result<()> {
             limit: MAX_TELESCOPE_WORK.to_string(),
         });
     }
-    Ok(())
+    // The search's own limit first (its message names it), then the claim's.
+    sym.budget
+        .draw("work of creative telescoping", cost, MAX_TELESCOPE_WORK)
 }
 
 /// The solution of one linear system `Σ x_i cols_i = given` (each a polynomial, denominators
@@ -287,7 +290,7 @@ fn solve(
     let system = format!("a system of {h} equations in {w} unknowns");
     // Most systems of the search have no solution: a pass modulo a prime, far cheaper than
     // exact elimination, says so first.
-    charge(work, estimate / MODULAR_DISCOUNT, &system)?;
+    charge(sym, work, estimate / MODULAR_DISCOUNT, &system)?;
     let Some(basis) = modular::may_solve(&a, given.is_some(), first_free) else {
         return Ok(None);
     };
@@ -295,13 +298,13 @@ fn solve(
     // rows over Q too); a solution of them is checked on every row, else all rows are used.
     let mut sub: Vec<Vec<BigRational>> = basis.iter().map(|&r| a[r].clone()).collect();
     let sub_estimate = estimate * (sub.len() as u128 + 1) / (h as u128 + 1);
-    charge(work, sub_estimate, &system)?;
+    charge(sym, work, sub_estimate, &system)?;
     if let Some(x) = exact(&mut sub, given.is_some(), first_free)? {
         if a.iter().all(|row| satisfied(row, &x)) {
             return Ok(Some(x));
         }
     }
-    charge(work, estimate, &system)?;
+    charge(sym, work, estimate, &system)?;
     exact(&mut a, given.is_some(), first_free)
 }
 
@@ -486,7 +489,7 @@ pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str, coefficients: Coefficient
                             .zip(&sh.r)
                             .map(|(c, r)| size(c) * size(&r.num))
                             .sum::<u128>();
-                charge(&mut work, 16 * build, &format!("building the system of order {order}, coefficient degree {dp}, certificate degree {d_cert}")).map_err(|e| {
+                charge(sym, &mut work, 16 * build, &format!("building the system of order {order}, coefficient degree {dp}, certificate degree {d_cert}")).map_err(|e| {
                     none(format!("{reached}; stopped at order {order}, coefficient degree {dp}, certificate degree {d_cert}: {e}"))
                 })?;
                 let mut cols = Vec::with_capacity(unknowns);
