@@ -301,9 +301,7 @@ fn split_statement(chars: &[char]) -> Vec<(Part, String)> {
                 (Part::Math, len)
             } else if MATH_NAMES.contains(&word.as_str()) {
                 (if called { Part::Math } else { Part::Prose }, len)
-            } else if len >= 3 {
-                (Part::Prose, len)
-            } else if spaced && SHORT_WORDS.contains(&word.as_str()) {
+            } else if len >= 3 || (spaced && SHORT_WORDS.contains(&word.as_str())) {
                 (Part::Prose, len)
             } else if bounded && SHORT_WORDS.contains(&word.as_str()) {
                 (Part::ShortWord { both_sides: false }, len)
