@@ -221,7 +221,8 @@ footer { margin-top: 2rem; color: var(--muted); font-size: 0.85rem; }
   pre { font-size: 7pt; }
   figure { break-inside: avoid; page-break-inside: avoid; margin-top: 0.3rem; }
   /* figures at most 145 mm high, their labels and legends at 16 px so that they print at 9 pt or
-     more; a legend line made longer by the larger font runs on past the drawing's right edge */
+     more (labels are placed for this size: figure/place.rs); a legend line made longer by the
+     larger font runs on past the drawing's right edge */
   figure svg { max-height: 145mm; border: none; font-size: 16px; overflow: visible; }
   figure svg text[font-size="13"] { font-size: 16px; }
   figcaption { font-size: 8.5pt; }
@@ -548,15 +549,32 @@ fn claim_section(
     Ok(())
 }
 
+/// Math names whose `_` starts a subscript although they are words (`lim_{r→∞}`).
+const SCRIPTED_NAMES: &[&str] = &["lim", "max", "min", "sum", "sup", "inf", "det", "deg"];
+
+/// Whether the `_` at `i` joins a library name (`elevate_by`, `BezierCurve::split_at`):
+/// after a word of three or more letters that is not a math name.
+fn in_identifier(chars: &[char], i: usize) -> bool {
+    let word: String = chars[..i]
+        .iter()
+        .rev()
+        .take_while(|c| c.is_ascii_alphanumeric())
+        .collect();
+    let word: String = word.chars().rev().collect();
+    word.chars().filter(|c| c.is_ascii_alphabetic()).count() >= 3 && !SCRIPTED_NAMES.contains(&word.as_str())
+}
+
 /// A statement as HTML: `_x`, `_{…}` become subscripts and `^x`, `^{…}`, `^(…)` superscripts
-/// (the texts' and claim files' notation); everything else is escaped text.
+/// (the texts' and claim files' notation); a `_` inside a library name
+/// (`split_at`) stays; everything else is escaped text.
 pub fn formula(text: &str) -> String {
     let chars: Vec<char> = text.chars().collect();
     let mut out = String::new();
     let mut i = 0;
     while i < chars.len() {
         let c = chars[i];
-        if (c == '_' || c == '^') && i + 1 < chars.len() && i > 0 && !chars[i - 1].is_whitespace() {
+        let literal = c == '_' && in_identifier(&chars, i);
+        if (c == '_' || c == '^') && !literal && i + 1 < chars.len() && i > 0 && !chars[i - 1].is_whitespace() {
             let tag = if c == '_' { "sub" } else { "sup" };
             let (body, next) = script_body(&chars, i + 1);
             if !body.is_empty() {

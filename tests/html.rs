@@ -108,9 +108,17 @@ fn every_claim_is_on_its_page_with_statement_verdict_and_certificate() {
         assert!(has_class(&section, vt.class), "{}", o.id);
         let statement = section.descendants().find(|n| has_class(n, "statement")).unwrap();
         assert_eq!(statement.attribute("title"), Some(o.statement.as_str()), "{}", o.id);
-        // the rendered statement keeps every character but the script markers
+        // the rendered statement keeps every character but the script markers; a `_` inside a
+        // library name is a character (`elevate_by`), not a subscript
         let plain: String = o.statement.chars().filter(|c| !"_^{}".contains(*c)).collect();
-        assert_eq!(text_of(&statement), plain, "{}", o.id);
+        let rendered = text_of(&statement);
+        assert_eq!(rendered.replace('_', ""), plain, "{}", o.id);
+        if o.id == "000-8-library" {
+            assert!(
+                rendered.contains("BezierCurve::elevate_by vs elevate_steps"),
+                "{rendered}"
+            );
+        }
         let cert = section.descendants().find(|n| has_class(n, "certificate")).unwrap();
         assert_eq!(text_of(&cert), o.certificate, "{}", o.id);
         assert!(text_of(&section).contains(&vt.scope), "{}", o.id);

@@ -1,6 +1,7 @@
 //! Labels as a reader sees them: in every figure `casteljau figure` draws and every figure of
 //! the HTML report, no label's box crosses a drawn line or curve, covers a point marker or
-//! overlaps another label.
+//! overlaps another label — at the SVG's font size, and for the report's figures also at the
+//! larger size its print stylesheet sets, which must print at 9 pt or more on A4.
 //!
 //! The SVG is read back as text (roxmltree) and checked with its own geometry: a label's box
 //! from its character count at 0.6 em per character (DejaVu Sans's digits and capitals are
@@ -23,9 +24,10 @@ struct Label {
     bounds: Box2,
 }
 
-/// The drawn segments, dots and labels of one `<svg>` element.
-fn read_svg(svg: roxmltree::Node) -> (Vec<Box2>, Vec<Dot>, Vec<Label>) {
-    let font: f64 = svg.attribute("font-size").unwrap_or("13").parse().unwrap();
+/// The drawn segments, dots and labels of one `<svg>` element, its labels at `font` pixels
+/// (default: the SVG's own font size).
+fn read_svg(svg: roxmltree::Node, font: Option<f64>) -> (Vec<Box2>, Vec<Dot>, Vec<Label>) {
+    let font: f64 = font.unwrap_or_else(|| svg.attribute("font-size").unwrap_or("13").parse().unwrap());
     let (mut segments, mut dots, mut labels) = (Vec::new(), Vec::new(), Vec::new());
     for n in svg.descendants().filter(|n| n.is_element()) {
         // arrowheads are drawn in <defs> in their own coordinates
@@ -122,9 +124,9 @@ fn crosses(s: Box2, b: Box2) -> bool {
     })
 }
 
-/// Every overlap in one figure, described.
-fn overlaps(svg: roxmltree::Node) -> Vec<String> {
-    let (segments, dots, labels) = read_svg(svg);
+/// Every overlap in one figure with its labels at `font` pixels, described.
+fn overlaps(svg: roxmltree::Node, font: Option<f64>) -> Vec<String> {
+    let (segments, dots, labels) = read_svg(svg, font);
     let mut found = Vec::new();
     for (i, l) in labels.iter().enumerate() {
         let b = l.bounds;
@@ -155,7 +157,7 @@ fn the_checker_sees_an_overlap() {
         <text class="label" x="38" y="42">b</text><circle cx="100" cy="80" r="3"/>
         <text class="label" x="96" y="84">c</text></svg>"#;
     let doc = roxmltree::Document::parse(svg).unwrap();
-    let found = overlaps(doc.root_element());
+    let found = overlaps(doc.root_element(), None);
     assert_eq!(
         found,
         [
@@ -168,7 +170,7 @@ fn the_checker_sees_an_overlap() {
 
 #[test]
 fn no_label_overlaps_a_line_a_point_or_a_label_in_any_figure() {
-    let mut svgs: Vec<(String, String)> = FigureKind::ALL
+    let svgs: Vec<(String, String)> = FigureKind::ALL
         .into_iter()
         .map(|k| {
             let svg = FigureRequest::new(k).figure().unwrap().to_svg().unwrap();
@@ -178,7 +180,8 @@ fn no_label_overlaps_a_line_a_point_or_a_label_in_any_figure() {
     let proofs = vec![PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("proofs")];
     let report = prove_paths(&proofs, &mut |_, _, _| {}).unwrap();
     let pages = render_pages(&report, &load_paths(&proofs).unwrap()).unwrap();
-    let mut report_figures = 0;
+    let print_font = print_figure_font(&pages[0].1);
+    let mut report_svgs = Vec::new();
     for (name, html) in &pages {
         let opts = roxmltree::ParsingOptions {
             allow_dtd: true,
@@ -186,17 +189,66 @@ fn no_label_overlaps_a_line_a_point_or_a_label_in_any_figure() {
         };
         let doc = roxmltree::Document::parse_with_options(html, opts).unwrap();
         for svg in doc.descendants().filter(|n| n.has_tag_name("svg")) {
-            report_figures += 1;
             let id = svg.attribute("id").unwrap_or("?");
-            svgs.push((format!("{name}#{id}"), html[svg.range()].to_string()));
+            report_svgs.push((format!("{name}#{id}"), html[svg.range()].to_string()));
         }
     }
-    assert!(report_figures >= 15, "only {report_figures} figures in the report");
+    assert!(
+        report_svgs.len() >= 15,
+        "only {} figures in the report",
+        report_svgs.len()
+    );
     let mut bad = Vec::new();
     for (name, svg) in &svgs {
         let doc = roxmltree::Document::parse(svg).unwrap();
-        bad.extend(overlaps(doc.root_element()).into_iter().map(|o| format!("{name}: {o}")));
+        bad.extend(
+            overlaps(doc.root_element(), None)
+                .into_iter()
+                .map(|o| format!("{name}: {o}")),
+        );
     }
-    assert!(bad.is_empty(), "{} SVGs checked:\n{}", svgs.len(), bad.join("\n"));
-    eprintln!("{} SVGs checked, no overlaps", svgs.len());
+    for (name, svg) in &report_svgs {
+        let doc = roxmltree::Document::parse(svg).unwrap();
+        let root = doc.root_element();
+        bad.extend(overlaps(root, None).into_iter().map(|o| format!("{name}: {o}")));
+        bad.extend(
+            overlaps(root, Some(print_font))
+                .into_iter()
+                .map(|o| format!("{name} (printed): {o}")),
+        );
+        let printed_pt = print_font * print_scale(root) * 0.75;
+        if printed_pt < 9.0 {
+            bad.push(format!("{name}: its text prints at {printed_pt:.1} pt"));
+        }
+    }
+    assert!(
+        bad.is_empty(),
+        "{} SVGs checked ({} of the report also as printed):\n{}",
+        svgs.len() + report_svgs.len(),
+        report_svgs.len(),
+        bad.join("\n")
+    );
+    eprintln!(
+        "{} figures of `casteljau figure` and {} of the report checked, no overlaps (the report's also at the print size, {print_font} px)",
+        svgs.len(),
+        report_svgs.len()
+    );
+}
+
+/// The font size the print stylesheet gives figures (`figure svg { … font-size: 16px … }`
+/// inside `@media print`), in pixels.
+fn print_figure_font(page: &str) -> f64 {
+    let print = &page[page.find("@media print").expect("a print stylesheet")..];
+    let rule = &print[print.find("figure svg {").expect("a print rule for figures")..];
+    let rule = &rule[..rule.find('}').unwrap()];
+    let size = rule.split("font-size:").nth(1).expect("a print font size for figures");
+    size.trim().split("px").next().unwrap().parse().unwrap()
+}
+
+/// How much a figure is scaled when printed on A4: to the width between the page margins,
+/// 190 mm = 718 px, less the claim box's padding and border (693 px, as measured in
+/// Chromium's PDF), and to the print stylesheet's `max-height: 145mm` (548 px).
+fn print_scale(svg: roxmltree::Node) -> f64 {
+    let size = |a: &str| svg.attribute(a).unwrap().parse::<f64>().unwrap();
+    (693.0 / size("width")).min(548.0 / size("height")).min(1.0)
 }

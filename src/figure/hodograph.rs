@@ -23,7 +23,9 @@ pub fn hodograph<T: Scalar>(curve: &BezierCurve<T>) -> Result<Figure> {
     let inv_n = T::one().checked_div(&T::from_usize(n))?;
     let mut fig = Figure::new(format!("Hodograph and end tangents, degree {n}"));
 
-    let mut left = Panel::new("the curve and its end tangents b′(0)/n, b′(1)/n");
+    // two panels side by side, each at most 410 px wide: the figure stays under 924 px, so
+    // that printed on A4 (693 px wide) its 16 px print font is still 9 pt
+    let mut left = Panel::new("the curve and its end tangents b′(0)/n, b′(1)/n").with_max_size(410.0, 375.0);
     let pts = curve.points();
     let drawn = pts.iter().map(planar).collect::<Result<Vec<_>>>()?;
     left.polyline(&drawn, false, Style::line(POLYGON, 1.2), "polygon", None)?;
@@ -55,7 +57,7 @@ pub fn hodograph<T: Scalar>(curve: &BezierCurve<T>) -> Result<Figure> {
     )?;
     fig.add_panel(left);
 
-    let mut right = Panel::new("the hodograph b′(t) from the origin");
+    let mut right = Panel::new("the hodograph b′(t) from the origin").with_max_size(410.0, 375.0);
     let origin = Point::origin(curve.dim());
     let o = planar(&origin)?;
     let dpts = d.points();

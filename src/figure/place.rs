@@ -11,8 +11,13 @@
 //! ([`MAX_TESTS`]: past it, labels stay where the figure asked), so that a figure with
 //! thousands of crowded labels is still quick.
 
-/// The font size of labels, in pixels (the SVG's default).
-pub(crate) const LABEL_FONT: f64 = 13.0;
+/// The font size labels are placed for first, in pixels: the print stylesheet's 16 px
+/// (html.rs), not the SVG's 13 px, so that a label clear of its neighbours on screen stays
+/// clear when printed larger (its 13 px glyphs lie inside its 16 px box: same anchor and
+/// baseline). Where no position is free at that size, one free at [`SVG_LABEL_FONT`] is taken.
+pub(crate) const LABEL_FONT: f64 = 16.0;
+/// The font size labels are drawn at in the SVG, in pixels.
+const SVG_LABEL_FONT: f64 = 13.0;
 /// Estimated advance of one character, as a fraction of the font size: DejaVu Sans's widest
 /// digits and capitals are about 0.7 em, most letters 0.6 em or less.
 pub(crate) const CHAR_EM: f64 = 0.62;
@@ -69,13 +74,18 @@ pub(crate) struct Placed {
 
 /// The estimated box `[left, top, right, bottom]` of `text` written at `(x, y)`.
 pub(crate) fn label_box(text: &str, x: f64, y: f64, anchor: Anchor) -> [f64; 4] {
-    let w = text.chars().count() as f64 * CHAR_EM * LABEL_FONT;
+    label_box_at(LABEL_FONT, text, x, y, anchor)
+}
+
+/// [`label_box`] at `font` pixels.
+fn label_box_at(font: f64, text: &str, x: f64, y: f64, anchor: Anchor) -> [f64; 4] {
+    let w = text.chars().count() as f64 * CHAR_EM * font;
     let left = match anchor {
         Anchor::Start => x,
         Anchor::Middle => x - w / 2.0,
         Anchor::End => x - w,
     };
-    [left, y - ASCENT_EM * LABEL_FONT, left + w, y + DESCENT_EM * LABEL_FONT]
+    [left, y - ASCENT_EM * font, left + w, y + DESCENT_EM * font]
 }
 
 /// What labels must avoid, indexed by grid cell over the frame (cells outside it are
@@ -202,6 +212,35 @@ impl Obstacles {
         seen.len()
     }
 
+    /// The candidate touching fewest things with the label at `font` pixels (the first free
+    /// one), its cost and box.
+    fn best_position(&self, l: &Wanted, font: f64, frame: [f64; 4]) -> (usize, Placed, [f64; 4]) {
+        let mut best: Option<(usize, Placed, [f64; 4])> = None;
+        let candidates = candidates(l, font);
+        let tried = if self.tests.get() > MAX_TESTS {
+            1
+        } else {
+            candidates.len()
+        };
+        for c in candidates.into_iter().take(tried) {
+            let b = label_box_at(font, l.text, c.x, c.y, c.anchor);
+            let outside = b[0] < frame[0] || b[1] < frame[1] || b[2] > frame[2] || b[3] > frame[3];
+            let penalty = if outside { OUTSIDE } else { 0 };
+            let least = best.as_ref().map_or(usize::MAX, |(least, _, _)| *least);
+            if penalty >= least {
+                continue;
+            }
+            let cost = penalty + self.hits(b, (least - penalty).min(MOST_COUNTED));
+            if best.as_ref().is_none_or(|(least, _, _)| cost < *least) {
+                best = Some((cost, c, b));
+            }
+            if cost == 0 {
+                break;
+            }
+        }
+        best.expect("at least one candidate")
+    }
+
     /// Places the labels in order, each avoiding what is drawn and the labels before it, and
     /// keeping inside `frame` (`[left, top, right, bottom]`) when it can.
     pub(crate) fn place(&mut self, labels: &[Wanted]) -> Vec<Placed> {
@@ -209,30 +248,14 @@ impl Obstacles {
         labels
             .iter()
             .map(|l| {
-                let mut best: Option<(usize, Placed, [f64; 4])> = None;
-                let candidates = candidates(l);
-                let tried = if self.tests.get() > MAX_TESTS {
-                    1
-                } else {
-                    candidates.len()
-                };
-                for c in candidates.into_iter().take(tried) {
-                    let b = label_box(l.text, c.x, c.y, c.anchor);
-                    let outside = b[0] < frame[0] || b[1] < frame[1] || b[2] > frame[2] || b[3] > frame[3];
-                    let penalty = if outside { OUTSIDE } else { 0 };
-                    let least = best.as_ref().map_or(usize::MAX, |(least, _, _)| *least);
-                    if penalty >= least {
-                        continue;
-                    }
-                    let cost = penalty + self.hits(b, (least - penalty).min(MOST_COUNTED));
-                    if best.as_ref().is_none_or(|(least, _, _)| cost < *least) {
-                        best = Some((cost, c, b));
-                    }
-                    if cost == 0 {
-                        break;
+                let (cost, mut placed, mut b) = self.best_position(l, LABEL_FONT, frame);
+                if cost > 0 {
+                    // crowded at the print size: a position free at the drawn size, if any
+                    let (screen_cost, p, screen_box) = self.best_position(l, SVG_LABEL_FONT, frame);
+                    if screen_cost == 0 {
+                        (placed, b) = (p, screen_box);
                     }
                 }
-                let (_, placed, b) = best.expect("at least one candidate");
                 self.boxed(b);
                 placed
             })
@@ -242,10 +265,10 @@ impl Obstacles {
 
 /// The positions tried for a label, the one asked for first, then twelve directions around
 /// the anchor at each of [`RADII`]: the box lies beyond the distance in that direction.
-fn candidates(l: &Wanted) -> Vec<Placed> {
+fn candidates(l: &Wanted, font: f64) -> Vec<Placed> {
     let [x, y] = l.at;
-    let w = l.text.chars().count() as f64 * CHAR_EM * LABEL_FONT;
-    let h = (ASCENT_EM + DESCENT_EM) * LABEL_FONT;
+    let w = l.text.chars().count() as f64 * CHAR_EM * font;
+    let h = (ASCENT_EM + DESCENT_EM) * font;
     let asked = Placed {
         x: x + l.dx,
         y: y + l.dy,
@@ -267,7 +290,7 @@ fn candidates(l: &Wanted) -> Vec<Placed> {
             };
             out.push(Placed {
                 x: tx,
-                y: top + ASCENT_EM * LABEL_FONT,
+                y: top + ASCENT_EM * font,
                 anchor,
             });
         }

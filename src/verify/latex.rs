@@ -114,6 +114,7 @@ fn text_symbol(ch: char) -> Option<String> {
         'ü' => accent("\"", 'u'),
         'ö' => accent("\"", 'o'),
         'ä' => accent("\"", 'a'),
+        '§' => "\\S{}".into(),
         '—' => "---".into(),
         '–' => "--".into(),
         '‘' => "`".into(),
@@ -208,45 +209,110 @@ fn plain(t: &str) -> String {
     out.replace("--", "-{}-")
 }
 
-/// Names that stay in a formula although they are words.
+/// Names that stay in a formula although they are words, when used as functions (`sum(`,
+/// `max_i`); elsewhere (`and sum to 1`) they are words.
 const MATH_NAMES: &[&str] = &[
     "sin", "cos", "tan", "exp", "log", "det", "max", "min", "dot", "diff", "inv", "sqrt", "rows", "sum", "lim", "deg",
 ];
 /// Short English words that a formula never contains as a product of variables.
 const SHORT_WORDS: &[&str] = &[
-    "is", "of", "an", "at", "on", "to", "be", "in", "by", "if", "or", "as", "so", "we", "it",
+    "is", "of", "an", "at", "on", "to", "be", "in", "by", "if", "or", "as", "so", "we", "it", "de", "vs", "up",
 ];
+/// Abbreviations whose dots and letters are prose.
+const ABBREVIATIONS: &[&str] = &["e.g.", "i.e."];
 
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Part {
     Math,
     Prose,
     Japanese,
+    /// A library name such as `BezierCurve::elevate_by`: set in `\texttt`.
+    Code,
     /// Spaces and punctuation: math between two formula parts, prose otherwise.
     Neutral,
+    /// A short word (`at`, `a`) whose neighbours decide: prose beside prose.
+    ShortWord {
+        both_sides: bool,
+    },
+    /// A `-` between two letters: a hyphen after a prose word, a minus otherwise.
+    Dash,
 }
 
-/// A statement as printed: its formulas in math mode (`$…$`), its words as text, its Japanese
-/// in `CJK` environments.
-pub fn statement(t: &str) -> String {
-    // split into parts
-    let chars: Vec<char> = t.chars().collect();
+/// Letters of words, including the accented ones of names such as Bézier.
+fn is_word_char(ch: char) -> bool {
+    ch.is_ascii_alphabetic() || matches!(ch, 'é' | 'è' | 'ü' | 'ö' | 'ä')
+}
+
+/// The length of an identifier starting at `i` (`elevate_by`, `BezierCurve::split_at`): a
+/// word of three or more letters, not a math name, continued by `_` or `::` and a letter.
+fn identifier_len(chars: &[char], i: usize, word_len: usize, word: &str) -> Option<usize> {
+    if word_len < 3 || MATH_NAMES.contains(&word) {
+        return None;
+    }
+    let rest = &chars[i + word_len..];
+    let continues = match rest {
+        ['_', c, ..] | [':', ':', c, ..] => c.is_ascii_alphabetic(),
+        _ => false,
+    };
+    if !continues {
+        return None;
+    }
+    let mut len = word_len;
+    while let Some(&c) = chars.get(i + len) {
+        let double_colon = c == ':' && chars.get(i + len + 1) == Some(&':');
+        if double_colon {
+            len += 2;
+        } else if c.is_ascii_alphanumeric() || c == '_' {
+            len += 1;
+        } else {
+            break;
+        }
+    }
+    Some(len)
+}
+
+/// A statement split into parts, each word decided by itself where it can be.
+fn split_statement(chars: &[char]) -> Vec<(Part, String)> {
     let mut parts: Vec<(Part, String)> = Vec::new();
     let mut i = 0;
+    let boundary_before = |i: usize| i == 0 || matches!(chars[i - 1], ' ' | '(');
+    let boundary_after = |k: usize| chars.get(k).is_none_or(|c| matches!(c, ' ' | ')' | ',' | ':' | ';'));
     while i < chars.len() {
         let ch = chars[i];
-        let (part, len) = if is_cjk(ch) {
+        let abbreviation = ABBREVIATIONS
+            .iter()
+            .find(|a| chars[i..].iter().take(a.len()).copied().eq(a.chars()) && boundary_before(i));
+        let (part, len) = if let Some(a) = abbreviation {
+            (Part::Prose, a.len())
+        } else if is_cjk(ch) {
             (Part::Japanese, chars[i..].iter().take_while(|&&c| is_cjk(c)).count())
-        } else if ch.is_ascii_alphabetic() {
-            let len = chars[i..].iter().take_while(|c| c.is_ascii_alphabetic()).count();
+        } else if is_word_char(ch) {
+            let len = chars[i..].iter().take_while(|&&c| is_word_char(c)).count();
             let word: String = chars[i..i + len].iter().collect();
-            let spaced = |k: Option<&char>| k.is_none_or(|c| *c == ' ');
             let scripted = i > 0 && matches!(chars[i - 1], '_' | '^');
-            let prose = (len >= 3 && !MATH_NAMES.contains(&word.as_str()))
-                || (SHORT_WORDS.contains(&word.as_str())
-                    && spaced(i.checked_sub(1).and_then(|k| chars.get(k)))
-                    && spaced(chars.get(i + len)));
-            (if prose && !scripted { Part::Prose } else { Part::Math }, len)
+            let called = chars.get(i + len).is_some_and(|c| matches!(c, '(' | '_' | '^' | '{'));
+            // between spaces (the old rule) a listed short word is prose; after `(` or before
+            // `)` its neighbours decide
+            let spaced = (i == 0 || chars[i - 1] == ' ') && chars.get(i + len).is_none_or(|c| *c == ' ');
+            let bounded = boundary_before(i) && boundary_after(i + len);
+            if let Some(id_len) = identifier_len(chars, i, len, &word).filter(|_| !scripted) {
+                (Part::Code, id_len)
+            } else if scripted {
+                (Part::Math, len)
+            } else if MATH_NAMES.contains(&word.as_str()) {
+                (if called { Part::Math } else { Part::Prose }, len)
+            } else if len >= 3 || (spaced && SHORT_WORDS.contains(&word.as_str())) {
+                (Part::Prose, len)
+            } else if bounded && SHORT_WORDS.contains(&word.as_str()) {
+                (Part::ShortWord { both_sides: false }, len)
+            } else if bounded && word == "a" {
+                (Part::ShortWord { both_sides: true }, len)
+            } else {
+                (Part::Math, len)
+            }
+        } else if ch == '-' && i > 0 && is_word_char(chars[i - 1]) && chars.get(i + 1).is_some_and(|&c| is_word_char(c))
+        {
+            (Part::Dash, 1)
         } else if matches!(ch, ' ' | ',' | ';' | ':' | '.' | '(' | ')') {
             (Part::Neutral, 1)
         } else {
@@ -254,10 +320,52 @@ pub fn statement(t: &str) -> String {
         };
         let piece: String = chars[i..i + len].iter().collect();
         match parts.last_mut() {
-            Some((p, s)) if *p == part => s.push_str(&piece),
+            Some((p, s)) if *p == part && matches!(part, Part::Math | Part::Japanese | Part::Neutral) => {
+                s.push_str(&piece)
+            }
             _ => parts.push((part, piece)),
         }
         i += len;
+    }
+    parts
+}
+
+/// Decides the short words, dashes and neutral parts from their neighbours.
+fn resolve_parts(mut parts: Vec<(Part, String)>) -> Vec<(Part, String)> {
+    let neighbour = |parts: &[(Part, String)], k: usize, step: isize| -> Option<Part> {
+        let mut j = k as isize + step;
+        while let Some((p, _)) = usize::try_from(j).ok().and_then(|j| parts.get(j)) {
+            if *p != Part::Neutral {
+                return Some(*p);
+            }
+            j += step;
+        }
+        None
+    };
+    // short words: prose beside prose (one side, or both for `a`), spreading along a phrase
+    loop {
+        let mut changed = false;
+        for k in 0..parts.len() {
+            if let Part::ShortWord { both_sides } = parts[k].0 {
+                let prose = |p: Option<Part>| p == Some(Part::Prose);
+                let (before, after) = (prose(neighbour(&parts, k, -1)), prose(neighbour(&parts, k, 1)));
+                if (both_sides && before && after) || (!both_sides && (before || after)) {
+                    parts[k].0 = Part::Prose;
+                    changed = true;
+                }
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+    for k in 0..parts.len() {
+        parts[k].0 = match parts[k].0 {
+            Part::ShortWord { .. } => Part::Math,
+            Part::Dash if k > 0 && parts[k - 1].0 == Part::Prose => Part::Prose,
+            Part::Dash => Part::Math,
+            p => p,
+        };
     }
     // neutral parts between two formula parts belong to the formula
     for k in 0..parts.len() {
@@ -273,12 +381,19 @@ pub fn statement(t: &str) -> String {
     let mut merged: Vec<(Part, String)> = Vec::new();
     for (p, s) in parts {
         match merged.last_mut() {
-            Some((q, m)) if *q == p => m.push_str(&s),
+            Some((q, m)) if *q == p && p != Part::Code => m.push_str(&s),
             _ => merged.push((p, s)),
         }
     }
+    merged
+}
+
+/// A statement as printed: its formulas in math mode (`$…$`), its words as text, library
+/// names in `\texttt`, its Japanese in `CJK` environments.
+pub fn statement(t: &str) -> String {
+    let chars: Vec<char> = t.chars().collect();
     let mut out = String::new();
-    for (p, s) in merged {
+    for (p, s) in resolve_parts(split_statement(&chars)) {
         match p {
             Part::Japanese => {
                 let _ = write!(out, "\\begin{{CJK}}{{UTF8}}{{min}}{s}\\end{{CJK}}");
@@ -289,6 +404,9 @@ pub fn statement(t: &str) -> String {
                 out.push_str(&" ".repeat(lead.min(1)));
                 let _ = write!(out, "${}$", formula(s.trim()));
                 out.push_str(&" ".repeat(trail.min(1)));
+            }
+            Part::Code => {
+                let _ = write!(out, "\\texttt{{{}}}", plain(&s));
             }
             _ => out.push_str(&plain(&s)),
         }
@@ -369,13 +487,15 @@ fn push_math_char(ch: char, out: &mut String) {
 pub(super) fn explain(f: &ClaimFile, c: &Claim, checked: &Checked, range_bound: Option<&str>) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "{PREAMBLE_NOTE}");
+    // the claim file on the heading's line may break after its folder (a long id and path
+    // overfill the line otherwise); the source on its own line, as in the text output
+    let path = plain(&f.path.display().to_string()).replace('/', "/\\allowbreak ");
     let _ = writeln!(
         s,
-        "\\paragraph{{Claim \\texttt{{{}}}}} (\\texttt{{{}}}, {})\\\\",
-        plain(&c.id),
-        plain(&f.path.display().to_string()),
-        text(&c.source)
+        "\\paragraph{{Claim \\texttt{{{}}}}} (\\texttt{{{path}}})\\\\",
+        plain(&c.id)
     );
+    let _ = writeln!(s, "Source: {}\\\\", text(&c.source));
     let _ = writeln!(s, "Statement: {}\\\\", statement(&c.statement));
     let _ = writeln!(
         s,
@@ -393,7 +513,7 @@ pub(super) fn explain(f: &ClaimFile, c: &Claim, checked: &Checked, range_bound: 
         let _ = writeln!(s, "\\noindent {}: {}\n", text(key.trim()), text(value.trim()));
     }
     if let Some(r) = range_bound {
-        let _ = writeln!(s, "Range-bound: {}\n", text(r));
+        let _ = writeln!(s, "\\noindent Range-bound: {}\n", text(r));
     }
     let _ = writeln!(
         s,
@@ -426,7 +546,13 @@ pub(super) fn explain(f: &ClaimFile, c: &Claim, checked: &Checked, range_bound: 
         let _ = writeln!(s, "\\end{{itemize}}");
     }
     if let Some(scheme) = worked_scheme(c, checked, evals.first().copied()) {
-        s.push_str(&scheme.to_latex());
+        let mut array = scheme.to_latex();
+        if scheme.degree() >= 4 {
+            // five or more columns of points (the widest: 3-d, degree 4) overfill the text width
+            // at TeX's 5 pt column padding; 2 pt keeps them inside and the columns apart
+            array = array.replacen("\\[\\begin{array}", "\\[\\arraycolsep=2pt\\begin{array}", 1);
+        }
+        s.push_str(&array);
         if let Some(sum) = evals.first().and_then(|e| worked_sum(c, &scheme, e)) {
             let _ = writeln!(s, "{}", text(&sum));
         }
@@ -455,7 +581,21 @@ mod tests {
         assert_eq!(text("see --explain x: -32, b-1"), "see -{}-explain x: $-$32, b-1");
         assert_eq!(statement("(from (7) = 0)"), "(from ($7) = 0$)");
         assert_eq!(statement("M⁻¹ xᵀ₁₂"), "$M^{-1} x^{T}_{12}$");
-        assert_eq!(statement("elevate_by ok"), "elevate$_by ok$");
+        // library names are code, not a word with a subscript
+        assert_eq!(statement("elevate_by, once"), "\\texttt{elevate\\_by}, once");
+        assert_eq!(
+            statement("(BezierCurve::split_at)"),
+            "(\\texttt{BezierCurve::split\\_at})"
+        );
+        // words beside formulas: short words after `(`, `sum` not called, hyphens, names
+        assert_eq!(statement("x = 1 (at the corner)"), "$x = 1$ (at the corner)");
+        assert_eq!(statement("B_i(t) and sum to 1"), "$B_i(t$) and sum to $1$");
+        assert_eq!(statement("sum(i, 0, n, b)"), "$\\mathrm{sum}(i, 0, n, b$)");
+        assert_eq!(statement("non-zero weights, n-k"), "non-zero weights, $n-k$");
+        assert_eq!(statement("the Bézier points"), "the B\\'{e}zier points");
+        assert_eq!(statement("as a curve, a(t)"), "as a curve, $a(t$)");
+        assert_eq!(statement("e.g. x(t) = t"), "e.g. $x(t) = t$");
+        assert_eq!(text("§2"), "\\S{}2");
         assert_eq!(text("✓"), "[U+2713]");
         assert_eq!(text("Bézier 曲線"), "B\\'{e}zier \\begin{CJK}{UTF8}{min}曲線\\end{CJK}");
     }
