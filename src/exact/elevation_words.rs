@@ -394,35 +394,65 @@ fn pair_big(a: &BigRational, alpha: u32, b: &BigRational, beta: u32, total: &Big
 pub(crate) fn elevate_pairwise(points: &[Point<BigRational>]) -> Vec<Point<BigRational>> {
     let n = points.len() - 1;
     let total = u32::try_from(n + 1).expect("degrees are limited far below 2^32");
+    let mut out = Vec::with_capacity(n + 2);
+    out.push(points[0].clone());
+    out.extend(combine_neighbours(points, |i| (i, total - i), total, false));
+    out.push(points[n].clone());
+    out
+}
+
+/// The first derivative curve's points `n (b_{i+1} − b_i)`, each coordinate reduced on its
+/// own: the same combination of neighbours as elevation, with weights `−n` and `n`.
+pub(crate) fn derivative_pairwise(points: &[Point<BigRational>]) -> Vec<Point<BigRational>> {
+    let n = u32::try_from(points.len() - 1).expect("degrees are limited far below 2^32");
+    combine_neighbours(points, |_| (n, n), 1, true)
+}
+
+/// `(±α_i b_{i−1} + β_i b_i) / total` for `i = 1..=n`, coordinate by coordinate (the sign
+/// of the first term is `−` with `negate_first`).
+fn combine_neighbours(
+    points: &[Point<BigRational>],
+    weights: impl Fn(u32) -> (u32, u32),
+    total: u32,
+    negate_first: bool,
+) -> Vec<Point<BigRational>> {
+    let n = points.len() - 1;
     let total_big = BigInt::from(total);
     let dim = points[0].dim();
     let words: Vec<Option<WordFraction>> = points
         .iter()
         .flat_map(|p| p.coords().iter().map(WordFraction::of))
         .collect();
-    // The word path's small moduli need n + 1 < 2^16, which the degree limit keeps.
+    // The word path's small moduli need weights below 2^16, which the degree limit keeps.
     let small = u16::try_from(total).ok().map(SmallModulus::new);
     let gcds = denominator_gcds((0..n * dim).map(|j| match (small, words[j], words[j + dim]) {
         (Some(_), Some(x), Some(y)) => Some((x.den, y.den)),
         _ => None,
     }));
-    let mut out = Vec::with_capacity(n + 2);
-    out.push(points[0].clone());
+    let mut out = Vec::with_capacity(n);
     for i in 1..=n {
-        let (alpha, beta) = (i as u32, total - i as u32);
-        let weights = small.map(|total| (SmallModulus::new(alpha as u16), SmallModulus::new(beta as u16), total));
+        let (alpha, beta) = weights(i as u32);
+        let moduli = match (small, u16::try_from(alpha), u16::try_from(beta)) {
+            (Some(total), Ok(a), Ok(b)) => Some((SmallModulus::new(a), SmallModulus::new(b), total)),
+            _ => None,
+        };
         let (before, here) = (points[i - 1].coords(), points[i].coords());
         let coords = (0..dim).map(|k| {
             let j = (i - 1) * dim + k;
-            let fast = match (weights, words[j], words[j + dim]) {
-                (Some((alpha, beta, total)), Some(x), Some(y)) => pair_words(x, &alpha, y, &beta, &total, gcds[j]),
+            let fast = match (moduli, words[j], words[j + dim]) {
+                (Some((alpha, beta, total)), Some(mut x), Some(y)) => {
+                    x.negative ^= negate_first;
+                    pair_words(x, &alpha, y, &beta, &total, gcds[j])
+                }
                 _ => None,
             };
-            fast.unwrap_or_else(|| pair_big(&before[k], alpha, &here[k], beta, &total_big))
+            fast.unwrap_or_else(|| {
+                let first = if negate_first { -&before[k] } else { before[k].clone() };
+                pair_big(&first, alpha, &here[k], beta, &total_big)
+            })
         });
         out.push(Point::from_valid(coords));
     }
-    out.push(points[n].clone());
     out
 }
 
