@@ -5,7 +5,9 @@
 //!
 //! The group `exact_big` is the case no shortcut flatters: planar curves of degree 20, 200
 //! and 1000 with random 30-digit rational coordinates, each over its own denominator, and a
-//! random 20-digit parameter; `eval`, `split_at` and `elevate` as users call them. It
+//! random 20-digit parameter; `eval`, `split_at` and `elevate` as users call them, and up
+//! to degree 200 `derivative`, `derivative_at`, `to_power` (degree 20 only), the rational
+//! curve's `eval` and the surface's `eval` on the same kind of numbers. It
 //! measures CPU time (of this thread), not wall time, so that the ratios to the Python
 //! peers of `scripts/exact_big.py`, which draws the same numbers, hold on a shared machine.
 //!
