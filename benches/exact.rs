@@ -5,15 +5,18 @@
 //!
 //! The group `exact_big` is the case no shortcut flatters: planar curves of degree 20, 200
 //! and 1000 with random 30-digit rational coordinates, each over its own denominator, and a
-//! random 20-digit parameter; `eval`, `split_at` and `elevate` as users call them. It
+//! random 20-digit parameter; `eval`, `split_at` and `elevate` as users call them, and up
+//! to degree 200 `derivative`, `derivative_at`, `to_power` (degree 20 only), the rational
+//! curve's `eval` and the surface's `eval` on the same kind of numbers. It
 //! measures CPU time (of this thread), not wall time, so that the ratios to the Python
 //! peers of `scripts/exact_big.py`, which draws the same numbers, hold on a shared machine.
 //!
 //! `cargo bench --bench exact` (add `-- --quick` for a fast look).
 
 use casteljau::exact::{BernsteinTable, SmallRational};
-use casteljau::{BezierCurve, BigInt, BigRational, Scalar};
+use casteljau::{BezierCurve, BezierSurface, BigInt, BigRational, Point, RationalBezierCurve, Scalar};
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
+use num_traits::Signed;
 use std::time::{Duration, Instant};
 
 /// A planar curve of degree `n` with small integer control points.
@@ -136,18 +139,15 @@ impl SplitMix {
     }
 }
 
-/// The `exact_big` case of degree `n`: a planar curve whose coordinates are 30-digit
-/// numerators (random signs) over 30-digit denominators, and a 20-digit `t = p/q` in (0, 1).
-fn big_case(n: usize) -> (BezierCurve<BigRational>, BigRational) {
-    let mut rng = SplitMix(1000 + n as u64);
-    let coordinate = |rng: &mut SplitMix| {
-        let magnitude = BigInt::from(rng.digits(30));
-        let numerator = if rng.next() & 1 == 1 { -magnitude } else { magnitude };
-        BigRational::new(numerator, BigInt::from(rng.digits(30)))
-    };
-    let coords: Vec<Vec<BigRational>> = (0..=n)
-        .map(|_| vec![coordinate(&mut rng), coordinate(&mut rng)])
-        .collect();
+/// A 30-digit numerator (random sign) over a 30-digit denominator.
+fn thirty_digit_fraction(rng: &mut SplitMix) -> BigRational {
+    let magnitude = BigInt::from(rng.digits(30));
+    let numerator = if rng.next() & 1 == 1 { -magnitude } else { magnitude };
+    BigRational::new(numerator, BigInt::from(rng.digits(30)))
+}
+
+/// A 20-digit `p/q` in (0, 1).
+fn twenty_digit_parameter(rng: &mut SplitMix) -> BigRational {
     let (mut p, mut q) = (rng.digits(20), rng.digits(20));
     if p > q {
         std::mem::swap(&mut p, &mut q);
@@ -155,8 +155,44 @@ fn big_case(n: usize) -> (BezierCurve<BigRational>, BigRational) {
     if p == q {
         q += 1;
     }
-    let curve = BezierCurve::from_coords(coords).expect("valid curve");
-    (curve, BigRational::new(p.into(), q.into()))
+    BigRational::new(p.into(), q.into())
+}
+
+/// The `exact_big` case of degree `n`: a planar curve whose coordinates are 30-digit
+/// numerators (random signs) over 30-digit denominators, and a 20-digit `t = p/q` in (0, 1).
+fn big_case(n: usize) -> (BezierCurve<BigRational>, BigRational) {
+    let mut rng = SplitMix(1000 + n as u64);
+    let coords: Vec<Vec<BigRational>> = (0..=n)
+        .map(|_| vec![thirty_digit_fraction(&mut rng), thirty_digit_fraction(&mut rng)])
+        .collect();
+    let t = twenty_digit_parameter(&mut rng);
+    (BezierCurve::from_coords(coords).expect("valid curve"), t)
+}
+
+/// The rational curve of degree `n`: the points of [`big_case`] and positive 30-digit
+/// weights over 30-digit denominators, drawn from their own stream.
+fn big_rational_case(n: usize) -> (RationalBezierCurve<BigRational>, BigRational) {
+    let (curve, t) = big_case(n);
+    let mut rng = SplitMix(2000 + n as u64);
+    let weights = (0..=n).map(|_| Signed::abs(&thirty_digit_fraction(&mut rng))).collect();
+    let curve = RationalBezierCurve::new(curve.into_points(), weights).expect("nonzero weights");
+    (curve, t)
+}
+
+/// The surface of degrees `(m, m)`: a net of planar 30-digit fractions, and 20-digit `u`, `v`.
+fn big_surface_case(m: usize) -> (BezierSurface<BigRational>, BigRational, BigRational) {
+    let mut rng = SplitMix(3000 + m as u64);
+    let net: Vec<Vec<Point<BigRational>>> = (0..=m)
+        .map(|_| {
+            (0..=m)
+                .map(|_| {
+                    Point::new(vec![thirty_digit_fraction(&mut rng), thirty_digit_fraction(&mut rng)]).expect("2D")
+                })
+                .collect()
+        })
+        .collect();
+    let (u, v) = (twenty_digit_parameter(&mut rng), twenty_digit_parameter(&mut rng));
+    (BezierSurface::new(net).expect("valid net"), u, v)
 }
 
 /// CPU time of this thread so far (the scheduler's count, in nanoseconds); wall time where
@@ -198,6 +234,34 @@ fn exact_big(c: &mut Criterion) {
         }
         group.bench_with_input(BenchmarkId::new("elevate", n), &curve, |b, c| {
             b.iter_custom(|iters| cpu_time_of(iters, || c.elevate().expect("degree within limit")))
+        });
+        if n > 200 {
+            continue;
+        }
+        // The other public exact operations on the same inputs (scripts/exact_big.py has a
+        // gmpy2 counterpart for each).
+        group.bench_with_input(BenchmarkId::new("derivative", n), &curve, |b, c| {
+            b.iter_custom(|iters| cpu_time_of(iters, || c.derivative(1).expect("n ≥ 1")))
+        });
+        group.bench_with_input(BenchmarkId::new("derivative_at", n), &curve, |b, c| {
+            b.iter_custom(|iters| cpu_time_of(iters, || c.derivative_at(1, black_box(&t)).expect("n ≥ 1")))
+        });
+        // to_power differences the points on BigRational, a gcd per step: about 15 s per
+        // call at degree 200 (docs/performance.md), too long for a bench run.
+        if n <= 20 {
+            group.bench_with_input(BenchmarkId::new("to_power", n), &curve, |b, c| {
+                b.iter_custom(|iters| cpu_time_of(iters, || c.to_power().expect("exact")))
+            });
+        }
+        let (rational, t) = big_rational_case(n);
+        group.bench_with_input(BenchmarkId::new("rational_eval", n), &rational, |b, c| {
+            b.iter_custom(|iters| cpu_time_of(iters, || c.eval(black_box(&t)).expect("positive weights")))
+        });
+    }
+    for m in [10usize, 20] {
+        let (surface, u, v) = big_surface_case(m);
+        group.bench_with_input(BenchmarkId::new("surface_eval", m), &surface, |b, s| {
+            b.iter_custom(|iters| cpu_time_of(iters, || s.eval(black_box(&u), black_box(&v))))
         });
     }
     group.finish();

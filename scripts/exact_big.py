@@ -10,6 +10,14 @@ Python peers, each timed in CPU time (time.process_time):
                  (lcm of the denominators, t = p/q as integers), one mpq at the end;
   gmpy2 mpq      de Casteljau's steps and the elevation formula (7) on mpq;
   fractions      the same steps on fractions.Fraction.
+The other public exact operations, up to degree 200, each against its plain gmpy2 form:
+  derivative     n (b_{i+1} - b_i) on mpq;
+  derivative_at  the nested sum of the differences over their common denominator;
+  to_power       a_j = C(n,j) sum_i (-1)^(j-i) C(j,i) x_i on integers over the common
+                 denominator;
+  rational_eval  nested sums of the homogeneous coordinates w_i b_i and of w_i, divided;
+  surface_eval   on nets of degrees (10, 10) and (20, 20): each row's nested sum at v,
+                 then the column's at u.
 Every Python result is checked against the others before it counts.
 
 casteljau's figures are criterion's CPU-time estimates (mean and its 95% interval) from
@@ -41,6 +49,10 @@ MASK = (1 << 64) - 1
 # de Casteljau's steps at degree 1000 run for minutes (on mpq, Fraction and in the bench):
 # left out, and said so.
 FRACTION_SPLIT_MAX_DEGREE = 200
+# derivative, derivative_at, to_power and rational_eval: benched up to this degree.
+OTHER_OPS_MAX_DEGREE = 200
+# surface_eval on nets of degrees (m, m).
+SURFACE_DEGREES = (10, 20)
 
 
 class SplitMix:
@@ -80,6 +92,34 @@ def big_case(n):
     return points, (p, q)
 
 
+def twenty_digit_parameter(rng):
+    p, q = rng.digits(20), rng.digits(20)
+    if p > q:
+        p, q = q, p
+    if p == q:
+        q += 1
+    return p, q
+
+
+def thirty_digit_fraction(rng):
+    magnitude = rng.digits(30)
+    numerator = -magnitude if rng.next() & 1 == 1 else magnitude
+    return numerator, rng.digits(30)
+
+
+def rational_weights(n):
+    """Positive 30-digit weights over 30-digit denominators, as in benches/exact.rs."""
+    rng = SplitMix(2000 + n)
+    return [(abs(a), d) for a, d in (thirty_digit_fraction(rng) for _ in range(n + 1))]
+
+
+def surface_case(m):
+    """A net of (m+1)^2 planar 30-digit fractions and 20-digit u, v."""
+    rng = SplitMix(3000 + m)
+    net = [[[thirty_digit_fraction(rng), thirty_digit_fraction(rng)] for _ in range(m + 1)] for _ in range(m + 1)]
+    return net, twenty_digit_parameter(rng), twenty_digit_parameter(rng)
+
+
 def cpu_seconds(f, budget=2.0, max_runs=20):
     """Median, min and max CPU time of f over runs repeated within about `budget` seconds
     (one run when a single one takes longer)."""
@@ -112,6 +152,81 @@ def nested_gmpy2(coords, p, q):
         c = c * (n - i + 1) // i * p
         acc = acc * s + c * x[i]
     return mpq(acc, den * q**n)
+
+
+def over_common_denominator(coords):
+    """Integers x_i over one denominator D (the lcm) for (numerator, denominator) pairs."""
+    den = mpz(1)
+    for _, d in coords:
+        den = gmpy2.lcm(den, d)
+    return [mpz(a) * (den // d) for a, d in coords], den
+
+
+def nested_integers(x, p, q):
+    """Σ C(n,i) p^i s^(n-i) x_i for integers x_i, s = q - p (the numerator over q^n)."""
+    n = len(x) - 1
+    p, q = mpz(p), mpz(q)
+    s = q - p
+    acc, c = x[0], mpz(1)
+    for i in range(1, n + 1):
+        c = c * (n - i + 1) // i * p
+        acc = acc * s + c * x[i]
+    return acc
+
+
+def pairs(values):
+    return [(v.numerator, v.denominator) for v in values]
+
+
+def derivative_mpq(b):
+    """The hodograph's control points n (b_{i+1} - b_i) on mpq."""
+    n = len(b) - 1
+    return [n * (b[i + 1] - b[i]) for i in range(n)]
+
+
+def derivative_at_gmpy2(coords, p, q):
+    """b'(t) of one coordinate: n Σ Δx_i B_i^{n-1}(t) over D q^(n-1), by the nested sum."""
+    x, den = over_common_denominator(coords)
+    n = len(x) - 1
+    diffs = [x[i + 1] - x[i] for i in range(n)]
+    return mpq(n * nested_integers(diffs, p, q), den * mpz(q) ** (n - 1))
+
+
+def to_power_gmpy2(coords):
+    """a_j = C(n,j) Σ_i (-1)^(j-i) C(j,i) b_i over the common denominator, on integers."""
+    x, den = over_common_denominator(coords)
+    n = len(x) - 1
+    out = []
+    cn = mpz(1)
+    for j in range(n + 1):
+        acc, cj = mpz(0), mpz(1)
+        for i in range(j, -1, -1):
+            acc += cj * x[i] if (j - i) % 2 == 0 else -cj * x[i]
+            cj = cj * i // (j - i + 1)
+        out.append(mpq(cn * acc, den))
+        cn = cn * (n - j) // (j + 1)
+    return out
+
+
+def rational_eval_gmpy2(points, weights, p, q):
+    """x(t) = Σ w_i b_i B_i(t) / Σ w_i B_i(t): nested sums of the homogeneous coordinates,
+    each over its common denominator (q^n cancels)."""
+    w = [mpq(a, d) for a, d in weights]
+    big_w = nested_gmpy2(weights, p, q)
+    out = []
+    for k in range(2):
+        h = [w[i] * mpq(*points[i][k]) for i in range(len(points))]
+        out.append(nested_gmpy2(pairs(h), p, q) / big_w)
+    return out
+
+
+def surface_eval_gmpy2(net, u, v):
+    """b(u, v): each row's nested sum at v, then the column's at u."""
+    out = []
+    for k in range(2):
+        rows = [nested_gmpy2([pt[k] for pt in row], *v) for row in net]
+        out.append(nested_gmpy2(pairs(rows), *u))
+    return out
 
 
 def casteljau_split(b, t):
@@ -219,6 +334,22 @@ def main():
                 ("fractions", lambda: [elevate(c, Fraction(1)) for c in as_frac]),
             ],
         }
+        if n <= OTHER_OPS_MAX_DEGREE:
+            weights = rational_weights(n)
+            derivative = [derivative_mpq(c) for c in as_mpq]
+            at = [derivative_at_gmpy2(c, p, q) for c in coord_pairs]
+            assert at == [nested_gmpy2(pairs(d), p, q) for d in derivative], "derivative peers disagree"
+            power = [to_power_gmpy2(c) for c in coord_pairs]
+            assert [sum(a * t_mpq**j for j, a in enumerate(cs)) for cs in power] == nested, "power basis disagrees"
+            rational = rational_eval_gmpy2(points, weights, p, q)
+            homogeneous = [[mpq(*w) * mpq(*pt[k]) for pt, w in zip(points, weights)] for k in range(2)]
+            if n <= 20:
+                w_t = casteljau_split([mpq(*w) for w in weights], t_mpq)[0][-1]
+                assert rational == [casteljau_split(h, t_mpq)[0][-1] / w_t for h in homogeneous], "rational peers disagree"
+            peers["derivative"] = [("gmpy2 mpq", lambda: [derivative_mpq(c) for c in as_mpq])]
+            peers["derivative_at"] = [("gmpy2 nested", lambda: [derivative_at_gmpy2(c, p, q) for c in coord_pairs])]
+            peers["to_power"] = [("gmpy2 integers", lambda: [to_power_gmpy2(c) for c in coord_pairs])]
+            peers["rational_eval"] = [("gmpy2 nested", lambda: rational_eval_gmpy2(points, weights, p, q))]
         frac_elevated = [elevate(c, Fraction(1)) for c in as_frac]
         assert all(mpq(f.numerator, f.denominator) == g for fs, gs in zip(frac_elevated, elevated) for f, g in zip(fs, gs))
         for op, entries in peers.items():
@@ -232,7 +363,17 @@ def main():
                 rows.append((op, n, name, (median, low, high), ours))
                 print(f"  {op} n={n} {name}: {fmt_time(median)}", file=sys.stderr)
 
-    print(f"{'operation':<10} {'n':>5}  {'casteljau (CPU, mean [95%])':<32} {'peer':<13} {'peer CPU (median [min, max])':<32} {'ratio':>8}")
+    for m in SURFACE_DEGREES:
+        net, u, v = surface_case(m)
+        value = surface_eval_gmpy2(net, u, v)
+        # v first then u, against u first then v.
+        columns = [[nested_gmpy2([net[i][j][k] for i in range(m + 1)], *u) for j in range(m + 1)] for k in range(2)]
+        assert value == [nested_gmpy2(pairs(col), *v) for col in columns], "surface peers disagree"
+        median, low, high = cpu_seconds(lambda: surface_eval_gmpy2(net, u, v))
+        rows.append(("surface_eval", m, "gmpy2 nested", (median, low, high), casteljau_estimate("surface_eval", m)))
+        print(f"  surface_eval m={m}: {fmt_time(median)}", file=sys.stderr)
+
+    print(f"{'operation':<14} {'n':>5}  {'casteljau (CPU, mean [95%])':<32} {'peer':<15} {'peer CPU (median [min, max])':<32} {'ratio':>8}")
     for op, n, name, theirs, ours in rows:
         ours_text = "not measured" if ours is None else f"{fmt_time(ours[0])} [{fmt_time(ours[1])}, {fmt_time(ours[2])}]"
         if theirs is None:
@@ -240,7 +381,7 @@ def main():
         else:
             theirs_text = f"{fmt_time(theirs[0])} [{fmt_time(theirs[1])}, {fmt_time(theirs[2])}]"
             ratio = "-" if ours is None else f"{theirs[0] / ours[0]:.2f}×"
-        print(f"{op:<10} {n:>5}  {ours_text:<32} {name:<13} {theirs_text:<32} {ratio:>8}")
+        print(f"{op:<14} {n:>5}  {ours_text:<32} {name:<15} {theirs_text:<32} {ratio:>8}")
 
 
 if __name__ == "__main__":

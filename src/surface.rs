@@ -610,6 +610,11 @@ fn check_net<T: Scalar>(net: &[Vec<Point<T>>], what: &'static str) -> Result<(us
 /// `Σ_i p_i B_i^m(t)` for the `m + 1` points given: de Casteljau's algorithm (1) on a
 /// column of the net, on the stack.
 fn reduce<T: Scalar>(points: impl IntoIterator<Item = Point<T>>, t: &T) -> Point<T> {
+    if T::EXACT {
+        // Exact rationals: the curve's point by the exact kernels of `BezierCurve::eval`,
+        // where de Casteljau's steps reduce a fraction at every step.
+        return curve_of(points.into_iter().collect()).eval(t);
+    }
     let mut column: SmallVec<[Point<T>; STACK_POINTS]> = points.into_iter().collect();
     de_casteljau(&mut column, t, |_| {});
     column.swap_remove(0)

@@ -1,4 +1,5 @@
-//! The big-number kernels — eval by binary splitting, elevation on words — against the
+//! The big-number kernels — eval by binary splitting, elevation and the first derivative on
+//! words, and the rational and surface points built on them — against the
 //! step-by-step references with `==` and in lowest terms, on the inputs they exist for:
 //! 30-digit rationals each with its own denominator, negative values, zero coordinates,
 //! coordinates sharing one long denominator, and parameters 0, 1, outside [0, 1], with 20
@@ -8,7 +9,7 @@
 //! denominators, reduced by num-rational itself (`BigRational::new`): de Casteljau's steps
 //! on `BigRational` take minutes there.
 
-use casteljau::{BezierCurve, BigInt, BigRational, Point};
+use casteljau::{BezierCurve, BezierSurface, BigInt, BigRational, Point, RationalBezierCurve};
 use num_integer::Integer;
 use num_traits::{One, Zero};
 use proptest::prelude::*;
@@ -137,7 +138,42 @@ proptest! {
 }
 
 proptest! {
+    #![proptest_config(Config::with_cases(40))]
+
+    /// The hodograph combines neighbours pairwise on words (derivative 1); its point at t
+    /// from degree 64 on is that hodograph's point.
+    #[test]
+    fn first_derivative_pairwise(c in big_curve(&[1, 2, 3, 20]), t in parameter()) {
+        let reference = c.derivative_reference(1).unwrap();
+        prop_assert!(same(&c.derivative(1).unwrap(), &reference));
+        prop_assert!(same(&c.derivative_at(1, &t).unwrap(), &reference.eval_reference(&t)));
+    }
+
+    /// The rational curve's point (nested sum below degree 64) and the surface's point (its
+    /// columns by the curve kernels) against the step-by-step references.
+    #[test]
+    fn rational_and_surface_points(c in big_curve(&[1, 2, 3, 7]), weights in proptest::collection::vec(1u64.., 8), t in parameter()) {
+        let w: Vec<Q> = c.points().iter().zip(&weights).map(|(_, &w)| Q::new(BigInt::from(w), BigInt::from(w % 97 + 1))).collect();
+        let rational = RationalBezierCurve::new(c.points().to_vec(), w).unwrap();
+        prop_assert!(same(&rational.eval(&t).ok(), &rational.eval_reference(&t).ok()));
+        let rows: Vec<Vec<Point<Q>>> = (0..3).map(|r| c.points().iter().map(|p| p.scale(&Q::from_integer(BigInt::from(r + 1)))).collect()).collect();
+        let surface = BezierSurface::new(rows).unwrap();
+        prop_assert!(same(&surface.eval(&t, &t), &surface.eval_bernstein(&t, &t)));
+    }
+}
+
+proptest! {
     #![proptest_config(Config::with_cases(6))]
+
+    #[test]
+    fn degree_200_derivatives_and_rational_point(c in big_curve(&[70, 200]), t in parameter()) {
+        let hodograph = c.derivative_reference(1).unwrap();
+        prop_assert!(same(&c.derivative(1).unwrap(), &hodograph));
+        prop_assert!(same(&c.derivative_at(1, &t).unwrap(), &nested_reference(&hodograph, &t)));
+        let w: Vec<Q> = (0..=c.degree()).map(|i| Q::new(BigInt::from(i as u64 * 7 + 3), BigInt::from(i as u64 % 5 + 2))).collect();
+        let rational = RationalBezierCurve::new(c.points().to_vec(), w).unwrap();
+        prop_assert!(same(&rational.eval(&t).ok(), &rational.eval_nested(&t).ok()));
+    }
 
     #[test]
     fn degree_200(c in big_curve(&[200]), t in parameter()) {

@@ -18,11 +18,16 @@
 //! When every input numerator and denominator has at most 110 bits (30-digit fractions
 //! have 100), `t` and the denominator fit 256 bits and nothing is allocated but the two
 //! integers of the result; otherwise, or when `g` is longer than a word, the coordinate is
-//! computed on big integers (`pair_big`). The tests compare both with `==` against
+//! computed on big integers (`pair_big`).
+//!
+//! The gcds `g` of all neighbouring denominators are computed first, four interleaved
+//! binary gcds at a time (`denominator_gcds`); the small gcds need residues modulo `α`,
+//! `β` and `n + 1`, taken word by word with independent divisions (`SmallModulus`), and
+//! the divisions by those gcds are exact, done by multiplying by an inverse modulo `2^64`. The tests compare both with `==` against
 //! [`BezierCurve::elevate_reference`](crate::BezierCurve::elevate_reference).
 
 use crate::exact::gcd::{self, Part};
-use crate::exact::small_rational::{gcd_u128, gcd_u64};
+use crate::exact::small_rational::gcd_u64;
 use crate::point::Point;
 use num_bigint::{BigInt, BigUint, Sign};
 use num_rational::BigRational;
@@ -105,15 +110,39 @@ impl U256 {
         self.halves().fold(0u64, |r, (_, h)| ((r << 32) | h) % k) as u32
     }
 
-    /// `self / k` for a `0 < k < 2^32` known to divide `self`.
-    fn div_small(&self, k: u32) -> Self {
-        let k = u64::from(k);
+    /// `self / k` for a `0 < k < 2^32` known to divide `self`: the power of two by a shift,
+    /// the odd part by Hensel's exact division (one multiplication by `k⁻¹ mod 2^64` per
+    /// word, as GMP's `mpn_divexact_1`), where long division would cost eight dependent
+    /// hardware divisions.
+    fn div_exact_small(&self, k: u32) -> Self {
+        let zeros = k.trailing_zeros();
+        let odd = u64::from(k >> zeros);
+        let words = if zeros == 0 { self.0 } else { self.shr_small(zeros).0 };
+        if odd == 1 {
+            return U256(words);
+        }
+        // Newton's iteration doubles the correct low bits: 3·odd XOR 2 is right to 5 bits.
+        let mut inverse = odd.wrapping_mul(3) ^ 2;
+        for _ in 0..4 {
+            inverse = inverse.wrapping_mul(2u64.wrapping_sub(odd.wrapping_mul(inverse)));
+        }
         let mut out = [0u64; 4];
-        let mut r = 0u64;
-        for (h, half) in self.halves() {
-            let v = (r << 32) | half;
-            out[h / 2] |= (v / k) << (32 * (h % 2));
-            r = v % k;
+        let mut borrow = 0u64;
+        for (o, w) in out.iter_mut().zip(words) {
+            let (s, below) = w.overflowing_sub(borrow);
+            let q = s.wrapping_mul(inverse);
+            *o = q;
+            borrow = ((u128::from(q) * u128::from(odd)) >> 64) as u64 + u64::from(below);
+        }
+        U256(out)
+    }
+
+    /// `self >> k` for `0 < k < 64`.
+    fn shr_small(&self, k: u32) -> Self {
+        let mut out = [0u64; 4];
+        for (j, o) in out.iter_mut().enumerate() {
+            let high = self.0.get(j + 1).map_or(0, |&w| w << (64 - k));
+            *o = (self.0[j] >> k) | high;
         }
         U256(out)
     }
@@ -123,18 +152,154 @@ impl U256 {
     }
 
     fn to_biguint(self) -> BigUint {
-        let mut bytes = [0u8; 32];
-        for (chunk, w) in bytes.chunks_exact_mut(8).zip(self.0) {
-            chunk.copy_from_slice(&w.to_le_bytes());
+        let mut halves = [0u32; 8];
+        for (pair, w) in halves.chunks_exact_mut(2).zip(self.0) {
+            pair[0] = w as u32;
+            pair[1] = (w >> 32) as u32;
         }
-        // One allocation, the digits of the result.
-        BigUint::from_bytes_le(&bytes)
+        let len = halves.iter().rposition(|&h| h != 0).map_or(0, |i| i + 1);
+        // One allocation of the right length, the digits of the result.
+        BigUint::from_slice(&halves[..len])
     }
 }
 
-/// `x mod k` of a double word by `0 < k < 2^32`, in 64-bit divisions.
-fn rem_u128_small(x: u128, k: u32) -> u32 {
-    U256([x as u64, (x >> 64) as u64, 0, 0]).rem_small(k)
+/// Residues modulo one small `k` (below 2^16: the weights `i`, `n+1−i` and `n+1`, as the
+/// degree limit keeps them), from one hardware division per word that do not wait for each
+/// other, where the long division of [`U256::rem_small`] chains them.
+#[derive(Clone, Copy)]
+struct SmallModulus {
+    k: u64,
+    /// `2^(64 j) mod k` for the words `j = 0..4`.
+    word_weights: [u64; 4],
+}
+
+impl SmallModulus {
+    fn new(k: u16) -> Self {
+        let k = u64::from(k);
+        let w1 = (u64::MAX % k + 1) % k;
+        let w2 = w1 * w1 % k;
+        SmallModulus {
+            k,
+            word_weights: [1 % k, w1, w2, w2 * w1 % k],
+        }
+    }
+
+    fn value(&self) -> u32 {
+        self.k as u32
+    }
+
+    /// Each term is below `2^32`, so the four add up without overflow.
+    fn of_words(&self, words: &[u64]) -> u64 {
+        let sum: u64 = words
+            .iter()
+            .zip(self.word_weights)
+            .map(|(w, weight)| (w % self.k) * weight)
+            .sum();
+        sum % self.k
+    }
+
+    fn of_u128(&self, x: u128) -> u64 {
+        self.of_words(&[x as u64, (x >> 64) as u64])
+    }
+
+    /// `gcd(k, x)`, a word.
+    fn gcd_with(&self, x: u64) -> u32 {
+        gcd_u64(self.k, x) as u32
+    }
+}
+
+/// The gcds of `LANES` pairs of nonzero double words, computed together: the binary gcd is
+/// a chain of dependent steps that leaves most of the processor idle, and four independent
+/// chains interleaved in one loop fill it (about 1.5× the throughput of one at a time on
+/// 100-bit denominators; `benches/exact.rs`, `exact_big/elevate`). A finished lane keeps
+/// its value: with `b = 0`, the step below takes `a` for the shifted `b`, leaving `a` and
+/// a zero difference.
+fn gcd_u128_lanes<const LANES: usize>(first: [u128; LANES], second: [u128; LANES]) -> [u128; LANES] {
+    let mut shift = [0u32; LANES];
+    let mut a = [0u128; LANES];
+    let mut b = second;
+    for lane in 0..LANES {
+        shift[lane] = (first[lane] | second[lane]).trailing_zeros();
+        a[lane] = first[lane] >> first[lane].trailing_zeros();
+    }
+    // Double words while any unfinished lane needs them; then single words, a third of the
+    // work each. A lane finished here may hold a gcd beyond 64 bits: kept whole.
+    let unfinished_high = |a: &[u128; LANES], b: &[u128; LANES]| {
+        (0..LANES).fold(0, |high, lane| {
+            if b[lane] == 0 {
+                high
+            } else {
+                high | ((a[lane] | b[lane]) >> 64)
+            }
+        })
+    };
+    while unfinished_high(&a, &b) != 0 {
+        for lane in 0..LANES {
+            let odd = b[lane] >> (b[lane].trailing_zeros() & 127);
+            let odd = if b[lane] == 0 { a[lane] } else { odd };
+            b[lane] = a[lane].abs_diff(odd);
+            a[lane] = a[lane].min(odd);
+        }
+    }
+    let wide = a;
+    let mut a = a.map(|x| x as u64);
+    let mut b = b.map(|x| x as u64);
+    loop {
+        let mut left = 0;
+        for lane in 0..LANES {
+            let odd = b[lane] >> (b[lane].trailing_zeros() & 63);
+            let odd = if b[lane] == 0 { a[lane] } else { odd };
+            b[lane] = a[lane].abs_diff(odd);
+            a[lane] = a[lane].min(odd);
+            left |= b[lane];
+        }
+        if left == 0 {
+            break;
+        }
+    }
+    let mut out = [0u128; LANES];
+    for lane in 0..LANES {
+        // A lane whose gcd exceeds 64 bits finished above with a zero second value.
+        let gcd = if wide[lane] >> 64 != 0 {
+            wide[lane]
+        } else {
+            u128::from(a[lane])
+        };
+        out[lane] = gcd << shift[lane];
+    }
+    out
+}
+
+/// `gcd(den x_j, den y_j)` for every pair whose denominators are both words (the others 0),
+/// four pairs at a time.
+fn denominator_gcds(pairs: impl Iterator<Item = Option<(u128, u128)>>) -> Vec<u128> {
+    const LANES: usize = 4;
+    let mut gcds = Vec::new();
+    let mut first = [1u128; LANES];
+    let mut second = [1u128; LANES];
+    let mut slots = [0usize; LANES];
+    let mut filled = 0;
+    let flush = |first: &[u128; LANES], second: &[u128; LANES], slots: &[usize], gcds: &mut Vec<u128>| {
+        for (&slot, g) in slots.iter().zip(gcd_u128_lanes(*first, *second)) {
+            gcds[slot] = g;
+        }
+    };
+    for (slot, pair) in pairs.enumerate() {
+        gcds.push(0);
+        if let Some((d, e)) = pair {
+            (first[filled], second[filled], slots[filled]) = (d, e, slot);
+            filled += 1;
+            if filled == LANES {
+                flush(&first, &second, &slots, &mut gcds);
+                filled = 0;
+            }
+        }
+    }
+    // The unused lanes compute gcd(1, 1) and are not read.
+    first[filled..].fill(1);
+    second[filled..].fill(1);
+    flush(&first, &second, &slots[..filled], &mut gcds);
+    gcds
 }
 
 /// A reduced fraction `±num/den` on words.
@@ -158,10 +323,16 @@ impl WordFraction {
     }
 }
 
-/// `(α x + β y) / total` in lowest terms, on words; `None` when `gcd(den x, den y)` does
-/// not fit 32 bits (or a bound is exceeded), for the big-integer path.
-fn pair_words(x: WordFraction, alpha: u32, y: WordFraction, beta: u32, total: u32) -> Option<BigRational> {
-    let g = gcd_u128(x.den, y.den);
+/// `(α x + β y) / total` in lowest terms, on words, given `g = gcd(den x, den y)`; `None`
+/// when `g` does not fit 32 bits (or a bound is exceeded), for the big-integer path.
+fn pair_words(
+    x: WordFraction,
+    alpha: &SmallModulus,
+    y: WordFraction,
+    beta: &SmallModulus,
+    total: &SmallModulus,
+    g: u128,
+) -> Option<BigRational> {
     let g = u32::try_from(g).ok()?;
     let (mut dx, mut dy) = if g == 1 {
         (x.den, y.den)
@@ -169,8 +340,8 @@ fn pair_words(x: WordFraction, alpha: u32, y: WordFraction, beta: u32, total: u3
         (x.den / u128::from(g), y.den / u128::from(g))
     };
     // t = α x dy + β y dx, with signs.
-    let u = U256::product(x.num, dy).times(u64::from(alpha))?;
-    let v = U256::product(y.num, dx).times(u64::from(beta))?;
+    let u = U256::product(x.num, dy).times(alpha.k)?;
+    let v = U256::product(y.num, dx).times(beta.k)?;
     let (negative, mut t) = if x.negative == y.negative {
         (x.negative, u.plus(v)?)
     } else if u.greater_or_equal(&v) {
@@ -181,33 +352,28 @@ fn pair_words(x: WordFraction, alpha: u32, y: WordFraction, beta: u32, total: u3
     if t.is_zero() {
         return Some(BigRational::new_raw(BigInt::zero(), BigInt::from(1u8)));
     }
-    // gcd(t, dx) = gcd(α, dx) and then gcd(t, dy) = gcd(β, dy): see the module documentation.
-    let h = gcd_u64(u64::from(alpha), u64::from(rem_u128_small(dx, alpha))) as u32;
-    if h != 1 {
-        t = t.div_small(h);
-        dx /= u128::from(h);
-    }
-    let h = gcd_u64(u64::from(beta), u64::from(rem_u128_small(dy, beta))) as u32;
-    if h != 1 {
-        t = t.div_small(h);
-        dy /= u128::from(h);
+    // gcd(t, dx) = gcd(α, dx) and gcd(t, dy) = gcd(β, dy), coprime to each other: see the
+    // module documentation.
+    let (hx, hy) = (alpha.gcd_with(alpha.of_u128(dx)), beta.gcd_with(beta.of_u128(dy)));
+    if hx * hy != 1 {
+        t = t.div_exact_small(hx * hy);
+        dx /= u128::from(hx);
+        dy /= u128::from(hy);
     }
     let mut shared = g;
     if g != 1 {
         let h = gcd_u64(u64::from(g), u64::from(t.rem_small(g))) as u32;
         if h != 1 {
-            t = t.div_small(h);
+            t = t.div_exact_small(h);
             shared /= h;
         }
     }
-    let mut total = total;
-    let h = gcd_u64(u64::from(total), u64::from(t.rem_small(total))) as u32;
+    let h = total.gcd_with(total.of_words(&t.0));
     if h != 1 {
-        t = t.div_small(h);
-        total /= h;
+        t = t.div_exact_small(h);
     }
     // dx · shared ≤ den x < 2^110; the whole denominator is below 2^252.
-    let den = U256::product(dx * u128::from(shared), dy).times(u64::from(total))?;
+    let den = U256::product(dx * u128::from(shared), dy).times(u64::from(total.value() / h))?;
     let sign = if negative { Sign::Minus } else { Sign::Plus };
     Some(BigRational::new_raw(
         BigInt::from_biguint(sign, t.to_biguint()),
@@ -228,26 +394,114 @@ fn pair_big(a: &BigRational, alpha: u32, b: &BigRational, beta: u32, total: &Big
 pub(crate) fn elevate_pairwise(points: &[Point<BigRational>]) -> Vec<Point<BigRational>> {
     let n = points.len() - 1;
     let total = u32::try_from(n + 1).expect("degrees are limited far below 2^32");
+    let mut out = Vec::with_capacity(n + 2);
+    out.push(points[0].clone());
+    out.extend(combine_neighbours(points, |i| (i, total - i), total, false));
+    out.push(points[n].clone());
+    out
+}
+
+/// The first derivative curve's points `n (b_{i+1} − b_i)`, each coordinate reduced on its
+/// own: the same combination of neighbours as elevation, with weights `−n` and `n`.
+pub(crate) fn derivative_pairwise(points: &[Point<BigRational>]) -> Vec<Point<BigRational>> {
+    let n = u32::try_from(points.len() - 1).expect("degrees are limited far below 2^32");
+    combine_neighbours(points, |_| (n, n), 1, true)
+}
+
+/// `(±α_i b_{i−1} + β_i b_i) / total` for `i = 1..=n`, coordinate by coordinate (the sign
+/// of the first term is `−` with `negate_first`).
+fn combine_neighbours(
+    points: &[Point<BigRational>],
+    weights: impl Fn(u32) -> (u32, u32),
+    total: u32,
+    negate_first: bool,
+) -> Vec<Point<BigRational>> {
+    let n = points.len() - 1;
     let total_big = BigInt::from(total);
     let dim = points[0].dim();
     let words: Vec<Option<WordFraction>> = points
         .iter()
         .flat_map(|p| p.coords().iter().map(WordFraction::of))
         .collect();
-    let mut out = Vec::with_capacity(n + 2);
-    out.push(points[0].clone());
+    // The word path's small moduli need weights below 2^16, which the degree limit keeps.
+    let small = u16::try_from(total).ok().map(SmallModulus::new);
+    let gcds = denominator_gcds((0..n * dim).map(|j| match (small, words[j], words[j + dim]) {
+        (Some(_), Some(x), Some(y)) => Some((x.den, y.den)),
+        _ => None,
+    }));
+    let mut out = Vec::with_capacity(n);
     for i in 1..=n {
-        let (alpha, beta) = (i as u32, total - i as u32);
+        let (alpha, beta) = weights(i as u32);
+        let moduli = match (small, u16::try_from(alpha), u16::try_from(beta)) {
+            (Some(total), Ok(a), Ok(b)) => Some((SmallModulus::new(a), SmallModulus::new(b), total)),
+            _ => None,
+        };
         let (before, here) = (points[i - 1].coords(), points[i].coords());
         let coords = (0..dim).map(|k| {
-            let fast = match (words[(i - 1) * dim + k], words[i * dim + k]) {
-                (Some(x), Some(y)) => pair_words(x, alpha, y, beta, total),
+            let j = (i - 1) * dim + k;
+            let fast = match (moduli, words[j], words[j + dim]) {
+                (Some((alpha, beta, total)), Some(mut x), Some(y)) => {
+                    x.negative ^= negate_first;
+                    pair_words(x, &alpha, y, &beta, &total, gcds[j])
+                }
                 _ => None,
             };
-            fast.unwrap_or_else(|| pair_big(&before[k], alpha, &here[k], beta, &total_big))
+            fast.unwrap_or_else(|| {
+                let first = if negate_first { -&before[k] } else { before[k].clone() };
+                pair_big(&first, alpha, &here[k], beta, &total_big)
+            })
         });
         out.push(Point::from_valid(coords));
     }
-    out.push(points[n].clone());
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exact::small_rational::gcd_u128;
+    use proptest::prelude::*;
+
+    /// Double words with shared factors of every size: products of a random common part and
+    /// random cofactors, shifted by up to 40 bits.
+    fn related_pair() -> impl Strategy<Value = (u128, u128)> {
+        (1u64.., 1u64.., 1u64.., 0u32..40, 0u32..40).prop_map(|(common, x, y, sx, sy)| {
+            let common = u128::from(common >> (common % 64));
+            (
+                (common * u128::from(x)).max(1) << sx,
+                (common * u128::from(y >> 20)).max(1) << sy,
+            )
+        })
+    }
+
+    /// Pairs whose gcd is wider than a word: a 70- to 100-bit common part times small cofactors.
+    fn wide_gcd_pair() -> impl Strategy<Value = (u128, u128)> {
+        (any::<u128>(), 70u32..100, 1u32..1 << 20, 1u32..1 << 20).prop_map(|(common, bits, x, y)| {
+            let common = (common >> (128 - bits)) | (1 << (bits - 1));
+            (common * u128::from(x), common * u128::from(y))
+        })
+    }
+
+    proptest! {
+        #[test]
+        fn lanes_agree_with_one_gcd_at_a_time(
+            pairs in proptest::collection::vec(prop_oneof![related_pair(), wide_gcd_pair(), (1u128.., 1u128..)], 0..11),
+            skipped in proptest::collection::vec(any::<bool>(), 11),
+        ) {
+            let input: Vec<Option<(u128, u128)>> =
+                pairs.iter().zip(&skipped).map(|(&p, &skip)| (!skip).then_some(p)).collect();
+            let got = denominator_gcds(input.iter().copied());
+            let want: Vec<u128> = input.iter().map(|p| p.map_or(0, |(a, b)| gcd_u128(a, b))).collect();
+            prop_assert_eq!(got, want);
+        }
+
+        #[test]
+        fn exact_division_by_a_small_divisor(q in any::<[u64; 3]>(), k in 1u32.., residues in 1u16..) {
+            let quotient = U256([q[0], q[1], q[2], 0]);
+            let Some(t) = quotient.times(u64::from(k)) else { return Ok(()) };
+            prop_assert!(t.div_exact_small(k) == quotient);
+            let modulus = SmallModulus::new(residues);
+            prop_assert_eq!(u64::from(t.rem_small(u32::from(residues))), modulus.of_words(&t.0));
+        }
+    }
 }

@@ -603,6 +603,14 @@ impl BezierCurve<BigRational> {
                 degree: self.degree(),
             });
         }
+        if k == 1 {
+            // Neighbours combined pairwise: each point over its own two denominators, where a
+            // denominator common to the whole curve makes every point as long as all inputs.
+            if let Some(points) = curve_derivative::<i128>(self, 1) {
+                return BezierCurve::new(points);
+            }
+            return BezierCurve::new(elevation_words::derivative_pairwise(self.points()));
+        }
         BezierCurve::new(words_then_big(|tier| on_tier!(tier, curve_derivative(self, k))))
     }
 
