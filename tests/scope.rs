@@ -121,17 +121,20 @@ fn every_report_of_the_texts_shows_the_note() {
     assert!(bound > 0);
     let text = report.to_text();
     assert!(
-        text.contains("    range-bound: uses the forward differences `delta`"),
+        text.contains("    range-bound: uses the de Casteljau evaluation `b(t)`"),
         "{text}"
     );
     let json = report.to_json();
-    let delta = json["claims"]
+    let object = json["claims"]
         .as_array()
         .expect("claims")
         .iter()
-        .find(|c| c["id"] == "000-delta")
-        .expect("000-delta");
-    assert!(delta["range_bound"].as_str().expect("a field").contains("`delta`"));
+        .find(|c| c["id"] == "000-lemma-1.3-c2")
+        .expect("000-lemma-1.3-c2");
+    assert!(object["range_bound"]
+        .as_str()
+        .expect("a field")
+        .contains("`b(i, r, t)`"));
     let proved = json["claims"]
         .as_array()
         .expect("claims")
@@ -139,9 +142,9 @@ fn every_report_of_the_texts_shows_the_note() {
         .find(|c| c["id"] == "000-7")
         .expect("000-7");
     assert!(proved.get("range_bound").is_none());
-    let explained = explain(&[PathBuf::from("proofs")], "000-delta", ExplainStyle::Short).expect("explain");
+    let explained = explain(&[PathBuf::from("proofs")], "000-lemma-1.3-c2", ExplainStyle::Short).expect("explain");
     assert!(
-        explained.contains("\nverdict: proved for n = 1..=8, k = 1..=n, j = 0..=n-k; range-bound: uses the forward differences `delta`"),
+        explained.contains("\nverdict: proved for n = 0..=6; range-bound: uses the de Casteljau evaluation `b(t)`"),
         "{explained}"
     );
 }

@@ -76,10 +76,10 @@ pub(crate) fn worked_case<'a>(all: &'a [Case<'a>]) -> Option<&'a Case<'a>> {
         .or_else(|| {
             // the first case with the most to show (a piece where every term vanishes shows little)
             let shown = |c: &Case<'_>| {
-                c.lines
-                    .iter()
-                    .filter(|l| !matches!(l.kind, StepKind::Vanishes { .. }))
-                    .count()
+                let live = c.lines.iter().filter(|l| !matches!(l.kind, StepKind::Vanishes { .. }));
+                // under a label, its equality's own line shows nothing yet
+                let own = usize::from(matches!(c.header.kind, StepKind::Label(_)));
+                live.count().saturating_sub(own)
             };
             all.iter().rev().filter(|c| shown(c) > 0).max_by_key(|c| shown(c))
         })

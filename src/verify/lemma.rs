@@ -24,7 +24,7 @@
 use super::claims::{Claim, Decls, Identity, Sides};
 use super::context::Ctx;
 use super::expr::Expr;
-use super::rewrite::{derive, substitute};
+use super::rewrite::{derive, map_children, substitute};
 use crate::error::{Error, Result};
 
 /// How deep objects may be read through other objects and lemmas (a lemma whose formula
@@ -371,22 +371,7 @@ fn rename_binders(e: &Expr, used: &mut Vec<String>) -> Expr {
                 Box::new(rename_binders(&body, used)),
             )
         }
-        _ => map(e, &mut |x| rename_binders(x, used)),
-    }
-}
-
-/// `e` with the children mapped by `f`.
-fn map(e: &Expr, f: &mut dyn FnMut(&Expr) -> Expr) -> Expr {
-    match e {
-        Expr::Num(_) | Expr::Var(_) => e.clone(),
-        Expr::Neg(a) => Expr::Neg(Box::new(f(a))),
-        Expr::Fact(a) => Expr::Fact(Box::new(f(a))),
-        Expr::Bin(op, a, b) => Expr::Bin(*op, Box::new(f(a)), Box::new(f(b))),
-        Expr::Call(n, args) => Expr::Call(n.clone(), args.iter().map(&mut *f).collect()),
-        Expr::Index(n, args) => Expr::Index(n.clone(), args.iter().map(&mut *f).collect()),
-        Expr::Sum(v, a, b, body) => Expr::Sum(v.clone(), Box::new(f(a)), Box::new(f(b)), Box::new(f(body))),
-        Expr::Tuple(args) => Expr::Tuple(args.iter().map(&mut *f).collect()),
-        Expr::Matrix(rows) => Expr::Matrix(rows.iter().map(|r| r.iter().map(&mut *f).collect()).collect()),
+        _ => map_children(e, &mut |x| Ok(rename_binders(x, used))).expect("renaming cannot fail"),
     }
 }
 
@@ -407,7 +392,7 @@ fn rename_polygon(e: &Expr, from: &str, to: &str) -> Expr {
         Expr::Index(n, args) => Expr::Index(renamed(n), args.iter().map(|a| rename_polygon(a, from, to)).collect()),
         Expr::Call(n, args) => Expr::Call(renamed(n), args.iter().map(|a| rename_polygon(a, from, to)).collect()),
         Expr::Var(v) if v == from => Expr::Var(to.into()),
-        _ => map(e, &mut |x| rename_polygon(x, from, to)),
+        _ => map_children(e, &mut |x| Ok(rename_polygon(x, from, to))).expect("renaming cannot fail"),
     }
 }
 
@@ -472,17 +457,7 @@ impl Rewriter<'_> {
             sums.pop();
             return Ok(Expr::Sum(v.clone(), Box::new(a), Box::new(b), Box::new(body?)));
         }
-        let mut err = None;
-        let inner = map(e, &mut |x| match self.expr(x, sums, depth) {
-            Ok(y) => y,
-            Err(e) => {
-                err.get_or_insert(e);
-                x.clone()
-            }
-        });
-        if let Some(e) = err {
-            return Err(e);
-        }
+        let inner = map_children(e, &mut |x| self.expr(x, sums, depth))?;
         if let Some(surface) = self.surface(&inner)? {
             return Ok(surface);
         }
@@ -650,17 +625,7 @@ fn unfold_in(
         sums.pop();
         return Ok(Expr::Sum(v.clone(), Box::new(a), Box::new(b), Box::new(body?)));
     }
-    let mut err = None;
-    let inner = map(e, &mut |x| match unfold_in(x, p, degree, how, sums, out) {
-        Ok(y) => y,
-        Err(e) => {
-            err.get_or_insert(e);
-            x.clone()
-        }
-    });
-    if let Some(e) = err {
-        return Err(e);
-    }
+    let inner = map_children(e, &mut |x| unfold_in(x, p, degree, how, sums, out))?;
     let Some((object, args)) = Object::of(&inner, p) else {
         return Ok(inner);
     };

@@ -131,23 +131,37 @@ fn decide(jobs: &[Job<'_>], progress: &mut dyn FnMut(usize, usize, &str)) -> Vec
     let mut done = 0;
     for round in rounds {
         // Each round's claims cite only claims decided in earlier rounds.
-        let (done_tx, done_rx) = std::sync::mpsc::channel::<usize>();
         let jobs = &jobs;
         let decided_so_far = &decided;
         let round = &round;
+        let check = |&(index, ref cited): &(usize, Result<Vec<usize>>)| {
+            let lemmas = cited.clone().and_then(|cited| lemmas_of(jobs, decided_so_far, &cited));
+            // A claim that cannot be decided is reported as such; it never hides the others.
+            let checked = kinds::check_citing(jobs[index].1, &lemmas, false)
+                .unwrap_or_else(|e| Checked::new(Verdict::Error, e.to_string()));
+            (index, checked)
+        };
+        if rayon::current_thread_index().is_some() {
+            // Called from a worker of the pool (a caller's parallel loop): no thread of the pool
+            // may wait for the others, so the round runs on the pool and reports at its end.
+            let results: Vec<(usize, Checked)> = round.par_iter().map(check).collect();
+            for (index, checked) in results {
+                done += 1;
+                progress(done, total, &jobs[index].1.id);
+                decided[index] = Some(checked);
+            }
+            continue;
+        }
+        let (done_tx, done_rx) = std::sync::mpsc::channel::<usize>();
         let results: Vec<(usize, Checked)> = std::thread::scope(|scope| {
             let worker = scope.spawn(move || {
                 round
                     .par_iter()
-                    .map_with(done_tx, |done_tx, &(index, ref cited)| {
-                        let lemmas = cited.clone().and_then(|cited| lemmas_of(jobs, decided_so_far, &cited));
-                        let claim = jobs[index].1;
-                        // A claim that cannot be decided is reported as such; it never hides the others.
-                        let checked = kinds::check_citing(claim, &lemmas, false)
-                            .unwrap_or_else(|e| Checked::new(Verdict::Error, e.to_string()));
+                    .map_with(done_tx, |done_tx, job| {
+                        let out = check(job);
                         // The receiver lives until every claim is done; a send cannot fail.
-                        let _ = done_tx.send(index);
-                        (index, checked)
+                        let _ = done_tx.send(out.0);
+                        out
                     })
                     .collect()
             });

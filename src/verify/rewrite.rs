@@ -203,7 +203,8 @@ pub fn dependency_order(defs: Vec<Definition>) -> Result<Vec<Definition>> {
     Ok(done)
 }
 
-fn map_children(e: &Expr, f: &mut dyn FnMut(&Expr) -> Result<Expr>) -> Result<Expr> {
+/// `e` with each child replaced by `f` of it (the first error stops).
+pub(crate) fn map_children(e: &Expr, f: &mut dyn FnMut(&Expr) -> Result<Expr>) -> Result<Expr> {
     Ok(match e {
         Expr::Num(_) | Expr::Var(_) => e.clone(),
         Expr::Neg(a) => Expr::Neg(Box::new(f(a)?)),

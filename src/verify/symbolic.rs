@@ -317,14 +317,14 @@ fn prove_symbolic(
         return induction::prove(id, decls, identity, var, lemmas);
     }
     let ctx = Ctx::new(id, closed, Vec::new())?;
-    let sides: Vec<Expr> = identity
-        .sides
-        .members()
-        .iter()
-        .map(|s| ctx.expr(s))
-        .collect::<Result<_>>()?;
+    let sides = parsed_sides(&ctx, identity)?;
     let rewritten = lemma::apply(&sides, decls, lemmas)?;
     prove_sides(decls, &ctx, rewritten, &identity.certificates)
+}
+
+/// The members of an identity, parsed in `ctx`.
+fn parsed_sides(ctx: &Ctx<'_>, identity: &Identity) -> Result<Vec<Expr>> {
+    identity.sides.members().iter().map(|s| ctx.expr(s)).collect()
 }
 
 /// Each condition of `obligations` shown on `dom` (with the bounds of the sums around it).

@@ -21,7 +21,7 @@ use super::super::expr::Expr;
 use super::super::lemma::{self, Lemma, Rewritten, Unfold};
 use super::super::parse::parse;
 use super::super::rewrite::substitute;
-use super::prove_sides;
+use super::{parsed_sides, prove_sides};
 use crate::error::{Error, Result};
 
 /// The proof by induction on `var` (see the module documentation): the certificate and the log.
@@ -47,12 +47,7 @@ pub(super) fn prove(
     let hypothesis = Lemma::from_parts(id, decls, identity)?.hypothesis(var)?;
     let closed = decls.closed_after(1);
     let ctx = Ctx::new(id, &closed, Vec::new())?;
-    let sides: Vec<Expr> = identity
-        .sides
-        .members()
-        .iter()
-        .map(|s| ctx.expr(s))
-        .collect::<Result<_>>()?;
+    let sides = parsed_sides(&ctx, identity)?;
     let name = [var.to_string()];
 
     // The base: the claim at var = lo, its other ranges there (and lo within var's range).
