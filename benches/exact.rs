@@ -17,7 +17,13 @@ use casteljau::exact::{BernsteinTable, SmallRational};
 use casteljau::{BezierCurve, BezierSurface, BigInt, BigRational, Point, RationalBezierCurve, Scalar};
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use num_traits::Signed;
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+// `long_samples` is for the groups measured in long flat samples; this group keeps its own.
+#[allow(dead_code)]
+#[path = "support/cpu_time.rs"]
+mod cpu_time;
+use cpu_time::cpu_time_of;
 
 /// A planar curve of degree `n` with small integer control points.
 fn curve(n: usize) -> BezierCurve<BigRational> {
@@ -193,25 +199,6 @@ fn big_surface_case(m: usize) -> (BezierSurface<BigRational>, BigRational, BigRa
         .collect();
     let (u, v) = (twenty_digit_parameter(&mut rng), twenty_digit_parameter(&mut rng));
     (BezierSurface::new(net).expect("valid net"), u, v)
-}
-
-/// CPU time of this thread so far (the scheduler's count, in nanoseconds); wall time where
-/// the kernel does not expose it.
-fn thread_cpu_time() -> Option<Duration> {
-    let text = std::fs::read_to_string("/proc/thread-self/schedstat").ok()?;
-    Some(Duration::from_nanos(text.split_whitespace().next()?.parse().ok()?))
-}
-
-/// Runs `f` `iters` times and returns the CPU time it took.
-fn cpu_time_of<R>(iters: u64, mut f: impl FnMut() -> R) -> Duration {
-    let (cpu, wall) = (thread_cpu_time(), Instant::now());
-    for _ in 0..iters {
-        black_box(f());
-    }
-    match (cpu, thread_cpu_time()) {
-        (Some(start), Some(end)) => end - start,
-        _ => wall.elapsed(),
-    }
 }
 
 fn exact_big(c: &mut Criterion) {
