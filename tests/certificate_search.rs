@@ -9,16 +9,11 @@ use casteljau::verify::{check_claim, Verdict};
 use std::path::Path;
 use std::time::Duration;
 
-const FIVE: &str = "for = [\"a = 0..\", \"b = 0..\", \"c = 0..\", \"m = 0..\", \"n = 0..\"]\n";
+#[path = "support/cpu.rs"]
+mod cpu;
+use cpu::thread_cpu;
 
-/// The CPU time of the calling thread, from `/proc/thread-self/stat` (clock ticks of 10 ms).
-fn thread_cpu() -> Duration {
-    let stat = std::fs::read_to_string("/proc/thread-self/stat").expect("Linux /proc");
-    let rest = &stat[stat.rfind(')').expect("a command name") + 2..];
-    let fields: Vec<&str> = rest.split_whitespace().collect();
-    let ticks: u64 = fields[11].parse::<u64>().unwrap() + fields[12].parse::<u64>().unwrap();
-    Duration::from_millis(ticks * 10)
-}
+const FIVE: &str = "for = [\"a = 0..\", \"b = 0..\", \"c = 0..\", \"m = 0..\", \"n = 0..\"]\n";
 
 /// The verdict, or the error, of an identity claim `lhs = rhs` over the five open ranges.
 fn check(lhs: &str, rhs: &str) -> Result<Verdict, String> {
