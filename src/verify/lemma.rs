@@ -24,7 +24,7 @@
 use super::claims::{Claim, Decls, Identity, Sides};
 use super::context::Ctx;
 use super::expr::Expr;
-use super::rewrite::{derive, map_children, substitute};
+use super::rewrite::{all_names, derive, map_children, substitute};
 use crate::error::{Error, Result};
 
 /// How deep objects may be read through other objects and lemmas (a lemma whose formula
@@ -315,43 +315,11 @@ impl Lemma {
     }
 }
 
-/// Every name an expression uses, bound or free, called or indexed.
-fn names_in(e: &Expr, out: &mut Vec<String>) {
-    let mut push = |n: &String| {
-        if !out.contains(n) {
-            out.push(n.clone());
-        }
-    };
-    match e {
-        Expr::Var(v) => push(v),
-        Expr::Sum(v, a, b, body) => {
-            push(v);
-            names_in(a, out);
-            names_in(b, out);
-            names_in(body, out);
-        }
-        Expr::Call(n, args) | Expr::Index(n, args) => {
-            push(n);
-            for a in args {
-                names_in(a, out);
-            }
-        }
-        Expr::Tuple(args) => args.iter().for_each(|a| names_in(a, out)),
-        Expr::Matrix(rows) => rows.iter().flatten().for_each(|a| names_in(a, out)),
-        Expr::Neg(a) | Expr::Fact(a) => names_in(a, out),
-        Expr::Bin(_, a, b) => {
-            names_in(a, out);
-            names_in(b, out);
-        }
-        Expr::Num(_) => {}
-    }
-}
-
 /// `e` with every summation variable renamed to a name not in `avoid` (nor used in `e`), so a
 /// formula placed inside other sums never shadows or captures their variables.
 fn fresh_binders(e: &Expr, avoid: &[String]) -> Expr {
     let mut used: Vec<String> = avoid.to_vec();
-    names_in(e, &mut used);
+    all_names(e, &mut used);
     rename_binders(e, &mut used)
 }
 
@@ -415,7 +383,7 @@ pub(crate) fn apply(sides: &[Expr], decls: &Decls, lemmas: &[Lemma]) -> Result<R
     };
     let mut avoid = Vec::new();
     for s in sides {
-        names_in(s, &mut avoid);
+        all_names(s, &mut avoid);
     }
     avoid.extend(decls.ranges.iter().map(|r| r.var.clone()));
     let mut rw = Rewriter {
@@ -570,7 +538,7 @@ impl Rewriter<'_> {
             let Some((formula, conditions)) = lemma.at(args, polygon, degree, &self.avoid) else {
                 continue;
             };
-            names_in(&formula, &mut self.avoid);
+            all_names(&formula, &mut self.avoid);
             let site = object.apply(polygon, args.to_vec());
             for condition in conditions {
                 self.out.obligations.push(Obligation {

@@ -108,7 +108,7 @@ fn expand_depth(e: &Expr, defs: &[Definition], depth: usize) -> Result<Expr> {
 }
 
 /// Every name that occurs in `e` (free or bound, variables and calls).
-fn all_names(e: &Expr, out: &mut Vec<String>) {
+pub(crate) fn all_names(e: &Expr, out: &mut Vec<String>) {
     e.visit(&mut |x| match x {
         Expr::Var(v) | Expr::Call(v, _) | Expr::Index(v, _) | Expr::Sum(v, ..) if !out.contains(v) => {
             out.push(v.clone())
