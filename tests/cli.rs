@@ -198,7 +198,7 @@ fn prove_reports_and_sets_the_status() {
         );
         assert_eq!(claim["range"].is_string(), verdict == "proved_in_range", "{claim}");
     }
-    assert_eq!(report["summary"]["proved_in_range"].as_u64(), Some(21));
+    assert_eq!(report["summary"]["proved_in_range"].as_u64(), Some(20));
     // progress goes to stderr only on a terminal, never into a piped run
     assert!(out.stderr.is_empty());
 

@@ -226,3 +226,29 @@ fn false_beyond_the_cross_check_still_fails_with_a_counterexample() {
         "n = 20",
     );
 }
+
+const ELEVATION_8: &str = "polygon = { name = \"b\", degree = \"n\" }\nfor = [\"n = 0..\", \"r = 0..\"]\nlhs = \"sum(i, 0, n, b[i]*B(i, n, t))\"\n";
+
+#[test]
+fn repeated_elevation_is_proved_by_induction_on_the_steps_and_its_false_variants_are_not() {
+    // (8): the coefficient of the unit point b[ĵ] is Σ_{i=ĵ}^{ĵ+r}, by induction on r ≤ ….
+    let c = assert_proved(&format!(
+        "{ELEVATION_8}rhs = \"sum(i, 0, n+r, sum(j, i-r, i, C(n, j)*C(r, i-j)/C(n+r, i)*b[j])*B(i, n+r, t))\""
+    ));
+    assert!(c.contains("(induction on r ≥ 0)"), "{c}");
+    for wrong in [
+        // an index shift in the weights
+        "sum(i, 0, n+r, sum(j, i-r, i, C(n, j)*C(r, i-j+1)/C(n+r, i)*b[j])*B(i, n+r, t))",
+        // a wrong range end: one control point too few
+        "sum(i, 0, n+r, sum(j, i-r+1, i, C(n, j)*C(r, i-j)/C(n+r, i)*b[j])*B(i, n+r, t))",
+        // the outer sum one term short
+        "sum(i, 0, n+r-1, sum(j, i-r, i, C(n, j)*C(r, i-j)/C(n+r, i)*b[j])*B(i, n+r, t))",
+        // wrong only from r = 5 on, past the evaluated first values
+        "sum(i, 0, n+r, sum(j, i-r, i, C(n, j)*C(r, i-j)/C(n+r, i)*b[j])*B(i, n+r, t)) + r*(r-1)*(r-2)*(r-3)*(r-4)*t*b[0]",
+    ] {
+        let body = format!("{ELEVATION_8}rhs = \"{wrong}\"");
+        if let Ok((v, _, c)) = check(&body) {
+            assert_ne!(v, Verdict::Proved, "{wrong}: {c}");
+        }
+    }
+}

@@ -15,7 +15,7 @@ use num_traits::Zero;
 mod bounds;
 mod setup;
 
-use bounds::{end_point, support_start, without_redundant};
+use bounds::{end_point, on_range, support_end, support_start, without_redundant};
 pub(crate) use setup::prepare;
 
 /// The name of the symbolic index of the unit control polygon.
@@ -471,6 +471,8 @@ impl<'a> Translator<'a> {
             h
         });
         let av = support_start(v, &av, &rest, d);
+        let bv = support_end(v, &av, &bv, &rest, d);
+        on_range(&mut rest, &d.with(Aff::var(v).minus(&av)).with(bv.minus(&Aff::var(v))));
         let closed = self.wz(v, &av, &bv, rest, d, hint)?;
         resolved.extend(closed);
         Ok(resolved)
@@ -481,36 +483,50 @@ impl<'a> Translator<'a> {
     fn wz(&mut self, k: &str, a: &Aff, b: &Aff, f: Lin, d: &Domain, hint: Option<Lin>) -> Result<Lin> {
         let sym = self.sym;
         let what = format!("Σ_{{{k}={a}}}^{{{b}}}");
-        // The induction variable: coefficient 1 in the upper bound, bounded below only.
-        let induction_variable = |d: &Domain| {
+        // The induction variable: coefficient 1 in the upper bound, bounded below only (or,
+        // with `above`, also bounded above: the induction then stops at the last value).
+        let induction_variable = |d: &Domain, above: bool| {
             b.v.iter()
                 .filter(|(x, c)| **c == 1 && a.coef(x) == 0)
                 .map(|(x, _)| x.clone())
                 .find(|x| {
-                    d.cons.iter().all(|c| c.coef(x) >= 0)
-                        && d.cons.iter().filter(|c| c.coef(x) != 0).count() == 1
+                    (above || d.cons.iter().all(|c| c.coef(x) >= 0))
+                        && d.cons.iter().filter(|c| c.coef(x) > 0).count() == 1
                         && d.cons.iter().any(|c| c.coef(x) == 1)
                 })
         };
         // Failing that, the same integer points with fewer constraints: a symbol of the upper
-        // bound bounded below twice (n ≥ 0 and n ≥ ĵ, with ĵ ≥ 0) keeps the bound implying the other.
+        // bound bounded below twice (n ≥ 0 and n ≥ ĵ, with ĵ ≥ 0) keeps the bound implying the
+        // other. Failing that too, a symbol bounded above as well (`Σ_{r=0}^{ĵ}`, `ĵ ≤ n`).
         let pruned;
-        let (d, n) = match induction_variable(d) {
+        let (d, n) = match induction_variable(d, false) {
             Some(n) => (d, Some(n)),
             None => {
                 pruned = without_redundant(d, |c| b.v.keys().any(|x| c.coef(x) != 0));
-                (&pruned, induction_variable(&pruned))
+                let n = induction_variable(&pruned, false).or_else(|| induction_variable(&pruned, true));
+                (&pruned, n)
             }
         };
         let n = n.ok_or_else(|| {
             Error::Domain(format!(
-                "{what}: the upper bound must be m + c for an integer symbol m with only a lower bound (an open range), and the lower bound must not depend on it"
+                "{what}: the upper bound must be m + c for an integer symbol m with one lower bound, and the lower bound must not depend on it"
             ))
         })?;
         let low = d.cons.iter().find(|c| c.coef(&n) == 1).expect("found above");
         let n0 = low.minus(&Aff::var(&n)).scaled(-1);
         let rest = Domain {
             cons: d.cons.iter().filter(|c| c.coef(&n) == 0).cloned().collect(),
+        };
+        // An upper bound on n: each value's case is checked where that value is in the domain,
+        // and each step n → n + 1 where both are.
+        let above: Vec<Aff> = d.cons.iter().filter(|c| c.coef(&n) < 0).cloned().collect();
+        let at_value = |m: &Aff| if above.is_empty() { rest.clone() } else { d.subst(&n, m) };
+        let next_in_domain = |dom: Domain| Domain {
+            cons: dom
+                .cons
+                .into_iter()
+                .chain(above.iter().map(|c| c.shifted(c.coef(&n))))
+                .collect(),
         };
         if !d.implies_ge(&b.minus(a).shifted(1)) {
             return Err(Error::Domain(format!("{what}: cannot show b − a ≥ −1 on {}", d.show())));
@@ -544,13 +560,16 @@ impl<'a> Translator<'a> {
                     case.extend(lin_neg(&lin_subst(sym, &hn, &n, &at)));
                     self.expect_zero(
                         &case,
-                        &rest,
+                        &at_value(&at),
                         &format!("{what}: the case {n} = {at}, where the closed form's coefficient vanishes (checked directly)"),
                     )?;
                 }
                 if start != n0 {
                     direct = format!("; {n} = {n0}..={} checked directly", start.shifted(-1));
-                    d_ind = rest.with(Aff::var(&n).minus(&start));
+                    d_ind = Domain {
+                        cons: d.cons.iter().filter(|c| c.coef(&n) <= 0).cloned().collect(),
+                    }
+                    .with(Aff::var(&n).minus(&start));
                     n0 = start;
                 }
                 let r = hn[0].recip(sym)?;
@@ -562,6 +581,7 @@ impl<'a> Translator<'a> {
                 (f, base, None)
             }
         };
+        let d_ind = next_in_domain(d_ind);
         let (cert, found) = match self.certs.get(self.next_cert).cloned() {
             Some(c) => {
                 self.next_cert += 1;
@@ -572,7 +592,7 @@ impl<'a> Translator<'a> {
                     Ok(c) => (c, true),
                     // No WZ pair: a recurrence of higher order may still prove a closed form.
                     Err(e) => match (&original.0[..], original.1) {
-                        ([summand], Some(rhs)) => {
+                        ([summand], Some(rhs)) if above.is_empty() => {
                             let shape = SumShape {
                                 k,
                                 a,
@@ -649,7 +669,7 @@ impl<'a> Translator<'a> {
             if value.is_some() {
                 let base = telescope::finite_sum(sym, &f, (k, a, b), (&n, &n0), &what).and_then(|mut base| {
                     base.extend(lin_neg(&lin_subst(sym, &rhs, &n, &n0)));
-                    self.expect_zero(&base, &rest, &format!("{what}: the base case {n} = {n0}"))
+                    self.expect_zero(&base, &at_value(&n0), &format!("{what}: the base case {n} = {n0}"))
                 });
                 if let Err(e) = base {
                     break 'checks Err(e);
@@ -666,7 +686,7 @@ impl<'a> Translator<'a> {
             (Ok(()), ..) => Ok(value.unwrap_or(rhs)),
             // A WZ candidate of the search that does not prove the closed form: a recurrence
             // of higher order may; if not, the WZ reason stands.
-            (Err(e), [summand], Some(closed)) if found => {
+            (Err(e), [summand], Some(closed)) if found && above.is_empty() => {
                 self.log.truncate(marks.0);
                 self.used.truncate(marks.1);
                 let shape = SumShape {

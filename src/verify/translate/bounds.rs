@@ -35,6 +35,22 @@ pub(super) fn support_start(v: &str, a: &Aff, terms: &[Term], d: &Domain) -> Aff
     a.clone()
 }
 
+/// The last index where a sum's terms can be nonzero: `X` when every term has the support
+/// condition `X − v ≥ 0` (so is zero above `X`) and `a − 1 ≤ X ≤ b` on the domain; else `b`.
+/// `Σ_{i=j}^{n+r} C(r, i − j) …` becomes `Σ_{i=j}^{j+r}`, whose bound has one open variable.
+pub(super) fn support_end(v: &str, a: &Aff, b: &Aff, terms: &[Term], d: &Domain) -> Aff {
+    let Some(first) = terms.first() else {
+        return b.clone();
+    };
+    first
+        .support
+        .iter()
+        .filter(|s| s.coef(v) == -1 && terms.iter().all(|t| t.support.contains(s)))
+        .map(|s| s.plus(&Aff::var(v)))
+        .find(|end| end.coef(v) == 0 && d.implies_ge(&b.minus(end)) && d.implies_ge(&end.minus(a).shifted(1)))
+        .unwrap_or_else(|| b.clone())
+}
+
 /// `d` without the constraints that `pick` selects and the others imply through a constraint
 /// on a unit index (the same integer points): the bounds `0 ≤ ĵ ≤ n` of the unit polygon's
 /// index make a range's own `n ≥ 0` redundant, and a sum over `n` must see `n ≥ ĵ` alone. A
@@ -63,4 +79,31 @@ pub(super) fn without_redundant(d: &Domain, pick: impl Fn(&Aff) -> bool) -> Doma
         k += 1;
     }
     Domain { cons }
+}
+
+/// The terms as they are on the sum's range, where every condition the range implies holds:
+/// those conditions (support, definedness) are dropped, and each pair `x! · 1/x!` with `x ≥ 0`
+/// cancels. A WZ certificate times the terms is read one past the range (`G(n, b + 1)`); there
+/// it keeps the value of its formula instead of a cut-off (`Σ_{k=0}^{r} C(r, k) …` reads
+/// `C(r, r + 1)` through its shifted factorials) or an undefined pair (`B(i, n, t)/C(n, i)` at
+/// `i = n + 1`). The sum's value is unchanged: on the range each dropped factor is 1.
+pub(super) fn on_range(terms: &mut [Term], range: &Domain) {
+    for t in terms {
+        t.support.retain(|s| !range.implies_ge(s));
+        t.defined.retain(|s| !range.implies_ge(s));
+        let mut k = 0;
+        while k < t.facts.len() {
+            let (x, e) = t.facts[k].clone();
+            let partner = t.facts.iter().position(|(y, f)| *y == x && *f == -e);
+            match partner {
+                Some(p) if range.implies_ge(&x) => {
+                    let (hi, lo) = (k.max(p), k.min(p));
+                    t.facts.remove(hi);
+                    t.facts.remove(lo);
+                    k = 0;
+                }
+                _ => k += 1,
+            }
+        }
+    }
 }
