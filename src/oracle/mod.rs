@@ -96,6 +96,7 @@ mod values;
 
 pub use crate::float::{nearest_f64, ulp, ulp_distance, ulp_error, UlpError};
 pub use batch::MAX_BATCH;
+pub use cost::check_scheme_work;
 pub use io::{read_line_bounded, serve, skip_line, Line, READ_CHUNK_BYTES};
 pub use judge::{judge_float, BoundCheck, FloatEvalAnswer, FloatMethod};
 pub use protocol::{check_weight_count, Answer, Op, OPS};
