@@ -391,14 +391,8 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             if !scheme {
                 return emit(&answer, format, None);
             }
-            // the scheme is the whole triangle of exact lerps, as in a subdivision: the same
-            // work limit applies (this also bounds the printed size)
-            Op::Split {
-                curve: curve.clone(),
-                t: t.clone(),
-            }
-            .check_limits()
-            .map_err(|err| format!("--scheme: {err}"))?;
+            // the scheme is the whole triangle of exact lerps (this also bounds the printed size)
+            casteljau::oracle::check_scheme_work(&curve, &t).map_err(|err| format!("--scheme: {err}"))?;
             let scheme = curve.scheme(&t);
             match format {
                 Format::Text => {

@@ -29,6 +29,60 @@ fn is_dyadic(t: &BigRational) -> bool {
     t.denom().trailing_zeros().is_none_or(|z| z + 1 == t.denom().bits())
 }
 
+/// What the denominators of some numbers are: one unit of a model costs very different CPU
+/// time on each (a power of two reduces by shifts, a divisor of a power of ten by a few small
+/// factors, unrelated denominators by full gcds), so estimates are calibrated per kind.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) enum NumberKind {
+    /// Every denominator is 1.
+    Integer,
+    /// Every denominator is a power of two (floats).
+    Dyadic,
+    /// Every denominator divides a power of ten (decimals).
+    Decimal,
+    /// Anything else.
+    General,
+}
+
+/// The kind of `numbers`: the most general of their denominators' kinds.
+pub(crate) fn number_kind<'a>(numbers: impl IntoIterator<Item = &'a BigRational>) -> NumberKind {
+    let mut kind = NumberKind::Integer;
+    let mut last: Option<&num_bigint::BigInt> = None;
+    for r in numbers {
+        let d = r.denom();
+        // runs of one denominator (decimals of one scale) are classified once
+        if last == Some(d) {
+            continue;
+        }
+        last = Some(d);
+        kind = kind.max(denominator_kind(d));
+        if kind == NumberKind::General {
+            break;
+        }
+    }
+    kind
+}
+
+fn denominator_kind(d: &num_bigint::BigInt) -> NumberKind {
+    let twos = d.trailing_zeros().unwrap_or(0);
+    let odd = d >> twos;
+    if odd == num_bigint::BigInt::from(1) {
+        return if twos == 0 {
+            NumberKind::Integer
+        } else {
+            NumberKind::Dyadic
+        };
+    }
+    // a power of five has about bits / log2(5) factors: the two exponents that fit its size
+    let guess = ((odd.bits() - 1) as f64 / 5f64.log2()) as u32;
+    let five = num_bigint::BigInt::from(5);
+    if (guess..=guess + 1).any(|m| five.pow(m) == odd) {
+        NumberKind::Decimal
+    } else {
+        NumberKind::General
+    }
+}
+
 fn max_bits<'a>(numbers: impl IntoIterator<Item = &'a BigRational>) -> f64 {
     numbers.into_iter().map(bits).fold(0.0, f64::max)
 }
@@ -206,8 +260,9 @@ pub(crate) fn elevate_work(curve: &BezierCurve<BigRational>, by: usize) -> f64 {
     terms * (INPUT_WEIGHT * b * b + ELEVATION_WEIGHT * (b + weight_bits) * (b + weight_bits)) + (total as f64).powi(3)
 }
 
-/// The `order`-th derivative curve, or with `at` its vector there.
-pub(crate) fn derivative_work(curve: &BezierCurve<BigRational>, order: usize, at: Option<&BigRational>) -> f64 {
+/// The `order`-th derivative curve, and with `at` its vector there: the work of the
+/// differences and that of the evaluation (the kernels spend their units differently).
+pub(crate) fn derivative_work(curve: &BezierCurve<BigRational>, order: usize, at: Option<&BigRational>) -> (f64, f64) {
     let (n, k) = (curve.degree(), order.min(curve.degree()));
     // Δ^k grows by k bits, the factor n!/(n−k)! has about k·log2(n) bits
     let shared = k as f64 * (1.0 + (n.max(2) as f64).log2());
@@ -215,7 +270,10 @@ pub(crate) fn derivative_work(curve: &BezierCurve<BigRational>, order: usize, at
     let diffs = (k.max(1) * (n + 1)) as f64 * curve.dim() as f64 * op_cost(curve_bits(curve), shared, mixed);
     let b = curve_bits(curve) + shared + mixed;
     let level = curve_den_growth(curve);
-    diffs + at.map_or(0.0, |t| triangle_work(n - k, curve.dim(), b, t, level))
+    (
+        diffs,
+        at.map_or(0.0, |t| triangle_work(n - k, curve.dim(), b, t, level)),
+    )
 }
 
 /// `x(t)` of a rational curve: the fraction-free kernel on the homogeneous points `(w b, w)`.
@@ -259,7 +317,10 @@ pub(crate) fn fit_cubic_work(data: &CubicFitData<BigRational>) -> f64 {
     // coordinate on products of up to about ten input numbers; calibrated by
     // `examples/work_calibration.rs` (64-D points of 32-digit fractions took 14–48 s
     // at weight 1 on a busy machine, so the weight is 15)
-    15.0 * (60 * d.x0.dim() + 100) as f64 * op_cost(10.0 * max_bits(numbers), 0.0, 0.0)
+    // sums over the coordinates of products with unrelated denominators grow by the common
+    // denominator's bits (`tests/calibration.rs`: 30-digit fractions take dim^2.8)
+    let (common, _) = common_denominator(numbers.clone());
+    15.0 * (60 * d.x0.dim() + 100) as f64 * op_cost(10.0 * max_bits(numbers) + common, 0.0, 0.0)
 }
 
 /// The Bézier points of a curve given in the power basis, `power[k][i]` coordinate `k`'s

@@ -132,14 +132,15 @@ fn batches_and_methods_answer_per_parameter() {
     assert!(r["error"].as_str().unwrap().contains("4096"), "{r}");
     // the work limit counts the whole batch
     let pts: Vec<String> = (0..=300).map(|i| format!("[{}]", (i * 7919) % 1000)).collect();
-    let one = format!(r#"{{"op":"eval","points":[{}],"t":"1/3"}}"#, pts.join(","));
+    // at a float parameter the integers run the dyadic kernel, the costlier one
+    let one = format!(r#"{{"op":"eval","points":[{}],"t":0.1}}"#, pts.join(","));
     let work = casteljau::oracle::Op::from_json(&serde_json::from_str(&one).unwrap())
         .unwrap()
         .work();
     let fits = (casteljau::oracle::MAX_REQUEST_WORK / work) as usize;
     assert!((1..4000).contains(&fits), "{work}");
     let batch = |count: usize| {
-        let ts = vec![r#""1/3""#; count];
+        let ts = vec!["0.1"; count];
         ask(&format!(
             r#"{{"op":"eval","points":[{}],"t":[{}]}}"#,
             pts.join(","),

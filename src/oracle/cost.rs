@@ -1,26 +1,96 @@
-//! Each request's work estimate, from the work model of its kernel (`crate::work`).
+//! Each request's work estimate: the work model of its kernel (`crate::work`), calibrated per
+//! op and per kind of input numbers.
 
 use super::Op;
+use crate::curve::BezierCurve;
+use crate::error::Result;
 use crate::work::{
-    conic_work, derivative_work, elevate_work, eval_work, fit_cubic_work, rational_eval_work, split_work,
-    surface_eval_work, to_bezier_work,
+    conic_work, derivative_work, elevate_work, eval_work, fit_cubic_work, number_kind, rational_eval_work, split_work,
+    surface_eval_work, to_bezier_work, NumberKind,
 };
+use num_rational::BigRational;
+
+/// Per kind of input numbers (integers, floats, decimals, other fractions), how many of the
+/// oracle's units one unit of an op's model is worth.
+///
+/// The models count bit² of gcd-reduced arithmetic, but the kernels are fraction-free: they
+/// take the common denominator once and then multiply integers, so the model's units cost
+/// more or less CPU time by op and by kind of number. Each entry is measured by the ignored
+/// `sweep` of `tests/calibration.rs` (the kernel and the answer written as JSON, on one core
+/// of a busy 2-core machine), at the size where the op's requests of that kind take 0.25 s of
+/// CPU (or at the largest the other limits allow): there, the request's estimate is
+/// [`MAX_REQUEST_WORK`](super::MAX_REQUEST_WORK).
+struct ByKind([f64; 4]);
+
+impl ByKind {
+    fn of(&self, kind: NumberKind) -> f64 {
+        self.0[kind as usize]
+    }
+}
+
+const EVAL: ByKind = ByKind([0.027, 0.81, 0.005, 0.0003]);
+const SPLIT: ByKind = ByKind([0.00066, 0.0037, 0.00027, 0.003]);
+const ELEVATE: ByKind = ByKind([0.0043, 0.006, 9.4e-5, 0.0048]);
+const DERIVATIVE_AT: ByKind = ByKind([3.8e-7, 2.1e-7, 1.2e-8, 2.8e-6]);
+const DERIVATIVE: ByKind = ByKind([2.2e-4, 2.6e-4, 2.0e-5, 0.011]);
+const TO_BEZIER: ByKind = ByKind([4.0, 2.8, 0.012, 0.062]);
+const RATIONAL_EVAL: ByKind = ByKind([0.014, 0.035, 0.019, 0.15]);
+const SURFACE_EVAL: ByKind = ByKind([0.63, 0.41, 0.33, 0.024]);
+const FIT_CUBIC: ByKind = ByKind([0.16, 0.015, 0.017, 0.02]);
+const CONIC: ByKind = ByKind([0.17, 0.17, 0.17, 0.17]);
 
 impl Op {
-    /// A rough count of the work this request needs (Σ bits² over its rational operations,
-    /// see [`MAX_REQUEST_WORK`](super::MAX_REQUEST_WORK)), computed before anything else so
-    /// that absurd requests are refused at once.
+    /// The work this request needs, in units of which [`MAX_REQUEST_WORK`](super::MAX_REQUEST_WORK)
+    /// take about a quarter of a second of CPU: its kernel's model (roughly Σ bits² over its
+    /// rational operations) times the op's calibration for the kind of its input numbers.
+    /// Computed before anything else so that absurd requests are refused at once.
     pub fn work(&self) -> f64 {
+        let kind = |numbers: &mut dyn Iterator<Item = &BigRational>| number_kind(numbers);
+        // integers at a dyadic parameter run the dyadic kernels, whose numbers grow by the
+        // parameter's bits at every level (degree 3788 of integers at 0.1 took 5 s as integers)
+        let at = |kind: NumberKind, ts: &[&BigRational]| match number_kind(ts.iter().copied()) {
+            NumberKind::Dyadic if kind == NumberKind::Integer => NumberKind::Dyadic,
+            _ => kind,
+        };
+        let curve_kind =
+            |c: &crate::curve::BezierCurve<BigRational>| kind(&mut c.points().iter().flat_map(|p| p.coords()));
+        let rational_kind = |c: &crate::rational::RationalBezierCurve<BigRational>| {
+            kind(&mut c.points().iter().flat_map(|p| p.coords()).chain(c.weights()))
+        };
         match self {
-            Op::Eval { curve, t, .. } | Op::FloatEval { curve, t, .. } => eval_work(curve, t),
-            Op::Split { curve, t } => split_work(curve, t),
-            Op::Elevate { curve, by } => elevate_work(curve, *by),
-            Op::Derivative { curve, order, at } => derivative_work(curve, *order, at.as_ref()),
-            Op::RationalEval { curve, t, .. } => rational_eval_work(curve, t),
-            Op::Conic { curve } => conic_work(curve),
-            Op::SurfaceEval { surface, u, v, .. } => surface_eval_work(surface, u, v),
-            Op::FitCubic { data } => fit_cubic_work(data),
-            Op::ToBezier { power } => to_bezier_work(power),
+            Op::Eval { curve, t, .. } | Op::FloatEval { curve, t, .. } => {
+                eval_work(curve, t) * EVAL.of(at(curve_kind(curve), &[t]))
+            }
+            Op::Split { curve, t } => split_work(curve, t) * SPLIT.of(at(curve_kind(curve), &[t])),
+            Op::Elevate { curve, by } => elevate_work(curve, *by) * ELEVATE.of(curve_kind(curve)),
+            Op::Derivative { curve, order, at: t } => {
+                let (differences, evaluation) = derivative_work(curve, *order, t.as_ref());
+                let at_t: Vec<&BigRational> = t.iter().collect();
+                let kind = at(curve_kind(curve), at_t.as_slice());
+                differences * DERIVATIVE.of(kind) + evaluation * DERIVATIVE_AT.of(kind)
+            }
+            Op::RationalEval { curve, t, .. } => {
+                rational_eval_work(curve, t) * RATIONAL_EVAL.of(at(rational_kind(curve), &[t]))
+            }
+            Op::Conic { curve } => conic_work(curve) * CONIC.of(rational_kind(curve)),
+            Op::SurfaceEval { surface, u, v, .. } => {
+                let numbers = &mut surface.net().iter().flatten().flat_map(|p| p.coords());
+                surface_eval_work(surface, u, v) * SURFACE_EVAL.of(at(kind(numbers), &[u, v]))
+            }
+            Op::FitCubic { data } => {
+                let d = data;
+                let numbers = &mut [&d.x0, &d.x1, &d.xh, &d.d0, &d.d1].into_iter().flat_map(|p| p.coords());
+                fit_cubic_work(data) * FIT_CUBIC.of(kind(numbers))
+            }
+            Op::ToBezier { power } => to_bezier_work(power) * TO_BEZIER.of(kind(&mut power.iter().flatten())),
         }
     }
+}
+
+/// The limit of the whole de Casteljau scheme of `curve` at `t` (`eval --scheme`), which
+/// runs every gcd-reduced lerp and prints each: the triangle's model without the calibration
+/// of `split`, whose fraction-free kernel writes only the two halves (degree 1000 of
+/// three-digit integers at 1/3 took 9 s and printed 1.7 GB).
+pub fn check_scheme_work(curve: &BezierCurve<BigRational>, t: &BigRational) -> Result<()> {
+    super::protocol::check_work(split_work(curve, t))
 }
