@@ -131,6 +131,35 @@ proptest! {
         prop_assert!(same(&c.elevate_fraction_free().unwrap(), &reference));
     }
 
+    /// Power coefficients by integer differences over the lcm, against the differences on
+    /// `BigRational`, and summed at `t` against the curve's point.
+    #[test]
+    fn power_basis(c in big_curve(&[0, 1, 2, 3, 7, 20]), t in parameter()) {
+        let fast = c.to_power().unwrap();
+        prop_assert!(same(&fast, &c.to_power_reference().unwrap()));
+        let mut sum = Point::origin(c.dim());
+        let mut power = Q::one();
+        for a in &fast {
+            sum = sum.add(&a.scale(&power));
+            power *= &t;
+        }
+        prop_assert!(same(&sum, &c.eval(&t)));
+    }
+
+    /// The net's power coefficients (columns, then rows) against the same on `BigRational`:
+    /// rows are a curve's points scaled and shifted, so columns differ too.
+    #[test]
+    fn net_power_basis(c in big_curve(&[0, 1, 3, 6]), rows in 1..=4usize, shift in thirty_digits()) {
+        let net: Vec<Vec<Point<Q>>> = (0..rows)
+            .map(|r| c.points().iter().map(|p| {
+                let s = p.scale(&Q::new(BigInt::from(r as u64 + 2), BigInt::from(r as u64 * 3 + 1)));
+                Point::new(s.coords().iter().map(|x| x + &shift * Q::from_integer(BigInt::from(r as u64))).collect()).unwrap()
+            }).collect())
+            .collect();
+        let surface = BezierSurface::new(net).unwrap();
+        prop_assert!(same(&surface.to_power().unwrap(), &surface.to_power_reference().unwrap()));
+    }
+
     #[test]
     fn split_of_big_numbers(c in big_curve(&[0, 1, 2, 3, 6]), t in parameter()) {
         prop_assert!(same(&c.split_at(&t), &c.split_at_reference(&t)));
@@ -179,6 +208,7 @@ proptest! {
     fn degree_200(c in big_curve(&[200]), t in parameter()) {
         prop_assert!(same(&c.eval(&t), &nested_reference(&c, &t)));
         prop_assert!(same(&c.elevate().unwrap(), &c.elevate_reference().unwrap()));
+        prop_assert!(same(&c.to_power().unwrap(), &c.to_power_reference().unwrap()));
     }
 }
 

@@ -56,6 +56,11 @@ pub(crate) trait Int: Clone + Sized {
     fn is_zero(&self) -> bool;
     fn add(&self, o: &Self) -> Option<Self>;
     fn sub(&self, o: &Self) -> Option<Self>;
+    /// `self ← o − self`.
+    fn sub_from(&mut self, o: &Self) -> Option<()> {
+        *self = o.sub(self)?;
+        Some(())
+    }
     fn mul(&self, o: &Self) -> Option<Self>;
     /// `self / o` for an `o` known to divide `self`.
     fn div_exact(&self, o: &Self) -> Self;
@@ -151,6 +156,11 @@ impl Int for BigInt {
     fn sub(&self, o: &Self) -> Option<Self> {
         Some(self - o)
     }
+    fn sub_from(&mut self, o: &Self) -> Option<()> {
+        // `o − self` into self's digits: no fresh integer per step.
+        *self = o - std::mem::take(self);
+        Some(())
+    }
     fn mul(&self, o: &Self) -> Option<Self> {
         Some(self * o)
     }
@@ -202,13 +212,13 @@ macro_rules! on_tier {
 }
 
 /// Exact coordinates over one common denominator: `values[i] = nums[i] / den`, `den > 0`.
-struct OverDenominator<I> {
-    nums: Vec<I>,
-    den: I,
+pub(crate) struct OverDenominator<I> {
+    pub(crate) nums: Vec<I>,
+    pub(crate) den: I,
 }
 
 /// Writes `values` over their least common denominator.
-fn common_denominator<'a, I: Int>(values: impl Iterator<Item = &'a BigRational>) -> Option<OverDenominator<I>> {
+pub(crate) fn common_denominator<'a, I: Int>(values: impl Iterator<Item = &'a BigRational>) -> Option<OverDenominator<I>> {
     let mut nums = Vec::with_capacity(values.size_hint().0);
     let mut dens = Vec::new();
     let mut den = I::one();
@@ -327,7 +337,8 @@ fn curve_eval<I: Int>(c: &BezierCurve<BigRational>, t: &BigRational) -> Option<P
 fn differences<I: Int>(mut x: Vec<I>, dim: usize, k: usize) -> Option<Vec<I>> {
     for _ in 0..k {
         for j in 0..x.len() - dim {
-            x[j] = x[j + dim].sub(&x[j])?;
+            let (left, right) = x.split_at_mut(j + dim);
+            left[j].sub_from(&right[0])?;
         }
         x.truncate(x.len() - dim);
     }
@@ -365,9 +376,6 @@ fn curve_derivative<I: Int>(c: &BezierCurve<BigRational>, k: usize) -> Option<Ve
         .collect()
 }
 
-/// The columns of the fraction-free de Casteljau triangle: calls `visit(r, column, den)` for
-/// `r = 0..=n`, where `column` holds the `n − r + 1` points `b_i^r(t)` as numerators over
-/// `den = D q^r`.
 /// The columns of the fraction-free de Casteljau triangle of coordinate `k`: calls
 /// `visit(r, column, den, q)` for `r = 0..=n`, where `column` holds the `n − r + 1` values
 /// `b_i^r(t)` as numerators over `den · q^r`.
@@ -393,7 +401,7 @@ fn casteljau_columns<I: Int>(
 }
 
 /// Points from the values `values[i][k]` of coordinate `k` of point `i`.
-fn transpose(values: Vec<Vec<BigRational>>, count: usize) -> Points {
+pub(crate) fn transpose(values: Vec<Vec<BigRational>>, count: usize) -> Points {
     let mut points: Vec<Vec<BigRational>> = (0..count).map(|_| Vec::with_capacity(values.len())).collect();
     for column in values {
         for (point, v) in points.iter_mut().zip(column) {

@@ -228,6 +228,30 @@ pub(crate) fn bernstein_sum(values: &[&BigRational], a: &BigInt, b: &BigInt) -> 
     }
 }
 
+/// The lcm of the denominators as a product tree of short factors, `f_i = d_i / gcd(L, d_i)`
+/// with `L` the lcm of the denominators before `d_i` (factors 1 left out): their product is
+/// the lcm, and a reduction against it needs only the remainders modulo the factors
+/// ([`reduce_over_tree`]). `None` when every denominator is 1.
+pub(crate) fn lcm_tree<'a>(denominators: impl Iterator<Item = &'a BigInt>) -> Option<ProductTree> {
+    let mut lcm = BigInt::one();
+    let mut factors = Vec::new();
+    for d in denominators {
+        if d.is_one() {
+            continue;
+        }
+        let g = gcd::gcd_int(&lcm, d);
+        let f = if g.is_one() { d.clone() } else { d / g };
+        if !f.is_one() {
+            lcm *= &f;
+            factors.push(f);
+        }
+    }
+    if factors.is_empty() {
+        return None;
+    }
+    Some(ProductTree::new(&factors.iter().collect::<Vec<_>>()))
+}
+
 /// The lcm of the denominators when it stays short (at most twice the longest one plus two
 /// words): denominators that share their factors. `None` as soon as it grows past that.
 fn short_common_denominator(values: &[&BigRational]) -> Option<BigInt> {
@@ -247,7 +271,7 @@ fn short_common_denominator(values: &[&BigRational]) -> Option<BigInt> {
 }
 
 /// `num / (Π tree's factors · bⁿ)` in lowest terms, `b > 0`.
-fn reduce_over_tree(num: BigInt, tree: &ProductTree, b: &BigInt, n: usize) -> BigRational {
+pub(crate) fn reduce_over_tree(num: BigInt, tree: &ProductTree, b: &BigInt, n: usize) -> BigRational {
     if num.is_zero() {
         return BigRational::new_raw(num, BigInt::one());
     }
