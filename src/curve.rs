@@ -466,20 +466,14 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     }
 
     /// The `k`-th derivative vector at `t`: zero when `k` exceeds the degree.
+    ///
+    /// Exact rationals take the fraction-free kernel ([`BezierCurve::derivative_at_nested`]).
     pub fn derivative_at(&self, k: usize, t: &T) -> Result<P> {
         if k > self.degree() {
             return Ok(self.points[0].zero_like());
         }
         if T::EXACT {
             if let (Some(c), Some(t)) = (exact_curve(self), exact_scalar(t)) {
-                // From degree 64 on, the first derivative by the hodograph (pairwise) and its
-                // point (binary splitting), below by the nested sum over the common
-                // denominator. On 30-digit fractions (`exact_big/derivative_at`): 8.5 ms against
-                // 15.9 ms at degree 200, 266 µs against 169 µs at degree 20. (The difference of
-                // the last level's two points was slower at both: 29 ms and 891 µs.)
-                if k == 1 && c.degree() >= 64 {
-                    return Ok(point_back(c.derivative_fraction_free(1)?.eval(t)));
-                }
                 return Ok(point_back(c.derivative_at_nested(k, t)));
             }
         }

@@ -252,7 +252,17 @@ impl<T: Scalar> BezierSurface<T> {
     /// `b(u, v)` by the tensor de Casteljau algorithm, `u` first: each column `b_{·,j}` is
     /// reduced at `u` (giving the control points of the `u = u0` curve), then that curve is
     /// evaluated at `v`. Defined for every `(u, v)`, not only the unit square.
+    ///
+    /// Exact rationals take nested sums over integers with one reduction per coordinate
+    /// ([`BezierSurface::eval_nested`]).
     pub fn eval(&self, u: &T, v: &T) -> Point<T> {
+        if T::EXACT {
+            let exact = (self as &dyn std::any::Any).downcast_ref::<BezierSurface<BigRational>>();
+            let scalar = crate::exact::dispatch::exact_scalar;
+            if let (Some(s), Some(u), Some(v)) = (exact, scalar(u), scalar(v)) {
+                return crate::exact::dispatch::scalar_back(s.eval_nested(u, v)).expect("T is BigRational");
+            }
+        }
         self.iso_u(u).eval(v)
     }
 

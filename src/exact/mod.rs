@@ -8,7 +8,8 @@
 //!   surfaces over integers with one common denominator and one reduction at the end;
 //! - [`basis_table`]: [`BernsteinTable`], Bernstein rows at integer and rational parameters,
 //!   computed once and shared across threads;
-//! - [`gcd`]: Lehmer's gcd and the part-by-part reduction the kernels end with;
+//! - [`gcd`]: Lehmer's gcd, the part-by-part reduction the kernels end with, and the
+//!   quotient of two fractions;
 //! - `splitting`: the exact Bernstein sum on big integers by binary splitting (what `eval`
 //!   runs when machine words overflow), reduced through a remainder tree;
 //! - `power_basis`: `to_power` of curves and surfaces, differences over the lcm of the
