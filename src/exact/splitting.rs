@@ -232,14 +232,26 @@ pub(crate) fn first_derivative_sum(values: &[&BigRational], a: &BigInt, b: &BigI
 }
 
 /// One coordinate of a surface's point `b(u, v)`, `net[i][j]` the values of the net: each
-/// column `j` summed at `u` over the lcm of its denominators `L_j` (unreduced), then those
-/// columns at `v` by binary splitting over `Π L_j`, and one reduction against the short
-/// factors of all the `L_j` and `q_u^m q_v^n`.
+/// column `j` summed at `u` over a common denominator `L_j` (unreduced): the product of its
+/// denominators when they are unrelated, else their lcm; then those columns at `v` by
+/// binary splitting over `Π L_j`, and one reduction against the short factors of all the
+/// `L_j` and `q_u^m q_v^n`.
 pub(crate) fn net_sum(net: &[Vec<&BigRational>], u: &BigRational, v: &BigRational) -> BigRational {
     let (m, n) = (net.len() - 1, net[0].len() - 1);
     let (mut columns, mut lcms, mut factors) = (Vec::with_capacity(n + 1), Vec::with_capacity(n + 1), Vec::new());
     for j in 0..=n {
         let values: Vec<&BigRational> = net.iter().map(|row| row[j]).collect();
+        // Unrelated denominators: the column over their product, as `bernstein_sum` does
+        // (no lcm to compute, and each numerator stays as short as its input).
+        if short_common_denominator(&values).is_none() {
+            let denominators: Vec<&BigInt> = values.iter().map(|v| v.denom()).collect();
+            let numerators: Vec<BigInt> = values.iter().map(|v| v.numer().clone()).collect();
+            let tree = ProductTree::new(&denominators);
+            columns.push(sum_over(&numerators, Some(&tree), u.numer(), u.denom()));
+            factors.extend(denominators.into_iter().cloned());
+            lcms.push(tree.product().clone());
+            continue;
+        }
         let (numerators, tree) = over_lcm(&values);
         columns.push(sum_over(&numerators, None, u.numer(), u.denom()));
         match tree {
