@@ -6,7 +6,7 @@
 //! The group `exact_big` is the case no shortcut flatters: planar curves of degree 20, 200
 //! and 1000 with random 30-digit rational coordinates, each over its own denominator, and a
 //! random 20-digit parameter; `eval`, `split_at` and `elevate` as users call them, and up
-//! to degree 200 `derivative`, `derivative_at`, `to_power` (degree 20 only), the rational
+//! to degree 200 `derivative`, `derivative_at`, `to_power`, the rational
 //! curve's `eval` and the surface's `eval` on the same kind of numbers. It
 //! measures CPU time (of this thread), not wall time, so that the ratios to the Python
 //! peers of `scripts/exact_big.py`, which draws the same numbers, hold on a shared machine.
@@ -233,13 +233,9 @@ fn exact_big(c: &mut Criterion) {
         group.bench_with_input(BenchmarkId::new("derivative_at", n), &curve, |b, c| {
             b.iter_custom(|iters| cpu_time_of(iters, || c.derivative_at(1, black_box(&t)).expect("n ≥ 1")))
         });
-        // to_power differences the points on BigRational, a gcd per step: about 15 s per
-        // call at degree 200 (docs/performance.md), too long for a bench run.
-        if n <= 20 {
-            group.bench_with_input(BenchmarkId::new("to_power", n), &curve, |b, c| {
-                b.iter_custom(|iters| cpu_time_of(iters, || c.to_power().expect("exact")))
-            });
-        }
+        group.bench_with_input(BenchmarkId::new("to_power", n), &curve, |b, c| {
+            b.iter_custom(|iters| cpu_time_of(iters, || c.to_power().expect("exact")))
+        });
         let (rational, t) = big_rational_case(n);
         group.bench_with_input(BenchmarkId::new("rational_eval", n), &rational, |b, c| {
             b.iter_custom(|iters| cpu_time_of(iters, || c.eval(black_box(&t)).expect("positive weights")))

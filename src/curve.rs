@@ -18,6 +18,7 @@
 use crate::bernstein::{bernstein_all, bernstein_to_power, binomial_row, power_to_bernstein, reparametrize};
 use crate::error::{check_degree, Error, Result};
 use crate::exact::dispatch::{curve_back, exact_curve, exact_scalar, point_back, scalar_back};
+use crate::exact::power_basis;
 use crate::fixed::{elevate_points, split_points};
 use crate::hull::convex_weights;
 use crate::kernel::{de_casteljau, eval_cubic, with_column};
@@ -465,20 +466,14 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     }
 
     /// The `k`-th derivative vector at `t`: zero when `k` exceeds the degree.
+    ///
+    /// Exact rationals take the fraction-free kernel ([`BezierCurve::derivative_at_nested`]).
     pub fn derivative_at(&self, k: usize, t: &T) -> Result<P> {
         if k > self.degree() {
             return Ok(self.points[0].zero_like());
         }
         if T::EXACT {
             if let (Some(c), Some(t)) = (exact_curve(self), exact_scalar(t)) {
-                // From degree 64 on, the first derivative by the hodograph (pairwise) and its
-                // point (binary splitting), below by the nested sum over the common
-                // denominator. On 30-digit fractions (`exact_big/derivative_at`): 8.5 ms against
-                // 15.9 ms at degree 200, 266 µs against 169 µs at degree 20. (The difference of
-                // the last level's two points was slower at both: 29 ms and 891 µs.)
-                if k == 1 && c.degree() >= 64 {
-                    return Ok(point_back(c.derivative_fraction_free(1)?.eval(t)));
-                }
                 return Ok(point_back(c.derivative_at_nested(k, t)));
             }
         }
@@ -562,7 +557,22 @@ impl<T: Scalar> BezierCurve<T> {
     }
 
     /// The power-basis coefficients `a_0..a_n` (vectors) with `b(t) = Σ a_k t^k`.
+    ///
+    /// Exact rationals take forward differences over integers with one reduction per
+    /// coefficient (`exact::power_basis`).
     pub fn to_power(&self) -> Result<Vec<Point<T>>> {
+        if T::EXACT {
+            if let Some(c) = (self as &dyn std::any::Any).downcast_ref::<BezierCurve<BigRational>>() {
+                check_degree("degree", self.degree() as u128)?;
+                return Ok(scalar_back(power_basis::curve_power(c.points())).expect("T is BigRational"));
+            }
+        }
+        self.to_power_reference()
+    }
+
+    /// [`Self::to_power`] by forward differences on the scalar type itself: the reference
+    /// for the exact kernel.
+    pub fn to_power_reference(&self) -> Result<Vec<Point<T>>> {
         let per_coord: Vec<Vec<T>> = (0..self.dim())
             .map(|k| bernstein_to_power(&self.points.iter().map(|p| p.coords()[k].clone()).collect::<Vec<_>>()))
             .collect::<Result<_>>()?;

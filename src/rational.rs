@@ -170,7 +170,7 @@ impl<T: Scalar> RationalBezierCurve<T> {
         h.coords()[self.dim()].clone()
     }
 
-    fn vanishing(&self, t: &T) -> Error {
+    pub(crate) fn vanishing(&self, t: &T) -> Error {
         Error::DivisionByZero(format!(
             "the denominator w(t) = Σ w_i B_i(t) of the rational curve vanishes at t = {t}, where the curve has no point"
         ))
@@ -179,23 +179,14 @@ impl<T: Scalar> RationalBezierCurve<T> {
     /// `x(t) = Σ w_i b_i B_i(t) / Σ w_i B_i(t)` by de Casteljau on the homogeneous points,
     /// then projection. An error when `w(t) = 0`. Defined for every `t`, not only `[0, 1]`.
     ///
-    /// Exact rationals take the nested sum over integers
-    /// ([`RationalBezierCurve::eval_nested`]) up to degree 63, and from degree 64 the
-    /// homogeneous curve's point by [`BezierCurve::eval`]'s exact kernels, then the division.
+    /// Exact rationals take the homogeneous curve's point by [`BezierCurve::eval`]'s exact
+    /// kernels, then one quotient per coordinate ([`RationalBezierCurve::eval_nested`]).
     pub fn eval(&self, t: &T) -> Result<Point<T>> {
         if T::EXACT {
             let exact = (self as &dyn std::any::Any).downcast_ref::<RationalBezierCurve<BigRational>>();
             if let (Some(c), Some(exact_t)) = (exact, crate::exact::dispatch::exact_scalar(t)) {
-                // From degree 64 on, the homogeneous curve's point by the exact kernels of
-                // `BezierCurve::eval` (binary splitting past machine words); below, the nested
-                // sum over the common denominators. Measured on 30-digit fractions
-                // (`exact_big/rational_eval`): 53 ms against 131 ms at degree 200, 1.14 ms
-                // against 0.59 ms at degree 20.
-                if c.degree() < 64 {
-                    let point = c.eval_nested(exact_t)?;
-                    return Ok(crate::exact::dispatch::scalar_back(point).expect("T is BigRational"));
-                }
-                return self.project(&self.homogeneous.eval(t), t);
+                let point = c.eval_nested(exact_t)?;
+                return Ok(crate::exact::dispatch::scalar_back(point).expect("T is BigRational"));
             }
         }
         self.eval_reference(t)

@@ -7,6 +7,7 @@ use crate::hull::convex_weights;
 use crate::kernel::{de_casteljau, STACK_POINTS};
 use crate::point::{common_dimension, AffineMap, Point};
 use crate::scalar::Scalar;
+use num_rational::BigRational;
 use smallvec::SmallVec;
 use std::fmt;
 
@@ -151,7 +152,25 @@ impl<T: Scalar> BezierSurface<T> {
 
     /// The power-basis coefficients over the unit square: `out[k][l]` is the vector `c_{k,l}`
     /// with `b(u, v) = Σ_k Σ_l c_{k,l} u^k v^l`.
+    ///
+    /// Exact rationals take forward differences over integers with one reduction per
+    /// coefficient (`exact::power_basis`).
     pub fn to_power(&self) -> Result<Vec<Vec<Point<T>>>> {
+        if T::EXACT {
+            if let Some(s) = (self as &dyn std::any::Any).downcast_ref::<BezierSurface<BigRational>>() {
+                let (m, n) = self.degrees();
+                check_degree("degree", m as u128)?;
+                check_degree("degree", n as u128)?;
+                let power = crate::exact::power_basis::net_power(s.net());
+                return Ok(crate::exact::dispatch::scalar_back(power).expect("T is BigRational"));
+            }
+        }
+        self.to_power_reference()
+    }
+
+    /// [`Self::to_power`] by forward differences on the scalar type itself: the reference
+    /// for the exact kernel.
+    pub fn to_power_reference(&self) -> Result<Vec<Vec<Point<T>>>> {
         let per_coord: Vec<Vec<Vec<T>>> = (0..self.dim())
             .map(|k| {
                 let m = coordinate(&self.net, k);
@@ -233,7 +252,17 @@ impl<T: Scalar> BezierSurface<T> {
     /// `b(u, v)` by the tensor de Casteljau algorithm, `u` first: each column `b_{·,j}` is
     /// reduced at `u` (giving the control points of the `u = u0` curve), then that curve is
     /// evaluated at `v`. Defined for every `(u, v)`, not only the unit square.
+    ///
+    /// Exact rationals take nested sums over integers with one reduction per coordinate
+    /// ([`BezierSurface::eval_nested`]).
     pub fn eval(&self, u: &T, v: &T) -> Point<T> {
+        if T::EXACT {
+            let exact = (self as &dyn std::any::Any).downcast_ref::<BezierSurface<BigRational>>();
+            let scalar = crate::exact::dispatch::exact_scalar;
+            if let (Some(s), Some(u), Some(v)) = (exact, scalar(u), scalar(v)) {
+                return crate::exact::dispatch::scalar_back(s.eval_nested(u, v)).expect("T is BigRational");
+            }
+        }
         self.iso_u(u).eval(v)
     }
 

@@ -131,6 +131,51 @@ proptest! {
         prop_assert!(same(&c.elevate_fraction_free().unwrap(), &reference));
     }
 
+    /// Power coefficients by integer differences over the lcm, against the differences on
+    /// `BigRational`, and summed at `t` against the curve's point.
+    #[test]
+    fn power_basis(c in big_curve(&[0, 1, 2, 3, 7, 20]), t in parameter()) {
+        let fast = c.to_power().unwrap();
+        prop_assert!(same(&fast, &c.to_power_reference().unwrap()));
+        let mut sum = Point::origin(c.dim());
+        let mut power = Q::one();
+        for a in &fast {
+            sum = sum.add(&a.scale(&power));
+            power *= &t;
+        }
+        prop_assert!(same(&sum, &c.eval(&t)));
+    }
+
+    /// The net's power coefficients (columns, then rows) against the same on `BigRational`:
+    /// rows are a curve's points scaled and shifted, so columns differ too.
+    #[test]
+    fn net_power_basis(c in big_curve(&[0, 1, 3, 6]), rows in 1..=4usize, shift in thirty_digits()) {
+        let net: Vec<Vec<Point<Q>>> = (0..rows)
+            .map(|r| c.points().iter().map(|p| {
+                let s = p.scale(&Q::new(BigInt::from(r as u64 + 2), BigInt::from(r as u64 * 3 + 1)));
+                Point::new(s.coords().iter().map(|x| x + &shift * Q::from_integer(BigInt::from(r as u64))).collect()).unwrap()
+            }).collect())
+            .collect();
+        let surface = BezierSurface::new(net).unwrap();
+        prop_assert!(same(&surface.to_power().unwrap(), &surface.to_power_reference().unwrap()));
+    }
+
+    /// Nets of 30-digit fractions, each over its own denominator (or zero, small integers,
+    /// a shared denominator), at independent `u` and `v`, against the Bernstein double sum
+    /// on `BigRational`.
+    #[test]
+    fn net_points(
+        net in (1..=4usize, 1..=5usize, any::<u128>()).prop_flat_map(|(rows, columns, shared)| {
+            let shared = BigInt::from(ten_to(29) + shared % (9 * ten_to(29)));
+            proptest::collection::vec(proptest::collection::vec(proptest::collection::vec(coordinate(shared), 2), columns), rows)
+        }),
+        u in parameter(),
+        v in parameter(),
+    ) {
+        let surface = BezierSurface::new(net.into_iter().map(|row| row.into_iter().map(|p| Point::new(p).unwrap()).collect()).collect()).unwrap();
+        prop_assert!(same(&surface.eval(&u, &v), &surface.eval_bernstein(&u, &v)));
+    }
+
     #[test]
     fn split_of_big_numbers(c in big_curve(&[0, 1, 2, 3, 6]), t in parameter()) {
         prop_assert!(same(&c.split_at(&t), &c.split_at_reference(&t)));
@@ -172,13 +217,19 @@ proptest! {
         prop_assert!(same(&c.derivative_at(1, &t).unwrap(), &nested_reference(&hodograph, &t)));
         let w: Vec<Q> = (0..=c.degree()).map(|i| Q::new(BigInt::from(i as u64 * 7 + 3), BigInt::from(i as u64 % 5 + 2))).collect();
         let rational = RationalBezierCurve::new(c.points().to_vec(), w).unwrap();
-        prop_assert!(same(&rational.eval(&t).ok(), &rational.eval_nested(&t).ok()));
+        // Independent: the homogeneous point by the test's own nested sum, divided by
+        // num-rational.
+        let h = nested_reference(&rational.lift(), &t);
+        let (w, x) = h.coords().split_last().unwrap();
+        let expected = (!w.is_zero()).then(|| Point::new(x.iter().map(|c| c / w).collect()).unwrap());
+        prop_assert!(same(&rational.eval(&t).ok(), &expected));
     }
 
     #[test]
     fn degree_200(c in big_curve(&[200]), t in parameter()) {
         prop_assert!(same(&c.eval(&t), &nested_reference(&c, &t)));
         prop_assert!(same(&c.elevate().unwrap(), &c.elevate_reference().unwrap()));
+        prop_assert!(same(&c.to_power().unwrap(), &c.to_power_reference().unwrap()));
     }
 }
 

@@ -21,7 +21,7 @@
 //! computed on big integers (`pair_big`).
 //!
 //! The gcds `g` of all neighbouring denominators are computed first, four interleaved
-//! binary gcds at a time (`denominator_gcds`); the small gcds need residues modulo `α`,
+//! binary gcds at a time (`gcd::paired_gcds`); the small gcds need residues modulo `α`,
 //! `β` and `n + 1`, taken word by word with independent divisions (`SmallModulus`), and
 //! the divisions by those gcds are exact, done by multiplying by an inverse modulo `2^64`. The tests compare both with `==` against
 //! [`BezierCurve::elevate_reference`](crate::BezierCurve::elevate_reference).
@@ -208,100 +208,6 @@ impl SmallModulus {
     }
 }
 
-/// The gcds of `LANES` pairs of nonzero double words, computed together: the binary gcd is
-/// a chain of dependent steps that leaves most of the processor idle, and four independent
-/// chains interleaved in one loop fill it (about 1.5× the throughput of one at a time on
-/// 100-bit denominators; `benches/exact.rs`, `exact_big/elevate`). A finished lane keeps
-/// its value: with `b = 0`, the step below takes `a` for the shifted `b`, leaving `a` and
-/// a zero difference.
-fn gcd_u128_lanes<const LANES: usize>(first: [u128; LANES], second: [u128; LANES]) -> [u128; LANES] {
-    let mut shift = [0u32; LANES];
-    let mut a = [0u128; LANES];
-    let mut b = second;
-    for lane in 0..LANES {
-        shift[lane] = (first[lane] | second[lane]).trailing_zeros();
-        a[lane] = first[lane] >> first[lane].trailing_zeros();
-    }
-    // Double words while any unfinished lane needs them; then single words, a third of the
-    // work each. A lane finished here may hold a gcd beyond 64 bits: kept whole.
-    let unfinished_high = |a: &[u128; LANES], b: &[u128; LANES]| {
-        (0..LANES).fold(0, |high, lane| {
-            if b[lane] == 0 {
-                high
-            } else {
-                high | ((a[lane] | b[lane]) >> 64)
-            }
-        })
-    };
-    while unfinished_high(&a, &b) != 0 {
-        for lane in 0..LANES {
-            let odd = b[lane] >> (b[lane].trailing_zeros() & 127);
-            let odd = if b[lane] == 0 { a[lane] } else { odd };
-            b[lane] = a[lane].abs_diff(odd);
-            a[lane] = a[lane].min(odd);
-        }
-    }
-    let wide = a;
-    let mut a = a.map(|x| x as u64);
-    let mut b = b.map(|x| x as u64);
-    loop {
-        let mut left = 0;
-        for lane in 0..LANES {
-            let odd = b[lane] >> (b[lane].trailing_zeros() & 63);
-            let odd = if b[lane] == 0 { a[lane] } else { odd };
-            b[lane] = a[lane].abs_diff(odd);
-            a[lane] = a[lane].min(odd);
-            left |= b[lane];
-        }
-        if left == 0 {
-            break;
-        }
-    }
-    let mut out = [0u128; LANES];
-    for lane in 0..LANES {
-        // A lane whose gcd exceeds 64 bits finished above with a zero second value.
-        let gcd = if wide[lane] >> 64 != 0 {
-            wide[lane]
-        } else {
-            u128::from(a[lane])
-        };
-        out[lane] = gcd << shift[lane];
-    }
-    out
-}
-
-/// `gcd(den x_j, den y_j)` for every pair whose denominators are both words (the others 0),
-/// four pairs at a time.
-fn denominator_gcds(pairs: impl Iterator<Item = Option<(u128, u128)>>) -> Vec<u128> {
-    const LANES: usize = 4;
-    let mut gcds = Vec::new();
-    let mut first = [1u128; LANES];
-    let mut second = [1u128; LANES];
-    let mut slots = [0usize; LANES];
-    let mut filled = 0;
-    let flush = |first: &[u128; LANES], second: &[u128; LANES], slots: &[usize], gcds: &mut Vec<u128>| {
-        for (&slot, g) in slots.iter().zip(gcd_u128_lanes(*first, *second)) {
-            gcds[slot] = g;
-        }
-    };
-    for (slot, pair) in pairs.enumerate() {
-        gcds.push(0);
-        if let Some((d, e)) = pair {
-            (first[filled], second[filled], slots[filled]) = (d, e, slot);
-            filled += 1;
-            if filled == LANES {
-                flush(&first, &second, &slots, &mut gcds);
-                filled = 0;
-            }
-        }
-    }
-    // The unused lanes compute gcd(1, 1) and are not read.
-    first[filled..].fill(1);
-    second[filled..].fill(1);
-    flush(&first, &second, &slots[..filled], &mut gcds);
-    gcds
-}
-
 /// A reduced fraction `±num/den` on words.
 #[derive(Clone, Copy)]
 struct WordFraction {
@@ -425,7 +331,7 @@ fn combine_neighbours(
         .collect();
     // The word path's small moduli need weights below 2^16, which the degree limit keeps.
     let small = u16::try_from(total).ok().map(SmallModulus::new);
-    let gcds = denominator_gcds((0..n * dim).map(|j| match (small, words[j], words[j + dim]) {
+    let gcds = gcd::paired_gcds((0..n * dim).map(|j| match (small, words[j], words[j + dim]) {
         (Some(_), Some(x), Some(y)) => Some((x.den, y.den)),
         _ => None,
     }));
@@ -490,7 +396,7 @@ mod tests {
         ) {
             let input: Vec<Option<(u128, u128)>> =
                 pairs.iter().zip(&skipped).map(|(&p, &skip)| (!skip).then_some(p)).collect();
-            let got = denominator_gcds(input.iter().copied());
+            let got = gcd::paired_gcds(input.iter().copied());
             let want: Vec<u128> = input.iter().map(|p| p.map_or(0, |(a, b)| gcd_u128(a, b))).collect();
             prop_assert_eq!(got, want);
         }

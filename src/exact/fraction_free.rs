@@ -15,12 +15,12 @@
 //! | kernel | here | reference |
 //! |---|---|---|
 //! | one point, O(n) nested Bernstein sum | [`BezierCurve::eval_nested`] | [`BezierCurve::eval_reference`] |
-//! | derivative vector at `t` | [`BezierCurve::derivative_at_nested`] | [`BezierCurve::derivative_reference`] then [`BezierCurve::eval_reference`] |
+//! | derivative vector at `t` (the first past machine words: `splitting::first_derivative_sum`) | [`BezierCurve::derivative_at_nested`] | [`BezierCurve::derivative_reference`] then [`BezierCurve::eval_reference`] |
 //! | de Casteljau triangle, subdivision | [`BezierCurve::scheme_fraction_free`], [`BezierCurve::split_fraction_free`] | [`BezierCurve::scheme_reference`], [`BezierCurve::split_at_reference`] |
 //! | degree elevation (7), (8) | [`BezierCurve::elevate_fraction_free`], [`BezierCurve::elevate_by_fraction_free`] | [`BezierCurve::elevate_reference`], [`BezierCurve::elevate_by_reference`] |
 //! | derivative curve | [`BezierCurve::derivative_fraction_free`] | [`BezierCurve::derivative_reference`] |
-//! | rational curve point | [`RationalBezierCurve::eval_nested`] | [`RationalBezierCurve::eval_reference`] |
-//! | surface point | [`BezierSurface::eval_nested`] | [`BezierSurface::eval`] |
+//! | rational curve point (homogeneous point, then one quotient) | [`RationalBezierCurve::eval_nested`] | [`RationalBezierCurve::eval_reference`] |
+//! | surface point | [`BezierSurface::eval_nested`] | [`BezierSurface::eval_bernstein`] |
 //!
 //! The nested evaluation (Volk–Schumaker, Horner in Bernstein form) of `t = p/q`, `s = q − p`:
 //! `qⁿ D b(t) = Σ_i C(n,i) pⁱ s^(n−i) (D b_i)`, accumulated as `acc ← s·acc + C(n,i) pⁱ (D b_i)`
@@ -53,9 +53,13 @@ pub(crate) trait Int: Clone + Sized {
     fn one() -> Self {
         Self::from_u64(1)
     }
-    fn is_zero(&self) -> bool;
     fn add(&self, o: &Self) -> Option<Self>;
     fn sub(&self, o: &Self) -> Option<Self>;
+    /// `self ← o − self`.
+    fn sub_from(&mut self, o: &Self) -> Option<()> {
+        *self = o.sub(self)?;
+        Some(())
+    }
     fn mul(&self, o: &Self) -> Option<Self>;
     /// `self / o` for an `o` known to divide `self`.
     fn div_exact(&self, o: &Self) -> Self;
@@ -82,9 +86,6 @@ impl Int for i128 {
     }
     fn from_u64(x: u64) -> Self {
         x as i128
-    }
-    fn is_zero(&self) -> bool {
-        *self == 0
     }
     #[inline]
     fn add(&self, o: &Self) -> Option<Self> {
@@ -142,14 +143,16 @@ impl Int for BigInt {
     fn from_u64(x: u64) -> Self {
         BigInt::from(x)
     }
-    fn is_zero(&self) -> bool {
-        Zero::is_zero(self)
-    }
     fn add(&self, o: &Self) -> Option<Self> {
         Some(self + o)
     }
     fn sub(&self, o: &Self) -> Option<Self> {
         Some(self - o)
+    }
+    fn sub_from(&mut self, o: &Self) -> Option<()> {
+        // `o − self` into self's digits: no fresh integer per step.
+        *self = o - std::mem::take(self);
+        Some(())
     }
     fn mul(&self, o: &Self) -> Option<Self> {
         Some(self * o)
@@ -202,13 +205,15 @@ macro_rules! on_tier {
 }
 
 /// Exact coordinates over one common denominator: `values[i] = nums[i] / den`, `den > 0`.
-struct OverDenominator<I> {
-    nums: Vec<I>,
-    den: I,
+pub(crate) struct OverDenominator<I> {
+    pub(crate) nums: Vec<I>,
+    pub(crate) den: I,
 }
 
 /// Writes `values` over their least common denominator.
-fn common_denominator<'a, I: Int>(values: impl Iterator<Item = &'a BigRational>) -> Option<OverDenominator<I>> {
+pub(crate) fn common_denominator<'a, I: Int>(
+    values: impl Iterator<Item = &'a BigRational>,
+) -> Option<OverDenominator<I>> {
     let mut nums = Vec::with_capacity(values.size_hint().0);
     let mut dens = Vec::new();
     let mut den = I::one();
@@ -327,7 +332,8 @@ fn curve_eval<I: Int>(c: &BezierCurve<BigRational>, t: &BigRational) -> Option<P
 fn differences<I: Int>(mut x: Vec<I>, dim: usize, k: usize) -> Option<Vec<I>> {
     for _ in 0..k {
         for j in 0..x.len() - dim {
-            x[j] = x[j + dim].sub(&x[j])?;
+            let (left, right) = x.split_at_mut(j + dim);
+            left[j].sub_from(&right[0])?;
         }
         x.truncate(x.len() - dim);
     }
@@ -344,6 +350,21 @@ fn curve_derivative_at<I: Int>(c: &BezierCurve<BigRational>, k: usize, t: &BigRa
     let (p, q, s) = parameter::<I>(t)?;
     let factor = falling_factorial::<I>(n, k)?;
     point_by_coordinate(c.dim(), |j| {
+        if I::IS_BIG {
+            // The first derivative as one binary-splitting sum; the others over the lcm as a
+            // tree of short factors, reduced by a remainder tree, not a gcd of long numbers.
+            let values: Vec<&BigRational> = coordinate(c.points(), j).collect();
+            if k == 1 {
+                if let Some(d) = splitting::first_derivative_sum(&values, t.numer(), t.denom()) {
+                    return Some(d);
+                }
+            }
+            let (nums, tree) = splitting::over_lcm(&values);
+            let diffs = differences(nums, 1, k)?;
+            let (p, s, q) = (p.clone().into_big(), s.clone().into_big(), q.clone().into_big());
+            let acc = nested_sum(&diffs, 1, &p, &s)?.pop()? * factor.clone().into_big();
+            return Some(splitting::reduce_over(acc, tree.as_ref(), &[(&q, n - k)]));
+        }
         let x = common_denominator::<I>(coordinate(c.points(), j))?;
         let diffs = differences(x.nums, 1, k)?;
         let acc = nested_sum(&diffs, 1, &p, &s)?.pop()?.mul(&factor)?;
@@ -365,9 +386,6 @@ fn curve_derivative<I: Int>(c: &BezierCurve<BigRational>, k: usize) -> Option<Ve
         .collect()
 }
 
-/// The columns of the fraction-free de Casteljau triangle: calls `visit(r, column, den)` for
-/// `r = 0..=n`, where `column` holds the `n − r + 1` points `b_i^r(t)` as numerators over
-/// `den = D q^r`.
 /// The columns of the fraction-free de Casteljau triangle of coordinate `k`: calls
 /// `visit(r, column, den, q)` for `r = 0..=n`, where `column` holds the `n − r + 1` values
 /// `b_i^r(t)` as numerators over `den · q^r`.
@@ -393,7 +411,7 @@ fn casteljau_columns<I: Int>(
 }
 
 /// Points from the values `values[i][k]` of coordinate `k` of point `i`.
-fn transpose(values: Vec<Vec<BigRational>>, count: usize) -> Points {
+pub(crate) fn transpose(values: Vec<Vec<BigRational>>, count: usize) -> Points {
     let mut points: Vec<Vec<BigRational>> = (0..count).map(|_| Vec::with_capacity(values.len())).collect();
     for column in values {
         for (point, v) in points.iter_mut().zip(column) {
@@ -519,55 +537,38 @@ fn curve_elevate<I: Int>(c: &BezierCurve<BigRational>) -> Option<Vec<Point<BigRa
     Some(out)
 }
 
-/// Homogeneous coordinates `(w_i b_i, w_i)` as integers over one denominator: the points
-/// over `D1`, the weights over `D2`, so `(W_i B_i, W_i D1)` is `(w_i b_i, w_i)` times `D1 D2`.
-fn homogeneous<I: Int>(c: &RationalBezierCurve<BigRational>) -> Option<Vec<I>> {
-    let dim = c.dim();
-    let points = common_denominator::<I>(coordinates(c.points()))?;
-    let weights = common_denominator::<I>(c.weights().iter())?;
-    let mut h = Vec::with_capacity(c.weights().len() * (dim + 1));
-    for (b, w) in points.nums.chunks_exact(dim).zip(&weights.nums) {
-        for x in b {
-            h.push(x.mul(w)?);
-        }
-        h.push(w.mul(&points.den)?);
+/// `q_u^m q_v^n D b(u, v)` of one coordinate whose net values are `x` over `D`, in rows
+/// of `n + 1`: each row's nested sum at `v`, then the column of those at `u`.
+fn net_numerator<I: Int>(x: &[I], n: usize, (pu, su): (&I, &I), (pv, sv): (&I, &I)) -> Option<I> {
+    let mut rows = Vec::with_capacity(x.len() / (n + 1));
+    for row in x.chunks_exact(n + 1) {
+        rows.extend(nested_sum(row, 1, pv, sv)?);
     }
-    Some(h)
+    nested_sum(&rows, 1, pu, su)?.pop()
 }
 
-fn rational_eval<I: Int>(c: &RationalBezierCurve<BigRational>, t: &BigRational) -> Option<Result<Point<BigRational>>> {
-    let (p, _, s) = parameter::<I>(t)?;
-    let h = homogeneous::<I>(c)?;
-    let mut acc = nested_sum(&h, c.dim() + 1, &p, &s)?;
-    // Both the common denominators and qⁿ cancel in the projection x = X / W.
-    let w = acc.pop().expect("dim + 1 ≥ 2 homogeneous coordinates");
-    if w.is_zero() {
-        return Some(Err(Error::DivisionByZero(format!(
-            "the denominator w(t) = Σ w_i B_i(t) of the rational curve vanishes at t = {t}, where the curve has no point"
-        ))));
-    }
-    Some(Ok(point_over(acc, &w)))
-}
-
+// One coordinate at a time over its own common denominator, as `curve_eval`.
 fn surface_eval<I: Int>(
     sf: &BezierSurface<BigRational>,
     u: &BigRational,
     v: &BigRational,
 ) -> Option<Point<BigRational>> {
     let (m, n) = sf.degrees();
-    let dim = sf.dim();
     let (pu, qu, su) = parameter::<I>(u)?;
     let (pv, qv, sv) = parameter::<I>(v)?;
-    let x = common_denominator::<I>(sf.net().iter().flatten().flat_map(|p| p.coords()))?;
-    // Each row b_{i,·} at v (over D q_v^n), then the curve of those points at u.
-    let row_len = (n + 1) * dim;
-    let mut rows = Vec::with_capacity((m + 1) * dim);
-    for row in x.nums.chunks_exact(row_len) {
-        rows.extend(nested_sum(row, dim, &pv, &sv)?);
-    }
-    let acc = nested_sum(&rows, dim, &pu, &su)?;
-    let den = x.den.mul(&power(&qv, n)?)?.mul(&power(&qu, m)?)?;
-    Some(point_over(acc, &den))
+    point_by_coordinate(sf.dim(), |k| {
+        if I::IS_BIG {
+            let net: Vec<Vec<&BigRational>> = sf
+                .net()
+                .iter()
+                .map(|row| row.iter().map(|p| &p.coords()[k]).collect())
+                .collect();
+            return Some(splitting::net_sum(&net, u, v));
+        }
+        let x = common_denominator::<I>(sf.net().iter().flatten().map(|p| &p.coords()[k]))?;
+        let acc = net_numerator(&x.nums, n, (&pu, &su), (&pv, &sv))?;
+        Some(I::ratio(acc, x.den.mul(&power(&qv, n)?)?.mul(&power(&qu, m)?)?))
+    })
 }
 
 impl BezierCurve<BigRational> {
@@ -648,9 +649,10 @@ impl BezierCurve<BigRational> {
 }
 
 impl RationalBezierCurve<BigRational> {
-    /// `x(t)` by the nested sum on the homogeneous points over integers (their common
-    /// denominator cancels in the projection); equals [`RationalBezierCurve::eval`], and a
-    /// vanishing denominator `w(t) = 0` is the same error.
+    /// `x(t)` as the homogeneous curve's point by [`BezierCurve::eval`]'s exact kernels,
+    /// then `x = X / W` by the gcds of the two numerators and of the two denominators
+    /// ([`gcd::divide`]); equals [`RationalBezierCurve::eval`], and a vanishing
+    /// denominator `w(t) = 0` is the same error.
     ///
     /// ```
     /// use casteljau::{BigRational, RationalBezierCurve, Scalar};
@@ -659,13 +661,19 @@ impl RationalBezierCurve<BigRational> {
     /// assert_eq!(arc.eval_nested(&t).unwrap(), arc.eval(&t).unwrap());
     /// ```
     pub fn eval_nested(&self, t: &BigRational) -> Result<Point<BigRational>> {
-        words_then_big(|tier| on_tier!(tier, rational_eval(self, t)))
+        let h = self.homogeneous().eval(t);
+        let (w, x) = h.coords().split_last().expect("dim + 1 ≥ 2 homogeneous coordinates");
+        if w.is_zero() {
+            return Err(self.vanishing(t));
+        }
+        Ok(Point::new(x.iter().map(|c| gcd::divide(c, w)).collect()).expect("as many coordinates as a valid point"))
     }
 }
 
 impl BezierSurface<BigRational> {
     /// `b(u, v)` by nested sums over integers, rows at `v` then the column at `u`, one
-    /// reduction per coordinate; equals [`BezierSurface::eval`].
+    /// reduction per coordinate; equals [`BezierSurface::eval`], which runs it for exact
+    /// rationals.
     pub fn eval_nested(&self, u: &BigRational, v: &BigRational) -> Point<BigRational> {
         words_then_big(|tier| on_tier!(tier, surface_eval(self, u, v)))
     }

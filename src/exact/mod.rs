@@ -8,9 +8,12 @@
 //!   surfaces over integers with one common denominator and one reduction at the end;
 //! - [`basis_table`]: [`BernsteinTable`], Bernstein rows at integer and rational parameters,
 //!   computed once and shared across threads;
-//! - [`gcd`]: Lehmer's gcd and the part-by-part reduction the kernels end with;
+//! - [`gcd`]: Lehmer's gcd, the part-by-part reduction the kernels end with, and the
+//!   quotient of two fractions;
 //! - `splitting`: the exact Bernstein sum on big integers by binary splitting (what `eval`
 //!   runs when machine words overflow), reduced through a remainder tree;
+//! - `power_basis`: `to_power` of curves and surfaces, differences over the lcm of the
+//!   denominators and one reduction per coefficient;
 //! - `elevation_words`: one elevation step point by point, each coordinate on machine
 //!   words where it fits 256 bits;
 //! - `dispatch`: how the public generic methods hand exact rationals to the kernels.
@@ -20,6 +23,7 @@ pub(crate) mod dispatch;
 pub(crate) mod elevation_words;
 pub mod fraction_free;
 pub mod gcd;
+pub(crate) mod power_basis;
 pub mod small_rational;
 pub(crate) mod splitting;
 

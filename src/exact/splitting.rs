@@ -1,4 +1,5 @@
-//! The exact Bernstein sum of one coordinate on big integers, by binary splitting.
+//! The exact Bernstein sum of one coordinate on big integers, by binary splitting (and a
+//! surface's double sum, its columns' sums combined the same way: `net_sum`).
 //!
 //! With `t = a/b`, `s = b − a` and coordinates `x_i = c_i / d_i`,
 //!
@@ -44,7 +45,7 @@ use crate::exact::gcd::{self, Part};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
-use num_traits::{One, Zero};
+use num_traits::{One, ToPrimitive, Zero};
 use std::collections::BTreeMap;
 
 /// The products of the denominators over the nodes of the splitting tree, in pre-order: the
@@ -184,25 +185,94 @@ impl Sum<'_> {
     }
 }
 
+/// `T` with `Σ_i C(n,i) aⁱ s^(n−i) N_i / D_i = T / Π D_i`, `s = b − a`, for the numerators
+/// `N_i` over the factors `D_i` of `denominators` (all 1 when `None`), by binary splitting.
+pub(crate) fn sum_over(numerators: &[BigInt], denominators: Option<&ProductTree>, a: &BigInt, b: &BigInt) -> BigInt {
+    let n = numerators.len() - 1;
+    let s = b - a;
+    let sum = Sum {
+        n,
+        numerators,
+        denominators,
+        a_powers: &node_powers(a, n + 1),
+        s_powers: &node_powers(&s, n + 1),
+    };
+    let root = sum.node(0, n + 1, 0);
+    // Q = n! divides T (see the module documentation).
+    root.t / root.q
+}
+
+/// `b'(t)` of one coordinate, `n ≥ 1`, as one binary-splitting sum over the product `D` of
+/// the denominators: with `n C(n−1,i−1) = i C(n,i)` and `n C(n−1,i) = (n−i) C(n,i)`,
+///
+/// ```text
+/// bⁿ⁻¹ b'(t) = Σ_i C(n,i) a^(i−1) s^(n−1−i) (i s − (n−i) a) c_i/d_i = T / (a s D),
+/// ```
+///
+/// `T` the sum of this module with the numerators `c_i (i s − (n−i) a)`; `a s` divides `T`
+/// (every term has a factor `a s`). `None` at `t = 0` or `1` (`a s = 0`), and when the
+/// denominators share most of their factors (see [`short_common_denominator`]): their
+/// product would then be far longer than their lcm, and the caller's sum over the lcm is
+/// shorter.
+pub(crate) fn first_derivative_sum(values: &[&BigRational], a: &BigInt, b: &BigInt) -> Option<BigRational> {
+    let n = values.len() - 1;
+    let s = b - a;
+    if a.is_zero() || s.is_zero() || short_common_denominator(values).is_some() {
+        return None;
+    }
+    let denominators: Vec<&BigInt> = values.iter().map(|v| v.denom()).collect();
+    let numerators: Vec<BigInt> = values
+        .iter()
+        .enumerate()
+        .map(|(i, v)| v.numer() * (&s * i - a * (n - i)))
+        .collect();
+    let tree = ProductTree::new(&denominators);
+    let num = sum_over(&numerators, Some(&tree), a, b) / (a * &s);
+    Some(reduce_over(num, Some(&tree), &[(b, n - 1)]))
+}
+
+/// One coordinate of a surface's point `b(u, v)`, `net[i][j]` the values of the net: each
+/// column `j` summed at `u` over a common denominator `L_j` (unreduced): the product of its
+/// denominators when they are unrelated, else their lcm; then those columns at `v` by
+/// binary splitting over `Π L_j`, and one reduction against the short factors of all the
+/// `L_j` and `q_u^m q_v^n`.
+pub(crate) fn net_sum(net: &[Vec<&BigRational>], u: &BigRational, v: &BigRational) -> BigRational {
+    let (m, n) = (net.len() - 1, net[0].len() - 1);
+    let (mut columns, mut lcms, mut factors) = (Vec::with_capacity(n + 1), Vec::with_capacity(n + 1), Vec::new());
+    for j in 0..=n {
+        let values: Vec<&BigRational> = net.iter().map(|row| row[j]).collect();
+        // Unrelated denominators: the column over their product, as `bernstein_sum` does
+        // (no lcm to compute, and each numerator stays as short as its input).
+        if short_common_denominator(&values).is_none() {
+            let denominators: Vec<&BigInt> = values.iter().map(|v| v.denom()).collect();
+            let numerators: Vec<BigInt> = values.iter().map(|v| v.numer().clone()).collect();
+            let tree = ProductTree::new(&denominators);
+            columns.push(sum_over(&numerators, Some(&tree), u.numer(), u.denom()));
+            factors.extend(denominators.into_iter().cloned());
+            lcms.push(tree.product().clone());
+            continue;
+        }
+        let (numerators, tree) = over_lcm(&values);
+        columns.push(sum_over(&numerators, None, u.numer(), u.denom()));
+        match tree {
+            Some(tree) => {
+                factors.extend((0..tree.leaves).map(|i| tree.nodes[leaf_id(tree.leaves, i)].clone()));
+                lcms.push(tree.product().clone());
+            }
+            None => lcms.push(BigInt::one()),
+        }
+    }
+    let outer = ProductTree::new(&lcms.iter().collect::<Vec<_>>());
+    let num = sum_over(&columns, Some(&outer), v.numer(), v.denom());
+    let fine = (!factors.is_empty()).then(|| ProductTree::new(&factors.iter().collect::<Vec<_>>()));
+    reduce_over(num, fine.as_ref(), &[(v.denom(), n), (u.denom(), m)])
+}
+
 /// `Σ_i C(n,i) aⁱ s^(n−i) x_i / bⁿ` for `x_i = values[i]`, `t = a/b`, `s = b − a`, in lowest
 /// terms (see the [module documentation](self)).
 pub(crate) fn bernstein_sum(values: &[&BigRational], a: &BigInt, b: &BigInt) -> BigRational {
     let n = values.len() - 1;
-    let s = b - a;
-    let a_powers = node_powers(a, n + 1);
-    let s_powers = node_powers(&s, n + 1);
-    let run = |numerators: &[BigInt], denominators: Option<&ProductTree>| {
-        let sum = Sum {
-            n,
-            numerators,
-            denominators,
-            a_powers: &a_powers,
-            s_powers: &s_powers,
-        };
-        let root = sum.node(0, n + 1, 0);
-        // Q = n! divides T (see the module documentation).
-        root.t / root.q
-    };
+    let run = |numerators: &[BigInt], denominators: Option<&ProductTree>| sum_over(numerators, denominators, a, b);
     match short_common_denominator(values) {
         Some(common) => {
             let numerators: Vec<BigInt> = values
@@ -223,9 +293,33 @@ pub(crate) fn bernstein_sum(values: &[&BigRational], a: &BigInt, b: &BigInt) -> 
             let tree = ProductTree::new(&denominators);
             let numerators: Vec<BigInt> = values.iter().map(|v| v.numer().clone()).collect();
             let num = run(&numerators, Some(&tree));
-            reduce_over_tree(num, &tree, b, n)
+            reduce_over(num, Some(&tree), &[(b, n)])
         }
     }
+}
+
+/// The lcm of the denominators as a product tree of short factors, `f_i = d_i / gcd(L, d_i)`
+/// with `L` the lcm of the denominators before `d_i` (factors 1 left out): their product is
+/// the lcm, and a reduction against it needs only the remainders modulo the factors
+/// ([`reduce_over`]). `None` when every denominator is 1.
+pub(crate) fn lcm_tree<'a>(denominators: impl Iterator<Item = &'a BigInt>) -> Option<ProductTree> {
+    let mut lcm = BigInt::one();
+    let mut factors = Vec::new();
+    for d in denominators {
+        if d.is_one() {
+            continue;
+        }
+        let g = gcd::gcd_int(&lcm, d);
+        let f = if g.is_one() { d.clone() } else { d / g };
+        if !f.is_one() {
+            lcm *= &f;
+            factors.push(f);
+        }
+    }
+    if factors.is_empty() {
+        return None;
+    }
+    Some(ProductTree::new(&factors.iter().collect::<Vec<_>>()))
 }
 
 /// The lcm of the denominators when it stays short (at most twice the longest one plus two
@@ -246,28 +340,72 @@ fn short_common_denominator(values: &[&BigRational]) -> Option<BigInt> {
     Some(common)
 }
 
-/// `num / (Π tree's factors · bⁿ)` in lowest terms, `b > 0`.
-fn reduce_over_tree(num: BigInt, tree: &ProductTree, b: &BigInt, n: usize) -> BigRational {
+/// The numerators of `values` over the lcm of their denominators, and that lcm as a
+/// [`lcm_tree`] (`None` when it is 1).
+pub(crate) fn over_lcm(values: &[&BigRational]) -> (Vec<BigInt>, Option<ProductTree>) {
+    let tree = lcm_tree(values.iter().map(|v| v.denom()));
+    let numerators = match &tree {
+        None => values.iter().map(|v| v.numer().clone()).collect(),
+        Some(tree) => values
+            .iter()
+            .map(|v| {
+                if v.denom().is_one() {
+                    v.numer() * tree.product()
+                } else {
+                    v.numer() * (tree.product() / v.denom())
+                }
+            })
+            .collect(),
+    };
+    (numerators, tree)
+}
+
+/// `num / (Π tree's factors · Π bᵉ)` in lowest terms, each `b > 0`.
+pub(crate) fn reduce_over(num: BigInt, tree: Option<&ProductTree>, powers: &[(&BigInt, usize)]) -> BigRational {
     if num.is_zero() {
         return BigRational::new_raw(num, BigInt::one());
     }
-    // The remainder tree gives every gcd(num, d_i) at the cost of about one division of
-    // num by Π d_i; their product has the primes num shares with Π d_i
-    // (`gcd::gcd_with_product`).
-    let remainders = tree.remainders(&num);
-    let shared: Vec<BigInt> = (0..tree.leaves)
-        .zip(&remainders)
-        .map(|(i, r)| gcd::gcd_int(r, &tree.nodes[leaf_id(tree.leaves, i)]))
-        .filter(|h| !h.is_one())
-        .collect();
-    let g = gcd::gcd_with_product(&num, &shared);
-    let (num, den) = if g.is_one() {
-        (num, tree.product().clone())
-    } else {
-        (num.div_floor(&g), tree.product().div_floor(&g))
+    let (mut num, mut den) = match tree {
+        None => (num, BigInt::one()),
+        Some(tree) => {
+            // The remainder tree gives every gcd(num, d_i) at the cost of about one division
+            // of num by Π d_i; their product has the primes num shares with Π d_i
+            // (`gcd::gcd_with_product`).
+            let remainders = tree.remainders(&num);
+            let leaves: Vec<&BigInt> = (0..tree.leaves).map(|i| &tree.nodes[leaf_id(tree.leaves, i)]).collect();
+            // Double words (30-digit denominators): four gcds at a time.
+            let words = gcd::paired_gcds(remainders.iter().zip(&leaves).map(|(r, f)| {
+                let (r, f) = (r.to_u128()?, f.to_u128()?);
+                (r != 0).then_some((r, f))
+            }));
+            let shared: Vec<BigInt> = remainders
+                .iter()
+                .zip(&leaves)
+                .zip(words)
+                .map(|((r, f), word)| {
+                    if word != 0 {
+                        BigInt::from(word)
+                    } else {
+                        gcd::gcd_int(r, f)
+                    }
+                })
+                .filter(|h| !h.is_one())
+                .collect();
+            let g = gcd::gcd_with_product(&num, &shared);
+            if g.is_one() {
+                (num, tree.product().clone())
+            } else {
+                (num.div_floor(&g), tree.product().div_floor(&g))
+            }
+        }
     };
-    let (num, power_left) = gcd::reduce_by_power(num, b, n);
-    BigRational::new_raw(num, den * power_left)
+    // Each factor against what is left of the numerator (see `gcd::reduce`).
+    for (b, e) in powers {
+        let (rest, power_left) = gcd::reduce_by_power(num, b, *e);
+        num = rest;
+        den *= power_left;
+    }
+    BigRational::new_raw(num, den)
 }
 
 /// The pre-order index of leaf `i` in a tree of `leaves` leaves.

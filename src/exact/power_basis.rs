@@ -1,0 +1,217 @@
+//! Exact power-basis coefficients over integers: `to_power` of curves and surfaces.
+//!
+//! `a_j = C(n,j) Δ^j b_0` (text 000, §1.3). On [`BigRational`] the forward differences
+//! reduce a fraction at every one of their `n(n+1)/2` steps, each a gcd of numbers as long
+//! as the lcm of all denominators. Here each coordinate is written over that lcm `L` once,
+//! the differences are integer subtractions, and each coefficient is reduced once.
+//!
+//! `L` is kept as the product of short factors `f_i = d_i / gcd(L_{i−1}, d_i)` (with
+//! `L_{i−1}` the lcm of the earlier denominators), so the one reduction of a coefficient
+//! against `L` is a remainder tree over the `f_i` and gcds of short numbers
+//! (`splitting::reduce_over`), not a gcd of two long numbers. Inputs whose lcm and
+//! differences fit `i128` stay on machine words.
+
+use crate::exact::fraction_free::{common_denominator, transpose, Int};
+use crate::exact::gcd;
+use crate::exact::splitting;
+use crate::point::Point;
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{One, Zero};
+
+/// `C(n,j) Δ^j x_0` for `j = 0..=n`, over the same denominator as `x`.
+fn power_numerators<I: Int>(mut x: Vec<I>) -> Option<Vec<I>> {
+    let n = x.len() - 1;
+    let mut out = Vec::with_capacity(n + 1);
+    let mut binomial = I::one();
+    for j in 0..=n {
+        out.push(x[0].mul(&binomial)?);
+        for i in 0..n - j {
+            let (left, right) = x.split_at_mut(i + 1);
+            left[i].sub_from(&right[0])?;
+        }
+        x.pop();
+        binomial = binomial
+            .mul(&I::from_u64((n - j) as u64))?
+            .div_exact(&I::from_u64(j as u64 + 1));
+    }
+    Some(out)
+}
+
+/// A linear map on the integers of a coordinate, done the same over any common
+/// denominator.
+trait Transform {
+    fn apply<I: Int>(&self, x: Vec<I>) -> Option<Vec<I>>;
+}
+
+/// The power coefficients of one curve coordinate.
+struct Curve;
+
+impl Transform for Curve {
+    fn apply<I: Int>(&self, x: Vec<I>) -> Option<Vec<I>> {
+        power_numerators(x)
+    }
+}
+
+/// The power coefficients of one surface coordinate, the net flat in rows of `columns`:
+/// the curve's map on every column, then on every row.
+struct Net {
+    columns: usize,
+}
+
+impl Transform for Net {
+    fn apply<I: Int>(&self, x: Vec<I>) -> Option<Vec<I>> {
+        let (rows, columns) = (x.len() / self.columns, self.columns);
+        let mut x = x;
+        for j in 0..columns {
+            let column = (0..rows).map(|i| x[i * columns + j].clone()).collect();
+            for (i, v) in power_numerators(column)?.into_iter().enumerate() {
+                x[i * columns + j] = v;
+            }
+        }
+        let mut out = Vec::with_capacity(x.len());
+        for row in x.chunks_exact(columns) {
+            out.extend(power_numerators(row.to_vec())?);
+        }
+        Some(out)
+    }
+}
+
+/// `values` mapped by `f` on machine words, when they fit.
+fn on_words(values: &[&BigRational], f: &impl Transform) -> Option<Vec<BigRational>> {
+    let x = common_denominator::<i128>(values.iter().copied())?;
+    let out = f.apply(x.nums)?;
+    Some(out.into_iter().map(|a| i128::ratio(a, x.den)).collect())
+}
+
+/// `values` mapped by `f` exactly: on machine words when they fit, else over the lcm of the
+/// denominators as a product tree, with one reduction per output value.
+fn over_integers(values: &[&BigRational], f: &impl Transform) -> Vec<BigRational> {
+    if let Some(out) = on_words(values, f) {
+        return out;
+    }
+    let (numerators, tree) = splitting::over_lcm(values);
+    let out = f.apply::<BigInt>(numerators).expect("big integers do not overflow");
+    out.into_iter()
+        .map(|a| splitting::reduce_over(a, tree.as_ref(), &[]))
+        .collect()
+}
+
+/// The power coefficients of one curve coordinate on big integers, point by point: `a_j`
+/// depends on `b_0..b_j` alone, so it is computed over the lcm `L_j` of their denominators.
+/// The diagonal `e_k = Δ^k b_{j−k}`, `k = 0..=j`, takes `b_{j+1}` as `e'_0` and
+/// `e'_{k+1} = e'_k − e_k`; when `L` grows by a factor, so do the `e_k`.
+///
+/// **The reduction** of `a_j = C(n,j) Δ^j x_0` (the `x_i = c_i L_j / d_i` integers) against
+/// `L_j` needs only the primes `p` of `L_j` that are at most `n` or divide two of the
+/// denominators: for any other `p`, exactly one `d_i`, `i ≤ j`, has it, and modulo `p`
+/// every `x_k`, `k ≠ i`, vanishes (`p | L_j / d_k`), leaving
+/// `a_j ≡ ± C(n,j) C(j,i) c_i (L_j / d_i)`, a product of factors prime to `p` (`p > n`,
+/// `c_i / d_i` is reduced, and `L_j / d_i` has lost all of `p`). The part `R_j` of `L_j`
+/// made of those primes is short, and `gcd(a_j, L_j) = gcd(a_j, R_j)`.
+fn curve_power_big(values: &[&BigRational]) -> Vec<BigRational> {
+    let n = values.len() - 1;
+    // The primes that may cancel: those up to n and those of the gcds between a denominator
+    // and the lcm of the ones before it (a prime of two denominators divides the later one's).
+    let mut lcm = <BigInt as One>::one();
+    let mut factors = Vec::with_capacity(n + 1);
+    let mut base = primorial(n);
+    for v in values {
+        let d = v.denom();
+        let g = gcd::gcd_int(&lcm, d);
+        let f = if g.is_one() { d.clone() } else { d / &g };
+        if !g.is_one() {
+            base *= g;
+        }
+        lcm *= &f;
+        factors.push(f);
+    }
+    let mut lcm = <BigInt as One>::one();
+    let mut risky = <BigInt as One>::one();
+    let mut diagonal: Vec<BigInt> = Vec::with_capacity(n + 1);
+    let mut binomial = <BigInt as One>::one();
+    let mut out = Vec::with_capacity(n + 1);
+    for ((j, v), f) in values.iter().enumerate().zip(&factors) {
+        if !f.is_one() {
+            for e in &mut diagonal {
+                *e *= f;
+            }
+            lcm *= f;
+            risky *= part_over(f, &base);
+        }
+        let d = v.denom();
+        let mut next = if d.is_one() {
+            v.numer() * &lcm
+        } else {
+            v.numer() * (&lcm / d)
+        };
+        for e in &mut diagonal {
+            let old = std::mem::replace(e, next);
+            next = &*e - old;
+        }
+        diagonal.push(next);
+        let a = &diagonal[j] * &binomial;
+        let g = gcd::gcd_int(&a, &risky);
+        out.push(if a.is_zero() {
+            BigRational::new_raw(a, <BigInt as One>::one())
+        } else if g.is_one() {
+            BigRational::new_raw(a, lcm.clone())
+        } else {
+            BigRational::new_raw(a / &g, &lcm / &g)
+        });
+        binomial = binomial * (n - j) / (j + 1);
+    }
+    out
+}
+
+/// The largest divisor of `f > 0` made of primes that divide `base > 0`.
+fn part_over(f: &BigInt, base: &BigInt) -> BigInt {
+    let (mut rest, mut part) = (f.clone(), <BigInt as One>::one());
+    let mut h = gcd::gcd_int(&rest, base);
+    while !h.is_one() {
+        rest /= &h;
+        part *= &h;
+        h = gcd::gcd_int(&rest, &h);
+    }
+    part
+}
+
+/// The product of the primes up to `n`.
+fn primorial(n: usize) -> BigInt {
+    let mut composite = vec![false; n + 1];
+    let mut product = <BigInt as One>::one();
+    for p in 2..=n {
+        if !composite[p] {
+            product *= p;
+            for m in (p * p..=n).step_by(p) {
+                composite[m] = true;
+            }
+        }
+    }
+    product
+}
+
+/// The power coefficients `a_0..a_n` (points) of a curve with control points `points`.
+pub(crate) fn curve_power(points: &[Point<BigRational>]) -> Vec<Point<BigRational>> {
+    let dim = points[0].dim();
+    let per_coordinate: Vec<Vec<BigRational>> = (0..dim)
+        .map(|k| {
+            let values: Vec<&BigRational> = points.iter().map(|p| &p.coords()[k]).collect();
+            on_words(&values, &Curve).unwrap_or_else(|| curve_power_big(&values))
+        })
+        .collect();
+    transpose(per_coordinate, points.len())
+}
+
+/// The power coefficients `c_{k,l}` of a surface with control net `net`.
+pub(crate) fn net_power(net: &[Vec<Point<BigRational>>]) -> Vec<Vec<Point<BigRational>>> {
+    let (dim, columns) = (net[0][0].dim(), net[0].len());
+    let per_coordinate: Vec<Vec<BigRational>> = (0..dim)
+        .map(|k| {
+            let values: Vec<&BigRational> = net.iter().flatten().map(|p| &p.coords()[k]).collect();
+            over_integers(&values, &Net { columns })
+        })
+        .collect();
+    let flat = transpose(per_coordinate, net.len() * columns);
+    flat.chunks_exact(columns).map(<[_]>::to_vec).collect()
+}
