@@ -23,6 +23,11 @@ use num_rational::BigRational;
 use num_traits::{One, Zero};
 use std::collections::BTreeMap;
 
+mod modular;
+
+/// How much cheaper a modular pass is counted than exact elimination.
+const MODULAR_DISCOUNT: u128 = 32;
+
 /// Largest total degree of the numerator tried.
 pub const MAX_DEGREE: u32 = 6;
 /// Most unknown coefficients in one ansatz.
@@ -115,7 +120,7 @@ pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str) -> Result<Expr> {
     let (Some(r1), Some(r2)) = (quotient(&n1)?, quotient(&k1)?) else {
         return Err(none("the summand is not hypergeometric in n and k".into()));
     };
-    let (affs, polys) = ratio_denominator(&n1, f);
+    let (affs, polys) = ratio_denominator(sym, &n1, f)?;
     let mut d = RatFunc::from_int(1);
     let mut d_text: Vec<String> = Vec::new();
     for a in &affs {
@@ -165,39 +170,28 @@ pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str) -> Result<Expr> {
         // Σ c_i E_i.num · E0.den = −E0.num · Q, coefficient by coefficient.
         let cols: Vec<Poly> = es.iter().map(|x| x.num.mul(&e0.den)).collect();
         let rhs = e0.num.mul(&q);
-        let mut rows: BTreeMap<Vec<u16>, Vec<BigRational>> = BTreeMap::new();
-        let width = cols.len() + 1;
-        for (j, c) in cols.iter().enumerate() {
-            for (e, v) in c.terms_in(sym.names.len()) {
-                rows.entry(e).or_insert_with(|| vec![BigRational::zero(); width])[j] += v;
+        let mut over = None;
+        let mut charge = |cost: u128, what: &str| -> Result<()> {
+            work = work.saturating_add(cost);
+            if work > MAX_ANSATZ_WORK {
+                over = Some(format!(
+                    "its linear system ({what}) passes MAX_ANSATZ_WORK = {MAX_ANSATZ_WORK} (nonzero coefficients × pivots × words, over all degrees)"
+                ));
+                return Err(Error::Domain("the search's work limit".into()));
             }
-        }
-        for (e, v) in rhs.terms_in(sym.names.len()) {
-            rows.entry(e).or_insert_with(|| vec![BigRational::zero(); width])[width - 1] -= v;
-        }
-        let mut a: Vec<Vec<BigRational>> = rows.into_values().collect();
-        let (h, w) = (a.len(), width);
-        let nonzero = a.iter().flatten().filter(|x| !x.is_zero()).count();
-        let system_work = elimination_work(&a, w);
-        work = work.saturating_add(system_work);
-        if work > MAX_ANSATZ_WORK {
-            stopped = Some(format!(
-                "its linear system of {h} equations in {w} unknowns ({nonzero} nonzero coefficients) passes MAX_ANSATZ_WORK = {MAX_ANSATZ_WORK} (nonzero coefficients × pivots × words, over all degrees)"
-            ));
+            // The search's own limit first (its message names it), then the claim's.
+            sym.budget
+                .draw("work of the WZ certificate search", cost, MAX_ANSATZ_WORK)
+        };
+        let found = solve(sym, &cols, Some(&rhs), 0, &mut charge);
+        if let Some(why) = over {
+            stopped = Some(why);
             break;
         }
-        // The search's own limit first (its message names it), then the claim's.
-        sym.budget
-            .draw("work of the WZ certificate search", system_work, MAX_ANSATZ_WORK)?;
-        let pivots = row_reduce(&mut a)?;
         searched = Some(deg);
-        if pivots.contains(&(width - 1)) {
+        let Some(c) = found? else {
             continue;
-        }
-        let mut c = vec![BigRational::zero(); width - 1];
-        for (r, &p) in pivots.iter().enumerate() {
-            c[p] = a[r][width - 1].clone() / &a[r][p];
-        }
+        };
         if c.iter().all(Zero::is_zero) && !e0.num.is_zero() {
             continue;
         }
@@ -242,4 +236,98 @@ pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str) -> Result<Expr> {
         ),
         None => tried,
     }))
+}
+
+/// The solution of one linear system `Σ x_i cols_i = given` (each a polynomial, denominators
+/// cleared), or with no `given` a null vector whose first `first_free` entries (the `p_j`) are
+/// not all zero.
+///
+/// `charge` is told the work of each step before it is done (with what it is for) and may stop
+/// the search with an error.
+pub(super) fn solve(
+    sym: &Symbols,
+    cols: &[Poly],
+    given: Option<&Poly>,
+    first_free: usize,
+    charge: &mut dyn FnMut(u128, &str) -> Result<()>,
+) -> Result<Option<Vec<BigRational>>> {
+    let width = cols.len() + 1;
+    let mut rows: BTreeMap<Vec<u16>, Vec<BigRational>> = BTreeMap::new();
+    for (j, c) in cols.iter().enumerate() {
+        for (e, v) in c.terms_in(sym.names.len()) {
+            rows.entry(e).or_insert_with(|| vec![BigRational::zero(); width])[j] += v;
+        }
+    }
+    if let Some(g) = given {
+        for (e, v) in g.terms_in(sym.names.len()) {
+            rows.entry(e).or_insert_with(|| vec![BigRational::zero(); width])[width - 1] -= v;
+        }
+    }
+    let mut a: Vec<Vec<BigRational>> = rows.into_values().collect();
+    if a.is_empty() {
+        // Every column is zero: nothing to solve for (it never happens with a nonzero summand).
+        return Ok(None);
+    }
+    let (h, w) = (a.len(), width);
+    let estimate = elimination_work(&a, w);
+    let system = format!("a system of {h} equations in {w} unknowns");
+    // Most systems of the search have no solution: a pass modulo a prime, far cheaper than
+    // exact elimination, says so first.
+    charge(estimate / MODULAR_DISCOUNT, &system)?;
+    let Some(basis) = modular::may_solve(&a, given.is_some(), first_free) else {
+        return Ok(None);
+    };
+    // Exact elimination on the rows that span the system modulo the prime (almost surely its
+    // rows over Q too); a solution of them is checked on every row, else all rows are used.
+    let mut sub: Vec<Vec<BigRational>> = basis.iter().map(|&r| a[r].clone()).collect();
+    let sub_estimate = estimate * (sub.len() as u128 + 1) / (h as u128 + 1);
+    charge(sub_estimate, &system)?;
+    if let Some(x) = exact(&mut sub, given.is_some(), first_free)? {
+        if a.iter().all(|row| satisfied(row, &x)) {
+            return Ok(Some(x));
+        }
+    }
+    charge(estimate, &system)?;
+    exact(&mut a, given.is_some(), first_free)
+}
+
+/// Whether `row · (x, −1) = 0` (the last entry of `row` is the right-hand side).
+fn satisfied(row: &[BigRational], x: &[BigRational]) -> bool {
+    let (rhs, lhs) = row.split_last().expect("a row has a right-hand side");
+    let mut total = -rhs.clone();
+    for (c, v) in lhs.iter().zip(x) {
+        if !c.is_zero() && !v.is_zero() {
+            total += c * v;
+        }
+    }
+    total.is_zero()
+}
+
+/// Exact elimination of `a`: a solution (see [`solve`]) or `None`.
+fn exact(a: &mut [Vec<BigRational>], given: bool, first_free: usize) -> Result<Option<Vec<BigRational>>> {
+    let width = a.first().map_or(1, Vec::len);
+    let pivots = row_reduce(a)?;
+    if given {
+        if pivots.contains(&(width - 1)) {
+            return Ok(None);
+        }
+        let mut x = vec![BigRational::zero(); width - 1];
+        for (r, &p) in pivots.iter().enumerate() {
+            x[p] = a[r][width - 1].clone() / &a[r][p];
+        }
+        return Ok(Some(x));
+    }
+    // Homogeneous: a vector of the null space whose first `first_free` entries (the p_j) are
+    // not all zero.
+    for f in (0..width - 1).filter(|c| !pivots.contains(c)) {
+        let mut x = vec![BigRational::zero(); width - 1];
+        x[f] = BigRational::one();
+        for (r, &p) in pivots.iter().enumerate() {
+            x[p] = -a[r][f].clone() / &a[r][p];
+        }
+        if x[..first_free].iter().any(|v| !v.is_zero()) {
+            return Ok(Some(x));
+        }
+    }
+    Ok(None)
 }

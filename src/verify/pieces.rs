@@ -496,21 +496,7 @@ pub fn ratio(sym: &Symbols, t: &Term, first: &Term) -> Result<Option<RatFunc>> {
         }
     }
     // Powers: exponents per base must differ by constants.
-    let mut bases: Vec<(Base, Aff)> = Vec::new();
-    let mut add = |b: &Base, e: Aff| {
-        if let Some(slot) = bases.iter_mut().find(|(x, _)| x == b) {
-            slot.1 = slot.1.plus(&e);
-        } else {
-            bases.push((b.clone(), e));
-        }
-    };
-    for (b, e) in &t.pows {
-        add(b, e.clone());
-    }
-    for (b, e) in &first.pows {
-        add(b, e.scaled(-1));
-    }
-    for (b, e) in bases {
+    for (b, e) in power_quotient(sym, t, first)? {
         if !e.is_const() {
             return Ok(None);
         }
@@ -519,9 +505,48 @@ pub fn ratio(sym: &Symbols, t: &Term, first: &Term) -> Result<Option<RatFunc>> {
     Ok(Some(out))
 }
 
+/// The powers of `H_t / H_0`, one per base with the exponents summed. A base with a symbolic
+/// exponent that another base divides is split (`((1 − s)(1 − t))^e = (1 − s)^e (1 − t)^e`,
+/// true for every integer `e`), so one product of powers written two ways is recognized as
+/// one; each split lowers the total degree of the bases, so the splitting ends.
+fn power_quotient(sym: &Symbols, t: &Term, first: &Term) -> Result<Vec<(Base, Aff)>> {
+    let mut bases: Vec<(Base, Aff)> = Vec::new();
+    fn add(bases: &mut Vec<(Base, Aff)>, b: &Base, e: Aff) {
+        if let Some(slot) = bases.iter_mut().find(|(x, _)| x == b) {
+            slot.1 = slot.1.plus(&e);
+        } else {
+            bases.push((b.clone(), e));
+        }
+    }
+    for (b, e) in &t.pows {
+        add(&mut bases, b, e.clone());
+    }
+    for (b, e) in &first.pows {
+        add(&mut bases, b, e.scaled(-1));
+    }
+    loop {
+        let split = bases.iter().enumerate().find_map(|(i, (p, e))| match p {
+            Base::Poly(p) if !e.is_const() => bases.iter().enumerate().find_map(|(j, (q, _))| match q {
+                Base::Poly(q) if j != i => p.exact_div(q).map(|rest| (i, j, rest)),
+                _ => None,
+            }),
+            _ => None,
+        });
+        let Some((i, j, rest)) = split else {
+            return Ok(bases);
+        };
+        let divisor = bases[j].0.clone();
+        let (_, e) = bases.remove(i);
+        add(&mut bases, &divisor, e.clone());
+        for (b, x) in power_of(sym, &rest, &e)? {
+            add(&mut bases, &b, x);
+        }
+    }
+}
+
 /// The factors of the denominator of `H_t / H_0`: affine forms (from factorials) and
 /// polynomials in the parameters (from powers with negative exponent differences).
-pub fn ratio_denominator(t: &Term, first: &Term) -> (Vec<Aff>, Vec<Poly>) {
+pub fn ratio_denominator(sym: &Symbols, t: &Term, first: &Term) -> Result<(Vec<Aff>, Vec<Poly>)> {
     let groups = factorial_groups(t, first);
     let mut affs = Vec::new();
     for (lin, (mut up, mut down)) in groups {
@@ -538,27 +563,14 @@ pub fn ratio_denominator(t: &Term, first: &Term) -> (Vec<Aff>, Vec<Poly>) {
         }
     }
     let mut polys = Vec::new();
-    let mut bases: Vec<(Base, Aff)> = Vec::new();
-    for (b, e) in t
-        .pows
-        .iter()
-        .map(|(b, e)| (b, e.clone()))
-        .chain(first.pows.iter().map(|(b, e)| (b, e.scaled(-1))))
-    {
-        if let Some(slot) = bases.iter_mut().find(|(x, _)| x == b) {
-            slot.1 = slot.1.plus(&e);
-        } else {
-            bases.push((b.clone(), e));
-        }
-    }
-    for (b, e) in bases {
+    for (b, e) in power_quotient(sym, t, first)? {
         if let (Base::Poly(q), true) = (&b, e.is_const() && e.c < 0) {
             for _ in 0..e.c.unsigned_abs() {
                 polys.push(q.clone());
             }
         }
     }
-    (affs, polys)
+    Ok((affs, polys))
 }
 
 fn factorial(c: i64) -> Result<RatFunc> {

@@ -31,19 +31,16 @@
 //! Induction on `n`: `Δ(n+J) = −Σ_{j<J} p_j(n) Δ(n+j) / p_J(n)`, so `Δ = 0` for every `n ≥ n₀`.
 //! Any `p_j` and `G` satisfying 1–3 prove the claim; a wrong candidate can only be rejected.
 
+use super::ansatz::solve;
 use super::eval::Alg;
 use super::hyper::{lin_mul, lin_neg, lin_subst, Aff, Lin, Symbols, Term};
 use super::pieces::{ratio, ratio_denominator, Domain};
 use super::poly::{Poly, RatFunc};
 use crate::error::{Error, Result};
-use crate::linalg::row_reduce;
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
-use std::collections::BTreeMap;
-
-mod modular;
 
 /// Highest order `J` of the recurrence searched.
 pub const MAX_ORDER: usize = 3;
@@ -201,7 +198,7 @@ fn shifts(sym: &Symbols, f: &Term, n: &str, k: &str, order: usize) -> Result<Shi
     let k1 = f.subst(sym, k, &Aff::var(k).shifted(1));
     let r2 = quotient(sym, &k1, f)?.ok_or_else(not_hyper)?;
     let fj = f.subst(sym, n, &Aff::var(n).shifted(order as i64));
-    let (affs, polys) = ratio_denominator(&fj, f);
+    let (affs, polys) = ratio_denominator(sym, &fj, f)?;
     let mut dc = RatFunc::poly(f.coef.num.clone());
     for a in &affs {
         dc = dc.mul(&a.to_rf(sym));
@@ -238,9 +235,6 @@ fn cofactors(sym: &Symbols, dens: &[&Poly]) -> Result<Vec<Poly>> {
         .collect()
 }
 
-/// How much cheaper a modular pass is counted than exact elimination.
-const MODULAR_DISCOUNT: u128 = 32;
-
 /// Adds `cost` to the search's work (and draws it from the claim's budget), or stops it at
 /// [`MAX_TELESCOPE_WORK`].
 fn charge(sym: &Symbols, work: &mut u128, cost: u128, what: &str) -> Result<()> {
@@ -256,97 +250,6 @@ fn charge(sym: &Symbols, work: &mut u128, cost: u128, what: &str) -> Result<()> 
     // The search's own limit first (its message names it), then the claim's.
     sym.budget
         .draw("work of creative telescoping", cost, MAX_TELESCOPE_WORK)
-}
-
-/// The solution of one linear system `Σ x_i cols_i = given` (each a polynomial, denominators
-/// cleared), or with no `given` a null vector whose first `first_free` entries (the `p_j`) are
-/// not all zero.
-fn solve(
-    sym: &Symbols,
-    cols: &[Poly],
-    given: Option<&Poly>,
-    first_free: usize,
-    work: &mut u128,
-) -> Result<Option<Vec<BigRational>>> {
-    let width = cols.len() + 1;
-    let mut rows: BTreeMap<Vec<u16>, Vec<BigRational>> = BTreeMap::new();
-    for (j, c) in cols.iter().enumerate() {
-        for (e, v) in terms(sym, c) {
-            rows.entry(e).or_insert_with(|| vec![BigRational::zero(); width])[j] += v;
-        }
-    }
-    if let Some(g) = given {
-        for (e, v) in terms(sym, g) {
-            rows.entry(e).or_insert_with(|| vec![BigRational::zero(); width])[width - 1] -= v;
-        }
-    }
-    let mut a: Vec<Vec<BigRational>> = rows.into_values().collect();
-    if a.is_empty() {
-        // Every column is zero: nothing to solve for (it never happens with a nonzero summand).
-        return Ok(None);
-    }
-    let (h, w) = (a.len(), width);
-    let estimate = super::ansatz::elimination_work(&a, w);
-    let system = format!("a system of {h} equations in {w} unknowns");
-    // Most systems of the search have no solution: a pass modulo a prime, far cheaper than
-    // exact elimination, says so first.
-    charge(sym, work, estimate / MODULAR_DISCOUNT, &system)?;
-    let Some(basis) = modular::may_solve(&a, given.is_some(), first_free) else {
-        return Ok(None);
-    };
-    // Exact elimination on the rows that span the system modulo the prime (almost surely its
-    // rows over Q too); a solution of them is checked on every row, else all rows are used.
-    let mut sub: Vec<Vec<BigRational>> = basis.iter().map(|&r| a[r].clone()).collect();
-    let sub_estimate = estimate * (sub.len() as u128 + 1) / (h as u128 + 1);
-    charge(sym, work, sub_estimate, &system)?;
-    if let Some(x) = exact(&mut sub, given.is_some(), first_free)? {
-        if a.iter().all(|row| satisfied(row, &x)) {
-            return Ok(Some(x));
-        }
-    }
-    charge(sym, work, estimate, &system)?;
-    exact(&mut a, given.is_some(), first_free)
-}
-
-/// Whether `row · (x, −1) = 0` (the last entry of `row` is the right-hand side).
-fn satisfied(row: &[BigRational], x: &[BigRational]) -> bool {
-    let (rhs, lhs) = row.split_last().expect("a row has a right-hand side");
-    let mut total = -rhs.clone();
-    for (c, v) in lhs.iter().zip(x) {
-        if !c.is_zero() && !v.is_zero() {
-            total += c * v;
-        }
-    }
-    total.is_zero()
-}
-
-/// Exact elimination of `a`: a solution (see [`solve`]) or `None`.
-fn exact(a: &mut [Vec<BigRational>], given: bool, first_free: usize) -> Result<Option<Vec<BigRational>>> {
-    let width = a.first().map_or(1, Vec::len);
-    let pivots = row_reduce(a)?;
-    if given {
-        if pivots.contains(&(width - 1)) {
-            return Ok(None);
-        }
-        let mut x = vec![BigRational::zero(); width - 1];
-        for (r, &p) in pivots.iter().enumerate() {
-            x[p] = a[r][width - 1].clone() / &a[r][p];
-        }
-        return Ok(Some(x));
-    }
-    // Homogeneous: a vector of the null space whose first `first_free` entries (the p_j) are
-    // not all zero.
-    for f in (0..width - 1).filter(|c| !pivots.contains(c)) {
-        let mut x = vec![BigRational::zero(); width - 1];
-        x[f] = BigRational::one();
-        for (r, &p) in pivots.iter().enumerate() {
-            x[p] = -a[r][f].clone() / &a[r][p];
-        }
-        if x[..first_free].iter().any(|v| !v.is_zero()) {
-            return Ok(Some(x));
-        }
-    }
-    Ok(None)
 }
 
 fn poly_of(sym: &Symbols, monos: &[Vec<u16>], x: &[BigRational]) -> Poly {
@@ -504,7 +407,10 @@ pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str, coefficients: Coefficient
                     cols.push(RatFunc::poly(m.mul(&cert_a)).cleared_difference(&RatFunc::poly(m1.mul(&cert_b))));
                 }
                 let first_free = (order + 1) * pmonos.len();
-                let found = solve(sym, &cols, given.as_ref(), first_free, &mut work).map_err(|e| {
+                let found = solve(sym, &cols, given.as_ref(), first_free, &mut |cost, what| {
+                    charge(sym, &mut work, cost, what)
+                })
+                .map_err(|e| {
                     none(format!(
                         "{reached}; stopped at order {order}, coefficient degree {dp}, certificate degree {d_cert}: {e}"
                     ))

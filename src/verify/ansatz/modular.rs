@@ -2,15 +2,22 @@
 //! telescoping search: most of its systems have no solution, which this says far faster than
 //! exact elimination.
 
-use num_bigint::BigInt;
-use num_integer::Integer;
+use num_bigint::{BigInt, Sign};
 use num_rational::BigRational;
 use num_traits::ToPrimitive;
 
 const PRIME: u64 = (1 << 61) - 1;
 
+/// `a · b mod PRIME` for `a, b < PRIME`, by the Mersenne folding `2^61 ≡ 1` (no division).
 fn mul(a: u64, b: u64) -> u64 {
-    ((u128::from(a) * u128::from(b)) % u128::from(PRIME)) as u64
+    let x = u128::from(a) * u128::from(b);
+    let folded = (x as u64 & PRIME) + (x >> 61) as u64;
+    let r = (folded & PRIME) + (folded >> 61);
+    if r >= PRIME {
+        r - PRIME
+    } else {
+        r
+    }
 }
 
 fn inverse(a: u64) -> u64 {
@@ -26,10 +33,29 @@ fn inverse(a: u64) -> u64 {
 }
 
 fn reduce(x: &BigRational) -> Option<u64> {
-    let p = BigInt::from(PRIME);
-    let n = x.numer().mod_floor(&p).to_u64()?;
-    let d = x.denom().mod_floor(&p).to_u64()?;
-    (d != 0).then(|| mul(n, inverse(d)))
+    let n = residue(x.numer());
+    match residue(x.denom()) {
+        0 => None,
+        _ if n == 0 => Some(0),
+        1 => Some(n),
+        d => Some(mul(n, inverse(d))),
+    }
+}
+
+/// `v mod PRIME`, digit by digit (most entries of a system are 0 or small).
+fn residue(v: &BigInt) -> u64 {
+    if let Some(small) = v.to_i64() {
+        return small.rem_euclid(PRIME as i64) as u64;
+    }
+    let (sign, digits) = v.to_u64_digits();
+    let r = digits.iter().rev().fold(0u64, |acc, &d| {
+        (((u128::from(acc) << 64) | u128::from(d)) % u128::from(PRIME)) as u64
+    });
+    if sign == Sign::Minus && r != 0 {
+        PRIME - r
+    } else {
+        r
+    }
 }
 
 /// Whether the system (its last column the right-hand side) may have a solution — with
