@@ -44,7 +44,7 @@ fn parts(e: &Expr, plus: bool, out: &mut Vec<(bool, Expr)>) {
     }
 }
 
-fn has_sum(e: &Expr) -> bool {
+pub(crate) fn has_sum(e: &Expr) -> bool {
     match e {
         Expr::Sum(..) => true,
         Expr::Neg(a) | Expr::Fact(a) => has_sum(a),
@@ -56,7 +56,7 @@ fn has_sum(e: &Expr) -> bool {
 }
 
 /// `coefficient · sum`: the sum and the coefficient (the other factors of a product).
-fn coefficient_times_sum(e: &Expr) -> Option<(Expr, Expr)> {
+pub(crate) fn coefficient_times_sum(e: &Expr) -> Option<(Expr, Expr)> {
     match e {
         Expr::Sum(..) => Some((Expr::int(1), e.clone())),
         Expr::Neg(a) => coefficient_times_sum(a).map(|(c, s)| (Expr::Neg(Box::new(c)), s)),

@@ -34,14 +34,15 @@ use super::checked::{Checked, Method, Step};
 use super::claims::{Decls, Identity, IntRange};
 use super::context::Ctx;
 use super::expr::Expr;
-use super::hyper::{lin_neg, Aff, Term};
+use super::hyper::{lin_mul, lin_neg, Aff, Lin, Term};
 use super::identity::check_identity;
 use super::lemma::{self, Lemma, Obligation, Rewritten};
 use super::pieces::{Domain, ZeroOutcome};
 
+mod collapse;
 mod induction;
 use super::poly::RatFunc;
-use super::recurrence;
+use super::recurrence::{self, coefficient_times_sum, has_sum};
 use super::translate::{prepare, Translator, UNIT, UNIT2};
 use crate::error::{Error, Result};
 use std::time::{Duration, Instant};
@@ -369,6 +370,52 @@ fn component_pairs(sides: &[Expr]) -> Result<Vec<[Expr; 2]>> {
     Ok(out)
 }
 
+/// One equality proved on `d`; a sum against a side that is not one is evaluated with that
+/// side as its closed form (the WZ hint).
+fn equal(tr: &mut Translator<'_>, pair: &[Expr; 2], d: &Domain) -> Result<()> {
+    let (l, r) = match (&pair[0], &pair[1]) {
+        (x, y) if !matches!(x, Expr::Sum(..)) && !matches!(y, Expr::Sum(..)) && (has_sum(x) != has_sum(y)) => {
+            let (with_sum, other) = if has_sum(x) { (x, y) } else { (y, x) };
+            let (s, o) = match scaled_sum(tr, with_sum, other, d)? {
+                Some(lin) => lin,
+                None => (tr.lin(with_sum, d)?, tr.lin(other, d)?),
+            };
+            if has_sum(x) {
+                (s, o)
+            } else {
+                (o, s)
+            }
+        }
+        (Expr::Sum(..), other) if !matches!(other, Expr::Sum(..)) => {
+            let r = tr.lin(other, d)?;
+            (tr.lin_hint(&pair[0], d, Some(r.clone()))?, r)
+        }
+        (other, Expr::Sum(..)) => {
+            let l = tr.lin(other, d)?;
+            (l.clone(), tr.lin_hint(&pair[1], d, Some(l))?)
+        }
+        _ => (tr.lin(&pair[0], d)?, tr.lin(&pair[1], d)?),
+    };
+    let mut diff = l;
+    diff.extend(lin_neg(&r));
+    tr.expect_zero(&diff, d, &format!("{} = {}", pair[0], pair[1]))
+}
+
+/// `c · Σ` against `other` (a side without sums), both translated: the sum with the closed
+/// form `other / c` as its hint (`c` one term); `None` for another shape.
+fn scaled_sum(tr: &mut Translator<'_>, with_sum: &Expr, other: &Expr, d: &Domain) -> Result<Option<(Lin, Lin)>> {
+    let Some((c, sum)) = coefficient_times_sum(with_sum) else {
+        return Ok(None);
+    };
+    let Ok(inverse) = tr.recip(&c, d) else {
+        return Ok(None);
+    };
+    let o = tr.lin(other, d)?;
+    let hint = lin_mul(&o, &[inverse])?;
+    let s = tr.lin_hint(&sum, d, Some(hint))?;
+    Ok(Some((lin_mul(&tr.lin(&c, d)?, &s)?, o)))
+}
+
 /// The symbolic proof of the parsed `rewritten` sides over the open ranges of `decls`.
 fn prove_sides(
     decls: &Decls,
@@ -390,8 +437,13 @@ fn prove_sides(
     } else {
         vec![false]
     };
+    // In a chain of scalars, the latest member without sums, per mode: every member up to the
+    // current one is proved equal to it, so an equality that does not go through on its own
+    // may be proved as its right side against it (the sum's closed form, a hint).
+    let chain = !sides.iter().any(|s| matches!(s, Expr::Tuple(_)));
+    let mut anchors: Vec<Option<Expr>> = vec![None; modes.len()];
     for pair in &component_pairs(&sides)? {
-        for &unit in &modes {
+        for (m, &unit) in modes.iter().enumerate() {
             tr.unit = unit;
             tr.next_cert = 0;
             tr.used.clear();
@@ -414,30 +466,51 @@ fn prove_sides(
             } else if decls.polygon.is_some() {
                 tr.log.push(Step::label("the zero polygon:"));
             }
-            let mark = tr.log.len();
-            let mut equal = || -> Result<()> {
-                let (l, r) = match (&pair[0], &pair[1]) {
-                    (Expr::Sum(..), other) if !matches!(other, Expr::Sum(..)) => {
-                        let r = tr.lin(other, &d)?;
-                        (tr.lin_hint(&pair[0], &d, Some(r.clone()))?, r)
-                    }
-                    (other, Expr::Sum(..)) => {
-                        let l = tr.lin(other, &d)?;
-                        (l.clone(), tr.lin_hint(&pair[1], &d, Some(l))?)
-                    }
-                    _ => (tr.lin(&pair[0], &d)?, tr.lin(&pair[1], &d)?),
-                };
-                let mut diff = l;
-                diff.extend(lin_neg(&r));
-                tr.expect_zero(&diff, &d, &format!("{} = {}", pair[0], pair[1]))
-            };
-            if let Err(reason) = equal() {
-                // A claim stating a recurrence of sums: proved by creative telescoping, or
-                // the reason of the direct route stands.
-                tr.log.truncate(mark);
-                if recurrence::prove(&mut tr, &pair[0], &pair[1], &d)?.is_none() {
-                    return Err(reason);
+            let pair = match (&tr.polygon, tr.net.is_none()) {
+                (Some((name, _)), true) => {
+                    let name = name.clone();
+                    [
+                        collapse::collapse(&mut tr, &pair[0], &name, unit, &d)?,
+                        collapse::collapse(&mut tr, &pair[1], &name, unit, &d)?,
+                    ]
                 }
+                _ => pair.clone(),
+            };
+            let pair = &pair;
+            let anchor = anchors[m].clone().filter(|_| chain);
+            if !has_sum(&pair[0]) {
+                anchors[m] = Some(pair[0].clone());
+            }
+            let marks = (tr.log.len(), tr.used.len(), tr.next_cert);
+            let reset = |tr: &mut Translator<'_>| {
+                tr.log.truncate(marks.0);
+                tr.used.truncate(marks.1);
+                tr.next_cert = marks.2;
+            };
+            // Sums on both sides: first the right side against the chain's anchor (every member
+            // so far equals it), which gives its sums a closed form; then the direct route; then
+            // a claim stating a recurrence of sums, by creative telescoping; else the direct
+            // route's reason stands.
+            let by_anchor = match anchor.filter(|_| has_sum(&pair[0]) && has_sum(&pair[1])) {
+                Some(a) => {
+                    let through = equal(&mut tr, &[a, pair[1].clone()], &d).is_ok();
+                    if !through {
+                        reset(&mut tr);
+                    }
+                    through
+                }
+                None => false,
+            };
+            if !by_anchor {
+                if let Err(reason) = equal(&mut tr, pair, &d) {
+                    reset(&mut tr);
+                    if recurrence::prove(&mut tr, &pair[0], &pair[1], &d)?.is_none() {
+                        return Err(reason);
+                    }
+                }
+            }
+            if !has_sum(&pair[1]) {
+                anchors[m] = Some(pair[1].clone());
             }
         }
     }

@@ -183,7 +183,7 @@ impl<'a> Translator<'a> {
     }
 
     /// The reciprocal of a divisor, as one term.
-    fn recip(&mut self, e: &Expr, d: &Domain) -> Result<Term> {
+    pub(crate) fn recip(&mut self, e: &Expr, d: &Domain) -> Result<Term> {
         match e {
             Expr::Bin(Op::Mul, a, b) => self.recip(a, d)?.times(&self.recip(b, d)?),
             Expr::Bin(Op::Div, a, b) => {
@@ -470,7 +470,7 @@ impl<'a> Translator<'a> {
             h.extend(lin_neg(&resolved));
             h
         });
-        let av = support_start(v, &av, &rest, d);
+        let av = support_start(v, &av, &bv, &rest, d);
         let bv = support_end(v, &av, &bv, &rest, d);
         on_range(&mut rest, &d.with(Aff::var(v).minus(&av)).with(bv.minus(&Aff::var(v))));
         let closed = self.wz(v, &av, &bv, rest, d, hint)?;
@@ -497,14 +497,20 @@ impl<'a> Translator<'a> {
         };
         // Failing that, the same integer points with fewer constraints: a symbol of the upper
         // bound bounded below twice (n ≥ 0 and n ≥ ĵ, with ĵ ≥ 0) keeps the bound implying the
-        // other. Failing that too, a symbol bounded above as well (`Σ_{r=0}^{ĵ}`, `ĵ ≤ n`).
+        // other. Failing that too, a symbol bounded above as well (`Σ_{r=0}^{ĵ}`, `ĵ ≤ n`), and
+        // last any redundant bound dropped (`Σ_{i=0}^{n−j}` on `0 ≤ j ≤ n`: induction on n ≥ j).
         let pruned;
         let (d, n) = match induction_variable(d, false) {
             Some(n) => (d, Some(n)),
             None => {
-                pruned = without_redundant(d, |c| b.v.keys().any(|x| c.coef(x) != 0));
-                let n = induction_variable(&pruned, false).or_else(|| induction_variable(&pruned, true));
-                (&pruned, n)
+                let on_bound = |c: &Aff| b.v.keys().any(|x| c.coef(x) != 0);
+                let found = |d: &Domain| induction_variable(d, false).or_else(|| induction_variable(d, true));
+                let through_unit = without_redundant(d, false, on_bound);
+                pruned = match found(&through_unit) {
+                    Some(_) => through_unit,
+                    None => without_redundant(d, true, on_bound),
+                };
+                (&pruned, found(&pruned))
             }
         };
         let n = n.ok_or_else(|| {

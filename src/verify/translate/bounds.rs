@@ -21,14 +21,26 @@ pub(super) fn end_point(g: &RatFunc) -> Option<bool> {
 }
 
 /// The first index where a sum's terms can be nonzero: `X` when every term has the support
-/// condition `v − X ≥ 0` (so is zero below `X`) and `X ≥ a` on the domain; else `a`.
-pub(super) fn support_start(v: &str, a: &Aff, terms: &[Term], d: &Domain) -> Aff {
+/// condition `v − X ≥ 0` or the factor `1/(v − X)!` (so is zero below `X`: `1/m! = 0` for a
+/// negative integer `m`, as `C(r, j)` for `r < j`) and `a ≤ X ≤ b + 1` on the domain; else `a`.
+pub(super) fn support_start(v: &str, a: &Aff, b: &Aff, terms: &[Term], d: &Domain) -> Aff {
     let Some(first) = terms.first() else {
         return a.clone();
     };
-    for s in first.support.iter().filter(|s| s.coef(v) == 1) {
+    let zero_below = |t: &Term, s: &Aff| {
+        t.support.contains(s) || (t.facts.contains(&(s.clone(), -1)) && !t.facts.contains(&(s.clone(), 1)))
+    };
+    let candidates = first
+        .support
+        .iter()
+        .chain(first.facts.iter().filter(|(_, e)| *e == -1).map(|(x, _)| x));
+    for s in candidates.filter(|s| s.coef(v) == 1) {
         let start = Aff::var(v).minus(s);
-        if start.coef(v) == 0 && terms.iter().all(|t| t.support.contains(s)) && d.implies_ge(&start.minus(a)) {
+        if start.coef(v) == 0
+            && terms.iter().all(|t| zero_below(t, s))
+            && d.implies_ge(&start.minus(a))
+            && d.implies_ge(&b.minus(&start).shifted(1))
+        {
             return start;
         }
     }
@@ -54,8 +66,9 @@ pub(super) fn support_end(v: &str, a: &Aff, b: &Aff, terms: &[Term], d: &Domain)
 /// `d` without the constraints that `pick` selects and the others imply through a constraint
 /// on a unit index (the same integer points): the bounds `0 ≤ ĵ ≤ n` of the unit polygon's
 /// index make a range's own `n ≥ 0` redundant, and a sum over `n` must see `n ≥ ĵ` alone. A
-/// range's bounds as written are kept (they say which variable an induction runs on).
-pub(super) fn without_redundant(d: &Domain, pick: impl Fn(&Aff) -> bool) -> Domain {
+/// range's bounds as written are kept (they say which variable an induction runs on) unless
+/// `any`: then every constraint the others imply goes (`n ≥ 0` beside `n ≥ j`, `j ≥ 0`).
+pub(super) fn without_redundant(d: &Domain, any: bool, pick: impl Fn(&Aff) -> bool) -> Domain {
     let on_unit = |c: &Aff| c.coef(UNIT) != 0 || c.coef(UNIT2) != 0;
     let mut cons = d.cons.clone();
     let mut k = 0;
@@ -71,7 +84,7 @@ pub(super) fn without_redundant(d: &Domain, pick: impl Fn(&Aff) -> bool) -> Doma
                 cons: others.iter().filter(|c| !on_unit(c)).cloned().collect(),
             };
             let others = Domain { cons: others };
-            if others.implies_ge(&cons[k]) && !without_unit.implies_ge(&cons[k]) {
+            if others.implies_ge(&cons[k]) && (any || !without_unit.implies_ge(&cons[k])) {
                 cons.remove(k);
                 continue;
             }
