@@ -198,7 +198,7 @@ fn prove_reports_and_sets_the_status() {
         );
         assert_eq!(claim["range"].is_string(), verdict == "proved_in_range", "{claim}");
     }
-    assert_eq!(report["summary"]["proved_in_range"].as_u64(), Some(20));
+    assert_eq!(report["summary"]["proved_in_range"].as_u64(), Some(17));
     // progress goes to stderr only on a terminal, never into a piped run
     assert!(out.stderr.is_empty());
 
@@ -224,15 +224,17 @@ fn prove_reports_and_sets_the_status() {
     let err = fails(&["prove", dir.to_str().unwrap(), "--explain", "no-such-claim"]);
     assert!(err.contains("no-such-claim"), "{err}");
     // by default one screen (the argument, one worked case); --verbose adds the full log
-    let short = ok(&["prove", "--explain", "000-lemma-1.3-proof"]);
+    let fixture = "tests/support/subdivision_in_range.toml";
+    let id = "lemma-1.3-proof-in-range";
+    let short = ok(&["prove", fixture, "--explain", id]);
     assert!(short.lines().count() <= 40, "{short}");
     assert!(
         short.contains("why this suffices:") && !short.contains("\nsteps:"),
         "{short}"
     );
-    let verbose = ok(&["prove", "--explain", "000-lemma-1.3-proof", "--verbose"]);
+    let verbose = ok(&["prove", fixture, "--explain", id, "--verbose"]);
     assert!(verbose.contains("\nsteps:") && verbose.lines().count() > 1000);
-    let latex = ok(&["--format", "latex", "prove", "--explain", "000-lemma-1.3-proof"]);
+    let latex = ok(&["--format", "latex", "prove", fixture, "--explain", id]);
     assert!(
         latex.contains("\\begin{array}{llll}") && latex.contains("\\paragraph{Claim"),
         "{latex}"

@@ -12,6 +12,14 @@ fn claim(id: &str, ranges: &str, lhs: &str, rhs: &str, extra: &str) -> String {
     )
 }
 
+/// One claim over the polygon `b` of degree `n` for every n, in `t0` and `t`, citing the scheme;
+/// `body` holds its sides (`lhs`/`rhs` or a `chain`) and any other fields.
+fn subdivision_claim(id: &str, body: &str) -> String {
+    format!(
+        "[[claim]]\nid = \"{id}\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\npolygon = {{ name = \"b\", degree = \"n\" }}\nfor = [\"n = 0..\"]\nuses = [\"scheme\"]\nvars = [\"t0\", \"t\"]\n{body}\n"
+    )
+}
+
 const SCHEME_RANGES: &str = r#""n = 0..", "r = 0..=n", "i = 0..=n-r""#;
 const STEP_RANGES: &str = r#""n = 1..", "r = 1..=n", "i = 0..=n-r""#;
 
@@ -321,4 +329,65 @@ fn the_end_values_of_derivatives_are_read_without_powers_of_zero() {
     let out = verdicts(&[scheme(), ends, wrong]);
     assert_eq!(out[1].1, Verdict::Proved, "{}", out[1].2);
     assert!(matches!(out[2].1, Verdict::Fails | Verdict::Error), "{:?}", out[2]);
+}
+
+/// Lemma 1.3's proof (the chain of sums over `b[j]` and `r`) and the second half `c_2`.
+const CHAIN_1_3: [&str; 8] = [
+    "b(t0*t)",
+    "sum(j, 0, n, b[j]*B(j, n, t0*t))",
+    "sum(j, 0, n, b[j]*sum(r, j, n, B(j, r, t0)*B(r, n, t)))",
+    "sum(j, 0, n, b[j]*sum(r, 0, n, B(j, r, t0)*B(r, n, t)))",
+    "sum(j, 0, n, sum(r, 0, n, b[j]*B(j, r, t0)*B(r, n, t)))",
+    "sum(r, 0, n, sum(j, 0, n, b[j]*B(j, r, t0))*B(r, n, t))",
+    "sum(r, 0, n, sum(j, 0, r, b[j]*B(j, r, t0))*B(r, n, t))",
+    "sum(r, 0, n, b(0, r, t0)*B(r, n, t))",
+];
+
+fn chain(members: &[&str]) -> String {
+    let quoted: Vec<String> = members.iter().map(|m| format!("\"{m}\"")).collect();
+    format!("chain = [{}]", quoted.join(", "))
+}
+
+#[test]
+fn subdivision_is_proved_for_every_n_through_sums_over_the_unit_point() {
+    let c2 = "lhs = \"b(t0 + (1 - t0)*t)\"\nrhs = \"sum(r, 0, n, b(r, n - r, t0)*B(r, n, t))\"";
+    let out = verdicts(&[
+        scheme(),
+        subdivision_claim("proof", &chain(&CHAIN_1_3)),
+        subdivision_claim("c2", c2),
+    ]);
+    for (id, v, c) in &out[1..] {
+        assert_eq!(*v, Verdict::Proved, "{id}: {c}");
+    }
+    // c2's sum over r ≤ ĵ: induction on the unit index, bounded above by n.
+    assert!(out[2].2.contains("(induction on __j ≥ 0)"), "{}", out[2].2);
+}
+
+#[test]
+fn false_subdivision_variants_are_never_proved() {
+    let mut shifted = CHAIN_1_3;
+    shifted[2] = "sum(j, 0, n, b[j]*sum(r, j+1, n, B(j, r, t0)*B(r, n, t)))";
+    let mut late = CHAIN_1_3;
+    late[6] = "sum(r, 0, n, sum(j, 1, r, b[j]*B(j, r, t0))*B(r, n, t))";
+    let false_claims = [
+        // Not affine in the polygon: refused before any sum over the unit point collapses.
+        subdivision_claim("square", "lhs = \"sum(j, 0, n, b[j]*b[j])\"\nrhs = \"sum(j, 0, n, b[j])\""),
+        subdivision_claim("shifted-range", &chain(&shifted)),
+        subdivision_claim("late-start", &chain(&late)),
+        // The points of c2 with the wrong basis index.
+        subdivision_claim(
+            "c2-shift",
+            "lhs = \"b(t0 + (1 - t0)*t)\"\nrhs = \"sum(r, 0, n, b(r, n - r, t0)*B(n - r, n, t))\"",
+        ),
+        // A wrong certificate is rejected, not trusted.
+        subdivision_claim(
+            "c2-wrong-certificate",
+            "certificate = [\"r*t0*(1 - t)/((__j - r + 1)*(t0 + t - t0*t))\"]\nlhs = \"b(t0 + (1 - t0)*t)\"\nrhs = \"sum(r, 0, n, b(r, n - r, t0)*B(r, n, t))\"",
+        ),
+    ];
+    let mut all = vec![scheme()];
+    all.extend(false_claims.iter().cloned());
+    for (id, v, c) in verdicts(&all).into_iter().skip(1) {
+        assert!(matches!(v, Verdict::Fails | Verdict::Error), "{id}: {v:?} {c}");
+    }
 }

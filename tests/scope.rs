@@ -121,7 +121,7 @@ fn every_report_of_the_texts_shows_the_note() {
     assert!(bound > 0);
     let text = report.to_text();
     assert!(
-        text.contains("    range-bound: uses the de Casteljau evaluation `b(t)`"),
+        text.contains("    range-bound: uses the isoparametric curve `isov`"),
         "{text}"
     );
     let json = report.to_json();
@@ -129,12 +129,9 @@ fn every_report_of_the_texts_shows_the_note() {
         .as_array()
         .expect("claims")
         .iter()
-        .find(|c| c["id"] == "000-lemma-1.3-c2")
-        .expect("000-lemma-1.3-c2");
-    assert!(object["range_bound"]
-        .as_str()
-        .expect("a field")
-        .contains("`b(i, r, t)`"));
+        .find(|c| c["id"] == "003-iso-library")
+        .expect("003-iso-library");
+    assert!(object["range_bound"].as_str().expect("a field").contains("`isov`"));
     let proved = json["claims"]
         .as_array()
         .expect("claims")
@@ -142,9 +139,10 @@ fn every_report_of_the_texts_shows_the_note() {
         .find(|c| c["id"] == "000-7")
         .expect("000-7");
     assert!(proved.get("range_bound").is_none());
-    let explained = explain(&[PathBuf::from("proofs")], "000-lemma-1.3-c2", ExplainStyle::Short).expect("explain");
+    let explained = explain(&[PathBuf::from("proofs")], "003-iso-library", ExplainStyle::Short).expect("explain");
     assert!(
-        explained.contains("\nverdict: proved for n = 0..=6; range-bound: uses the de Casteljau evaluation `b(t)`"),
+        explained
+            .contains("\nverdict: proved for m = 0..=3, n = 0..=3; range-bound: uses the isoparametric curve `isov`"),
         "{explained}"
     );
 }

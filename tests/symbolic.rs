@@ -252,3 +252,39 @@ fn repeated_elevation_is_proved_by_induction_on_the_steps_and_its_false_variants
         }
     }
 }
+
+#[test]
+fn powers_written_as_products_are_recognized_and_false_ones_are_not_proved() {
+    // ((1 − s)(1 − t))^n = (1 − s)^n (1 − t)^n: the base splits over the other bases.
+    assert_proved(
+        "for = [\"n = 0..\"]\nvars = [\"s\", \"t\"]\nlhs = \"(1 - s - t + s*t)^n\"\nrhs = \"(1 - s)^n*(1 - t)^n\"",
+    );
+    for wrong in ["(1 - s)^n*(1 + t)^n", "(1 - s)^n*(1 - t)^(n+1)", "(1 - s - t)^n"] {
+        let body =
+            format!("for = [\"n = 0..\"]\nvars = [\"s\", \"t\"]\nlhs = \"(1 - s - t + s*t)^n\"\nrhs = \"{wrong}\"");
+        if let Ok((v, _, c)) = check(&body) {
+            assert_ne!(v, Verdict::Proved, "{wrong}: {c}");
+        }
+    }
+}
+
+#[test]
+fn a_sum_starts_where_its_binomials_do_and_a_wrong_start_is_not_proved() {
+    // B(j, r, t0) = 0 for r < j: Σ_{r=0}^{n} is Σ_{r=j}^{n}, identity (4) with the other side its hint.
+    let four = "for = [\"n = 0..\", \"j = 0..=n\"]\nvars = [\"t0\", \"t\"]\nlhs = \"B(j, n, t0*t)\"\n";
+    assert_proved(&format!("{four}rhs = \"sum(r, 0, n, B(j, r, t0)*B(r, n, t))\""));
+    // the binomial theorem inside a product, by induction on n from j
+    assert_proved(
+        "for = [\"n = 0..\", \"j = 0..=n\"]\nvars = [\"s\", \"t\"]\nlhs = \"C(n, j)*(1 - s*t)^(n-j)*(s*t)^j\"\nrhs = \"C(n, j)*sum(i, 0, n-j, C(n-j, i)*(1-t)^(n-j-i)*t^i*(1-s)^i)*(s*t)^j\"",
+    );
+    for wrong in [
+        "sum(r, 1, n, B(j, r, t0)*B(r, n, t))",
+        "sum(r, 0, n-1, B(j, r, t0)*B(r, n, t))",
+        "sum(r, 0, n, B(j, r, t0)*B(r+1, n, t))",
+    ] {
+        let body = format!("{four}rhs = \"{wrong}\"");
+        if let Ok((v, _, c)) = check(&body) {
+            assert_ne!(v, Verdict::Proved, "{wrong}: {c}");
+        }
+    }
+}

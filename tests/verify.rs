@@ -200,8 +200,8 @@ fn fit_claims_check_the_printed_numbers_exactly() {
 /// numbers being the library's (the scheme (9) from `BezierCurve::scheme`, the sum from it).
 #[test]
 fn explain_fits_one_screen_with_a_case_worked_exactly() {
-    let proofs = [PathBuf::from("proofs")];
-    let id = "000-lemma-1.3-proof";
+    let proofs = [PathBuf::from("tests/support/subdivision_in_range.toml")];
+    let id = "lemma-1.3-proof-in-range";
     let short = explain(&proofs, id, ExplainStyle::Short).unwrap();
     let lines: Vec<&str> = short.lines().collect();
     assert!(lines.len() <= 40, "{} lines:\n{short}", lines.len());
@@ -276,8 +276,9 @@ fn explain_fits_one_screen_with_a_case_worked_exactly() {
         "000-4-proof-ratio",
         "000-derivative-proof",
         "000-ex4-curve",
+        "000-lemma-1.3-proof",
     ] {
-        let text = explain(&proofs, id, ExplainStyle::Short).unwrap();
+        let text = explain(&[PathBuf::from("proofs")], id, ExplainStyle::Short).unwrap();
         assert!(
             text.lines().count() <= 40,
             "{id}: {} lines\n{text}",
