@@ -47,7 +47,7 @@ fn false_finite_identities_fail_or_are_refused() {
     )
     .unwrap();
     assert_eq!(v, Verdict::Fails, "{c}");
-    // Wrong only from n = 5 on (true for the evaluated n = 1..=4): never proved; the search
+    // Wrong only from n = 5 on (true for n = 1..=4, past the evaluated first values): never proved; the search
     // past the cross-check finds the counterexample.
     assert_fails_at(
         "for = [\"n = 1..\", \"i = 0..=n\"]\nlhs = \"B(i, n, t)\"\nrhs = \"B(i, n, t) + (n-1)*(n-2)*(n-3)*(n-4)*t\"",

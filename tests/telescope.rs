@@ -143,7 +143,7 @@ fn false_beyond_the_search_is_an_error_never_proved() {
 #[test]
 fn a_search_past_its_budget_ends_and_the_claim_still_gets_its_verdict() {
     // Σ C(n, k)^5 has no recurrence within MAX_TELESCOPE_WORK; this closed form matches it
-    // for n ≤ 3 (the cross-check) and is wrong from n = 4: the bounded search gives up, and
+    // for n ≤ 3 (past the cross-check of n ≤ 2) and is wrong from n = 4: the bounded search gives up, and
     // the refutation search finds the counterexample.
     let start = std::time::Instant::now();
     assert_fails_at(
