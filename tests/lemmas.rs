@@ -45,6 +45,15 @@ fn verdicts(claims: &[String]) -> Vec<(String, Verdict, String)> {
         .collect()
 }
 
+/// Each of `false_claims`, checked beside the scheme (their lemma), fails or is an error.
+fn assert_all_refuted_beside_the_scheme(false_claims: &[String]) {
+    let mut all = vec![scheme()];
+    all.extend(false_claims.iter().cloned());
+    for (id, v, c) in verdicts(&all).into_iter().skip(1) {
+        assert!(matches!(v, Verdict::Fails | Verdict::Error), "{id}: {v:?} {c}");
+    }
+}
+
 fn verdict_of(claims: &[String], id: &str) -> (Verdict, String) {
     verdicts(claims)
         .into_iter()
@@ -138,11 +147,7 @@ fn false_variants_are_never_proved() {
             "induction = \"r\"",
         ),
     ];
-    let mut all = vec![scheme()];
-    all.extend(false_claims.iter().cloned());
-    for (id, v, c) in verdicts(&all).into_iter().skip(1) {
-        assert!(matches!(v, Verdict::Fails | Verdict::Error), "{id}: {v:?} {c}");
-    }
+    assert_all_refuted_beside_the_scheme(&false_claims);
 }
 
 #[test]
@@ -385,9 +390,5 @@ fn false_subdivision_variants_are_never_proved() {
             "certificate = [\"r*t0*(1 - t)/((__j - r + 1)*(t0 + t - t0*t))\"]\nlhs = \"b(t0 + (1 - t0)*t)\"\nrhs = \"sum(r, 0, n, b(r, n - r, t0)*B(r, n, t))\"",
         ),
     ];
-    let mut all = vec![scheme()];
-    all.extend(false_claims.iter().cloned());
-    for (id, v, c) in verdicts(&all).into_iter().skip(1) {
-        assert!(matches!(v, Verdict::Fails | Verdict::Error), "{id}: {v:?} {c}");
-    }
+    assert_all_refuted_beside_the_scheme(&false_claims);
 }

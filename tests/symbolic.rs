@@ -205,6 +205,13 @@ fn perturbed_identities_are_never_proved() {
     }
 }
 
+/// A false claim: a verdict other than `proved`, or an error.
+fn assert_not_proved(body: &str) {
+    if let Ok((v, _, c)) = check(body) {
+        assert_ne!(v, Verdict::Proved, "{body}: {c}");
+    }
+}
+
 fn assert_fails_at(body: &str, at: &str) {
     match check(body) {
         Ok((Verdict::Fails, None, c)) => assert!(c.contains(at), "{body}: counterexample {c:?} should be {at:?}"),
@@ -247,9 +254,7 @@ fn repeated_elevation_is_proved_by_induction_on_the_steps_and_its_false_variants
         "sum(i, 0, n+r, sum(j, i-r, i, C(n, j)*C(r, i-j)/C(n+r, i)*b[j])*B(i, n+r, t)) + r*(r-1)*(r-2)*(r-3)*(r-4)*t*b[0]",
     ] {
         let body = format!("{ELEVATION_8}rhs = \"{wrong}\"");
-        if let Ok((v, _, c)) = check(&body) {
-            assert_ne!(v, Verdict::Proved, "{wrong}: {c}");
-        }
+        assert_not_proved(&body);
     }
 }
 
@@ -262,9 +267,7 @@ fn powers_written_as_products_are_recognized_and_false_ones_are_not_proved() {
     for wrong in ["(1 - s)^n*(1 + t)^n", "(1 - s)^n*(1 - t)^(n+1)", "(1 - s - t)^n"] {
         let body =
             format!("for = [\"n = 0..\"]\nvars = [\"s\", \"t\"]\nlhs = \"(1 - s - t + s*t)^n\"\nrhs = \"{wrong}\"");
-        if let Ok((v, _, c)) = check(&body) {
-            assert_ne!(v, Verdict::Proved, "{wrong}: {c}");
-        }
+        assert_not_proved(&body);
     }
 }
 
@@ -283,8 +286,6 @@ fn a_sum_starts_where_its_binomials_do_and_a_wrong_start_is_not_proved() {
         "sum(r, 0, n, B(j, r, t0)*B(r+1, n, t))",
     ] {
         let body = format!("{four}rhs = \"{wrong}\"");
-        if let Ok((v, _, c)) = check(&body) {
-            assert_ne!(v, Verdict::Proved, "{wrong}: {c}");
-        }
+        assert_not_proved(&body);
     }
 }

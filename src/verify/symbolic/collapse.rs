@@ -7,6 +7,7 @@
 //! finite sums are made; where the domain does not show the range condition the sum is kept.
 
 use super::super::expr::{eval_int, Expr, Op};
+use super::super::hyper::Aff;
 use super::super::pieces::Domain;
 use super::super::rewrite::{map_children, substitute};
 use super::super::translate::{Translator, UNIT};
@@ -80,7 +81,7 @@ fn collapse_unit(tr: &mut Translator<'_>, e: &Expr, polygon: &str, d: &Domain) -
 
 /// `d` with `a ≤ v ≤ b`, if both bounds are affine.
 fn with_bounds(tr: &mut Translator<'_>, d: &Domain, v: &str, a: &Expr, b: &Expr) -> Option<Domain> {
-    let var = super::super::hyper::Aff::var(v);
+    let var = Aff::var(v);
     let (lo, hi) = (tr.affine(a).ok()?, tr.affine(b).ok()?);
     Some(d.with(var.minus(&lo)).with(hi.minus(&var)))
 }
