@@ -316,8 +316,10 @@ fn parallel_message<T: Scalar>(data: &CubicFitData<T>) -> String {
     )
 }
 
-/// Text 004's fit: solves the normal equations (11) with the exact solver of
-/// [`crate::linalg`] and returns `k`, `l`, the cubic (4), `δ²` and diagnostics.
+/// Text 004's fit: solves the normal equations (11) and returns `k`, `l`, the cubic (4),
+/// `δ²` and diagnostics. Exact rationals run a fraction-free kernel (integers over common
+/// denominators, one reduction per output number); other scalars row-reduce (11) with the
+/// solver of [`crate::linalg`]. The tests compare the two with `==` on exact inputs.
 ///
 /// Parallel or zero end tangents make (11) singular: [`Error::Singular`] with a message
 /// saying which. For `f64` "parallel" means numerically so (see [`crate::linalg`]).
@@ -357,7 +359,7 @@ fn fit_cubic_by_elimination<T: Scalar>(data: &CubicFitData<T>) -> Result<CubicFi
 }
 
 /// [`fit_cubic`] on exact rationals without a gcd per operation (num-rational reduces every
-/// sum and product, which made it 87% of an oracle `fit_cubic` request).
+/// sum and product by a binary gcd, the cost of the row reduction on rationals).
 ///
 /// With `ẋ(0) = a/D₀`, `ẋ(1) = b/D₁`, `x(0), x(1), x(1/2) = u/D, w/D, h/D` (integer vectors
 /// over least common denominators) and `c = u + w − 2h` (so `X = c/D`), the solution of (11)
@@ -507,8 +509,8 @@ fn sign_warnings<T: Scalar>(k: &T, l: &T) -> Vec<String> {
 }
 
 /// `(k, l)` by the closed form (13): `(−k, l)ᵀ = 4/3 · adj(G) (ẋ(0)·X, ẋ(1)·X)ᵀ / det G`,
-/// computed literally, independently of [`fit_cubic`]'s elimination so the two can be
-/// compared. `det G = 0` (for floats: `|det G| ≤ 1e-12 |ẋ(0)|²|ẋ(1)|²`) is [`Error::Singular`].
+/// computed literally in `T`'s arithmetic, independently of [`fit_cubic`]'s kernels so the
+/// two can be compared. `det G = 0` (for floats: `|det G| ≤ 1e-12 |ẋ(0)|²|ẋ(1)|²`) is [`Error::Singular`].
 pub fn fit_cubic_closed_form<T: Scalar>(data: &CubicFitData<T>) -> Result<(T, T)> {
     data.validate()?;
     let (d0, d1) = (&data.d0, &data.d1);
