@@ -112,64 +112,91 @@ fn over_integers(values: &[&BigRational], f: &impl Transform) -> Vec<BigRational
 /// made of those primes is short, and `gcd(a_j, L_j) = gcd(a_j, R_j)`.
 fn curve_power_big(values: &[&BigRational]) -> Vec<BigRational> {
     let n = values.len() - 1;
-    let (factors, base) = prefix_factors(values);
-    let mut lcm = <BigInt as One>::one();
-    let mut risky = <BigInt as One>::one();
+    let mut prefix = PrefixLcm::new(values, <BigInt as One>::one());
     let mut diagonal: Vec<BigInt> = Vec::with_capacity(n + 1);
     let mut binomial = <BigInt as One>::one();
     let mut out = Vec::with_capacity(n + 1);
-    for ((j, v), f) in values.iter().enumerate().zip(&factors) {
-        if !f.is_one() {
-            for e in &mut diagonal {
-                *e *= f;
-            }
-            lcm *= f;
-            risky *= part_over(f, &base);
-        }
-        let d = v.denom();
-        let mut next = if d.is_one() {
-            v.numer() * &lcm
-        } else {
-            v.numer() * (&lcm / d)
-        };
+    for (j, v) in values.iter().enumerate() {
+        let mut next = prefix.next(j, v, &mut diagonal);
         for e in &mut diagonal {
             let old = std::mem::replace(e, next);
             next = &*e - old;
         }
         diagonal.push(next);
-        let a = &diagonal[j] * &binomial;
-        let g = gcd::gcd_int(&a, &risky);
-        out.push(if a.is_zero() {
-            BigRational::new_raw(a, <BigInt as One>::one())
-        } else if g.is_one() {
-            BigRational::new_raw(a, lcm.clone())
-        } else {
-            BigRational::new_raw(a / &g, &lcm / &g)
-        });
+        out.push(prefix.reduce(&diagonal[j] * &binomial, prefix.lcm.clone()));
         binomial = binomial * (n - j) / (j + 1);
     }
     out
 }
 
-/// The factors `f_i = d_i / gcd(L_{i−1}, d_i)` by which the lcm `L_i` of the first
-/// denominators grows, and the product of the primes that may cancel in a coefficient over
-/// such a prefix lcm: those up to `n` and those of the gcds between a denominator and the
-/// lcm of the ones before it (a prime of two denominators divides the later one's).
-fn prefix_factors(values: &[&BigRational]) -> (Vec<BigInt>, BigInt) {
-    let mut lcm = <BigInt as One>::one();
-    let mut factors = Vec::with_capacity(values.len());
-    let mut base = primorial(values.len() - 1);
-    for v in values {
-        let d = v.denom();
-        let g = gcd::gcd_int(&lcm, d);
-        let f = if g.is_one() { d.clone() } else { d / &g };
-        if !g.is_one() {
-            base *= g;
+/// The lcm `L_j` of the first `j + 1` denominators, grown one value at a time, and the part
+/// `R_j` of `L_j` (times a given start) made of the primes that may cancel in a value over
+/// it: those up to `n` and those of the gcds between a denominator and the lcm of the ones
+/// before it (a prime of two denominators divides the later one's).
+struct PrefixLcm {
+    /// `f_i = d_i / gcd(L_{i−1}, d_i)`, the factor by which `L` grows at value `i`.
+    factors: Vec<BigInt>,
+    /// The product of the primes that may cancel (some more than once).
+    base: BigInt,
+    lcm: BigInt,
+    risky: BigInt,
+}
+
+impl PrefixLcm {
+    fn new(values: &[&BigRational], risky: BigInt) -> Self {
+        let mut lcm = <BigInt as One>::one();
+        let mut factors = Vec::with_capacity(values.len());
+        let mut base = primorial(values.len() - 1);
+        for v in values {
+            let d = v.denom();
+            let g = gcd::gcd_int(&lcm, d);
+            let f = if g.is_one() { d.clone() } else { d / &g };
+            if !g.is_one() {
+                base *= g;
+            }
+            lcm *= &f;
+            factors.push(f);
         }
-        lcm *= &f;
-        factors.push(f);
+        PrefixLcm {
+            factors,
+            base,
+            lcm: <BigInt as One>::one(),
+            risky,
+        }
     }
-    (factors, base)
+
+    /// Value `j` as an integer over `L_j`; the integers of `over_previous` (over `L_{j−1}`)
+    /// are brought over `L_j` too.
+    fn next(&mut self, j: usize, v: &BigRational, over_previous: &mut [BigInt]) -> BigInt {
+        let f = &self.factors[j];
+        if !f.is_one() {
+            for e in over_previous {
+                *e *= f;
+            }
+            self.lcm *= f;
+            self.risky *= part_over(f, &self.base);
+        }
+        let d = v.denom();
+        if d.is_one() {
+            v.numer() * &self.lcm
+        } else {
+            v.numer() * (&self.lcm / d)
+        }
+    }
+
+    /// `a / den` in lowest terms, for a `den > 0` whose primes that can divide `a` are all
+    /// in the current `R_j` (times the start).
+    fn reduce(&self, a: BigInt, den: BigInt) -> BigRational {
+        if a.is_zero() {
+            return BigRational::new_raw(a, <BigInt as One>::one());
+        }
+        let g = gcd::gcd_int(&a, &self.risky);
+        if g.is_one() {
+            BigRational::new_raw(a, den)
+        } else {
+            BigRational::new_raw(a / &g, den / &g)
+        }
+    }
 }
 
 /// The Bernstein points of one coordinate from its power coefficients `values`:
@@ -183,48 +210,26 @@ fn prefix_factors(values: &[&BigRational]) -> (Vec<BigInt>, BigInt) {
 /// `i ≤ j`, stays whole in the denominator (only the term `C(j,i)/C(n,i) · c_i/d_i` of the
 /// sum has it, and `p` divides neither `c_i` nor the binomials), so
 /// `gcd(e_0, n! L_j) = gcd(e_0, n! R_j)` with `R_j` the part of `L_j` made of the primes up
-/// to `n` and those shared by two denominators, as in [`curve_power_big`].
+/// to `n` and those shared by two denominators, as in [`curve_power_big`] ([`PrefixLcm`]).
 fn curve_from_power_big(values: &[&BigRational]) -> Vec<BigRational> {
     let n = values.len() - 1;
-    let (factors, base) = prefix_factors(values);
     let mut factorials = vec![<BigInt as One>::one()];
     for k in 1..=n {
         let next = &factorials[k - 1] * k;
         factorials.push(next);
     }
     let n_factorial = &factorials[n];
-    let mut lcm = <BigInt as One>::one();
-    let mut risky = n_factorial.clone();
+    let mut prefix = PrefixLcm::new(values, n_factorial.clone());
     let mut diagonal: Vec<BigInt> = Vec::with_capacity(n + 1);
     let mut out = Vec::with_capacity(n + 1);
-    for ((j, v), f) in values.iter().enumerate().zip(&factors) {
-        if !f.is_one() {
-            for e in &mut diagonal {
-                *e *= f;
-            }
-            lcm *= f;
-            risky *= part_over(f, &base);
-        }
-        let d = v.denom();
-        let over_lcm = if d.is_one() {
-            v.numer() * &lcm
-        } else {
-            v.numer() * (&lcm / d)
-        };
+    for (j, v) in values.iter().enumerate() {
+        let over_lcm = prefix.next(j, v, &mut diagonal);
         diagonal.push(over_lcm * &factorials[j] * &factorials[n - j]);
         for k in (0..j).rev() {
             let (left, right) = diagonal.split_at_mut(k + 1);
             left[k] += &right[0];
         }
-        let b = &diagonal[0];
-        let g = gcd::gcd_int(b, &risky);
-        out.push(if b.is_zero() {
-            BigRational::new_raw(b.clone(), <BigInt as One>::one())
-        } else if g.is_one() {
-            BigRational::new_raw(b.clone(), &lcm * n_factorial)
-        } else {
-            BigRational::new_raw(b / &g, &lcm * n_factorial / &g)
-        });
+        out.push(prefix.reduce(diagonal[0].clone(), &prefix.lcm * n_factorial));
     }
     out
 }
