@@ -6,8 +6,9 @@
 //! The group `exact_big` is the case no shortcut flatters: planar curves of degree 20, 200
 //! and 1000 with random 30-digit rational coordinates, each over its own denominator, and a
 //! random 20-digit parameter; `eval`, `split_at` and `elevate` as users call them, and up
-//! to degree 200 `derivative`, `derivative_at`, `to_power`, the rational
-//! curve's `eval` and the surface's `eval` on the same kind of numbers. It
+//! to degree 200 `derivative`, `derivative_at`, `to_power`, `from_power`, the rational
+//! curve's `eval`, `derivative_at` and (degree 20) `split_at`, and the surface's `eval`,
+//! `to_power`, `derivative_u` and `split_u` on the same kind of numbers. It
 //! measures CPU time (of this thread), not wall time, so that the ratios to the Python
 //! peers of `scripts/exact_big.py`, which draws the same numbers, hold on a shared machine.
 //!
@@ -236,15 +237,37 @@ fn exact_big(c: &mut Criterion) {
         group.bench_with_input(BenchmarkId::new("to_power", n), &curve, |b, c| {
             b.iter_custom(|iters| cpu_time_of(iters, || c.to_power().expect("exact")))
         });
+        // The case's points read as power-basis coefficients.
+        group.bench_with_input(BenchmarkId::new("from_power", n), curve.points(), |b, coeffs| {
+            b.iter_custom(|iters| cpu_time_of(iters, || BezierCurve::from_power(black_box(coeffs)).expect("exact")))
+        });
         let (rational, t) = big_rational_case(n);
         group.bench_with_input(BenchmarkId::new("rational_eval", n), &rational, |b, c| {
             b.iter_custom(|iters| cpu_time_of(iters, || c.eval(black_box(&t)).expect("positive weights")))
         });
+        group.bench_with_input(BenchmarkId::new("rational_derivative_at", n), &rational, |b, c| {
+            b.iter_custom(|iters| cpu_time_of(iters, || c.derivative_at(black_box(&t)).expect("positive weights")))
+        });
+        // As for `split_at` above, the peer's de Casteljau steps take seconds past degree 20.
+        if n <= 20 {
+            group.bench_with_input(BenchmarkId::new("rational_split_at", n), &rational, |b, c| {
+                b.iter_custom(|iters| cpu_time_of(iters, || c.split_at(black_box(&t)).expect("positive weights")))
+            });
+        }
     }
     for m in [10usize, 20] {
         let (surface, u, v) = big_surface_case(m);
         group.bench_with_input(BenchmarkId::new("surface_eval", m), &surface, |b, s| {
             b.iter_custom(|iters| cpu_time_of(iters, || s.eval(black_box(&u), black_box(&v))))
+        });
+        group.bench_with_input(BenchmarkId::new("surface_to_power", m), &surface, |b, s| {
+            b.iter_custom(|iters| cpu_time_of(iters, || s.to_power().expect("exact")))
+        });
+        group.bench_with_input(BenchmarkId::new("surface_derivative_u", m), &surface, |b, s| {
+            b.iter_custom(|iters| cpu_time_of(iters, || s.derivative_u(1).expect("m ≥ 1")))
+        });
+        group.bench_with_input(BenchmarkId::new("surface_split_u", m), &surface, |b, s| {
+            b.iter_custom(|iters| cpu_time_of(iters, || s.split_u(black_box(&u))))
         });
     }
     group.finish();

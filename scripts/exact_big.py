@@ -16,8 +16,18 @@ The other public exact operations, up to degree 200, each against its plain gmpy
   to_power       a_j = C(n,j) sum_i (-1)^(j-i) C(j,i) x_i on integers over the common
                  denominator;
   rational_eval  nested sums of the homogeneous coordinates w_i b_i and of w_i, divided;
+  from_power     b_i = sum_k C(i,k)/C(n,k) a_k on mpq, the case's points read as
+                 power-basis coefficients;
+  rational_derivative_at
+                 x' = (P' w - P w') / w^2 from the nested sums of P = w x, w and their
+                 derivatives (as derivative_at above);
+  rational_split_at (degree 20) de Casteljau's steps on the homogeneous mpq points
+                 (w_i b_i, w_i), each piece's points divided by their weights;
   surface_eval   on nets of degrees (10, 10) and (20, 20): each row's nested sum at v,
-                 then the column's at u.
+                 then the column's at u;
+  surface_to_power  to_power above on each row, then on each column of the result;
+  surface_derivative_u  m (b_{i+1,j} - b_{i,j}) on mpq;
+  surface_split_u   de Casteljau's steps on each column, on mpq.
 Every Python result is checked against the others before it counts.
 
 casteljau's figures are criterion's CPU-time estimates (mean and its 95% interval) from
@@ -229,6 +239,56 @@ def surface_eval_gmpy2(net, u, v):
     return out
 
 
+def from_power_mpq(a):
+    """Bernstein points b_i = sum_{k<=i} C(i,k)/C(n,k) a_k of the power-basis a_k."""
+    n = len(a) - 1
+    return [sum((mpq(math.comb(i, k), math.comb(n, k)) * a[k] for k in range(i + 1)), mpq(0)) for i in range(n + 1)]
+
+
+def rational_derivative_at_gmpy2(points, weights, p, q):
+    """x'(t) = (P'(t) w(t) - P(t) w'(t)) / w(t)^2, each sum nested over its common denominator."""
+    w = [mpq(a, d) for a, d in weights]
+    big_w, big_dw = nested_gmpy2(weights, p, q), derivative_at_gmpy2(weights, p, q)
+    out = []
+    for k in range(2):
+        h = pairs([w[i] * mpq(*points[i][k]) for i in range(len(points))])
+        out.append((derivative_at_gmpy2(h, p, q) * big_w - nested_gmpy2(h, p, q) * big_dw) / big_w**2)
+    return out
+
+
+def rational_split_mpq(points, weights, t):
+    """Both pieces' points and weights: de Casteljau on (w_i b_i, w_i), then divided."""
+    w = [mpq(a, d) for a, d in weights]
+    columns = [[w[i] * mpq(*points[i][k]) for i in range(len(points))] for k in range(2)] + [w]
+    pieces = [casteljau_split(c, t) for c in columns]
+    out = []
+    for side in range(2):
+        ws = pieces[2][side]
+        out.append(([[pieces[k][side][i] / ws[i] for k in range(2)] for i in range(len(ws))], ws))
+    return out
+
+
+def surface_to_power_gmpy2(net):
+    """to_power on each row (in v), then on each column of the result (in u)."""
+    out = []
+    for k in range(2):
+        rows = [to_power_gmpy2([pt[k] for pt in row]) for row in net]
+        columns = [to_power_gmpy2(pairs([r[j] for r in rows])) for j in range(len(rows[0]))]
+        out.append(columns)
+    return out
+
+
+def surface_derivative_u_mpq(net):
+    """m (b_{i+1,j} - b_{i,j}) on mpq."""
+    m = len(net) - 1
+    return [[[m * (net[i + 1][j][k] - net[i][j][k]) for k in range(2)] for j in range(len(net[0]))] for i in range(m)]
+
+
+def surface_split_u_mpq(net, u):
+    """Each column split at u by de Casteljau's steps, per coordinate."""
+    return [[casteljau_split([row[j][k] for row in net], u) for k in range(2)] for j in range(len(net[0]))]
+
+
 def casteljau_split(b, t):
     """Left and right control points of the split at t, by de Casteljau's steps."""
     b = list(b)
@@ -350,6 +410,26 @@ def main():
             peers["derivative_at"] = [("gmpy2 nested", lambda: [derivative_at_gmpy2(c, p, q) for c in coord_pairs])]
             peers["to_power"] = [("gmpy2 integers", lambda: [to_power_gmpy2(c) for c in coord_pairs])]
             peers["rational_eval"] = [("gmpy2 nested", lambda: rational_eval_gmpy2(points, weights, p, q))]
+            coefficients = [[mpq(*c) for c in pt] for pt in points]
+            bernstein = [from_power_mpq([c[k] for c in coefficients]) for k in range(2)]
+            # Back to the power basis: the coefficients again.
+            assert [to_power_gmpy2(pairs(b)) for b in bernstein] == [[c[k] for c in coefficients] for k in range(2)], "from_power disagrees"
+            peers["from_power"] = [("gmpy2 mpq", lambda: [from_power_mpq([c[k] for c in coefficients]) for k in range(2)])]
+            r_prime = rational_derivative_at_gmpy2(points, weights, p, q)
+            if n <= 20:
+                # The quotient rule by de Casteljau's last two columns, against the nested sums.
+                w_left = casteljau_split([mpq(*w) for w in weights], t_mpq)[0]
+                h_left = [casteljau_split(h, t_mpq)[0] for h in homogeneous]
+                # x' = n (h1 w0 - h0 w1) / w^2 with h0, h1 (w0, w1) the last-but-one column.
+                cols = [casteljau_split(h, t_mpq) for h in homogeneous + [[mpq(*w) for w in weights]]]
+                last = [(c[0][-2], c[1][1]) for c in cols]
+                w0, w1 = last[2]
+                w_t = w_left[-1]
+                assert r_prime == [n * (h1 * w0 - h0 * w1) / w_t**2 for h0, h1 in last[:2]], "rational derivative peers disagree"
+                split = rational_split_mpq(points, weights, t_mpq)
+                assert split[0][0][-1] == [h[-1] / w_t for h in h_left], "rational split disagrees"
+                peers["rational_split_at"] = [("gmpy2 mpq", lambda: rational_split_mpq(points, weights, t_mpq))]
+            peers["rational_derivative_at"] = [("gmpy2 nested", lambda: rational_derivative_at_gmpy2(points, weights, p, q))]
         frac_elevated = [elevate(c, Fraction(1)) for c in as_frac]
         assert all(mpq(f.numerator, f.denominator) == g for fs, gs in zip(frac_elevated, elevated) for f, g in zip(fs, gs))
         for op, entries in peers.items():
@@ -369,11 +449,27 @@ def main():
         # v first then u, against u first then v.
         columns = [[nested_gmpy2([net[i][j][k] for i in range(m + 1)], *u) for j in range(m + 1)] for k in range(2)]
         assert value == [nested_gmpy2(pairs(col), *v) for col in columns], "surface peers disagree"
-        median, low, high = cpu_seconds(lambda: surface_eval_gmpy2(net, u, v))
-        rows.append(("surface_eval", m, "gmpy2 nested", (median, low, high), casteljau_estimate("surface_eval", m)))
-        print(f"  surface_eval m={m}: {fmt_time(median)}", file=sys.stderr)
+        net_mpq = [[[mpq(*c) for c in pt] for pt in row] for row in net]
+        u_mpq = mpq(*u)
+        power = surface_to_power_gmpy2(net)
+        # The power form at (u, v) is the surface's value.
+        at = [sum(power[k][j][i] * u_mpq**i * mpq(*v) ** j for i in range(m + 1) for j in range(m + 1)) for k in range(2)]
+        assert at == value, "surface power basis disagrees"
+        split = surface_split_u_mpq(net_mpq, u_mpq)
+        assert [nested_gmpy2(pairs([split[j][k][0][-1] for j in range(m + 1)]), *v) for k in range(2)] == value, "surface split disagrees"
+        derivative = surface_derivative_u_mpq(net_mpq)
+        assert derivative[0][0][0] == m * (net_mpq[1][0][0] - net_mpq[0][0][0])
+        for op, name, f in (
+            ("surface_eval", "gmpy2 nested", lambda: surface_eval_gmpy2(net, u, v)),
+            ("surface_to_power", "gmpy2 integers", lambda: surface_to_power_gmpy2(net)),
+            ("surface_derivative_u", "gmpy2 mpq", lambda: surface_derivative_u_mpq(net_mpq)),
+            ("surface_split_u", "gmpy2 mpq", lambda: surface_split_u_mpq(net_mpq, u_mpq)),
+        ):
+            median, low, high = cpu_seconds(f)
+            rows.append((op, m, name, (median, low, high), casteljau_estimate(op, m)))
+            print(f"  {op} m={m}: {fmt_time(median)}", file=sys.stderr)
 
-    print(f"{'operation':<14} {'n':>5}  {'casteljau (CPU, mean [95%])':<32} {'peer':<15} {'peer CPU (median [min, max])':<32} {'ratio':>8}")
+    print(f"{'operation':<22} {'n':>5}  {'casteljau (CPU, mean [95%])':<32} {'peer':<15} {'peer CPU (median [min, max])':<32} {'ratio':>8}")
     for op, n, name, theirs, ours in rows:
         ours_text = "not measured" if ours is None else f"{fmt_time(ours[0])} [{fmt_time(ours[1])}, {fmt_time(ours[2])}]"
         if theirs is None:
@@ -381,7 +477,7 @@ def main():
         else:
             theirs_text = f"{fmt_time(theirs[0])} [{fmt_time(theirs[1])}, {fmt_time(theirs[2])}]"
             ratio = "-" if ours is None else f"{theirs[0] / ours[0]:.2f}×"
-        print(f"{op:<14} {n:>5}  {ours_text:<32} {name:<15} {theirs_text:<32} {ratio:>8}")
+        print(f"{op:<22} {n:>5}  {ours_text:<32} {name:<15} {theirs_text:<32} {ratio:>8}")
 
 
 if __name__ == "__main__":

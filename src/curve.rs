@@ -528,8 +528,22 @@ impl<T: Scalar> BezierCurve<T> {
     }
 
     /// The Bézier form of `Σ_k a_k t^k` on `[0, 1]`; `coeffs[k]` is the vector `a_k`.
+    ///
+    /// Exact rationals take Newton's forward formula over integers (`exact::power_basis`).
     pub fn from_power(coeffs: &[Point<T>]) -> Result<Self> {
         let dim = common_dimension(coeffs, "a power-basis curve")?;
+        if T::EXACT {
+            let exact: Option<Vec<&Point<BigRational>>> = coeffs
+                .iter()
+                .map(|a| (a as &dyn std::any::Any).downcast_ref())
+                .collect();
+            if let Some(exact) = exact {
+                check_degree("degree", coeffs.len() as u128 - 1)?;
+                return Ok(curve_back(BezierCurve::from_valid(power_basis::curve_from_power(
+                    &exact,
+                ))));
+            }
+        }
         let per_coord: Vec<Vec<T>> = (0..dim)
             .map(|k| power_to_bernstein(&coeffs.iter().map(|a| a.coords()[k].clone()).collect::<Vec<_>>()))
             .collect::<Result<_>>()?;

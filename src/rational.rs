@@ -65,6 +65,18 @@ impl<T: PartialEq> PartialEq for RationalBezierCurve<T> {
     }
 }
 
+/// `x / w`, `w ≠ 0`; exact rationals by Knuth's two gcds ([`crate::exact::gcd::divide`]),
+/// where num-rational's division runs its binary gcd on the products.
+fn quotient<T: Scalar>(x: &T, w: &T) -> Result<T> {
+    if T::EXACT {
+        use crate::exact::dispatch::{exact_scalar, scalar_back};
+        if let (Some(x), Some(w)) = (exact_scalar(x), exact_scalar(w)) {
+            return Ok(scalar_back(crate::exact::gcd::divide(x, w)).expect("T is BigRational"));
+        }
+    }
+    x.checked_div(w)
+}
+
 impl<T: Scalar> RationalBezierCurve<T> {
     /// A curve from control points and their weights. Errors: no points, mixed dimensions,
     /// a weight count different from the point count, all weights zero, a degree above
@@ -249,7 +261,7 @@ impl<T: Scalar> RationalBezierCurve<T> {
                 }
                 points.push(Point::origin(v.len()));
             } else {
-                points.push(Point::new(v.iter().map(|x| x.checked_div(w)).collect::<Result<_>>()?)?);
+                points.push(Point::new(v.iter().map(|x| quotient(x, w)).collect::<Result<_>>()?)?);
             }
             weights.push(w.clone());
         }
@@ -288,7 +300,23 @@ impl<T: Scalar> RationalBezierCurve<T> {
     /// The first derivative `x'(t) = (P'(t) w(t) - P(t) w'(t)) / w(t)²`, with `P = w x` and
     /// `w` from the last-but-one column of the homogeneous de Casteljau scheme. Exact for
     /// exact scalars; an error when `w(t) = 0`.
+    ///
+    /// Exact rationals take the column's two points by [`BezierCurve::eval`]'s kernels
+    /// ([`RationalBezierCurve::derivative_at_nested`]).
     pub fn derivative_at(&self, t: &T) -> Result<Point<T>> {
+        if T::EXACT {
+            let exact = (self as &dyn std::any::Any).downcast_ref::<RationalBezierCurve<BigRational>>();
+            if let (Some(c), Some(exact_t)) = (exact, crate::exact::dispatch::exact_scalar(t)) {
+                let point = c.derivative_at_nested(exact_t)?;
+                return Ok(crate::exact::dispatch::scalar_back(point).expect("T is BigRational"));
+            }
+        }
+        self.derivative_at_reference(t)
+    }
+
+    /// [`Self::derivative_at`] by de Casteljau's steps on the scalar type itself: the
+    /// reference the exact kernel is tested against.
+    pub fn derivative_at_reference(&self, t: &T) -> Result<Point<T>> {
         let h = self.dim() + 1;
         let n = self.degree();
         if n == 0 {

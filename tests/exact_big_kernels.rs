@@ -1,5 +1,6 @@
 //! The big-number kernels — eval by binary splitting, elevation and the first derivative on
-//! words, and the rational and surface points built on them — against the
+//! words, `from_power`, and the rational and surface points and the rational derivative
+//! built on them — against the
 //! step-by-step references with `==` and in lowest terms, on the inputs they exist for:
 //! 30-digit rationals each with its own denominator, negative values, zero coordinates,
 //! coordinates sharing one long denominator, and parameters 0, 1, outside [0, 1], with 20
@@ -207,6 +208,97 @@ proptest! {
     }
 }
 
+/// `b_j = Σ_{i≤j} C(j,i)/C(n,i) a_i` per coordinate on num-rational: nothing of casteljau's.
+fn from_power_reference(coeffs: &[Point<Q>]) -> Vec<Point<Q>> {
+    let n = coeffs.len() - 1;
+    let binomial = |n: usize, k: usize| (0..k).fold(BigInt::one(), |c, i| c * (n - i) / (i + 1));
+    (0..=n)
+        .map(|j| {
+            let coords = (0..coeffs[0].dim())
+                .map(|k| {
+                    (0..=j).fold(Q::zero(), |acc, i| {
+                        acc + Q::new(binomial(j, i), binomial(n, i)) * &coeffs[i].coords()[k]
+                    })
+                })
+                .collect();
+            Point::new(coords).unwrap()
+        })
+        .collect()
+}
+
+proptest! {
+    #![proptest_config(Config::with_cases(60))]
+
+    /// Newton's forward formula over prefix lcms, reduced against the primes that can
+    /// cancel, against the plain sum; and back by `to_power`.
+    #[test]
+    fn from_power_over_integers(c in big_curve(&[0, 1, 2, 3, 7, 20])) {
+        let coeffs = c.points();
+        let fast = BezierCurve::from_power(coeffs).unwrap();
+        let expected = from_power_reference(coeffs);
+        prop_assert!(same(&fast.points().to_vec(), &expected));
+        prop_assert!(same(&fast.to_power().unwrap(), &coeffs.to_vec()));
+    }
+
+    /// The rational curve's derivative vector from the two points of the last-but-one
+    /// column against de Casteljau's steps, weights of both signs (and so vanishing
+    /// denominators) included.
+    #[test]
+    fn rational_derivative_at(
+        c in big_curve(&[1, 2, 3, 7, 20]),
+        weights in proptest::collection::vec((-3i64..=3, 1u64..), 21),
+        t in parameter(),
+    ) {
+        let w: Vec<Q> = c.points().iter().zip(&weights).map(|(_, &(sign, w))| {
+            let w = Q::new(BigInt::from(w), BigInt::from(w % 97 + 1));
+            if sign < 0 { -w } else { w }
+        }).collect();
+        let Ok(rational) = RationalBezierCurve::new(c.points().to_vec(), w) else { return Ok(()) };
+        let fast = rational.derivative_at(&t);
+        let reference = rational.derivative_at_reference(&t);
+        prop_assert_eq!(fast.is_ok(), reference.is_ok());
+        prop_assert!(same(&fast.ok(), &reference.ok()));
+    }
+}
+
+/// Inputs a wrong kernel gets wrong: a vanishing `w(t)` (weights 1, −1 at t = 1/2) is the
+/// reference's error; points over one shared denominator and over coprime ones give the
+/// reference's reduced vector; `from_power` of `t^n` is `0, …, 0, 1`.
+#[test]
+fn rational_derivative_and_from_power_edges() {
+    let q = |a: i64, b: i64| Q::new(a.into(), b.into());
+    let line = RationalBezierCurve::new(
+        vec![Point::new(vec![q(0, 1)]).unwrap(), Point::new(vec![q(1, 1)]).unwrap()],
+        vec![q(1, 1), q(-1, 1)],
+    )
+    .unwrap();
+    assert!(line.derivative_at(&q(1, 2)).is_err());
+    assert!(line.derivative_at_reference(&q(1, 2)).is_err());
+    let shared = RationalBezierCurve::new(
+        vec![
+            Point::new(vec![q(1, 6), q(-5, 6)]).unwrap(),
+            Point::new(vec![q(7, 6), q(0, 1)]).unwrap(),
+            Point::new(vec![q(-1, 6), q(5, 6)]).unwrap(),
+        ],
+        vec![q(2, 3), q(1, 9), q(4, 5)],
+    )
+    .unwrap();
+    for t in [q(0, 1), q(1, 1), q(1, 3), q(-2, 7), q(9, 4)] {
+        assert!(same(
+            &shared.derivative_at(&t).unwrap(),
+            &shared.derivative_at_reference(&t).unwrap()
+        ));
+    }
+    let n = 9;
+    let mut coeffs = vec![Point::new(vec![q(0, 1)]).unwrap(); n + 1];
+    coeffs[n] = Point::new(vec![q(1, 1)]).unwrap();
+    let curve = BezierCurve::from_power(&coeffs).unwrap();
+    let expected: Vec<Point<Q>> = (0..=n)
+        .map(|i| Point::new(vec![q(i64::from(i == n), 1)]).unwrap())
+        .collect();
+    assert!(same(&curve.points().to_vec(), &expected));
+}
+
 proptest! {
     #![proptest_config(Config::with_cases(6))]
 
@@ -230,6 +322,8 @@ proptest! {
         prop_assert!(same(&c.eval(&t), &nested_reference(&c, &t)));
         prop_assert!(same(&c.elevate().unwrap(), &c.elevate_reference().unwrap()));
         prop_assert!(same(&c.to_power().unwrap(), &c.to_power_reference().unwrap()));
+        let coeffs = c.points();
+        prop_assert!(same(&BezierCurve::from_power(coeffs).unwrap().to_power().unwrap(), &coeffs.to_vec()));
     }
 }
 

@@ -20,6 +20,7 @@
 //! | degree elevation (7), (8) | [`BezierCurve::elevate_fraction_free`], [`BezierCurve::elevate_by_fraction_free`] | [`BezierCurve::elevate_reference`], [`BezierCurve::elevate_by_reference`] |
 //! | derivative curve | [`BezierCurve::derivative_fraction_free`] | [`BezierCurve::derivative_reference`] |
 //! | rational curve point (homogeneous point, then one quotient) | [`RationalBezierCurve::eval_nested`] | [`RationalBezierCurve::eval_reference`] |
+//! | rational curve's derivative vector at `t` (two homogeneous points, one reduction) | [`RationalBezierCurve::derivative_at_nested`] | [`RationalBezierCurve::derivative_at_reference`] |
 //! | surface point | [`BezierSurface::eval_nested`] | [`BezierSurface::eval_bernstein`] |
 //!
 //! The nested evaluation (Volk–Schumaker, Horner in Bernstein form) of `t = p/q`, `s = q − p`:
@@ -667,6 +668,51 @@ impl RationalBezierCurve<BigRational> {
             return Err(self.vanishing(t));
         }
         Ok(Point::new(x.iter().map(|c| gcd::divide(c, w)).collect()).expect("as many coordinates as a valid point"))
+    }
+
+    /// `x'(t) = n (h₁ w₀ − h₀ w₁) / w(t)²`, with `(h₀, w₀)` and `(h₁, w₁)` the homogeneous
+    /// curves of the points `0..n` and `1..=n` at `t` (the last-but-one column of de
+    /// Casteljau's scheme) by [`BezierCurve::eval`]'s kernels, and one reduction per
+    /// coordinate; equals [`RationalBezierCurve::derivative_at`], and a vanishing `w(t)` is
+    /// the same error.
+    ///
+    /// With `h₀ = a/b`, `h₁ = c/d`, `w₀ = a_w/b_w`, `w₁ = c_w/d_w` in lowest terms and
+    /// `t = p/q`: `w(t) = W / (q b_w d_w)`, `W = (q − p) a_w d_w + p c_w b_w`, and
+    ///
+    /// ```text
+    /// x'(t) = n (c a_w b d_w − a c_w d b_w) q² b_w d_w / (b d W²).
+    /// ```
+    ///
+    /// ```
+    /// use casteljau::{BigRational, RationalBezierCurve, Scalar};
+    /// let arc = RationalBezierCurve::<BigRational>::from_ints(&[&[1, 0], &[1, 1], &[0, 1]], &[1, 1, 2]).unwrap();
+    /// let t = BigRational::from_ratio(2, 5).unwrap();
+    /// assert_eq!(arc.derivative_at_nested(&t).unwrap(), arc.derivative_at_reference(&t).unwrap());
+    /// ```
+    pub fn derivative_at_nested(&self, t: &BigRational) -> Result<Point<BigRational>> {
+        let points = self.homogeneous().points();
+        let n = points.len() - 1;
+        if n == 0 {
+            return self.derivative_at_reference(t);
+        }
+        let column = |range: std::ops::Range<usize>| BezierCurve::from_valid(points[range].iter().cloned()).eval(t);
+        let (h0, h1) = (column(0..n), column(1..n + 1));
+        let (w0, h0) = h0.coords().split_last().expect("dim + 1 ≥ 2 homogeneous coordinates");
+        let (w1, h1) = h1.coords().split_last().expect("dim + 1 ≥ 2 homogeneous coordinates");
+        let (p, q) = (t.numer(), t.denom());
+        let (a_w, b_w, c_w, d_w) = (w0.numer(), w0.denom(), w1.numer(), w1.denom());
+        let big_w = (q - p) * a_w * d_w + p * c_w * b_w;
+        if big_w.is_zero() {
+            return Err(self.vanishing(t));
+        }
+        let w_squared = &big_w * &big_w;
+        let common = BigInt::from(n) * q * q * b_w * d_w;
+        let coords = h0.iter().zip(h1).map(|(x0, x1)| {
+            let (a, b, c, d) = (x0.numer(), x0.denom(), x1.numer(), x1.denom());
+            let num = (c * a_w * b * d_w - a * c_w * d * b_w) * &common;
+            gcd::reduce(num, &[Part::Number(b), Part::Number(d), Part::Number(&w_squared)])
+        });
+        Ok(Point::new(coords.collect()).expect("as many coordinates as a valid point"))
     }
 }
 

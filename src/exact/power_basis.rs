@@ -1,4 +1,5 @@
-//! Exact power-basis coefficients over integers: `to_power` of curves and surfaces.
+//! Exact power-basis coefficients over integers: `to_power` of curves and surfaces, and
+//! `from_power` of curves.
 //!
 //! `a_j = C(n,j) Δ^j b_0` (text 000, §1.3). On [`BigRational`] the forward differences
 //! reduce a fraction at every one of their `n(n+1)/2` steps, each a gcd of numbers as long
@@ -111,55 +112,124 @@ fn over_integers(values: &[&BigRational], f: &impl Transform) -> Vec<BigRational
 /// made of those primes is short, and `gcd(a_j, L_j) = gcd(a_j, R_j)`.
 fn curve_power_big(values: &[&BigRational]) -> Vec<BigRational> {
     let n = values.len() - 1;
-    // The primes that may cancel: those up to n and those of the gcds between a denominator
-    // and the lcm of the ones before it (a prime of two denominators divides the later one's).
-    let mut lcm = <BigInt as One>::one();
-    let mut factors = Vec::with_capacity(n + 1);
-    let mut base = primorial(n);
-    for v in values {
-        let d = v.denom();
-        let g = gcd::gcd_int(&lcm, d);
-        let f = if g.is_one() { d.clone() } else { d / &g };
-        if !g.is_one() {
-            base *= g;
-        }
-        lcm *= &f;
-        factors.push(f);
-    }
-    let mut lcm = <BigInt as One>::one();
-    let mut risky = <BigInt as One>::one();
+    let mut prefix = PrefixLcm::new(values, <BigInt as One>::one());
     let mut diagonal: Vec<BigInt> = Vec::with_capacity(n + 1);
     let mut binomial = <BigInt as One>::one();
     let mut out = Vec::with_capacity(n + 1);
-    for ((j, v), f) in values.iter().enumerate().zip(&factors) {
-        if !f.is_one() {
-            for e in &mut diagonal {
-                *e *= f;
-            }
-            lcm *= f;
-            risky *= part_over(f, &base);
-        }
-        let d = v.denom();
-        let mut next = if d.is_one() {
-            v.numer() * &lcm
-        } else {
-            v.numer() * (&lcm / d)
-        };
+    for (j, v) in values.iter().enumerate() {
+        let mut next = prefix.next(j, v, &mut diagonal);
         for e in &mut diagonal {
             let old = std::mem::replace(e, next);
             next = &*e - old;
         }
         diagonal.push(next);
-        let a = &diagonal[j] * &binomial;
-        let g = gcd::gcd_int(&a, &risky);
-        out.push(if a.is_zero() {
-            BigRational::new_raw(a, <BigInt as One>::one())
-        } else if g.is_one() {
-            BigRational::new_raw(a, lcm.clone())
-        } else {
-            BigRational::new_raw(a / &g, &lcm / &g)
-        });
+        out.push(prefix.reduce(&diagonal[j] * &binomial, prefix.lcm.clone()));
         binomial = binomial * (n - j) / (j + 1);
+    }
+    out
+}
+
+/// The lcm `L_j` of the first `j + 1` denominators, grown one value at a time, and the part
+/// `R_j` of `L_j` (times a given start) made of the primes that may cancel in a value over
+/// it: those up to `n` and those of the gcds between a denominator and the lcm of the ones
+/// before it (a prime of two denominators divides the later one's).
+struct PrefixLcm {
+    /// `f_i = d_i / gcd(L_{i−1}, d_i)`, the factor by which `L` grows at value `i`.
+    factors: Vec<BigInt>,
+    /// The product of the primes that may cancel (some more than once).
+    base: BigInt,
+    lcm: BigInt,
+    risky: BigInt,
+}
+
+impl PrefixLcm {
+    fn new(values: &[&BigRational], risky: BigInt) -> Self {
+        let mut lcm = <BigInt as One>::one();
+        let mut factors = Vec::with_capacity(values.len());
+        let mut base = primorial(values.len() - 1);
+        for v in values {
+            let d = v.denom();
+            let g = gcd::gcd_int(&lcm, d);
+            let f = if g.is_one() { d.clone() } else { d / &g };
+            if !g.is_one() {
+                base *= g;
+            }
+            lcm *= &f;
+            factors.push(f);
+        }
+        PrefixLcm {
+            factors,
+            base,
+            lcm: <BigInt as One>::one(),
+            risky,
+        }
+    }
+
+    /// Value `j` as an integer over `L_j`; the integers of `over_previous` (over `L_{j−1}`)
+    /// are brought over `L_j` too.
+    fn next(&mut self, j: usize, v: &BigRational, over_previous: &mut [BigInt]) -> BigInt {
+        let f = &self.factors[j];
+        if !f.is_one() {
+            for e in over_previous {
+                *e *= f;
+            }
+            self.lcm *= f;
+            self.risky *= part_over(f, &self.base);
+        }
+        let d = v.denom();
+        if d.is_one() {
+            v.numer() * &self.lcm
+        } else {
+            v.numer() * (&self.lcm / d)
+        }
+    }
+
+    /// `a / den` in lowest terms, for a `den > 0` whose primes that can divide `a` are all
+    /// in the current `R_j` (times the start).
+    fn reduce(&self, a: BigInt, den: BigInt) -> BigRational {
+        if a.is_zero() {
+            return BigRational::new_raw(a, <BigInt as One>::one());
+        }
+        let g = gcd::gcd_int(&a, &self.risky);
+        if g.is_one() {
+            BigRational::new_raw(a, den)
+        } else {
+            BigRational::new_raw(a / &g, den / &g)
+        }
+    }
+}
+
+/// The Bernstein points of one coordinate from its power coefficients `values`:
+/// `b_j = Σ_{k≤j} C(j,k) y_k` with `y_k = a_k / C(n,k) = Δ^k b_0` (Newton's forward
+/// formula), point by point: `b_j` depends on `a_0..a_j` alone, so it is computed over
+/// `n! L_j`, `L_j` the lcm of their denominators, where `y_k` is the integer
+/// `c_k k! (n−k)! L_j / d_k`. The diagonal `e_k = Δ^k b_{j−k}` takes `y_{j+1}` as
+/// `e'_{j+1}` and `e'_k = e_k + e'_{k+1}`; when `L` grows by a factor, so do the `e_k`.
+///
+/// **The reduction** of `b_j = e_0 / (n! L_j)`: a prime `p > n` of exactly one `d_i`,
+/// `i ≤ j`, stays whole in the denominator (only the term `C(j,i)/C(n,i) · c_i/d_i` of the
+/// sum has it, and `p` divides neither `c_i` nor the binomials), so
+/// `gcd(e_0, n! L_j) = gcd(e_0, n! R_j)` with `R_j` the part of `L_j` made of the primes up
+/// to `n` and those shared by two denominators, as in [`curve_power_big`] ([`PrefixLcm`]).
+fn curve_from_power_big(values: &[&BigRational]) -> Vec<BigRational> {
+    let n = values.len() - 1;
+    let mut factorials = vec![<BigInt as One>::one()];
+    for k in 1..=n {
+        let next = &factorials[k - 1] * k;
+        factorials.push(next);
+    }
+    let n_factorial = &factorials[n];
+    let mut prefix = PrefixLcm::new(values, n_factorial.clone());
+    let mut diagonal: Vec<BigInt> = Vec::with_capacity(n + 1);
+    let mut out = Vec::with_capacity(n + 1);
+    for (j, v) in values.iter().enumerate() {
+        let over_lcm = prefix.next(j, v, &mut diagonal);
+        diagonal.push(over_lcm * &factorials[j] * &factorials[n - j]);
+        for k in (0..j).rev() {
+            let (left, right) = diagonal.split_at_mut(k + 1);
+            left[k] += &right[0];
+        }
+        out.push(prefix.reduce(diagonal[0].clone(), &prefix.lcm * n_factorial));
     }
     out
 }
@@ -201,6 +271,15 @@ pub(crate) fn curve_power(points: &[Point<BigRational>]) -> Vec<Point<BigRationa
         })
         .collect();
     transpose(per_coordinate, points.len())
+}
+
+/// The control points of the curve `Σ_k a_k t^k`, `a_k = coeffs[k]` (points).
+pub(crate) fn curve_from_power(coeffs: &[&Point<BigRational>]) -> Vec<Point<BigRational>> {
+    let dim = coeffs[0].dim();
+    let per_coordinate: Vec<Vec<BigRational>> = (0..dim)
+        .map(|k| curve_from_power_big(&coeffs.iter().map(|p| &p.coords()[k]).collect::<Vec<_>>()))
+        .collect();
+    transpose(per_coordinate, coeffs.len())
 }
 
 /// The power coefficients `c_{k,l}` of a surface with control net `net`.
