@@ -20,6 +20,7 @@ use crate::error::{check_degree, Error, Result};
 use crate::exact::dispatch::{curve_back, exact_curve, exact_scalar, point_back, scalar_back};
 use crate::exact::power_basis;
 use crate::fixed::{elevate_points, split_points};
+use crate::float::interval_eval;
 use crate::hull::convex_weights;
 use crate::kernel::{de_casteljau, eval_cubic, with_column};
 use crate::point::{common_dimension, AffineMap, Point, PointList};
@@ -207,12 +208,17 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     ///
     /// Exact rational points are evaluated by the nested Bernstein sum over integers
     /// ([`BezierCurve::eval_nested`]): the same value, with one reduction at the end.
+    /// [`Interval`](crate::Interval) points at a point `t ∈ [0, 1]` are enclosed by the
+    /// kernel of [`interval_de_casteljau`](crate::interval_de_casteljau), per coordinate.
     #[inline]
     pub fn eval(&self, t: &T) -> P {
         if T::EXACT {
             if let Some(p) = self.eval_exact(t) {
                 return p;
             }
+        }
+        if let Some(p) = interval_eval(self, t) {
+            return p;
         }
         // A cubic, the common case, is tested for first and worked on as an array of
         // constant length: no loop, and no other degree's code is inlined here.

@@ -502,7 +502,7 @@ pub fn interval_de_casteljau(b: &[f64], t: f64) -> Result<Interval> {
 /// finite result had no overflow.
 /// `tests/interval_enclosure.rs` checks the enclosure against the exact rational value.
 #[inline]
-fn sign_split_enclosure(b: &[f64], t: f64) -> Option<Interval> {
+pub(crate) fn sign_split_enclosure(b: &[f64], t: f64) -> Option<Interval> {
     let n = b.len().checked_sub(1)?;
     if n == 0 {
         let x = b[0];

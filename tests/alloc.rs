@@ -132,9 +132,52 @@ fn generic_interval_eval_allocates_nothing() {
                 .collect(),
         )
         .unwrap();
-        let t = Interval::from_f64(0.3).unwrap();
-        let (n, p) = allocations(|| c.eval(&t));
-        assert_eq!(n, 0, "BezierCurve<Interval>::eval allocated at degree {}", len - 1);
-        assert!(p.coords()[0].lo() <= p.coords()[0].hi());
+        // a point of [0, 1] takes the sign-split kernel, the others the generic algorithm
+        for t in [0.3, 0.0, 1.0, 1.5] {
+            let t = Interval::from_f64(t).unwrap();
+            let (n, p) = allocations(|| c.eval(&t));
+            assert_eq!(n, 0, "BezierCurve<Interval>::eval allocated at degree {}", len - 1);
+            assert!(p.coords()[0].lo() <= p.coords()[0].hi());
+        }
+        let t = Interval::new(0.25, 0.5).unwrap();
+        let (n, _) = allocations(|| c.eval(&t));
+        assert_eq!(n, 0, "BezierCurve<Interval>::eval allocated at an interval t");
+    }
+}
+
+/// The sign-split kernel inside the public eval keeps its coefficients on the stack up to
+/// `STACK_COEFFICIENTS`, in two and three run-time dimensions, on fixed-dimension points, and
+/// for coefficients that are intervals (two triangles per coordinate).
+#[test]
+fn interval_eval_in_the_unit_interval_allocates_nothing_up_to_the_stack_limit() {
+    use casteljau::float::STACK_COEFFICIENTS;
+    use casteljau::{BezierCurve, Interval, Point2, Scalar};
+    let coefficient = |i: usize| ((i * 7919) % 13) as f64 / 6.5 - 1.0;
+    let t = Interval::from_f64(0.3).unwrap();
+    for len in 1..=STACK_COEFFICIENTS {
+        for dim in [2, 3] {
+            let c: BezierCurve<Interval> = BezierCurve::from_coords(
+                (0..len)
+                    .map(|i| {
+                        (0..dim)
+                            .map(|k| Interval::new(coefficient(i + k), coefficient(i + k) + (k as f64)).unwrap())
+                            .collect()
+                    })
+                    .collect(),
+            )
+            .unwrap();
+            let (n, p) = allocations(|| c.eval(&t));
+            assert_eq!(n, 0, "eval allocated at degree {} in {dim} dimensions", len - 1);
+            assert_eq!(p.coords().len(), dim);
+        }
+        let fixed = Bezier::from_points((0..len).map(|i| {
+            Point2::new(
+                Interval::from_f64(coefficient(i)).unwrap(),
+                Interval::from_f64(coefficient(i + 1)).unwrap(),
+            )
+        }))
+        .unwrap();
+        let (n, _) = allocations(|| fixed.eval(&t));
+        assert_eq!(n, 0, "Bezier<Point2<Interval>>::eval allocated at degree {}", len - 1);
     }
 }

@@ -2,14 +2,16 @@
 //! of the curve on its float inputs, decided in rationals, on random curves of every scale:
 //! subnormal, ordinary, near `f64::MAX`, mixed, with signed zeros and cancellation; its width
 //! stays within the a priori bound's order, `6(n + 1)u max|b_i|`, and non-finite inputs or
-//! no coefficients are errors, never a panic.
+//! no coefficients are errors, never a panic. The public `BezierCurve<Interval>::eval` (and
+//! `Bezier<Point2<Interval>>`) at a point `t ∈ [0, 1]` gives that enclosure per coordinate,
+//! also for coefficients that are intervals; elsewhere the generic algorithm's.
 
 #[path = "support/rng.rs"]
 mod rng;
 
 use casteljau::float::{eval_dyadic, UNIT_ROUNDOFF};
 use casteljau::{interval_de_casteljau, tight_interval_de_casteljau};
-use casteljau::{BezierCurve, BigRational, Scalar};
+use casteljau::{Bezier, BezierCurve, BigRational, Interval, Point2, Scalar};
 use rng::Rng;
 
 fn exact_value(b: &[f64], t: f64) -> BigRational {
@@ -121,4 +123,139 @@ fn outside_the_unit_interval_it_is_the_tight_interval() {
             tight_interval_de_casteljau(&b, t).unwrap()
         );
     }
+}
+
+fn interval_curve(coords: &[&[f64]]) -> BezierCurve<Interval> {
+    let len = coords[0].len();
+    BezierCurve::from_coords(
+        (0..len)
+            .map(|i| coords.iter().map(|b| Interval::point(b[i]).unwrap()).collect())
+            .collect(),
+    )
+    .unwrap()
+}
+
+/// The public operation picks the sign-split kernel for a point `t ∈ [0, 1]`: the same
+/// enclosure, coordinate by coordinate, on the run-time and the fixed dimension points, and
+/// it holds the exact value at every scale.
+#[test]
+fn the_public_eval_is_the_enclosure_at_every_scale() {
+    let mut rng = Rng(2024);
+    let ts = [0.0, 1.0, 0.5, 0.3, 1e-310, 5e-324, 0.9999999999999999, 1e-20, 0.7500001];
+    for case in 0..2_000 {
+        let n = [0, 1, 2, 3, 5, 10, 20, 40, 63][case % 9];
+        let scale = [
+            1.0,
+            1e-300,
+            1e300,
+            1e-310,
+            f64::MAX,
+            2f64.powi((rng.next() % 2000) as i32 - 1000),
+        ][case % 6];
+        let x: Vec<f64> = (0..=n).map(|_| coefficient(&mut rng, scale)).collect();
+        let y: Vec<f64> = (0..=n).map(|_| coefficient(&mut rng, scale)).collect();
+        let t = if case % 3 == 0 {
+            ts[(rng.next() % ts.len() as u64) as usize]
+        } else {
+            rng.unit()
+        };
+        let ti = Interval::point(t).unwrap();
+        let p = interval_curve(&[&x, &y]).eval(&ti);
+        let fixed: Bezier<Point2<Interval>> = Bezier::from_points(
+            x.iter()
+                .zip(&y)
+                .map(|(a, b)| Point2::new(Interval::point(*a).unwrap(), Interval::point(*b).unwrap())),
+        )
+        .unwrap();
+        let q = fixed.eval(&ti);
+        for (k, b) in [&x, &y].into_iter().enumerate() {
+            let e = p.coords()[k];
+            assert_eq!(q.0[k], e, "Point2 and Point differ: {b:?} at {t:e}");
+            assert!(
+                e.contains(&exact_value(b, t)),
+                "{e} misses the exact value: {b:?} at {t:e}"
+            );
+            // the triangles on |b_i| ≤ 2^1000 stay finite: the kernel answered, not the generic path
+            if b.iter().all(|c| c.abs() < 1e300) {
+                assert_eq!(
+                    e,
+                    interval_de_casteljau(b, t).unwrap(),
+                    "not the kernel: {b:?} at {t:e}"
+                );
+            }
+        }
+    }
+}
+
+/// Coefficients that are intervals: the curve over them runs from the curve on the lower
+/// endpoints to the one on the upper endpoints (nonnegative weights on `[0, 1]`), and the
+/// public eval encloses both, and a curve in between; an interval `t` or one outside
+/// `[0, 1]` takes the generic algorithm, as `eval_reference` does.
+#[test]
+fn interval_coefficients_and_other_parameters() {
+    let mut rng = Rng(77);
+    for case in 0..1_000 {
+        let n = [1, 2, 3, 7, 10, 20][case % 6];
+        let lo: Vec<f64> = (0..=n).map(|_| 2.0 * rng.unit() - 1.0).collect();
+        let width: Vec<f64> = (0..=n)
+            .map(|i| if (case + i) % 3 == 0 { 0.0 } else { rng.unit() * 1e-3 })
+            .collect();
+        let hi: Vec<f64> = lo.iter().zip(&width).map(|(l, w)| l + w).collect();
+        let mid: Vec<f64> = lo.iter().zip(&hi).map(|(l, h)| l + (h - l) / 2.0).collect();
+        let c = BezierCurve::from_coords(
+            lo.iter()
+                .zip(&hi)
+                .map(|(l, h)| vec![Interval::new(*l, *h).unwrap()])
+                .collect(),
+        )
+        .unwrap();
+        let t = rng.unit();
+        let e = c.eval(&Interval::point(t).unwrap()).coords()[0];
+        for b in [&lo, &hi, &mid] {
+            assert!(e.contains(&exact_value(b, t)), "{e}: {b:?} at {t}");
+        }
+        for t in [
+            Interval::point(1.0 + t).unwrap(),
+            Interval::point(-t).unwrap(),
+            Interval::new(t / 2.0, t).unwrap(),
+        ] {
+            assert_eq!(c.eval(&t), c.eval_reference(&t));
+        }
+    }
+}
+
+/// Ill-conditioned curves through the public eval: the enclosure holds near a root of
+/// multiplicity 3, 7 and 15, where plain de Casteljau has no correct digit.
+#[test]
+fn the_public_eval_encloses_near_multiple_roots() {
+    for m in [3usize, 7, 15] {
+        // (t − 3/4)^m in Bernstein form, exact in floats: (−3/4)^(m−i) (1/4)^i
+        let b: Vec<f64> = (0..=m)
+            .map(|i| (-0.75f64).powi((m - i) as i32) * 0.25f64.powi(i as i32))
+            .collect();
+        let c = interval_curve(&[&b]);
+        for k in 0..200 {
+            let t = 0.75 + (k as f64 - 100.0) * 1e-7;
+            let e = c.eval(&Interval::point(t).unwrap()).coords()[0];
+            assert!(e.contains(&exact_value(&b, t)), "{e} at {t}, multiplicity {m}");
+        }
+    }
+}
+
+/// The check can fail: where the enclosure is as narrow as it gets (clamped to the largest
+/// coefficient, which is the exact value at `t = 0`), one ulp less misses the exact value;
+/// so does the plain float value as a point near a triple root.
+#[test]
+fn a_shrunk_enclosure_misses_the_exact_value() {
+    let b = [f64::MAX, -f64::MAX, 0.5];
+    let e = interval_curve(&[&b]).eval(&Interval::point(0.0).unwrap()).coords()[0];
+    let exact = exact_value(&b, 0.0);
+    assert!(e.contains(&exact) && e.hi() == f64::MAX, "{e}");
+    let shrunk = Interval::new(e.lo(), casteljau::float::next_down(e.hi())).unwrap();
+    assert!(!shrunk.contains(&exact), "{shrunk}");
+    let b = [-0.421875, 0.140625, -0.046875, 0.015625];
+    let t = 0.7500001;
+    let plain = casteljau::float::de_casteljau(&b, t);
+    assert!(!Interval::point(plain).unwrap().contains(&exact_value(&b, t)));
+    assert!(interval_curve(&[&b]).eval(&Interval::point(t).unwrap()).coords()[0].contains(&exact_value(&b, t)));
 }

@@ -16,7 +16,7 @@ use std::any::{Any, TypeId};
 use std::borrow::Cow;
 
 /// `value` as a `B` when `A` is `B`, else `value` back.
-fn cast<A: 'static, B: 'static>(value: A) -> Result<B, A> {
+pub(crate) fn cast<A: 'static, B: 'static>(value: A) -> Result<B, A> {
     let mut slot = Some(value);
     match (&mut slot as &mut dyn Any).downcast_mut::<Option<B>>() {
         Some(b) => Ok(b.take().expect("just filled")),

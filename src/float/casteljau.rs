@@ -115,6 +115,7 @@ pub const fn next_down(x: f64) -> f64 {
 }
 
 /// `(s, ρ)`: `s = fl(1 − t)` and its exact error `ρ = (1 − t) − s`.
+#[inline]
 pub(crate) fn one_minus(t: f64) -> (f64, f64) {
     two_sum(1.0, -t)
 }
@@ -130,6 +131,7 @@ pub fn a_priori_index(n: usize, t: f64) -> usize {
 }
 
 /// `γ` enlarged to cover the float evaluation of a bound with `ops` roundings on each path.
+#[inline]
 pub(crate) fn inflate(x: f64, ops: usize) -> f64 {
     next_up(x * (1.0 + 2.0 * gamma(ops + 2)))
 }
@@ -139,6 +141,7 @@ pub(crate) fn inflate(x: f64, ops: usize) -> f64 {
 /// `growth` (times `(1 + u)²`): `per_node · 2^−1074 · n(n+1)/2 · max(1, growth)^{n−1}`,
 /// with a margin of `10^−9` covering the `(1 + u)` factors up to degree `10^6` and the
 /// rounding of this very computation, rounded up. `+∞` when it overflows.
+#[inline]
 pub fn underflow_term(n: usize, per_node: f64, growth: f64) -> f64 {
     if n == 0 {
         return 0.0;
@@ -174,17 +177,20 @@ fn underflow_term_near_one(n: usize, per_node: f64, growth: f64) -> Option<f64> 
 
 /// `a + b` rounded up (for nonnegative `a`, `b`): the exact sum lies between the rounded one
 /// and its neighbours, so the next float up is at least the sum.
+#[inline]
 pub(crate) fn add_up(a: f64, b: f64) -> f64 {
     next_up(a + b)
 }
 
 /// `a · b` rounded up (for nonnegative `a`, `b`), subnormal results included.
+#[inline]
 pub(crate) fn mul_up(a: f64, b: f64) -> f64 {
     next_up(a * b)
 }
 
 /// `max(1, |s| + |t|)` rounded up: how much one level of de Casteljau's triangle may grow
 /// an absolute error, for `s = fl(1 − t)`.
+#[inline]
 pub(crate) fn level_growth(t: f64) -> f64 {
     let s = 1.0 - t;
     add_up(s.abs(), t.abs()).max(1.0)

@@ -11,6 +11,7 @@
 
 mod casteljau;
 mod compensated;
+mod dispatch;
 mod dyadic;
 mod eft;
 mod methods;
@@ -25,6 +26,7 @@ pub(crate) use casteljau::{add_up, gamma_computed};
 pub use compensated::{
     compensated_a_priori_bound, compensated_de_casteljau, compensated_derivative, compensated_surface,
 };
+pub(crate) use dispatch::interval_eval;
 pub use dyadic::{dyadic_ratio, eval_dyadic};
 pub use eft::{fast_two_sum, two_product, two_product_dekker, two_product_fma, two_sum, TWO_PRODUCT_METHOD};
 pub(crate) use eft::{ExactRange, Factor};

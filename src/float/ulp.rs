@@ -24,6 +24,7 @@ pub struct UlpError {
 }
 
 /// A finite `f64` as `(negative, m, e)` with value `±m·2^e` (`m` is 0 for zeros).
+#[inline]
 pub fn decompose(x: f64) -> (bool, u64, i64) {
     let bits = x.to_bits();
     let negative = bits >> 63 == 1;
@@ -131,6 +132,7 @@ pub fn ulp_exponent(x: &BigRational) -> i64 {
 }
 
 /// The exponent of `ulp(x)` for a float `x` (as [`ulp_exponent`]).
+#[inline]
 pub fn ulp_exponent_f64(x: f64) -> i64 {
     let (_, m, e) = decompose(x);
     if m == 0 {

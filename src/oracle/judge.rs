@@ -292,7 +292,7 @@ pub fn float_eval(
     let mut enclosure = Vec::new();
     let intervals = if method == FloatMethod::Interval {
         let c = curve.try_map(Interval::from_rational)?;
-        let generic = c.eval(&Interval::from_rational(t)?);
+        let generic = c.eval_reference(&Interval::from_rational(t)?);
         if generic
             .coords()
             .iter()

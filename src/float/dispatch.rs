@@ -1,0 +1,95 @@
+//! The kernel choice inside `Bezier::eval` for interval points: a curve whose coordinates
+//! are [`Interval`]s ([`Point<Interval>`], or [`PointN`] of `Interval` in 1 to 3
+//! dimensions), evaluated at a point `t ∈ [0, 1]`, is enclosed per coordinate by the
+//! sign-split kernel of [`crate::interval_de_casteljau`] (two float triangles) instead of
+//! the generic algorithm's interval operations. Every other curve, an interval `t` and a
+//! `t` outside `[0, 1]` take the generic algorithm.
+//!
+//! The choice is by type identity ([`Any`]), as in `crate::exact::dispatch`: a constant once
+//! the generic code is instantiated, so the code for other scalars keeps no trace of it.
+
+use super::scratch::with_scratch;
+use crate::curve::Bezier;
+use crate::exact::dispatch::cast;
+use crate::interval::{sign_split_enclosure, Interval};
+use crate::point::Point;
+use crate::scalar::Ring;
+use crate::space::{PointN, VectorSpace};
+use std::any::{Any, TypeId};
+
+/// `b(t)` by the sign-split enclosure when the points are intervals and `t` is a point of
+/// `[0, 1]`; `None` otherwise, and when a coefficient is not finite (the generic algorithm
+/// then gives its own enclosure).
+#[inline(always)]
+pub(crate) fn interval_eval<P: VectorSpace + 'static>(c: &Bezier<P>, t: &P::Scalar) -> Option<P>
+where
+    P::Scalar: 'static,
+{
+    if TypeId::of::<P::Scalar>() != TypeId::of::<Interval>() {
+        return None;
+    }
+    enclose_curve(c, t)
+}
+
+fn enclose_curve<P: VectorSpace + 'static>(c: &Bezier<P>, t: &P::Scalar) -> Option<P>
+where
+    P::Scalar: 'static,
+{
+    let t = *(t as &dyn Any).downcast_ref::<Interval>()?;
+    if t.lo() != t.hi() || !(0.0..=1.0).contains(&t.lo()) {
+        return None;
+    }
+    let t = t.lo();
+    let any = c as &dyn Any;
+    if let Some(c) = any.downcast_ref::<Bezier<Point<Interval>>>() {
+        let points = c.points();
+        let dim = points[0].dim();
+        // up to 4 coordinates (a point's inline capacity) on the stack, copied into the
+        // point once: collecting through an iterator of `Option`s cost as much as the kernel
+        let mut coords = [Interval::zero(); 4];
+        if dim <= coords.len() {
+            for (k, x) in coords[..dim].iter_mut().enumerate() {
+                *x = enclose_coordinate(points, k, t)?;
+            }
+            return cast(Point::from_valid(coords[..dim].iter().copied())).ok();
+        }
+        let coords: Option<Vec<Interval>> = (0..dim).map(|k| enclose_coordinate(points, k, t)).collect();
+        return cast(Point::from_valid(coords?)).ok();
+    }
+    fixed::<P, 1>(any, t)
+        .or_else(|| fixed::<P, 2>(any, t))
+        .or_else(|| fixed::<P, 3>(any, t))
+}
+
+fn fixed<P: 'static, const D: usize>(any: &dyn Any, t: f64) -> Option<P> {
+    let c = any.downcast_ref::<Bezier<PointN<Interval, D>>>()?;
+    let mut coords = [Interval::zero(); D];
+    for (k, x) in coords.iter_mut().enumerate() {
+        *x = enclose_coordinate(c.points(), k, t)?;
+    }
+    cast(PointN(coords)).ok()
+}
+
+/// Coordinate `k` of the curve on `points` at `t ∈ [0, 1]`: the Bernstein weights are
+/// nonnegative there, so the values over the coefficients' intervals run from the curve on
+/// their lower endpoints to the curve on their upper ones, each enclosed by
+/// [`sign_split_enclosure`] (once when every coefficient is a point).
+#[inline]
+fn enclose_coordinate<Q: VectorSpace<Scalar = Interval>>(points: &[Q], k: usize, t: f64) -> Option<Interval> {
+    with_scratch(points.len(), 0.0, |b| {
+        let mut points_only = true;
+        for (x, p) in b.iter_mut().zip(points) {
+            let c = p.coords()[k];
+            *x = c.lo();
+            points_only &= c.lo() == c.hi();
+        }
+        let low = sign_split_enclosure(b, t)?;
+        if points_only {
+            return Some(low);
+        }
+        for (x, p) in b.iter_mut().zip(points) {
+            *x = p.coords()[k].hi();
+        }
+        Interval::new(low.lo(), sign_split_enclosure(b, t)?.hi()).ok()
+    })
+}
