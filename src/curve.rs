@@ -113,22 +113,6 @@ pub(crate) fn elevated_point<T: Scalar, P: VectorSpace<Scalar = T>>(points: &[P]
     }
 }
 
-/// Makes the common point of a float cubic's halves `b(t0)` as [`Bezier::eval`] computes it,
-/// in place of the last de Casteljau step (exact scalars agree already).
-#[inline(always)]
-pub(crate) fn join_at_eval<T: Scalar, P: VectorSpace<Scalar = T>>(
-    points: &[P; INLINE_POINTS],
-    t0: &T,
-    left: &mut [P],
-    right: &mut [P],
-) {
-    if !T::EXACT {
-        let joint = eval_cubic(points, t0);
-        left[INLINE_POINTS - 1] = joint.clone();
-        right[0] = joint;
-    }
-}
-
 /// Checks that `points` is non-empty and of one dimension; returns that dimension.
 pub(crate) fn common_dim<P: VectorSpace>(points: &[P], what: &'static str) -> Result<usize> {
     let first = points.first().ok_or(Error::Empty(what))?;
@@ -203,8 +187,7 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     /// `b(t)` by de Casteljau's algorithm (1). Defined for every `t`, not only `[0, 1]`.
     ///
     /// A cubic on floats is evaluated as its nested Bernstein sum instead, fewer operations
-    /// and a smaller error (`((t b₃ + 3s b₂) t + 3s² b₁) t + s³ b₀` with `s = 1 − t`);
-    /// [`Self::split_at`] joins its halves at that same point.
+    /// and a smaller error (`((t b₃ + 3s b₂) t + 3s² b₁) t + s³ b₀` with `s = 1 − t`).
     ///
     /// Exact rational points are evaluated by the nested Bernstein sum over integers
     /// ([`BezierCurve::eval_nested`]): the same value, with one reduction at the end.
@@ -359,8 +342,10 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
 
     /// Subdivision at `t0` (Lemma 1.3): the curves `c1(t) = b(t0 t)` and
     /// `c2(t) = b(t0 + (1 - t0) t)`, whose control points are the two boundaries of the
-    /// scheme (9). Any `t0` works; outside `(0, 1)` the pieces extrapolate. The halves meet
-    /// at `self.eval(t0)`, bit for bit on floats too.
+    /// scheme (9). Any `t0` works; outside `(0, 1)` the pieces extrapolate. The halves share
+    /// their common point `b_0^n(t0)`, the same value in both. On floats it is de Casteljau's
+    /// last level and may differ in the last bits from [`Self::eval`] of a cubic (the nested
+    /// Bernstein sum); exact scalars agree.
     ///
     /// Exact rational points are split by de Casteljau's steps over integers
     /// ([`BezierCurve::split_fraction_free`]), each point reduced once.
@@ -413,9 +398,6 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
             r += 1;
             left[r] = level[0].clone();
         });
-        if let Ok(points) = <&[P; INLINE_POINTS]>::try_from(&self.points[..]) {
-            join_at_eval(points, t0, &mut left, &mut right);
-        }
         (Bezier { points: left }, Bezier { points: right })
     }
 
