@@ -194,14 +194,24 @@ impl<T: Scalar> RationalBezierCurve<T> {
     /// Exact rationals take the homogeneous curve's point by [`BezierCurve::eval`]'s exact
     /// kernels, then one quotient per coordinate ([`RationalBezierCurve::eval_nested`]).
     pub fn eval(&self, t: &T) -> Result<Point<T>> {
-        if T::EXACT {
-            let exact = (self as &dyn std::any::Any).downcast_ref::<RationalBezierCurve<BigRational>>();
-            if let (Some(c), Some(exact_t)) = (exact, crate::exact::dispatch::exact_scalar(t)) {
-                let point = c.eval_nested(exact_t)?;
-                return Ok(crate::exact::dispatch::scalar_back(point).expect("T is BigRational"));
-            }
+        if let Some(point) = self.on_exact_kernel(t, RationalBezierCurve::<BigRational>::eval_nested) {
+            return point;
         }
         self.eval_reference(t)
+    }
+
+    /// `kernel`'s answer when `T` is [`BigRational`] (the exact kernels), else `None`.
+    fn on_exact_kernel(
+        &self,
+        t: &T,
+        kernel: fn(&RationalBezierCurve<BigRational>, &BigRational) -> Result<Point<BigRational>>,
+    ) -> Option<Result<Point<T>>> {
+        if !T::EXACT {
+            return None;
+        }
+        let c = (self as &dyn std::any::Any).downcast_ref::<RationalBezierCurve<BigRational>>()?;
+        let exact_t = crate::exact::dispatch::exact_scalar(t)?;
+        Some(kernel(c, exact_t).map(|point| crate::exact::dispatch::scalar_back(point).expect("T is BigRational")))
     }
 
     /// [`Self::eval`] by de Casteljau's steps on the scalar type itself: the reference the
@@ -304,12 +314,8 @@ impl<T: Scalar> RationalBezierCurve<T> {
     /// Exact rationals take the column's two points by [`BezierCurve::eval`]'s kernels
     /// ([`RationalBezierCurve::derivative_at_nested`]).
     pub fn derivative_at(&self, t: &T) -> Result<Point<T>> {
-        if T::EXACT {
-            let exact = (self as &dyn std::any::Any).downcast_ref::<RationalBezierCurve<BigRational>>();
-            if let (Some(c), Some(exact_t)) = (exact, crate::exact::dispatch::exact_scalar(t)) {
-                let point = c.derivative_at_nested(exact_t)?;
-                return Ok(crate::exact::dispatch::scalar_back(point).expect("T is BigRational"));
-            }
+        if let Some(point) = self.on_exact_kernel(t, RationalBezierCurve::<BigRational>::derivative_at_nested) {
+            return point;
         }
         self.derivative_at_reference(t)
     }
