@@ -6,15 +6,13 @@
 //! as the lcm of all denominators. Here each coordinate is written over that lcm `L` once,
 //! the differences are integer subtractions, and each coefficient is reduced once.
 //!
-//! `L` is kept as the product of short factors `f_i = d_i / gcd(L_{i−1}, d_i)` (with
-//! `L_{i−1}` the lcm of the earlier denominators), so the one reduction of a coefficient
-//! against `L` is a remainder tree over the `f_i` and gcds of short numbers
-//! (`splitting::reduce_over`), not a gcd of two long numbers. Inputs whose lcm and
-//! differences fit `i128` stay on machine words.
+//! On big integers a curve's coefficient `a_j` is computed over the lcm of the first `j + 1`
+//! denominators and reduced only against the primes that can cancel (`PrefixLcm`); a
+//! surface is its columns' curves, then its rows'. Inputs whose lcm and differences fit
+//! `i128` stay on machine words.
 
 use crate::exact::fraction_free::{common_denominator, transpose, Int};
 use crate::exact::gcd;
-use crate::exact::splitting;
 use crate::point::Point;
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -85,16 +83,30 @@ fn on_words(values: &[&BigRational], f: &impl Transform) -> Option<Vec<BigRation
     Some(out.into_iter().map(|a| i128::ratio(a, x.den)).collect())
 }
 
-/// `values` mapped by `f` exactly: on machine words when they fit, else over the lcm of the
-/// denominators as a product tree, with one reduction per output value.
-fn over_integers(values: &[&BigRational], f: &impl Transform) -> Vec<BigRational> {
-    if let Some(out) = on_words(values, f) {
+/// The power coefficients of one curve coordinate: on machine words when they fit, else
+/// point by point on big integers.
+fn coordinate_power(values: &[&BigRational]) -> Vec<BigRational> {
+    on_words(values, &Curve).unwrap_or_else(|| curve_power_big(values))
+}
+
+/// The power coefficients of one surface coordinate (the net flat in rows of `columns`):
+/// on machine words when the whole net fits, else each column's curve map, then each
+/// row's, every curve over the lcm of its own denominators. One lcm for the whole net
+/// would make every coefficient as long as all the net's denominators together.
+fn net_coordinate_power(values: &[&BigRational], columns: usize) -> Vec<BigRational> {
+    if let Some(out) = on_words(values, &Net { columns }) {
         return out;
     }
-    let (numerators, tree) = splitting::over_lcm(values);
-    let out = f.apply::<BigInt>(numerators).expect("big integers do not overflow");
-    out.into_iter()
-        .map(|a| splitting::reduce_over(a, tree.as_ref(), &[]))
+    let rows = values.len() / columns;
+    let mut x = vec![BigRational::zero(); values.len()];
+    for j in 0..columns {
+        let column: Vec<&BigRational> = (0..rows).map(|i| values[i * columns + j]).collect();
+        for (i, v) in coordinate_power(&column).into_iter().enumerate() {
+            x[i * columns + j] = v;
+        }
+    }
+    x.chunks_exact(columns)
+        .flat_map(|row| coordinate_power(&row.iter().collect::<Vec<_>>()))
         .collect()
 }
 
@@ -267,7 +279,7 @@ pub(crate) fn curve_power(points: &[Point<BigRational>]) -> Vec<Point<BigRationa
     let per_coordinate: Vec<Vec<BigRational>> = (0..dim)
         .map(|k| {
             let values: Vec<&BigRational> = points.iter().map(|p| &p.coords()[k]).collect();
-            on_words(&values, &Curve).unwrap_or_else(|| curve_power_big(&values))
+            coordinate_power(&values)
         })
         .collect();
     transpose(per_coordinate, points.len())
@@ -288,7 +300,7 @@ pub(crate) fn net_power(net: &[Vec<Point<BigRational>>]) -> Vec<Vec<Point<BigRat
     let per_coordinate: Vec<Vec<BigRational>> = (0..dim)
         .map(|k| {
             let values: Vec<&BigRational> = net.iter().flatten().map(|p| &p.coords()[k]).collect();
-            over_integers(&values, &Net { columns })
+            net_coordinate_power(&values, columns)
         })
         .collect();
     let flat = transpose(per_coordinate, net.len() * columns);
