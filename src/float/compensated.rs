@@ -15,7 +15,7 @@ use super::casteljau::{
     abs_bernstein_sum_in, abs_factors, abs_sum_rounded_up, add_up, convex_triangle, gamma, inflate, level_growth,
     mul_up, next_up, one_minus, underflow_term, ETA, UNIT_ROUNDOFF,
 };
-use super::eft::{two_product, two_sum, ExactRange, Factor, Halves};
+use super::eft::{two_product, two_sum, ExactRange, Factor};
 use super::scratch::{with_copy, with_scratch, with_scratch2};
 
 /// Compensated de Casteljau (Jiang, Li, Cheng, Su 2010): `(res, e)` with `|res − p(t)| ≤ e`,
@@ -35,16 +35,13 @@ use super::scratch::{with_copy, with_scratch, with_scratch2};
 pub fn compensated_de_casteljau(b: &[f64], t: f64) -> (f64, f64) {
     let n = b.len() - 1;
     // low degrees on arrays of constant length: unrolled, in registers (the same steps)
-    let h = Factor::halves(0.0);
     let (hi, lo, abs_triangle) = match b.len() {
-        2 => compensated_with_abs(&mut [0.0; 2], &mut [0.0; 2], &mut [0.0; 2], &mut [h; 2], b, t),
-        3 => compensated_with_abs(&mut [0.0; 3], &mut [0.0; 3], &mut [0.0; 3], &mut [h; 3], b, t),
-        4 => compensated_with_abs(&mut [0.0; 4], &mut [0.0; 4], &mut [0.0; 4], &mut [h; 4], b, t),
-        5 => compensated_with_abs(&mut [0.0; 5], &mut [0.0; 5], &mut [0.0; 5], &mut [h; 5], b, t),
+        2 => compensated_with_abs(&mut [0.0; 2], &mut [0.0; 2], &mut [0.0; 2], b, t),
+        3 => compensated_with_abs(&mut [0.0; 3], &mut [0.0; 3], &mut [0.0; 3], b, t),
+        4 => compensated_with_abs(&mut [0.0; 4], &mut [0.0; 4], &mut [0.0; 4], b, t),
+        5 => compensated_with_abs(&mut [0.0; 5], &mut [0.0; 5], &mut [0.0; 5], b, t),
         len => with_scratch2(len, 0.0, |hi, lo| {
-            with_scratch(len, 0.0, |abs| {
-                with_scratch(len, h, |halves| compensated_with_abs(hi, lo, abs, halves, b, t))
-            })
+            with_scratch(len, 0.0, |abs| compensated_with_abs(hi, lo, abs, b, t))
         }),
     };
     let res = hi + lo;
@@ -63,20 +60,13 @@ pub fn compensated_de_casteljau(b: &[f64], t: f64) -> (f64, f64) {
 /// left the fast triangle's range) and the float triangle of [`abs_bernstein_sum_in`] on
 /// `|b_i|` in `abs`, all as long as `b`: `(hi, lo, the |b_i| triangle's value)`.
 #[inline(always)]
-fn compensated_with_abs(
-    hi: &mut [f64],
-    lo: &mut [f64],
-    abs: &mut [f64],
-    halves: &mut [Halves],
-    b: &[f64],
-    t: f64,
-) -> (f64, f64, f64) {
+fn compensated_with_abs(hi: &mut [f64], lo: &mut [f64], abs: &mut [f64], b: &[f64], t: f64) -> (f64, f64, f64) {
     let fill = |hi: &mut [f64], lo: &mut [f64]| {
         hi.copy_from_slice(b);
         lo.fill(0.0);
     };
     fill(hi, lo);
-    let (hi_part, lo_part) = match compensated_triangle(hi, lo, halves, t) {
+    let (hi_part, lo_part) = match compensated_triangle(hi, lo, t) {
         Some(parts) => parts,
         None => {
             fill(hi, lo);
@@ -94,7 +84,6 @@ fn compensated_with_abs(
 /// each be rounded (half a subnormal) and the three products of the low part may underflow
 /// (half a subnormal each): 2.5 subnormals, counted as 3 to cover the second-order effect
 /// of the low triangle's own roundings on them.
-#[inline]
 fn compensated_underflow(n: usize, t: f64) -> f64 {
     underflow_term(n, 3.0, level_growth(t))
 }
@@ -102,7 +91,6 @@ fn compensated_underflow(n: usize, t: f64) -> f64 {
 /// The bound of [`compensated_de_casteljau`] for a result `res` of degree `n`, given
 /// `abs_sum = Σ|b_i||B_i|` (from [`abs_bernstein_sum_in`]), plus an input term
 /// `extra · abs_sum` (second-order input errors) and the absolute underflow term `under`.
-#[inline]
 fn compensated_bound(res: f64, n: usize, abs_sum: f64, extra: f64, under: f64) -> f64 {
     let u = UNIT_ROUNDOFF;
     let g = gamma(3 * n);
@@ -134,10 +122,7 @@ pub fn compensated_a_priori_bound(b: &[f64], t: f64, p: f64) -> f64 {
 fn compensated_parts(len: usize, fill: impl Fn(&mut [f64], &mut [f64]), t: f64) -> (f64, f64) {
     with_scratch2(len, 0.0, |hi, lo| {
         fill(hi, lo);
-        let parts = with_scratch(len, Factor::halves(0.0), |halves| {
-            compensated_triangle(hi, lo, halves, t)
-        });
-        if let Some(parts) = parts {
+        if let Some(parts) = compensated_triangle(hi, lo, t) {
             return parts;
         }
         fill(hi, lo);
@@ -145,33 +130,33 @@ fn compensated_parts(len: usize, fill: impl Fn(&mut [f64], &mut [f64]), t: f64) 
     })
 }
 
-/// The compensated triangle in place, each product's error by a prepared [`Factor`], with
-/// `halves` (as long as `hi`) for each level's values split once: each is used by two
-/// nodes, and without a value carried from one node to the next the node loop has no
-/// dependence between its iterations (the compiler may run two or four at once).
+/// The compensated triangle in place, each product's error by a prepared [`Factor`];
 /// `None` when a value left the range where those errors are exact (the buffers are then
 /// spent).
 #[inline(always)]
-fn compensated_triangle(hi: &mut [f64], lo: &mut [f64], halves: &mut [Halves], t: f64) -> Option<(f64, f64)> {
+fn compensated_triangle(hi: &mut [f64], lo: &mut [f64], t: f64) -> Option<(f64, f64)> {
     let (s, rho) = one_minus(t);
     let (by_s, by_t) = (Factor::new(s), Factor::new(t));
     let range = ExactRange::agreeing(&[by_s, by_t]);
     let mut exact = true;
     for len in (1..hi.len()).rev() {
-        for (h, x) in halves[..=len].iter_mut().zip(&hi[..=len]) {
-            *h = Factor::halves(*x);
-            exact &= range.contains(*x);
-        }
+        // each value is split once, for its product by t (node i − 1) and by s (node i)
+        let mut a = hi[0];
+        let mut a_halves = Factor::halves(a);
+        exact &= range.contains(a);
         for i in 0..len {
-            let (a, b) = (hi[i], hi[i + 1]);
+            let b = hi[i + 1];
+            let b_halves = Factor::halves(b);
+            exact &= range.contains(b);
             let p1 = s * a;
-            let e1 = by_s.error(a, halves[i], p1);
+            let e1 = by_s.error(a, a_halves, p1);
             let p2 = t * b;
-            let e2 = by_t.error(b, halves[i + 1], p2);
+            let e2 = by_t.error(b, b_halves, p2);
             let (sum, e3) = two_sum(p1, p2);
             let w = e1 + e2 + e3 + rho * a;
             lo[i] = w + s * lo[i] + t * lo[i + 1];
             hi[i] = sum;
+            (a, a_halves) = (b, b_halves);
         }
     }
     exact.then(|| (hi[0], lo[0]))
