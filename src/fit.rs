@@ -378,9 +378,14 @@ fn fit_cubic_fraction_free(data: &CubicFitData<BigRational>) -> Result<CubicFit<
         Some(fit) => fit,
         None => fit_cubic_on::<BigInt>(data).expect("big integers do not overflow"),
     };
-    let (k, l, points, residual, delta2, gram_determinant) =
-        fit.ok_or_else(|| Error::Singular(parallel_message(data)))?;
-    let [a1, a2] = points;
+    let FitNumbers {
+        k,
+        l,
+        controls: [a1, a2],
+        residual,
+        delta2,
+        gram_determinant,
+    } = fit.ok_or_else(|| Error::Singular(parallel_message(data)))?;
     let curve = BezierCurve::new(vec![data.x0.clone(), a1, a2, data.x1.clone()])?;
     Ok(CubicFit {
         warnings: sign_warnings(&k, &l),
@@ -393,21 +398,22 @@ fn fit_cubic_fraction_free(data: &CubicFitData<BigRational>) -> Result<CubicFit<
     })
 }
 
-/// `k, l, [a1, a2], residual, δ², det G` of [`fit_cubic_fraction_free`] on integers `I`:
-/// `None` on overflow, `Some(None)` when the tangents are parallel.
-#[allow(clippy::type_complexity)]
-fn fit_cubic_on<I: Int>(
-    data: &CubicFitData<BigRational>,
-) -> Option<
-    Option<(
-        BigRational,
-        BigRational,
-        [Point<BigRational>; 2],
-        Vector<BigRational>,
-        BigRational,
-        BigRational,
-    )>,
-> {
+/// The numbers of a fit that [`fit_cubic_fraction_free`] computes on integers, each reduced
+/// once: the tangent lengths, the inner control points `a1, a2`, the midpoint residual, δ²
+/// and the Gram determinant.
+#[derive(Debug, PartialEq)]
+struct FitNumbers {
+    k: BigRational,
+    l: BigRational,
+    controls: [Point<BigRational>; 2],
+    residual: Vector<BigRational>,
+    delta2: BigRational,
+    gram_determinant: BigRational,
+}
+
+/// [`FitNumbers`] on integers `I`: `None` on overflow, `Some(None)` when the tangents are
+/// parallel.
+fn fit_cubic_on<I: Int>(data: &CubicFitData<BigRational>) -> Option<Option<FitNumbers>> {
     let a = common_denominator::<I>(data.d0.coords().iter())?;
     let b = common_denominator::<I>(data.d1.coords().iter())?;
     let dim = data.x0.dim();
@@ -442,7 +448,7 @@ fn fit_cubic_on<I: Int>(
         Some(Point::from_valid(coords))
     };
     let minus_l = I::zero().sub(&big_l)?;
-    let points = [control(u, &a.nums, &big_k)?, control(w, &b.nums, &minus_l)?];
+    let controls = [control(u, &a.nums, &big_k)?, control(w, &b.nums, &minus_l)?];
     let r = (0..dim)
         .map(|i| {
             four.mul(&delta)?
@@ -456,7 +462,14 @@ fn fit_cubic_on<I: Int>(
     let residual = Point::from_valid(r.into_iter().map(|ri| I::ratio(ri, r_den.clone())));
     let dens = a.den.mul(&b.den)?;
     let gram_determinant = I::ratio(delta, dens.mul(&dens)?);
-    Some(Some((k, l, points, residual, delta2, gram_determinant)))
+    Some(Some(FitNumbers {
+        k,
+        l,
+        controls,
+        residual,
+        delta2,
+        gram_determinant,
+    }))
 }
 
 /// [`fit_cubic`] for anything that supplies the data: a [`BezierCurve`], the data itself,
