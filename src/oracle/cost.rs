@@ -35,8 +35,11 @@ const DERIVATIVE_AT: ByKind = ByKind([3.8e-7, 2.1e-7, 1.2e-8, 2.8e-6]);
 const DERIVATIVE: ByKind = ByKind([2.2e-4, 2.6e-4, 2.0e-5, 0.011]);
 const TO_BEZIER: ByKind = ByKind([4.0, 2.8, 0.012, 0.062]);
 const RATIONAL_EVAL: ByKind = ByKind([0.014, 0.035, 0.019, 0.15]);
-const SURFACE_EVAL: ByKind = ByKind([0.63, 0.41, 0.33, 0.024]);
-const FIT_CUBIC: ByKind = ByKind([0.16, 0.015, 0.017, 0.02]);
+// The surface's model of 30-digit fractions grows as about the sixth power of the side, the
+// kernel's time as the third: the fraction entry sits at 0.1 s (side 50), not 0.25 s, so that
+// nets of shorter fractions, whose model is smaller, are not admitted much further.
+const SURFACE_EVAL: ByKind = ByKind([0.63, 0.41, 0.33, 1.0e-4]);
+const FIT_CUBIC: ByKind = ByKind([0.16, 0.015, 0.017, 0.0006]);
 const CONIC: ByKind = ByKind([0.17, 0.17, 0.17, 0.17]);
 
 impl Op {
