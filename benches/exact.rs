@@ -12,6 +12,9 @@
 //! measures CPU time (of this thread), not wall time, so that the ratios to the Python
 //! peers of `scripts/exact_big.py`, which draws the same numbers, hold on a shared machine.
 //!
+//! The group `exact_gcd` compares the big-integer gcd of the final reductions with
+//! num-bigint's.
+//!
 //! `cargo bench --bench exact` (add `-- --quick` for a fast look).
 
 use casteljau::exact::{BernsteinTable, SmallRational};
@@ -273,5 +276,43 @@ fn exact_big(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, exact_eval, prove_hot, exact_big);
+/// The gcd of two big integers that share a factor of half their length (as a numerator and
+/// a denominator do before the final reduction): casteljau's (dashu-int's) against
+/// num-bigint's, from 3 to 4,100 words.
+fn exact_gcd(c: &mut Criterion) {
+    use num_bigint::BigUint;
+    use num_integer::Integer;
+    let mut group = c.benchmark_group("exact_gcd");
+    group
+        .sample_size(10)
+        .measurement_time(Duration::from_secs(2))
+        .warm_up_time(Duration::from_millis(300));
+    let mut state = 0x9E37_79B9_7F4A_7C15u64;
+    let mut digits = |n: usize| -> BigUint {
+        let words: Vec<u32> = (0..n)
+            .map(|_| {
+                state ^= state << 13;
+                state ^= state >> 7;
+                state ^= state << 17;
+                state as u32
+            })
+            .collect();
+        BigUint::new(words)
+    };
+    for words in [4usize, 64, 1024, 8192] {
+        let common = digits(words / 2 + 2);
+        let (x, y) = (&common * digits(words / 2), &common * digits(words / 2));
+        assert_eq!(casteljau::exact::gcd::gcd(&x, &y), x.gcd(&y));
+        let bits = x.bits();
+        group.bench_function(BenchmarkId::new("casteljau", bits), |b| {
+            b.iter_custom(|iters| cpu_time_of(iters, || casteljau::exact::gcd::gcd(black_box(&x), black_box(&y))))
+        });
+        group.bench_function(BenchmarkId::new("num_bigint", bits), |b| {
+            b.iter_custom(|iters| cpu_time_of(iters, || black_box(&x).gcd(black_box(&y))))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, exact_eval, prove_hot, exact_big, exact_gcd);
 criterion_main!(benches);

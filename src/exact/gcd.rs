@@ -4,9 +4,8 @@
 //! num-bigint's `gcd` is Stein's binary algorithm without a first division: the gcd of a
 //! 40,000-bit and a 100-bit number takes 40,000 big subtractions, which made the common
 //! denominator of a few hundred 30-digit denominators, and the final reduction, the whole
-//! cost of an exact evaluation. Here unbalanced operands are divided first, balanced ones
-//! run Lehmer's algorithm (a 64-bit Euclid on the leading bits, applied to the big numbers
-//! as one 2×2 matrix of word-sized cofactors, in place on their digits), and a denominator known as a product of
+//! cost of an exact evaluation. Here the gcd of big numbers is dashu-int's (Lehmer's
+//! algorithm, unbalanced operands divided first), and a denominator known as a product of
 //! parts (`D qⁿ`) is reduced part by part, which is never more work and usually far less.
 
 use crate::exact::small_rational::gcd_u128;
@@ -15,142 +14,23 @@ use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
-/// The leading 64 bits of little-endian digits `x` shifted right by `shift` (`x >> shift`
-/// truncated to a word).
-fn word_at_digits(x: &[u64], shift: u64) -> u64 {
-    let (digit, bit) = ((shift / 64) as usize, shift % 64);
-    let low = x.get(digit).copied().unwrap_or(0);
-    let high = x.get(digit + 1).copied().unwrap_or(0);
-    if bit == 0 {
-        low
-    } else {
-        (low >> bit) | (high << (64 - bit))
-    }
-}
-
-/// Cofactors `(A, B, C, D)` of Lehmer's inner Euclid on the leading bits `x ≥ y` of two
-/// big numbers (below 2^62): while the quotients agree for both ends of the words'
-/// uncertainty, they are the quotients of the big numbers too (Knuth, TAOCP vol. 2,
-/// Algorithm 4.5.2L). With 62-bit words every cofactor stays below 2^62 in magnitude, so
-/// `x + A` and `y + C` fit an `i64`: the quotients are machine divisions, not the 128-bit
-/// library routine that made this loop the cost of every reduction.
-fn lehmer_cofactors(x: u64, y: u64) -> (i64, i64, i64, i64) {
-    debug_assert!(x < 1 << 62 && y <= x);
-    let (mut x, mut y) = (x as i64, y as i64);
-    let (mut a, mut b, mut c, mut d) = (1i64, 0i64, 0i64, 1i64);
-    while y + c != 0 && y + d != 0 {
-        let q = quotient(x + a, y + c);
-        if q != quotient(x + b, y + d) {
-            break;
-        }
-        (a, c) = (c, a - q * c);
-        (b, d) = (d, b - q * d);
-        (x, y) = (y, x - q * y);
-    }
-    (a, b, c, d)
-}
-
-/// `n / d` (truncated), with the quotients 1 to 3 (two in three of Euclid's quotients, by
-/// Gauss–Kuzmin) found by comparisons instead of a division.
-#[inline]
-fn quotient(n: i64, d: i64) -> i64 {
-    if d > 0 && d <= i64::MAX / 4 && n >= d && n < 4 * d {
-        1 + i64::from(n >= 2 * d) + i64::from(n >= 3 * d)
-    } else {
-        n / d
-    }
-}
-
-/// `(x, y) ← (u x + v y, w x + z y)` in place on little-endian digits, both results known
-/// to be nonnegative: one pass with the carries in `i128` (each product is below 2^126 for
-/// cofactors below 2^62), instead of four products and two differences, each a fresh
-/// big integer.
-fn combine(x: &mut Vec<u64>, y: &mut Vec<u64>, (u, v, w, z): (i64, i64, i64, i64)) {
-    y.resize(x.len(), 0);
-    let (u, v, w, z) = (i128::from(u), i128::from(v), i128::from(w), i128::from(z));
-    let (mut carry_x, mut carry_y) = (0i128, 0i128);
-    for (xi, yi) in x.iter_mut().zip(y.iter_mut()) {
-        let (a, b) = (i128::from(*xi), i128::from(*yi));
-        let next_x = u * a + v * b + carry_x;
-        let next_y = w * a + z * b + carry_y;
-        *xi = next_x as u64;
-        *yi = next_y as u64;
-        carry_x = next_x >> 64;
-        carry_y = next_y >> 64;
-    }
-    debug_assert!(carry_x == 0 && carry_y == 0, "Lehmer's combinations are nonnegative");
-    for digits in [x, y] {
-        while digits.last() == Some(&0) {
-            digits.pop();
-        }
-    }
-}
-
-/// The bit length of little-endian digits without leading zeros.
-fn digit_bits(x: &[u64]) -> u64 {
-    x.last()
-        .map_or(0, |top| 64 * (x.len() as u64 - 1) + u64::from(64 - top.leading_zeros()))
-}
-
-/// The natural number of little-endian digits.
-fn from_digits(x: &[u64]) -> BigUint {
-    BigUint::new(x.iter().flat_map(|&d| [d as u32, (d >> 32) as u32]).collect())
-}
-
-/// Lehmer steps on `a ≥ b` while they are balanced, longer than two words, and the
-/// leading bits give a step (see `lehmer_cofactors`); the numbers stay digit vectors
-/// throughout. Whether any step applied.
-fn lehmer_steps(a: &mut BigUint, b: &mut BigUint) -> bool {
-    let (mut x, mut y) = (a.to_u64_digits(), b.to_u64_digits());
-    let mut stepped = false;
-    loop {
-        let bits = digit_bits(&x);
-        if y.len() <= 2 || bits > digit_bits(&y) + 32 {
-            break;
-        }
-        // 62 leading bits: see `lehmer_cofactors`.
-        let shift = bits.saturating_sub(62);
-        let (lead_x, lead_y) = (word_at_digits(&x, shift), word_at_digits(&y, shift));
-        let cofactors = lehmer_cofactors(lead_x, lead_y);
-        if cofactors.1 == 0 {
-            break;
-        }
-        combine(&mut x, &mut y, cofactors);
-        stepped = true;
-    }
-    if stepped {
-        *a = from_digits(&x);
-        *b = from_digits(&y);
-    }
-    stepped
-}
-
-/// `gcd(a, b)` of natural numbers.
+/// `gcd(a, b)` of natural numbers: within two words by a machine gcd, otherwise by
+/// dashu-int's (its digits are copied in and out: still faster, `benches/exact.rs`).
 pub fn gcd(a: &BigUint, b: &BigUint) -> BigUint {
-    let (mut a, mut b) = if a >= b {
-        (a.clone(), b.clone())
-    } else {
-        (b.clone(), a.clone())
-    };
-    loop {
-        if b.is_zero() {
-            return a;
-        }
-        if let (Some(x), Some(y)) = (a.to_u128(), b.to_u128()) {
-            return BigUint::from(gcd_u128(x, y));
-        }
-        // Operands a word or more apart in length: one division brings them together.
-        if a.bits() > b.bits() + 32 {
-            a %= &b;
-            std::mem::swap(&mut a, &mut b);
-            continue;
-        }
-        if !lehmer_steps(&mut a, &mut b) {
-            // No Lehmer step applied: a quotient too large for the leading bits.
-            a %= &b;
-            std::mem::swap(&mut a, &mut b);
-        }
+    if let (Some(x), Some(y)) = (a.to_u128(), b.to_u128()) {
+        return BigUint::from(gcd_u128(x, y));
     }
+    let g = dashu_int::ops::Gcd::gcd(to_dashu(a), to_dashu(b));
+    BigUint::from_slice(
+        &g.as_words()
+            .iter()
+            .flat_map(|&w| [w as u32, (w >> 32) as u32])
+            .collect::<Vec<u32>>(),
+    )
+}
+
+fn to_dashu(x: &BigUint) -> dashu_int::UBig {
+    dashu_int::UBig::from_words(&x.to_u64_digits())
 }
 
 /// The gcds of `LANES` pairs of nonzero double words, computed together: the binary gcd is
@@ -385,9 +265,37 @@ mod tests {
         )
     }
 
+    /// Long operands, where a big-integer library switches algorithms: against num-bigint's
+    /// gcd, balanced and unbalanced, with a long common factor.
+    #[test]
+    fn gcd_of_long_numbers_is_num_bigints() {
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        let mut words = |n: usize| -> Vec<u64> {
+            (0..n)
+                .map(|_| {
+                    state ^= state << 13;
+                    state ^= state >> 7;
+                    state ^= state << 17;
+                    state
+                })
+                .collect()
+        };
+        for (la, lb, lc) in [
+            (40, 40, 30),
+            (300, 290, 250),
+            (2000, 2000, 1500),
+            (3000, 2, 1),
+            (1, 4000, 60),
+        ] {
+            let c = big(&words(lc));
+            let (x, y) = (big(&words(la)) * &c, big(&words(lb)) * &c);
+            assert_eq!(gcd(&x, &y), Integer::gcd(&x, &y), "{la} {lb} {lc}");
+        }
+    }
+
     proptest! {
         /// Against num-bigint's own gcd, on numbers with common factors, near-equal lengths
-        /// (Lehmer's steps) and very different ones (the first division).
+        /// and very different ones, zero among them.
         #[test]
         fn gcd_is_num_bigints(
             a in proptest::collection::vec(any::<u64>(), 0..12),
