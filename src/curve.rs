@@ -31,11 +31,15 @@ use num_rational::BigRational;
 use smallvec::SmallVec;
 use std::fmt;
 
-/// Control points kept inline by a curve: a cubic needs no heap allocation.
-const INLINE_POINTS: usize = 4;
+/// Control points kept inline by a curve: neither a cubic nor its elevation, a quartic,
+/// needs a heap allocation.
+const INLINE_POINTS: usize = 5;
+
+/// The control points of a cubic, the degree the fast paths are written for.
+const CUBIC_POINTS: usize = 4;
 
 /// A Bézier curve with control points `b_0, …, b_n` of type `P` (all of one dimension, at
-/// least one point). Up to four control points are stored inline.
+/// least one point). Up to five control points are stored inline.
 ///
 /// `P` is any [`VectorSpace`]: [`crate::Point2`] and other [`PointN`] for a dimension fixed
 /// at compile time (the fast `f64` path), [`Point`] for one known at run time
@@ -164,6 +168,19 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
         self.points[..].try_into().ok()
     }
 
+    /// The curve of `N` valid points, `N ≤ INLINE_POINTS`, written into the inline buffer
+    /// at once (its unused tail repeats the last point): no capacity test per point, as a
+    /// push or a collect would make.
+    #[inline(always)]
+    fn from_inline<const N: usize>(points: [P; N]) -> Self {
+        let pad = points[N - 1].clone();
+        let mut points = points.into_iter();
+        let buf = std::array::from_fn(|_| points.next().unwrap_or_else(|| pad.clone()));
+        Bezier {
+            points: SmallVec::from_buf_and_len(buf, N),
+        }
+    }
+
     /// The degree `n`.
     pub fn degree(&self) -> usize {
         self.points.len() - 1
@@ -205,7 +222,7 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
         }
         // A cubic, the common case, is tested for first and worked on as an array of
         // constant length: no loop, and no other degree's code is inlined here.
-        if let Some(points) = self.inline_array::<INLINE_POINTS>() {
+        if let Some(points) = self.inline_array::<CUBIC_POINTS>() {
             return eval_cubic(points, t);
         }
         self.eval_any(t)
@@ -229,7 +246,7 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     /// that falls through at the call site.
     #[cold]
     pub(crate) fn eval_any(&self, t: &T) -> P {
-        if let Ok(points) = <&[P; INLINE_POINTS]>::try_from(&self.points[..]) {
+        if let Ok(points) = <&[P; CUBIC_POINTS]>::try_from(&self.points[..]) {
             return eval_cubic(points, t);
         }
         with_column(&self.points, |column| {
@@ -253,34 +270,53 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     ///
     /// Exact rational points are elevated over integers with one common denominator
     /// ([`BezierCurve::elevate_fraction_free`]).
-    #[inline]
+    // Always inlined, as `elevate_reference`: on floats a quadratic's or a cubic's points
+    // then go straight to where the caller keeps the result, as for `BezierN`. Exact points
+    // take an out-of-line call.
+    #[inline(always)]
     pub fn elevate(&self) -> Result<Self> {
         if T::EXACT {
-            if let Some(c) = exact_curve(self) {
-                return Ok(curve_back(c.elevate_fraction_free()?));
+            if let Some(c) = self.elevate_exact() {
+                return c;
             }
         }
         self.elevate_reference()
     }
 
-    /// [`Self::elevate`] by the steps of (7) on the scalar type itself, whatever it is: the
-    /// reference the exact kernel is tested against.
-    #[inline]
-    pub fn elevate_reference(&self) -> Result<Self> {
-        if let Some(points) = self.inline_array::<3>() {
-            // A quadratic's cubic fills the inline buffer exactly: written at once, with the
-            // weights 1/3 and 2/3 constants (for floats, folded at compile time).
-            return Ok(Bezier {
-                points: SmallVec::from_buf(elevate_points(points)),
-            });
-        }
-        self.elevate_any()
+    /// [`Self::elevate`] by the fraction-free kernel, when the points are exact rationals.
+    #[cold]
+    fn elevate_exact(&self) -> Option<Result<Self>> {
+        let c = exact_curve(self)?;
+        Some(c.elevate_fraction_free().map(curve_back))
     }
 
-    /// [`Self::elevate`] for any degree. Inlined: called out of line, it returns its `Result`
-    /// in memory and the quadratic's points, computed in registers, would be copied through
-    /// that memory too.
+    /// [`Self::elevate`] by the steps of (7) on the scalar type itself, whatever it is: the
+    /// reference the exact kernel is tested against.
+    ///
+    /// A quadratic and a cubic are elevated by the fixed-degree kernel (the weights
+    /// constants, for floats folded at compile time) straight into the inline buffer; the
+    /// result cannot exceed the degree limit, so no test is made.
+    // Always inlined: called, its `Result` of up to five points comes back through memory
+    // and is copied out again.
     #[inline(always)]
+    pub fn elevate_reference(&self) -> Result<Self> {
+        if let Some(points) = self.inline_array::<3>() {
+            return Ok(Self::from_inline::<4>(elevate_points(points)));
+        }
+        if let Some(points) = self.inline_array::<CUBIC_POINTS>() {
+            return Ok(Self::from_inline::<5>(elevate_points(points)));
+        }
+        // Unwrapped and wrapped again, not returned as it is: returned, the call writes the
+        // result where the fast paths' points go too, so the caller keeps them in memory and
+        // copies them out; moved, the fast paths' points can stay in registers.
+        let curve = self.elevate_any()?;
+        Ok(curve)
+    }
+
+    /// [`Self::elevate`] for any degree, by the same steps as the fixed-degree kernel. Out
+    /// of line and cold: only the quadratic's and the cubic's code is inlined at the callers.
+    #[cold]
+    #[inline(never)]
     fn elevate_any(&self) -> Result<Self> {
         let points = &self.points[..];
         let n = points.len() - 1;
@@ -371,18 +407,11 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     /// is: the reference the exact kernel is tested against.
     #[inline]
     pub fn split_at_reference(&self, t0: &T) -> (Self, Self) {
-        // A cubic fills the inline buffer: split as an array of constant length, so that
-        // the levels unroll and both halves are written at once.
-        if let Some(points) = self.inline_array::<INLINE_POINTS>() {
+        // A cubic is split as an array of constant length, so that the levels unroll and
+        // both halves are written at once.
+        if let Some(points) = self.inline_array::<CUBIC_POINTS>() {
             let (left, right) = split_points(points, t0);
-            return (
-                Bezier {
-                    points: SmallVec::from_buf(left),
-                },
-                Bezier {
-                    points: SmallVec::from_buf(right),
-                },
-            );
+            return (Self::from_inline(left), Self::from_inline(right));
         }
         self.split_any(t0)
     }
@@ -705,7 +734,7 @@ impl BezierCurve<f64> {
         };
         // Cubics and below get a small buffer: filling the large one would cost as much as
         // the work. A cubic takes the form `eval` takes.
-        Ok(if len == INLINE_POINTS {
+        Ok(if len == CUBIC_POINTS {
             eval_cubic(&std::array::from_fn(point), &t).0
         } else if len <= 4 {
             eval(&mut std::array::from_fn::<_, 4, _>(point)[..len])

@@ -29,8 +29,11 @@ fn cubic_eval_and_split_allocate_nothing() {
     let (n, cubic) = allocations(|| quad.elevate().unwrap());
     assert_eq!(n, 0, "elevate allocated");
     assert_eq!(cubic.degree(), 3);
-    // four points inline and the length word
-    assert_eq!(std::mem::size_of::<Bezier<Point2<f64>>>(), 4 * 16 + 8);
+    let (n, quartic) = allocations(|| cubic.elevate().unwrap());
+    assert_eq!(n, 0, "elevate of a cubic allocated");
+    assert_eq!(quartic.degree(), 4);
+    // five points inline (a cubic's elevation) and the length word
+    assert_eq!(std::mem::size_of::<Bezier<Point2<f64>>>(), 5 * 16 + 8);
 }
 
 #[test]

@@ -106,6 +106,46 @@ macro_rules! fixed_agrees {
 
 fixed_agrees!(constant: 1, line: 2, quad: 3, cubic: 4, quartic: 5, degree_7: 8);
 
+/// One step of (7) written out on the coordinates, `b'_i = b_i + (i · 1/(n+1)) (b_{i-1} − b_i)`
+/// with the first and last points kept: the operations of the generic loop, in its order.
+fn elevated_by_hand(points: &[Vec<f64>]) -> Vec<Vec<f64>> {
+    let n = points.len() - 1;
+    let step = 1.0 / (n + 1) as f64;
+    (0..n + 2)
+        .map(|i| match i {
+            0 => points[0].clone(),
+            i if i > n => points[n].clone(),
+            i => {
+                let w = i as f64 * step;
+                points[i]
+                    .iter()
+                    .zip(&points[i - 1])
+                    .map(|(a, b)| a + w * (b - a))
+                    .collect()
+            }
+        })
+        .collect()
+}
+
+proptest! {
+    #![proptest_config(Config::with_cases(256))]
+
+    /// The any-degree elevation takes the fixed-degree kernel for a quadratic and a cubic and
+    /// a loop for the other degrees: all of them are (7) by hand, bit for bit, for run-time
+    /// and fixed-dimension points.
+    #[test]
+    fn f64_elevation_is_formula_7_bit_for_bit(c in f64_curve(0..=7, 1..=3, 100.0)) {
+        let coords = |points: Vec<Vec<f64>>| points.into_iter().map(|p| p.into_iter().map(f64::to_bits).collect::<Vec<_>>()).collect::<Vec<_>>();
+        let expected = coords(elevated_by_hand(&c.points().iter().map(|p| p.coords().to_vec()).collect::<Vec<_>>()));
+        let runtime = c.elevate().unwrap();
+        prop_assert_eq!(&coords(runtime.points().iter().map(|p| p.coords().to_vec()).collect()), &expected);
+        if c.dim() == 2 {
+            let planar = planar(&c).elevate().unwrap();
+            prop_assert_eq!(&coords(planar.points().iter().map(|p| p.0.to_vec()).collect()), &expected);
+        }
+    }
+}
+
 #[test]
 fn a_curve_of_another_degree_is_refused() {
     let c: BezierCurve<f64> = BezierCurve::from_ints(&[&[0, 0], &[1, 2], &[3, 2], &[4, 0]]).unwrap();
