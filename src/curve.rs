@@ -31,6 +31,9 @@ use num_rational::BigRational;
 use smallvec::SmallVec;
 use std::fmt;
 
+mod scheme;
+pub use scheme::DeCasteljauScheme;
+
 /// Control points kept inline by a curve: neither a cubic nor its elevation, a quartic,
 /// needs a heap allocation.
 const INLINE_POINTS: usize = 5;
@@ -75,15 +78,6 @@ pub struct Bezier<P> {
 /// assert_eq!(p.coords()[1], &u - &(&(&u * &u) * &u));
 /// ```
 pub type BezierCurve<T> = Bezier<Point<T>>;
-
-/// The triangular de Casteljau scheme (9) at one parameter: `column(r)[i] = b_i^r(t)`.
-#[derive(Clone, Debug, PartialEq)]
-pub struct DeCasteljauScheme<T> {
-    /// The parameter.
-    pub t: T,
-    /// `columns[r][i] = b_i^r(t)`, `r = 0..=n`, `i = 0..=n-r`.
-    pub columns: Vec<Vec<Point<T>>>,
-}
 
 /// How far the `r`-times elevated control polygon is from the curve (Theorem 1.2):
 /// the distances between `b_i^{(r)}` and `b(i/(n+r))`, maximised over `i`.
@@ -746,86 +740,6 @@ impl BezierCurve<f64> {
     }
 }
 
-impl<T: Scalar> DeCasteljauScheme<T> {
-    /// The degree of the curve.
-    pub fn degree(&self) -> usize {
-        self.columns.len() - 1
-    }
-
-    /// `b_i^r(t)`.
-    pub fn get(&self, r: usize, i: usize) -> Option<&Point<T>> {
-        self.columns.get(r)?.get(i)
-    }
-
-    /// The point of the curve, `b_0^n(t)`.
-    pub fn point(&self) -> &Point<T> {
-        &self.columns[self.degree()][0]
-    }
-}
-
-impl<T: Scalar + fmt::Display> DeCasteljauScheme<T> {
-    /// The triangle (9) as a LaTeX `array` (math mode), row `k` holding `b_k, …, b_0^k(t)`;
-    /// fractions as `\frac`, a one-coordinate point as its number.
-    pub fn to_latex(&self) -> String {
-        let n = self.columns.len() - 1;
-        let num = |x: &T| {
-            let s = x.to_string();
-            match s.split_once('/') {
-                Some((a, b)) => match a.strip_prefix('-') {
-                    Some(a) => format!("-\\frac{{{a}}}{{{b}}}"),
-                    None => format!("\\frac{{{a}}}{{{b}}}"),
-                },
-                None => s,
-            }
-        };
-        let mut out = format!(
-            "\\[ t = {} \\]\n\\[\\begin{{array}}{{{}}}\n",
-            num(&self.t),
-            "l".repeat(n + 1)
-        );
-        for k in 0..=n {
-            let mut cells = Vec::new();
-            for r in 0..=k {
-                let i = k - r;
-                let label = if r == 0 {
-                    format!("b_{{{i}}}")
-                } else {
-                    format!("b_{{{i}}}^{{{r}}}")
-                };
-                let p = &self.columns[r][i];
-                let coords: Vec<String> = p.coords().iter().map(num).collect();
-                let value = if coords.len() == 1 {
-                    coords[0].clone()
-                } else {
-                    format!("\\left({}\\right)", coords.join(", "))
-                };
-                cells.push(format!("{label} = {value}"));
-            }
-            out.push_str(&format!("{} \\\\\n", cells.join(" & ")));
-        }
-        out.push_str("\\end{array}\\]\n");
-        out
-    }
-}
-
-/// Prints the scheme as the text's triangle (9): row `k` holds `b_k, b_{k-1}^1(t), …, b_0^k(t)`.
-impl<T: fmt::Display> fmt::Display for DeCasteljauScheme<T> {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let n = self.columns.len() - 1;
-        writeln!(f, "de Casteljau scheme (9) at t = {}", self.t)?;
-        for k in 0..=n {
-            let mut cells = Vec::new();
-            for r in 0..=k {
-                let i = k - r;
-                let label = if r == 0 { format!("b_{i}") } else { format!("b_{i}^{r}") };
-                cells.push(format!("{label} = {}", self.columns[r][i]));
-            }
-            writeln!(f, "  {}", cells.join("   "))?;
-        }
-        Ok(())
-    }
-}
-
 impl<T: fmt::Display> fmt::Display for BezierCurve<T> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         PointList(&self.points).fmt(f)
@@ -833,115 +747,4 @@ impl<T: fmt::Display> fmt::Display for BezierCurve<T> {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    type Q = BigRational;
-
-    fn q(p: i64, d: i64) -> Q {
-        Q::from_ratio(p, d).unwrap()
-    }
-
-    fn text_example() -> BezierCurve<Q> {
-        let a = |c: &[i64]| Point::from_ints(c).unwrap();
-        // (-u² + 1, -u³ + u): coefficients of u^0..u^3
-        let coeffs = vec![a(&[1, 0]), a(&[0, 1]), a(&[-1, 0]), a(&[0, -1])];
-        BezierCurve::from_power_on(&coeffs, &q(-1, 1), &q(1, 1)).unwrap()
-    }
-
-    #[test]
-    fn text_000_power_to_bezier_example() {
-        let c = text_example();
-        let expect = [
-            Point::new(vec![q(0, 1), q(0, 1)]).unwrap(),
-            Point::new(vec![q(4, 3), q(-4, 3)]).unwrap(),
-            Point::new(vec![q(4, 3), q(4, 3)]).unwrap(),
-            Point::new(vec![q(0, 1), q(0, 1)]).unwrap(),
-        ];
-        assert_eq!(c.points(), &expect[..]);
-    }
-
-    #[test]
-    fn scheme_boundary_is_split() {
-        let c = text_example();
-        let t = q(1, 3);
-        let s = c.scheme(&t);
-        let (l, r) = c.split_at(&t);
-        assert_eq!(s.point(), &c.eval(&t));
-        for k in 0..=3 {
-            assert_eq!(&l.points()[k], s.get(k, 0).unwrap());
-            assert_eq!(&r.points()[k], s.get(3 - k, k).unwrap());
-        }
-        let shown = s.to_string();
-        assert!(shown.contains("b_0^3 = "), "{shown}");
-    }
-
-    #[test]
-    fn elevate_by_many_steps_of_a_line() {
-        // The elevated polygon of a segment is the segment divided evenly; r = 2000 also
-        // exercises the binomial rows at a size where C(n+r, i) one at a time would be slow.
-        let c: BezierCurve<Q> = BezierCurve::from_ints(&[&[0, 0], &[2001, -4002]]).unwrap();
-        let e = c.elevate_by(2000).unwrap();
-        assert_eq!(e.degree(), 2001);
-        for (i, p) in e.points().iter().enumerate() {
-            assert_eq!(p, &Point::from_ints(&[i as i64, -2 * i as i64]).unwrap());
-        }
-    }
-
-    #[test]
-    fn eval_array_is_bitwise_eval() {
-        // below and above the stack buffer, in 1 and 3 dimensions, inside and outside [0, 1]
-        for n in [0usize, 1, 3, 15, 16, 30] {
-            let coords: Vec<Vec<f64>> = (0..=n)
-                .map(|i| vec![(i as f64 * 0.37).sin() * 100.0, i as f64 / 7.0, -(i as f64)])
-                .collect();
-            let c = BezierCurve::from_coords(coords).unwrap();
-            for t in [0.0, 0.1, 1.0 / 3.0, 1.0, -0.7, 2.5] {
-                let fast: [f64; 3] = c.eval_array(t).unwrap();
-                assert_eq!(&fast[..], c.eval(&t).coords(), "n = {n}, t = {t}");
-            }
-            let line = BezierCurve::from_coords((0..=n).map(|i| vec![i as f64]).collect()).unwrap();
-            assert_eq!(line.eval_array::<1>(0.5).unwrap()[0], line.eval(&0.5).coords()[0]);
-            assert!(matches!(c.eval_array::<2>(0.5), Err(Error::DimensionMismatch { .. })));
-        }
-    }
-
-    #[test]
-    fn degree_zero_and_one() {
-        let c0: BezierCurve<Q> = BezierCurve::from_ints(&[&[5, 7]]).unwrap();
-        assert_eq!(c0.eval(&q(3, 4)), Point::from_ints(&[5, 7]).unwrap());
-        assert!(c0.hodograph().is_err());
-        assert_eq!(
-            c0.derivative_at(1, &q(1, 2)).unwrap(),
-            Point::from_ints(&[0, 0]).unwrap()
-        );
-        assert_eq!(c0.elevate().unwrap().points().len(), 2);
-        let c1: BezierCurve<Q> = BezierCurve::from_ints(&[&[0], &[4]]).unwrap();
-        assert_eq!(c1.eval(&q(1, 4)).coords(), &[q(1, 1)]);
-        assert_eq!(c1.hodograph().unwrap().points(), &[Point::from_ints(&[4]).unwrap()]);
-    }
-
-    #[test]
-    fn bad_input_is_an_error() {
-        assert!(matches!(BezierCurve::<Q>::new(vec![]), Err(Error::Empty(_))));
-        assert!(matches!(
-            BezierCurve::<Q>::from_ints(&[&[0, 0], &[1]]),
-            Err(Error::DimensionMismatch { .. })
-        ));
-        let c = text_example();
-        assert!(matches!(
-            c.derivative(4),
-            Err(Error::DerivativeOrder { order: 4, degree: 3 })
-        ));
-        assert!(matches!(c.elevate_by(usize::MAX), Err(Error::TooLarge { .. })));
-        assert!(c.elevate_steps(1 << 40).is_err());
-    }
-
-    #[test]
-    fn elevation_distance_decreases() {
-        let c = text_example();
-        let d = c.elevation_distances(8).unwrap();
-        assert_eq!(d[0].r, 0);
-        assert!(d.windows(2).all(|w| w[1].max_squared <= w[0].max_squared));
-        assert_eq!(d[3], c.elevation_distance(3).unwrap());
-    }
-}
+mod tests;
