@@ -361,11 +361,12 @@ pub(crate) fn over_lcm(values: &[&BigRational]) -> (Vec<BigInt>, Option<ProductT
     (numerators, tree)
 }
 
-/// Up to this many factors, [`reduce_over`] takes one Lehmer gcd of the numerator and their
-/// product instead of the remainder tree: at degree 20 (about 2,100 bits of product) the
-/// gcd runs about 10% fewer instructions than the tree's divisions and leaf gcds (callgrind
-/// on `derivative_at` and `eval` of the `exact_big` case); the tree's divisions are
-/// quasi-linear, the gcd quadratic, so the tree wins on long products.
+/// Up to this many factors, [`reduce_over`] takes one gcd (`gcd::gcd_int`) of the
+/// numerator and their product instead of the remainder tree: at degree 20 (about 2,100
+/// bits of product) that ran about 10% fewer instructions than the tree's divisions and leaf
+/// gcds (callgrind on `derivative_at` and `eval` of the `exact_big` case, with the
+/// single-word Lehmer gcd); the tree's divisions are quasi-linear, so it wins on long
+/// products.
 const SMALL_TREE_LEAVES: usize = 32;
 
 /// `num / (Π tree's factors · Π bᵉ)` in lowest terms, each `b > 0`.
