@@ -242,16 +242,21 @@ proptest! {
 
     /// The rational curve's derivative vector from the two points of the last-but-one
     /// column against de Casteljau's steps, weights of both signs (and so vanishing
-    /// denominators) included.
+    /// denominators) included, short or 30-digit fractions each over its own denominator.
     #[test]
     fn rational_derivative_at(
         c in big_curve(&[1, 2, 3, 7, 20]),
-        weights in proptest::collection::vec((-3i64..=3, 1u64..), 21),
+        weights in proptest::collection::vec((-3i64..=3, 1u64.., thirty_digits()), 21),
+        long_weights in any::<bool>(),
         t in parameter(),
     ) {
-        let w: Vec<Q> = c.points().iter().zip(&weights).map(|(_, &(sign, w))| {
-            let w = Q::new(BigInt::from(w), BigInt::from(w % 97 + 1));
-            if sign < 0 { -w } else { w }
+        let w: Vec<Q> = c.points().iter().zip(&weights).map(|(_, (sign, w, long))| {
+            let w = if long_weights && !long.is_zero() {
+                num_traits::Signed::abs(long)
+            } else {
+                Q::new(BigInt::from(*w), BigInt::from(w % 97 + 1))
+            };
+            if *sign < 0 { -w } else { w }
         }).collect();
         let Ok(rational) = RationalBezierCurve::new(c.points().to_vec(), w) else { return Ok(()) };
         let fast = rational.derivative_at(&t);

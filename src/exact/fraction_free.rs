@@ -39,7 +39,7 @@ use crate::rational::RationalBezierCurve;
 use crate::surface::BezierSurface;
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{Signed, ToPrimitive, Zero};
+use num_traits::{One, Signed, ToPrimitive, Zero};
 
 /// The integers a kernel runs on: `i128` with checked arithmetic (`None` on overflow) or
 /// [`BigInt`] (never `None`).
@@ -683,6 +683,11 @@ impl RationalBezierCurve<BigRational> {
     /// x'(t) = n (c a_w b d_w − a c_w d b_w) q² b_w d_w / (b d W²).
     /// ```
     ///
+    /// The two columns' denominators `b` and `d` share most of their factors; with
+    /// `g = gcd(b, d)`, `b = g b'`, `d = g d'`, the numerator is
+    /// `n (c a_w b' d_w − a c_w d' b_w) q² b_w d_w` over `g b' d' W²`, reduced part by part
+    /// (`W²` by gcds with `W`, `gcd::reduce_by_power`).
+    ///
     /// ```
     /// use casteljau::{BigRational, RationalBezierCurve, Scalar};
     /// let arc = RationalBezierCurve::<BigRational>::from_ints(&[&[1, 0], &[1, 1], &[0, 1]], &[1, 1, 2]).unwrap();
@@ -705,12 +710,27 @@ impl RationalBezierCurve<BigRational> {
         if big_w.is_zero() {
             return Err(self.vanishing(t));
         }
-        let w_squared = &big_w * &big_w;
         let common = BigInt::from(n) * q * q * b_w * d_w;
         let coords = h0.iter().zip(h1).map(|(x0, x1)| {
             let (a, b, c, d) = (x0.numer(), x0.denom(), x1.numer(), x1.denom());
-            let num = (c * a_w * b * d_w - a * c_w * d * b_w) * &common;
-            gcd::reduce(num, &[Part::Number(b), Part::Number(d), Part::Number(&w_squared)])
+            // `b` and `d` share the factors of the points 1..n−1: over `g b' d'` the
+            // numerator is shorter than over `b d` by the length of `g`.
+            let g = gcd::gcd_int(b, d);
+            let (b1, d1) = if g.is_one() {
+                (b.clone(), d.clone())
+            } else {
+                (b / &g, d / &g)
+            };
+            let num = (c * a_w * &b1 * d_w - a * c_w * &d1 * b_w) * &common;
+            gcd::reduce(
+                num,
+                &[
+                    Part::Number(&b1),
+                    Part::Number(&d1),
+                    Part::Number(&g),
+                    Part::Power(&big_w, 2),
+                ],
+            )
         });
         Ok(Point::new(coords.collect()).expect("as many coordinates as a valid point"))
     }

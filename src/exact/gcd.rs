@@ -164,18 +164,36 @@ pub fn product(xs: &[BigInt]) -> BigInt {
     }
 }
 
-/// `num` and `base^e` divided by their gcd, `base > 0`: `base^e` whole when `base` is prime
-/// to `num` (one division by `base`), else one gcd with the power.
-pub fn reduce_by_power(num: BigInt, base: &BigInt, e: usize) -> (BigInt, BigInt) {
+/// `num` and `base^e` divided by their gcd, `base > 0`: gcds with the base, each no
+/// longer than the base (usually one, which finds the base prime to `num`), instead of one
+/// gcd with the whole power. For a prime of exponent `f` in the base and `v` in `num`, each
+/// step divides out `min(v', f)` of what is left, `e` steps `min(v, e f)`; a step that
+/// finds nothing in common ends it. Past a few steps, the rest is one gcd with what is
+/// left of the power.
+pub fn reduce_by_power(mut num: BigInt, base: &BigInt, e: usize) -> (BigInt, BigInt) {
     if num.is_zero() {
         return (num, BigInt::one());
     }
-    let power = num_traits::pow(base.clone(), e);
-    if e == 0 || base.is_one() || gcd_int(&num.mod_floor(base), base).is_one() {
-        return (num, power);
+    let mut left = num_traits::pow(base.clone(), e);
+    if e == 0 || base.is_one() {
+        return (num, left);
     }
-    let g = gcd_int(&num, &power);
-    (num.div_floor(&g), power.div_floor(&g))
+    for _ in 0..e.min(SHORT_POWER) {
+        let g = gcd_int(&num.mod_floor(base), base);
+        if g.is_one() {
+            return (num, left);
+        }
+        num = num.div_floor(&g);
+        left = left.div_floor(&g);
+    }
+    if e > SHORT_POWER {
+        let g = gcd_int(&num, &left);
+        if !g.is_one() {
+            num = num.div_floor(&g);
+            left = left.div_floor(&g);
+        }
+    }
+    (num, left)
 }
 
 /// `lcm(a, b)` of positive integers.
@@ -187,6 +205,10 @@ pub fn lcm_int(a: &BigInt, b: &BigInt) -> BigInt {
         a / g * b
     }
 }
+
+/// The gcds with the base that [`reduce_by_power`] takes before one gcd with the rest of
+/// the power: enough for the squares and cubes of the kernels, few passes over a long `num`.
+const SHORT_POWER: usize = 4;
 
 /// One factor of a denominator: a number, or a power `base^exponent` (kept unexpanded, so
 /// that a parameter's `qⁿ` is tested against its base first).
@@ -209,11 +231,10 @@ pub fn reduce(mut num: BigInt, parts: &[Part<'_>]) -> BigRational {
         let mut left = match part {
             Part::Number(d) => (*d).clone(),
             Part::Power(base, e) => {
-                if num.is_zero() || gcd_int(&num, base).is_one() {
-                    den *= num_traits::pow((*base).clone(), *e);
-                    continue;
-                }
-                num_traits::pow((*base).clone(), *e)
+                let (rest, left) = reduce_by_power(num, base, *e);
+                num = rest;
+                den *= left;
+                continue;
             }
         };
         if !num.is_zero() {
@@ -342,12 +363,27 @@ mod tests {
         /// `reduce_by_power` is lowest terms of `num / base^e`.
         #[test]
         fn reduce_by_power_is_lowest_terms(
-            n in prop_oneof![Just(0i64), any::<i64>()], k in 0u32..5, base in 1u64..60, e in 0usize..8,
+            n in prop_oneof![Just(0i64), any::<i64>()], k in 0u32..12, base in 1u64..60, e in 0usize..9,
         ) {
             let b = BigInt::from(base);
             let num = BigInt::from(n) * b.pow(k);
             let (reduced, den) = reduce_by_power(num.clone(), &b, e);
             let expected = BigRational::new(num, b.pow(e as u32));
+            prop_assert_eq!(&reduced, expected.numer());
+            prop_assert_eq!(&den, expected.denom());
+        }
+
+        /// The same with long bases (one to three words), negative numerators sharing a
+        /// power of a part of the base, against `BigRational::new`.
+        #[test]
+        fn reduce_by_power_of_long_bases(
+            digits in proptest::collection::vec(any::<u64>(), 1..4),
+            part in 1u64..1000, k in 0u32..7, e in 0usize..7, n in any::<i64>(),
+        ) {
+            let base = BigInt::from_biguint(Sign::Plus, big(&digits).max(BigUint::one())) * part;
+            let num = BigInt::from(n) * num_traits::pow(BigInt::from(part), k as usize) * num_traits::pow(base.clone(), (k / 2) as usize);
+            let (reduced, den) = reduce_by_power(num.clone(), &base, e);
+            let expected = BigRational::new(num, num_traits::pow(base, e));
             prop_assert_eq!(&reduced, expected.numer());
             prop_assert_eq!(&den, expected.denom());
         }
