@@ -15,6 +15,7 @@ use super::casteljau::{
     abs_bernstein_sum_in, abs_factors, abs_sum_rounded_up, add_up, convex_triangle, gamma, inflate, level_growth,
     mul_up, next_up, one_minus, underflow_term, ETA, UNIT_ROUNDOFF,
 };
+use super::compensated_pairs::compensated_in_unit_interval;
 use super::eft::{two_product, two_sum, ExactRange, Factor};
 use super::scratch::{with_copy, with_scratch, with_scratch2};
 
@@ -33,6 +34,9 @@ use super::scratch::{with_copy, with_scratch, with_scratch2};
 /// ```
 #[inline]
 pub fn compensated_de_casteljau(b: &[f64], t: f64) -> (f64, f64) {
+    if let Some(result) = compensated_in_unit_interval(b, t) {
+        return result;
+    }
     let n = b.len() - 1;
     // low degrees on arrays of constant length: unrolled, in registers (the same steps)
     let (hi, lo, abs_triangle) = match b.len() {
