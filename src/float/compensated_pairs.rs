@@ -258,7 +258,7 @@ fn scan(b: &[f64], abs: &mut [f64]) -> Option<i64> {
         sum += *o;
         least = least.min(*o);
     }
-    if !(sum <= MAX_ABS_SUM) {
+    if sum.is_nan() || sum > MAX_ABS_SUM {
         return None;
     }
     // a zero coefficient says nothing of the grid: look at the others
