@@ -27,7 +27,7 @@
 //!   when not one more level is covered.
 //! - **A two-operation split.** Each value `x` is split as `x_h = x` with the last 26 bits
 //!   of its significand cleared (27 significant bits) and `x_l = x − x_h` (exact, at most
-//!   26 bits, `|x_l| < 2^(e−25)` for `2^e ≤ |x|`): a mask and a subtraction instead of
+//!   26 bits, `|x_l| < 2^(e−26)` for `2^e ≤ |x|`): a mask and a subtraction instead of
 //!   Veltkamp's four operations. With the factor `k` split by Veltkamp (`k_h` of 26 bits,
 //!   `k_l` of at most 26 bits, `|k_l| ≤ 2^(e_k−26)`, both multiples of `2^(e_k−52)`),
 //!   Dekker's `((k_h x_h − p) + k_h x_l + k_l x_h) + k_l x_l` stays exact at every step
