@@ -516,6 +516,21 @@ pub(crate) fn sign_split_enclosure(b: &[f64], t: f64) -> Option<Interval> {
         5 => sign_split_triangle(&mut [[0.0; 2]; 5], b, t),
         len => with_scratch(len, [0.0; 2], |buf| sign_split_triangle(buf, b, t)),
     };
+    rounded_outward(b, n, pos, neg)
+}
+
+/// [`sign_split_enclosure`] on `N ≥ 2` coefficients known at compile time, inlined where
+/// it is called (the public `eval` of an interval cubic).
+#[inline(always)]
+pub(crate) fn sign_split_enclosure_of<const N: usize>(b: &[f64; N], t: f64) -> Option<Interval> {
+    let [pos, neg] = sign_split_triangle(&mut [[0.0; 2]; N], b, t);
+    rounded_outward(b, N - 1, pos, neg)
+}
+
+/// The enclosure of [`sign_split_enclosure`] from the triangles' values `P̂⁺`, `P̂⁻` at
+/// degree `n ≥ 1`.
+#[inline(always)]
+fn rounded_outward(b: &[f64], n: usize, pos: f64, neg: f64) -> Option<Interval> {
     // Rounded, with R = γ_{3n}·m + 4nη(1 + γ_{3n}) the reach above (m = P̂⁺ + P̂⁻ exactly):
     // d = fl(P̂⁺ − P̂⁻) is off by at most u·m (m ≥ |P̂⁺ − P̂⁻|, so |d| ≤ (1 + u)m), and
     // fl(d ± r) by at most u(|d| + r), so `d ± r` rounded to nearest are outward enough when

@@ -66,6 +66,16 @@ impl<T: Scalar> Point<T> {
         Point { coords }
     }
 
+    /// A point from the first `dim` (1 to 4) of `coords`, already known to be valid: kept
+    /// inline as they are, with no iterator to collect.
+    #[inline]
+    pub(crate) fn from_inline_prefix(coords: [T; INLINE_COORDS], dim: usize) -> Self {
+        debug_assert!((1..=INLINE_COORDS).contains(&dim));
+        Point {
+            coords: SmallVec::from_buf_and_len(coords, dim),
+        }
+    }
+
     /// A point with integer coordinates, convenient for literals.
     ///
     /// ```

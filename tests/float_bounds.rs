@@ -108,6 +108,46 @@ fn bounds_hold_exactly_near_multiple_roots() {
     }
 }
 
+/// The bound `compensated_de_casteljau` returns, in rationals, where its fast path for
+/// `t ∈ [0, 1]` decides by itself whether Dekker's products are exact: coefficients from
+/// subnormal to `1e300` (past the fast path's `Σ|b_i| ≤ 2^994`), zeros, mixed scales, `t`
+/// at and near the ends of `[0, 1]`, and degrees up to 63 (with values fine enough that the
+/// triangle rescans its grid, or gives up to the checked loop).
+#[test]
+fn compensated_bound_holds_at_the_edges() {
+    let mut rng = Rng(0xC0_4E57);
+    let scales = [
+        1.0,
+        1e-300,
+        1e-310,
+        5e-324,
+        1e299,
+        1e300,
+        2f64.powi(-970),
+        2f64.powi(-900),
+    ];
+    let ts = [0.0, 1.0, 0.5, 0.3, 1e-310, 1e-20, 1.0 - f64::EPSILON / 2.0, 0.7500001];
+    for case in 0..600 {
+        let n = [1, 2, 3, 4, 5, 6, 10, 17, 20, 40, 63][case % 11];
+        let scale = scales[(rng.next() % scales.len() as u64) as usize];
+        let b: Vec<f64> = (0..=n)
+            .map(|_| match rng.next() % 10 {
+                0 => 0.0,
+                1 => 2f64.powi(-((rng.next() % 60) as i32)) * scale,
+                _ => (2.0 * rng.unit() - 1.0) * scale,
+            })
+            .collect();
+        let t = if case % 2 == 0 {
+            ts[(rng.next() % ts.len() as u64) as usize]
+        } else {
+            rng.unit()
+        };
+        let (p, _) = exact_value_and_sum(&b, t);
+        let (res, bound) = compensated_de_casteljau(&b, t);
+        assert!(error_at_most(res, &p, bound), "{b:?} at {t}: {res:e} ± {bound:e}");
+    }
+}
+
 #[test]
 fn compensated_is_within_one_ulp_on_random_curves() {
     let mut rng = Rng(7);

@@ -11,7 +11,7 @@
 use super::scratch::with_scratch;
 use crate::curve::Bezier;
 use crate::exact::dispatch::cast;
-use crate::interval::{sign_split_enclosure, Interval};
+use crate::interval::{sign_split_enclosure, sign_split_enclosure_of, Interval};
 use crate::point::Point;
 use crate::scalar::Ring;
 use crate::space::{PointN, VectorSpace};
@@ -44,14 +44,14 @@ where
     if let Some(c) = any.downcast_ref::<Bezier<Point<Interval>>>() {
         let points = c.points();
         let dim = points[0].dim();
-        // up to 4 coordinates (a point's inline capacity) on the stack, copied into the
-        // point once: collecting through an iterator of `Option`s cost as much as the kernel
+        // up to 4 coordinates (a point's inline capacity) on the stack, kept inline in the
+        // point as they are: collecting through an iterator cost as much as the kernel
         let mut coords = [Interval::zero(); 4];
         if dim <= coords.len() {
             for (k, x) in coords[..dim].iter_mut().enumerate() {
                 *x = enclose_coordinate(points, k, t)?;
             }
-            return cast(Point::from_valid(coords[..dim].iter().copied())).ok();
+            return cast(Point::from_inline_prefix(coords, dim)).ok();
         }
         let coords: Option<Vec<Interval>> = (0..dim).map(|k| enclose_coordinate(points, k, t)).collect();
         return cast(Point::from_valid(coords?)).ok();
@@ -73,23 +73,38 @@ fn fixed<P: 'static, const D: usize>(any: &dyn Any, t: f64) -> Option<P> {
 /// Coordinate `k` of the curve on `points` at `t ∈ [0, 1]`: the Bernstein weights are
 /// nonnegative there, so the values over the coefficients' intervals run from the curve on
 /// their lower endpoints to the curve on their upper ones, each enclosed by
-/// [`sign_split_enclosure`] (once when every coefficient is a point).
+/// [`sign_split_enclosure`] (once when every coefficient is a point). A cubic's endpoints
+/// are gathered into arrays of constant length, so that the kernel is inlined for it.
 #[inline]
 fn enclose_coordinate<Q: VectorSpace<Scalar = Interval>>(points: &[Q], k: usize, t: f64) -> Option<Interval> {
-    with_scratch(points.len(), 0.0, |b| {
-        let mut points_only = true;
-        for (x, p) in b.iter_mut().zip(points) {
-            let c = p.coords()[k];
-            *x = c.lo();
-            points_only &= c.lo() == c.hi();
-        }
-        let low = sign_split_enclosure(b, t)?;
-        if points_only {
-            return Some(low);
-        }
-        for (x, p) in b.iter_mut().zip(points) {
-            *x = p.coords()[k].hi();
-        }
-        Interval::new(low.lo(), sign_split_enclosure(b, t)?.hi()).ok()
-    })
+    match points {
+        [p0, p1, p2, p3] => enclose_gathered([p0, p1, p2, p3].map(|p| p.coords()[k]), t),
+        _ => with_scratch(points.len(), 0.0, |b| {
+            let mut points_only = true;
+            for (x, p) in b.iter_mut().zip(points) {
+                let c = p.coords()[k];
+                *x = c.lo();
+                points_only &= c.lo() == c.hi();
+            }
+            let low = sign_split_enclosure(b, t)?;
+            if points_only {
+                return Some(low);
+            }
+            for (x, p) in b.iter_mut().zip(points) {
+                *x = p.coords()[k].hi();
+            }
+            Interval::new(low.lo(), sign_split_enclosure(b, t)?.hi()).ok()
+        }),
+    }
+}
+
+/// [`enclose_coordinate`] on the coefficients of one coordinate, `N` known at compile time.
+#[inline(always)]
+fn enclose_gathered<const N: usize>(coefficients: [Interval; N], t: f64) -> Option<Interval> {
+    let low = sign_split_enclosure_of(&coefficients.map(|c| c.lo()), t)?;
+    if coefficients.iter().all(|c| c.lo() == c.hi()) {
+        return Some(low);
+    }
+    let high = sign_split_enclosure_of(&coefficients.map(|c| c.hi()), t)?;
+    Interval::new(low.lo(), high.hi()).ok()
 }

@@ -11,6 +11,7 @@
 
 mod casteljau;
 mod compensated;
+mod compensated_pairs;
 mod dispatch;
 mod dyadic;
 mod eft;

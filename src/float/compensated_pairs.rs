@@ -1,0 +1,399 @@
+//! Compensated de Casteljau for `t ∈ [0, 1]` two nodes at a time: the operations of
+//! `compensated_triangle` (the same ones, in the same order, so the same bits) on pairs of
+//! floats, which the compiler maps to the two lanes of an SSE2 register on the default
+//! x86-64 target. Nodes `i` and `i + 1` of a level read the values `[x_i, x_{i+1}]` and
+//! `[x_{i+1}, x_{i+2}]`: the pair loaded for the next step, shifted by one. A level of `len`
+//! nodes takes `⌈len/2⌉` steps; an odd level's last step computes one value too many, in
+//! the buffers' padding.
+//!
+//! Three things make it cheaper than the node-by-node loop, none of them changing a bit:
+//!
+//! - **No range check per node.** Dekker's product error is exact (and equal to
+//!   [`super::two_product`]'s) when nothing in it overflows or rounds below `2^−1022`. For
+//!   `t ∈ [0, 1]` both factors `s = fl(1 − t)` and `t` lie in `[0, 1]` and `s + t ≤ 1 + u`,
+//!   so a level grows the largest magnitude by at most `(1 + u)³`: from `Σ|b_i| ≤ 2^994`
+//!   every value stays below `2^995`, where splitting and the partial products are finite.
+//!   Below, a granularity argument replaces the check: if every value of a level is an
+//!   integer multiple of `2^F`, then `s·x` is a multiple of `2^(F + e_s)` (`e_s` the ulp
+//!   exponent of `s`), and so is its rounded value (rounding to a coarser grid keeps the
+//!   multiple, to a finer one it is exact); likewise for `t` and for the sum. So the
+//!   values of level `r` are multiples of `2^(F_0 + r·L)`, `L` the smaller ulp exponent of
+//!   the nonzero factors (`≤ −52`), `F_0` the finest ulp exponent of the inputs. Every
+//!   partial product of Dekker's error of `k·x` is then a multiple of
+//!   `2^(F_0 + r·L + L)`, so while that is at least `2^−1074` no operation in it rounds
+//!   below the normal range, and the error is exact. The loop counts the levels this
+//!   covers; when they run out it takes the finest ulp exponent of the values at hand and
+//!   counts again, and gives up (`None`, the caller's checked triangle then runs) only
+//!   when not one more level is covered.
+//! - **A two-operation split.** Each value `x` is split as `x_h = x` with the last 26 bits
+//!   of its significand cleared (27 significant bits) and `x_l = x − x_h` (exact, at most
+//!   26 bits, `|x_l| < 2^(e−26)` for `2^e ≤ |x|`): a mask and a subtraction instead of
+//!   Veltkamp's four operations. With the factor `k` split by Veltkamp (`k_h` of 26 bits,
+//!   `k_l` of at most 26 bits, `|k_l| ≤ 2^(e_k−26)`, both multiples of `2^(e_k−52)`),
+//!   Dekker's `((k_h x_h − p) + k_h x_l + k_l x_h) + k_l x_l` stays exact at every step
+//!   (`X = k·x`, `p = fl(X)`, `E = e_k + e`, `|X| < 2^(E+2)`, values normal by the
+//!   argument above): the four products have at most 53 bits; `k_h x_h − p` is a multiple
+//!   of `2^(E−52)` below `2^(E−23)`; adding `k_h x_l` gives `(X − p) − k_l x`, a multiple
+//!   of `2^(E−77)` below `2^(E−25) + 2^(E−51)`; adding `k_l x_h` gives `(X − p) − k_l x_l`,
+//!   a multiple of `2^(E−78)` below `2^(E−50)`; each fits in 53 bits, and the last sum is
+//!   `X − p` itself, a float. So the error is the exact one, as with Veltkamp's split.
+//! - **The first level's low parts are zeros**: `(w + s·0) + t·0` is `w + 0` for
+//!   `s, t ≥ 0`, one addition instead of four operations.
+//!
+//! The bound is one expression with constants per degree ([`UnitBound`]).
+
+use super::casteljau::{gamma_computed, next_up, one_minus, ETA, UNIT_ROUNDOFF};
+#[cfg(not(target_feature = "fma"))]
+use super::eft::split;
+use super::eft::MAX_SPLIT;
+use std::ops::{Add, Mul, Sub};
+
+/// Up to this degree (exclusive) the pairs run on the stack with tabulated bound constants.
+const MAX_DEGREE: usize = super::STACK_COEFFICIENTS;
+
+/// `(res, e)` of [`super::compensated_de_casteljau`] for `t ∈ [0, 1]` and degrees 1 to 63;
+/// `None` elsewhere and when a value may leave the range where the products' errors are
+/// exact without a check (the caller then runs its checked triangle: the same bits).
+#[inline]
+pub(super) fn compensated_in_unit_interval(b: &[f64], t: f64) -> Option<(f64, f64)> {
+    let n = b.len().checked_sub(1)?;
+    if !(0.0..=1.0).contains(&t) || n == 0 || n >= MAX_DEGREE {
+        return None;
+    }
+    let factors = Factors::new(t);
+    let (hi, lo, abs) = match b.len() {
+        2 => unrolled::<2, 4>(&factors, b),
+        3 => unrolled::<3, 6>(&factors, b),
+        4 => unrolled::<4, 6>(&factors, b),
+        5 => unrolled::<5, 8>(&factors, b),
+        len if len + 2 <= 8 => looped::<8>(&factors, b),
+        len if len + 2 <= 16 => looped::<16>(&factors, b),
+        len if len + 2 <= 32 => looped::<32>(&factors, b),
+        _ => looped::<{ MAX_DEGREE + 2 }>(&factors, b),
+    }?;
+    let res = hi + lo;
+    Some((res, UnitBound::of(n, abs, res)))
+}
+
+/// Two floats, operated on lane by lane.
+#[derive(Clone, Copy)]
+struct Pair([f64; 2]);
+
+impl Pair {
+    #[inline(always)]
+    fn splat(x: f64) -> Self {
+        Pair([x, x])
+    }
+
+    #[inline(always)]
+    fn load(b: &[f64], i: usize) -> Self {
+        Pair([b[i], b[i + 1]])
+    }
+
+    #[inline(always)]
+    fn store(self, b: &mut [f64], i: usize) {
+        b[i] = self.0[0];
+        b[i + 1] = self.0[1];
+    }
+
+    /// `[self₁, next₀]`: the pair one position further along.
+    #[inline(always)]
+    fn shifted(self, next: Pair) -> Self {
+        Pair([self.0[1], next.0[0]])
+    }
+
+    #[inline(always)]
+    fn map(self, f: impl Fn(f64) -> f64) -> Self {
+        Pair([f(self.0[0]), f(self.0[1])])
+    }
+}
+
+impl Add for Pair {
+    type Output = Pair;
+    #[inline(always)]
+    fn add(self, o: Pair) -> Pair {
+        Pair([self.0[0] + o.0[0], self.0[1] + o.0[1]])
+    }
+}
+
+impl Sub for Pair {
+    type Output = Pair;
+    #[inline(always)]
+    fn sub(self, o: Pair) -> Pair {
+        Pair([self.0[0] - o.0[0], self.0[1] - o.0[1]])
+    }
+}
+
+impl Mul for Pair {
+    type Output = Pair;
+    #[inline(always)]
+    fn mul(self, o: Pair) -> Pair {
+        Pair([self.0[0] * o.0[0], self.0[1] * o.0[1]])
+    }
+}
+
+/// A factor of every product (`s` or `t`), split by Veltkamp for Dekker's product.
+#[derive(Clone, Copy)]
+struct Factor {
+    value: Pair,
+    #[cfg(not(target_feature = "fma"))]
+    halves: (Pair, Pair),
+}
+
+impl Factor {
+    #[inline(always)]
+    fn new(k: f64) -> Self {
+        #[cfg(not(target_feature = "fma"))]
+        let (h, l) = split(k);
+        Factor {
+            value: Pair::splat(k),
+            #[cfg(not(target_feature = "fma"))]
+            halves: (Pair::splat(h), Pair::splat(l)),
+        }
+    }
+
+    /// The exact error `k·x − p` of `p = fl(k·x)` (in the range the module documentation
+    /// gives): Dekker's product on the two-operation split of `x`, or one fused
+    /// multiply-add.
+    #[inline(always)]
+    fn error(&self, x: Pair, p: Pair) -> Pair {
+        #[cfg(not(target_feature = "fma"))]
+        {
+            /// All but the last 26 bits of a float's significand.
+            const HIGH_27_BITS: u64 = !((1 << 26) - 1);
+            let (kh, kl) = self.halves;
+            let xh = x.map(|v| f64::from_bits(v.to_bits() & HIGH_27_BITS));
+            let xl = x - xh;
+            ((kh * xh - p) + kh * xl + kl * xh) + kl * xl
+        }
+        #[cfg(target_feature = "fma")]
+        {
+            Pair([
+                self.value.0[0].mul_add(x.0[0], -p.0[0]),
+                self.value.0[1].mul_add(x.0[1], -p.0[1]),
+            ])
+        }
+    }
+}
+
+/// What every node needs: `s = fl(1 − t)` and its error `ρ`, `t`, the factor `s' ≥ 1 − t`
+/// of the `|b_i|` triangle, and the ulp exponent `L` of the granularity argument.
+struct Factors {
+    s: Factor,
+    t: Factor,
+    rho: Pair,
+    s_abs: Pair,
+    /// `−L ≥ 52`: how much a level may refine the grid of the values (in exponent).
+    refinement: i64,
+}
+
+impl Factors {
+    #[inline(always)]
+    fn new(t: f64) -> Self {
+        let (s, rho) = one_minus(t);
+        // a zero factor's products are zeros, on every grid
+        let exponent = |k: f64| if k == 0.0 { 0 } else { -ulp_exponent(k) };
+        Factors {
+            s: Factor::new(s),
+            t: Factor::new(t),
+            rho: Pair::splat(rho),
+            s_abs: Pair::splat(next_up(s + rho.abs())),
+            refinement: exponent(s).max(exponent(t)).min(1074),
+        }
+    }
+
+    /// How many more levels may multiply values that are multiples of `2^finest`.
+    #[inline(always)]
+    fn levels_covered(&self, finest: i64) -> i64 {
+        if cfg!(target_feature = "fma") {
+            // a fused multiply-add is the reference itself
+            return i64::MAX;
+        }
+        (finest + 1074).max(0) / self.refinement
+    }
+}
+
+/// The ulp exponent of a float: `e − 52` for `2^e ≤ |x| < 2^(e+1)`, `−1074` below `2^−1022`.
+#[inline(always)]
+fn ulp_exponent(x: f64) -> i64 {
+    let biased = ((x.to_bits() >> 52) & 0x7ff) as i64;
+    biased.max(1) - 1075
+}
+
+/// The finest ulp exponent of the nonzero `values` (`i64::MAX / 4` when all are zero: a
+/// zero is a multiple of every power of two).
+fn finest_ulp_exponent(values: &[f64]) -> i64 {
+    let least = values
+        .iter()
+        .map(|x| x.abs())
+        .filter(|x| *x != 0.0)
+        .fold(f64::INFINITY, f64::min);
+    if least == f64::INFINITY {
+        i64::MAX / 4
+    } else {
+        ulp_exponent(least)
+    }
+}
+
+/// `Σ|b_i|` may not exceed this for the triangle to stay below `2^995` ([`MAX_SPLIT`]).
+const MAX_ABS_SUM: f64 = MAX_SPLIT / 2.0;
+
+/// Copies `|b_i|` into `abs` and gives the finest ulp exponent of the `b_i`; `None` when
+/// `Σ|b_i|` exceeds [`MAX_ABS_SUM`] or is not finite (or NaN).
+#[inline(always)]
+fn scan(b: &[f64], abs: &mut [f64]) -> Option<i64> {
+    // in two lanes: their sum bounds the largest |b_i| in any order, and a NaN stays NaN
+    let (mut sum, mut least) = (Pair::splat(0.0), Pair::splat(f64::INFINITY));
+    let mut pairs = b.chunks_exact(2);
+    let mut out = abs.chunks_exact_mut(2);
+    for (x, o) in (&mut pairs).zip(&mut out) {
+        let a = Pair([x[0], x[1]]).map(f64::abs);
+        a.store(o, 0);
+        sum = sum + a;
+        least = Pair([least.0[0].min(a.0[0]), least.0[1].min(a.0[1])]);
+    }
+    let (mut sum, mut least) = (sum.0[0] + sum.0[1], least.0[0].min(least.0[1]));
+    if let ([x], [o]) = (pairs.remainder(), out.into_remainder()) {
+        *o = x.abs();
+        sum += *o;
+        least = least.min(*o);
+    }
+    if sum.is_nan() || sum > MAX_ABS_SUM {
+        return None;
+    }
+    // a zero coefficient says nothing of the grid: look at the others
+    Some(if least == 0.0 {
+        finest_ulp_exponent(b)
+    } else {
+        ulp_exponent(least)
+    })
+}
+
+/// One level in place: `len` nodes from `hi, lo, abs[0..=len]`, two per step; the buffers
+/// hold `len + 3` values at least (the last step reads one pair past the level).
+#[inline(always)]
+fn level<const FIRST: bool>(f: &Factors, hi: &mut [f64], lo: &mut [f64], abs: &mut [f64], len: usize) {
+    let (s, t) = (f.s.value, f.t.value);
+    let (mut a, mut a_lo, mut a_abs) = (Pair::load(hi, 0), Pair::load(lo, 0), Pair::load(abs, 0));
+    let mut i = 0;
+    while i < len {
+        let (c, c_lo, c_abs) = (Pair::load(hi, i + 2), Pair::load(lo, i + 2), Pair::load(abs, i + 2));
+        let (b, b_lo, b_abs) = (a.shifted(c), a_lo.shifted(c_lo), a_abs.shifted(c_abs));
+        let p1 = s * a;
+        let e1 = f.s.error(a, p1);
+        let p2 = t * b;
+        let e2 = f.t.error(b, p2);
+        let sum = p1 + p2;
+        let bb = sum - p1;
+        let e3 = (p1 - (sum - bb)) + (p2 - bb);
+        let w = e1 + e2 + e3 + f.rho * a;
+        let low = if FIRST {
+            w + Pair::splat(0.0)
+        } else {
+            w + s * a_lo + t * b_lo
+        };
+        sum.store(hi, i);
+        low.store(lo, i);
+        (f.s_abs * a_abs + t * b_abs).store(abs, i);
+        (a, a_lo, a_abs) = (c, c_lo, c_abs);
+        i += 2;
+    }
+}
+
+/// The triangle on `b` in buffers of `N ≥ len + 2` values: `(hi, lo, the |b_i| triangle)`.
+#[inline(always)]
+fn looped<const N: usize>(f: &Factors, b: &[f64]) -> Option<(f64, f64, f64)> {
+    let n = b.len() - 1;
+    let (mut hi, mut lo, mut abs) = ([0.0; N], [0.0; N], [0.0; N]);
+    hi[..=n].copy_from_slice(b);
+    let mut covered = f.levels_covered(scan(b, &mut abs[..=n])?);
+    for len in (1..=n).rev() {
+        if covered == 0 {
+            covered = f.levels_covered(finest_ulp_exponent(&hi[..=len]));
+            if covered == 0 {
+                return None;
+            }
+        }
+        if len == n {
+            level::<true>(f, &mut hi, &mut lo, &mut abs, len);
+        } else {
+            level::<false>(f, &mut hi, &mut lo, &mut abs, len);
+        }
+        covered -= 1;
+    }
+    Some((hi[0], lo[0], abs[0]))
+}
+
+/// [`looped`] for `LEN` coefficients known at compile time (unrolled, in registers), with
+/// one range check up front.
+#[inline(always)]
+fn unrolled<const LEN: usize, const N: usize>(f: &Factors, b: &[f64]) -> Option<(f64, f64, f64)> {
+    let (mut hi, mut lo, mut abs) = ([0.0; N], [0.0; N], [0.0; N]);
+    hi[..LEN].copy_from_slice(b);
+    if f.levels_covered(scan(b, &mut abs[..LEN])?) < LEN as i64 - 1 {
+        return None;
+    }
+    level::<true>(f, &mut hi, &mut lo, &mut abs, LEN - 1);
+    for len in (1..LEN - 1).rev() {
+        level::<false>(f, &mut hi, &mut lo, &mut abs, len);
+    }
+    Some((hi[0], lo[0], abs[0]))
+}
+
+/// The bound of compensated de Casteljau for `t ∈ [0, 1]` as one expression,
+/// `e = fl(fl(fl(β_n·A) + fl(α·|res|)) + δ_n)`, from the float triangle `A` on `|b_i|`
+/// (factors `s' ≥ 1 − t` and `t`). Why it holds, with `Σ = Σ|b_i|B_i^n(t)`:
+///
+/// - the `|b_i|` triangle rounds nonnegative values only: `Σ ≤ (1 + γ_{2n})A + U₁`, with
+///   `U₁ = (n(n+1)/2 + 1)·2^−1074` (the underflow term of `abs_sum_rounded_up`, for a
+///   level growth within `1 + 2^−48`, as `s' + t` is);
+/// - compensated de Casteljau: `|res − p| ≤ u|p| + 2γ_{3n}²Σ + U₃`, `U₃ = (3n(n+1)/2 + 1)
+///   ·2^−1074` (`compensated_underflow`, same growth), and `|p| ≤ |res| + |res − p|`, so
+///   `|res − p| ≤ α'|res| + β'_n A + δ'_n` with `α' = u/(1 − u)`,
+///   `β'_n = 2γ_{3n}²(1 + γ_{2n})/(1 − u)`, `δ'_n = (2γ_{3n}²U₁ + U₃)/(1 − u)`;
+/// - each rounding to nearest of nonnegative values is at least the exact value over
+///   `1 + u`, less `2^−1075` for a product that lands among subnormals (a sum of floats is
+///   exact there), so `e ≥ β A/(1+u)³ + α|res|/(1+u)³ + δ/(1+u) − 2^−1074`, which is at
+///   least the bound above for `β ≥ β'_n(1+u)³`, `α ≥ α'(1+u)³`, `δ ≥ (δ'_n + 2^−1074)(1+u)`:
+///   the constants below, rounded up at each step, with `(1 + u)³/(1 − u) ≤ 1 + 8u`.
+struct UnitBound;
+
+impl UnitBound {
+    /// `α = u(1 + 8u)`, a float.
+    const ALPHA: f64 = UNIT_ROUNDOFF * (1.0 + 8.0 * UNIT_ROUNDOFF);
+
+    #[inline(always)]
+    fn of(n: usize, abs_triangle: f64, res: f64) -> f64 {
+        let (beta, delta) = BOUND_CONSTANTS[n];
+        beta * abs_triangle + Self::ALPHA * res.abs() + delta
+    }
+
+    /// `(β_n, δ_n)`, each operation rounded up.
+    const fn constants(n: usize) -> (f64, f64) {
+        const fn mul_up(a: f64, b: f64) -> f64 {
+            next_up(a * b)
+        }
+        const fn add_up(a: f64, b: f64) -> f64 {
+            next_up(a + b)
+        }
+        let g = gamma_computed(3 * n);
+        let two_g2 = mul_up(2.0 * g, g);
+        let margin = 1.0 + 8.0 * UNIT_ROUNDOFF;
+        let beta = mul_up(mul_up(two_g2, add_up(1.0, gamma_computed(2 * n))), margin);
+        let nodes = (n * (n + 1) / 2) as u64;
+        let (u1, u3) = (f64::from_bits(nodes + 1), f64::from_bits(3 * nodes + 1));
+        let delta = mul_up(add_up(add_up(mul_up(two_g2, u1), u3), ETA), margin);
+        (beta, delta)
+    }
+}
+
+/// [`UnitBound::constants`] for every degree below [`MAX_DEGREE`], at compile time.
+static BOUND_CONSTANTS: [(f64, f64); MAX_DEGREE] = {
+    let mut table = [(0.0, 0.0); MAX_DEGREE];
+    let mut n = 1;
+    while n < MAX_DEGREE {
+        table[n] = UnitBound::constants(n);
+        n += 1;
+    }
+    table
+};
