@@ -87,13 +87,12 @@ fn enclose_coordinate<Q: VectorSpace<Scalar = Interval>>(points: &[Q], k: usize,
                 points_only &= c.lo() == c.hi();
             }
             let low = sign_split_enclosure(b, t)?;
-            if points_only {
-                return Some(low);
-            }
-            for (x, p) in b.iter_mut().zip(points) {
-                *x = p.coords()[k].hi();
-            }
-            Interval::new(low.lo(), sign_split_enclosure(b, t)?.hi()).ok()
+            joined(low, points_only, || {
+                for (x, p) in b.iter_mut().zip(points) {
+                    *x = p.coords()[k].hi();
+                }
+                sign_split_enclosure(b, t)
+            })
         }),
     }
 }
@@ -102,9 +101,19 @@ fn enclose_coordinate<Q: VectorSpace<Scalar = Interval>>(points: &[Q], k: usize,
 #[inline(always)]
 fn enclose_gathered<const N: usize>(coefficients: [Interval; N], t: f64) -> Option<Interval> {
     let low = sign_split_enclosure_of(&coefficients.map(|c| c.lo()), t)?;
-    if coefficients.iter().all(|c| c.lo() == c.hi()) {
+    let points_only = coefficients.iter().all(|c| c.lo() == c.hi());
+    joined(low, points_only, || {
+        sign_split_enclosure_of(&coefficients.map(|c| c.hi()), t)
+    })
+}
+
+/// The enclosure over interval coefficients from `low`, the curve's on their lower
+/// endpoints, and `high()`, on their upper ones, needed only when a coefficient is not a
+/// point.
+#[inline(always)]
+fn joined(low: Interval, points_only: bool, high: impl FnOnce() -> Option<Interval>) -> Option<Interval> {
+    if points_only {
         return Some(low);
     }
-    let high = sign_split_enclosure_of(&coefficients.map(|c| c.hi()), t)?;
-    Interval::new(low.lo(), high.hi()).ok()
+    Interval::new(low.lo(), high()?.hi()).ok()
 }
