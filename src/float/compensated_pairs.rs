@@ -42,10 +42,10 @@
 //!
 //! The bound is one expression with constants per degree ([`UnitBound`]).
 
-use super::casteljau::{gamma_computed, next_up, one_minus, ETA, UNIT_ROUNDOFF};
+use super::casteljau::{gamma_computed, next_up, ETA, UNIT_ROUNDOFF};
 #[cfg(not(target_feature = "fma"))]
 use super::eft::split;
-use super::eft::MAX_SPLIT;
+use super::eft::{fast_two_sum, MAX_SPLIT};
 use std::ops::{Add, Mul, Sub};
 
 /// Up to this degree (exclusive) the pairs run on the stack with tabulated bound constants.
@@ -190,7 +190,8 @@ struct Factors {
 impl Factors {
     #[inline(always)]
     fn new(t: f64) -> Self {
-        let (s, rho) = one_minus(t);
+        // `|1| ≥ |t|` for `t ∈ [0, 1]`: FastTwoSum's error is exact, the one `one_minus` gives
+        let (s, rho) = fast_two_sum(1.0, -t);
         // a zero factor's products are zeros, on every grid
         let exponent = |k: f64| if k == 0.0 { 0 } else { -ulp_exponent(k) };
         Factors {
@@ -202,14 +203,16 @@ impl Factors {
         }
     }
 
-    /// How many more levels may multiply values that are multiples of `2^finest`.
+    /// The levels that may multiply values that are multiples of `2^finest`, as a budget:
+    /// a level is covered while the budget is at least [`Factors::refinement`], and spends
+    /// that much (so `⌊budget / refinement⌋` levels, without dividing).
     #[inline(always)]
-    fn levels_covered(&self, finest: i64) -> i64 {
+    fn level_budget(&self, finest: i64) -> i64 {
         if cfg!(target_feature = "fma") {
             // a fused multiply-add is the reference itself
-            return i64::MAX;
+            return i64::MAX / 2;
         }
-        (finest + 1074).max(0) / self.refinement
+        finest + 1074
     }
 }
 
@@ -238,25 +241,32 @@ fn finest_ulp_exponent(values: &[f64]) -> i64 {
 /// `Σ|b_i|` may not exceed this for the triangle to stay below `2^995` ([`MAX_SPLIT`]).
 const MAX_ABS_SUM: f64 = MAX_SPLIT / 2.0;
 
-/// Copies `|b_i|` into `abs` and gives the finest ulp exponent of the `b_i`; `None` when
-/// `Σ|b_i|` exceeds [`MAX_ABS_SUM`] or is not finite (or NaN).
+/// Copies `b` into `hi` and `|b_i|` into `abs` (both as long as `b`), and gives the finest
+/// ulp exponent of the `b_i`; `None` when `Σ|b_i|` exceeds [`MAX_ABS_SUM`] or is not finite
+/// (or NaN).
 #[inline(always)]
-fn scan(b: &[f64], abs: &mut [f64]) -> Option<i64> {
+fn scan(b: &[f64], hi: &mut [f64], abs: &mut [f64]) -> Option<i64> {
     // in two lanes: their sum bounds the largest |b_i| in any order, and a NaN stays NaN
+    // (the least value needs no care for NaN: the sum then refuses)
+    let smaller = |x: f64, y: f64| if x < y { x } else { y };
     let (mut sum, mut least) = (Pair::splat(0.0), Pair::splat(f64::INFINITY));
     let mut pairs = b.chunks_exact(2);
+    let mut copies = hi.chunks_exact_mut(2);
     let mut out = abs.chunks_exact_mut(2);
-    for (x, o) in (&mut pairs).zip(&mut out) {
-        let a = Pair([x[0], x[1]]).map(f64::abs);
+    for ((x, h), o) in (&mut pairs).zip(&mut copies).zip(&mut out) {
+        let x = Pair([x[0], x[1]]);
+        x.store(h, 0);
+        let a = x.map(f64::abs);
         a.store(o, 0);
         sum = sum + a;
-        least = Pair([least.0[0].min(a.0[0]), least.0[1].min(a.0[1])]);
+        least = Pair([smaller(a.0[0], least.0[0]), smaller(a.0[1], least.0[1])]);
     }
-    let (mut sum, mut least) = (sum.0[0] + sum.0[1], least.0[0].min(least.0[1]));
-    if let ([x], [o]) = (pairs.remainder(), out.into_remainder()) {
+    let (mut sum, mut least) = (sum.0[0] + sum.0[1], smaller(least.0[0], least.0[1]));
+    if let ([x], [h], [o]) = (pairs.remainder(), copies.into_remainder(), out.into_remainder()) {
+        *h = *x;
         *o = x.abs();
         sum += *o;
-        least = least.min(*o);
+        least = smaller(*o, least);
     }
     if sum.is_nan() || sum > MAX_ABS_SUM {
         return None;
@@ -274,11 +284,11 @@ fn scan(b: &[f64], abs: &mut [f64]) -> Option<i64> {
 #[inline(always)]
 fn level<const FIRST: bool>(f: &Factors, hi: &mut [f64], lo: &mut [f64], abs: &mut [f64], len: usize) {
     let (s, t) = (f.s.value, f.t.value);
-    let (mut a, mut a_lo, mut a_abs) = (Pair::load(hi, 0), Pair::load(lo, 0), Pair::load(abs, 0));
+    let (mut a, mut a_lo) = (Pair::load(hi, 0), Pair::load(lo, 0));
     let mut i = 0;
     while i < len {
-        let (c, c_lo, c_abs) = (Pair::load(hi, i + 2), Pair::load(lo, i + 2), Pair::load(abs, i + 2));
-        let (b, b_lo, b_abs) = (a.shifted(c), a_lo.shifted(c_lo), a_abs.shifted(c_abs));
+        let (c, c_lo) = (Pair::load(hi, i + 2), Pair::load(lo, i + 2));
+        let (b, b_lo) = (a.shifted(c), a_lo.shifted(c_lo));
         let p1 = s * a;
         let e1 = f.s.error(a, p1);
         let p2 = t * b;
@@ -294,8 +304,16 @@ fn level<const FIRST: bool>(f: &Factors, hi: &mut [f64], lo: &mut [f64], abs: &m
         };
         sum.store(hi, i);
         low.store(lo, i);
-        (f.s_abs * a_abs + t * b_abs).store(abs, i);
-        (a, a_lo, a_abs) = (c, c_lo, c_abs);
+        (a, a_lo) = (c, c_lo);
+        i += 2;
+    }
+    // the |b_i| triangle's level on its own: fewer values held across the steps above
+    let mut a_abs = Pair::load(abs, 0);
+    let mut i = 0;
+    while i < len {
+        let c_abs = Pair::load(abs, i + 2);
+        (f.s_abs * a_abs + t * a_abs.shifted(c_abs)).store(abs, i);
+        a_abs = c_abs;
         i += 2;
     }
 }
@@ -303,23 +321,22 @@ fn level<const FIRST: bool>(f: &Factors, hi: &mut [f64], lo: &mut [f64], abs: &m
 /// The triangle on `b` in buffers of `N ≥ len + 2` values: `(hi, lo, the |b_i| triangle)`.
 #[inline(always)]
 fn looped<const N: usize>(f: &Factors, b: &[f64]) -> Option<(f64, f64, f64)> {
-    let n = b.len() - 1;
+    let len = b.len();
     let (mut hi, mut lo, mut abs) = ([0.0; N], [0.0; N], [0.0; N]);
-    hi[..=n].copy_from_slice(b);
-    let mut covered = f.levels_covered(scan(b, &mut abs[..=n])?);
-    for len in (1..=n).rev() {
-        if covered == 0 {
-            covered = f.levels_covered(finest_ulp_exponent(&hi[..=len]));
-            if covered == 0 {
+    let mut budget = f.level_budget(scan(b, &mut hi[..len], &mut abs[..len])?);
+    for level_len in (1..len).rev() {
+        if budget < f.refinement {
+            budget = f.level_budget(finest_ulp_exponent(&hi[..=level_len]));
+            if budget < f.refinement {
                 return None;
             }
         }
-        if len == n {
-            level::<true>(f, &mut hi, &mut lo, &mut abs, len);
+        if level_len == len - 1 {
+            level::<true>(f, &mut hi, &mut lo, &mut abs, level_len);
         } else {
-            level::<false>(f, &mut hi, &mut lo, &mut abs, len);
+            level::<false>(f, &mut hi, &mut lo, &mut abs, level_len);
         }
-        covered -= 1;
+        budget -= f.refinement;
     }
     Some((hi[0], lo[0], abs[0]))
 }
@@ -329,8 +346,7 @@ fn looped<const N: usize>(f: &Factors, b: &[f64]) -> Option<(f64, f64, f64)> {
 #[inline(always)]
 fn unrolled<const LEN: usize, const N: usize>(f: &Factors, b: &[f64]) -> Option<(f64, f64, f64)> {
     let (mut hi, mut lo, mut abs) = ([0.0; N], [0.0; N], [0.0; N]);
-    hi[..LEN].copy_from_slice(b);
-    if f.levels_covered(scan(b, &mut abs[..LEN])?) < LEN as i64 - 1 {
+    if f.level_budget(scan(b, &mut hi[..LEN], &mut abs[..LEN])?) < (LEN as i64 - 1) * f.refinement {
         return None;
     }
     level::<true>(f, &mut hi, &mut lo, &mut abs, LEN - 1);
