@@ -157,7 +157,8 @@ pub(crate) struct Factor {
 pub(crate) type Halves = (f64, f64);
 /// The halves of a factor's partner as [`Factor::error`] wants them (nothing with an FMA).
 #[cfg(target_feature = "fma")]
-pub(crate) type Halves = ();
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Halves;
 
 impl Factor {
     /// `k` prepared; for a `k` out of Dekker's range (`|k| > 2^995`, non-finite) no
@@ -199,6 +200,7 @@ impl Factor {
         #[cfg(target_feature = "fma")]
         {
             let _ = x;
+            Halves
         }
         #[cfg(not(target_feature = "fma"))]
         {
@@ -212,7 +214,7 @@ impl Factor {
     pub(crate) fn error(&self, x: f64, halves: Halves, p: f64) -> f64 {
         #[cfg(target_feature = "fma")]
         {
-            let () = halves;
+            let Halves = halves;
             self.value.mul_add(x, -p)
         }
         #[cfg(not(target_feature = "fma"))]
