@@ -20,10 +20,11 @@
 //! integers of the result; otherwise, or when `g` is longer than a word, the coordinate is
 //! computed on big integers (`pair_big`).
 //!
-//! The gcds `g` of all neighbouring denominators are computed first, four interleaved
+//! The gcds `g` of all neighbouring denominators are computed first, two interleaved
 //! binary gcds at a time (`gcd::paired_gcds`); the small gcds need residues modulo `α`,
 //! `β` and `n + 1`, taken word by word with independent divisions (`SmallModulus`), and
-//! the divisions by those gcds are exact, done by multiplying by an inverse modulo `2^64`. The tests compare both with `==` against
+//! the divisions by those gcds (and by `g`) are exact, done by multiplying by an inverse
+//! modulo `2^64`. The tests compare both with `==` against
 //! [`BezierCurve::elevate_reference`](crate::BezierCurve::elevate_reference).
 
 use crate::exact::gcd::{self, Part};
