@@ -20,10 +20,11 @@
 //! integers of the result; otherwise, or when `g` is longer than a word, the coordinate is
 //! computed on big integers (`pair_big`).
 //!
-//! The gcds `g` of all neighbouring denominators are computed first, four interleaved
+//! The gcds `g` of all neighbouring denominators are computed first, two interleaved
 //! binary gcds at a time (`gcd::paired_gcds`); the small gcds need residues modulo `α`,
 //! `β` and `n + 1`, taken word by word with independent divisions (`SmallModulus`), and
-//! the divisions by those gcds are exact, done by multiplying by an inverse modulo `2^64`. The tests compare both with `==` against
+//! the divisions by those gcds (and by `g`) are exact, done by multiplying by an inverse
+//! modulo `2^64`. The tests compare both with `==` against
 //! [`BezierCurve::elevate_reference`](crate::BezierCurve::elevate_reference).
 
 use crate::exact::gcd::{self, Part};
@@ -229,6 +230,16 @@ impl WordFraction {
     }
 }
 
+/// `x / k` for a `0 < k < 2^32` known to divide `x`, by [`U256::div_exact_small`]: a
+/// 128-bit division is a library call several times as long.
+fn div_exact_u128(x: u128, k: u32) -> u128 {
+    if k == 1 {
+        return x;
+    }
+    let quotient = U256([x as u64, (x >> 64) as u64, 0, 0]).div_exact_small(k).0;
+    u128::from(quotient[0]) | (u128::from(quotient[1]) << 64)
+}
+
 /// `(α x + β y) / total` in lowest terms, on words, given `g = gcd(den x, den y)`; `None`
 /// when `g` does not fit 32 bits (or a bound is exceeded), for the big-integer path.
 fn pair_words(
@@ -243,7 +254,7 @@ fn pair_words(
     let (mut dx, mut dy) = if g == 1 {
         (x.den, y.den)
     } else {
-        (x.den / u128::from(g), y.den / u128::from(g))
+        (div_exact_u128(x.den, g), div_exact_u128(y.den, g))
     };
     // t = α x dy + β y dx, with signs.
     let u = U256::product(x.num, dy).times(alpha.k)?;
@@ -263,8 +274,8 @@ fn pair_words(
     let (hx, hy) = (alpha.gcd_with(alpha.of_u128(dx)), beta.gcd_with(beta.of_u128(dy)));
     if hx * hy != 1 {
         t = t.div_exact_small(hx * hy);
-        dx /= u128::from(hx);
-        dy /= u128::from(hy);
+        dx = div_exact_u128(dx, hx);
+        dy = div_exact_u128(dy, hy);
     }
     let mut shared = g;
     if g != 1 {
@@ -399,6 +410,14 @@ mod tests {
             let got = gcd::paired_gcds(input.iter().copied());
             let want: Vec<u128> = input.iter().map(|p| p.map_or(0, |(a, b)| gcd_u128(a, b))).collect();
             prop_assert_eq!(got, want);
+        }
+
+        #[test]
+        fn exact_division_of_a_double_word(q in any::<u128>(), shift in 0u32..128, k in 1u32..) {
+            // Quotients of every length, the product below 2^128.
+            let q = (q >> shift) >> 32;
+            prop_assert_eq!(div_exact_u128(q * u128::from(k), k), q);
+            prop_assert_eq!(div_exact_u128(q, 1), q);
         }
 
         #[test]

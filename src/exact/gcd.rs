@@ -34,48 +34,73 @@ fn to_dashu(x: &BigUint) -> dashu_int::UBig {
 }
 
 /// The gcds of `LANES` pairs of nonzero double words, computed together: the binary gcd is
-/// a chain of dependent steps that leaves most of the processor idle, and four independent
-/// chains interleaved in one loop fill it (about 1.5× the throughput of one at a time on
-/// 100-bit denominators; `benches/exact.rs`, `exact_big/elevate`). A finished lane keeps
-/// its value: with `b = 0`, the step below takes `a` for the shifted `b`, leaving `a` and
-/// a zero difference.
+/// a chain of dependent steps that leaves most of the processor idle, and independent
+/// chains interleaved in one loop fill it (`benches/exact.rs`, `exact_big/elevate`).
+///
+/// Each lane holds two odd numbers `a`, `b` (or `b = 0` once finished) as high and low
+/// words, and one step takes `a ← min(a, b)`, `b ← |b − a|` without its trailing zeros:
+/// the difference of two odd numbers is even and nonzero below 2^128 unless they are equal,
+/// so its trailing zeros are in the low word but for a low word of zeros (a branch almost
+/// never taken), and the shift is a funnel shift by less than 64 — no selects between a
+/// shift by less and by more than a word, no 128-bit trailing-zero count. A finished lane
+/// keeps its value by a select.
 fn gcd_u128_lanes<const LANES: usize>(first: [u128; LANES], second: [u128; LANES]) -> [u128; LANES] {
     let mut shift = [0u32; LANES];
-    let mut a = [0u128; LANES];
-    let mut b = second;
+    let (mut a_high, mut a_low) = ([0u64; LANES], [0u64; LANES]);
+    let (mut b_high, mut b_low) = ([0u64; LANES], [0u64; LANES]);
     for lane in 0..LANES {
         shift[lane] = (first[lane] | second[lane]).trailing_zeros();
-        a[lane] = first[lane] >> first[lane].trailing_zeros();
+        let a = first[lane] >> first[lane].trailing_zeros();
+        let b = second[lane] >> second[lane].trailing_zeros();
+        (a_high[lane], a_low[lane]) = ((a >> 64) as u64, a as u64);
+        (b_high[lane], b_low[lane]) = ((b >> 64) as u64, b as u64);
     }
     // Double words while any unfinished lane needs them; then single words, a third of the
     // work each. A lane finished here may hold a gcd beyond 64 bits: kept whole.
-    let unfinished_high = |a: &[u128; LANES], b: &[u128; LANES]| {
+    let unfinished_high = |a_high: &[u64; LANES], b_high: &[u64; LANES], b_low: &[u64; LANES]| {
         (0..LANES).fold(0, |high, lane| {
-            if b[lane] == 0 {
-                high
-            } else {
-                high | ((a[lane] | b[lane]) >> 64)
-            }
+            let finished = (b_high[lane] | b_low[lane]) == 0;
+            high | if finished { 0 } else { a_high[lane] | b_high[lane] }
         })
     };
-    while unfinished_high(&a, &b) != 0 {
+    while unfinished_high(&a_high, &b_high, &b_low) != 0 {
         for lane in 0..LANES {
-            let odd = b[lane] >> (b[lane].trailing_zeros() & 127);
-            let odd = if b[lane] == 0 { a[lane] } else { odd };
-            b[lane] = a[lane].abs_diff(odd);
-            a[lane] = a[lane].min(odd);
+            let finished = (b_high[lane] | b_low[lane]) == 0;
+            let (low, borrow_low) = b_low[lane].overflowing_sub(a_low[lane]);
+            let (high, borrow_high) = b_high[lane].overflowing_sub(a_high[lane]);
+            let (high, borrow_carried) = high.overflowing_sub(u64::from(borrow_low));
+            let negative = borrow_high | borrow_carried;
+            // The smaller of the two; a finished lane keeps its `a`.
+            if negative && !finished {
+                (a_high[lane], a_low[lane]) = (b_high[lane], b_low[lane]);
+            }
+            // |b − a| by two's complement when negative.
+            let mask = 0u64.wrapping_sub(u64::from(negative));
+            let (low, carry) = (low ^ mask).overflowing_add(u64::from(negative));
+            let high = (high ^ mask).wrapping_add(u64::from(carry));
+            let (odd_high, odd_low) = if low != 0 {
+                let zeros = low.trailing_zeros();
+                // `(high << 1) << (63 − zeros)`: `high << (64 − zeros)` without a shift by 64.
+                (high >> zeros, (low >> zeros) | ((high << 1) << (63 - zeros)))
+            } else if high != 0 {
+                (0, high >> high.trailing_zeros())
+            } else {
+                (0, 0)
+            };
+            (b_high[lane], b_low[lane]) = if finished { (0, 0) } else { (odd_high, odd_low) };
         }
     }
-    let wide = a;
-    let mut a = a.map(|x| x as u64);
-    let mut b = b.map(|x| x as u64);
+    let (mut a, mut b) = (a_low, b_low);
     loop {
         let mut left = 0;
         for lane in 0..LANES {
-            let odd = b[lane] >> (b[lane].trailing_zeros() & 63);
-            let odd = if b[lane] == 0 { a[lane] } else { odd };
-            b[lane] = a[lane].abs_diff(odd);
-            a[lane] = a[lane].min(odd);
+            let finished = b[lane] == 0;
+            // |b − a| and b − a have the same trailing zeros.
+            let zeros = b[lane].wrapping_sub(a[lane]).trailing_zeros() & 63;
+            let smaller = a[lane].min(b[lane]);
+            let odd = b[lane].abs_diff(a[lane]) >> zeros;
+            a[lane] = if finished { a[lane] } else { smaller };
+            b[lane] = if finished { 0 } else { odd };
             left |= b[lane];
         }
         if left == 0 {
@@ -84,21 +109,18 @@ fn gcd_u128_lanes<const LANES: usize>(first: [u128; LANES], second: [u128; LANES
     }
     let mut out = [0u128; LANES];
     for lane in 0..LANES {
-        // A lane whose gcd exceeds 64 bits finished above with a zero second value.
-        let gcd = if wide[lane] >> 64 != 0 {
-            wide[lane]
-        } else {
-            u128::from(a[lane])
-        };
+        // A lane whose gcd exceeds 64 bits finished above, its high word nonzero.
+        let gcd = (u128::from(a_high[lane]) << 64) | u128::from(a[lane]);
         out[lane] = gcd << shift[lane];
     }
     out
 }
 
-/// `gcd(a, b)` for every pair of nonzero double words given (0 for those not given), four
-/// pairs at a time.
+/// `gcd(a, b)` for every pair of nonzero double words given (0 for those not given), two
+/// pairs at a time: with the word-split steps above, two lanes were faster than four on the
+/// case's 100-bit denominators (docs/performance.md, fifth pass).
 pub(crate) fn paired_gcds(pairs: impl Iterator<Item = Option<(u128, u128)>>) -> Vec<u128> {
-    const LANES: usize = 4;
+    const LANES: usize = 2;
     let mut gcds = Vec::new();
     let mut first = [1u128; LANES];
     let mut second = [1u128; LANES];
@@ -314,7 +336,55 @@ mod tests {
         }
     }
 
+    /// Double words of every shape the lanes meet: one, powers of two, values near 2^110 and
+    /// 2^128, a shared factor wider than a word, and random ones.
+    fn double_word() -> impl Strategy<Value = u128> {
+        prop_oneof![
+            Just(1u128),
+            (0u32..128).prop_map(|k| 1u128 << k),
+            (0u128..1 << 20).prop_map(|d| (1u128 << 110) - 1 - d),
+            (0u128..1 << 20).prop_map(|d| u128::MAX - d),
+            (1u128..)
+                .prop_map(|x| x >> (x % 128) as u32)
+                .prop_filter("nonzero", |&x| x != 0),
+            1u128..,
+        ]
+    }
+
+    /// Pairs of double words: equal, sharing a factor of 1 to 100 bits times small
+    /// cofactors and powers of two, or drawn apart.
+    fn double_word_pair() -> impl Strategy<Value = (u128, u128)> {
+        prop_oneof![
+            double_word().prop_map(|x| (x, x)),
+            (any::<u128>(), 1u32..100, 1u32..1 << 24, 1u32..1 << 24, 0u32..4, 0u32..4).prop_map(
+                |(common, bits, x, y, sx, sy)| {
+                    let common = (common >> (128 - bits)) | (1 << (bits - 1));
+                    ((common * u128::from(x)) << sx, (common * u128::from(y)) << sy)
+                }
+            ),
+            (double_word(), double_word()),
+        ]
+    }
+
     proptest! {
+        /// The interleaved word gcds against num-bigint's gcd, in lanes of two and four and
+        /// through `paired_gcds`.
+        #[test]
+        fn word_gcd_lanes_are_num_bigints(pairs in proptest::collection::vec(double_word_pair(), 4)) {
+            let want: Vec<u128> = pairs
+                .iter()
+                .map(|&(a, b)| Integer::gcd(&BigUint::from(a), &BigUint::from(b)).to_u128().expect("fits"))
+                .collect();
+            let (first, second): (Vec<u128>, Vec<u128>) = pairs.iter().copied().unzip();
+            let four = gcd_u128_lanes::<4>(first.clone().try_into().expect("4"), second.clone().try_into().expect("4"));
+            prop_assert_eq!(&four[..], &want[..]);
+            let two = gcd_u128_lanes::<2>([first[0], first[3]], [second[0], second[3]]);
+            prop_assert_eq!(two, [want[0], want[3]]);
+            let skipping = pairs.iter().enumerate().map(|(i, &p)| (i != 1).then_some(p));
+            let paired = paired_gcds(skipping);
+            prop_assert_eq!(paired, vec![want[0], 0, want[2], want[3]]);
+        }
+
         /// Against num-bigint's own gcd, on numbers with common factors, near-equal lengths
         /// and very different ones, zero among them.
         #[test]
