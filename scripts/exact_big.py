@@ -35,6 +35,8 @@ casteljau's figures are criterion's CPU-time estimates (mean and its 95% interva
 
   python3 scripts/exact_big.py --bench           # runs cargo bench, then Python
   python3 scripts/exact_big.py                   # reads an earlier cargo bench run
+  python3 scripts/exact_big.py --bench --ops elevate derivative --degrees 200
+                                                 # only those operations and degrees
 
 Ratios are peer CPU time / casteljau CPU time: above 1, casteljau is faster.
 """
@@ -336,8 +338,28 @@ def casteljau_estimate(op, n):
     return mean["point_estimate"] / 1e9, ci["lower_bound"] / 1e9, ci["upper_bound"] / 1e9
 
 
-def run_bench():
-    cmd = ["cargo", "bench", "--bench", "exact", "--", "exact_big", "--warm-up-time", "1", "--measurement-time", "2"]
+CURVE_OPS = (
+    "eval",
+    "split_at",
+    "elevate",
+    "derivative",
+    "derivative_at",
+    "to_power",
+    "from_power",
+    "rational_eval",
+    "rational_split_at",
+    "rational_derivative_at",
+)
+SURFACE_OPS = ("surface_eval", "surface_to_power", "surface_derivative_u", "surface_split_u")
+
+
+def run_bench(ops, degrees):
+    """The criterion group exact_big, only its benchmarks of the operations and degrees asked."""
+    surface_degrees = [m for m in SURFACE_DEGREES if any(op in ops for op in SURFACE_OPS)]
+    sizes = "|".join(str(n) for n in sorted(set(degrees) | set(surface_degrees)))
+    names = "|".join(ops)
+    cmd = ["cargo", "bench", "--bench", "exact", "--", f"exact_big/({names})/({sizes})$"]
+    cmd += ["--warm-up-time", "1", "--measurement-time", "2"]
     print("running:", " ".join(cmd), file=sys.stderr)
     subprocess.run(cmd, check=True, cwd=os.path.join(os.path.dirname(__file__), ".."))
 
@@ -356,14 +378,24 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--bench", action="store_true", help="run the criterion group exact_big first")
     parser.add_argument("--degrees", type=int, nargs="*", default=list(DEGREES))
+    parser.add_argument(
+        "--ops",
+        nargs="*",
+        default=list(CURVE_OPS + SURFACE_OPS),
+        metavar="OP",
+        help="only these operations: " + ", ".join(CURVE_OPS + SURFACE_OPS),
+    )
     args = parser.parse_args()
+    unknown = [op for op in args.ops if op not in CURVE_OPS + SURFACE_OPS]
+    if unknown:
+        sys.exit(f"unknown operation(s) {', '.join(unknown)}; known: {', '.join(CURVE_OPS + SURFACE_OPS)}")
     if gmpy2 is None:
         sys.exit("gmpy2 is not installed: pip install gmpy2")
     if args.bench:
-        run_bench()
+        run_bench(args.ops, args.degrees)
 
     rows = []
-    for n in args.degrees:
+    for n in args.degrees if any(op in args.ops for op in CURVE_OPS) else []:
         points, (p, q) = big_case(n)
         dens = {d for pt in points for _, d in pt}
         assert len(dens) == 2 * (n + 1), "denominators must be distinct"
@@ -433,6 +465,8 @@ def main():
         frac_elevated = [elevate(c, Fraction(1)) for c in as_frac]
         assert all(mpq(f.numerator, f.denominator) == g for fs, gs in zip(frac_elevated, elevated) for f, g in zip(fs, gs))
         for op, entries in peers.items():
+            if op not in args.ops:
+                continue
             ours = casteljau_estimate(op, n)
             for name, f in entries:
                 slow = name != "gmpy2 nested" and op in ("eval", "split_at") and n > FRACTION_SPLIT_MAX_DEGREE
@@ -443,7 +477,7 @@ def main():
                 rows.append((op, n, name, (median, low, high), ours))
                 print(f"  {op} n={n} {name}: {fmt_time(median)}", file=sys.stderr)
 
-    for m in SURFACE_DEGREES:
+    for m in SURFACE_DEGREES if any(op in args.ops for op in SURFACE_OPS) else []:
         net, u, v = surface_case(m)
         value = surface_eval_gmpy2(net, u, v)
         # v first then u, against u first then v.
@@ -465,6 +499,8 @@ def main():
             ("surface_derivative_u", "gmpy2 mpq", lambda: surface_derivative_u_mpq(net_mpq)),
             ("surface_split_u", "gmpy2 mpq", lambda: surface_split_u_mpq(net_mpq, u_mpq)),
         ):
+            if op not in args.ops:
+                continue
             median, low, high = cpu_seconds(f)
             rows.append((op, m, name, (median, low, high), casteljau_estimate(op, m)))
             print(f"  {op} m={m}: {fmt_time(median)}", file=sys.stderr)
