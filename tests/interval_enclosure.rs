@@ -187,6 +187,32 @@ fn the_public_eval_is_the_enclosure_at_every_scale() {
     }
 }
 
+/// Points of 1 to 6 coordinates (up to 4 are kept inline in a point, more on the heap): the
+/// public eval's coordinate `k` is the kernel's enclosure of coordinate `k` alone, for a
+/// cubic (its own path) and for other degrees.
+#[test]
+fn every_dimension_is_coordinate_by_coordinate() {
+    let mut rng = Rng(606);
+    for case in 0..600 {
+        let dim = 1 + case % 6;
+        let n = [3, 3, 1, 2, 4, 7][(case / 6) % 6];
+        let coords: Vec<Vec<f64>> = (0..dim)
+            .map(|_| (0..=n).map(|_| coefficient(&mut rng, 1.0)).collect())
+            .collect();
+        let rows: Vec<&[f64]> = coords.iter().map(Vec::as_slice).collect();
+        let t = rng.unit();
+        let p = interval_curve(&rows).eval(&Interval::point(t).unwrap());
+        assert_eq!(p.dim(), dim);
+        for (k, b) in coords.iter().enumerate() {
+            assert_eq!(
+                p.coords()[k],
+                interval_de_casteljau(b, t).unwrap(),
+                "dim {dim}, degree {n}, coordinate {k}"
+            );
+        }
+    }
+}
+
 /// Coefficients that are intervals: the curve over them runs from the curve on the lower
 /// endpoints to the one on the upper endpoints (nonnegative weights on `[0, 1]`), and the
 /// public eval encloses both, and a curve in between; an interval `t` or one outside

@@ -31,6 +31,10 @@ where
     enclose_curve(c, t)
 }
 
+/// Inlined into `eval`, so that an interval cubic whose points have at most 4 coordinates
+/// (a point's inline capacity) is enclosed and its point built in place, without a call and
+/// a copy of the result through memory; every other curve goes out of line.
+#[inline(always)]
 fn enclose_curve<P: VectorSpace + 'static>(c: &Bezier<P>, t: &P::Scalar) -> Option<P>
 where
     P::Scalar: 'static,
@@ -43,24 +47,43 @@ where
     let any = c as &dyn Any;
     if let Some(c) = any.downcast_ref::<Bezier<Point<Interval>>>() {
         let points = c.points();
-        let dim = points[0].dim();
-        // up to 4 coordinates (a point's inline capacity) on the stack, kept inline in the
-        // point as they are: collecting through an iterator cost as much as the kernel
-        let mut coords = [Interval::zero(); 4];
-        if dim <= coords.len() {
-            for (k, x) in coords[..dim].iter_mut().enumerate() {
-                *x = enclose_coordinate(points, k, t)?;
+        if let [p0, p1, p2, p3] = points {
+            // each point's coordinates looked up once
+            let coords = [p0.coords(), p1.coords(), p2.coords(), p3.coords()];
+            let dim = coords[0].len();
+            let mut out = [Interval::zero(); 4];
+            if dim <= out.len() && coords.iter().all(|c| c.len() == dim) {
+                for (k, x) in out[..dim].iter_mut().enumerate() {
+                    *x = enclose_gathered(coords.map(|c| c[k]), t)?;
+                }
+                return cast(Point::from_inline_prefix(out, dim)).ok();
             }
-            return cast(Point::from_inline_prefix(coords, dim)).ok();
         }
-        let coords: Option<Vec<Interval>> = (0..dim).map(|k| enclose_coordinate(points, k, t)).collect();
-        return cast(Point::from_valid(coords?)).ok();
+        return cast(curve_of_points(points, t)?).ok();
     }
     fixed::<P, 1>(any, t)
         .or_else(|| fixed::<P, 2>(any, t))
         .or_else(|| fixed::<P, 3>(any, t))
 }
 
+/// Any other curve of points of run-time dimension, coordinate by coordinate: up to 4
+/// coordinates on the stack, kept inline in the point as they are (collecting through an
+/// iterator cost as much as the kernel).
+#[inline(never)]
+fn curve_of_points(points: &[Point<Interval>], t: f64) -> Option<Point<Interval>> {
+    let dim = points[0].dim();
+    let mut coords = [Interval::zero(); 4];
+    if dim <= coords.len() {
+        for (k, x) in coords[..dim].iter_mut().enumerate() {
+            *x = enclose_coordinate(points, k, t)?;
+        }
+        return Some(Point::from_inline_prefix(coords, dim));
+    }
+    let coords: Option<Vec<Interval>> = (0..dim).map(|k| enclose_coordinate(points, k, t)).collect();
+    Some(Point::from_valid(coords?))
+}
+
+#[inline(never)]
 fn fixed<P: 'static, const D: usize>(any: &dyn Any, t: f64) -> Option<P> {
     let c = any.downcast_ref::<Bezier<PointN<Interval, D>>>()?;
     let mut coords = [Interval::zero(); D];
