@@ -369,60 +369,49 @@ pub(crate) fn over_lcm(values: &[&BigRational]) -> (Vec<BigInt>, Option<ProductT
 /// products.
 const SMALL_TREE_LEAVES: usize = 32;
 
-/// `num / (Π tree's factors · Π bᵉ)` in lowest terms, each `b > 0`.
+/// `num / (Π tree's factors · Π bᵉ)` in lowest terms, each `b > 0`: by [`gcd::reduce`]
+/// part by part, the tree's factors as their product when they are few, else their gcd
+/// with `num` found by the remainder tree first.
 pub(crate) fn reduce_over(num: BigInt, tree: Option<&ProductTree>, powers: &[(&BigInt, usize)]) -> BigRational {
-    if num.is_zero() {
-        return BigRational::new_raw(num, BigInt::one());
-    }
-    let (mut num, mut den) = match tree {
-        None => (num, BigInt::one()),
-        Some(tree) if tree.leaves <= SMALL_TREE_LEAVES => {
-            let g = gcd::gcd_int(&num, tree.product());
-            if g.is_one() {
-                (num, tree.product().clone())
-            } else {
-                (num.div_floor(&g), tree.product().div_floor(&g))
-            }
-        }
-        Some(tree) => {
-            // The remainder tree gives every gcd(num, d_i) at the cost of about one division
-            // of num by Π d_i; their product has the primes num shares with Π d_i
-            // (`gcd::gcd_with_product`).
-            let remainders = tree.remainders(&num);
-            let leaves: Vec<&BigInt> = (0..tree.leaves).map(|i| &tree.nodes[leaf_id(tree.leaves, i)]).collect();
-            // Double words (30-digit denominators): four gcds at a time.
-            let words = gcd::paired_gcds(remainders.iter().zip(&leaves).map(|(r, f)| {
-                let (r, f) = (r.to_u128()?, f.to_u128()?);
-                (r != 0).then_some((r, f))
-            }));
-            let shared: Vec<BigInt> = remainders
-                .iter()
-                .zip(&leaves)
-                .zip(words)
-                .map(|((r, f), word)| {
-                    if word != 0 {
-                        BigInt::from(word)
-                    } else {
-                        gcd::gcd_int(r, f)
-                    }
-                })
-                .filter(|h| !h.is_one())
-                .collect();
-            let g = gcd::gcd_with_product(&num, &shared);
-            if g.is_one() {
-                (num, tree.product().clone())
-            } else {
-                (num.div_floor(&g), tree.product().div_floor(&g))
-            }
+    let powers = powers.iter().map(|&(b, e)| Part::Power(b, e));
+    let tree = match tree {
+        Some(tree) if tree.leaves > SMALL_TREE_LEAVES && !num.is_zero() => tree,
+        few => {
+            let product = few.map(|tree| Part::Number(tree.product()));
+            return gcd::reduce(num, &product.into_iter().chain(powers).collect::<Vec<_>>());
         }
     };
-    // Each factor against what is left of the numerator (see `gcd::reduce`).
-    for (b, e) in powers {
-        let (rest, power_left) = gcd::reduce_by_power(num, b, *e);
-        num = rest;
-        den *= power_left;
-    }
-    BigRational::new_raw(num, den)
+    // The remainder tree gives every gcd(num, d_i) at the cost of about one division of num
+    // by Π d_i; their product has the primes num shares with Π d_i (`gcd::gcd_with_product`).
+    let remainders = tree.remainders(&num);
+    let leaves: Vec<&BigInt> = (0..tree.leaves).map(|i| &tree.nodes[leaf_id(tree.leaves, i)]).collect();
+    // Double words (30-digit denominators): the word gcds interleaved.
+    let words = gcd::paired_gcds(remainders.iter().zip(&leaves).map(|(r, f)| {
+        let (r, f) = (r.to_u128()?, f.to_u128()?);
+        (r != 0).then_some((r, f))
+    }));
+    let shared: Vec<BigInt> = remainders
+        .iter()
+        .zip(&leaves)
+        .zip(words)
+        .map(|((r, f), word)| {
+            if word != 0 {
+                BigInt::from(word)
+            } else {
+                gcd::gcd_int(r, f)
+            }
+        })
+        .filter(|h| !h.is_one())
+        .collect();
+    let g = gcd::gcd_with_product(&num, &shared);
+    let (num, den) = if g.is_one() {
+        (num, tree.product().clone())
+    } else {
+        (num.div_floor(&g), tree.product().div_floor(&g))
+    };
+    // What is left of num is prime to den: the powers against it alone.
+    let (num, power_den) = gcd::reduce(num, &powers.collect::<Vec<_>>()).into_raw();
+    BigRational::new_raw(num, power_den * den)
 }
 
 /// The pre-order index of leaf `i` in a tree of `leaves` leaves.
