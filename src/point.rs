@@ -15,7 +15,7 @@ use std::str::FromStr;
 
 /// Coordinates kept inline, without a heap allocation: enough for a homogeneous point of
 /// space.
-const INLINE_COORDS: usize = 4;
+pub(crate) const INLINE_COORDS: usize = 4;
 
 /// A point (or vector) whose dimension is known at run time, with coordinates of type `T`;
 /// up to four coordinates are stored inline. For a dimension fixed at compile time use

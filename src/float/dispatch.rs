@@ -12,7 +12,7 @@ use super::scratch::with_scratch;
 use crate::curve::Bezier;
 use crate::exact::dispatch::cast;
 use crate::interval::{sign_split_enclosure, sign_split_enclosure_of, Interval};
-use crate::point::Point;
+use crate::point::{Point, INLINE_COORDS};
 use crate::scalar::Ring;
 use crate::space::{PointN, VectorSpace};
 use std::any::{Any, TypeId};
@@ -51,12 +51,8 @@ where
             // each point's coordinates looked up once
             let coords = [p0.coords(), p1.coords(), p2.coords(), p3.coords()];
             let dim = coords[0].len();
-            let mut out = [Interval::zero(); 4];
-            if dim <= out.len() && coords.iter().all(|c| c.len() == dim) {
-                for (k, x) in out[..dim].iter_mut().enumerate() {
-                    *x = enclose_gathered(coords.map(|c| c[k]), t)?;
-                }
-                return cast(Point::from_inline_prefix(out, dim)).ok();
+            if dim <= INLINE_COORDS && coords.iter().all(|c| c.len() == dim) {
+                return cast(inline_point(dim, |k| enclose_gathered(coords.map(|c| c[k]), t))?).ok();
             }
         }
         return cast(curve_of_points(points, t)?).ok();
@@ -66,21 +62,27 @@ where
         .or_else(|| fixed::<P, 3>(any, t))
 }
 
-/// Any other curve of points of run-time dimension, coordinate by coordinate: up to 4
-/// coordinates on the stack, kept inline in the point as they are (collecting through an
-/// iterator cost as much as the kernel).
+/// Any other curve of points of run-time dimension, coordinate by coordinate.
 #[inline(never)]
 fn curve_of_points(points: &[Point<Interval>], t: f64) -> Option<Point<Interval>> {
     let dim = points[0].dim();
-    let mut coords = [Interval::zero(); 4];
-    if dim <= coords.len() {
-        for (k, x) in coords[..dim].iter_mut().enumerate() {
-            *x = enclose_coordinate(points, k, t)?;
-        }
-        return Some(Point::from_inline_prefix(coords, dim));
+    if dim <= INLINE_COORDS {
+        return inline_point(dim, |k| enclose_coordinate(points, k, t));
     }
     let coords: Option<Vec<Interval>> = (0..dim).map(|k| enclose_coordinate(points, k, t)).collect();
     Some(Point::from_valid(coords?))
+}
+
+/// The point of `dim ≤ INLINE_COORDS` coordinates `coordinate(k)`: on the stack, kept
+/// inline in the point as they are (collecting through an iterator cost as much as the
+/// kernel).
+#[inline(always)]
+fn inline_point(dim: usize, mut coordinate: impl FnMut(usize) -> Option<Interval>) -> Option<Point<Interval>> {
+    let mut coords = [Interval::zero(); INLINE_COORDS];
+    for (k, x) in coords[..dim].iter_mut().enumerate() {
+        *x = coordinate(k)?;
+    }
+    Some(Point::from_inline_prefix(coords, dim))
 }
 
 #[inline(never)]
