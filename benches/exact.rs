@@ -40,10 +40,7 @@ fn exact_eval(c: &mut Criterion) {
     let t = BigRational::from_ratio(1, 3).expect("nonzero");
     let t_small = SmallRational::from(&t);
     let mut group = c.benchmark_group("exact_eval");
-    group
-        .sample_size(10)
-        .measurement_time(Duration::from_secs(2))
-        .warm_up_time(Duration::from_millis(300));
+    short_samples(&mut group);
     for n in [3usize, 10, 20, 50, 200] {
         let exact = curve(n);
         let small = exact.try_map(SmallRational::from_rational).expect("exact");
@@ -68,10 +65,7 @@ fn exact_eval(c: &mut Criterion) {
 /// or at `k/n`, also as `SmallRational`s, what the engine reads) and handed out.
 fn prove_hot(c: &mut Criterion) {
     let mut group = c.benchmark_group("prove_hot");
-    group
-        .sample_size(10)
-        .measurement_time(Duration::from_secs(2))
-        .warm_up_time(Duration::from_millis(300));
+    short_samples(&mut group);
     for n in [3usize, 10, 20] {
         let d = n as i64;
         let points: Vec<BigRational> = (0..=d).map(|k| BigRational::from_ratio(k, d).expect("d ≥ 1")).collect();
@@ -283,10 +277,7 @@ fn exact_gcd(c: &mut Criterion) {
     use num_bigint::BigUint;
     use num_integer::Integer;
     let mut group = c.benchmark_group("exact_gcd");
-    group
-        .sample_size(10)
-        .measurement_time(Duration::from_secs(2))
-        .warm_up_time(Duration::from_millis(300));
+    short_samples(&mut group);
     let mut state = 0x9E37_79B9_7F4A_7C15u64;
     let mut digits = |n: usize| -> BigUint {
         let words: Vec<u32> = (0..n)
@@ -312,6 +303,14 @@ fn exact_gcd(c: &mut Criterion) {
         });
     }
     group.finish();
+}
+
+/// The sampling of three groups: 10 samples over 2 s after 300 ms of warm-up.
+fn short_samples<M: criterion::measurement::Measurement>(group: &mut criterion::BenchmarkGroup<'_, M>) {
+    group
+        .sample_size(10)
+        .measurement_time(Duration::from_secs(2))
+        .warm_up_time(Duration::from_millis(300));
 }
 
 criterion_group!(benches, exact_eval, prove_hot, exact_big, exact_gcd);
