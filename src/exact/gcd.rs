@@ -21,11 +21,11 @@ pub fn gcd(a: &BigUint, b: &BigUint) -> BigUint {
         return BigUint::from(gcd_u128(x, y));
     }
     let g = dashu_int::ops::Gcd::gcd(to_dashu(a), to_dashu(b));
-    BigUint::from_slice(
-        &g.as_words()
+    BigUint::new(
+        g.as_words()
             .iter()
             .flat_map(|&w| [w as u32, (w >> 32) as u32])
-            .collect::<Vec<u32>>(),
+            .collect(),
     )
 }
 
