@@ -503,34 +503,51 @@ pub fn interval_de_casteljau(b: &[f64], t: f64) -> Result<Interval> {
 /// `tests/interval_enclosure.rs` checks the enclosure against the exact rational value.
 #[inline]
 pub(crate) fn sign_split_enclosure(b: &[f64], t: f64) -> Option<Interval> {
-    let n = b.len().checked_sub(1)?;
+    sign_split_enclosure_by(b.len(), || b.iter().copied(), t)
+}
+
+/// [`sign_split_enclosure`] on the `len` coefficients `coefficients()` yields, each read
+/// once (and again only when an endpoint overflowed): the public `eval` of an interval
+/// curve reads them from its points without a copy.
+#[inline(always)]
+pub(crate) fn sign_split_enclosure_by<I: Iterator<Item = f64>>(
+    len: usize,
+    coefficients: impl Fn() -> I,
+    t: f64,
+) -> Option<Interval> {
+    let n = len.checked_sub(1)?;
     if n == 0 {
-        let x = b[0];
+        let x = coefficients().next()?;
         return x.is_finite().then_some(Interval { lo: x, hi: x });
     }
     // low degrees on arrays of constant length: unrolled, in registers
-    let [pos, neg] = match b.len() {
-        2 => sign_split_triangle(&mut [[0.0; 2]; 2], b, t),
-        3 => sign_split_triangle(&mut [[0.0; 2]; 3], b, t),
-        4 => sign_split_triangle(&mut [[0.0; 2]; 4], b, t),
-        5 => sign_split_triangle(&mut [[0.0; 2]; 5], b, t),
-        len => with_scratch(len, [0.0; 2], |buf| sign_split_triangle(buf, b, t)),
+    let [pos, neg] = match len {
+        2 => sign_split_triangle(&mut [[0.0; 2]; 2], coefficients(), t),
+        3 => sign_split_triangle(&mut [[0.0; 2]; 3], coefficients(), t),
+        4 => sign_split_triangle(&mut [[0.0; 2]; 4], coefficients(), t),
+        5 => sign_split_triangle(&mut [[0.0; 2]; 5], coefficients(), t),
+        len => with_scratch(len, [0.0; 2], |buf| sign_split_triangle(buf, coefficients(), t)),
     };
-    rounded_outward(b, n, pos, neg)
+    rounded_outward(coefficients, n, pos, neg)
 }
 
 /// [`sign_split_enclosure`] on `N ≥ 2` coefficients known at compile time, inlined where
 /// it is called (the public `eval` of an interval cubic).
 #[inline(always)]
 pub(crate) fn sign_split_enclosure_of<const N: usize>(b: &[f64; N], t: f64) -> Option<Interval> {
-    let [pos, neg] = sign_split_triangle(&mut [[0.0; 2]; N], b, t);
-    rounded_outward(b, N - 1, pos, neg)
+    let [pos, neg] = sign_split_triangle(&mut [[0.0; 2]; N], b.iter().copied(), t);
+    rounded_outward(|| b.iter().copied(), N - 1, pos, neg)
 }
 
 /// The enclosure of [`sign_split_enclosure`] from the triangles' values `P̂⁺`, `P̂⁻` at
 /// degree `n ≥ 1`.
 #[inline(always)]
-fn rounded_outward(b: &[f64], n: usize, pos: f64, neg: f64) -> Option<Interval> {
+fn rounded_outward<I: Iterator<Item = f64>>(
+    coefficients: impl Fn() -> I,
+    n: usize,
+    pos: f64,
+    neg: f64,
+) -> Option<Interval> {
     // Rounded, with R = γ_{3n}·m + 4nη(1 + γ_{3n}) the reach above (m = P̂⁺ + P̂⁻ exactly):
     // d = fl(P̂⁺ − P̂⁻) is off by at most u·m (m ≥ |P̂⁺ − P̂⁻|, so |d| ≤ (1 + u)m), and
     // fl(d ± r) by at most u(|d| + r), so `d ± r` rounded to nearest are outward enough when
@@ -552,19 +569,26 @@ fn rounded_outward(b: &[f64], n: usize, pos: f64, neg: f64) -> Option<Interval> 
     if lo.is_finite() && hi.is_finite() {
         return Some(Interval { lo, hi });
     }
-    clamped_to_coefficients(b, pos, neg, lo, hi)
+    clamped_to_coefficients(coefficients(), pos, neg, lo, hi)
 }
 
 /// The enclosure `[lo, hi]` of [`sign_split_enclosure`] when an endpoint overflowed (or an
 /// input is not finite: `None`): for `t ∈ [0, 1]` the value is a convex combination of the
 /// `b_i`, so within their least and largest.
 #[cold]
-fn clamped_to_coefficients(b: &[f64], pos: f64, neg: f64, lo: f64, hi: f64) -> Option<Interval> {
+fn clamped_to_coefficients(
+    coefficients: impl Iterator<Item = f64>,
+    pos: f64,
+    neg: f64,
+    lo: f64,
+    hi: f64,
+) -> Option<Interval> {
     if !(pos.is_finite() && neg.is_finite()) {
         return None;
     }
-    let min = b.iter().fold(f64::INFINITY, |m, x| m.min(*x));
-    let max = b.iter().fold(f64::NEG_INFINITY, |m, x| m.max(*x));
+    let (min, max) = coefficients.fold((f64::INFINITY, f64::NEG_INFINITY), |(min, max), x| {
+        (min.min(x), max.max(x))
+    });
     Some(Interval {
         lo: lo.max(min),
         hi: hi.min(max),
@@ -597,12 +621,13 @@ fn reach_factor(n: usize) -> f64 {
 /// of [`sign_split_enclosure`] (`(4n + 1) · 2^−1074 < 2^−1058` up to degree 4096).
 const NO_UNDERFLOW_BELOW: f64 = f64::from_bits((1023 - 1000) << 52);
 
-/// De Casteljau's convex form on the pairs `(b⁺_i, b⁻_i)` of `b` in `buf` (as long as
-/// `b`), both triangles in one loop (two independent lanes): `[P̂⁺, P̂⁻]`.
+/// De Casteljau's convex form on the pairs `(b⁺_i, b⁻_i)` of the coefficients `b` in `buf`
+/// (as many as there are coefficients), both triangles in one loop (two independent
+/// lanes): `[P̂⁺, P̂⁻]`.
 #[inline(always)]
-fn sign_split_triangle(buf: &mut [[f64; 2]], b: &[f64], t: f64) -> [f64; 2] {
+fn sign_split_triangle(buf: &mut [[f64; 2]], b: impl Iterator<Item = f64>, t: f64) -> [f64; 2] {
     let s = 1.0 - t;
-    for (x, &c) in buf.iter_mut().zip(b) {
+    for (x, c) in buf.iter_mut().zip(b) {
         // `max` drops a NaN; `p − c` brings it back (and makes +∞'s negative part NaN)
         let p = c.max(0.0);
         *x = [p, p - c];

@@ -8,14 +8,14 @@
 //! The choice is by type identity ([`Any`]), as in `crate::exact::dispatch`: a constant once
 //! the generic code is instantiated, so the code for other scalars keeps no trace of it.
 
-use super::scratch::with_scratch;
 use crate::curve::Bezier;
 use crate::exact::dispatch::cast;
-use crate::interval::{sign_split_enclosure, sign_split_enclosure_of, Interval};
+use crate::interval::{sign_split_enclosure_by, sign_split_enclosure_of, Interval};
 use crate::point::{Point, INLINE_COORDS};
 use crate::scalar::Ring;
 use crate::space::{PointN, VectorSpace};
 use std::any::{Any, TypeId};
+use std::cell::Cell;
 
 /// `b(t)` by the sign-split enclosure when the points are intervals and `t` is a point of
 /// `[0, 1]`; `None` otherwise, and when a coefficient is not finite (the generic algorithm
@@ -98,27 +98,27 @@ fn fixed<P: 'static, const D: usize>(any: &dyn Any, t: f64) -> Option<P> {
 /// Coordinate `k` of the curve on `points` at `t ∈ [0, 1]`: the Bernstein weights are
 /// nonnegative there, so the values over the coefficients' intervals run from the curve on
 /// their lower endpoints to the curve on their upper ones, each enclosed by
-/// [`sign_split_enclosure`] (once when every coefficient is a point). A cubic's endpoints
+/// [`sign_split_enclosure_by`] (once when every coefficient is a point). A cubic's endpoints
 /// are gathered into arrays of constant length, so that the kernel is inlined for it.
 #[inline]
 fn enclose_coordinate<Q: VectorSpace<Scalar = Interval>>(points: &[Q], k: usize, t: f64) -> Option<Interval> {
     match points {
         [p0, p1, p2, p3] => enclose_gathered([p0, p1, p2, p3].map(|p| p.coords()[k]), t),
-        _ => with_scratch(points.len(), 0.0, |b| {
-            let mut points_only = true;
-            for (x, p) in b.iter_mut().zip(points) {
-                let c = p.coords()[k];
-                *x = c.lo();
-                points_only &= c.lo() == c.hi();
-            }
-            let low = sign_split_enclosure(b, t)?;
-            joined(low, points_only, || {
-                for (x, p) in b.iter_mut().zip(points) {
-                    *x = p.coords()[k].hi();
-                }
-                sign_split_enclosure(b, t)
+        _ => {
+            // read where the kernel reads them, with no copy in between
+            let points_only = Cell::new(true);
+            let lower = || {
+                points.iter().map(|p| {
+                    let c = p.coords()[k];
+                    points_only.set(points_only.get() & (c.lo() == c.hi()));
+                    c.lo()
+                })
+            };
+            let low = sign_split_enclosure_by(points.len(), lower, t)?;
+            joined(low, points_only.get(), || {
+                sign_split_enclosure_by(points.len(), || points.iter().map(|p| p.coords()[k].hi()), t)
             })
-        }),
+        }
     }
 }
 
