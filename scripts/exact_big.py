@@ -30,6 +30,10 @@ The other public exact operations, up to degree 200, each against its plain gmpy
   surface_split_u   de Casteljau's steps on each column, on mpq.
 Every Python result is checked against the others before it counts.
 
+With elevate, the table is followed by elevate's floor: the time to clone its result's
+points (allocations and digits, no arithmetic), which any elevation returning BigRational
+points spends at least, as a share of a fifth of the gmpy2 mpq time.
+
 casteljau's figures are criterion's CPU-time estimates (mean and its 95% interval) from
 <target>/criterion/exact_big; --bench runs the group first:
 
@@ -357,7 +361,8 @@ def run_bench(ops, degrees):
     """The criterion group exact_big, only its benchmarks of the operations and degrees asked."""
     surface_degrees = [m for m in SURFACE_DEGREES if any(op in ops for op in SURFACE_OPS)]
     sizes = "|".join(str(n) for n in sorted(set(degrees) | set(surface_degrees)))
-    names = "|".join(ops)
+    # elevate's floor runs with it (see the note under the table)
+    names = "|".join(list(ops) + (["elevate_output_floor"] if "elevate" in ops else []))
     cmd = ["cargo", "bench", "--bench", "exact", "--", f"exact_big/({names})/({sizes})$"]
     cmd += ["--warm-up-time", "1", "--measurement-time", "2"]
     print("running:", " ".join(cmd), file=sys.stderr)
@@ -514,6 +519,12 @@ def main():
             theirs_text = f"{fmt_time(theirs[0])} [{fmt_time(theirs[1])}, {fmt_time(theirs[2])}]"
             ratio = "-" if ours is None else f"{theirs[0] / ours[0]:.2f}×"
         print(f"{op:<22} {n:>5}  {ours_text:<32} {name:<15} {theirs_text:<32} {ratio:>8}")
+    floors = [(n, theirs, casteljau_estimate("elevate_output_floor", n)) for op, n, name, theirs, _ in rows
+              if op == "elevate" and name == "gmpy2 mpq" and theirs is not None]
+    for n, theirs, floor in floors:
+        if floor is not None:
+            print(f"elevate n={n}: the result's points cloned, no arithmetic (elevate_output_floor): "
+                  f"{fmt_time(floor[0])}, {floor[0] / (theirs[0] / 5):.2f} of gmpy2 mpq / 5 ({fmt_time(theirs[0] / 5)})")
 
 
 if __name__ == "__main__":
