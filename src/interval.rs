@@ -621,21 +621,29 @@ fn reach_factor(n: usize) -> f64 {
 /// of [`sign_split_enclosure`] (`(4n + 1) · 2^−1074 < 2^−1058` up to degree 4096).
 const NO_UNDERFLOW_BELOW: f64 = f64::from_bits((1023 - 1000) << 52);
 
-/// De Casteljau's convex form on the pairs `(b⁺_i, b⁻_i)` of the coefficients `b` in `buf`
-/// (as many as there are coefficients), both triangles in one loop (two independent
-/// lanes): `[P̂⁺, P̂⁻]`.
+/// De Casteljau's convex form on the pairs `(b⁺_i, b⁻_i)` of the coefficients `b` (at least
+/// two) in `buf` (as many as there are coefficients), both triangles in one loop (two
+/// independent lanes): `[P̂⁺, P̂⁻]`. The first level is computed as the coefficients are
+/// split, from pairs held in registers: a pair stored as two halves and read back whole
+/// waits for both stores.
 #[inline(always)]
-fn sign_split_triangle(buf: &mut [[f64; 2]], b: impl Iterator<Item = f64>, t: f64) -> [f64; 2] {
+fn sign_split_triangle(buf: &mut [[f64; 2]], mut b: impl Iterator<Item = f64>, t: f64) -> [f64; 2] {
     let s = 1.0 - t;
-    for (x, c) in buf.iter_mut().zip(b) {
-        // `max` drops a NaN; `p − c` brings it back (and makes +∞'s negative part NaN)
+    let node = |a: [f64; 2], c: [f64; 2]| [s * a[0] + t * c[0], s * a[1] + t * c[1]];
+    // `max` drops a NaN; `p − c` brings it back (and makes +∞'s negative part NaN)
+    let split = |c: f64| {
         let p = c.max(0.0);
-        *x = [p, p - c];
+        [p, p - c]
+    };
+    let mut a = split(b.next().unwrap_or(0.0));
+    for (x, c) in buf.iter_mut().zip(b) {
+        let c = split(c);
+        *x = node(a, c);
+        a = c;
     }
-    for len in (1..buf.len()).rev() {
+    for len in (1..buf.len().saturating_sub(1)).rev() {
         for i in 0..len {
-            let (a, c) = (buf[i], buf[i + 1]);
-            buf[i] = [s * a[0] + t * c[0], s * a[1] + t * c[1]];
+            buf[i] = node(buf[i], buf[i + 1]);
         }
     }
     buf[0]
