@@ -641,10 +641,22 @@ fn sign_split_triangle(buf: &mut [[f64; 2]], mut b: impl Iterator<Item = f64>, t
         *x = node(a, c);
         a = c;
     }
-    for len in (1..buf.len().saturating_sub(1)).rev() {
-        for i in 0..len {
-            buf[i] = node(buf[i], buf[i + 1]);
+    // then two levels a sweep, the middle level in registers: a level's values stored and
+    // loaded back once for every two levels
+    let mut values = buf.len().saturating_sub(1);
+    while values >= 3 {
+        let (mut left, mut right) = (buf[0], buf[1]);
+        let mut middle = node(left, right);
+        for i in 0..values - 2 {
+            (left, right) = (right, buf[i + 2]);
+            let next = node(left, right);
+            buf[i] = node(middle, next);
+            middle = next;
         }
+        values -= 2;
+    }
+    if values == 2 {
+        buf[0] = node(buf[0], buf[1]);
     }
     buf[0]
 }
