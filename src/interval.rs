@@ -535,8 +535,7 @@ pub(crate) fn sign_split_enclosure_by<I: Iterator<Item = f64>>(
 /// it is called (the public `eval` of an interval cubic).
 #[inline(always)]
 pub(crate) fn sign_split_enclosure_of<const N: usize>(b: &[f64; N], t: f64) -> Option<Interval> {
-    let [pos, neg] = sign_split_triangle(&mut [[0.0; 2]; N], b.iter().copied(), t);
-    rounded_outward(|| b.iter().copied(), N - 1, pos, neg)
+    sign_split_enclosure_by(N, || b.iter().copied(), t)
 }
 
 /// The enclosure of [`sign_split_enclosure`] from the triangles' values `P̂⁺`, `P̂⁻` at
