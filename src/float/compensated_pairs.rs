@@ -4,7 +4,8 @@
 //! x86-64 target. Nodes `i` and `i + 1` of a level read the values `[x_i, x_{i+1}]` and
 //! `[x_{i+1}, x_{i+2}]`: the pair loaded for the next step, shifted by one. A level of `len`
 //! nodes takes `⌈len/2⌉` steps; an odd level's last step computes one value too many, in
-//! the buffers' padding.
+//! the buffers' padding. Where the target has FMA (and so AVX), a cubic runs on values held
+//! in registers instead, its first level's three nodes in one step of four lanes.
 //!
 //! Three things make it cheaper than the node-by-node loop, none of them changing a bit:
 //!
@@ -64,6 +65,9 @@ pub(super) fn compensated_in_unit_interval(b: &[f64], t: f64) -> Option<(f64, f6
     let (hi, lo, abs) = match b.len() {
         2 => unrolled::<2, 4>(&factors, b),
         3 => unrolled::<3, 6>(&factors, b),
+        #[cfg(target_feature = "fma")]
+        4 => cubic(&factors, b),
+        #[cfg(not(target_feature = "fma"))]
         4 => unrolled::<4, 6>(&factors, b),
         5 => unrolled::<5, 8>(&factors, b),
         len if len + 2 <= 8 => looped::<8>(&factors, b),
@@ -75,69 +79,85 @@ pub(super) fn compensated_in_unit_interval(b: &[f64], t: f64) -> Option<(f64, f6
     Some((res, UnitBound::of(n, abs, res)))
 }
 
-/// Two floats, operated on lane by lane.
+/// `W` floats, operated on lane by lane: two map to an SSE2 register, four to an AVX one.
 #[derive(Clone, Copy)]
-struct Pair([f64; 2]);
+struct Lanes<const W: usize>([f64; W]);
 
-impl Pair {
+/// Two lanes, the width of every level on the default target.
+type Pair = Lanes<2>;
+
+impl<const W: usize> Lanes<W> {
     #[inline(always)]
     fn splat(x: f64) -> Self {
-        Pair([x, x])
+        Lanes([x; W])
     }
 
     #[inline(always)]
     fn load(b: &[f64], i: usize) -> Self {
-        Pair([b[i], b[i + 1]])
+        Lanes(std::array::from_fn(|j| b[i + j]))
     }
 
     #[inline(always)]
     fn store(self, b: &mut [f64], i: usize) {
-        b[i] = self.0[0];
-        b[i + 1] = self.0[1];
+        b[i..i + W].copy_from_slice(&self.0);
     }
 
-    /// `[self₁, next₀]`: the pair one position further along.
+    /// `[self₁, …, self_{W−1}, next₀]`: the lanes one position further along.
     #[inline(always)]
-    fn shifted(self, next: Pair) -> Self {
-        Pair([self.0[1], next.0[0]])
+    fn shifted(self, next: Self) -> Self {
+        Lanes(std::array::from_fn(
+            |j| if j + 1 < W { self.0[j + 1] } else { next.0[0] },
+        ))
+    }
+
+    /// The `V` lanes from lane `i` on.
+    #[cfg(target_feature = "fma")]
+    #[inline(always)]
+    fn part<const V: usize>(self, i: usize) -> Lanes<V> {
+        Lanes(std::array::from_fn(|j| self.0[i + j]))
     }
 
     #[inline(always)]
     fn map(self, f: impl Fn(f64) -> f64) -> Self {
-        Pair([f(self.0[0]), f(self.0[1])])
+        Lanes(self.0.map(f))
+    }
+
+    #[inline(always)]
+    fn zip(self, o: Self, f: impl Fn(f64, f64) -> f64) -> Self {
+        Lanes(std::array::from_fn(|j| f(self.0[j], o.0[j])))
     }
 }
 
-impl Add for Pair {
-    type Output = Pair;
+impl<const W: usize> Add for Lanes<W> {
+    type Output = Self;
     #[inline(always)]
-    fn add(self, o: Pair) -> Pair {
-        Pair([self.0[0] + o.0[0], self.0[1] + o.0[1]])
+    fn add(self, o: Self) -> Self {
+        self.zip(o, |x, y| x + y)
     }
 }
 
-impl Sub for Pair {
-    type Output = Pair;
+impl<const W: usize> Sub for Lanes<W> {
+    type Output = Self;
     #[inline(always)]
-    fn sub(self, o: Pair) -> Pair {
-        Pair([self.0[0] - o.0[0], self.0[1] - o.0[1]])
+    fn sub(self, o: Self) -> Self {
+        self.zip(o, |x, y| x - y)
     }
 }
 
-impl Mul for Pair {
-    type Output = Pair;
+impl<const W: usize> Mul for Lanes<W> {
+    type Output = Self;
     #[inline(always)]
-    fn mul(self, o: Pair) -> Pair {
-        Pair([self.0[0] * o.0[0], self.0[1] * o.0[1]])
+    fn mul(self, o: Self) -> Self {
+        self.zip(o, |x, y| x * y)
     }
 }
 
 /// A factor of every product (`s` or `t`), split by Veltkamp for Dekker's product.
 #[derive(Clone, Copy)]
 struct Factor {
-    value: Pair,
+    value: f64,
     #[cfg(not(target_feature = "fma"))]
-    halves: (Pair, Pair),
+    halves: (f64, f64),
 }
 
 impl Factor {
@@ -146,9 +166,9 @@ impl Factor {
         #[cfg(not(target_feature = "fma"))]
         let (h, l) = split(k);
         Factor {
-            value: Pair::splat(k),
+            value: k,
             #[cfg(not(target_feature = "fma"))]
-            halves: (Pair::splat(h), Pair::splat(l)),
+            halves: (h, l),
         }
     }
 
@@ -156,22 +176,19 @@ impl Factor {
     /// gives): Dekker's product on the two-operation split of `x`, or one fused
     /// multiply-add.
     #[inline(always)]
-    fn error(&self, x: Pair, p: Pair) -> Pair {
+    fn error<const W: usize>(&self, x: Lanes<W>, p: Lanes<W>) -> Lanes<W> {
         #[cfg(not(target_feature = "fma"))]
         {
             /// All but the last 26 bits of a float's significand.
             const HIGH_27_BITS: u64 = !((1 << 26) - 1);
-            let (kh, kl) = self.halves;
+            let (kh, kl) = (Lanes::splat(self.halves.0), Lanes::splat(self.halves.1));
             let xh = x.map(|v| f64::from_bits(v.to_bits() & HIGH_27_BITS));
             let xl = x - xh;
             ((kh * xh - p) + kh * xl + kl * xh) + kl * xl
         }
         #[cfg(target_feature = "fma")]
         {
-            Pair([
-                self.value.0[0].mul_add(x.0[0], -p.0[0]),
-                self.value.0[1].mul_add(x.0[1], -p.0[1]),
-            ])
+            x.zip(p, |x, p| self.value.mul_add(x, -p))
         }
     }
 }
@@ -181,8 +198,8 @@ impl Factor {
 struct Factors {
     s: Factor,
     t: Factor,
-    rho: Pair,
-    s_abs: Pair,
+    rho: f64,
+    s_abs: f64,
     /// `−L ≥ 52`: how much a level may refine the grid of the values (in exponent).
     refinement: i64,
 }
@@ -197,8 +214,8 @@ impl Factors {
         Factors {
             s: Factor::new(s),
             t: Factor::new(t),
-            rho: Pair::splat(rho),
-            s_abs: Pair::splat(next_up(s + rho.abs())),
+            rho,
+            s_abs: next_up(s + rho.abs()),
             refinement: exponent(s).max(exponent(t)).min(1074),
         }
     }
@@ -254,12 +271,12 @@ fn scan(b: &[f64], hi: &mut [f64], abs: &mut [f64]) -> Option<i64> {
     let mut copies = hi.chunks_exact_mut(2);
     let mut out = abs.chunks_exact_mut(2);
     for ((x, h), o) in (&mut pairs).zip(&mut copies).zip(&mut out) {
-        let x = Pair([x[0], x[1]]);
+        let x = Pair::load(x, 0);
         x.store(h, 0);
         let a = x.map(f64::abs);
         a.store(o, 0);
         sum = sum + a;
-        least = Pair([smaller(a.0[0], least.0[0]), smaller(a.0[1], least.0[1])]);
+        least = a.zip(least, smaller);
     }
     let (mut sum, mut least) = (sum.0[0] + sum.0[1], smaller(least.0[0], least.0[1]));
     if let ([x], [h], [o]) = (pairs.remainder(), copies.into_remainder(), out.into_remainder()) {
@@ -279,43 +296,88 @@ fn scan(b: &[f64], hi: &mut [f64], abs: &mut [f64]) -> Option<i64> {
     })
 }
 
-/// One level in place: `len` nodes from `hi, lo, abs[0..=len]`, two per step; the buffers
-/// hold `len + 3` values at least (the last step reads one pair past the level).
+/// One level in place: `len` nodes from `hi, lo, abs[0..=len]`, `W` per step; the buffers
+/// hold `len + 2W − 1` values at least (the last step reads `W` values past its own).
 #[inline(always)]
-fn level<const FIRST: bool>(f: &Factors, hi: &mut [f64], lo: &mut [f64], abs: &mut [f64], len: usize) {
-    let (s, t) = (f.s.value, f.t.value);
-    let (mut a, mut a_lo) = (Pair::load(hi, 0), Pair::load(lo, 0));
+fn level<const FIRST: bool, const W: usize>(f: &Factors, hi: &mut [f64], lo: &mut [f64], abs: &mut [f64], len: usize) {
+    let (mut a, mut a_lo) = (Lanes::<W>::load(hi, 0), Lanes::<W>::load(lo, 0));
     let mut i = 0;
     while i < len {
-        let (c, c_lo) = (Pair::load(hi, i + 2), Pair::load(lo, i + 2));
-        let (b, b_lo) = (a.shifted(c), a_lo.shifted(c_lo));
-        let p1 = s * a;
-        let e1 = f.s.error(a, p1);
-        let p2 = t * b;
-        let e2 = f.t.error(b, p2);
-        let sum = p1 + p2;
-        let bb = sum - p1;
-        let e3 = (p1 - (sum - bb)) + (p2 - bb);
-        let w = e1 + e2 + e3 + f.rho * a;
-        let low = if FIRST {
-            w + Pair::splat(0.0)
-        } else {
-            w + s * a_lo + t * b_lo
-        };
+        let (c, c_lo) = (Lanes::load(hi, i + W), Lanes::load(lo, i + W));
+        let (sum, low) = node::<FIRST, W>(f, a, a_lo, a.shifted(c), a_lo.shifted(c_lo));
         sum.store(hi, i);
         low.store(lo, i);
         (a, a_lo) = (c, c_lo);
-        i += 2;
+        i += W;
     }
     // the |b_i| triangle's level on its own: fewer values held across the steps above
-    let mut a_abs = Pair::load(abs, 0);
+    let mut a_abs = Lanes::<W>::load(abs, 0);
     let mut i = 0;
     while i < len {
-        let c_abs = Pair::load(abs, i + 2);
-        (f.s_abs * a_abs + t * a_abs.shifted(c_abs)).store(abs, i);
+        let c_abs = Lanes::load(abs, i + W);
+        abs_node(f, a_abs, a_abs.shifted(c_abs)).store(abs, i);
         a_abs = c_abs;
-        i += 2;
+        i += W;
     }
+}
+
+/// `W` nodes of the triangle: from the values `a` and their right neighbours `b` (high
+/// parts) and `a_lo`, `b_lo` (low parts, zeros on the first level), the new high and low
+/// parts.
+#[inline(always)]
+fn node<const FIRST: bool, const W: usize>(
+    f: &Factors,
+    a: Lanes<W>,
+    a_lo: Lanes<W>,
+    b: Lanes<W>,
+    b_lo: Lanes<W>,
+) -> (Lanes<W>, Lanes<W>) {
+    let (s, t, rho) = (Lanes::splat(f.s.value), Lanes::splat(f.t.value), Lanes::splat(f.rho));
+    let p1 = s * a;
+    let e1 = f.s.error(a, p1);
+    let p2 = t * b;
+    let e2 = f.t.error(b, p2);
+    let sum = p1 + p2;
+    let bb = sum - p1;
+    let e3 = (p1 - (sum - bb)) + (p2 - bb);
+    let w = e1 + e2 + e3 + rho * a;
+    let low = if FIRST {
+        w + Lanes::splat(0.0)
+    } else {
+        w + s * a_lo + t * b_lo
+    };
+    (sum, low)
+}
+
+/// `W` nodes of the `|b_i|` triangle.
+#[inline(always)]
+fn abs_node<const W: usize>(f: &Factors, a: Lanes<W>, b: Lanes<W>) -> Lanes<W> {
+    Lanes::splat(f.s_abs) * a + Lanes::splat(f.t.value) * b
+}
+
+/// A cubic's triangle on values held in registers, where fused multiply-adds give the
+/// products' errors (no range to keep: [`Factors::level_budget`]): the first level's three
+/// nodes in one step of four lanes (an AVX register), the second's two in one of two, the
+/// last alone. Values are never stored and read back at another width, which stalls the
+/// read. The same nodes as [`unrolled`], so the same bits.
+#[cfg(target_feature = "fma")]
+#[inline(always)]
+fn cubic(f: &Factors, b: &[f64]) -> Option<(f64, f64, f64)> {
+    let x = Lanes::<4>::load(b, 0);
+    let abs = x.map(f64::abs);
+    let sum = (abs.0[0] + abs.0[1]) + (abs.0[2] + abs.0[3]);
+    if sum.is_nan() || sum > MAX_ABS_SUM {
+        return None;
+    }
+    let zero = Lanes::splat(0.0);
+    // lane 3 of the first level is not a node: it is never read
+    let (hi, lo) = node::<true, 4>(f, x, zero, x.shifted(x), zero);
+    let abs = abs_node(f, abs, abs.shifted(abs));
+    let (hi, lo) = node::<false, 2>(f, hi.part::<2>(0), lo.part(0), hi.part(1), lo.part(1));
+    let abs = abs_node(f, abs.part::<2>(0), abs.part(1));
+    let (hi, lo) = node::<false, 1>(f, hi.part(0), lo.part(0), hi.part(1), lo.part(1));
+    let abs = abs_node(f, abs.part::<1>(0), abs.part(1));
+    Some((hi.0[0], lo.0[0], abs.0[0]))
 }
 
 /// The triangle on `b` in buffers of `N ≥ len + 2` values: `(hi, lo, the |b_i| triangle)`.
@@ -332,9 +394,9 @@ fn looped<const N: usize>(f: &Factors, b: &[f64]) -> Option<(f64, f64, f64)> {
             }
         }
         if level_len == len - 1 {
-            level::<true>(f, &mut hi, &mut lo, &mut abs, level_len);
+            level::<true, 2>(f, &mut hi, &mut lo, &mut abs, level_len);
         } else {
-            level::<false>(f, &mut hi, &mut lo, &mut abs, level_len);
+            level::<false, 2>(f, &mut hi, &mut lo, &mut abs, level_len);
         }
         budget -= f.refinement;
     }
@@ -349,9 +411,9 @@ fn unrolled<const LEN: usize, const N: usize>(f: &Factors, b: &[f64]) -> Option<
     if f.level_budget(scan(b, &mut hi[..LEN], &mut abs[..LEN])?) < (LEN as i64 - 1) * f.refinement {
         return None;
     }
-    level::<true>(f, &mut hi, &mut lo, &mut abs, LEN - 1);
+    level::<true, 2>(f, &mut hi, &mut lo, &mut abs, LEN - 1);
     for len in (1..LEN - 1).rev() {
-        level::<false>(f, &mut hi, &mut lo, &mut abs, len);
+        level::<false, 2>(f, &mut hi, &mut lo, &mut abs, len);
     }
     Some((hi[0], lo[0], abs[0]))
 }
