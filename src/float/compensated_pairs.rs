@@ -356,10 +356,12 @@ fn abs_node<const W: usize>(f: &Factors, a: Lanes<W>, b: Lanes<W>) -> Lanes<W> {
 }
 
 /// A cubic's triangle on values held in registers, where fused multiply-adds give the
-/// products' errors (no range to keep: [`Factors::level_budget`]): the first level's three
-/// nodes in one step of four lanes (an AVX register), the second's two in one of two, the
-/// last alone. Values are never stored and read back at another width, which stalls the
-/// read. The same nodes as [`unrolled`], so the same bits.
+/// products' errors (no grid to keep: [`Factors::level_budget`]), with the check of `Σ|b_i|`
+/// that [`scan`] makes: the first level's three nodes in one step of four lanes
+/// (an AVX register), the second's two in one of two, the last alone. Values are never
+/// stored and read back at another width, which stalls the read. The same nodes, so the
+/// same bits. Only where the target has FMA: on the default target the four lanes are two
+/// SSE2 registers, and this form was slower there than [`unrolled`] (docs/performance.md).
 #[cfg(target_feature = "fma")]
 #[inline(always)]
 fn cubic(f: &Factors, b: &[f64]) -> Option<(f64, f64, f64)> {
