@@ -61,7 +61,7 @@ pub(super) fn compensated_in_unit_interval(b: &[f64], t: f64) -> Option<(f64, f6
     if !(0.0..=1.0).contains(&t) || n == 0 || n >= MAX_DEGREE {
         return None;
     }
-    let factors = Factors::new(t);
+    let factors = Factors::<Pair>::new(t);
     let (hi, lo, abs) = match b.len() {
         2 => unrolled::<2, 4>(&factors, b),
         3 => unrolled::<3, 6>(&factors, b),
@@ -79,96 +79,198 @@ pub(super) fn compensated_in_unit_interval(b: &[f64], t: f64) -> Option<(f64, f6
     Some((res, UnitBound::of(n, abs, res)))
 }
 
-/// `W` floats, operated on lane by lane: two map to an SSE2 register, four to an AVX one.
-#[derive(Clone, Copy)]
-struct Lanes<const W: usize>([f64; W]);
+/// Floats operated on lane by lane: one node of the triangle per lane.
+trait Lanes: Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> {
+    fn splat(x: f64) -> Self;
+    fn map(self, f: impl Fn(f64) -> f64) -> Self;
+    /// Lane 0 (every lane of a splat value).
+    #[cfg(target_feature = "fma")]
+    fn first(self) -> f64;
+    /// `k·self − p` in each lane, rounded once.
+    #[cfg(target_feature = "fma")]
+    fn fused(self, k: Self, p: Self) -> Self;
+}
 
-/// Two lanes, the width of every level on the default target.
-type Pair = Lanes<2>;
-
-impl<const W: usize> Lanes<W> {
+impl Lanes for f64 {
     #[inline(always)]
     fn splat(x: f64) -> Self {
-        Lanes([x; W])
-    }
-
-    #[inline(always)]
-    fn load(b: &[f64], i: usize) -> Self {
-        Lanes(std::array::from_fn(|j| b[i + j]))
-    }
-
-    #[inline(always)]
-    fn store(self, b: &mut [f64], i: usize) {
-        b[i..i + W].copy_from_slice(&self.0);
-    }
-
-    /// `[self₁, …, self_{W−1}, next₀]`: the lanes one position further along.
-    #[inline(always)]
-    fn shifted(self, next: Self) -> Self {
-        Lanes(std::array::from_fn(
-            |j| if j + 1 < W { self.0[j + 1] } else { next.0[0] },
-        ))
-    }
-
-    /// The `V` lanes from lane `i` on.
-    #[cfg(target_feature = "fma")]
-    #[inline(always)]
-    fn part<const V: usize>(self, i: usize) -> Lanes<V> {
-        Lanes(std::array::from_fn(|j| self.0[i + j]))
+        x
     }
 
     #[inline(always)]
     fn map(self, f: impl Fn(f64) -> f64) -> Self {
-        Lanes(self.0.map(f))
+        f(self)
     }
 
+    #[cfg(target_feature = "fma")]
     #[inline(always)]
-    fn zip(self, o: Self, f: impl Fn(f64, f64) -> f64) -> Self {
-        Lanes(std::array::from_fn(|j| f(self.0[j], o.0[j])))
+    fn first(self) -> f64 {
+        self
+    }
+
+    #[cfg(target_feature = "fma")]
+    #[inline(always)]
+    fn fused(self, k: Self, p: Self) -> Self {
+        k.mul_add(self, -p)
     }
 }
 
-impl<const W: usize> Add for Lanes<W> {
-    type Output = Self;
-    #[inline(always)]
-    fn add(self, o: Self) -> Self {
-        self.zip(o, |x, y| x + y)
-    }
-}
-
-impl<const W: usize> Sub for Lanes<W> {
-    type Output = Self;
-    #[inline(always)]
-    fn sub(self, o: Self) -> Self {
-        self.zip(o, |x, y| x - y)
-    }
-}
-
-impl<const W: usize> Mul for Lanes<W> {
-    type Output = Self;
-    #[inline(always)]
-    fn mul(self, o: Self) -> Self {
-        self.zip(o, |x, y| x * y)
-    }
-}
-
-/// A factor of every product (`s` or `t`), split by Veltkamp for Dekker's product.
+/// Two floats, operated on lane by lane (written out lane by lane: a loop over the lanes
+/// compiled to 17% more instructions per call at degree 10, partly scalar).
 #[derive(Clone, Copy)]
-struct Factor {
-    value: f64,
-    #[cfg(not(target_feature = "fma"))]
-    halves: (f64, f64),
+struct Pair([f64; 2]);
+
+impl Lanes for Pair {
+    #[inline(always)]
+    fn splat(x: f64) -> Self {
+        Pair([x, x])
+    }
+
+    #[inline(always)]
+    fn map(self, f: impl Fn(f64) -> f64) -> Self {
+        Pair([f(self.0[0]), f(self.0[1])])
+    }
+
+    #[cfg(target_feature = "fma")]
+    #[inline(always)]
+    fn first(self) -> f64 {
+        self.0[0]
+    }
+
+    #[cfg(target_feature = "fma")]
+    #[inline(always)]
+    fn fused(self, k: Self, p: Self) -> Self {
+        Pair([self.0[0].fused(k.0[0], p.0[0]), self.0[1].fused(k.0[1], p.0[1])])
+    }
 }
 
-impl Factor {
+impl Pair {
+    #[inline(always)]
+    fn load(b: &[f64], i: usize) -> Self {
+        Pair([b[i], b[i + 1]])
+    }
+
+    #[inline(always)]
+    fn store(self, b: &mut [f64], i: usize) {
+        b[i] = self.0[0];
+        b[i + 1] = self.0[1];
+    }
+
+    /// `[self₁, next₀]`: the pair one position further along.
+    #[inline(always)]
+    fn shifted(self, next: Pair) -> Self {
+        Pair([self.0[1], next.0[0]])
+    }
+}
+
+impl Add for Pair {
+    type Output = Pair;
+    #[inline(always)]
+    fn add(self, o: Pair) -> Pair {
+        Pair([self.0[0] + o.0[0], self.0[1] + o.0[1]])
+    }
+}
+
+impl Sub for Pair {
+    type Output = Pair;
+    #[inline(always)]
+    fn sub(self, o: Pair) -> Pair {
+        Pair([self.0[0] - o.0[0], self.0[1] - o.0[1]])
+    }
+}
+
+impl Mul for Pair {
+    type Output = Pair;
+    #[inline(always)]
+    fn mul(self, o: Pair) -> Pair {
+        Pair([self.0[0] * o.0[0], self.0[1] * o.0[1]])
+    }
+}
+
+/// Four floats, operated on lane by lane: an AVX register.
+#[cfg(target_feature = "fma")]
+#[derive(Clone, Copy)]
+struct Quad([f64; 4]);
+
+#[cfg(target_feature = "fma")]
+impl Lanes for Quad {
+    #[inline(always)]
+    fn splat(x: f64) -> Self {
+        Quad([x; 4])
+    }
+
+    #[inline(always)]
+    fn map(self, f: impl Fn(f64) -> f64) -> Self {
+        Quad([f(self.0[0]), f(self.0[1]), f(self.0[2]), f(self.0[3])])
+    }
+
+    #[inline(always)]
+    fn first(self) -> f64 {
+        self.0[0]
+    }
+
+    #[inline(always)]
+    fn fused(self, k: Self, p: Self) -> Self {
+        let (x, k, p) = (self.0, k.0, p.0);
+        Quad([0, 1, 2, 3].map(|i| x[i].fused(k[i], p[i])))
+    }
+}
+
+#[cfg(target_feature = "fma")]
+impl Quad {
+    /// Lanes `i` and `i + 1`.
+    #[inline(always)]
+    fn pair(self, i: usize) -> Pair {
+        Pair([self.0[i], self.0[i + 1]])
+    }
+
+    /// `[self₁, self₂, self₃, self₀]`: each lane's right neighbour (the last lane's is not one).
+    #[inline(always)]
+    fn rotated(self) -> Self {
+        Quad([self.0[1], self.0[2], self.0[3], self.0[0]])
+    }
+}
+
+/// The three operations of [`Quad`], lane by lane.
+#[cfg(target_feature = "fma")]
+macro_rules! quad_operation {
+    ($trait:ident, $method:ident, $op:tt) => {
+        impl $trait for Quad {
+            type Output = Quad;
+            #[inline(always)]
+            fn $method(self, o: Quad) -> Quad {
+                let (a, b) = (self.0, o.0);
+                Quad([a[0] $op b[0], a[1] $op b[1], a[2] $op b[2], a[3] $op b[3]])
+            }
+        }
+    };
+}
+
+#[cfg(target_feature = "fma")]
+quad_operation!(Add, add, +);
+#[cfg(target_feature = "fma")]
+quad_operation!(Sub, sub, -);
+#[cfg(target_feature = "fma")]
+quad_operation!(Mul, mul, *);
+
+/// A factor of every product (`s` or `t`) in every lane, split by Veltkamp for Dekker's
+/// product.
+#[derive(Clone, Copy)]
+struct Factor<V> {
+    value: V,
+    #[cfg(not(target_feature = "fma"))]
+    halves: (V, V),
+}
+
+impl<V: Lanes> Factor<V> {
     #[inline(always)]
     fn new(k: f64) -> Self {
         #[cfg(not(target_feature = "fma"))]
         let (h, l) = split(k);
         Factor {
-            value: k,
+            value: V::splat(k),
             #[cfg(not(target_feature = "fma"))]
-            halves: (h, l),
+            halves: (V::splat(h), V::splat(l)),
         }
     }
 
@@ -176,35 +278,35 @@ impl Factor {
     /// gives): Dekker's product on the two-operation split of `x`, or one fused
     /// multiply-add.
     #[inline(always)]
-    fn error<const W: usize>(&self, x: Lanes<W>, p: Lanes<W>) -> Lanes<W> {
+    fn error(&self, x: V, p: V) -> V {
         #[cfg(not(target_feature = "fma"))]
         {
             /// All but the last 26 bits of a float's significand.
             const HIGH_27_BITS: u64 = !((1 << 26) - 1);
-            let (kh, kl) = (Lanes::splat(self.halves.0), Lanes::splat(self.halves.1));
+            let (kh, kl) = self.halves;
             let xh = x.map(|v| f64::from_bits(v.to_bits() & HIGH_27_BITS));
             let xl = x - xh;
             ((kh * xh - p) + kh * xl + kl * xh) + kl * xl
         }
         #[cfg(target_feature = "fma")]
         {
-            x.zip(p, |x, p| self.value.mul_add(x, -p))
+            x.fused(self.value, p)
         }
     }
 }
 
 /// What every node needs: `s = fl(1 − t)` and its error `ρ`, `t`, the factor `s' ≥ 1 − t`
 /// of the `|b_i|` triangle, and the ulp exponent `L` of the granularity argument.
-struct Factors {
-    s: Factor,
-    t: Factor,
-    rho: f64,
-    s_abs: f64,
+struct Factors<V> {
+    s: Factor<V>,
+    t: Factor<V>,
+    rho: V,
+    s_abs: V,
     /// `−L ≥ 52`: how much a level may refine the grid of the values (in exponent).
     refinement: i64,
 }
 
-impl Factors {
+impl<V: Lanes> Factors<V> {
     #[inline(always)]
     fn new(t: f64) -> Self {
         // `|1| ≥ |t|` for `t ∈ [0, 1]`: FastTwoSum's error is exact, the one `one_minus` gives
@@ -214,9 +316,25 @@ impl Factors {
         Factors {
             s: Factor::new(s),
             t: Factor::new(t),
-            rho,
-            s_abs: next_up(s + rho.abs()),
+            rho: V::splat(rho),
+            s_abs: V::splat(next_up(s + rho.abs())),
             refinement: exponent(s).max(exponent(t)).min(1074),
+        }
+    }
+
+    /// The same factors in the lanes of `U`.
+    #[cfg(target_feature = "fma")]
+    #[inline(always)]
+    fn widen<U: Lanes>(&self) -> Factors<U> {
+        let widen = |f: &Factor<V>| Factor {
+            value: U::splat(f.value.first()),
+        };
+        Factors {
+            s: widen(&self.s),
+            t: widen(&self.t),
+            rho: U::splat(self.rho.first()),
+            s_abs: U::splat(self.s_abs.first()),
+            refinement: self.refinement,
         }
     }
 
@@ -271,12 +389,12 @@ fn scan(b: &[f64], hi: &mut [f64], abs: &mut [f64]) -> Option<i64> {
     let mut copies = hi.chunks_exact_mut(2);
     let mut out = abs.chunks_exact_mut(2);
     for ((x, h), o) in (&mut pairs).zip(&mut copies).zip(&mut out) {
-        let x = Pair::load(x, 0);
+        let x = Pair([x[0], x[1]]);
         x.store(h, 0);
         let a = x.map(f64::abs);
         a.store(o, 0);
         sum = sum + a;
-        least = a.zip(least, smaller);
+        least = Pair([smaller(a.0[0], least.0[0]), smaller(a.0[1], least.0[1])]);
     }
     let (mut sum, mut least) = (sum.0[0] + sum.0[1], smaller(least.0[0], least.0[1]));
     if let ([x], [h], [o]) = (pairs.remainder(), copies.into_remainder(), out.into_remainder()) {
@@ -296,43 +414,37 @@ fn scan(b: &[f64], hi: &mut [f64], abs: &mut [f64]) -> Option<i64> {
     })
 }
 
-/// One level in place: `len` nodes from `hi, lo, abs[0..=len]`, `W` per step; the buffers
-/// hold `len + 2W − 1` values at least (the last step reads `W` values past its own).
+/// One level in place: `len` nodes from `hi, lo, abs[0..=len]`, two per step; the buffers
+/// hold `len + 3` values at least (the last step reads one pair past the level).
 #[inline(always)]
-fn level<const FIRST: bool, const W: usize>(f: &Factors, hi: &mut [f64], lo: &mut [f64], abs: &mut [f64], len: usize) {
-    let (mut a, mut a_lo) = (Lanes::<W>::load(hi, 0), Lanes::<W>::load(lo, 0));
+fn level<const FIRST: bool>(f: &Factors<Pair>, hi: &mut [f64], lo: &mut [f64], abs: &mut [f64], len: usize) {
+    let (mut a, mut a_lo) = (Pair::load(hi, 0), Pair::load(lo, 0));
     let mut i = 0;
     while i < len {
-        let (c, c_lo) = (Lanes::load(hi, i + W), Lanes::load(lo, i + W));
-        let (sum, low) = node::<FIRST, W>(f, a, a_lo, a.shifted(c), a_lo.shifted(c_lo));
+        let (c, c_lo) = (Pair::load(hi, i + 2), Pair::load(lo, i + 2));
+        let (sum, low) = node::<FIRST, _>(f, a, a_lo, a.shifted(c), a_lo.shifted(c_lo));
         sum.store(hi, i);
         low.store(lo, i);
         (a, a_lo) = (c, c_lo);
-        i += W;
+        i += 2;
     }
     // the |b_i| triangle's level on its own: fewer values held across the steps above
-    let mut a_abs = Lanes::<W>::load(abs, 0);
+    let mut a_abs = Pair::load(abs, 0);
     let mut i = 0;
     while i < len {
-        let c_abs = Lanes::load(abs, i + W);
+        let c_abs = Pair::load(abs, i + 2);
         abs_node(f, a_abs, a_abs.shifted(c_abs)).store(abs, i);
         a_abs = c_abs;
-        i += W;
+        i += 2;
     }
 }
 
-/// `W` nodes of the triangle: from the values `a` and their right neighbours `b` (high
-/// parts) and `a_lo`, `b_lo` (low parts, zeros on the first level), the new high and low
-/// parts.
+/// Nodes of the triangle, one per lane: from the values `a` and their right neighbours `b`
+/// (high parts) and `a_lo`, `b_lo` (low parts, zeros on the first level), the new high
+/// and low parts.
 #[inline(always)]
-fn node<const FIRST: bool, const W: usize>(
-    f: &Factors,
-    a: Lanes<W>,
-    a_lo: Lanes<W>,
-    b: Lanes<W>,
-    b_lo: Lanes<W>,
-) -> (Lanes<W>, Lanes<W>) {
-    let (s, t, rho) = (Lanes::splat(f.s.value), Lanes::splat(f.t.value), Lanes::splat(f.rho));
+fn node<const FIRST: bool, V: Lanes>(f: &Factors<V>, a: V, a_lo: V, b: V, b_lo: V) -> (V, V) {
+    let (s, t) = (f.s.value, f.t.value);
     let p1 = s * a;
     let e1 = f.s.error(a, p1);
     let p2 = t * b;
@@ -340,51 +452,51 @@ fn node<const FIRST: bool, const W: usize>(
     let sum = p1 + p2;
     let bb = sum - p1;
     let e3 = (p1 - (sum - bb)) + (p2 - bb);
-    let w = e1 + e2 + e3 + rho * a;
+    let w = e1 + e2 + e3 + f.rho * a;
     let low = if FIRST {
-        w + Lanes::splat(0.0)
+        w + V::splat(0.0)
     } else {
         w + s * a_lo + t * b_lo
     };
     (sum, low)
 }
 
-/// `W` nodes of the `|b_i|` triangle.
+/// Nodes of the `|b_i|` triangle, one per lane.
 #[inline(always)]
-fn abs_node<const W: usize>(f: &Factors, a: Lanes<W>, b: Lanes<W>) -> Lanes<W> {
-    Lanes::splat(f.s_abs) * a + Lanes::splat(f.t.value) * b
+fn abs_node<V: Lanes>(f: &Factors<V>, a: V, b: V) -> V {
+    f.s_abs * a + f.t.value * b
 }
 
 /// A cubic's triangle on values held in registers, where fused multiply-adds give the
 /// products' errors (no grid to keep: [`Factors::level_budget`]), with the check of `Σ|b_i|`
-/// that [`scan`] makes: the first level's three nodes in one step of four lanes
-/// (an AVX register), the second's two in one of two, the last alone. Values are never
-/// stored and read back at another width, which stalls the read. The same nodes, so the
-/// same bits. Only where the target has FMA: on the default target the four lanes are two
+/// that [`scan`] makes: the first level's three nodes in one step of four lanes (an AVX
+/// register), the second's two in one of two, the last alone. Values are never stored and
+/// read back at another width, which stalls the read. The same nodes as [`unrolled`], so
+/// the same bits. Only where the target has FMA: on the default target four lanes are two
 /// SSE2 registers, and this form was slower there than [`unrolled`] (docs/performance.md).
 #[cfg(target_feature = "fma")]
 #[inline(always)]
-fn cubic(f: &Factors, b: &[f64]) -> Option<(f64, f64, f64)> {
-    let x = Lanes::<4>::load(b, 0);
+fn cubic(f: &Factors<Pair>, b: &[f64]) -> Option<(f64, f64, f64)> {
+    let x = Quad([b[0], b[1], b[2], b[3]]);
     let abs = x.map(f64::abs);
     let sum = (abs.0[0] + abs.0[1]) + (abs.0[2] + abs.0[3]);
     if sum.is_nan() || sum > MAX_ABS_SUM {
         return None;
     }
-    let zero = Lanes::splat(0.0);
+    let (four, one) = (f.widen::<Quad>(), f.widen::<f64>());
+    let zero = Quad::splat(0.0);
     // lane 3 of the first level is not a node: it is never read
-    let (hi, lo) = node::<true, 4>(f, x, zero, x.shifted(x), zero);
-    let abs = abs_node(f, abs, abs.shifted(abs));
-    let (hi, lo) = node::<false, 2>(f, hi.part::<2>(0), lo.part(0), hi.part(1), lo.part(1));
-    let abs = abs_node(f, abs.part::<2>(0), abs.part(1));
-    let (hi, lo) = node::<false, 1>(f, hi.part(0), lo.part(0), hi.part(1), lo.part(1));
-    let abs = abs_node(f, abs.part::<1>(0), abs.part(1));
-    Some((hi.0[0], lo.0[0], abs.0[0]))
+    let (hi, lo) = node::<true, _>(&four, x, zero, x.rotated(), zero);
+    let abs = abs_node(&four, abs, abs.rotated());
+    let (hi, lo) = node::<false, _>(f, hi.pair(0), lo.pair(0), hi.pair(1), lo.pair(1));
+    let abs = abs_node(f, abs.pair(0), abs.pair(1));
+    let (hi, lo) = node::<false, _>(&one, hi.0[0], lo.0[0], hi.0[1], lo.0[1]);
+    Some((hi, lo, abs_node(&one, abs.0[0], abs.0[1])))
 }
 
 /// The triangle on `b` in buffers of `N ≥ len + 2` values: `(hi, lo, the |b_i| triangle)`.
 #[inline(always)]
-fn looped<const N: usize>(f: &Factors, b: &[f64]) -> Option<(f64, f64, f64)> {
+fn looped<const N: usize>(f: &Factors<Pair>, b: &[f64]) -> Option<(f64, f64, f64)> {
     let len = b.len();
     let (mut hi, mut lo, mut abs) = ([0.0; N], [0.0; N], [0.0; N]);
     let mut budget = f.level_budget(scan(b, &mut hi[..len], &mut abs[..len])?);
@@ -396,9 +508,9 @@ fn looped<const N: usize>(f: &Factors, b: &[f64]) -> Option<(f64, f64, f64)> {
             }
         }
         if level_len == len - 1 {
-            level::<true, 2>(f, &mut hi, &mut lo, &mut abs, level_len);
+            level::<true>(f, &mut hi, &mut lo, &mut abs, level_len);
         } else {
-            level::<false, 2>(f, &mut hi, &mut lo, &mut abs, level_len);
+            level::<false>(f, &mut hi, &mut lo, &mut abs, level_len);
         }
         budget -= f.refinement;
     }
@@ -408,14 +520,14 @@ fn looped<const N: usize>(f: &Factors, b: &[f64]) -> Option<(f64, f64, f64)> {
 /// [`looped`] for `LEN` coefficients known at compile time (unrolled, in registers), with
 /// one range check up front.
 #[inline(always)]
-fn unrolled<const LEN: usize, const N: usize>(f: &Factors, b: &[f64]) -> Option<(f64, f64, f64)> {
+fn unrolled<const LEN: usize, const N: usize>(f: &Factors<Pair>, b: &[f64]) -> Option<(f64, f64, f64)> {
     let (mut hi, mut lo, mut abs) = ([0.0; N], [0.0; N], [0.0; N]);
     if f.level_budget(scan(b, &mut hi[..LEN], &mut abs[..LEN])?) < (LEN as i64 - 1) * f.refinement {
         return None;
     }
-    level::<true, 2>(f, &mut hi, &mut lo, &mut abs, LEN - 1);
+    level::<true>(f, &mut hi, &mut lo, &mut abs, LEN - 1);
     for len in (1..LEN - 1).rev() {
-        level::<false, 2>(f, &mut hi, &mut lo, &mut abs, len);
+        level::<false>(f, &mut hi, &mut lo, &mut abs, len);
     }
     Some((hi[0], lo[0], abs[0]))
 }
