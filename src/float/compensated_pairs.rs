@@ -187,21 +187,23 @@ impl Mul for Pair {
     }
 }
 
-/// Four floats, operated on lane by lane: an AVX register.
+/// `W` floats, operated on lane by lane: the cubic's levels on FMA targets (four lanes are
+/// an AVX register). Written with `array::from_fn`, which compiled to the faster cubic
+/// there; the two-lane levels keep [`Pair`].
 #[cfg(target_feature = "fma")]
 #[derive(Clone, Copy)]
-struct Quad([f64; 4]);
+struct Wide<const W: usize>([f64; W]);
 
 #[cfg(target_feature = "fma")]
-impl Lanes for Quad {
+impl<const W: usize> Lanes for Wide<W> {
     #[inline(always)]
     fn splat(x: f64) -> Self {
-        Quad([x; 4])
+        Wide([x; W])
     }
 
     #[inline(always)]
     fn map(self, f: impl Fn(f64) -> f64) -> Self {
-        Quad([f(self.0[0]), f(self.0[1]), f(self.0[2]), f(self.0[3])])
+        Wide(self.0.map(f))
     }
 
     #[inline(always)]
@@ -211,47 +213,46 @@ impl Lanes for Quad {
 
     #[inline(always)]
     fn fused(self, k: Self, p: Self) -> Self {
-        let (x, k, p) = (self.0, k.0, p.0);
-        Quad([0, 1, 2, 3].map(|i| x[i].fused(k[i], p[i])))
+        Wide(std::array::from_fn(|j| self.0[j].fused(k.0[j], p.0[j])))
     }
 }
 
 #[cfg(target_feature = "fma")]
-impl Quad {
-    /// Lanes `i` and `i + 1`.
+impl<const W: usize> Wide<W> {
+    /// The `V` lanes from lane `i` on.
     #[inline(always)]
-    fn pair(self, i: usize) -> Pair {
-        Pair([self.0[i], self.0[i + 1]])
+    fn part<const V: usize>(self, i: usize) -> Wide<V> {
+        Wide(std::array::from_fn(|j| self.0[i + j]))
     }
 
-    /// `[self₁, self₂, self₃, self₀]`: each lane's right neighbour (the last lane's is not one).
+    /// `[self₁, …, self_{W−1}, self₀]`: each lane's right neighbour (the last lane's is not
+    /// one).
     #[inline(always)]
     fn rotated(self) -> Self {
-        Quad([self.0[1], self.0[2], self.0[3], self.0[0]])
+        Wide(std::array::from_fn(|j| self.0[(j + 1) % W]))
     }
 }
 
-/// The three operations of [`Quad`], lane by lane.
+/// The three operations of [`Wide`], lane by lane.
 #[cfg(target_feature = "fma")]
-macro_rules! quad_operation {
+macro_rules! wide_operation {
     ($trait:ident, $method:ident, $op:tt) => {
-        impl $trait for Quad {
-            type Output = Quad;
+        impl<const W: usize> $trait for Wide<W> {
+            type Output = Self;
             #[inline(always)]
-            fn $method(self, o: Quad) -> Quad {
-                let (a, b) = (self.0, o.0);
-                Quad([a[0] $op b[0], a[1] $op b[1], a[2] $op b[2], a[3] $op b[3]])
+            fn $method(self, o: Self) -> Self {
+                Wide(std::array::from_fn(|j| self.0[j] $op o.0[j]))
             }
         }
     };
 }
 
 #[cfg(target_feature = "fma")]
-quad_operation!(Add, add, +);
+wide_operation!(Add, add, +);
 #[cfg(target_feature = "fma")]
-quad_operation!(Sub, sub, -);
+wide_operation!(Sub, sub, -);
 #[cfg(target_feature = "fma")]
-quad_operation!(Mul, mul, *);
+wide_operation!(Mul, mul, *);
 
 /// A factor of every product (`s` or `t`) in every lane, split by Veltkamp for Dekker's
 /// product.
@@ -477,21 +478,22 @@ fn abs_node<V: Lanes>(f: &Factors<V>, a: V, b: V) -> V {
 #[cfg(target_feature = "fma")]
 #[inline(always)]
 fn cubic(f: &Factors<Pair>, b: &[f64]) -> Option<(f64, f64, f64)> {
-    let x = Quad([b[0], b[1], b[2], b[3]]);
+    let x = Wide::<4>([b[0], b[1], b[2], b[3]]);
     let abs = x.map(f64::abs);
     let sum = (abs.0[0] + abs.0[1]) + (abs.0[2] + abs.0[3]);
     if sum.is_nan() || sum > MAX_ABS_SUM {
         return None;
     }
-    let (four, one) = (f.widen::<Quad>(), f.widen::<f64>());
-    let zero = Quad::splat(0.0);
+    let (four, two, one) = (f.widen(), f.widen(), f.widen());
+    let zero = Wide::splat(0.0);
     // lane 3 of the first level is not a node: it is never read
     let (hi, lo) = node::<true, _>(&four, x, zero, x.rotated(), zero);
     let abs = abs_node(&four, abs, abs.rotated());
-    let (hi, lo) = node::<false, _>(f, hi.pair(0), lo.pair(0), hi.pair(1), lo.pair(1));
-    let abs = abs_node(f, abs.pair(0), abs.pair(1));
-    let (hi, lo) = node::<false, _>(&one, hi.0[0], lo.0[0], hi.0[1], lo.0[1]);
-    Some((hi, lo, abs_node(&one, abs.0[0], abs.0[1])))
+    let (hi, lo) = node::<false, Wide<2>>(&two, hi.part(0), lo.part(0), hi.part(1), lo.part(1));
+    let abs = abs_node(&two, abs.part(0), abs.part(1));
+    let (hi, lo) = node::<false, Wide<1>>(&one, hi.part(0), lo.part(0), hi.part(1), lo.part(1));
+    let abs = abs_node(&one, abs.part(0), abs.part(1));
+    Some((hi.0[0], lo.0[0], abs.0[0]))
 }
 
 /// The triangle on `b` in buffers of `N ≥ len + 2` values: `(hi, lo, the |b_i| triangle)`.
