@@ -115,8 +115,8 @@ impl Lanes for f64 {
     }
 }
 
-/// Two floats, operated on lane by lane (written out lane by lane: a loop over the lanes
-/// compiled to 17% more instructions per call at degree 10, partly scalar).
+/// Two floats, operated on lane by lane, written out lane by lane: loops over the lanes
+/// compiled to more instructions, partly scalar (docs/performance.md).
 #[derive(Clone, Copy)]
 struct Pair([f64; 2]);
 
