@@ -91,28 +91,11 @@ trait Lanes: Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self>
     fn fused(self, k: Self, p: Self) -> Self;
 }
 
-impl Lanes for f64 {
-    #[inline(always)]
-    fn splat(x: f64) -> Self {
-        x
-    }
-
-    #[inline(always)]
-    fn map(self, f: impl Fn(f64) -> f64) -> Self {
-        f(self)
-    }
-
-    #[cfg(target_feature = "fma")]
-    #[inline(always)]
-    fn first(self) -> f64 {
-        self
-    }
-
-    #[cfg(target_feature = "fma")]
-    #[inline(always)]
-    fn fused(self, k: Self, p: Self) -> Self {
-        k.mul_add(self, -p)
-    }
+/// `k·x − p` rounded once: the exact error of `p = fl(k·x)` when `p` is that product.
+#[cfg(target_feature = "fma")]
+#[inline(always)]
+fn fused(x: f64, k: f64, p: f64) -> f64 {
+    k.mul_add(x, -p)
 }
 
 /// Two floats, operated on lane by lane, written out lane by lane: loops over the lanes
@@ -140,7 +123,7 @@ impl Lanes for Pair {
     #[cfg(target_feature = "fma")]
     #[inline(always)]
     fn fused(self, k: Self, p: Self) -> Self {
-        Pair([self.0[0].fused(k.0[0], p.0[0]), self.0[1].fused(k.0[1], p.0[1])])
+        Pair([fused(self.0[0], k.0[0], p.0[0]), fused(self.0[1], k.0[1], p.0[1])])
     }
 }
 
@@ -213,7 +196,7 @@ impl<const W: usize> Lanes for Wide<W> {
 
     #[inline(always)]
     fn fused(self, k: Self, p: Self) -> Self {
-        Wide(std::array::from_fn(|j| self.0[j].fused(k.0[j], p.0[j])))
+        Wide(std::array::from_fn(|j| fused(self.0[j], k.0[j], p.0[j])))
     }
 }
 
