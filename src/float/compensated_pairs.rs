@@ -360,6 +360,13 @@ fn finest_ulp_exponent(values: &[f64]) -> i64 {
 /// `Σ|b_i|` may not exceed this for the triangle to stay below `2^995` ([`MAX_SPLIT`]).
 const MAX_ABS_SUM: f64 = MAX_SPLIT / 2.0;
 
+/// Whether a computed `Σ|b_i|` lets the triangle run unchecked: at most [`MAX_ABS_SUM`], and
+/// not NaN (a NaN coefficient makes the sum NaN, which every comparison refuses).
+#[inline(always)]
+fn abs_sum_in_range(sum: f64) -> bool {
+    sum <= MAX_ABS_SUM
+}
+
 /// Copies `b` into `hi` and `|b_i|` into `abs` (both as long as `b`), and gives the finest
 /// ulp exponent of the `b_i`; `None` when `Σ|b_i|` exceeds [`MAX_ABS_SUM`] or is not finite
 /// (or NaN).
@@ -387,7 +394,7 @@ fn scan(b: &[f64], hi: &mut [f64], abs: &mut [f64]) -> Option<i64> {
         sum += *o;
         least = smaller(*o, least);
     }
-    if sum.is_nan() || sum > MAX_ABS_SUM {
+    if !abs_sum_in_range(sum) {
         return None;
     }
     // a zero coefficient says nothing of the grid: look at the others
@@ -464,7 +471,7 @@ fn cubic(f: &Factors<Pair>, b: &[f64]) -> Option<(f64, f64, f64)> {
     let x = Wide::<4>([b[0], b[1], b[2], b[3]]);
     let abs = x.map(f64::abs);
     let sum = (abs.0[0] + abs.0[1]) + (abs.0[2] + abs.0[3]);
-    if sum.is_nan() || sum > MAX_ABS_SUM {
+    if !abs_sum_in_range(sum) {
         return None;
     }
     let (four, two, one) = (f.widen(), f.widen(), f.widen());
