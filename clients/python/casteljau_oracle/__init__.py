@@ -1,30 +1,6 @@
-"""A client for `casteljau oracle`: exact Bézier answers and float error bounds.
+"""The public name of the client: everything is defined in the private package
+`_casteljau_oracle` (so that the pytest plugin can load without this name, which a user's
+project may have for its own module). See `_casteljau_oracle` for the documentation."""
 
-The oracle reads one JSON request per line and answers each with one line, flushed
-before it reads on. `Oracle` starts it, sends requests and reads the answers; many
-requests at once are written by a second thread while this one reads, so neither side
-ever waits on a full pipe. Every request carries an id and every answer is checked
-against it; a wait for an answer times out (`Oracle(timeout=...)`).
-
-    with Oracle() as o:
-        o.eval_exact([[0, 0], [1, 2], [2, 0]], Fraction(1, 3))   # [Fraction(2, 3), Fraction(8, 9)]
-        o.within_bound([[0.1], [0.7]], 0.5, [0.4])                # True
-
-Numbers go out exactly: a float as the JSON number that reads back as that float, a
-`Fraction` or `int` exactly, a float answer that is inf or NaN as "inf", "-inf", "nan".
-Exact results come back as `Fraction`s. Every error the client raises is an `OracleError`.
-"""
-
-from .errors import OracleError, OracleInputError, OracleProtocolError, OracleTimeout
-from .oracle import DEFAULT_TIMEOUT, METHODS, Oracle, find_binary
-
-__all__ = [
-    "DEFAULT_TIMEOUT",
-    "METHODS",
-    "Oracle",
-    "OracleError",
-    "OracleInputError",
-    "OracleProtocolError",
-    "OracleTimeout",
-    "find_binary",
-]
+from _casteljau_oracle import *  # noqa: F403
+from _casteljau_oracle import __all__, __doc__  # noqa: F401

@@ -1,9 +1,15 @@
-"""Runs the suite from the folder too (without `pip install`): the package next door, and
-its fixture."""
+"""Runs the suite from the folder too (without `pip install`): the packages next door, and
+the plugin's fixture and options when the installed plugin is not loaded."""
 
 import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), ".."))
 
-from casteljau_oracle.pytest_plugin import casteljau_oracle  # noqa: E402,F401
+from _casteljau_oracle import pytest_plugin  # noqa: E402
+from _casteljau_oracle.pytest_plugin import casteljau_oracle  # noqa: E402,F401
+
+
+def pytest_addoption(parser, pluginmanager):
+    if not pluginmanager.has_plugin(pytest_plugin.NAME):
+        pytest_plugin.pytest_addoption(parser)
