@@ -12,11 +12,22 @@ against it; a wait for an answer times out (`Oracle(timeout=...)`).
 
 Numbers go out exactly: a float as the JSON number that reads back as that float, a
 `Fraction` or `int` exactly, a float answer that is inf or NaN as "inf", "-inf", "nan".
-Exact results come back as `Fraction`s. Every error the client raises is an `OracleError`.
+Exact results come back as `Fraction`s; inputs may be numpy arrays of any numeric dtype,
+and results are numpy arrays when they are (or with `Oracle(arrays=True)`). Every error
+the client raises is an `OracleError`.
 """
 
 from .errors import OracleError, OracleInputError, OracleProtocolError, OracleTimeout
+from .floats import ulps
 from .oracle import DEFAULT_TIMEOUT, METHODS, Oracle, find_binary
+
+
+def assert_within_bound(oracle, points, t, approx, method="de_casteljau"):
+    """`oracle.assert_within_bound(points, t, approx, method)`: an AssertionError, when
+    `approx` is outside `method`'s bound, that gives per coordinate the answer, the
+    correctly rounded value, ulps, the bound, the condition number and the exact value."""
+    oracle.assert_within_bound(points, t, approx, method)
+
 
 __all__ = [
     "DEFAULT_TIMEOUT",
@@ -26,5 +37,7 @@ __all__ = [
     "OracleInputError",
     "OracleProtocolError",
     "OracleTimeout",
+    "assert_within_bound",
     "find_binary",
+    "ulps",
 ]

@@ -22,6 +22,11 @@ def _as_list(x):
     return x
 
 
+def is_scalar(x):
+    """Whether `x` is one number (a numpy scalar too), not a list or array of them."""
+    return isinstance(x, (str, numbers.Number, Decimal)) or not hasattr(x, "__iter__")
+
+
 def _exact_fraction(x):
     """The exact value of a real number that is neither an int nor a Fraction."""
     if isinstance(x, Decimal):

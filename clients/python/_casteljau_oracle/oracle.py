@@ -6,8 +6,10 @@ import os
 import shutil
 import threading
 
+from . import _arrays as A
 from . import _values as V
 from ._channel import Channel
+from ._report import within_bound_message
 from .errors import OracleError, OracleInputError
 
 #: the float algorithms the oracle has a bound for (`method`)
@@ -31,6 +33,11 @@ def find_binary(binary=None):
 class Oracle:
     """A running `casteljau oracle` process.
 
+    Results are lists (of `Fraction`s, floats, bools), or numpy arrays of the same shape
+    (object arrays of `Fraction`s for exact values) when `arrays` is True, or when it is
+    None (the default) and the call's points (or net, or power coefficients) came as a
+    numpy array.
+
     `timeout` is the longest the client waits for any one answer, in seconds (None: no
     limit); past it `OracleTimeout` is raised. After a timeout, an answer out of step or an
     exception in the caller's thread during an exchange (KeyboardInterrupt, an alarm), the
@@ -38,8 +45,13 @@ class Oracle:
     an interrupted batch never leaves answers behind for the next call to read.
     """
 
-    def __init__(self, binary=None, args=(), timeout=DEFAULT_TIMEOUT):
+    def __init__(self, binary=None, args=(), timeout=DEFAULT_TIMEOUT, arrays=None):
         self.binary = find_binary(binary)
+        if arrays not in (None, True, False):
+            raise OracleInputError(f"arrays is None (like the input), True or False, not {arrays!r}")
+        if arrays:
+            A.numpy()
+        self.arrays = arrays
         self.args = tuple(args)
         if timeout is not None and not timeout > 0:
             raise OracleInputError(f"timeout must be a positive number of seconds or None, not {timeout!r}")
@@ -118,17 +130,78 @@ class Oracle:
         """Sends one request (a dict with "op" and its fields) and returns the answer."""
         return self.requests([req], check=check)[0]
 
+    # -- results as lists or arrays ---------------------------------------------------
+
+    def _arrays_for(self, given):
+        return self.arrays if self.arrays is not None else A.is_array(given)
+
+    def _exact(self, given, rows):
+        return A.exact(rows) if self._arrays_for(given) else rows
+
+    def _floats(self, given, rows):
+        return A.floats(rows) if self._arrays_for(given) else rows
+
+    def _judged(self, given, j):
+        return A.judgement(j) if self._arrays_for(given) else j
+
     # -- exact values ---------------------------------------------------------------
 
     def eval_exact(self, points, t):
         """b(t) exactly, one Fraction per coordinate."""
         a = self.request({"op": "eval", "points": V.points(points), "t": V.number(t)})
-        return [V.fraction(c) for c in V.field(a, "point")]
+        return self._exact(points, _fractions(V.field(a, "point")))
 
     def eval_exact_batch(self, points, ts):
-        """b(t) exactly at each t, one request."""
+        """b(t) exactly at each t, one request (one row per t)."""
         a = self.request({"op": "eval", "points": V.points(points), "t": V.parameters(ts)})
-        return [[V.fraction(c) for c in V.field(r, "point")] for r in V.field(a, "results")]
+        return self._exact(points, [_fractions(V.field(r, "point")) for r in V.field(a, "results")])
+
+    def elevate(self, points, by=1):
+        """The control points of the same curve at degree n + by, exactly."""
+        a = self.request({"op": "elevate", "points": V.points(points), "by": V.number(by)})
+        return self._exact(points, _point_list(V.field(a, "points")))
+
+    def split(self, points, t):
+        """The control points of b on [0, t] and on [t, 1], exactly: (left, right)."""
+        a = self.request({"op": "split", "points": V.points(points), "t": V.number(t)})
+        left, right = (_point_list(V.field(a, k)) for k in ("left", "right"))
+        return self._exact(points, left), self._exact(points, right)
+
+    def derivative(self, points, order=1, t=None):
+        """The control points of the `order`-th derivative (degree n − order), or with `t`
+        the derivative vector at t, exactly."""
+        req = {"op": "derivative", "points": V.points(points), "order": V.number(order)}
+        if t is not None:
+            req["t"] = V.number(t)
+            return self._exact(points, _fractions(V.field(self.request(req), "vector")))
+        return self._exact(points, _point_list(V.field(self.request(req), "points")))
+
+    def to_bezier(self, power):
+        """The Bézier control points of the polynomial curve with power coefficients
+        `power` (one list per coordinate, of the coefficients of t^0..t^n), exactly."""
+        rows = V._as_list(power)
+        if not isinstance(rows, list):
+            raise OracleInputError(f"power must be one list of coefficients per coordinate, not {power!r}")
+        a = self.request({"op": "to_bezier", "power": [V.coordinates(r, "a coordinate's coefficients") for r in rows]})
+        return self._exact(power, _point_list(V.field(a, "points")))
+
+    def rational_eval(self, points, weights, t):
+        """The rational curve with `weights` at t, exactly, one Fraction per coordinate."""
+        a = self.request(_rational(points, weights, t))
+        return self._exact(points, _fractions(V.field(a, "point")))
+
+    def surface_eval(self, net, u, v):
+        """The tensor-product surface with control net `net` (rows of points) at (u, v),
+        exactly, one Fraction per coordinate."""
+        a = self.request(_surface(net, u, v))
+        return self._exact(net, _fractions(V.field(a, "point")))
+
+    def conic(self, points, weights):
+        """The conic through a rational quadratic: (type, implicit coefficients
+        [A, B, C, D, E, F] as Fractions, or None when the points are collinear)."""
+        a = self.request({"op": "conic", "points": V.points(points), "weights": V.coordinates(weights, "weights")})
+        implicit = V.field(a, "implicit")
+        return V.field(a, "type"), (None if implicit is None else _fractions(implicit))
 
     # -- judging float answers ------------------------------------------------------
 
@@ -138,29 +211,35 @@ class Oracle:
         correctly rounded value; None for NaN), `error_ulps`, `nearest`, `bound` (ulps of
         the exact value), `within_bound`, `condition` (with a float t), and `verdict`
         (a sentence per coordinate when an answer is inf or NaN, else None)."""
-        a = self.request(
-            {
-                "op": "eval",
-                "points": V.points(points),
-                "t": V.number(t),
-                "approx": V.answers(approx),
-                "method": method,
-            }
-        )
-        return _judgement(a)
+        return self._judged(points, self._judge(points, t, approx, method))
 
     def judge_batch(self, points, ts, approxes, method="de_casteljau"):
-        """`judge` at many parameters in one request (one approximation per t)."""
-        a = self.request(
-            {
-                "op": "eval",
-                "points": V.points(points),
-                "t": V.parameters(ts),
-                "approx": [V.answers(ap) for ap in V._as_list(approxes)],
-                "method": method,
-            }
-        )
-        return [_judgement(r) for r in V.field(a, "results")]
+        """`judge` at many parameters in one request (one approximation per t): a list of
+        judgements, or with arrays one judgement whose fields have a first axis over t."""
+        return self._judged(points, self._judge_batch(points, ts, approxes, method))
+
+    def _judge(self, points, t, approx, method):
+        req = {"op": "eval", "points": V.points(points), "t": V.number(t), "approx": V.answers(approx)}
+        req["method"] = method
+        return _judgement(self.request(req))
+
+    def _judge_batch(self, points, ts, approxes, method):
+        req = {"op": "eval", "points": V.points(points), "t": V.parameters(ts)}
+        req["approx"] = [V.answers(ap) for ap in V._as_list(approxes)]
+        req["method"] = method
+        return [_judgement(r) for r in V.field(self.request(req), "results")]
+
+    def judge_rational(self, points, weights, t, approx):
+        """`judge` for a rational curve: homogeneous de Casteljau then one division."""
+        req = _rational(points, weights, t)
+        req["approx"] = V.answers(approx)
+        return self._judged(points, _judgement(self.request(req)))
+
+    def judge_surface(self, net, u, v, approx):
+        """`judge` for a tensor-product surface: de Casteljau on the rows, then the column."""
+        req = _surface(net, u, v)
+        req["approx"] = V.answers(approx)
+        return self._judged(net, _judgement(self.request(req)))
 
     def ulps(self, points, t, approx):
         """Per coordinate, how many floats `approx` is from the correctly rounded b(t)."""
@@ -169,25 +248,65 @@ class Oracle:
     def within_bound(self, points, t, approx, method="de_casteljau"):
         """Whether every coordinate of `approx` is within the a priori error bound of
         `method` (decided exactly)."""
-        return all(V.field(self.judge(points, t, approx, method), "within_bound", _NO_BOUND))
+        return all(V.field(self._judge(points, t, approx, method), "within_bound", _NO_BOUND))
+
+    def assert_within_bound(self, points, t, approx, method="de_casteljau"):
+        """Asserts that `approx` (or, when `t` is a list, each of `approx`'s rows) is within
+        `method`'s bound; the failure says, per coordinate, the answer, the correctly
+        rounded value, ulps, the bound, the condition number and the exact value."""
+        if V.is_scalar(t):
+            judgements = [(t, V._as_list(approx), self._judge(points, t, approx, method))]
+        else:
+            ts, approxes = V._as_list(t), V._as_list(approx)
+            judgements = list(zip(ts, approxes, self._judge_batch(points, ts, approxes, method)))
+        for ti, ap, j in judgements:
+            if "within_bound" not in j:
+                raise OracleError("the oracle gave no bound" + _NO_BOUND)
+            if not all(j["within_bound"]):
+                raise AssertionError(within_bound_message(method, ti, ap, j))
 
     def bound(self, points, t, method="de_casteljau"):
         """The a priori error bound of `method` at a float t, in ulps of the exact value,
         per coordinate."""
         a = self.request({"op": "eval", "points": V.points(points), "t": V.number(t), "method": method})
-        return [V.to_float(b) for b in V.field(a, "bound", _NO_BOUND)]
+        return self._floats(points, [V.to_float(b) for b in V.field(a, "bound", _NO_BOUND)])
 
     def bound_batch(self, points, ts, method="de_casteljau"):
-        """`bound` at many float parameters, one request."""
+        """`bound` at many float parameters, one request (one row per t)."""
         a = self.request({"op": "eval", "points": V.points(points), "t": V.parameters(ts), "method": method})
-        return [[V.to_float(b) for b in V.field(r, "bound", _NO_BOUND)] for r in V.field(a, "results")]
+        rows = [[V.to_float(b) for b in V.field(r, "bound", _NO_BOUND)] for r in V.field(a, "results")]
+        return self._floats(points, rows)
 
 
 _NO_BOUND = ": a bound is given only where t (and every input) is a float exactly"
 
 
+def _fractions(values):
+    return [V.fraction(c) for c in values]
+
+
+def _point_list(points):
+    return [_fractions(p) for p in points]
+
+
+def _rational(points, weights, t):
+    return {
+        "op": "rational_eval",
+        "points": V.points(points),
+        "weights": V.coordinates(weights, "weights"),
+        "t": V.number(t),
+    }
+
+
+def _surface(net, u, v):
+    rows = V._as_list(net)
+    if isinstance(rows, (str, bytes)) or not hasattr(rows, "__iter__"):
+        raise OracleInputError(f"net must be a list of rows of points, not {net!r}")
+    return {"op": "surface_eval", "net": [V.points(r) for r in rows], "u": V.number(u), "v": V.number(v)}
+
+
 def _judgement(a):
-    out = {"point": [V.fraction(c) for c in V.field(a, "point")]}
+    out = {"point": _fractions(V.field(a, "point"))}
     if "ulps" in a:
         out["ulps"] = [V.ulps_count(u) for u in a["ulps"]]
         out["error_ulps"] = [V.to_float(e) for e in V.field(a, "error_ulps")]

@@ -2,5 +2,5 @@
 `_casteljau_oracle` (so that the pytest plugin can load without this name, which a user's
 project may have for its own module). See `_casteljau_oracle` for the documentation."""
 
-from _casteljau_oracle import *  # noqa: F403
+from _casteljau_oracle import *
 from _casteljau_oracle import __all__, __doc__  # noqa: F401

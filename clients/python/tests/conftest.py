@@ -6,8 +6,8 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), ".."))
 
-from _casteljau_oracle import pytest_plugin  # noqa: E402
-from _casteljau_oracle.pytest_plugin import casteljau_oracle  # noqa: E402,F401
+from _casteljau_oracle import pytest_plugin
+from _casteljau_oracle.pytest_plugin import casteljau_oracle  # noqa: F401
 
 
 def pytest_addoption(parser, pluginmanager):

@@ -45,6 +45,7 @@ def run_pytest(project, *args, python_args=()):
         capture_output=True,
         text=True,
         timeout=120,
+        check=False,
     )
 
 
