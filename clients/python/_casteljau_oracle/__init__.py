@@ -20,6 +20,7 @@ the client raises is an `OracleError`.
 from .errors import OracleError, OracleInputError, OracleProtocolError, OracleTimeout
 from .floats import ulps
 from .oracle import DEFAULT_TIMEOUT, METHODS, Oracle, find_binary
+from .pool import OraclePool
 
 
 def assert_within_bound(oracle, points, t, approx, method="de_casteljau"):
@@ -35,6 +36,7 @@ __all__ = [
     "Oracle",
     "OracleError",
     "OracleInputError",
+    "OraclePool",
     "OracleProtocolError",
     "OracleTimeout",
     "assert_within_bound",
