@@ -129,6 +129,17 @@ def parameters(ts):
     return [number(t) for t in ts]
 
 
+def json_default(x):
+    """`json.dumps`' `default`: a number JSON does not know (a numpy scalar, a Fraction, a
+    Decimal) exactly, an array as nested lists; anything else is refused."""
+    if isinstance(x, (numbers.Number, Decimal)):
+        return number(x)
+    converted = _as_list(x)
+    if converted is not x:
+        return converted
+    raise TypeError(f"{type(x).__name__} is not a number or a list")
+
+
 # -- answers back -------------------------------------------------------------------
 
 

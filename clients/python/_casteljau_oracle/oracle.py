@@ -86,7 +86,9 @@ class Oracle:
     def requests(self, reqs, check=True):
         """Sends many requests (dicts with "op" and its fields) and returns their answers,
         in order. Any number and size of requests is safe (a writer thread feeds the
-        oracle while this thread reads). The client numbers the requests with its own
+        oracle while this thread reads). numpy scalars and arrays, `Fraction`s and
+        `Decimal`s in a request are sent exactly (as `casteljau_oracle` sends any number).
+        The client numbers the requests with its own
         `id`s and checks each answer's; a request's own `id` is given back in its answer.
         With `check`, an error answer raises `OracleError` with the oracle's message."""
         lines, ids, own_ids = [], [], []
@@ -95,7 +97,8 @@ class Oracle:
                 raise OracleInputError(f"a request is a dict with an 'op', not {r!r}")
             i = next(self._ids)
             try:
-                line = json.dumps({"id": i, **{k: v for k, v in r.items() if k != "id"}}, allow_nan=False)
+                body = {k: v for k, v in r.items() if k != "id"}
+                line = json.dumps({"id": i, **body}, allow_nan=False, default=V.json_default)
             except (TypeError, ValueError) as e:
                 raise OracleInputError(f"the request cannot be sent as JSON ({e}): {r!r}"[:300]) from None
             lines.append(line.encode("utf-8") + b"\n")

@@ -13,3 +13,9 @@ from _casteljau_oracle.pytest_plugin import casteljau_oracle  # noqa: F401
 def pytest_addoption(parser, pluginmanager):
     if not pluginmanager.has_plugin(pytest_plugin.NAME):
         pytest_plugin.pytest_addoption(parser)
+
+
+def pytest_report_header(config):
+    import _casteljau_oracle
+
+    return f"casteljau_oracle client under test: {os.path.dirname(_casteljau_oracle.__file__)}"

@@ -104,3 +104,11 @@ def test_ulps_of_arrays_matches_ulps_of_floats():
     f32 = np.float32(0.1)
     assert ulps(np.array([f32]), np.array([0.1]))[0] == ulps(float(f32), 0.1)
     assert ulps(np.array([1.0]), math.nextafter(1.0, 2))[0] == 1
+
+
+def test_raw_requests_take_numpy_values_and_fractions(casteljau_oracle):
+    pts = np.array([[0, 1], [3, 5]], dtype=np.int64)
+    a = casteljau_oracle.request({"op": "eval", "points": pts, "t": np.float32(0.25)})
+    assert a["point"] == ["3/4", "2"]
+    a = casteljau_oracle.request({"op": "split", "points": [[np.float64(0.5)], [1]], "t": Fraction(1, 3)})
+    assert a["left"][-1] == ["2/3"]

@@ -209,7 +209,9 @@ def test_every_error_is_an_oracle_error(casteljau_oracle):
     with pytest.raises(OracleInputError, match="list of points"):
         o.eval_exact(3, 0)
     with pytest.raises(OracleInputError, match="JSON"):
-        o.request({"op": "eval", "points": [[Fraction(1, 3)]], "t": 0})
+        o.request({"op": "eval", "points": [[object()]], "t": 0})
+    with pytest.raises(OracleInputError, match="JSON"):
+        o.request({"op": "eval", "points": [[float("nan")]], "t": 0})
     with pytest.raises(OracleError, match="cannot run"):
         Oracle(os.path.join(os.path.dirname(__file__), "no", "such", "casteljau"))
     # the oracle goes on after all of these
@@ -222,3 +224,13 @@ def test_a_requests_own_id_comes_back_and_the_clients_ids_stay_inside(casteljau_
     )
     assert a == {"id": "mine", "ok": True, "point": ["3"]}
     assert b == {"ok": True, "point": ["4"]}
+
+
+def test_an_over_long_request_gets_its_own_error_answer(casteljau_oracle):
+    # the oracle skips a line over 1 MiB unread and answers with the id only when the line
+    # starts with it: the client writes its id first
+    huge = {"op": "eval", "points": [[1.2345678901234567] for _ in range(60000)], "t": 0.5}
+    with pytest.raises(OracleError, match="longer than"):
+        casteljau_oracle.request(huge)
+    first, second = casteljau_oracle.requests([huge, {"op": "eval", "points": [[3]], "t": 0}], check=False)
+    assert not first["ok"] and "longer than" in first["error"] and second["point"] == ["3"]
