@@ -4,15 +4,27 @@
 import os
 import subprocess
 import sys
-from importlib import metadata
+import tempfile
 
 import pytest
 
 
 def installed_plugin():
-    eps = metadata.entry_points()
-    group = eps.select(group="pytest11") if hasattr(eps, "select") else eps.get("pytest11", [])
-    return [ep for ep in group if ep.value.split(":")[0].split(".")[0].endswith("casteljau_oracle")]
+    """Whether this interpreter, started afresh outside the repository (as the projects
+    below run it), has the client installed, with its pytest11 entry point."""
+    probe = (
+        "from importlib import metadata\n"
+        "try:\n"
+        "    d = metadata.distribution('casteljau-oracle')\n"
+        "    print(any(ep.group == 'pytest11' for ep in d.entry_points))\n"
+        "except metadata.PackageNotFoundError:\n"
+        "    print(False)\n"
+    )
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    r = subprocess.run(
+        [sys.executable, "-c", probe], cwd=tempfile.gettempdir(), env=env, capture_output=True, text=True, check=False
+    )
+    return r.stdout.strip() == "True"
 
 
 pytestmark = pytest.mark.skipif(
