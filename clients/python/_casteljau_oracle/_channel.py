@@ -99,7 +99,8 @@ class Channel:
 
     def kill(self):
         """Ends the oracle at once (also a stopped one), so that nothing it still writes can
-        be read as an answer. The process is reaped later (by `subprocess`), not waited for."""
+        be read as an answer. The process is reaped later (`reap`), so that until then its
+        pid still names it."""
         try:
             self.proc.kill()
         except OSError:
@@ -107,6 +108,13 @@ class Channel:
         if self._writer is not None:
             self._writer.join(timeout=10)  # the pipe's reader is gone: the write fails now
         self._close_pipes()
+
+    def reap(self):
+        """Collects the exit status of a killed process (no zombie, no ResourceWarning)."""
+        try:
+            self.proc.wait(timeout=5)
+        except subprocess.TimeoutExpired:
+            pass
 
     def _close_pipes(self):
         self._reader.join(timeout=10)

@@ -60,9 +60,15 @@ class Oracle:
         self._ids = itertools.count(1)
         self._lock = threading.Lock()
         self._closed = False
+        self._killed = []
         self._channel = self._start()
 
+    def _reap(self):
+        while self._killed:
+            self._killed.pop().reap()
+
     def _start(self):
+        self._reap()
         channel = Channel([self.binary, "oracle", *self.args])
         self._proc = channel.proc  # the latest process, for a test that signals it
         return channel
@@ -74,6 +80,13 @@ class Oracle:
             channel, self._channel = self._channel, None
             if channel is not None:
                 channel.close()
+            self._reap()
+
+    def __del__(self):
+        try:
+            self._reap()
+        except Exception:  # noqa: BLE001 - nothing may escape a finaliser
+            pass
 
     def __enter__(self):
         return self
@@ -117,6 +130,7 @@ class Oracle:
                 # whatever stopped the exchange, answers may still come: none may be read
                 self._channel = None
                 channel.kill()
+                self._killed.append(channel)
                 raise
         for a, own in zip(answers, own_ids):
             if own is _ABSENT:

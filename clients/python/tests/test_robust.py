@@ -167,6 +167,8 @@ def test_a_stopped_oracle_times_out(casteljau_oracle):
         os.kill(stopped.pid, signal.SIGCONT)
     assert outcome[0] == "error" and isinstance(outcome[1], OracleTimeout), outcome
     assert o.eval_exact([[0], [2]], Fraction(1, 2)) == [Fraction(1)]
+    # the stopped process was killed, and reaped when the next one started (no zombie)
+    assert stopped.returncode == -signal.SIGKILL and o._proc is not stopped
     o.close()
 
 
