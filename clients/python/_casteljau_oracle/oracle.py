@@ -2,6 +2,7 @@
 
 import itertools
 import json
+import math
 import os
 import shutil
 import threading
@@ -27,7 +28,10 @@ def find_binary(binary=None):
     path = binary or os.environ.get("CASTELJAU_BIN") or shutil.which("casteljau")
     if not path:
         raise OracleError("casteljau not found: pass binary=, set CASTELJAU_BIN or put it on PATH")
-    return os.fspath(path)
+    try:
+        return os.fspath(path)
+    except TypeError:
+        raise OracleInputError(f"binary is a path, not {path!r}") from None
 
 
 class Oracle:
@@ -53,7 +57,9 @@ class Oracle:
             A.numpy()
         self.arrays = arrays
         self.args = tuple(args)
-        if timeout is not None and not timeout > 0:
+        if timeout is not None and not (
+            isinstance(timeout, (int, float)) and not isinstance(timeout, bool) and 0 < timeout < math.inf
+        ):
             raise OracleInputError(f"timeout must be a positive number of seconds or None, not {timeout!r}")
         self.timeout = timeout
         self.restarts = 0
@@ -100,10 +106,9 @@ class Oracle:
         """Sends many requests (dicts with "op" and its fields) and returns their answers,
         in order. Any number and size of requests is safe (a writer thread feeds the
         oracle while this thread reads). numpy scalars and arrays, `Fraction`s and
-        `Decimal`s in a request are sent exactly (as `casteljau_oracle` sends any number).
-        The client numbers the requests with its own
-        `id`s and checks each answer's; a request's own `id` is given back in its answer.
-        With `check`, an error answer raises `OracleError` with the oracle's message."""
+        `Decimal`s in a request are sent exactly. The client numbers the requests with its
+        own `id`s and checks each answer's; a request's own `id` is given back in its
+        answer. With `check`, an error answer raises `OracleError` with its message."""
         lines, ids, own_ids = [], [], []
         for r in reqs:
             if not isinstance(r, dict):

@@ -185,9 +185,11 @@ def test_an_oracle_that_died_is_an_oracle_error_then_restarted(casteljau_oracle)
 
 
 def test_the_timeout_is_checked():
-    for bad in (0, -1.0, float("nan")):
+    for bad in (0, -1.0, float("nan"), float("inf"), "5", True):
         with pytest.raises(OracleError, match="timeout"):
             Oracle(sys.executable, timeout=bad)
+    with pytest.raises(OracleInputError, match="path"):
+        Oracle(3.5)
 
 
 def test_every_error_is_an_oracle_error(casteljau_oracle):
