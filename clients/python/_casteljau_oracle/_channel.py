@@ -69,7 +69,11 @@ class Channel:
                     "the oracle process was ended"
                 ) from None
             if line is _EOF:
-                raise OracleError(f"the oracle stopped (exit status {self.proc.poll()})")
+                try:
+                    status = self.proc.wait(timeout=1)
+                except subprocess.TimeoutExpired:  # it closed its output but runs on
+                    status = None
+                raise OracleError(f"the oracle stopped (exit status {status})")
             try:
                 answer = json.loads(line)
             except ValueError as e:
