@@ -151,6 +151,39 @@ fn false_variants_are_never_proved() {
 }
 
 #[test]
+fn induction_from_one_reads_the_base_from_the_definition() {
+    // At r = 1 the scheme point is (1 − t)·b[i] + t·b[i+1], not b[i]; Δ¹b_j = b[j+1] − b[j].
+    let scheme_from_1 = claim(
+        "s1",
+        STEP_RANGES,
+        "b(i, r, t)",
+        "sum(j, 0, r, b[i+j]*B(j, r, t))",
+        "induction = \"r\"",
+    );
+    let delta_from_1 = claim(
+        "d1",
+        r#""n = 1..", "k = 1..=n", "j = 0..=n-k""#,
+        "delta(b, k, j)",
+        "sum(i, 0, k, (-1)^(k-i)*C(k, i)*b[j+i])",
+        "induction = \"k\"",
+    );
+    // The scheme one level lower: its base at r = 1 is false.
+    let offset = claim(
+        "off",
+        STEP_RANGES,
+        "b(i, r, t)",
+        "sum(j, 0, r-1, b[i+j]*B(j, r-1, t))",
+        "induction = \"r\"",
+    );
+    let out = verdicts(&[scheme_from_1, delta_from_1, offset]);
+    for (id, v, c) in &out[..2] {
+        assert_eq!(*v, Verdict::Proved, "{id}: {c}");
+        assert!(c.contains("from 1"), "{id}: {c}");
+    }
+    assert!(matches!(out[2].1, Verdict::Fails | Verdict::Error), "{:?}", out[2]);
+}
+
+#[test]
 fn a_lemma_only_proved_in_a_range_proves_nothing_for_every_n() {
     let in_range = claim(
         "in-range",

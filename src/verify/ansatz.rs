@@ -33,8 +33,9 @@ pub const MAX_DEGREE: u32 = 6;
 /// Most unknown coefficients in one ansatz.
 const MAX_UNKNOWNS: usize = 400;
 
-/// The work the search may spend over all degrees: Σ nonzero coefficients × min(rows, columns)
-/// × (64-bit words of the largest coefficient) of its linear systems.
+/// The work the search may spend over all degrees: 16 per polynomial term built (or pair of
+/// terms multiplied) for its equations, and Σ nonzero coefficients × min(rows, columns) ×
+/// (64-bit words of the largest coefficient) of its linear systems.
 pub const MAX_ANSATZ_WORK: u128 = 100_000_000;
 
 /// The polynomial terms the equations of one degree may hold (memory).
@@ -57,16 +58,6 @@ fn monomials(vars: usize, deg: u32) -> Vec<Vec<u16>> {
     out
 }
 
-fn monomial(sym: &Symbols, e: &[u16]) -> RatFunc {
-    let mut m = RatFunc::from_int(1);
-    for (k, &x) in e.iter().enumerate() {
-        for _ in 0..x {
-            m = m.mul(&sym.var(&sym.names[k]));
-        }
-    }
-    m
-}
-
 fn show_monomial(sym: &Symbols, e: &[u16]) -> String {
     let parts: Vec<String> = e
         .iter()
@@ -87,19 +78,72 @@ fn show_monomial(sym: &Symbols, e: &[u16]) -> String {
     }
 }
 
+/// One equation of a linear system: its nonzero entries `(column, coefficient)`, the last
+/// column the right-hand side.
+pub(super) type Row = Vec<(usize, BigRational)>;
+
 /// The cost of eliminating the `width` columns of `a`: each of at most min(rows, columns)
 /// pivots updates the nonzero entries, on numbers of the largest entry's words.
-pub(super) fn elimination_work(a: &[Vec<BigRational>], width: usize) -> u128 {
-    let nonzero = a.iter().flatten().filter(|x| !x.is_zero()).count() as u128;
+pub(super) fn elimination_work(a: &[Row], width: usize) -> u128 {
+    let nonzero = a.iter().map(Vec::len).sum::<usize>() as u128;
     let words = a
         .iter()
         .flatten()
-        .map(|x| x.numer().bits() + x.denom().bits())
+        .map(|(_, x)| x.numer().bits() + x.denom().bits())
         .max()
         .unwrap_or(0)
         / 64
         + 1;
     nonzero * a.len().min(width) as u128 * u128::from(words)
+}
+
+/// The rows `a` written out in full, `width` entries each, for exact elimination.
+fn dense(a: &[&Row], width: usize) -> Vec<Vec<BigRational>> {
+    a.iter()
+        .map(|row| {
+            let mut out = vec![BigRational::zero(); width];
+            for (j, x) in row.iter() {
+                out[*j] = x.clone();
+            }
+            out
+        })
+        .collect()
+}
+
+/// The work of one search: its own limit ([`MAX_ANSATZ_WORK`]) and the claim's budget.
+struct Work<'a> {
+    sym: &'a Symbols,
+    spent: u128,
+    /// Why the search's own limit stopped it, once it has.
+    over: Option<String>,
+}
+
+impl Work<'_> {
+    /// Adds `cost` (for `what`), or stops the search: at its own limit first (its message names
+    /// it), then at the claim's budget.
+    fn charge(&mut self, cost: u128, what: &str) -> Result<()> {
+        self.spent = self.spent.saturating_add(cost);
+        if self.spent > MAX_ANSATZ_WORK {
+            self.over = Some(format!(
+                "its linear system ({what}) passes MAX_ANSATZ_WORK = {MAX_ANSATZ_WORK} (polynomial terms built, nonzero coefficients × pivots × words, over all degrees)"
+            ));
+            return Err(Error::Domain("the search's work limit".into()));
+        }
+        self.sym
+            .budget
+            .draw("work of the WZ certificate search", cost, MAX_ANSATZ_WORK)
+    }
+}
+
+/// The product of `parts` over every symbol (`one` is 1 over them), its work charged as it is
+/// built (16 per pair of terms multiplied).
+fn product(work: &mut Work<'_>, one: &Poly, parts: &[&Poly]) -> Result<Poly> {
+    let mut p = one.clone();
+    for q in parts {
+        work.charge(16 * p.len() as u128 * q.len() as u128, "building its equations")?;
+        p = p.mul(q);
+    }
+    Ok(p)
 }
 
 /// A candidate certificate `R` for `Σ_k F(n, k)` with `F` one term, or an error saying why none
@@ -121,22 +165,88 @@ pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str) -> Result<Expr> {
         return Err(none("the summand is not hypergeometric in n and k".into()));
     };
     let (affs, polys) = ratio_denominator(sym, &n1, f)?;
-    let mut d = RatFunc::from_int(1);
-    let mut d_text: Vec<String> = Vec::new();
-    for a in &affs {
-        d = d.mul(&a.to_rf(sym));
-        d_text.push(format!("({a})"));
-    }
-    for p in &polys {
-        d = d.mul(&RatFunc::poly(p.clone()));
-        d_text.push(format!("({p})"));
-    }
-    let d1 = sym.subst_rf(&d, k, &Aff::var(k).shifted(1));
+    let mut d_text: Vec<String> = affs.iter().map(|a| format!("({a})")).collect();
+    d_text.extend(polys.iter().map(|p| format!("({p})")));
     let e0 = r1.sub(&RatFunc::from_int(1));
-    let mut work: u128 = 0;
+    let kx = sym
+        .index(k)
+        .ok_or_else(|| none(format!("{k} is not a symbol of the claim")))?;
+    let mut work = Work {
+        sym,
+        spent: 0,
+        over: None,
+    };
+    // With D the product of those factors, and r2 = A/B,
+    // E_i = m_i/D − m_i(k+1)/D(k+1) · r2 = (m_i·U − m_i(k+1)·V) / Q over Q = D·D(k+1)·B,
+    // and Σ c_i E_i = −E0 times Q·E0.den is Σ c_i (m_i·U − m_i(k+1)·V)·E0.den = −E0.num·Q: U,
+    // V and the right side are built once, and each column is two of them shifted by a
+    // monomial (no arithmetic).
+    let one = Poly::constant(&sym.names, &BigRational::one());
+    let stop = |work: &mut Work<'_>, e: Error| match work.over.take() {
+        Some(why) => none(format!("the search stopped before degree 0: {why}")),
+        None => e,
+    };
+    // Each side a list of factors: D and D(k+1) factor by factor, the rest as polynomials.
+    let mut d_parts: Vec<Poly> = affs.iter().map(|a| a.to_rf(sym).num).collect();
+    d_parts.extend(polys.iter().cloned());
+    let d1_parts: Vec<Poly> = d_parts
+        .iter()
+        .map(|f| sym.subst_poly(f, k, &Aff::var(k).shifted(1)))
+        .collect();
+    let joined = |a: &[&Poly], b: &[Poly], c: &[&Poly]| -> Vec<Poly> {
+        a.iter()
+            .map(|p| (*p).clone())
+            .chain(b.iter().cloned())
+            .chain(c.iter().map(|p| (*p).clone()))
+            .collect()
+    };
+    let mut sides = [
+        joined(&[&r2.den, &e0.den], &d1_parts, &[]),
+        joined(&[&r2.num, &e0.den], &d_parts, &[]),
+        joined(&[&e0.num, &r2.den], &d_parts, &d1_parts.iter().collect::<Vec<_>>()),
+    ];
+    // A factor of D or D(k+1) that divides U, V and the right side divides every equation:
+    // dividing it out leaves the same solutions (polynomials have no zero divisors) in fewer
+    // and smaller equations.
+    for f in d_parts.iter().chain(&d1_parts).filter(|f| f.as_constant().is_none()) {
+        loop {
+            let mut at = Vec::with_capacity(3);
+            for side in &sides {
+                let cost: u128 = side.iter().map(|p| p.len() as u128).sum::<u128>() * f.len() as u128;
+                if let Err(e) = work.charge(16 * cost, "dividing out common factors") {
+                    return Err(stop(&mut work, e));
+                }
+                match side
+                    .iter()
+                    .enumerate()
+                    .find_map(|(i, p)| p.exact_div(f).map(|q| (i, q)))
+                {
+                    Some(found) => at.push(found),
+                    None => break,
+                }
+            }
+            if at.len() < 3 {
+                break;
+            }
+            for (side, (i, q)) in sides.iter_mut().zip(at) {
+                side[i] = q;
+            }
+        }
+    }
+    let mut built = Vec::with_capacity(3);
+    for side in &sides {
+        match product(&mut work, &one, &side.iter().collect::<Vec<_>>()) {
+            Ok(p) => built.push(p),
+            Err(e) => return Err(stop(&mut work, e)),
+        }
+    }
+    let (u, v, rhs) = (built.remove(0), built.remove(0), built.remove(0));
+    // V·(k+1)^j, for the powers of k in the monomials: m(k+1) = (m/k^j)·(k+1)^j.
+    let k_plus_1 = Poly::var(&sym.names, kx).sub(&Poly::constant(&sym.names, &-BigRational::one()));
+    let mut v_pows = vec![v];
     let mut searched: Option<u32> = None;
     let mut stopped = None;
-    'degree: for deg in 0..=MAX_DEGREE {
+    for deg in 0..=MAX_DEGREE {
         let monos = monomials(sym.names.len(), deg);
         if monos.len() > MAX_UNKNOWNS {
             stopped = Some(format!(
@@ -145,46 +255,43 @@ pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str) -> Result<Expr> {
             ));
             break;
         }
-        // E_i = m_i/D − m_i(k+1)/D(k+1) · r2; Σ c_i E_i = −E_0.
-        let mut es: Vec<RatFunc> = Vec::with_capacity(monos.len());
-        let mut terms = 0usize;
-        for e in &monos {
-            let m = monomial(sym, e);
-            let m1 = sym.subst_rf(&m, k, &Aff::var(k).shifted(1));
-            let a = m.div(&d)?;
-            let b = m1.div(&d1)?.mul(&r2);
-            let x = a.sub(&b);
-            terms += x.num.len() + x.den.len();
-            if terms > MAX_ANSATZ_TERMS {
-                stopped = Some(format!(
-                    "its equations hold more than MAX_ANSATZ_TERMS = {MAX_ANSATZ_TERMS} polynomial terms"
-                ));
-                break 'degree;
-            }
-            es.push(x);
+        let terms: usize = monos
+            .iter()
+            .map(|e| {
+                let j = usize::from(e[kx]);
+                u.len() + v_pows.get(j).map_or(v_pows[0].len() * (j + 1), Poly::len)
+            })
+            .sum();
+        if terms > MAX_ANSATZ_TERMS {
+            stopped = Some(format!(
+                "its equations hold more than MAX_ANSATZ_TERMS = {MAX_ANSATZ_TERMS} polynomial terms"
+            ));
+            break;
         }
-        let q = es[0].den.clone();
-        if es.iter().any(|x| x.den != q) {
-            return Err(none("the ansatz's denominators differ".into()));
-        }
-        // Σ c_i E_i.num · E0.den = −E0.num · Q, coefficient by coefficient.
-        let cols: Vec<Poly> = es.iter().map(|x| x.num.mul(&e0.den)).collect();
-        let rhs = e0.num.mul(&q);
-        let mut over = None;
-        let mut charge = |cost: u128, what: &str| -> Result<()> {
-            work = work.saturating_add(cost);
-            if work > MAX_ANSATZ_WORK {
-                over = Some(format!(
-                    "its linear system ({what}) passes MAX_ANSATZ_WORK = {MAX_ANSATZ_WORK} (nonzero coefficients × pivots × words, over all degrees)"
-                ));
-                return Err(Error::Domain("the search's work limit".into()));
+        if let Err(e) = work.charge(16 * terms as u128, "building its equations") {
+            match work.over.take() {
+                Some(why) => {
+                    stopped = Some(why);
+                    break;
+                }
+                None => return Err(e),
             }
-            // The search's own limit first (its message names it), then the claim's.
-            sym.budget
-                .draw("work of the WZ certificate search", cost, MAX_ANSATZ_WORK)
-        };
-        let found = solve(sym, &cols, Some(&rhs), 0, &mut charge);
-        if let Some(why) = over {
+        }
+        while v_pows.len() <= deg as usize {
+            let next = v_pows[v_pows.len() - 1].mul(&k_plus_1);
+            v_pows.push(next);
+        }
+        let cols: Vec<Poly> = monos
+            .iter()
+            .map(|e| {
+                let mut below_k = e.clone();
+                below_k[kx] = 0;
+                u.times_monomial(&sym.names, e)
+                    .sub(&v_pows[usize::from(e[kx])].times_monomial(&sym.names, &below_k))
+            })
+            .collect();
+        let found = solve(sym, &cols, Some(&rhs), 0, &mut |cost, what| work.charge(cost, what));
+        if let Some(why) = work.over.take() {
             stopped = Some(why);
             break;
         }
@@ -252,18 +359,19 @@ pub(super) fn solve(
     charge: &mut dyn FnMut(u128, &str) -> Result<()>,
 ) -> Result<Option<Vec<BigRational>>> {
     let width = cols.len() + 1;
-    let mut rows: BTreeMap<Vec<u16>, Vec<BigRational>> = BTreeMap::new();
+    // Sparse rows: a system has many more equations than unknowns, most entries 0.
+    let mut rows: BTreeMap<Vec<u16>, Row> = BTreeMap::new();
     for (j, c) in cols.iter().enumerate() {
         for (e, v) in c.terms_in(sym.names.len()) {
-            rows.entry(e).or_insert_with(|| vec![BigRational::zero(); width])[j] += v;
+            rows.entry(e).or_default().push((j, v));
         }
     }
     if let Some(g) = given {
         for (e, v) in g.terms_in(sym.names.len()) {
-            rows.entry(e).or_insert_with(|| vec![BigRational::zero(); width])[width - 1] -= v;
+            rows.entry(e).or_default().push((width - 1, -v));
         }
     }
-    let mut a: Vec<Vec<BigRational>> = rows.into_values().collect();
+    let a: Vec<Row> = rows.into_values().collect();
     if a.is_empty() {
         // Every column is zero: nothing to solve for (it never happens with a nonzero summand).
         return Ok(None);
@@ -274,30 +382,35 @@ pub(super) fn solve(
     // Most systems of the search have no solution: a pass modulo a prime, far cheaper than
     // exact elimination, says so first.
     charge(estimate / MODULAR_DISCOUNT, &system)?;
-    let Some(basis) = modular::may_solve(&a, given.is_some(), first_free) else {
+    let Some(basis) = modular::may_solve(&a, width, given.is_some(), first_free) else {
         return Ok(None);
     };
     // Exact elimination on the rows that span the system modulo the prime (almost surely its
     // rows over Q too); a solution of them is checked on every row, else all rows are used.
-    let mut sub: Vec<Vec<BigRational>> = basis.iter().map(|&r| a[r].clone()).collect();
+    let mut sub = dense(&basis.iter().map(|&r| &a[r]).collect::<Vec<_>>(), width);
     let sub_estimate = estimate * (sub.len() as u128 + 1) / (h as u128 + 1);
     charge(sub_estimate, &system)?;
     if let Some(x) = exact(&mut sub, given.is_some(), first_free)? {
-        if a.iter().all(|row| satisfied(row, &x)) {
+        if a.iter().all(|row| satisfied(row, width, &x)) {
             return Ok(Some(x));
         }
     }
     charge(estimate, &system)?;
-    exact(&mut a, given.is_some(), first_free)
+    exact(
+        &mut dense(&a.iter().collect::<Vec<_>>(), width),
+        given.is_some(),
+        first_free,
+    )
 }
 
-/// Whether `row · (x, −1) = 0` (the last entry of `row` is the right-hand side).
-fn satisfied(row: &[BigRational], x: &[BigRational]) -> bool {
-    let (rhs, lhs) = row.split_last().expect("a row has a right-hand side");
-    let mut total = -rhs.clone();
-    for (c, v) in lhs.iter().zip(x) {
-        if !c.is_zero() && !v.is_zero() {
-            total += c * v;
+/// Whether `row · (x, −1) = 0` (column `width − 1` is the right-hand side).
+fn satisfied(row: &Row, width: usize, x: &[BigRational]) -> bool {
+    let mut total = BigRational::zero();
+    for (j, c) in row {
+        if *j == width - 1 {
+            total -= c;
+        } else if !x[*j].is_zero() {
+            total += c * &x[*j];
         }
     }
     total.is_zero()

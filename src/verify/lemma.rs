@@ -558,7 +558,8 @@ impl Rewriter<'_> {
 
 /// Which end of an induction to unfold the recursive objects at.
 pub(crate) enum Unfold<'a> {
-    /// The objects whose recursion argument is exactly `lo`, by the base case.
+    /// The objects whose recursion argument is exactly `lo`, by their definition there: the
+    /// base case at `lo = 0`, else the recursion unfolded `lo` times down to it.
     Base(&'a Expr),
     /// The objects whose recursion argument is exactly `var + 1`, by one step of the recursion
     /// (down to `var`).
@@ -603,12 +604,21 @@ fn unfold_in(
     let step_of = |var: &str| Expr::add(Expr::Var(var.into()), Expr::int(1));
     let unfolded = match how {
         Unfold::Base(lo) if args[k] == **lo => {
+            let steps = base_steps(lo)?;
             let at = if object == Object::Scheme { &args[0] } else { &args[1] };
-            out.read(format!(
-                "{} at {lo}: {p}[…] (the base of its recursion)",
-                object.phrase()
-            ));
-            Expr::Index(p.into(), vec![at.clone()])
+            if steps == 0 {
+                out.read(format!(
+                    "{} at {lo}: {p}[…] (the base of its recursion)",
+                    object.phrase()
+                ));
+                Expr::Index(p.into(), vec![at.clone()])
+            } else {
+                out.read(format!(
+                    "{} at {lo}: its recursion unfolded {lo} times down to its base {p}[…]",
+                    object.phrase()
+                ));
+                unfolded_from_base(object, p, at, args.get(2), steps)
+            }
         }
         Unfold::Step(var) if args[k] == step_of(var) => {
             let v = Expr::Var((*var).into());
@@ -648,3 +658,71 @@ fn unfold_in(
     }
     Ok(unfolded)
 }
+
+/// Most steps of a recursion unfolded to read an object at an induction's first value (the
+/// coefficients, at most 3^steps, stay within an `i64`).
+const MAX_BASE_STEPS: i64 = 32;
+
+/// The number of recursion steps from the definition's base (0) to the first value `lo` of an
+/// induction, or an error when `lo` is not an integer literal from 0 to [`MAX_BASE_STEPS`]: the
+/// base case is read from the definition at `lo`, never assumed.
+fn base_steps(lo: &Expr) -> Result<usize> {
+    let steps = match lo {
+        Expr::Num(q) if q.is_integer() => i64::try_from(q.to_integer()).ok(),
+        _ => None,
+    };
+    match steps {
+        Some(s) if (0..=MAX_BASE_STEPS).contains(&s) => Ok(s as usize),
+        _ => Err(Error::Domain(format!(
+            "induction from {lo}: the base case unfolds the recursion from its base at 0, so the first value must be an integer from 0 to MAX_BASE_STEPS = {MAX_BASE_STEPS}"
+        ))),
+    }
+}
+
+/// The object at recursion argument `steps`, written by its recursion unfolded `steps` times
+/// down to the control points: `Σ_m c_m · p[at + m]`, each `c_m` a polynomial in the scheme's
+/// parameter `g` (integers for the differences), computed exactly from the recursion:
+/// `b(i, r+1, g) = (1 − g)·b(i, r, g) + g·b(i+1, r, g)` and `Δ^{r+1}b_j = Δ^r b_{j+1} − Δ^r b_j`.
+fn unfolded_from_base(object: Object, p: &str, at: &Expr, g: Option<&Expr>, steps: usize) -> Expr {
+    // c[m][e]: the coefficient of g^e in c_m.
+    let mut c: Vec<Vec<i64>> = vec![vec![1]];
+    for _ in 0..steps {
+        let mut next = vec![vec![0i64; c[0].len() + 1]; c.len() + 1];
+        for (m, cm) in c.iter().enumerate() {
+            for (e, &x) in cm.iter().enumerate() {
+                if object == Object::Scheme {
+                    // (1 − g)·c_m at m, g·c_m at m + 1.
+                    next[m][e] += x;
+                    next[m][e + 1] -= x;
+                    next[m + 1][e + 1] += x;
+                } else {
+                    // −c_m at m, c_m at m + 1.
+                    next[m][e] -= x;
+                    next[m + 1][e] += x;
+                }
+            }
+        }
+        c = next;
+    }
+    let mut total: Option<Expr> = None;
+    for (m, cm) in c.iter().enumerate() {
+        let point = Expr::Index(p.into(), vec![Expr::add(at.clone(), Expr::int(m as i64))]);
+        for (e, &x) in cm.iter().enumerate().filter(|(_, &x)| x != 0) {
+            let mut term = Expr::mul(Expr::int(x.abs()), point.clone());
+            if let (Some(g), true) = (g, e > 0) {
+                term = Expr::mul(Expr::pow(g.clone(), Expr::int(e as i64)), term);
+            }
+            total = Some(match (total, x < 0) {
+                (None, false) => term,
+                (None, true) => Expr::Neg(Box::new(term)),
+                (Some(t), false) => Expr::add(t, term),
+                (Some(t), true) => Expr::sub(t, term),
+            });
+        }
+    }
+    total.unwrap_or_else(|| Expr::int(0))
+}
+
+#[cfg(test)]
+#[path = "lemma_tests.rs"]
+mod tests;

@@ -8,6 +8,7 @@ use crate::scalar;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 use std::borrow::Cow;
+use std::collections::btree_map::Entry;
 use std::collections::BTreeMap;
 use std::fmt;
 use std::rc::Rc;
@@ -167,27 +168,64 @@ impl Poly {
     pub fn exact_div(&self, d: &Poly) -> Option<Poly> {
         let (num, d) = aligned(self, d);
         let (ed, cd) = d.terms.iter().next_back()?;
+        // The remainder is updated in place: each step touches only the terms of `d`.
         let mut rem = num.into_owned();
-        let mut q = Poly::constant(&rem.names, &BigRational::zero());
+        let mut q = BTreeMap::new();
         for _ in 0..MAX_TERMS {
             let Some((er, cr)) = rem.terms.iter().next_back() else {
-                return Some(q);
+                return Some(Poly {
+                    names: rem.names,
+                    terms: q,
+                });
             };
             if er.iter().zip(ed).any(|(a, b)| a < b) {
                 return None;
             }
             let mono: Vec<u16> = er.iter().zip(ed).map(|(a, b)| a - b).collect();
             let c = cr / cd;
-            let mut t = BTreeMap::new();
-            t.insert(mono, c);
-            let term = Poly {
-                names: rem.names.clone(),
-                terms: t,
-            };
-            rem = rem.add_scaled(&term.mul(&d), false);
-            q = q.add_scaled(&term, true);
+            for (e, x) in &d.terms {
+                let at: Vec<u16> = e.iter().zip(&mono).map(|(a, b)| a.saturating_add(*b)).collect();
+                match rem.terms.entry(at) {
+                    Entry::Occupied(mut o) => {
+                        *o.get_mut() -= x * &c;
+                        if o.get().is_zero() {
+                            o.remove();
+                        }
+                    }
+                    Entry::Vacant(v) => {
+                        v.insert(-(x * &c));
+                    }
+                }
+            }
+            q.insert(mono, c);
         }
         None
+    }
+
+    /// `self − o`.
+    pub fn sub(&self, o: &Poly) -> Poly {
+        self.add_scaled(o, false)
+    }
+
+    /// `self · x^e` over the variables `names` (the exponents `e` one per name; a constant built
+    /// without names is lifted to them): the exponents shifted, no arithmetic.
+    pub fn times_monomial(&self, names: &Rc<[String]>, e: &[u16]) -> Poly {
+        debug_assert!(self.names.is_empty() || self.names.len() == names.len());
+        let terms = self
+            .terms
+            .iter()
+            .map(|(x, c)| {
+                let mut m = e.to_vec();
+                for (a, b) in m.iter_mut().zip(x) {
+                    *a = a.saturating_add(*b);
+                }
+                (m, c.clone())
+            })
+            .collect();
+        Poly {
+            names: names.clone(),
+            terms,
+        }
     }
 
     /// The value at `point` (one rational per variable).
@@ -369,6 +407,28 @@ mod tests {
         assert!(a.num.exact_div(&y.add(&RatFunc::from_int(1)).num).is_none());
         assert!(x.num.exact_div(&y.num).is_none());
         assert_eq!(x.num.exact_div(&x.num).unwrap().as_constant(), Some(BigRational::one()));
+    }
+
+    #[test]
+    fn exact_division_of_a_product_and_shifts_by_monomials() {
+        let names: Rc<[String]> = Rc::from(vec!["x".to_string(), "y".to_string(), "z".to_string()]);
+        let v = |k| RatFunc::poly(Poly::var(&names, k));
+        let half = RatFunc::from_rat(&BigRational::new(1.into(), 2.into()));
+        // (x + y/2 + z + 1)^4 · (x·y − 3z + 2), divided by each factor in turn.
+        let f = v(0).add(&v(1).mul(&half)).add(&v(2)).add(&RatFunc::from_int(1));
+        let g = v(0)
+            .mul(&v(1))
+            .sub(&RatFunc::from_int(3).mul(&v(2)))
+            .add(&RatFunc::from_int(2));
+        let f4 = f.mul(&f).mul(&f).mul(&f);
+        let p = f4.mul(&g).num;
+        assert_eq!(p.exact_div(&g.num), Some(f4.num.clone()));
+        assert_eq!(p.exact_div(&f4.num), Some(g.num.clone()));
+        assert!(p.exact_div(&v(0).add(&v(2)).num).is_none());
+        // x·y²·g, by shifting g's exponents.
+        let shifted = g.num.times_monomial(&names, &[1, 2, 0]);
+        assert_eq!(shifted, v(0).mul(&v(1)).mul(&v(1)).mul(&g).num);
+        assert_eq!(shifted.sub(&shifted).len(), 0);
     }
 
     #[test]

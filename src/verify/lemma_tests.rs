@@ -1,0 +1,88 @@
+// Induction from a first value other than 0: the base read from the definition there.
+use super::super::claims::parse_file;
+use super::super::symbolic::attempt_for_every;
+use std::path::Path;
+
+/// Claims by induction from a first value other than 0 (the scheme and the differences
+/// from 1), and a false one whose base at 1 only a wrong reading of `b(i, 1, t)` passes.
+const FROM_ONE: &str = r#"
+[[claim]]
+id = "scheme-from-1"
+source = "s"
+statement = "s"
+kind = "identity"
+polygon = { name = "b", degree = "n" }
+vars = ["t"]
+for = ["n = 1..", "r = 1..=n", "i = 0..=n-r"]
+induction = "r"
+lhs = "b(i, r, t)"
+rhs = "sum(j, 0, r, b[i+j]*B(j, r, t))"
+
+[[claim]]
+id = "delta-from-1"
+source = "s"
+statement = "s"
+kind = "identity"
+polygon = { name = "b", degree = "n" }
+vars = []
+for = ["n = 1..", "k = 1..=n", "j = 0..=n-k"]
+induction = "k"
+lhs = "delta(b, k, j)"
+rhs = "sum(i, 0, k, (-1)^(k-i)*C(k, i)*b[j+i])"
+
+[[claim]]
+id = "scheme-offset-false"
+source = "s"
+statement = "s"
+kind = "identity"
+polygon = { name = "b", degree = "n" }
+vars = ["t"]
+for = ["n = 1..", "r = 1..=n", "i = 0..=n-r"]
+induction = "r"
+lhs = "b(i, r, t)"
+rhs = "sum(j, 0, r-1, b[i+j]*B(j, r-1, t))"
+
+[[claim]]
+id = "delta-from-2"
+source = "s"
+statement = "s"
+kind = "identity"
+polygon = { name = "b", degree = "n" }
+vars = []
+for = ["n = 2..", "k = 2..=n", "j = 0..=n-k"]
+induction = "k"
+lhs = "delta(b, k, j)"
+rhs = "sum(i, 0, k, (-1)^(k-i)*C(k, i)*b[j+i])"
+
+[[claim]]
+id = "delta-from-2-false"
+source = "s"
+statement = "s"
+kind = "identity"
+polygon = { name = "b", degree = "n" }
+vars = []
+for = ["n = 2..", "k = 2..=n", "j = 0..=n-k"]
+induction = "k"
+lhs = "delta(b, k, j)"
+rhs = "sum(i, 0, k-1, (-1)^(k-1-i)*C(k-1, i)*b[j+i])"
+"#;
+
+/// The symbolic proof alone (no evaluation cross-check, no counterexample search).
+fn induction_alone(id: &str) -> Result<String, String> {
+    let file = parse_file(FROM_ONE, Path::new("from_one.toml")).unwrap();
+    let claim = file.claim.iter().find(|c| c.id == id).unwrap();
+    let identity = claim.kind.identity().unwrap();
+    attempt_for_every(id, &claim.decls, &identity).map_err(|e| e.to_string())
+}
+
+#[test]
+fn the_base_is_the_definition_at_the_first_value() {
+    for id in ["scheme-from-1", "delta-from-1", "delta-from-2"] {
+        let cert = induction_alone(id).unwrap_or_else(|e| panic!("{id}: {e}"));
+        assert!(cert.starts_with("by induction on"), "{id}: {cert}");
+    }
+    for id in ["scheme-offset-false", "delta-from-2-false"] {
+        let err = induction_alone(id).expect_err(id);
+        assert!(!err.is_empty(), "{id}");
+    }
+}
