@@ -21,6 +21,9 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
 
+mod statement;
+pub use statement::formula;
+
 /// The exact scalar of claim figures: claim files may write `2*sqrt(2)`.
 type Q = QuadraticIrrational;
 
@@ -86,11 +89,13 @@ pub struct ClaimFigure {
     pub caption: String,
 }
 
-/// The page of a text: `000_ef6a3958c7d702f5.txt` → `000_ef6a3958c7d702f5.html`.
+/// The page of a text: `000_ef6a3958c7d702f5.txt` → `000_ef6a3958c7d702f5.html` (at most 100
+/// characters before `.html`; [`page_names`] gives each text of a report a page of its own).
 pub fn page_name(text: &str) -> String {
     let stem = text.strip_suffix(".txt").unwrap_or(text);
     let safe: String = stem
         .chars()
+        .take(100)
         .map(|c| {
             if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
                 c
@@ -99,7 +104,34 @@ pub fn page_name(text: &str) -> String {
             }
         })
         .collect();
+    if safe.is_empty() {
+        return "text.html".into();
+    }
     format!("{safe}.html")
+}
+
+/// The page of each text, in the order given: its [`page_name`], unless `index.html` or an
+/// earlier text has that name (compared without case, as a case-insensitive file system
+/// would), then the name with `-2`, `-3`, … added. So N texts get N pages and none is the index.
+pub fn page_names<'a>(texts: impl IntoIterator<Item = &'a str>) -> BTreeMap<String, String> {
+    let mut used = std::collections::BTreeSet::from(["index.html".to_string()]);
+    let mut pages = BTreeMap::new();
+    for text in texts {
+        if pages.contains_key(text) {
+            continue;
+        }
+        let base = page_name(text);
+        let stem = base.strip_suffix(".html").unwrap_or(&base);
+        let mut name = base.clone();
+        let mut k = 2;
+        while used.contains(&name.to_lowercase()) {
+            name = format!("{stem}-{k}.html");
+            k += 1;
+        }
+        used.insert(name.to_lowercase());
+        pages.insert(text.to_string(), name);
+    }
+    pages
 }
 
 /// The anchor of a claim on its page.
@@ -141,11 +173,12 @@ pub fn render_pages(report: &Report, files: &[ClaimFile]) -> Result<Vec<(String,
                 .map(|t| (t.file.clone(), t.title.clone().unwrap_or_default()))
         })
         .collect();
-    let mut pages = vec![("index.html".to_string(), index_page(report, &sums, &titles))];
+    let names = page_names(sums.iter().map(|s| s.text.as_str()));
+    let mut pages = vec![("index.html".to_string(), index_page(report, &sums, &titles, &names))];
     for sum in &sums {
         let outcomes: Vec<&ClaimOutcome> = report.outcomes.iter().filter(|o| o.text == sum.text).collect();
         let title = titles.get(&sum.text).cloned().unwrap_or_default();
-        pages.push((page_name(&sum.text), text_page(sum, &title, &outcomes, files)?));
+        pages.push((names[&sum.text].clone(), text_page(sum, &title, &outcomes, files)?));
     }
     Ok(pages)
 }
@@ -247,7 +280,12 @@ const FOOT: &str = "<footer>Written by <code>casteljau prove --html</code>. Ever
                     arithmetic; figures are computed exactly and drawn at the end (hover a point for its exact \
                     value).</footer>\n</body>\n</html>\n";
 
-fn index_page(report: &Report, sums: &[TextSummary], titles: &BTreeMap<String, String>) -> String {
+fn index_page(
+    report: &Report,
+    sums: &[TextSummary],
+    titles: &BTreeMap<String, String>,
+    pages: &BTreeMap<String, String>,
+) -> String {
     let mut s = head("casteljau: the texts' claims, checked exactly");
     s.push_str("<header>\n<h1>The texts' claims, checked exactly</h1>\n");
     let _ = writeln!(
@@ -284,7 +322,7 @@ fn index_page(report: &Report, sums: &[TextSummary], titles: &BTreeMap<String, S
             s,
             "<tr><td><a href=\"{}\">{}</a></td><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td>\
              <td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}/{}</td></tr>",
-            page_name(&sum.text),
+            pages[&sum.text],
             esc(&sum.text),
             esc(title),
             sum.claims,
@@ -333,7 +371,7 @@ fn index_page(report: &Report, sums: &[TextSummary], titles: &BTreeMap<String, S
                 .outcomes
                 .iter()
                 .find(|o| o.corrects.as_deref() == Some(m.id.as_str()));
-            let page = page_name(&m.text);
+            let page = &pages[&m.text];
             let fix_html = match fix {
                 Some(f) => format!(
                     "<a href=\"{page}#{}\">{}</a>: {} <span class=\"chip {}\">{}</span>",
@@ -547,84 +585,6 @@ fn claim_section(
     }
     s.push_str("</section>\n");
     Ok(())
-}
-
-/// Math names whose `_` starts a subscript although they are words (`lim_{r→∞}`).
-const SCRIPTED_NAMES: &[&str] = &["lim", "max", "min", "sum", "sup", "inf", "det", "deg"];
-
-/// Whether the `_` at `i` joins a library name (`elevate_by`, `BezierCurve::split_at`):
-/// after a word of three or more letters that is not a math name.
-fn in_identifier(chars: &[char], i: usize) -> bool {
-    let word: String = chars[..i]
-        .iter()
-        .rev()
-        .take_while(|c| c.is_ascii_alphanumeric())
-        .collect();
-    let word: String = word.chars().rev().collect();
-    word.chars().filter(|c| c.is_ascii_alphabetic()).count() >= 3 && !SCRIPTED_NAMES.contains(&word.as_str())
-}
-
-/// A statement as HTML: `_x`, `_{…}` become subscripts and `^x`, `^{…}`, `^(…)` superscripts
-/// (the texts' and claim files' notation); a `_` inside a library name
-/// (`split_at`) stays; everything else is escaped text.
-pub fn formula(text: &str) -> String {
-    let chars: Vec<char> = text.chars().collect();
-    let mut out = String::new();
-    let mut i = 0;
-    while i < chars.len() {
-        let c = chars[i];
-        let literal = c == '_' && in_identifier(&chars, i);
-        if (c == '_' || c == '^') && !literal && i + 1 < chars.len() && i > 0 && !chars[i - 1].is_whitespace() {
-            let tag = if c == '_' { "sub" } else { "sup" };
-            let (body, next) = script_body(&chars, i + 1);
-            if !body.is_empty() {
-                let _ = write!(out, "<{tag}>{}</{tag}>", formula(&body));
-                i = next;
-                continue;
-            }
-        }
-        out.push_str(&esc(&c.to_string()));
-        i += 1;
-    }
-    out
-}
-
-/// The script after `_` or `^` at `start`: a braced group (braces dropped), a parenthesised
-/// group (kept), or one run of digits / one letter. Returns it and the index after it.
-fn script_body(chars: &[char], start: usize) -> (String, usize) {
-    let close = |open: char, shut: char| -> Option<usize> {
-        let mut depth = 0;
-        for (k, &c) in chars.iter().enumerate().skip(start) {
-            if c == open {
-                depth += 1;
-            } else if c == shut {
-                depth -= 1;
-                if depth == 0 {
-                    return Some(k);
-                }
-            }
-        }
-        None
-    };
-    match chars[start] {
-        '{' => match close('{', '}') {
-            Some(end) => (chars[start + 1..end].iter().collect(), end + 1),
-            None => (String::new(), start),
-        },
-        '(' => match close('(', ')') {
-            Some(end) if end - start <= 8 => (chars[start..=end].iter().collect(), end + 1),
-            _ => (String::new(), start),
-        },
-        c if c.is_ascii_digit() => {
-            let end = chars[start..]
-                .iter()
-                .position(|c| !c.is_ascii_digit())
-                .map_or(chars.len(), |k| start + k);
-            (chars[start..end].iter().collect(), end)
-        }
-        c if c.is_alphabetic() => (c.to_string(), start + 1),
-        _ => (String::new(), start),
-    }
 }
 
 fn number(n: &Number) -> Result<Q> {

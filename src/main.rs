@@ -606,8 +606,20 @@ fn prove(
         Format::Json => output(&format!("{}\n", report.to_json()))?,
         Format::Latex => return Err(LATEX_ONLY.into()),
     }
-    let undecided = report.outcomes.iter().any(|o| o.verdict == Verdict::Error);
-    Ok(if undecided {
+    let undecided: Vec<&str> = report
+        .outcomes
+        .iter()
+        .filter(|o| o.verdict == Verdict::Error)
+        .map(|o| o.id.as_str())
+        .collect();
+    Ok(if !undecided.is_empty() {
+        // the report above keeps every other claim's verdict; the status line names the others
+        eprintln!(
+            "casteljau: {} claim{} not decided (each with its reason in the report): {}",
+            undecided.len(),
+            if undecided.len() == 1 { "" } else { "s" },
+            undecided.join(", ")
+        );
         ExitCode::from(2)
     } else if report.mismatches() > 0 {
         ExitCode::from(1)

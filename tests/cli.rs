@@ -586,3 +586,31 @@ fn format_is_honoured_or_refused() {
     }
     assert!(ok(&["figure", "construction"]).starts_with("<svg"));
 }
+
+#[test]
+fn an_undecided_claim_keeps_the_report_and_adds_one_stderr_line() {
+    // exit 2: the report (every other claim's verdict) on stdout, one line on stderr naming
+    // the claims not decided
+    let dir = std::env::temp_dir().join(format!("casteljau-cli-undecided-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("u.toml");
+    std::fs::write(
+        &path,
+        "[[claim]]\nid = \"ok\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\nlhs = \"(1+t)^2\"\nrhs = \"1 + 2t + t^2\"\n\n\
+         [[claim]]\nid = \"bad\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\nlhs = \"sqrt(2)*sqrt(3)*t\"\nrhs = \"sqrt(6)*t\"\n",
+    )
+    .unwrap();
+    let out = casteljau(&["prove", path.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        stdout.contains("[proved] ok") && stdout.contains("[error] bad"),
+        "{stdout}"
+    );
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(
+        stderr,
+        "casteljau: 1 claim not decided (each with its reason in the report): bad\n"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

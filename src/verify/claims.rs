@@ -694,6 +694,9 @@ impl Claim {
     /// it takes; any other field is an error naming it.
     fn from_table(mut table: toml::Table) -> std::result::Result<Self, String> {
         let id = table.get("id").and_then(|v| v.as_str()).map(str::to_string);
+        if let Some(id) = &id {
+            check_id(id)?;
+        }
         let in_claim = |e: String| match &id {
             Some(id) => format!("claim {id}: {e}"),
             None => e,
@@ -778,6 +781,20 @@ impl Claim {
     }
 }
 
+/// A claim id names the claim in every report, in links (`#claim-ID`) and on the command line
+/// (`--explain ID`): ASCII letters, digits, `-`, `_` and `.` only, so that it prints as itself
+/// (no control character can redraw a report line) and its anchor is its own.
+fn check_id(id: &str) -> std::result::Result<(), String> {
+    let allowed = |c: char| c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.');
+    if id.is_empty() || !id.chars().all(allowed) {
+        return Err(format!(
+            "the id \"{}\" may hold only ASCII letters, digits, '-', '_' and '.' (and not be empty)",
+            id.escape_debug()
+        ));
+    }
+    Ok(())
+}
+
 /// The raw file, before its claims are read by kind.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -826,9 +843,10 @@ pub fn parse_file(text: &str, path: &Path) -> Result<ClaimFile> {
         if let Some(target) = &c.corrects {
             if !seen.contains(target) {
                 return Err(Error::Parse(format!(
-                    "{}: claim {} corrects '{target}', which is not in the file",
+                    "{}: claim {} corrects '{}', which is not in the file",
                     path.display(),
-                    c.id
+                    c.id,
+                    target.escape_debug()
                 )));
             }
         }

@@ -4,7 +4,8 @@
 //!
 //! Limits: exponents and Bernstein/binomial indices at most [`MAX_EXPONENT`]; at most
 //! [`MAX_SUM_TERMS`] terms summed per evaluation; factorials of at most [`MAX_FACTORIAL`];
-//! expressions at most [`MAX_EXPR_LEN`] characters and [`MAX_DEPTH`] levels deep.
+//! expressions at most [`MAX_EXPR_LEN`] characters, [`MAX_DEPTH`] levels of nesting and
+//! [`MAX_TREE_DEPTH`] levels of tree.
 
 use crate::error::{Error, Result};
 use num_rational::BigRational;
@@ -22,6 +23,14 @@ pub const MAX_FACTORIAL: i64 = 1_000;
 pub const MAX_EXPR_LEN: usize = 20_000;
 /// Deepest nesting accepted (parentheses, powers, calls).
 pub const MAX_DEPTH: usize = 200;
+/// Deepest tree accepted, after parsing and after definitions and `diff` are expanded. A
+/// chain `a + b + … + z` of N terms is a tree N levels deep, and every pass over a tree
+/// (rewriting, evaluation, degree bounds, printing) recurses once per level: this bounds the
+/// stack those passes use, whatever the parentheses are.
+pub const MAX_TREE_DEPTH: usize = 512;
+
+/// Largest nodes × depth of an expression `diff` differentiates (a bound of the derivative's size).
+pub const MAX_DIFF_WORK: usize = 1_000_000;
 
 /// Built-in function names (they are never split into one-letter variables).
 pub const FUNCTIONS: &[&str] = &[
@@ -172,6 +181,36 @@ impl Expr {
             _ => {}
         });
         out
+    }
+
+    /// The number of levels of the tree (a leaf is 1), counted without recursion so that any
+    /// tree can be measured.
+    pub fn depth(&self) -> usize {
+        let mut deepest = 0;
+        let mut stack = vec![(self, 1)];
+        while let Some((e, d)) = stack.pop() {
+            deepest = deepest.max(d);
+            match e {
+                Expr::Num(_) | Expr::Var(_) => {}
+                Expr::Neg(a) | Expr::Fact(a) => stack.push((a, d + 1)),
+                Expr::Bin(_, a, b) => stack.extend([(a.as_ref(), d + 1), (b.as_ref(), d + 1)]),
+                Expr::Call(_, args) | Expr::Index(_, args) | Expr::Tuple(args) => {
+                    stack.extend(args.iter().map(|a| (a, d + 1)))
+                }
+                Expr::Sum(_, a, b, body) => {
+                    stack.extend([(a.as_ref(), d + 1), (b.as_ref(), d + 1), (body.as_ref(), d + 1)])
+                }
+                Expr::Matrix(rows) => stack.extend(rows.iter().flatten().map(|a| (a, d + 1))),
+            }
+        }
+        deepest
+    }
+
+    /// The number of nodes of the tree.
+    pub fn size(&self) -> usize {
+        let mut n = 0;
+        self.visit(&mut |_| n += 1);
+        n
     }
 
     /// Calls `f` on every node of the tree, this one first.
@@ -363,6 +402,20 @@ pub fn eval_int(e: &Expr, ints: &BTreeMap<String, i64>) -> Result<i64> {
         }
         _ => return Err(Error::Domain(format!("'{e}' is not an integer expression"))),
     })
+}
+
+/// Checks a tree's depth against [`MAX_TREE_DEPTH`] (`depth`: measured, or a lower bound of it).
+pub fn check_tree_depth(depth: usize) -> Result<()> {
+    if depth > MAX_TREE_DEPTH {
+        return Err(Error::TooLarge {
+            what: "expression tree",
+            value: format!(
+                "more than {MAX_TREE_DEPTH} levels deep (a chain a + b + … of N terms is N levels; write a long sum as sum(…))"
+            ),
+            limit: format!("{MAX_TREE_DEPTH} levels, MAX_TREE_DEPTH"),
+        });
+    }
+    Ok(())
 }
 
 /// Checks an index or exponent against [`MAX_EXPONENT`].

@@ -129,6 +129,7 @@ fn text_symbol(ch: char) -> Option<String> {
 /// ASCII text with TeX's special characters escaped.
 fn escape_ascii(ch: char, out: &mut String) {
     match ch {
+        _ if ch.is_ascii_control() => out.push_str(&unknown(ch)),
         '\\' => out.push_str("\\textbackslash{}"),
         '{' | '}' | '_' | '#' | '&' | '%' | '$' => {
             out.push('\\');
@@ -153,16 +154,22 @@ fn unknown(ch: char) -> String {
 pub fn text(t: &str) -> String {
     let mut out = String::new();
     let chars: Vec<char> = t.chars().collect();
+    // where the next backquote, and the next quote that closes (not before a letter or
+    // digit), are at or after each index: each opening one finds its end at once
+    let mut next_tick = vec![None; chars.len() + 1];
+    let mut next_close = vec![None; chars.len() + 1];
+    for k in (0..chars.len()).rev() {
+        next_tick[k] = if chars[k] == '`' { Some(k) } else { next_tick[k + 1] };
+        let closes = chars[k] == '\'' && chars.get(k + 1).is_none_or(|n| !n.is_alphanumeric());
+        next_close[k] = if closes { Some(k) } else { next_close[k + 1] };
+    }
     let mut i = 0;
     while i < chars.len() {
         let ch = chars[i];
         let code_end = match ch {
-            '`' => chars[i + 1..].iter().position(|&c| c == '`'),
+            '`' => next_tick[i + 1].map(|k| k - i - 1),
             // an opening quote: not inside a word (the claim's), closed before a space or the end
-            '\'' if i == 0 || !chars[i - 1].is_alphanumeric() => chars[i + 1..]
-                .iter()
-                .enumerate()
-                .position(|(k, &c)| c == '\'' && chars.get(i + k + 2).is_none_or(|n| !n.is_alphanumeric())),
+            '\'' if i == 0 || !chars[i - 1].is_alphanumeric() => next_close[i + 1].map(|k| k - i - 1),
             _ => None,
         };
         if let Some(len) = code_end.filter(|&len| len > 0) {
@@ -332,31 +339,35 @@ fn split_statement(chars: &[char]) -> Vec<(Part, String)> {
 
 /// Decides the short words, dashes and neutral parts from their neighbours.
 fn resolve_parts(mut parts: Vec<(Part, String)>) -> Vec<(Part, String)> {
-    let neighbour = |parts: &[(Part, String)], k: usize, step: isize| -> Option<Part> {
-        let mut j = k as isize + step;
-        while let Some((p, _)) = usize::try_from(j).ok().and_then(|j| parts.get(j)) {
-            if *p != Part::Neutral {
-                return Some(*p);
-            }
-            j += step;
+    // the nearest part on each side that is not neutral (neutral parts stay neutral here)
+    let mut before = vec![None; parts.len()];
+    let mut after = vec![None; parts.len()];
+    let mut last = None;
+    for (k, (p, _)) in parts.iter().enumerate() {
+        before[k] = last;
+        if *p != Part::Neutral {
+            last = Some(k);
         }
-        None
-    };
-    // short words: prose beside prose (one side, or both for `a`), spreading along a phrase
-    loop {
-        let mut changed = false;
-        for k in 0..parts.len() {
-            if let Part::ShortWord { both_sides } = parts[k].0 {
-                let prose = |p: Option<Part>| p == Some(Part::Prose);
-                let (before, after) = (prose(neighbour(&parts, k, -1)), prose(neighbour(&parts, k, 1)));
-                if (both_sides && before && after) || (!both_sides && (before || after)) {
-                    parts[k].0 = Part::Prose;
-                    changed = true;
-                }
-            }
+    }
+    last = None;
+    for (k, (p, _)) in parts.iter().enumerate().rev() {
+        after[k] = last;
+        if *p != Part::Neutral {
+            last = Some(k);
         }
-        if !changed {
-            break;
+    }
+    // short words: prose beside prose (one side, or both for `a`), spreading along a phrase;
+    // a word that turns to prose is the only news for its two neighbours, so each is looked
+    // at again only then (the fixed point of the rule, in time linear in the parts)
+    let mut todo: Vec<usize> = (0..parts.len()).collect();
+    while let Some(k) = todo.pop() {
+        if let Part::ShortWord { both_sides } = parts[k].0 {
+            let prose = |j: Option<usize>| j.is_some_and(|j: usize| parts[j].0 == Part::Prose);
+            let (b, a) = (prose(before[k]), prose(after[k]));
+            if (both_sides && b && a) || (!both_sides && (b || a)) {
+                parts[k].0 = Part::Prose;
+                todo.extend(before[k].into_iter().chain(after[k]));
+            }
         }
     }
     for k in 0..parts.len() {
@@ -414,58 +425,199 @@ pub fn statement(t: &str) -> String {
     out
 }
 
+/// A run of superscript (subscript) characters at `i` (`⁻¹` is `^{-1}`): its mark, the group's
+/// inside and its length.
+fn script_run(chars: &[char], i: usize) -> Option<(char, String, usize)> {
+    let script = |c: char| math_symbol(c).filter(|m| m.len() == 4 && (m.starts_with("^{") || m.starts_with("_{")));
+    let mark = script(chars[i])?.chars().next()?;
+    let mut inner = String::new();
+    let mut len = 0;
+    while let Some(m) = chars
+        .get(i + len)
+        .and_then(|&c| script(c))
+        .filter(|m| m.starts_with(mark))
+    {
+        inner.push_str(&m[2..3]);
+        len += 1;
+    }
+    Some((mark, inner, len))
+}
+
+/// One atom of a formula at `i` in math mode and its length: `x` with a combining dot as
+/// `\dot{x}`, a math name as `\mathrm{sum}`, one character; `None` for what is not an atom by
+/// itself (scripts, primes, braces, spaces).
+fn atom(chars: &[char], i: usize) -> Option<(String, usize)> {
+    let ch = chars[i];
+    if ch.is_alphanumeric() && chars.get(i + 1) == Some(&'\u{307}') {
+        let mut inner = String::new();
+        push_math_char(ch, &mut inner);
+        return Some((format!("\\dot{{{inner}}}"), 2));
+    }
+    if let Some(name) = MATH_NAMES.iter().find(|n| {
+        let end = i + n.len();
+        chars.get(i..end).is_some_and(|w| w.iter().copied().eq(n.chars()))
+            && chars.get(end).is_none_or(|c| !c.is_ascii_alphabetic())
+            && (i == 0 || !chars[i - 1].is_ascii_alphabetic())
+    }) {
+        return Some((format!("\\mathrm{{{name}}}"), name.len()));
+    }
+    if matches!(ch, '^' | '_' | '{' | '}' | '\'' | '′' | '″' | ' ') || script_run(chars, i).is_some() {
+        return None;
+    }
+    let mut out = String::new();
+    push_math_char(ch, &mut out);
+    Some((out, 1))
+}
+
+/// The scripts already on the current base inside one group of a formula, so that a second
+/// one starts a new (empty) base instead of TeX's "double superscript" error.
+#[derive(Clone, Copy, Default)]
+struct Scripts {
+    sup: bool,
+    sub: bool,
+    /// The last thing written was a prime, which a `^` or another prime joins.
+    after_prime: bool,
+}
+
+impl Scripts {
+    /// Before a script `mark` (`^` or `_`; a prime is a `^`): `{}` when the base has one.
+    fn before(&mut self, mark: char, out: &mut String) {
+        let taken = if mark == '^' {
+            self.sup && !self.after_prime
+        } else {
+            self.sub
+        };
+        if taken {
+            out.push_str("{}");
+            *self = Scripts::default();
+        }
+        if mark == '^' {
+            self.sup = true;
+        } else {
+            self.sub = true;
+        }
+        self.after_prime = false;
+    }
+}
+
 /// A formula's characters in math mode: `_`, `^` and braces kept (the statements use TeX's
 /// notation), Unicode symbols mapped, `x` with a combining dot as `\dot{x}`.
+///
+/// Whatever the statement holds, the result is well-formed math that reads no control sequence
+/// from it: a brace without its partner in the formula is written `\{` or `\}`, every script
+/// has an argument (a letter, a digit or a group: never a second `^`, so TeX's `^^5c` notation
+/// for `\` cannot occur), and a second script on one base starts an empty base `{}`.
 fn formula(t: &str) -> String {
     let chars: Vec<char> = t.chars().collect();
+    let mut partner = vec![None; chars.len()];
+    let mut stack = Vec::new();
+    for (k, &c) in chars.iter().enumerate() {
+        if c == '{' {
+            stack.push(k);
+        } else if c == '}' {
+            if let Some(o) = stack.pop() {
+                partner[o] = Some(k);
+                partner[k] = Some(o);
+            }
+        }
+    }
     let mut out = String::new();
+    // the scripts of the base in each open group, innermost last
+    let mut groups = vec![Scripts::default()];
     let mut i = 0;
     while i < chars.len() {
         let ch = chars[i];
-        if chars.get(i + 1) == Some(&'\u{307}') {
-            let mut inner = String::new();
-            push_math_char(ch, &mut inner);
-            let _ = write!(out, "\\dot{{{inner}}}");
-            i += 2;
+        let top = groups.last_mut().expect("the formula's own group is never closed");
+        if let Some((mark, inner, len)) = script_run(&chars, i) {
+            top.before(mark, &mut out);
+            let _ = write!(out, "{mark}{{{inner}}}");
+            i += len;
             continue;
         }
-        if let Some(name) = MATH_NAMES.iter().find(|n| {
-            let end = i + n.len();
-            chars.get(i..end).is_some_and(|w| w.iter().copied().eq(n.chars()))
-                && chars.get(end).is_none_or(|c| !c.is_ascii_alphabetic())
-                && (i == 0 || !chars[i - 1].is_ascii_alphabetic())
-        }) {
-            let _ = write!(out, "\\mathrm{{{name}}}");
-            i += name.len();
-            continue;
-        }
-        // a run of superscript (subscript) characters is one group: ⁻¹ is ^{-1}
-        let script = |c: char| math_symbol(c).filter(|m| m.len() == 4 && (m.starts_with("^{") || m.starts_with("_{")));
-        if let Some(first) = script(ch) {
-            let mark = &first[..1];
-            let mut inner = String::new();
-            while let Some(m) = chars.get(i).and_then(|&c| script(c)).filter(|m| m.starts_with(mark)) {
-                inner.push_str(&m[2..3]);
+        match ch {
+            '^' | '_' => {
+                top.before(ch, &mut out);
+                out.push(ch);
+                i += 1;
+                match chars.get(i) {
+                    Some('{') if partner[i].is_some() => {
+                        out.push('{');
+                        groups.push(Scripts::default());
+                        i += 1;
+                    }
+                    Some(_) if atom(&chars, i).is_some() => {
+                        let (a, len) = atom(&chars, i).expect("checked");
+                        if len == 1 && chars[i].is_ascii_alphanumeric() {
+                            out.push_str(&a);
+                        } else {
+                            let _ = write!(out, "{{{a}}}");
+                        }
+                        i += len;
+                    }
+                    _ => out.push_str("{}"),
+                }
+            }
+            '\'' | '′' | '″' => {
+                if !top.after_prime {
+                    top.before('^', &mut out);
+                }
+                out.push_str(if ch == '″' { "''" } else { "'" });
+                top.after_prime = true;
                 i += 1;
             }
-            let _ = write!(out, "{mark}{{{inner}}}");
-            continue;
+            '{' if partner[i].is_some() => {
+                out.push('{');
+                groups.push(Scripts::default());
+                i += 1;
+            }
+            '}' if partner[i].is_some() => {
+                out.push('}');
+                groups.pop();
+                i += 1;
+                // the group is the base of what follows, unless it was a script's argument
+                let script_argument = partner[i - 1].is_some_and(|o| o > 0 && matches!(chars[o - 1], '^' | '_'));
+                let top = groups.last_mut().expect("the formula's own group is never closed");
+                if !script_argument {
+                    *top = Scripts::default();
+                }
+                top.after_prime = false;
+            }
+            '{' | '}' => {
+                let _ = write!(out, "\\{ch}");
+                *top = Scripts::default();
+                i += 1;
+            }
+            ' ' => {
+                out.push(' ');
+                top.after_prime = false;
+                i += 1;
+            }
+            _ => {
+                let (a, len) = atom(&chars, i).unwrap_or_else(|| (unknown(ch), 1));
+                out.push_str(&a);
+                *top = Scripts::default();
+                i += len;
+            }
         }
-        push_math_char(ch, &mut out);
-        i += 1;
     }
     out
 }
 
 fn push_math_char(ch: char, out: &mut String) {
     match ch {
-        '_' | '^' | '{' | '}' => out.push(ch),
+        // `formula` writes scripts and braces itself; alone they are symbols
+        '_' | '{' | '}' => {
+            out.push('\\');
+            out.push(ch);
+        }
+        '^' => out.push_str("\\hat{}"),
         '\\' => out.push_str("\\backslash "),
         '#' | '&' | '%' | '$' => {
             out.push('\\');
             out.push(ch);
         }
         '~' => out.push_str("\\sim "),
+        _ if ch.is_ascii_control() => out.push_str(&unknown(ch)),
         _ if ch.is_ascii() => out.push(ch),
         _ => match math_symbol(ch) {
             Some(s) => out.push_str(s),

@@ -129,6 +129,7 @@ pub fn parse(text: &str, known: &[String]) -> Result<Expr> {
     if p.pos < p.toks.len() {
         return Err(p.err(&format!("unexpected '{}'", show(&p.toks[p.pos]))));
     }
+    check_tree_depth(e.depth())?;
     Ok(e)
 }
 
@@ -190,16 +191,21 @@ impl Parser<'_> {
 
     fn sum(&mut self) -> Result<Expr> {
         let mut acc = self.term()?;
+        let mut depth = acc.depth();
         loop {
-            if self.peek_sym('+') {
-                self.pos += 1;
-                acc = Expr::add(acc, self.term()?);
+            // A chain grows the tree by one level per term, without nesting the parser: its
+            // depth is checked as it grows, so no longer chain is ever built.
+            let op: fn(Expr, Expr) -> Expr = if self.peek_sym('+') {
+                Expr::add
             } else if self.peek_sym('-') {
-                self.pos += 1;
-                acc = Expr::sub(acc, self.term()?);
+                Expr::sub
             } else {
                 return Ok(acc);
-            }
+            };
+            self.pos += 1;
+            let rhs = self.term()?;
+            depth = chain_depth(depth, &rhs)?;
+            acc = op(acc, rhs);
         }
     }
 
@@ -212,19 +218,22 @@ impl Parser<'_> {
 
     fn term(&mut self) -> Result<Expr> {
         let mut acc = self.unary()?;
+        let mut depth = acc.depth();
         loop {
-            if self.peek_sym('*') {
+            let (op, rhs): (fn(Expr, Expr) -> Expr, Expr) = if self.peek_sym('*') {
                 self.pos += 1;
-                acc = Expr::mul(acc, self.unary()?);
+                (Expr::mul, self.unary()?)
             } else if self.peek_sym('/') {
                 self.pos += 1;
-                acc = Expr::div(acc, self.unary()?);
+                (Expr::div, self.unary()?)
             } else if self.starts_primary() {
                 // implicit multiplication: 2t, 4x^2, (1-t)(1+t)
-                acc = Expr::mul(acc, self.power()?);
+                (Expr::mul, self.power()?)
             } else {
                 return Ok(acc);
-            }
+            };
+            depth = chain_depth(depth, &rhs)?;
+            acc = op(acc, rhs);
         }
     }
 
@@ -257,8 +266,11 @@ impl Parser<'_> {
 
     fn postfix(&mut self) -> Result<Expr> {
         let mut e = self.primary()?;
+        let mut depth = e.depth();
         while self.peek_sym('!') {
             self.pos += 1;
+            depth += 1;
+            check_tree_depth(depth)?;
             e = Expr::Fact(Box::new(e));
         }
         Ok(e)
@@ -366,6 +378,14 @@ impl Parser<'_> {
             other => Err(self.err(&format!("the first argument of sum must be a variable, not '{other}'"))),
         }
     }
+}
+
+/// The depth of a chain `acc op rhs`, given the depth of `acc`; an error past
+/// [`MAX_TREE_DEPTH`].
+fn chain_depth(acc: usize, rhs: &Expr) -> Result<usize> {
+    let depth = 1 + acc.max(rhs.depth());
+    check_tree_depth(depth)?;
+    Ok(depth)
 }
 
 fn check_arity(name: &str, n: usize) -> std::result::Result<(), String> {

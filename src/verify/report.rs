@@ -8,7 +8,31 @@ use super::checked::Checked;
 use super::checked::Verdict;
 use super::claims::{Claim, ClaimFile, Identity, Kind, Sides};
 use serde::Serialize;
+use std::borrow::Cow;
 use std::fmt::Write as _;
+
+/// A string as the text reports show it: control characters (newlines, `\r`, terminal
+/// escapes) and the invisible marks that reorder or break lines (bidirectional overrides, line
+/// separators) written as `\u{1b}`, so that no field of a claim file can draw, move or erase a
+/// report line.
+pub fn printable(s: &str) -> Cow<'_, str> {
+    let hidden = |c: char| {
+        c.is_control()
+            || matches!(c, '\u{200e}' | '\u{200f}' | '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}' | '\u{2028}' | '\u{2029}')
+    };
+    if !s.chars().any(hidden) {
+        return Cow::Borrowed(s);
+    }
+    let mut out = String::with_capacity(s.len() + 8);
+    for c in s.chars() {
+        if hidden(c) {
+            let _ = write!(out, "{}", c.escape_unicode());
+        } else {
+            out.push(c);
+        }
+    }
+    Cow::Owned(out)
+}
 
 /// The outcome of checking one claim.
 #[derive(Clone, Debug, Serialize)]
@@ -183,7 +207,7 @@ pub(super) fn to_text(r: &Report) -> String {
         sums.len()
     );
     for sum in &sums {
-        let _ = writeln!(s, "=== {} ===", sum.text);
+        let _ = writeln!(s, "=== {} ===", printable(&sum.text));
         for o in r.outcomes.iter().filter(|o| o.text == sum.text) {
             let flag = if o.verdict == o.expect {
                 match o.verdict {
@@ -193,26 +217,26 @@ pub(super) fn to_text(r: &Report) -> String {
             } else {
                 format!("  !! MISMATCH: expected {}", o.expect.as_str())
             };
-            let _ = writeln!(s, "[{}] {}{flag}", o.verdict_text(), o.id);
-            let _ = writeln!(s, "    source:      {}", o.source);
-            let _ = writeln!(s, "    statement:   {}", o.statement);
+            let _ = writeln!(s, "[{}] {}{flag}", o.verdict_text(), printable(&o.id));
+            let _ = writeln!(s, "    source:      {}", printable(&o.source));
+            let _ = writeln!(s, "    statement:   {}", printable(&o.statement));
             if let Some(c) = &o.corrects {
-                let _ = writeln!(s, "    corrects:    {c}");
+                let _ = writeln!(s, "    corrects:    {}", printable(c));
             }
             if let Some(n) = &o.note {
-                let _ = writeln!(s, "    note:        {n}");
+                let _ = writeln!(s, "    note:        {}", printable(n));
             }
             let label = match o.verdict {
                 Verdict::Fails => "counterexample",
                 Verdict::Error => "error",
                 _ => "certificate",
             };
-            let _ = writeln!(s, "    {label}: {}", o.certificate);
+            let _ = writeln!(s, "    {label}: {}", printable(&o.certificate));
             if let Some(r) = &o.range_bound {
-                let _ = writeln!(s, "    range-bound: {r}");
+                let _ = writeln!(s, "    range-bound: {}", printable(r));
             }
         }
-        let _ = writeln!(s, "--- {}: {}\n", sum.text, counts(sum));
+        let _ = writeln!(s, "--- {}: {}\n", printable(&sum.text), counts(sum));
     }
     let _ = writeln!(s, "=== summary ===");
     let _ = writeln!(
@@ -225,7 +249,7 @@ pub(super) fn to_text(r: &Report) -> String {
         let _ = writeln!(
             s,
             "{:<28} {:>6} {:>7} {:>15} {:>9} {:>6} {:>12}",
-            sum.text,
+            printable(&sum.text),
             sum.claims,
             sum.proved,
             sum.proved_in_range,
@@ -235,13 +259,13 @@ pub(super) fn to_text(r: &Report) -> String {
         );
     }
     if !t.failing.is_empty() {
-        let _ = writeln!(s, "\nclaims that fail: {}", t.failing.join(", "));
+        let _ = writeln!(s, "\nclaims that fail: {}", printable(&t.failing.join(", ")));
     }
     if !t.undecided.is_empty() {
         let _ = writeln!(
             s,
             "claims not decided (error, each with its reason): {}",
-            t.undecided.join(", ")
+            printable(&t.undecided.join(", "))
         );
     }
     if t.proved_in_range > 0 {
@@ -263,7 +287,7 @@ pub(super) fn to_text(r: &Report) -> String {
             s,
             "{} verdicts differ from the claim files: {}",
             t.mismatches,
-            bad.join(", ")
+            printable(&bad.join(", "))
         );
     }
     s
@@ -316,32 +340,41 @@ pub enum ExplainStyle {
 /// The claim and its verdict; the range-bound note shares the verdict's line (the short
 /// explanation fits one screen).
 fn header(s: &mut String, f: &ClaimFile, c: &Claim, checked: &Checked, range_bound: Option<&str>) {
-    let _ = writeln!(s, "claim {} ({})", c.id, f.path.display());
-    let _ = writeln!(s, "source:    {}", c.source);
-    let _ = writeln!(s, "statement: {}", c.statement);
+    let _ = writeln!(
+        s,
+        "claim {} ({})",
+        printable(&c.id),
+        printable(&f.path.display().to_string())
+    );
+    let _ = writeln!(s, "source:    {}", printable(&c.source));
+    let _ = writeln!(s, "statement: {}", printable(&c.statement));
     let _ = writeln!(s, "kind:      {}", c.kind.name());
     for (k, v) in c.kind.shown_fields() {
-        let _ = writeln!(s, "{k:<10} {v}");
+        let _ = writeln!(s, "{k:<10} {}", printable(v));
     }
     if let Kind::Identity(Identity {
         sides: Sides::Chain(ch),
         ..
     }) = &c.kind
     {
+        let ch: Vec<Cow<'_, str>> = ch.iter().map(|e| printable(e)).collect();
         let _ = writeln!(s, "chain:     {}", ch.join("\n         = "));
     }
     if !c.decls.defs.is_empty() {
-        let _ = writeln!(s, "where:     {}", c.decls.defs.join("\n           "));
+        let defs: Vec<Cow<'_, str>> = c.decls.defs.iter().map(|d| printable(d)).collect();
+        let _ = writeln!(s, "where:     {}", defs.join("\n           "));
     }
     if !c.decls.ranges.is_empty() {
         let ranges: Vec<String> = c.decls.ranges.iter().map(|r| r.to_string()).collect();
-        let _ = writeln!(s, "for:       {}", ranges.join(", "));
+        let _ = writeln!(s, "for:       {}", printable(&ranges.join(", ")));
     }
     let _ = writeln!(
         s,
         "\nverdict: {}{}",
         verdict_text(checked.verdict, checked.range.as_deref()),
-        range_bound.map(|r| format!("; range-bound: {r}")).unwrap_or_default()
+        range_bound
+            .map(|r| format!("; range-bound: {}", printable(r)))
+            .unwrap_or_default()
     );
     let _ = writeln!(
         s,
@@ -351,10 +384,10 @@ fn header(s: &mut String, f: &ClaimFile, c: &Claim, checked: &Checked, range_bou
         } else {
             "certificate"
         },
-        checked.certificate
+        printable(&checked.certificate)
     );
     for line in misprint_lines(f, c) {
-        let _ = writeln!(s, "{line}");
+        let _ = writeln!(s, "{}", printable(&line));
     }
 }
 
@@ -373,24 +406,24 @@ pub(super) fn explain_text(
     header(&mut s, f, c, checked, range_bound);
     let _ = writeln!(s, "\nwhy this suffices:");
     for line in argument(c, checked) {
-        let _ = writeln!(s, "  {line}");
+        let _ = writeln!(s, "  {}", printable(&line));
     }
     let all = cases(&checked.steps);
     let case = worked_case(&all);
     let evals = case.map(|c| sample_evaluations(c, 4)).unwrap_or_default();
     if let Some(case) = case {
-        let _ = writeln!(s, "\nworked case: {}", case.header.line());
+        let _ = writeln!(s, "\nworked case: {}", printable(&case.header.line()));
         for l in case.other_lines().take(4) {
-            let _ = writeln!(s, "  {}", l.line());
+            let _ = writeln!(s, "  {}", printable(&l.line()));
         }
         for l in &evals {
-            let _ = writeln!(s, "  {l}");
+            let _ = writeln!(s, "  {}", printable(&l.to_string()));
         }
     } else {
         let (header, lines) = certificate_case(checked);
-        let _ = writeln!(s, "\nworked case: {header}");
+        let _ = writeln!(s, "\nworked case: {}", printable(header));
         for l in lines {
-            let _ = writeln!(s, "  {l}");
+            let _ = writeln!(s, "  {}", printable(l));
         }
     }
     if let Some(scheme) = worked_scheme(c, checked, evals.first().copied()) {
@@ -404,7 +437,7 @@ pub(super) fn explain_text(
         if lines > 0 {
             let _ = writeln!(s, "\nsteps:");
             for line in &checked.steps {
-                let _ = writeln!(s, "  {line}");
+                let _ = writeln!(s, "  {}", printable(&line.to_string()));
             }
         }
     } else if lines > 0 {

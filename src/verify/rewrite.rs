@@ -55,20 +55,25 @@ pub fn parse_definition(text: &str, known: &[String]) -> Result<Definition> {
 ///
 /// Hygienic: a `sum` variable of `e` that a definition's body (or an argument) uses freely is
 /// renamed first, so no substitution is ever captured by a binder.
+///
+/// The result is at most [`MAX_TREE_DEPTH`] levels deep (a body put in place deepens the tree
+/// at that place): the expansion stops with that error as soon as it would go deeper.
 pub fn expand(e: &Expr, defs: &[Definition]) -> Result<Expr> {
-    expand_depth(e, defs, 0)
+    expand_depth(e, defs, 0, 1)
 }
 
-fn expand_depth(e: &Expr, defs: &[Definition], depth: usize) -> Result<Expr> {
+/// `depth`: definitions expanded around `e`; `level`: the level of `e` in the result.
+fn expand_depth(e: &Expr, defs: &[Definition], depth: usize, level: usize) -> Result<Expr> {
     if depth > 64 {
         return Err(Error::Domain(
             "definitions nest more than 64 deep (a recursive definition?)".into(),
         ));
     }
-    let rec = |x: &Expr| expand_depth(x, defs, depth);
+    check_tree_depth(level)?;
+    let rec = |x: &Expr| expand_depth(x, defs, depth, level + 1);
     Ok(match e {
         Expr::Var(v) => match defs.iter().find(|d| &d.name == v && d.params.is_empty()) {
-            Some(d) => expand_depth(&d.body, defs, depth + 1)?,
+            Some(d) => expand_depth(&d.body, defs, depth + 1, level)?,
             None => e.clone(),
         },
         Expr::Call(name, args) => {
@@ -83,7 +88,7 @@ fn expand_depth(e: &Expr, defs: &[Definition], depth: usize) -> Result<Expr> {
                         )));
                     }
                     let body = substitute(&d.body, &d.params, &args);
-                    expand_depth(&body, defs, depth + 1)?
+                    expand_depth(&body, defs, depth + 1, level)?
                 }
                 None => Expr::Call(name.clone(), args),
             }
@@ -233,7 +238,9 @@ pub(crate) fn map_children(e: &Expr, f: &mut dyn FnMut(&Expr) -> Result<Expr>) -
 /// derivative of the sum, and reading `n` as a constant there would prove false claims.
 pub fn expand_diffs(e: &Expr, ints: &[String]) -> Result<Expr> {
     let mut scope = ints.to_vec();
-    expand_diffs_in(e, &mut scope)
+    let out = expand_diffs_in(e, &mut scope)?;
+    check_tree_depth(out.depth())?;
+    Ok(out)
 }
 
 fn expand_diffs_in(e: &Expr, ints: &mut Vec<String>) -> Result<Expr> {
@@ -269,7 +276,19 @@ fn expand_diffs_in(e: &Expr, ints: &mut Vec<String>) -> Result<Expr> {
             };
             let mut d = args[0].clone();
             for _ in 0..k {
+                // the product rule copies each factor's siblings: a derivative is at most
+                // about size × depth nodes, bounded before it is built
+                let work = d.size().saturating_mul(d.depth());
+                if work > MAX_DIFF_WORK {
+                    return Err(Error::TooLarge {
+                        what: "derivative",
+                        value: format!("{work} (nodes × depth of the expression differentiated)"),
+                        limit: format!("{MAX_DIFF_WORK}, MAX_DIFF_WORK"),
+                    });
+                }
                 d = derive(&d, &var)?;
+                // each derivative is taken of the last one: its depth is bounded before
+                check_tree_depth(d.depth())?;
             }
             return Ok(d);
         }
