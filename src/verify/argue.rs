@@ -2,7 +2,7 @@
 //! the argument (from the typed [`Method`]), the cases of the log and the worked case, the
 //! misprint lines and the de Casteljau scheme that goes with a case.
 
-use super::checked::{Checked, Evaluation, Method, Step, StepKind, Verdict};
+use super::kernel::checked::{Checked, Evaluation, Method, Step, StepKind, Verdict};
 use super::claims::{Claim, ClaimFile, Kind};
 use super::objects::curve_from_spec;
 use crate::bernstein::bernstein_all;

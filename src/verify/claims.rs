@@ -5,7 +5,7 @@
 //! "fails") and, for the correction of a misprint, `corrects = "<id>"`. The remaining fields
 //! depend on the kind; unknown fields are errors, so a typo never silently drops data.
 
-use super::checked::Verdict;
+use super::kernel::checked::Verdict;
 use crate::error::{Error, Result};
 use serde::Deserialize;
 use std::collections::BTreeMap;

@@ -1,7 +1,7 @@
 //! Exact symbolic expansion: identities in scalar and vector unknowns, and `implies`.
 
-use super::checked::Verdict;
-use super::checked::{Checked, Step};
+use super::kernel::checked::Verdict;
+use super::kernel::checked::{Checked, Step};
 use super::claims::Implies;
 use super::context::Ctx;
 use super::eval::{Deg, Env, Evaluator, Value, VarEnv};

@@ -3,8 +3,8 @@
 //! expressions need. Identity, implicit and lowered claims (a power form's points, a theorem's
 //! parts, the symbolic route's evaluation check) all end here.
 
-use super::checked::Checked;
-use super::checked::Verdict;
+use super::kernel::checked::Checked;
+use super::kernel::checked::Verdict;
 use super::claims::{CurveSpec, Decls, Identity, Number};
 use super::context::Ctx;
 use super::expansion::check_chain_symbolic;

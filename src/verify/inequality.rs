@@ -16,8 +16,8 @@
 //! [`super::symbolic::nonneg_for_every`] (each term a product of factors ≥ 0 on `[a, b]`), after
 //! the first values are evaluated as above.
 
-use super::checked::Verdict;
-use super::checked::{Checked, Step};
+use super::kernel::checked::Verdict;
+use super::kernel::checked::{Checked, Step};
 use super::claims::{Decls, Inequality, Relation};
 use super::context::Ctx;
 use super::eval::{Alg, Deg, Evaluator, Value, VarEnv};

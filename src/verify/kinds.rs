@@ -12,8 +12,8 @@
 //! | `fit`           | text 004's cubic fit of a concrete curve: (11) = (13), ∇δ² = 0, printed k, l, δ² |
 //! | `inequality`    | `lhs ≥ rhs` (or `>`) on an interval, by a Bernstein certificate or an exact point |
 
-use super::checked::Checked;
-use super::checked::Verdict;
+use super::kernel::checked::Checked;
+use super::kernel::checked::Verdict;
 use super::claims::{BezierPoints, Claim, ConicType, CurveSpec, Decls, Fit, Implicit, Kind, Number, WeightType};
 use super::context::Ctx;
 use super::eval::{Alg, Deg, Evaluator, Value};

@@ -6,7 +6,7 @@ use super::argue::{
     argument, cases, certificate_case, misprint_lines, sample_evaluations, verdict_text, worked_case, worked_scheme,
     worked_sum,
 };
-use super::checked::Checked;
+use super::kernel::checked::Checked;
 use super::claims::{Claim, ClaimFile};
 use std::fmt::Write as _;
 
@@ -502,7 +502,7 @@ pub(super) fn explain(f: &ClaimFile, c: &Claim, checked: &Checked, range_bound: 
         "Verdict: \\textbf{{{}}}\\\\",
         text(&verdict_text(checked.verdict, checked.range.as_deref()))
     );
-    let label = if checked.verdict == super::checked::Verdict::Fails {
+    let label = if checked.verdict == super::kernel::checked::Verdict::Fails {
         "Counterexample"
     } else {
         "Certificate"

@@ -36,7 +36,7 @@
 // by `tests/layers.rs`).
 //
 // - the work `budget` a proof's searches share (it imports nothing of verify);
-// - the data: `expr` (expression trees), `checked` (verdicts, methods, outcomes), `claims`
+// - the data: `expr` (expression trees), `kernel` (verdicts, methods, outcomes; the trusted core), `claims`
 //   (the claim file format);
 // - expressions: `alg` (the algebras evaluated in), `poly` (rational functions), `parse`,
 //   `rewrite` (definitions, substitution, `diff`), `eval` (the evaluator), `methods` (library
@@ -55,7 +55,7 @@ mod ansatz;
 mod argue;
 mod beta;
 mod budget;
-mod checked;
+mod kernel;
 pub mod claims;
 mod context;
 mod eval;
@@ -86,7 +86,7 @@ mod translate;
 use crate::error::{Error, Result};
 use std::path::PathBuf;
 
-pub use checked::{Checked, Evaluation, Method, Step, StepKind, Verdict};
+pub use kernel::checked::{Checked, Evaluation, Method, Step, StepKind, Verdict};
 pub use kinds::check_claim;
 pub use report::{ClaimOutcome, ExplainStyle, Report, TextSummary};
 pub use scope::{range_bound, PROVABLE};

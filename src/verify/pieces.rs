@@ -2,7 +2,7 @@
 //! for every integer point of a polyhedral domain: the domain split by affine conditions
 //! (Fourier–Motzkin with integer tightening), each piece divided by its first live term.
 
-use super::checked::Step;
+use super::kernel::checked::Step;
 use super::eval::Alg;
 use super::hyper::*;
 use super::poly::{Poly, RatFunc};

@@ -18,7 +18,7 @@
 //!
 //! A claim of another shape is not for this route (the caller keeps its own reason).
 
-use super::checked::Step;
+use super::kernel::checked::Step;
 use super::eval::Alg;
 use super::expr::{Expr, Op};
 use super::hyper::{lin_neg, Aff, Lin, Term};

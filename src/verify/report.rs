@@ -4,8 +4,8 @@ use super::argue::{
     argument, cases, certificate_case, misprint_lines, sample_evaluations, verdict_text, worked_case, worked_scheme,
     worked_sum,
 };
-use super::checked::Checked;
-use super::checked::Verdict;
+use super::kernel::checked::Checked;
+use super::kernel::checked::Verdict;
 use super::claims::{Claim, ClaimFile, Identity, Kind, Sides};
 use serde::Serialize;
 use std::fmt::Write as _;
@@ -474,7 +474,7 @@ mod tests {
 
     #[test]
     fn the_worked_case_is_the_last_of_degree_3_with_fractions_first() {
-        use super::super::checked::{Evaluation, Step};
+        use super::super::kernel::checked::{Evaluation, Step};
         let q = |s: &str| s.parse::<BigRational>().unwrap();
         let eval = |n: i64, t: &str, unit: Option<usize>, value: &str| {
             let basis = unit

@@ -1,8 +1,8 @@
 //! The identity prover: degree bounds derived from the expressions, exact checks at enough
 //! points, on a basis of control polygons; the work of a claim estimated before it runs.
 
-use super::checked::Verdict;
-use super::checked::{Checked, Evaluation, Method, Step};
+use super::kernel::checked::Verdict;
+use super::kernel::checked::{Checked, Evaluation, Method, Step};
 use super::context::Ctx;
 use super::eval::{Deg, Evaluator, Value};
 use super::expr::{self, check_index, Expr};

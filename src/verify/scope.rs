@@ -12,7 +12,7 @@
 //! search: the finite ranges were just checked), within the symbolic route's own limits, and
 //! claims that use library objects are answered from their expressions without translating.
 
-use super::checked::Verdict;
+use super::kernel::checked::Verdict;
 use super::claims::{Claim, Decls, Identity, IntRange, Kind, Sides, Theorem};
 use super::context::Ctx;
 use super::expr::Expr;

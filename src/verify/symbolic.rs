@@ -29,8 +29,8 @@
 //! of each open range (the ordinary engine): a counterexample there is a `fails` verdict with
 //! exact values; a symbolic check that does not go through is an error, never a verdict.
 
-use super::checked::Verdict;
-use super::checked::{Checked, Method, Step};
+use super::kernel::checked::Verdict;
+use super::kernel::checked::{Checked, Method, Step};
 use super::claims::{Decls, Identity, IntRange};
 use super::context::Ctx;
 use super::expr::Expr;

@@ -7,8 +7,8 @@
 //! `elev`, `left`, `deriv`, … (see [`super::methods::PolygonMethod`]). The others (affine
 //! invariance, the convex hull property, Theorem 1.2) have their own exact checks here.
 
-use super::checked::Verdict;
-use super::checked::{Checked, Method, Step};
+use super::kernel::checked::Verdict;
+use super::kernel::checked::{Checked, Method, Step};
 use super::claims::{Convergence, Decls, IntRange, PolygonSpec, Theorem};
 use super::context::Ctx;
 use super::sampling::{chain_work, check_chain, MAX_WORK};

@@ -2,7 +2,7 @@
 //! (sums with symbolic bounds evaluated by their WZ certificates or by induction from a
 //! closed form), for the symbolic route of [`super::symbolic`].
 
-use super::checked::Step;
+use super::kernel::checked::Step;
 use super::eval::Alg;
 use super::expr::{self, Expr, Op};
 use super::hyper::{lin_mul, lin_neg, lin_subst, power_of, Aff, Lin, Symbols, Term};

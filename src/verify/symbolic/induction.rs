@@ -14,7 +14,7 @@
 //! Both are proved by the symbolic route ([`super::prove_sides`]), the claim's other lemmas
 //! (`uses`) available to both.
 
-use super::super::checked::Step;
+use super::super::kernel::checked::Step;
 use super::super::claims::{Decls, Identity, IntRange};
 use super::super::context::Ctx;
 use super::super::expr::Expr;
