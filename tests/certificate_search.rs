@@ -26,7 +26,7 @@ fn check(lhs: &str, rhs: &str) -> Result<Verdict, String> {
     let cpu = thread_cpu() - start;
     assert!(cpu < Duration::from_secs(20), "{lhs} = {rhs}: {cpu:?} of CPU");
     match out {
-        Ok(c) => Ok(c.verdict),
+        Ok(c) => Ok(c.verdict()),
         Err(e) => {
             let e = e.to_string();
             assert!(!e.contains('\n'), "one line: {e}");

@@ -14,7 +14,7 @@ fn check(body: &str) -> casteljau::Result<(Verdict, Option<String>, String)> {
         Path::new("test.toml"),
     )?;
     let out = check_claim(&f.claim[0], true)?;
-    Ok((out.verdict, out.range, out.certificate))
+    Ok((out.verdict(), out.range().map(str::to_string), out.certificate))
 }
 
 #[test]

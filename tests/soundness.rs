@@ -22,7 +22,7 @@ fn check(body: &str) -> casteljau::Result<(Verdict, String)> {
         Path::new("test.toml"),
     )?;
     let out = check_claim(&f.claim[0], false)?;
-    Ok((out.verdict, out.certificate))
+    Ok((out.verdict(), out.certificate))
 }
 
 fn assert_error(body: &str, needle: &str) {

@@ -16,7 +16,7 @@ fn check(body: &str) -> casteljau::Result<(Verdict, Option<String>, String)> {
         Path::new("test.toml"),
     )?;
     let out = check_claim(&f.claim[0], false)?;
-    Ok((out.verdict, out.range, out.certificate))
+    Ok((out.verdict(), out.range().map(str::to_string), out.certificate))
 }
 
 /// The claim fails with an exact counterexample.

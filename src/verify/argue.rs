@@ -2,8 +2,8 @@
 //! the argument (from the typed [`Method`]), the cases of the log and the worked case, the
 //! misprint lines and the de Casteljau scheme that goes with a case.
 
-use super::kernel::checked::{Checked, Evaluation, Method, Step, StepKind, Verdict};
 use super::claims::{Claim, ClaimFile, Kind};
+use super::kernel::checked::{Checked, Evaluation, Method, Step, StepKind, Verdict};
 use super::objects::curve_from_spec;
 use crate::bernstein::bernstein_all;
 use crate::curve::{BezierCurve, DeCasteljauScheme};
@@ -89,7 +89,7 @@ pub(crate) fn worked_case<'a>(all: &'a [Case<'a>]) -> Option<&'a Case<'a>> {
 /// The worked case of a claim whose check leaves no log (a classification, a fit, a vector
 /// identity, a theorem checked by its own code): the certificate's computation, one step a line.
 pub(crate) fn certificate_case(checked: &Checked) -> (&'static str, Vec<&str>) {
-    let header = if checked.verdict == Verdict::Fails {
+    let header = if checked.verdict() == Verdict::Fails {
         "the counterexample, computed exactly:"
     } else {
         "the claim's own data, computed exactly:"
@@ -99,7 +99,7 @@ pub(crate) fn certificate_case(checked: &Checked) -> (&'static str, Vec<&str>) {
         .certificate
         .split("; ")
         .flat_map(|part| match part.strip_prefix("at ").and_then(|p| p.split_once(": ")) {
-            Some((point, rest)) if checked.verdict == Verdict::Fails => vec![&part[..point.len() + 3], rest],
+            Some((point, rest)) if checked.verdict() == Verdict::Fails => vec![&part[..point.len() + 3], rest],
             _ => vec![part],
         })
         .map(str::trim)
@@ -165,15 +165,15 @@ pub(crate) fn argument(c: &Claim, checked: &Checked) -> Vec<String> {
     let mut a = Vec::new();
     if matches!(c.kind, Kind::Inequality(_)) {
         a.extend(super::inequality::ARGUMENT.iter().map(|l| l.to_string()));
-        if checked.method == Method::ForEvery {
+        if checked.method() == Some(Method::Pieces) {
             a.extend(super::inequality::ARGUMENT_FOR_EVERY.iter().map(|l| l.to_string()));
         }
-    } else if checked.method == Method::Induction {
+    } else if checked.method() == Some(Method::Induction) {
         a.extend(super::symbolic::INDUCTION_ARGUMENT.iter().map(|l| l.to_string()));
         a.extend(super::symbolic::ARGUMENT.iter().map(|l| l.to_string()));
-    } else if checked.method == Method::ForEvery && checked.range.is_none() {
+    } else if checked.method().is_some_and(Method::is_for_every) && checked.range().is_none() {
         a.extend(super::symbolic::ARGUMENT.iter().map(|l| l.to_string()));
-    } else if let Method::Sampling { basis } = checked.method {
+    } else if let Some(Method::Sampling { basis, .. }) = checked.method() {
         let vars = c
             .decls
             .vars

@@ -14,7 +14,7 @@ pub fn check(body: &str) -> casteljau::Result<(Verdict, String)> {
         Path::new("test.toml"),
     )?;
     let out = check_claim(&f.claim[0], false)?;
-    Ok((out.verdict, out.certificate))
+    Ok((out.verdict(), out.certificate))
 }
 
 /// The verdict, its range and the certificate, with the proof's steps recorded (as `--explain`).
@@ -24,7 +24,7 @@ pub fn check_scoped(body: &str) -> casteljau::Result<(Verdict, Option<String>, S
         Path::new("test.toml"),
     )?;
     let out = check_claim(&f.claim[0], true)?;
-    Ok((out.verdict, out.range, out.certificate))
+    Ok((out.verdict(), out.range().map(str::to_string), out.certificate))
 }
 
 /// The certificate of a claim `proved` for every n; a panic naming what came instead.

@@ -1,6 +1,7 @@
 //! What checking a claim produces: the verdict, what it rests on (a typed [`Method`]), the
 //! certificate and, for `explain`, the steps.
 
+use super::{Proof, Trusted};
 use num_rational::BigRational;
 use serde::Serialize;
 
@@ -36,53 +37,151 @@ impl Verdict {
             Verdict::Error => "error",
         }
     }
+
+    /// The verdict named `name` (as [`Verdict::as_str`] writes it), e.g. a claim's `expect`.
+    pub fn from_name(name: &str) -> Option<Verdict> {
+        [
+            Verdict::Proved,
+            Verdict::ProvedInRange,
+            Verdict::Verified,
+            Verdict::Fails,
+            Verdict::Error,
+        ]
+        .into_iter()
+        .find(|v| v.as_str() == name)
+    }
+
+    /// The strongest verdict a claim can get: `proved_in_range` for a claim bound to finite
+    /// ranges, `proved` otherwise.
+    pub fn strongest(in_range: bool) -> Verdict {
+        if in_range {
+            Verdict::ProvedInRange
+        } else {
+            Verdict::Proved
+        }
+    }
+
+    /// The verdicts a report explains, strongest first.
+    pub const SHOWN: [Verdict; 4] = [
+        Verdict::Proved,
+        Verdict::ProvedInRange,
+        Verdict::Verified,
+        Verdict::Fails,
+    ];
 }
 
-/// What a verdict rests on: the explanation argues from it (never from the certificate's
-/// or the steps' text).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+/// The kind of argument a verdict rests on: the explanation argues from it (never from the
+/// certificate's or the steps' text). One variant per kind of argument, so a new one is
+/// carried by the compiler into every report that explains it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
 pub enum Method {
-    /// A check of the kind's own: a classification, an exact elimination, library code on a
-    /// finite set of cases, bounded evidence or a counterexample.
-    #[default]
-    Direct,
-    /// Exact evaluation at d + 1 points per parameter, for degree bounds d derived from the
-    /// expressions; with `basis`, on the zero and unit control polygons (both sides affine in
-    /// them).
+    /// Exact evaluation at d + 1 distinct points per parameter, for degree bounds d derived
+    /// from the expressions (`degree`: the largest); with `basis`, on the zero and unit
+    /// control polygons (both sides affine in them).
     Sampling {
         /// Whether the cases ran over basis polygons.
         basis: bool,
+        /// The largest degree bound of a parameter.
+        degree: u64,
     },
-    /// For every value of the open ranges: hypergeometric terms, WZ certificates, Fourier–Motzkin
-    /// pieces or Bernstein certificates of the factors.
-    ForEvery,
-    /// For every value by induction on a range variable: its base and its step, each proved
-    /// for every value of the others.
+    /// Both sides evaluated exactly, with no free parameter.
+    Evaluation,
+    /// Exact symbolic expansion as rational functions.
+    Expansion,
+    /// Hypergeometric terms: rational identities (or products of factors ≥ 0) on every piece
+    /// of the domain (Fourier–Motzkin).
+    Pieces,
+    /// WZ certificates of sums.
+    Wz,
+    /// A recurrence of a sum found by creative telescoping, with its closed form.
+    Telescoping,
+    /// A recurrence of sums stated by the claim, checked by creative telescoping.
+    StatedRecurrence,
+    /// Induction on a range variable: its base and its step, each proved for every value of
+    /// the others.
     Induction,
+    /// Bernstein coefficients ≥ 0 of a numerator on subintervals.
+    Bernstein,
+    /// Euler's Beta integral over [0, 1].
+    Beta,
+    /// A library computation accepted by name (see the proof's `rests_on`).
+    Computation,
 }
 
 impl Method {
     /// The method of several parts checked together: sampling when any part sampled.
     pub fn join(self, other: Method) -> Method {
         match (self, other) {
-            (Method::Sampling { basis: a }, Method::Sampling { basis: b }) => Method::Sampling { basis: a || b },
+            (Method::Sampling { basis: a, degree: d }, Method::Sampling { basis: b, degree: e }) => Method::Sampling {
+                basis: a || b,
+                degree: d.max(e),
+            },
             (s @ Method::Sampling { .. }, _) | (_, s @ Method::Sampling { .. }) => s,
-            (Method::Induction, _) | (_, Method::Induction) => Method::Induction,
-            (Method::ForEvery, _) | (_, Method::ForEvery) => Method::ForEvery,
-            _ => Method::Direct,
+            (Method::Evaluation, m) => m,
+            (m, _) => m,
+        }
+    }
+
+    /// Whether the method proves a claim for every value of open ranges.
+    pub fn is_for_every(self) -> bool {
+        matches!(
+            self,
+            Method::Pieces
+                | Method::Wz
+                | Method::Telescoping
+                | Method::StatedRecurrence
+                | Method::Induction
+                | Method::Beta
+        )
+    }
+
+    /// The method in one line, as the reports show it.
+    pub fn text(self) -> String {
+        match self {
+            Method::Sampling { basis, degree } => format!(
+                "exact evaluation at d + 1 points per parameter (degree bounds up to {degree}){}",
+                if basis { ", on the basis polygons" } else { "" }
+            ),
+            Method::Evaluation => "exact evaluation (no free parameter)".into(),
+            Method::Expansion => "exact symbolic expansion".into(),
+            Method::Pieces => "hypergeometric terms on the pieces of the domain".into(),
+            Method::Wz => "WZ certificates".into(),
+            Method::Telescoping => "creative telescoping".into(),
+            Method::StatedRecurrence => "the stated recurrence, by creative telescoping".into(),
+            Method::Induction => "induction (base and step)".into(),
+            Method::Bernstein => "Bernstein coefficients ≥ 0".into(),
+            Method::Beta => "Euler's Beta integral".into(),
+            Method::Computation => "a library computation accepted by name".into(),
         }
     }
 }
 
-/// The result of checking one claim.
+/// What a check ended in.
+#[derive(Clone, Debug)]
+enum Outcome {
+    /// A proof: the verdict is the proof's.
+    Proved(Proof),
+    /// Any other verdict (the constructors below make only `verified`, `fails`, `error`), and
+    /// the method of the check that reached it.
+    Other(Verdict, Option<Method>),
+}
+
+/// The result of checking one claim. It is `proved` (or `proved_in_range`) only by holding a
+/// [`Proof`], which only the kernel makes:
+///
+/// ```compile_fail
+/// use casteljau::verify::{Checked, Verdict};
+/// let c = Checked { verdict: Verdict::Proved, certificate: String::new(), steps: Vec::new(), params: Vec::new() };
+/// ```
+/// ```compile_fail
+/// fn promote(c: &mut casteljau::verify::Checked) {
+///     c.verdict = casteljau::verify::Verdict::Proved;
+/// }
+/// ```
 #[derive(Clone, Debug)]
 pub struct Checked {
-    /// The verdict.
-    pub verdict: Verdict,
-    /// What the verdict rests on.
-    pub method: Method,
-    /// The finite ranges a [`Verdict::ProvedInRange`] covers.
-    pub range: Option<String>,
+    outcome: Outcome,
     /// The certificate (one line).
     pub certificate: String,
     /// The step-by-step account (filled when asked for).
@@ -92,15 +191,93 @@ pub struct Checked {
 }
 
 impl Checked {
-    pub(crate) fn new(verdict: Verdict, certificate: String) -> Self {
+    fn other(verdict: Verdict, certificate: String) -> Self {
         Checked {
-            verdict,
-            method: Method::Direct,
-            range: None,
+            outcome: Outcome::Other(verdict, None),
             certificate,
             steps: Vec::new(),
             params: Vec::new(),
         }
+    }
+
+    /// A proved claim.
+    pub(crate) fn proved(proof: Proof, certificate: String) -> Self {
+        Checked {
+            outcome: Outcome::Proved(proof),
+            certificate,
+            steps: Vec::new(),
+            params: Vec::new(),
+        }
+    }
+
+    /// A false claim; the certificate holds the exact counterexample.
+    pub(crate) fn fails(certificate: String) -> Self {
+        Checked::other(Verdict::Fails, certificate)
+    }
+
+    /// Bounded evidence, saying exactly what was checked.
+    pub(crate) fn verified(certificate: String) -> Self {
+        Checked::other(Verdict::Verified, certificate)
+    }
+
+    /// Not decided; the certificate holds the reason.
+    pub(crate) fn error(certificate: String) -> Self {
+        Checked::other(Verdict::Error, certificate)
+    }
+
+    /// A verdict other than a proof, with the method of the check that reached it (a proof's
+    /// method is its own and stays).
+    pub(crate) fn found_by(mut self, method: Method) -> Self {
+        if let Outcome::Other(_, m) = &mut self.outcome {
+            *m = Some(method);
+        }
+        self
+    }
+
+    /// A proof read as covering only the cases of `range` (other verdicts stay).
+    pub(crate) fn in_range(mut self, range: String) -> Self {
+        if let Outcome::Proved(p) = self.outcome {
+            self.outcome = Outcome::Proved(p.in_range(range));
+        }
+        self
+    }
+
+    /// A proof that also accepts `trusted` (other verdicts stay).
+    pub(crate) fn resting_on(mut self, trusted: Trusted) -> Self {
+        if let Outcome::Proved(p) = self.outcome {
+            self.outcome = Outcome::Proved(p.resting_on(trusted));
+        }
+        self
+    }
+
+    /// The verdict.
+    pub fn verdict(&self) -> Verdict {
+        match &self.outcome {
+            Outcome::Proved(p) => p.verdict(),
+            Outcome::Other(v, _) => *v,
+        }
+    }
+
+    /// The proof, when the claim is proved.
+    pub fn proof(&self) -> Option<&Proof> {
+        match &self.outcome {
+            Outcome::Proved(p) => Some(p),
+            Outcome::Other(..) => None,
+        }
+    }
+
+    /// What the verdict rests on: a proof's method, or the method of the check that found a
+    /// counterexample.
+    pub fn method(&self) -> Option<Method> {
+        match &self.outcome {
+            Outcome::Proved(p) => Some(p.method()),
+            Outcome::Other(_, m) => *m,
+        }
+    }
+
+    /// The finite ranges a [`Verdict::ProvedInRange`] covers.
+    pub fn range(&self) -> Option<&str> {
+        self.proof().and_then(Proof::range)
     }
 }
 
