@@ -160,48 +160,68 @@ pub(crate) fn sample_evaluations<'a>(case: &Case<'a>, k: usize) -> Vec<&'a Evalu
     pick
 }
 
-/// The argument: what was checked and why it suffices.
+/// The argument: what was checked and why it suffices. Every method has its arm, so a new one
+/// is placed here by the compiler.
 pub(crate) fn argument(c: &Claim, checked: &Checked) -> Vec<String> {
     let mut a = Vec::new();
-    if matches!(c.kind, Kind::Inequality(_)) {
-        a.extend(super::inequality::ARGUMENT.iter().map(|l| l.to_string()));
-        if checked.method() == Some(Method::Pieces) {
-            a.extend(super::inequality::ARGUMENT_FOR_EVERY.iter().map(|l| l.to_string()));
+    match checked.method() {
+        _ if matches!(c.kind, Kind::Inequality(_)) => {
+            a.extend(super::inequality::ARGUMENT.iter().map(|l| l.to_string()));
+            if checked.method() == Some(Method::Pieces) {
+                a.extend(super::inequality::ARGUMENT_FOR_EVERY.iter().map(|l| l.to_string()));
+            }
         }
-    } else if checked.method() == Some(Method::Induction) {
-        a.extend(super::symbolic::INDUCTION_ARGUMENT.iter().map(|l| l.to_string()));
-        a.extend(super::symbolic::ARGUMENT.iter().map(|l| l.to_string()));
-    } else if checked.method().is_some_and(Method::is_for_every) && checked.range().is_none() {
-        a.extend(super::symbolic::ARGUMENT.iter().map(|l| l.to_string()));
-    } else if let Some(Method::Sampling { basis, .. }) = checked.method() {
-        let vars = c
-            .decls
-            .vars
-            .as_ref()
-            .map(|v| v.join(", "))
-            .unwrap_or_else(|| "the parameters".into());
-        a.push(format!(
-            "Each equality, cleared of denominators, is a polynomial identity in {vars}; its degree d in each"
-        ));
-        a.push(
-            "variable is bounded from the expressions. A nonzero polynomial of degree ≤ d in one variable has at"
-                .into(),
-        );
-        a.push(
-            "most d roots, so the identity holds for all values iff it holds at d+1 distinct points per variable"
-                .into(),
-        );
-        if basis {
+        Some(Method::Induction) => {
+            a.extend(super::symbolic::INDUCTION_ARGUMENT.iter().map(|l| l.to_string()));
+            a.extend(super::symbolic::ARGUMENT.iter().map(|l| l.to_string()));
+        }
+        Some(Method::Pieces | Method::Wz | Method::Telescoping | Method::StatedRecurrence | Method::Beta)
+            if checked.range().is_none() =>
+        {
+            a.extend(super::symbolic::ARGUMENT.iter().map(|l| l.to_string()));
+        }
+        Some(Method::Sampling { basis, .. }) => {
+            let vars = c
+                .decls
+                .vars
+                .as_ref()
+                .map(|v| v.join(", "))
+                .unwrap_or_else(|| "the parameters".into());
+            a.push(format!(
+                "Each equality, cleared of denominators, is a polynomial identity in {vars}; its degree d in each"
+            ));
             a.push(
-                "(a grid, by induction on the variables). Both sides are affine in the control points, so checking"
+                "variable is bounded from the expressions. A nonzero polynomial of degree ≤ d in one variable has at"
                     .into(),
             );
-            a.push("the zero polygon and each unit polygon covers every control polygon. All checks are exact.".into());
-        } else {
-            a.push("(a grid, by induction on the variables). All checks are in exact rational arithmetic.".into());
+            a.push(
+                "most d roots, so the identity holds for all values iff it holds at d+1 distinct points per variable"
+                    .into(),
+            );
+            if basis {
+                a.push(
+                    "(a grid, by induction on the variables). Both sides are affine in the control points, so checking"
+                        .into(),
+                );
+                a.push(
+                    "the zero polygon and each unit polygon covers every control polygon. All checks are exact.".into(),
+                );
+            } else {
+                a.push("(a grid, by induction on the variables). All checks are in exact rational arithmetic.".into());
+            }
         }
-    } else {
-        a.extend(kind_argument(&c.kind).iter().map(|l| l.to_string()));
+        Some(
+            Method::Pieces
+            | Method::Wz
+            | Method::Telescoping
+            | Method::StatedRecurrence
+            | Method::Beta
+            | Method::Evaluation
+            | Method::Expansion
+            | Method::Bernstein
+            | Method::Computation,
+        )
+        | None => a.extend(kind_argument(&c.kind).iter().map(|l| l.to_string())),
     }
     a
 }
