@@ -296,12 +296,7 @@ fn index_page(
         sums.len()
     );
     s.push_str("<h2>What the verdicts mean</h2>\n<table>\n");
-    for v in [
-        Verdict::Proved,
-        Verdict::ProvedInRange,
-        Verdict::Verified,
-        Verdict::Fails,
-    ] {
+    for v in Verdict::SHOWN {
         let vt = verdict_words(v, None);
         let _ = writeln!(
             s,
@@ -537,6 +532,9 @@ fn claim_section(
         "<dt>{label}</dt><dd><pre class=\"certificate\">{}</pre></dd>",
         esc(&o.certificate)
     );
+    if let Some(m) = o.method_text() {
+        let _ = writeln!(s, "<dt>method</dt><dd class=\"method\">{}</dd>", esc(&m));
+    }
     if let Some(n) = &o.note {
         let _ = writeln!(s, "<dt>note</dt><dd>{}</dd>", formula(n));
     }

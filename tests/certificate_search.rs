@@ -26,7 +26,7 @@ fn check(lhs: &str, rhs: &str) -> Result<Verdict, String> {
     let cpu = thread_cpu() - start;
     assert!(cpu < Duration::from_secs(20), "{lhs} = {rhs}: {cpu:?} of CPU");
     match out {
-        Ok(c) => Ok(c.verdict),
+        Ok(c) => Ok(c.verdict()),
         Err(e) => {
             let e = e.to_string();
             assert!(!e.contains('\n'), "one line: {e}");
@@ -99,7 +99,7 @@ fn check_in(vars: &str, lhs: &str, rhs: &str) -> (Result<Verdict, String>, Durat
     let file = parse_file(&text, Path::new("reproducer.toml")).unwrap();
     let start = thread_cpu();
     let out = check_claim(&file.claim[0], false);
-    (out.map(|c| c.verdict).map_err(|e| e.to_string()), thread_cpu() - start)
+    (out.map(|c| c.verdict()).map_err(|e| e.to_string()), thread_cpu() - start)
 }
 
 /// Binomial theorems in five and six parameters (issue 41): the WZ ansatz built its equations

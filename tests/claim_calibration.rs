@@ -39,7 +39,7 @@ fn run(label: &str, body: &str) -> (Outcome, Duration) {
     let result = check_claim(&file.claim[0], false);
     let cpu = thread_cpu() - start;
     let outcome = match result {
-        Ok(c) => Outcome::Verdict(c.verdict),
+        Ok(c) => Outcome::Verdict(c.verdict()),
         Err(e) => Outcome::Refused(e.to_string()),
     };
     println!("{label:<48} {:>7.2} s  {}", cpu.as_secs_f64(), short(&outcome));

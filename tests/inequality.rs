@@ -1,20 +1,12 @@
 //! The `inequality` kind: Bernstein certificates on an interval, exact refutations, and `B ≥ 0`
 //! for every n; false inequalities are never proved.
 
-use casteljau::verify::check_claim;
-use casteljau::verify::claims::parse_file;
+#[path = "support/identity.rs"]
+mod identity;
 use casteljau::verify::Verdict;
-use std::path::Path;
 
 fn check(body: &str) -> casteljau::Result<(Verdict, Option<String>, String)> {
-    let f = parse_file(
-        &format!(
-            "[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"inequality\"\nvars = [\"t\"]\n{body}"
-        ),
-        Path::new("test.toml"),
-    )?;
-    let out = check_claim(&f.claim[0], true)?;
-    Ok((out.verdict, out.range, out.certificate))
+    identity::check_table(&format!("kind = \"inequality\"\nvars = [\"t\"]\n{body}"), true)
 }
 
 #[test]

@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 fn note(toml: &str) -> (Verdict, Option<String>) {
     let file = parse_file(toml, Path::new("x.toml")).expect("claim file");
     let c = &file.claim[0];
-    let verdict = check_claim(c, false).expect("a verdict").verdict;
+    let verdict = check_claim(c, false).expect("a verdict").verdict();
     (verdict, range_bound(c, verdict))
 }
 

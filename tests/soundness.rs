@@ -10,19 +10,15 @@
 //! - Work is bounded before it starts: the size of the numbers counts, and the certificate
 //!   search stops at its budget, saying which degree it reached.
 
-use casteljau::verify::check_claim;
+#[path = "support/identity.rs"]
+mod identity;
 use casteljau::verify::claims::parse_file;
 use casteljau::verify::Verdict;
 use std::path::Path;
 use std::time::Instant;
 
 fn check(body: &str) -> casteljau::Result<(Verdict, String)> {
-    let f = parse_file(
-        &format!("[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\n{body}"),
-        Path::new("test.toml"),
-    )?;
-    let out = check_claim(&f.claim[0], false)?;
-    Ok((out.verdict, out.certificate))
+    identity::check_table(body, false).map(|(v, _, c)| (v, c))
 }
 
 fn assert_error(body: &str, needle: &str) {

@@ -12,7 +12,7 @@ use std::path::{Path, PathBuf};
 fn check(toml: &str) -> casteljau::Result<(Verdict, String)> {
     let f = parse_file(toml, Path::new("test.toml"))?;
     let out = check_claim(&f.claim[0], false)?;
-    Ok((out.verdict, out.certificate))
+    Ok((out.verdict(), out.certificate))
 }
 
 fn identity(lhs: &str, rhs: &str, extra: &str) -> casteljau::Result<(Verdict, String)> {

@@ -2,21 +2,15 @@
 //! `fails` with an exact counterexample or a one-line error, never `proved`; a finite range is
 //! `proved_in_range` with its range; random false claims are never proved.
 
-use casteljau::verify::check_claim;
-use casteljau::verify::claims::parse_file;
+#[path = "support/identity.rs"]
+mod identity;
 use casteljau::verify::Verdict;
 use proptest::prelude::*;
-use std::path::Path;
 
 /// The verdict, range and certificate of the single claim in `body` (a claim's fields
 /// without id/source/statement).
 fn check(body: &str) -> casteljau::Result<(Verdict, Option<String>, String)> {
-    let f = parse_file(
-        &format!("[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\n{body}"),
-        Path::new("test.toml"),
-    )?;
-    let out = check_claim(&f.claim[0], false)?;
-    Ok((out.verdict, out.range, out.certificate))
+    identity::check_table(body, false)
 }
 
 /// The claim fails with an exact counterexample.

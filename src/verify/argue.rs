@@ -2,8 +2,8 @@
 //! the argument (from the typed [`Method`]), the cases of the log and the worked case, the
 //! misprint lines and the de Casteljau scheme that goes with a case.
 
-use super::checked::{Checked, Evaluation, Method, Step, StepKind, Verdict};
 use super::claims::{Claim, ClaimFile, Kind};
+use super::kernel::checked::{Checked, Evaluation, Method, Step, StepKind, Verdict};
 use super::objects::curve_from_spec;
 use crate::bernstein::bernstein_all;
 use crate::curve::{BezierCurve, DeCasteljauScheme};
@@ -89,7 +89,7 @@ pub(crate) fn worked_case<'a>(all: &'a [Case<'a>]) -> Option<&'a Case<'a>> {
 /// The worked case of a claim whose check leaves no log (a classification, a fit, a vector
 /// identity, a theorem checked by its own code): the certificate's computation, one step a line.
 pub(crate) fn certificate_case(checked: &Checked) -> (&'static str, Vec<&str>) {
-    let header = if checked.verdict == Verdict::Fails {
+    let header = if checked.verdict() == Verdict::Fails {
         "the counterexample, computed exactly:"
     } else {
         "the claim's own data, computed exactly:"
@@ -99,7 +99,7 @@ pub(crate) fn certificate_case(checked: &Checked) -> (&'static str, Vec<&str>) {
         .certificate
         .split("; ")
         .flat_map(|part| match part.strip_prefix("at ").and_then(|p| p.split_once(": ")) {
-            Some((point, rest)) if checked.verdict == Verdict::Fails => vec![&part[..point.len() + 3], rest],
+            Some((point, rest)) if checked.verdict() == Verdict::Fails => vec![&part[..point.len() + 3], rest],
             _ => vec![part],
         })
         .map(str::trim)
@@ -160,48 +160,68 @@ pub(crate) fn sample_evaluations<'a>(case: &Case<'a>, k: usize) -> Vec<&'a Evalu
     pick
 }
 
-/// The argument: what was checked and why it suffices.
+/// The argument: what was checked and why it suffices. Every method has its arm, so a new one
+/// is placed here by the compiler.
 pub(crate) fn argument(c: &Claim, checked: &Checked) -> Vec<String> {
     let mut a = Vec::new();
-    if matches!(c.kind, Kind::Inequality(_)) {
-        a.extend(super::inequality::ARGUMENT.iter().map(|l| l.to_string()));
-        if checked.method == Method::ForEvery {
-            a.extend(super::inequality::ARGUMENT_FOR_EVERY.iter().map(|l| l.to_string()));
+    match checked.method() {
+        _ if matches!(c.kind, Kind::Inequality(_)) => {
+            a.extend(super::inequality::ARGUMENT.iter().map(|l| l.to_string()));
+            if checked.method() == Some(Method::Pieces) {
+                a.extend(super::inequality::ARGUMENT_FOR_EVERY.iter().map(|l| l.to_string()));
+            }
         }
-    } else if checked.method == Method::Induction {
-        a.extend(super::symbolic::INDUCTION_ARGUMENT.iter().map(|l| l.to_string()));
-        a.extend(super::symbolic::ARGUMENT.iter().map(|l| l.to_string()));
-    } else if checked.method == Method::ForEvery && checked.range.is_none() {
-        a.extend(super::symbolic::ARGUMENT.iter().map(|l| l.to_string()));
-    } else if let Method::Sampling { basis } = checked.method {
-        let vars = c
-            .decls
-            .vars
-            .as_ref()
-            .map(|v| v.join(", "))
-            .unwrap_or_else(|| "the parameters".into());
-        a.push(format!(
-            "Each equality, cleared of denominators, is a polynomial identity in {vars}; its degree d in each"
-        ));
-        a.push(
-            "variable is bounded from the expressions. A nonzero polynomial of degree ≤ d in one variable has at"
-                .into(),
-        );
-        a.push(
-            "most d roots, so the identity holds for all values iff it holds at d+1 distinct points per variable"
-                .into(),
-        );
-        if basis {
+        Some(Method::Induction) => {
+            a.extend(super::symbolic::INDUCTION_ARGUMENT.iter().map(|l| l.to_string()));
+            a.extend(super::symbolic::ARGUMENT.iter().map(|l| l.to_string()));
+        }
+        Some(Method::Pieces | Method::Wz | Method::Telescoping | Method::StatedRecurrence | Method::Beta)
+            if checked.range().is_none() =>
+        {
+            a.extend(super::symbolic::ARGUMENT.iter().map(|l| l.to_string()));
+        }
+        Some(Method::Sampling { basis, .. }) => {
+            let vars = c
+                .decls
+                .vars
+                .as_ref()
+                .map(|v| v.join(", "))
+                .unwrap_or_else(|| "the parameters".into());
+            a.push(format!(
+                "Each equality, cleared of denominators, is a polynomial identity in {vars}; its degree d in each"
+            ));
             a.push(
-                "(a grid, by induction on the variables). Both sides are affine in the control points, so checking"
+                "variable is bounded from the expressions. A nonzero polynomial of degree ≤ d in one variable has at"
                     .into(),
             );
-            a.push("the zero polygon and each unit polygon covers every control polygon. All checks are exact.".into());
-        } else {
-            a.push("(a grid, by induction on the variables). All checks are in exact rational arithmetic.".into());
+            a.push(
+                "most d roots, so the identity holds for all values iff it holds at d+1 distinct points per variable"
+                    .into(),
+            );
+            if basis {
+                a.push(
+                    "(a grid, by induction on the variables). Both sides are affine in the control points, so checking"
+                        .into(),
+                );
+                a.push(
+                    "the zero polygon and each unit polygon covers every control polygon. All checks are exact.".into(),
+                );
+            } else {
+                a.push("(a grid, by induction on the variables). All checks are in exact rational arithmetic.".into());
+            }
         }
-    } else {
-        a.extend(kind_argument(&c.kind).iter().map(|l| l.to_string()));
+        Some(
+            Method::Pieces
+            | Method::Wz
+            | Method::Telescoping
+            | Method::StatedRecurrence
+            | Method::Beta
+            | Method::Evaluation
+            | Method::Expansion
+            | Method::Bernstein
+            | Method::Computation,
+        )
+        | None => a.extend(kind_argument(&c.kind).iter().map(|l| l.to_string())),
     }
     a
 }

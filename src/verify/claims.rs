@@ -5,7 +5,7 @@
 //! "fails") and, for the correction of a misprint, `corrects = "<id>"`. The remaining fields
 //! depend on the kind; unknown fields are errors, so a typo never silently drops data.
 
-use super::checked::Verdict;
+use super::kernel::checked::Verdict;
 use crate::error::{Error, Result};
 use serde::Deserialize;
 use std::collections::BTreeMap;
@@ -461,12 +461,7 @@ pub struct Inequality {
     pub interval: Option<[Number; 2]>,
 }
 
-/// Writes [`Kind`] (one variant per kind, with the kind's own fields), [`KINDS`], the
-/// kind's name and declarations and the reading of its fields: a new kind is one line here,
-/// its struct, and its lowering in `kinds::check_kind`.
-macro_rules! claim_kinds {
-    ($( $(#[$doc:meta])* $variant:ident $(($fields:ty))? = $name:literal, declares $declares:expr; )*) => {
-        /// `kind = "vanishes"`: `expr = 0` for every value of the variables and ranges.
+/// `kind = "vanishes"`: `expr = 0` for every value of the variables and ranges.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Vanishes {
@@ -485,7 +480,12 @@ impl Vanishes {
     }
 }
 
-/// What a claim states, one variant per kind, with the kind's own fields.
+/// Writes [`Kind`] (one variant per kind, with the kind's own fields), [`KINDS`], the
+/// kind's name and declarations and the reading of its fields: a new kind is one line here,
+/// its struct, and its lowering in `kinds::check_kind`.
+macro_rules! claim_kinds {
+    ($( $(#[$doc:meta])* $variant:ident $(($fields:ty))? = $name:literal, declares $declares:expr; )*) => {
+        /// What a claim states, one variant per kind, with the kind's own fields.
         #[derive(Clone, Debug)]
         pub enum Kind {
             $( $(#[$doc])* $variant $(($fields))?, )*
@@ -734,10 +734,7 @@ impl Claim {
             .map_err(|e: toml::de::Error| in_claim(e.message().to_string()))?;
         let expect = match head.expect.as_deref() {
             None => None,
-            Some("proved") => Some(Verdict::Proved),
-            Some("proved_in_range") => Some(Verdict::ProvedInRange),
-            Some("verified") => Some(Verdict::Verified),
-            Some("fails") => Some(Verdict::Fails),
+            Some(name) if name != "error" && Verdict::from_name(name).is_some() => Verdict::from_name(name),
             Some(other) => {
                 return Err(in_claim(format!(
                     "expect must be \"proved\", \"proved_in_range\", \"verified\" or \"fails\", not \"{other}\""
@@ -774,8 +771,7 @@ impl Claim {
     /// (`proved_in_range` for a claim over ranges, `proved` otherwise).
     pub fn expected(&self) -> Verdict {
         match self.expect {
-            None if self.has_ranges() && !self.for_every() => Verdict::ProvedInRange,
-            None => Verdict::Proved,
+            None => Verdict::strongest(self.has_ranges() && !self.for_every()),
             Some(v) => v,
         }
     }

@@ -1,11 +1,11 @@
 //! Exact symbolic expansion: identities in scalar and vector unknowns, and `implies`.
 
-use super::checked::Verdict;
-use super::checked::{Checked, Step};
 use super::claims::Implies;
 use super::context::Ctx;
 use super::eval::{Deg, Env, Evaluator, Value, VarEnv};
 use super::expr::Expr;
+use super::kernel::check_expanded;
+use super::kernel::checked::{Checked, Step};
 use super::poly::{Poly, RatFunc};
 use super::sampling::{list, PairProof, PairResult};
 use crate::error::{Error, Result};
@@ -175,7 +175,7 @@ pub fn check_chain_symbolic(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Resu
                     } else {
                         String::new()
                     };
-                    let mut c = Checked::new(Verdict::Fails, format!("{which}{cx}"));
+                    let mut c = Checked::fails(format!("{which}{cx}"));
                     c.steps = steps;
                     return Ok(c);
                 }
@@ -194,8 +194,10 @@ pub fn check_chain_symbolic(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Resu
     } else {
         "identity".into()
     };
-    let mut c = Checked::new(
-        Verdict::Proved,
+    // Every pair expanded to a zero difference: a `Fails` returned above otherwise.
+    let proof = check_expanded(true).expect("every pair expanded to zero");
+    let mut c = Checked::proved(
+        proof,
         format!(
             "{what} expanded exactly as rational functions of the {nvars} coordinates of {}: the cleared numerators agree: proof",
             sym_names(ctx, &[]).1.iter().map(|(v, _)| v.clone()).collect::<Vec<_>>().join(", ")
@@ -291,8 +293,7 @@ fn refute_at_poles(ctx: &Ctx<'_>, imp: &Implies, prem: &Expr, (a, b): (&Expr, &E
                 if holds {
                     if let (Ok(av), Ok(bv)) = (at(&vars, a), at(&vars, b)) {
                         if av.equals(&bv) == Some(false) {
-                            return Ok(Some(Checked::new(
-                                Verdict::Fails,
+                            return Ok(Some(Checked::fails(
                                 format!(
                                     "at {shown}: the premise '{}' holds (the factor has a pole there), but the equation '{}' gives left side = {av}, right side = {bv}",
                                     imp.premise.as_str(),
@@ -341,8 +342,11 @@ pub fn check_implies(ctx: &Ctx<'_>, imp: &Implies, detail: bool) -> Result<Check
                      nothing follows, so the implication is not proved (refused; no counterexample among the first {POLE_SEARCH} small rational points)"
                 )));
             }
-            let mut out = Checked::new(
-                Verdict::Proved,
+            // The difference expanded to zero (`PairResult::Proved`) and the factor has no pole
+            // where the premise holds.
+            let proof = check_expanded(true).expect("the difference expanded to zero");
+            let mut out = Checked::proved(
+                proof,
                 format!(
                     "[{}] = ({}) · [{}] identically, as rational functions of the symbols and vector coordinates \
                      (exact symbolic expansion), so '{} = 0' implies the equation: proof",
@@ -403,8 +407,7 @@ pub fn check_implies(ctx: &Ctx<'_>, imp: &Implies, detail: bool) -> Result<Check
                 let bv = Evaluator::new(&env, inst.clone()).eval(&b)?;
                 if pv.equals(&Value::S(BigRational::zero())) == Some(true) && av.equals(&bv) == Some(false) {
                     let shown: Vec<String> = vars.iter().map(|(k, v)| format!("{k} = {v}")).collect();
-                    return Ok(Checked::new(
-                        Verdict::Fails,
+                    return Ok(Checked::fails(
                         format!(
                             "at {}: the premise '{}' = 0 holds, but the equation '{}' gives left side = {av}, right side = {bv}",
                             shown.join(", "),

@@ -3,12 +3,11 @@
 //! expressions need. Identity, implicit and lowered claims (a power form's points, a theorem's
 //! parts, the symbolic route's evaluation check) all end here.
 
-use super::checked::Checked;
-use super::checked::Verdict;
 use super::claims::{CurveSpec, Decls, Identity, Number};
 use super::context::Ctx;
 use super::expansion::check_chain_symbolic;
 use super::expr::Expr;
+use super::kernel::checked::Checked;
 use super::sampling::check_chain;
 use crate::error::Result;
 use crate::quadratic::QuadraticIrrational;
@@ -18,16 +17,15 @@ use crate::quadratic::QuadraticIrrational;
 pub fn check_identity(id: &str, decls: &Decls, members: &[String], detail: bool) -> Result<Checked> {
     let ctx = Ctx::new(id, decls, Vec::new())?;
     let sides: Vec<Expr> = members.iter().map(|s| ctx.expr(s)).collect::<Result<_>>()?;
-    let mut out = if ctx.symbolic() {
+    let out = if ctx.symbolic() {
         check_chain_symbolic(&ctx, &sides, detail)?
     } else {
         chain_in_field(&ctx, &sides, detail)?
     };
-    if out.verdict == Verdict::Proved && !decls.ranges.is_empty() {
-        out.verdict = Verdict::ProvedInRange;
-        out.range = Some(ctx.range_text());
+    if decls.ranges.is_empty() {
+        return Ok(out);
     }
-    Ok(out)
+    Ok(out.in_range(ctx.range_text()))
 }
 
 /// Whether the expressions or the declared objects' numbers take a square root: then the

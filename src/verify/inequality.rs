@@ -16,12 +16,13 @@
 //! [`super::symbolic::nonneg_for_every`] (each term a product of factors ≥ 0 on `[a, b]`), after
 //! the first values are evaluated as above.
 
-use super::checked::Verdict;
-use super::checked::{Checked, Step};
 use super::claims::{Decls, Inequality, Relation};
 use super::context::Ctx;
 use super::eval::{Alg, Deg, Evaluator, Value, VarEnv};
 use super::expr::Expr;
+use super::kernel::check_bernstein;
+use super::kernel::checked::Verdict;
+use super::kernel::checked::{Checked, Step};
 use super::poly::{Poly, RatFunc};
 use crate::bernstein::{power_to_bernstein, reparametrize};
 use crate::error::{Error, Result};
@@ -175,6 +176,8 @@ pub fn check_inequality(ctx: &Ctx<'_>, ineq: &Inequality, detail: bool) -> Resul
     let names: Rc<[String]> = Rc::from(vec![t.clone()]);
     let mut lines = Vec::new();
     let mut least: Option<(String, BigRational)> = None;
+    // Every subinterval's least coefficient, for the kernel to check.
+    let mut leasts: Vec<BigRational> = Vec::new();
     let mut pieces = 0usize;
     for ints in ctx.instances()? {
         let at: Vec<String> = ints.iter().map(|(k, v)| format!("{k} = {v}")).collect();
@@ -212,16 +215,14 @@ pub fn check_inequality(ctx: &Ctx<'_>, ineq: &Inequality, detail: bool) -> Resul
         match poly_sign(&num, &a, &b, strict)? {
             Sign::Fails(x) => {
                 let value = eval_at(&v, &x)?;
-                return Ok(Checked::new(
-                    Verdict::Fails,
-                    format!(
-                        "{at}at {t} = {x}: left side − right side = {value}, {} 0 (an exact evaluation in [{a}, {b}])",
-                        if strict { "not > " } else { "<" }
-                    ),
-                ));
+                return Ok(Checked::fails(format!(
+                    "{at}at {t} = {x}: left side − right side = {value}, {} 0 (an exact evaluation in [{a}, {b}])",
+                    if strict { "not > " } else { "<" }
+                )));
             }
             Sign::Holds(parts) => {
                 pieces += parts.len();
+                leasts.extend(parts.iter().map(|p| p.2.clone()));
                 let m = parts
                     .iter()
                     .map(|p| p.2.clone())
@@ -248,8 +249,10 @@ pub fn check_inequality(ctx: &Ctx<'_>, ineq: &Inequality, detail: bool) -> Resul
         }
     }
     let (where_, m) = least.unwrap_or_default();
-    let mut out = Checked::new(
-        Verdict::Proved,
+    let proof = check_bernstein(&leasts)
+        .ok_or_else(|| Error::Domain("the kernel refuses the certificate: a negative Bernstein coefficient".into()))?;
+    let mut out = Checked::proved(
+        proof,
         format!(
             "on [{a}, {b}] the numerator of left side − right side (the denominator shown > 0) has Bernstein coefficients {} on {pieces} subinterval{} (least coefficient {m}{}): proof",
             if strict { "≥ 0 and > 0 at the ends" } else { "≥ 0" },
@@ -280,7 +283,7 @@ pub fn check_for_every(id: &str, decls: &Decls, ineq: &Inequality, detail: bool)
     let closed = super::symbolic::closed_decls(decls);
     let ctx = Ctx::new(id, &closed, Vec::new())?;
     let evaluated = check_inequality(&ctx, ineq, false)?;
-    if evaluated.verdict == Verdict::Fails {
+    if evaluated.verdict() == Verdict::Fails {
         return Ok(evaluated);
     }
     let (a, b) = interval(&ctx, ineq)?;

@@ -12,14 +12,14 @@
 //! | `fit`           | text 004's cubic fit of a concrete curve: (11) = (13), ∇δ² = 0, printed k, l, δ² |
 //! | `inequality`    | `lhs ≥ rhs` (or `>`) on an interval, by a Bernstein certificate or an exact point |
 
-use super::checked::Checked;
-use super::checked::Verdict;
 use super::claims::{BezierPoints, Claim, ConicType, CurveSpec, Decls, Fit, Implicit, Kind, Number, WeightType};
 use super::context::Ctx;
 use super::eval::{Alg, Deg, Evaluator, Value};
 use super::expansion::check_implies;
 use super::expr::Expr;
 use super::identity::{chain_in_field, check_identity, uses_sqrt};
+use super::kernel::checked::Checked;
+use super::kernel::{check_computed, Trusted};
 use super::lemma::Lemma;
 use super::objects::{curve_from_spec, points};
 use super::poly::{Poly, RatFunc};
@@ -92,19 +92,37 @@ pub(crate) fn check_citing(claim: &Claim, lemmas: &Result<Vec<Lemma>>, detail: b
         _ => Vec::new(),
     };
     let ctx = Ctx::new(&claim.id, &claim.decls, bound_by_kind)?;
-    let mut out = check_kind(&ctx, &claim.kind, detail)?;
-    if out.verdict == Verdict::Proved {
-        let scope = match &claim.kind {
-            Kind::Theorem(t) => Some(theorems::scope(t)?),
-            _ if claim.has_ranges() => Some(ctx.range_text()),
-            _ => None,
-        };
-        if let Some(range) = scope {
-            out.verdict = Verdict::ProvedInRange;
-            out.range = Some(range);
-        }
+    let out = check_kind(&ctx, &claim.kind, detail)?;
+    if out.proof().is_none() {
+        return Ok(out);
     }
-    Ok(out)
+    let out = library_operations(&ctx, &claim.kind)
+        .into_iter()
+        .fold(out, Checked::resting_on);
+    let scope = match &claim.kind {
+        Kind::Theorem(t) => Some(theorems::scope(t)?),
+        _ if claim.has_ranges() => Some(ctx.range_text()),
+        _ => None,
+    };
+    Ok(match scope {
+        Some(range) => out.in_range(range),
+        None => out,
+    })
+}
+
+/// The library operations on a polygon or net (`bsum`, `elev`, `isou`, …) that the claim's
+/// expressions call: their values are the library's, accepted by name.
+fn library_operations(ctx: &Ctx<'_>, kind: &Kind) -> Vec<Trusted> {
+    let Some(identity) = kind.identity() else {
+        return Vec::new();
+    };
+    let exprs: Vec<Expr> = identity
+        .sides
+        .members()
+        .iter()
+        .filter_map(|m| ctx.expr(m).ok())
+        .collect();
+    super::methods::operations_called(&exprs)
 }
 
 fn check_kind(ctx: &Ctx<'_>, kind: &Kind, detail: bool) -> Result<Checked> {
@@ -168,19 +186,19 @@ fn check_bezier_points(outer: &Ctx<'_>, claim: &BezierPoints, detail: bool) -> R
     let u = Expr::add(ea, Expr::mul(Expr::sub(eb, ctx.expr(&a.text()?)?), Expr::Var(t.into())));
     let lhs = Expr::Call("P".into(), vec![Expr::Var(t.into())]);
     let rhs = substitute(&power, std::slice::from_ref(&param), &[u]);
-    let mut out = check_chain::<BigRational>(&ctx, &[lhs, rhs], detail)?;
-    if out.verdict != Verdict::Proved {
+    let out = check_chain::<BigRational>(&ctx, &[lhs, rhs], detail)?;
+    if out.proof().is_none() {
         return Ok(out);
     }
-    // The library's conversion must give the same points.
+    // The library's conversion must give the same points; the verdict then accepts it.
     let lib = library_power_on(&power, &param, a, b)?;
     let printed: Vec<Point<BigRational>> = points(pts)?;
     if lib.points() != printed.as_slice() {
-        return Ok(Checked::new(
-            Verdict::Fails,
-            format!("BezierCurve::from_power_on gives {lib}, not the printed points"),
-        ));
+        return Ok(Checked::fails(format!(
+            "BezierCurve::from_power_on gives {lib}, not the printed points"
+        )));
     }
+    let mut out = out.resting_on(Trusted::FromPowerOn);
     out.certificate = format!(
         "the curve with the printed points equals the power form at {param} = a + (b − a){t}: {}; BezierCurve::from_power_on gives the same points",
         out.certificate
@@ -280,10 +298,9 @@ fn check_conic_type(ctx: &Ctx<'_>, claim: &ConicType) -> Result<Checked> {
         },
         kind.family()
     );
-    if kind.family() == printed {
-        Ok(Checked::new(Verdict::Proved, format!("{cert}: proof")))
-    } else {
-        Ok(Checked::new(Verdict::Fails, format!("{cert}, not {printed}")))
+    match check_computed(&[kind.family() == printed], &[Trusted::ConicKind]) {
+        Some(proof) => Ok(Checked::proved(proof, format!("{cert}: proof"))),
+        None => Ok(Checked::fails(format!("{cert}, not {printed}"))),
     }
 }
 
@@ -340,19 +357,17 @@ fn check_fit(ctx: &Ctx<'_>, c: &Fit) -> Result<Checked> {
     for w in &fit.warnings {
         wrong.push(format!("warning: {w}"));
     }
-    if wrong.iter().any(|w| !w.starts_with("warning")) {
-        return Ok(Checked::new(
-            Verdict::Fails,
-            format!("{computed}; {}", wrong.join("; ")),
-        ));
-    }
+    let failures = wrong.iter().filter(|w| !w.starts_with("warning")).count();
+    let Some(proof) = check_computed(&[failures == 0], &[Trusted::CubicFit]) else {
+        return Ok(Checked::fails(format!("{computed}; {}", wrong.join("; "))));
+    };
     let notes = if wrong.is_empty() {
         String::new()
     } else {
         format!(" ({})", wrong.join("; "))
     };
-    Ok(Checked::new(
-        Verdict::Proved,
+    Ok(Checked::proved(
+        proof,
         format!(
             "{computed}, exactly: the normal equations (11) solved by exact elimination agree with the closed form (13), \
              ∇δ² = (0, 0) there and the Gram matrix is non-singular (det {}), so this is the unique minimum{notes}: proof",
@@ -373,12 +388,9 @@ fn check_weight_type(ctx: &Ctx<'_>, claim: &WeightType) -> Result<Checked> {
         .weights
         .as_ref()
         .ok_or_else(|| Error::Parse(format!("claim {}: the curve {name} needs weights", ctx.id)))?;
-    let verdict = |kind: &str, detail: String| {
-        if kind == printed {
-            Checked::new(Verdict::Proved, format!("{detail} ⇒ {kind}: proof"))
-        } else {
-            Checked::new(Verdict::Fails, format!("{detail} ⇒ {kind}, not {printed}"))
-        }
+    let verdict = |kind: &str, detail: String| match check_computed(&[kind == printed], &[Trusted::ClassifyConic]) {
+        Some(proof) => Checked::proved(proof, format!("{detail} ⇒ {kind}: proof")),
+        None => Checked::fails(format!("{detail} ⇒ {kind}, not {printed}")),
     };
     if uses_sqrt(ctx.decls, &[]) {
         let pts = points::<QuadraticIrrational>(&spec.points)?;
@@ -431,8 +443,7 @@ fn check_enneper(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
     let found = surface.enneper_matches()?;
     let Some(m) = found.first() else {
         let power = surface.to_power()?;
-        return Ok(Checked::new(
-            Verdict::Fails,
+        return Ok(Checked::fails(
             format!(
                 "the power form of {name} (coefficients of s^k t^l, e.g. s³: {}, t³: {}) is not λ E(αs+β, γt+δ) for any α, β, γ, δ, λ, nor with s and t exchanged (the parameters are forced by a few coefficients, then every coefficient is compared exactly)",
                 power.get(3).and_then(|r| r.first()).map(|p| p.to_string()).unwrap_or_default(),
@@ -460,14 +471,15 @@ fn check_enneper(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
     let lhs = sub.expr(&format!("{name}(s, t)"))?;
     let rhs = sub.expr(&format!("({})*E({u}, {v})", m.lambda))?;
     let out = check_chain::<BigRational>(&sub, &[lhs, rhs], detail)?;
-    if out.verdict != Verdict::Proved {
-        return Ok(Checked::new(
-            Verdict::Fails,
-            format!("the library's match does not hold: {}", out.certificate),
-        ));
-    }
-    let mut res = Checked::new(
-        Verdict::Proved,
+    // The library's match only proposes the parameters; the proof is the identity's.
+    let Some(proof) = out.proof().cloned() else {
+        return Ok(Checked::fails(format!(
+            "the library's match does not hold: {}",
+            out.certificate
+        )));
+    };
+    let mut res = Checked::proved(
+        proof,
         format!(
             "power-form match: {name}(s, t) = {} · E({u}, {v}){}; verified independently: {}",
             m.lambda,
@@ -476,6 +488,5 @@ fn check_enneper(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
         ),
     );
     res.steps = out.steps;
-    res.method = out.method;
     Ok(res)
 }

@@ -6,8 +6,8 @@ use super::argue::{
     argument, cases, certificate_case, misprint_lines, sample_evaluations, verdict_text, worked_case, worked_scheme,
     worked_sum,
 };
-use super::checked::Checked;
 use super::claims::{Claim, ClaimFile};
+use super::kernel::checked::Checked;
 use std::fmt::Write as _;
 
 /// The first line of every fragment: what the document around it must load.
@@ -652,9 +652,9 @@ pub(super) fn explain(f: &ClaimFile, c: &Claim, checked: &Checked, range_bound: 
     let _ = writeln!(
         s,
         "Verdict: \\textbf{{{}}}\\\\",
-        text(&verdict_text(checked.verdict, checked.range.as_deref()))
+        text(&verdict_text(checked.verdict(), checked.range()))
     );
-    let label = if checked.verdict == super::checked::Verdict::Fails {
+    let label = if checked.verdict() == super::kernel::checked::Verdict::Fails {
         "Counterexample"
     } else {
         "Certificate"

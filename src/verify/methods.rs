@@ -5,6 +5,7 @@
 
 use super::eval::{Alg, Deg, Evaluator};
 use super::expr::Expr;
+use super::kernel::Trusted;
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::point::Point;
@@ -288,4 +289,21 @@ impl NetMethod {
         };
         Ok(d.times_control_point())
     }
+}
+
+/// The library operations on a polygon or net (`bsum`, `elev`, `isou`, …) that `exprs` call:
+/// a verdict over them accepts the library's values by name.
+pub fn operations_called(exprs: &[Expr]) -> Vec<Trusted> {
+    let mut out = Vec::new();
+    for e in exprs {
+        for name in e.called_names() {
+            let op = PolygonMethod::parse(&name)
+                .map(PolygonMethod::name)
+                .or_else(|| NetMethod::parse(&name).map(NetMethod::name));
+            if let Some(op) = op {
+                out.push(Trusted::Operation(op));
+            }
+        }
+    }
+    out
 }

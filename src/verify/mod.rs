@@ -28,15 +28,17 @@
 //! rhs = "4/3 B(1,3,t) + 4/3 B(2,3,t)"
 //! "#, std::path::Path::new("x.toml")).unwrap();
 //! let out = check_claim(&file.claim[0], false).unwrap();
-//! assert_eq!(out.verdict, Verdict::Proved);
+//! assert_eq!(out.verdict(), Verdict::Proved);
 //! assert!(out.certificate.contains("degree ≤ 3 in t"));
 //! ```
 
 // The modules, bottom up: each imports only modules named before it in this list (checked
 // by `tests/layers.rs`).
 //
+// - the trusted `kernel`: verdicts, methods, outcomes, and the one door to `proved` (it imports
+//   nothing of verify outside `kernel/`);
 // - the work `budget` a proof's searches share (it imports nothing of verify);
-// - the data: `expr` (expression trees), `checked` (verdicts, methods, outcomes), `claims`
+// - the data: `expr` (expression trees), `claims`
 //   (the claim file format);
 // - expressions: `alg` (the algebras evaluated in), `poly` (rational functions), `parse`,
 //   `rewrite` (definitions, substitution, `diff`), `eval` (the evaluator), `methods` (library
@@ -55,7 +57,6 @@ mod ansatz;
 mod argue;
 mod beta;
 mod budget;
-mod checked;
 pub mod claims;
 mod context;
 mod eval;
@@ -64,6 +65,7 @@ mod expr;
 mod hyper;
 mod identity;
 mod inequality;
+mod kernel;
 mod kinds;
 mod latex;
 mod lemma;
@@ -86,7 +88,8 @@ mod translate;
 use crate::error::{Error, Result};
 use std::path::PathBuf;
 
-pub use checked::{Checked, Evaluation, Method, Step, StepKind, Verdict};
+pub use kernel::checked::{Checked, Evaluation, Method, Step, StepKind, Verdict};
+pub use kernel::{Proof, Trusted};
 pub use kinds::check_claim;
 pub use report::{ClaimOutcome, ExplainStyle, Report, TextSummary};
 pub use scope::{range_bound, PROVABLE};
@@ -137,8 +140,8 @@ fn decide(jobs: &[Job<'_>], progress: &mut dyn FnMut(usize, usize, &str)) -> Vec
         let check = |&(index, ref cited): &(usize, Result<Vec<usize>>)| {
             let lemmas = cited.clone().and_then(|cited| lemmas_of(jobs, decided_so_far, &cited));
             // A claim that cannot be decided is reported as such; it never hides the others.
-            let checked = kinds::check_citing(jobs[index].1, &lemmas, false)
-                .unwrap_or_else(|e| Checked::new(Verdict::Error, e.to_string()));
+            let checked =
+                kinds::check_citing(jobs[index].1, &lemmas, false).unwrap_or_else(|e| Checked::error(e.to_string()));
             (index, checked)
         };
         if rayon::current_thread_index().is_some() {
@@ -241,7 +244,7 @@ fn lemmas_of(jobs: &[Job<'_>], decided: &[Option<Checked>], cited: &[usize]) -> 
         .iter()
         .map(|&k| {
             let claim = jobs[k].1;
-            match decided[k].as_ref().map(|c| c.verdict) {
+            match decided[k].as_ref().map(Checked::verdict) {
                 Some(Verdict::Proved) if claim.for_every() => lemma::Lemma::from_claim(claim),
                 Some(v) => Err(Error::Domain(format!(
                     "it cites {}, which is {} and not proved for every value (a lemma must be; a claim resting on a lemma proved in a range is at most proved in that range)",
@@ -255,13 +258,16 @@ fn lemmas_of(jobs: &[Job<'_>], decided: &[Option<Checked>], cited: &[usize]) -> 
 }
 
 fn outcome(f: &claims::ClaimFile, c: &claims::Claim, checked: Checked) -> ClaimOutcome {
-    let range_bound = scope::range_bound(c, checked.verdict);
+    let range_bound = scope::range_bound(c, checked.verdict());
+    let proof = checked.proof();
     ClaimOutcome {
         id: c.id.clone(),
         source: c.source.clone(),
         statement: c.statement.clone(),
-        verdict: checked.verdict,
-        range: checked.range,
+        verdict: checked.verdict(),
+        range: checked.range().map(str::to_string),
+        method: proof.map(kernel::Proof::method),
+        rests_on: proof.map(|p| p.rests_on().to_vec()),
         certificate: checked.certificate,
         expect: c.expected(),
         file: f.path.display().to_string(),
@@ -343,7 +349,7 @@ pub fn explain_files(files: &[claims::ClaimFile], id: &str, style: ExplainStyle)
     for f in files {
         if let Some(c) = f.claim.iter().find(|c| c.id == id) {
             let checked = explained(files, c).map_err(|e| in_claim(f, id, e))?;
-            let range_bound = scope::range_bound(c, checked.verdict);
+            let range_bound = scope::range_bound(c, checked.verdict());
             return Ok(report::explain_text(f, c, &checked, range_bound.as_deref(), style));
         }
     }

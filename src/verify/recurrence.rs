@@ -18,10 +18,10 @@
 //!
 //! A claim of another shape is not for this route (the caller keeps its own reason).
 
-use super::checked::Step;
 use super::eval::Alg;
 use super::expr::{Expr, Op};
 use super::hyper::{lin_neg, Aff, Lin, Term};
+use super::kernel::checked::{Method, Step};
 use super::pieces::Domain;
 use super::poly::RatFunc;
 use super::telescope::{self, Coefficients};
@@ -198,11 +198,14 @@ pub(crate) fn prove(tr: &mut Translator<'_>, lhs: &Expr, rhs: &Expr, d: &Domain)
         d,
         &format!("{what}: the telescoped ends and the other terms of the claim cancel"),
     )?;
-    tr.recurrences.push(format!(
-        "{what}: creative telescoping: {} = G({n}, {}) − G({n}, {a}) + the terms past {b}, R = {}",
-        rec.show("S", &n),
-        b.shifted(1),
-        rec.r
+    tr.recurrences.push((
+        Method::StatedRecurrence,
+        format!(
+            "{what}: creative telescoping: {} = G({n}, {}) − G({n}, {a}) + the terms past {b}, R = {}",
+            rec.show("S", &n),
+            b.shifted(1),
+            rec.r
+        ),
     ));
     Ok(Some(()))
 }

@@ -4,9 +4,10 @@ use super::argue::{
     argument, cases, certificate_case, misprint_lines, sample_evaluations, verdict_text, worked_case, worked_scheme,
     worked_sum,
 };
-use super::checked::Checked;
-use super::checked::Verdict;
 use super::claims::{Claim, ClaimFile, Identity, Kind, Sides};
+use super::kernel::checked::Verdict;
+use super::kernel::checked::{Checked, Method};
+use super::kernel::Trusted;
 use serde::Serialize;
 use std::borrow::Cow;
 use std::fmt::Write as _;
@@ -49,6 +50,12 @@ pub struct ClaimOutcome {
     /// (absent for every other verdict).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub range: Option<String>,
+    /// For a proof: the kind of argument it rests on.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub method: Option<Method>,
+    /// For a proof: the library computations it accepts by name (empty when none).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rests_on: Option<Vec<Trusted>>,
     /// What was checked: the proof's certificate or the exact counterexample.
     pub certificate: String,
     /// The verdict the claim file expects.
@@ -74,6 +81,19 @@ impl ClaimOutcome {
     /// `proved for n = 0..=10`, `verified`, `fails`.
     pub fn verdict_text(&self) -> String {
         verdict_text(self.verdict, self.range.as_deref())
+    }
+
+    /// For a proof, its method and the library computations it accepts, in one line:
+    /// `exact symbolic expansion`, `a library computation accepted by name; rests on
+    /// classify_conic`.
+    pub fn method_text(&self) -> Option<String> {
+        let method = self.method?;
+        let rests: Vec<&str> = self.rests_on.iter().flatten().map(|t| t.name()).collect();
+        Some(if rests.is_empty() {
+            method.text()
+        } else {
+            format!("{}; rests on {}", method.text(), rests.join(", "))
+        })
     }
 }
 
@@ -232,6 +252,9 @@ pub(super) fn to_text(r: &Report) -> String {
                 _ => "certificate",
             };
             let _ = writeln!(s, "    {label}: {}", printable(&o.certificate));
+            if let Some(m) = o.method_text() {
+                let _ = writeln!(s, "    method:      {m}");
+            }
             if let Some(r) = &o.range_bound {
                 let _ = writeln!(s, "    range-bound: {}", printable(r));
             }
@@ -371,7 +394,7 @@ fn header(s: &mut String, f: &ClaimFile, c: &Claim, checked: &Checked, range_bou
     let _ = writeln!(
         s,
         "\nverdict: {}{}",
-        verdict_text(checked.verdict, checked.range.as_deref()),
+        verdict_text(checked.verdict(), checked.range()),
         range_bound
             .map(|r| format!("; range-bound: {}", printable(r)))
             .unwrap_or_default()
@@ -379,7 +402,7 @@ fn header(s: &mut String, f: &ClaimFile, c: &Claim, checked: &Checked, range_bou
     let _ = writeln!(
         s,
         "{}: {}",
-        if checked.verdict == Verdict::Fails {
+        if checked.verdict() == Verdict::Fails {
             "counterexample"
         } else {
             "certificate"
@@ -458,6 +481,10 @@ mod tests {
     use super::*;
     use num_rational::BigRational;
 
+    // Verdicts as data (a report reads them; only the kernel's proofs make them).
+    const PROVED: Verdict = Verdict::SHOWN[0];
+    const IN_RANGE: Verdict = Verdict::SHOWN[1];
+
     fn outcome(id: &str, verdict: Verdict, range: Option<&str>, expect: Verdict) -> ClaimOutcome {
         ClaimOutcome {
             id: id.into(),
@@ -465,6 +492,8 @@ mod tests {
             statement: "s".into(),
             verdict,
             range: range.map(String::from),
+            method: None,
+            rests_on: None,
             certificate: "c".into(),
             expect,
             file: "f.toml".into(),
@@ -479,9 +508,9 @@ mod tests {
     fn every_report_shows_the_scope() {
         let r = Report {
             outcomes: vec![
-                outcome("a", Verdict::Proved, None, Verdict::Proved),
-                outcome("b", Verdict::ProvedInRange, Some("n = 0..=10"), Verdict::ProvedInRange),
-                outcome("c", Verdict::ProvedInRange, Some("n = 0..=3"), Verdict::Proved),
+                outcome("a", PROVED, None, PROVED),
+                outcome("b", IN_RANGE, Some("n = 0..=10"), IN_RANGE),
+                outcome("c", IN_RANGE, Some("n = 0..=3"), PROVED),
                 outcome("d", Verdict::Fails, None, Verdict::Fails),
             ],
         };
@@ -507,7 +536,7 @@ mod tests {
 
     #[test]
     fn the_worked_case_is_the_last_of_degree_3_with_fractions_first() {
-        use super::super::checked::{Evaluation, Step};
+        use super::super::kernel::checked::{Evaluation, Step};
         let q = |s: &str| s.parse::<BigRational>().unwrap();
         let eval = |n: i64, t: &str, unit: Option<usize>, value: &str| {
             let basis = unit

@@ -1,11 +1,11 @@
 //! The identity prover: degree bounds derived from the expressions, exact checks at enough
 //! points, on a basis of control polygons; the work of a claim estimated before it runs.
 
-use super::checked::Verdict;
-use super::checked::{Checked, Evaluation, Method, Step};
 use super::context::Ctx;
 use super::eval::{Deg, Evaluator, Value};
 use super::expr::{self, check_index, Expr};
+use super::kernel::checked::{Checked, Evaluation, Method, Step};
+use super::kernel::{check_sampled, Sampled};
 use super::objects::{DegEnv, Exact, NumEnv};
 use super::parse::parse;
 use crate::error::{Error, Result};
@@ -548,15 +548,17 @@ pub fn check_chain<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Res
     let mut evaluations = 0;
     let mut last: Option<PairProof> = None;
     let mut first_params: Vec<BigRational> = Vec::new();
+    // What each case and pair was evaluated at, for the kernel to check.
+    let mut sampled_cases: Vec<(Vec<u64>, Vec<Vec<BigRational>>, usize)> = Vec::new();
     let mut rational = false;
     let mut polygons = (usize::MAX, 0usize);
     // The explanation argues from the derived degrees when any pair has parameters.
     let (mut sampled, mut basis) = (false, false);
-    let method = |sampled: bool, basis: bool| {
+    let method = |sampled: bool, basis: bool, degree: u64| {
         if sampled {
-            Method::Sampling { basis }
+            Method::Sampling { basis, degree }
         } else {
-            Method::Direct
+            Method::Evaluation
         }
     };
     for inst in &instances {
@@ -569,8 +571,8 @@ pub fn check_chain<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Res
                     } else {
                         String::new()
                     };
-                    let mut c = Checked::new(Verdict::Fails, format!("{which}{cx}"));
-                    c.method = method(sampled, basis);
+                    let degree = max_need.values().copied().max().unwrap_or(0);
+                    let mut c = Checked::fails(format!("{which}{cx}")).found_by(method(sampled, basis, degree));
                     c.steps = steps;
                     c.steps.push(Step::text(format!("FAILS {which}{cx}")));
                     return Ok(c);
@@ -595,6 +597,7 @@ pub fn check_chain<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Res
                     if first_params.is_empty() {
                         first_params = p.points.first().cloned().unwrap_or_default();
                     }
+                    sampled_cases.push((p.degrees.iter().map(|d| d.1).collect(), p.points.clone(), p.polygons));
                     last = Some(p);
                 }
             }
@@ -640,8 +643,16 @@ pub fn check_chain<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Res
             instances.len()
         )
     };
-    let mut c = Checked::new(Verdict::Proved, cert);
-    c.method = method(sampled, basis);
+    let cases: Vec<Sampled<'_>> = sampled_cases
+        .iter()
+        .map(|(degrees, points, polygons)| Sampled {
+            degrees: degrees.clone(),
+            points,
+            polygons: *polygons,
+        })
+        .collect();
+    let proof = check_sampled(&cases).map_err(|e| Error::Domain(format!("the kernel refuses the evaluations: {e}")))?;
+    let mut c = Checked::proved(proof, cert);
     c.steps = steps;
     c.params = first_params;
     Ok(c)

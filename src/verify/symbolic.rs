@@ -29,13 +29,14 @@
 //! of each open range (the ordinary engine): a counterexample there is a `fails` verdict with
 //! exact values; a symbolic check that does not go through is an error, never a verdict.
 
-use super::checked::Verdict;
-use super::checked::{Checked, Method, Step};
 use super::claims::{Decls, Identity, IntRange};
 use super::context::Ctx;
 use super::expr::Expr;
 use super::hyper::{lin_mul, lin_neg, Aff, Lin, Term};
 use super::identity::check_identity;
+use super::kernel::check_for_every;
+use super::kernel::checked::Verdict;
+use super::kernel::checked::{Checked, Method, Step};
 use super::lemma::{self, Lemma, Obligation, Rewritten};
 use super::pieces::{Domain, ZeroOutcome};
 
@@ -187,14 +188,14 @@ pub fn nonneg_for_every(
     match out {
         ZeroOutcome::Zero(pieces) => {
             let open = scope(rs);
-            let mut out = Checked::new(
-                Verdict::Proved,
+            let proof = check_for_every(Method::Pieces, true).expect("pieces prove for every value");
+            let mut out = Checked::proved(
+                proof,
                 format!(
                     "for {}: the left side minus the right is a sum of hypergeometric terms; on each piece of the domain ({pieces} in all) every live term is a product of factors ≥ 0 on the interval (positive constants and factorials, powers with exponent ≥ 0 of polynomials with Bernstein coefficients ≥ 0)",
                     open
                 ),
             );
-            out.method = Method::ForEvery;
             if detail {
                 out.steps = log;
             }
@@ -236,10 +237,7 @@ fn refute_in_search(id: &str, decls: &Decls, identity: &Identity, reason: Error)
         }
         let closed = closed_after(decls, extra);
         match check_identity(id, &closed, &members, false) {
-            Ok(mut out) if out.verdict == Verdict::Fails => {
-                out.range = None;
-                return Ok(out);
-            }
+            Ok(out) if out.verdict() == Verdict::Fails => return Ok(out),
             Ok(_) => tried = extra + 1,
             Err(_) if tried == 0 => return Err(reason),
             Err(_) => {
@@ -272,25 +270,20 @@ fn refutation_windows(open: u32) -> Vec<i64> {
 fn prove_for_every(id: &str, decls: &Decls, identity: &Identity, lemmas: &[Lemma], detail: bool) -> Result<Checked> {
     let closed = closed_decls(decls);
     let evaluated = check_identity(id, &closed, &identity.sides.members(), false)?;
-    if evaluated.verdict == Verdict::Fails {
-        let mut out = evaluated;
-        out.range = None;
-        return Ok(out);
+    if evaluated.verdict() == Verdict::Fails {
+        return Ok(evaluated);
     }
-    let (cert, log) = prove_symbolic(id, decls, identity, &closed, lemmas)?;
-    let mut out = Checked::new(
-        Verdict::Proved,
+    let (cert, log, method) = prove_symbolic(id, decls, identity, &closed, lemmas)?;
+    let proof = check_for_every(method, true)
+        .ok_or_else(|| Error::Domain(format!("the kernel refuses a for-every proof by {method:?}")))?;
+    let mut out = Checked::proved(
+        proof,
         format!(
             "{cert}; also evaluated exactly for the first {} values of each open range ({})",
             CROSS_CHECK + 1,
-            evaluated.verdict.as_str()
+            evaluated.verdict().as_str()
         ),
     );
-    out.method = if identity.induction.is_some() {
-        Method::Induction
-    } else {
-        Method::ForEvery
-    };
     if detail {
         out.steps = log;
     }
@@ -302,21 +295,22 @@ fn prove_for_every(id: &str, decls: &Decls, identity: &Identity, lemmas: &[Lemma
 /// No verdict comes from here: the caller only reports the outcome.
 pub(crate) fn attempt_for_every(id: &str, decls: &Decls, identity: &Identity) -> Result<String> {
     let closed = closed_decls(decls);
-    prove_symbolic(id, decls, identity, &closed, &[]).map(|(cert, _)| cert)
+    prove_symbolic(id, decls, identity, &closed, &[]).map(|(cert, _, _)| cert)
 }
 
 /// The symbolic proof of `identity` over the open ranges of `decls`, parsed in the context of
 /// `closed` (the same declarations over finite ranges), the library objects read through
-/// `lemmas`: the certificate and the proof's log.
+/// `lemmas`: the certificate, the proof's log and its kind of argument.
 fn prove_symbolic(
     id: &str,
     decls: &Decls,
     identity: &Identity,
     closed: &Decls,
     lemmas: &[Lemma],
-) -> Result<(String, Vec<Step>)> {
+) -> Result<(String, Vec<Step>, Method)> {
     if let Some(var) = &identity.induction {
-        return induction::prove(id, decls, identity, var, lemmas);
+        let (cert, log) = induction::prove(id, decls, identity, var, lemmas)?;
+        return Ok((cert, log, Method::Induction));
     }
     let ctx = Ctx::new(id, closed, Vec::new())?;
     let sides = parsed_sides(&ctx, identity)?;
@@ -423,7 +417,7 @@ fn prove_sides(
     ctx: &Ctx<'_>,
     rewritten: Rewritten,
     certificates: &[String],
-) -> Result<(String, Vec<Step>)> {
+) -> Result<(String, Vec<Step>, Method)> {
     let rs = &decls.ranges;
     let sides = rewritten.sides;
     let (certs, sym, conts) = prepare(certificates, ctx, &sides)?;
@@ -443,12 +437,15 @@ fn prove_sides(
     // may be proved as its right side against it (the sum's closed form, a hint).
     let chain = !sides.iter().any(|s| matches!(s, Expr::Tuple(_)));
     let mut anchors: Vec<Option<Expr>> = vec![None; modes.len()];
+    // The kinds of argument the equalities took, for the proof's method.
+    let mut argued: Vec<Method> = Vec::new();
     for pair in &component_pairs(&sides)? {
         for (m, &unit) in modes.iter().enumerate() {
             tr.unit = unit;
             tr.next_cert = 0;
             tr.used.clear();
             tr.recurrences.clear();
+            tr.integrals = 0;
             let mut d = dom.clone();
             if let (true, Some((name, m, n))) = (unit, tr.net.clone()) {
                 let (i, j) = (Aff::var(UNIT), Aff::var(UNIT2));
@@ -482,11 +479,12 @@ fn prove_sides(
             if !has_sum(&pair[0]) {
                 anchors[m] = Some(pair[0].clone());
             }
-            let marks = (tr.log.len(), tr.used.len(), tr.next_cert);
+            let marks = (tr.log.len(), tr.used.len(), tr.next_cert, tr.integrals);
             let reset = |tr: &mut Translator<'_>| {
                 tr.log.truncate(marks.0);
                 tr.used.truncate(marks.1);
                 tr.next_cert = marks.2;
+                tr.integrals = marks.3;
             };
             // Sums on both sides: first the right side against the chain's anchor (every member
             // so far equals it), which gives its sums a closed form; then the direct route; then
@@ -513,8 +511,20 @@ fn prove_sides(
             if !has_sum(&pair[1]) {
                 anchors[m] = Some(pair[1].clone());
             }
+            argued.extend(tr.recurrences.iter().map(|r| r.0));
+            if !tr.used.is_empty() {
+                argued.push(Method::Wz);
+            }
+            if tr.integrals > 0 {
+                argued.push(Method::Beta);
+            }
         }
     }
+    // The deepest argument names the proof; rational identities on pieces alone otherwise.
+    let method = [Method::StatedRecurrence, Method::Telescoping, Method::Wz, Method::Beta]
+        .into_iter()
+        .find(|m| argued.contains(m))
+        .unwrap_or(Method::Pieces);
     let open = scope(rs);
     let mut cert = format!(
         "for {}: both sides are sums of hypergeometric terms; dividing by one term leaves rational identities in the integer symbols and {}, proved exactly on every piece of the domain (the pieces where a term vanishes or a boundary convention applies are split off and proved separately)",
@@ -531,7 +541,8 @@ fn prove_sides(
         cert.push_str(&format!("; WZ certificates: {}", tr.used.join("; ")));
     }
     if !tr.recurrences.is_empty() {
-        cert.push_str(&format!("; {}", tr.recurrences.join("; ")));
+        let texts: Vec<&str> = tr.recurrences.iter().map(|r| r.1.as_str()).collect();
+        cert.push_str(&format!("; {}", texts.join("; ")));
     }
     if !rewritten.definitions.is_empty() {
         cert.push_str(&format!(
@@ -545,5 +556,5 @@ fn prove_sides(
             rewritten.lemmas.join(", ")
         ));
     }
-    Ok((cert, tr.log))
+    Ok((cert, tr.log, method))
 }

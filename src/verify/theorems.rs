@@ -7,10 +7,10 @@
 //! `elev`, `left`, `deriv`, … (see [`super::methods::PolygonMethod`]). The others (affine
 //! invariance, the convex hull property, Theorem 1.2) have their own exact checks here.
 
-use super::checked::Verdict;
-use super::checked::{Checked, Method, Step};
 use super::claims::{Convergence, Decls, IntRange, PolygonSpec, Theorem};
 use super::context::Ctx;
+use super::kernel::checked::{Checked, Method, Step};
+use super::kernel::{check_all, check_computed, Trusted};
 use super::sampling::{chain_work, check_chain, MAX_WORK};
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
@@ -299,35 +299,39 @@ pub fn check_theorem(id: &str, theorem: &Theorem, detail: bool) -> Result<Checke
     }
     let mut certs = Vec::new();
     let mut steps = Vec::new();
-    let mut method = Method::Direct;
+    let mut method = Method::Evaluation;
+    let mut proofs = Vec::new();
+    let mut operations = Vec::new();
     for (p, decls) in &prepared {
         let sub = Ctx::new(id, decls, Vec::new())?;
         let sides = sub_sides(&sub, &p.chain)?;
         let out = check_chain::<Q>(&sub, &sides, detail)?;
-        method = method.join(out.method);
+        operations.extend(super::methods::operations_called(&sides));
+        if let Some(m) = out.method() {
+            method = method.join(m);
+        }
         if detail {
             steps.push(Step::text(format!("{}: {}", p.label, p.chain.join(" = "))));
             steps.extend(out.steps.iter().cloned().map(|s| s.nested(1)));
         }
-        if out.verdict == Verdict::Fails {
-            let mut f = Checked::new(
-                Verdict::Fails,
-                format!("{} ({}): {}", p.label, p.chain.join(" = "), out.certificate),
-            );
+        let Some(proof) = out.proof() else {
+            let mut f =
+                Checked::fails(format!("{} ({}): {}", p.label, p.chain.join(" = "), out.certificate)).found_by(method);
             f.steps = steps;
-            f.method = method;
             return Ok(f);
-        }
+        };
+        proofs.push(proof.clone());
         certs.push(format!("[{}] {}", p.label, out.certificate));
     }
-    if certs.is_empty() {
+    let Some(proof) = check_all(proofs) else {
         return Err(Error::Domain(format!(
             "claim {id}: the degree range {lo}..={hi} is empty for {name}"
         )));
-    }
-    let mut out = Checked::new(Verdict::Proved, certs.join("; "));
+    };
+    let mut out = operations
+        .into_iter()
+        .fold(Checked::proved(proof, certs.join("; ")), Checked::resting_on);
     out.steps = steps;
-    out.method = method;
     Ok(out)
 }
 
@@ -431,17 +435,16 @@ fn affine_invariance(lo: i64, hi: i64) -> Result<Checked> {
                     evaluations += 2;
                     let (l, r) = (moved.eval(t), map.apply(&p.eval(t))?);
                     if l != r {
-                        return Ok(Checked::new(
-                            Verdict::Fails,
-                            format!("counterexample at n = {n}, t = {t}, polygon {p}, map {map:?}: transform then eval = {l}, eval then map = {r}"),
+                        return Ok(Checked::fails(format!("counterexample at n = {n}, t = {t}, polygon {p}, map {map:?}: transform then eval = {l}, eval then map = {r}"),
                         ));
                     }
                 }
             }
         }
     }
-    Ok(Checked::new(
-        Verdict::Proved,
+    let proof = check_computed(&[], &[Trusted::Transform]).expect("no fact failed");
+    Ok(Checked::proved(
+        proof,
         format!(
             "for every n = {lo}..={hi}: both sides are bilinear in (A, control points) plus linear in c, degree ≤ n in t; \
              checked on the 4 matrix units × 2(n+1) unit polygons and the 2 translations, at t = k/n (n+1 points); \
@@ -466,13 +469,12 @@ fn convex_hull(lo: i64, hi: i64, detail: bool) -> Result<Checked> {
             let basis: Vec<Q> = crate::bernstein::bernstein_all(n, t);
             let sum = basis.iter().fold(Q::zero(), |a, b| a + b);
             if sum != Q::one() {
-                return Ok(Checked::new(Verdict::Fails, format!("Σ B_i^{n}({t}) = {sum} ≠ 1")));
+                return Ok(Checked::fails(format!("Σ B_i^{n}({t}) = {sum} ≠ 1")));
             }
             if basis.iter().any(|b| *b < Q::zero()) {
-                return Ok(Checked::new(
-                    Verdict::Fails,
-                    format!("a Bernstein polynomial of degree {n} is negative at t = {t}"),
-                ));
+                return Ok(Checked::fails(format!(
+                    "a Bernstein polynomial of degree {n} is negative at t = {t}"
+                )));
             }
         }
         // A sample curve of degree n in the plane (a zig-zag), its points at t = k/8 in the hull.
@@ -494,18 +496,16 @@ fn convex_hull(lo: i64, hi: i64, detail: bool) -> Result<Checked> {
                     }
                 }
                 None => {
-                    return Ok(Checked::new(
-                        Verdict::Fails,
-                        format!(
+                    return Ok(Checked::fails(format!(
                         "the point b({t}) = {p} of the curve {curve} is outside the convex hull of its control points"
-                    ),
-                    ))
+                    )))
                 }
             }
         }
     }
-    let mut out = Checked::new(
-        Verdict::Proved,
+    let proof = check_computed(&[], &[Trusted::BernsteinAll, Trusted::HullWeights]).expect("no fact failed");
+    let mut out = Checked::proved(
+        proof,
         format!(
             "for every n = {lo}..={hi}: B_i^n(t) = C(n,i) t^i (1−t)^(n−i) is a product of factors ≥ 0 on [0, 1], \
              and Σ_i B_i^n(t) = 1 (degree ≤ n, exact at t = k/n, n+1 points) ⇒ b(t) is a convex combination of the b_i: proof; \
@@ -560,25 +560,19 @@ pub fn check_convergence(ctx: &Ctx<'_>, c: &Convergence, detail: bool) -> Result
         let d = curve.elevation_distances(steps_max)?;
         for w in d.windows(2) {
             if w[1].max_norm > w[0].max_norm {
-                return Ok(Checked::new(
-                    Verdict::Fails,
-                    format!(
-                        "{name}: the distance grows from r = {} ({}) to r = {} ({})",
-                        w[0].r, w[0].max_norm, w[1].r, w[1].max_norm
-                    ),
-                ));
+                return Ok(Checked::fails(format!(
+                    "{name}: the distance grows from r = {} ({}) to r = {} ({})",
+                    w[0].r, w[0].max_norm, w[1].r, w[1].max_norm
+                )));
             }
         }
         for e in &d {
             let bound = elevation_bound(&curve, e.r)?;
             if e.max_norm > bound {
-                return Ok(Checked::new(
-                    Verdict::Fails,
-                    format!(
-                        "{name}: at r = {} the distance {} exceeds the bound {bound}",
-                        e.r, e.max_norm
-                    ),
-                ));
+                return Ok(Checked::fails(format!(
+                    "{name}: at r = {} the distance {} exceeds the bound {bound}",
+                    e.r, e.max_norm
+                )));
             }
             if detail {
                 lines.push(Step::text(format!(
@@ -597,15 +591,12 @@ pub fn check_convergence(ctx: &Ctx<'_>, c: &Convergence, detail: bool) -> Result
             last.r
         ));
     }
-    let mut out = Checked::new(
-        Verdict::Verified,
-        format!(
-            "bounded evidence, not a proof of the limit: for r = 0..={steps_max} the exact max-norm distances between the \
+    let mut out = Checked::verified(format!(
+        "bounded evidence, not a proof of the limit: for r = 0..={steps_max} the exact max-norm distances between the \
              r-times elevated polygon and the curve at i/(n+r) never increase and satisfy the O(1/r) bound \
              n(n−1)/(2(n+r))·max_j|Δ²b_j|_∞ (which tends to 0); {}",
-            summary.join("; ")
-        ),
-    );
+        summary.join("; ")
+    ));
     out.steps = lines;
     Ok(out)
 }

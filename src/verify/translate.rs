@@ -2,10 +2,10 @@
 //! (sums with symbolic bounds evaluated by their WZ certificates or by induction from a
 //! closed form), for the symbolic route of [`super::symbolic`].
 
-use super::checked::Step;
 use super::eval::Alg;
 use super::expr::{self, Expr, Op};
 use super::hyper::{lin_mul, lin_neg, lin_subst, power_of, Aff, Lin, Symbols, Term};
+use super::kernel::checked::{Method, Step};
 use super::pieces::{prove_zero, Domain, ZeroOutcome};
 use super::poly::RatFunc;
 use super::telescope::{self, cancel, Coefficients, SumShape};
@@ -44,8 +44,11 @@ pub struct Translator<'a> {
     pub log: Vec<Step>,
     /// The certificates used, for the one-line summary.
     pub used: Vec<String>,
-    /// The recurrences found by creative telescoping, for the one-line summary.
-    pub recurrences: Vec<String>,
+    /// The recurrences checked by creative telescoping (found, or stated by the claim), for the
+    /// one-line summary.
+    pub recurrences: Vec<(Method, String)>,
+    /// The Beta integrals evaluated.
+    pub(crate) integrals: usize,
 }
 
 impl<'a> Translator<'a> {
@@ -61,6 +64,7 @@ impl<'a> Translator<'a> {
             log: Vec::new(),
             used: Vec::new(),
             recurrences: Vec::new(),
+            integrals: 0,
         }
     }
 }
@@ -407,7 +411,9 @@ impl<'a> Translator<'a> {
                     )));
                 };
                 let integrand = self.lin(&args[0], d)?;
-                super::beta::integrate(self.sym, &integrand, t, d)
+                let value = super::beta::integrate(self.sym, &integrand, t, d)?;
+                self.integrals += 1;
+                Ok(value)
             }
             _ => Err(Error::Domain(format!(
                 "'{e}' is not supported for symbolic integers (only B, C, sums, powers, factorials, diff, integrals over [0, 1] and control points b[j])"
@@ -731,7 +737,7 @@ impl<'a> Translator<'a> {
                 return Err(e);
             }
         }
-        self.recurrences.push(text);
+        self.recurrences.push((Method::Telescoping, text));
         Ok(())
     }
 

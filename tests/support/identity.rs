@@ -8,23 +8,26 @@ use casteljau::verify::claims::parse_file;
 use casteljau::verify::Verdict;
 use std::path::Path;
 
-pub fn check(body: &str) -> casteljau::Result<(Verdict, String)> {
+/// The verdict, its range and the certificate of the one claim whose fields after `statement`
+/// are `body`; `detail` also records the proof's steps (as `--explain`).
+pub fn check_table(body: &str, detail: bool) -> casteljau::Result<(Verdict, Option<String>, String)> {
     let f = parse_file(
-        &format!("[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\n{body}"),
+        &format!("[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\n{body}"),
         Path::new("test.toml"),
     )?;
-    let out = check_claim(&f.claim[0], false)?;
-    Ok((out.verdict, out.certificate))
+    let out = check_claim(&f.claim[0], detail)?;
+    Ok((out.verdict(), out.range().map(str::to_string), out.certificate))
 }
 
-/// The verdict, its range and the certificate, with the proof's steps recorded (as `--explain`).
+/// The verdict and the certificate of an `identity` claim.
+pub fn check(body: &str) -> casteljau::Result<(Verdict, String)> {
+    check_table(&format!("kind = \"identity\"\n{body}"), false).map(|(v, _, c)| (v, c))
+}
+
+/// The verdict, its range and the certificate of an `identity` claim, with the proof's steps
+/// recorded (as `--explain`).
 pub fn check_scoped(body: &str) -> casteljau::Result<(Verdict, Option<String>, String)> {
-    let f = parse_file(
-        &format!("[[claim]]\nid = \"x\"\nsource = \"s\"\nstatement = \"s\"\nkind = \"identity\"\n{body}"),
-        Path::new("test.toml"),
-    )?;
-    let out = check_claim(&f.claim[0], true)?;
-    Ok((out.verdict, out.range, out.certificate))
+    check_table(&format!("kind = \"identity\"\n{body}"), true)
 }
 
 /// The certificate of a claim `proved` for every n; a panic naming what came instead.

@@ -14,10 +14,10 @@
 //! Both are proved by the symbolic route ([`super::prove_sides`]), the claim's other lemmas
 //! (`uses`) available to both.
 
-use super::super::checked::Step;
 use super::super::claims::{Decls, Identity, IntRange};
 use super::super::context::Ctx;
 use super::super::expr::Expr;
+use super::super::kernel::checked::Step;
 use super::super::lemma::{self, Lemma, Rewritten, Unfold};
 use super::super::parse::parse;
 use super::super::rewrite::substitute;
@@ -145,5 +145,6 @@ fn prove_part(
     rewritten.definitions = definitions;
     let closed = decls.closed_after(1);
     let ctx = Ctx::new(id, &closed, Vec::new())?;
-    prove_sides(decls, &ctx, rewritten, certificates)
+    // The base and the step are parts of the induction, whatever argument each took.
+    prove_sides(decls, &ctx, rewritten, certificates).map(|(cert, log, _)| (cert, log))
 }

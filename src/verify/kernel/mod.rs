@@ -1,0 +1,287 @@
+//! The trusted core: what a verdict is, and the one door through which a `proved` passes.
+//!
+//! A [`Proof`] has private fields and is made only by the `check_*` functions of this module;
+//! [`Proof::verdict`] is the only expression of the crate that yields [`Verdict::Proved`] or
+//! [`Verdict::ProvedInRange`], and a [`Checked`] is `proved` only by holding a `Proof`. Every
+//! proof names its kind of argument ([`Method`]) and the library computations it accepts by
+//! name ([`Trusted`], as Lean's `#print axioms` names compiled code it trusts).
+//!
+//! What the entries check themselves, and what they still take from their callers, is listed
+//! in `docs/trust.md`: the sampling entry checks that every parameter was evaluated at more
+//! distinct points than its degree bound and the Bernstein entry that no coefficient is
+//! negative; the evaluations, expansions and for-every obligations themselves still run in the
+//! provers outside this folder, which pass their outcome in.
+//!
+//! This module imports nothing of `verify` outside `kernel/` (checked by `tests/layers.rs`).
+
+pub mod checked;
+
+use checked::{Method, Verdict};
+use num_rational::BigRational;
+use serde::Serialize;
+use std::collections::BTreeSet;
+
+/// A library computation whose result a verdict accepts without re-deriving it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Trusted {
+    /// `conic::classify_conic`: the type of a rational quadratic's conic from its weights.
+    ClassifyConic,
+    /// `ImplicitConic::kind`: the type of an implicit conic from its six coefficients.
+    ConicKind,
+    /// `BezierCurve::from_power_on`: the Bézier points of a power form on an interval.
+    FromPowerOn,
+    /// `fit::fit_cubic`, `fit_cubic_closed_form`, `delta_squared`, `delta_squared_gradient`.
+    CubicFit,
+    /// `BezierCurve::transform` and `eval`, run over a theorem's degree range.
+    Transform,
+    /// `bernstein::bernstein_all`, run over a theorem's degree range.
+    BernsteinAll,
+    /// `BezierCurve::hull_weights`, the exact convex-hull test.
+    HullWeights,
+    /// A library operation on a polygon or net called in the claim's expressions, by its name
+    /// there (`bsum`, `elev`, `isou`, …).
+    Operation(&'static str),
+}
+
+impl Trusted {
+    /// The library function's name, as reports show it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Trusted::ClassifyConic => "classify_conic",
+            Trusted::ConicKind => "ImplicitConic::kind",
+            Trusted::FromPowerOn => "BezierCurve::from_power_on",
+            Trusted::CubicFit => "fit_cubic",
+            Trusted::Transform => "BezierCurve::transform",
+            Trusted::BernsteinAll => "bernstein_all",
+            Trusted::HullWeights => "BezierCurve::hull_weights",
+            Trusted::Operation(name) => name,
+        }
+    }
+}
+
+impl Serialize for Trusted {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.name())
+    }
+}
+
+/// What a proof covers.
+#[derive(Clone, Debug, PartialEq, Eq)]
+enum Scope {
+    /// Every value of every variable.
+    Every,
+    /// Every case of these finite ranges.
+    InRange(String),
+}
+
+/// A proof: made only by this module's `check_*` functions.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Proof {
+    scope: Scope,
+    method: Method,
+    rests_on: Vec<Trusted>,
+}
+
+impl Proof {
+    fn new(method: Method, rests_on: &[Trusted]) -> Proof {
+        let rests_on: BTreeSet<Trusted> = rests_on.iter().copied().collect();
+        Proof {
+            scope: Scope::Every,
+            method,
+            rests_on: rests_on.into_iter().collect(),
+        }
+    }
+
+    /// The verdict this proof earns: the only way to a `proved` or `proved_in_range`.
+    pub fn verdict(&self) -> Verdict {
+        match self.scope {
+            Scope::Every => Verdict::Proved,
+            Scope::InRange(_) => Verdict::ProvedInRange,
+        }
+    }
+
+    /// The kind of argument.
+    pub fn method(&self) -> Method {
+        self.method
+    }
+
+    /// The library computations the proof accepts by name (empty when it accepts none).
+    pub fn rests_on(&self) -> &[Trusted] {
+        &self.rests_on
+    }
+
+    /// The finite ranges a `proved_in_range` covers.
+    pub fn range(&self) -> Option<&str> {
+        match &self.scope {
+            Scope::Every => None,
+            Scope::InRange(r) => Some(r),
+        }
+    }
+
+    /// The same proof read as covering only the cases of `range` (a weakening: a claim
+    /// checked case by case over finite ranges is proved in them, never for every value).
+    pub fn in_range(mut self, range: String) -> Proof {
+        self.scope = Scope::InRange(range);
+        self
+    }
+
+    /// The same proof, also accepting `trusted` (a weakening).
+    pub fn resting_on(mut self, trusted: Trusted) -> Proof {
+        if !self.rests_on.contains(&trusted) {
+            self.rests_on.push(trusted);
+            self.rests_on.sort();
+        }
+        self
+    }
+}
+
+/// One equality at one case, checked by exact evaluation: the degree bound `d` derived for each
+/// parameter and the distinct values it was evaluated at, on `polygons` basis polygons.
+pub struct Sampled<'a> {
+    /// The degree bound of each parameter, in the order of `points`.
+    pub degrees: Vec<u64>,
+    /// The values each parameter was evaluated at (both sides found equal at every point of
+    /// their grid).
+    pub points: &'a [Vec<BigRational>],
+    /// How many basis polygons the grid was evaluated on (1: none).
+    pub polygons: usize,
+}
+
+/// A proof from exact evaluation: each parameter of each case must have been evaluated at
+/// d + 1 distinct values or more, d its degree bound (a nonzero polynomial of degree ≤ d has
+/// at most d roots). Parameter-free cases are exact evaluations of both sides.
+pub fn check_sampled(cases: &[Sampled<'_>]) -> Result<Proof, String> {
+    if cases.is_empty() {
+        return Err("no case was evaluated".into());
+    }
+    let (mut degree, mut basis, mut sampled) = (0, false, false);
+    for case in cases {
+        if case.degrees.len() != case.points.len() {
+            return Err(format!(
+                "{} degree bounds for {} parameters",
+                case.degrees.len(),
+                case.points.len()
+            ));
+        }
+        for (d, values) in case.degrees.iter().zip(case.points) {
+            let distinct: BTreeSet<&BigRational> = values.iter().collect();
+            if (distinct.len() as u64) <= *d {
+                return Err(format!(
+                    "a parameter of degree ≤ {d} evaluated at only {} distinct values",
+                    distinct.len()
+                ));
+            }
+            degree = degree.max(*d);
+            sampled = true;
+        }
+        basis |= case.polygons > 1;
+    }
+    let method = if sampled {
+        Method::Sampling { basis, degree }
+    } else {
+        Method::Evaluation
+    };
+    Ok(Proof::new(method, &[]))
+}
+
+/// A proof by exact symbolic expansion: the cleared difference of both sides expanded to the
+/// zero rational function (`expanded_to_zero`, computed by `verify::expansion`).
+pub fn check_expanded(expanded_to_zero: bool) -> Option<Proof> {
+    expanded_to_zero.then(|| Proof::new(Method::Expansion, &[]))
+}
+
+/// A proof accepting library computations by name: every fact the computation reported
+/// (e.g. its classification equal to the printed one) must hold.
+pub fn check_computed(facts: &[bool], rests_on: &[Trusted]) -> Option<Proof> {
+    facts
+        .iter()
+        .all(|&f| f)
+        .then(|| Proof::new(Method::Computation, rests_on))
+}
+
+/// A proof that `lhs − rhs ≥ 0` (or `> 0`) on an interval from the least Bernstein coefficient
+/// of its numerator on each subinterval: none may be negative.
+pub fn check_bernstein<'a>(least: impl IntoIterator<Item = &'a BigRational>) -> Option<Proof> {
+    let zero = BigRational::from_integer(0.into());
+    least
+        .into_iter()
+        .all(|l| *l >= zero)
+        .then(|| Proof::new(Method::Bernstein, &[]))
+}
+
+/// A proof for every value of the open ranges by `method` (one of the for-every arguments:
+/// pieces, WZ, telescoping, a stated recurrence, induction, Beta integrals), whose obligations
+/// `verify::symbolic` discharged (`discharged`).
+pub fn check_for_every(method: Method, discharged: bool) -> Option<Proof> {
+    (discharged && method.is_for_every()).then(|| Proof::new(method, &[]))
+}
+
+/// The proof of several parts together: every part proved (`None` without parts).
+pub fn check_all(parts: Vec<Proof>) -> Option<Proof> {
+    let mut parts = parts.into_iter();
+    let first = parts.next()?;
+    Some(parts.fold(first, |acc, p| {
+        let mut out = Proof::new(acc.method.join(p.method), &acc.rests_on);
+        for t in p.rests_on {
+            out = out.resting_on(t);
+        }
+        out.scope = match (acc.scope, p.scope) {
+            (Scope::Every, Scope::Every) => Scope::Every,
+            (Scope::InRange(r), _) | (_, Scope::InRange(r)) => Scope::InRange(r),
+        };
+        out
+    }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(n: i64) -> BigRational {
+        BigRational::from_integer(n.into())
+    }
+
+    #[test]
+    fn sampling_needs_more_distinct_points_than_the_degree() {
+        let three = [vec![q(0), q(1), q(2)]];
+        let repeated = [vec![q(0), q(1), q(1)]];
+        let case = |points| Sampled {
+            degrees: vec![2],
+            points,
+            polygons: 1,
+        };
+        let p = check_sampled(&[case(&three)]).unwrap();
+        assert_eq!(p.verdict(), Verdict::Proved);
+        assert_eq!(
+            p.method(),
+            Method::Sampling {
+                basis: false,
+                degree: 2
+            }
+        );
+        assert!(check_sampled(&[case(&repeated)]).is_err());
+        assert!(check_sampled(&[]).is_err());
+        let none: [Vec<BigRational>; 0] = [];
+        let e = Sampled {
+            degrees: Vec::new(),
+            points: &none,
+            polygons: 1,
+        };
+        assert_eq!(check_sampled(&[e]).unwrap().method(), Method::Evaluation);
+    }
+
+    #[test]
+    fn the_other_entries_refuse_what_does_not_hold() {
+        assert!(check_expanded(false).is_none());
+        assert!(check_computed(&[true, false], &[Trusted::CubicFit]).is_none());
+        assert!(check_bernstein(&[q(1), q(-1)]).is_none());
+        assert!(check_for_every(Method::Computation, true).is_none());
+        assert!(check_for_every(Method::Wz, false).is_none());
+        assert!(check_all(Vec::new()).is_none());
+        let p = check_computed(&[true], &[Trusted::ClassifyConic, Trusted::ClassifyConic]).unwrap();
+        assert_eq!(p.rests_on(), &[Trusted::ClassifyConic]);
+        let r = p.in_range("n = 0..=3".into());
+        assert_eq!(r.verdict(), Verdict::ProvedInRange);
+        assert_eq!(r.range(), Some("n = 0..=3"));
+    }
+}
