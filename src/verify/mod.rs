@@ -56,6 +56,7 @@ mod argue;
 mod beta;
 mod budget;
 mod checked;
+mod claim_syntax;
 pub mod claims;
 mod context;
 mod eval;
@@ -347,7 +348,14 @@ pub fn explain_files(files: &[claims::ClaimFile], id: &str, style: ExplainStyle)
             return Ok(report::explain_text(f, c, &checked, range_bound.as_deref(), style));
         }
     }
-    Err(Error::Domain(format!(
-        "no claim with id '{id}' in the given claim files"
-    )))
+    let ids = files.iter().flat_map(|f| f.claim.iter().map(|c| c.id.as_str()));
+    let near = names::nearest(id, ids);
+    Err(Error::Domain(if near.is_empty() {
+        format!("no claim with id '{id}' in the given claim files")
+    } else {
+        format!(
+            "no claim with id '{id}' in the given claim files (did you mean {}?)",
+            near.join(", ")
+        )
+    }))
 }

@@ -77,6 +77,16 @@ impl Report {
         to_text(self)
     }
 
+    /// Each claim's block alone, without the texts' headers and the summary (the one-line
+    /// `prove --identity` check, whose claim has no file to compare with).
+    pub fn claims_text(&self) -> String {
+        let mut s = String::new();
+        for o in &self.outcomes {
+            outcome_text(&mut s, o, "");
+        }
+        s
+    }
+
     /// The JSON report `{"claims": [...], "summary": {...}}` with a summary per text.
     pub fn to_json(&self) -> serde_json::Value {
         to_json(self)
@@ -173,6 +183,28 @@ fn total(sums: &[TextSummary]) -> TextSummary {
     t
 }
 
+/// One claim's block of the report: verdict, source, statement, notes, certificate.
+fn outcome_text(s: &mut String, o: &ClaimOutcome, flag: &str) {
+    let _ = writeln!(s, "[{}] {}{flag}", o.verdict_text(), o.id);
+    let _ = writeln!(s, "    source:      {}", o.source);
+    let _ = writeln!(s, "    statement:   {}", o.statement);
+    if let Some(c) = &o.corrects {
+        let _ = writeln!(s, "    corrects:    {c}");
+    }
+    if let Some(n) = &o.note {
+        let _ = writeln!(s, "    note:        {n}");
+    }
+    let label = match o.verdict {
+        Verdict::Fails => "counterexample",
+        Verdict::Error => "error",
+        _ => "certificate",
+    };
+    let _ = writeln!(s, "    {label}: {}", o.certificate);
+    if let Some(r) = &o.range_bound {
+        let _ = writeln!(s, "    range-bound: {r}");
+    }
+}
+
 pub(super) fn to_text(r: &Report) -> String {
     let mut s = String::new();
     let sums = summaries(&r.outcomes);
@@ -193,24 +225,7 @@ pub(super) fn to_text(r: &Report) -> String {
             } else {
                 format!("  !! MISMATCH: expected {}", o.expect.as_str())
             };
-            let _ = writeln!(s, "[{}] {}{flag}", o.verdict_text(), o.id);
-            let _ = writeln!(s, "    source:      {}", o.source);
-            let _ = writeln!(s, "    statement:   {}", o.statement);
-            if let Some(c) = &o.corrects {
-                let _ = writeln!(s, "    corrects:    {c}");
-            }
-            if let Some(n) = &o.note {
-                let _ = writeln!(s, "    note:        {n}");
-            }
-            let label = match o.verdict {
-                Verdict::Fails => "counterexample",
-                Verdict::Error => "error",
-                _ => "certificate",
-            };
-            let _ = writeln!(s, "    {label}: {}", o.certificate);
-            if let Some(r) = &o.range_bound {
-                let _ = writeln!(s, "    range-bound: {r}");
-            }
+            outcome_text(&mut s, o, &flag);
         }
         let _ = writeln!(s, "--- {}: {}\n", sum.text, counts(sum));
     }
@@ -316,7 +331,7 @@ pub enum ExplainStyle {
 /// The claim and its verdict; the range-bound note shares the verdict's line (the short
 /// explanation fits one screen).
 fn header(s: &mut String, f: &ClaimFile, c: &Claim, checked: &Checked, range_bound: Option<&str>) {
-    let _ = writeln!(s, "claim {} ({})", c.id, f.path.display());
+    let _ = writeln!(s, "claim {} ({})", c.id, f.origin());
     let _ = writeln!(s, "source:    {}", c.source);
     let _ = writeln!(s, "statement: {}", c.statement);
     let _ = writeln!(s, "kind:      {}", c.kind.name());
