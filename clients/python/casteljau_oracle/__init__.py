@@ -238,3 +238,4 @@ def _judgement(a):
     if "condition" in a:
         out["condition"] = [_float(c) for c in a["condition"]]
     return out
+from .prove import prove_identity  # noqa: E402,F401  (after OracleError and find_binary, which it uses)
