@@ -22,7 +22,7 @@ def prove_identity(identity, for_=(), vars=None, binary=None, timeout=None):
     `vars`: the continuous parameters, e.g. `["t", "u"]` (default: the free one-letter names).
 
     Returns a dict: `verdict` ("proved", "proved_in_range" or "fails"), `scope` ("every
-    value" or the ranges proved, e.g. "n = 0..=10"), `certificate` (what was established;
+    value" or the ranges proved, e.g. "n = 0..=10"; None when it fails), `certificate` (what was established;
     None when it fails), `counterexample` (the exact point where the sides differ, or None)
     and `range_bound` (why a finite range stays range-bound, or None). An identity that
     cannot be decided, or bad input, raises `OracleError` with the binary's message.
@@ -50,7 +50,7 @@ def prove_identity(identity, for_=(), vars=None, binary=None, timeout=None):
     fails = verdict == "fails"
     return {
         "verdict": verdict,
-        "scope": claim.get("range") or "every value",
+        "scope": None if fails else claim.get("range") or "every value",
         "certificate": None if fails else claim["certificate"],
         "counterexample": claim["certificate"] if fails else None,
         "range_bound": claim.get("range_bound"),

@@ -26,7 +26,7 @@ def test_a_false_identity_gives_its_counterexample(binary):
     r = prove_identity("sum(k, 0, n, C(n, k)) = 3^n", for_="n = 0..", binary=binary)
     assert r["verdict"] == "fails"
     assert r["counterexample"] == "at n = 1: left side = 2, right side = 3"
-    assert r["certificate"] is None
+    assert r["certificate"] is None and r["scope"] is None
 
 
 def test_a_finite_range_and_parameters(binary):
