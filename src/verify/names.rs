@@ -134,7 +134,7 @@ fn edit_distance(a: &str, b: &str) -> usize {
 }
 
 #[cfg(test)]
-mod tests {
+mod nearest_tests {
     use super::{edit_distance, nearest};
 
     #[test]
