@@ -71,6 +71,7 @@ mod lemma;
 mod methods;
 mod names;
 mod objects;
+mod one_line;
 mod parse;
 mod pieces;
 mod poly;
