@@ -3,12 +3,12 @@
 //!
 //! `cargo run --example prove_identity`
 
-use casteljau::verify::{claims, prove_files, Verdict};
+use casteljau::verify::{identity_file, prove_files, Verdict};
 
 /// The verdict and its certificate (or counterexample) for `lhs = rhs` over `ranges`.
 fn check(identity: &str, ranges: &[&str]) -> (Verdict, String) {
     let ranges: Vec<String> = ranges.iter().map(|r| r.to_string()).collect();
-    let file = claims::identity_file(identity, &ranges, None).expect("a well-formed identity");
+    let file = identity_file(identity, &ranges, None).expect("a well-formed identity");
     let report = prove_files(&[file], &mut |_, _, _| {}).expect("decided");
     let outcome = &report.outcomes[0];
     (outcome.verdict, outcome.certificate.clone())

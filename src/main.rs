@@ -7,7 +7,7 @@
 use casteljau::figure::FigureRequest;
 use casteljau::float::nearest_f64;
 use casteljau::oracle::{self, check_weight_count, Answer, FloatMethod, Op};
-use casteljau::verify::{claims, explain_files, prove_files, ExplainStyle, Verdict};
+use casteljau::verify::{claims, explain_files, identity_file, prove_files, ExplainStyle, Verdict};
 use casteljau::CubicFitData;
 use casteljau::{parse_count, parse_net, parse_number, parse_numbers, parse_point, parse_points};
 use casteljau::{BezierCurve, BezierSurface, BigRational, Error, Point, RationalBezierCurve};
@@ -577,7 +577,7 @@ fn prove(
     let files = match &identity {
         Some((lhs_rhs, ranges, vars)) => {
             let vars: Option<Vec<String>> = vars.as_ref().map(|v| v.iter().map(|s| s.trim().to_string()).collect());
-            vec![claims::identity_file(lhs_rhs, ranges, vars.as_deref()).map_err(|e| e.to_string())?]
+            vec![identity_file(lhs_rhs, ranges, vars.as_deref()).map_err(|e| e.to_string())?]
         }
         None => claim_files(paths)?,
     };

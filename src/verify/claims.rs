@@ -7,7 +7,6 @@
 
 use super::checked::Verdict;
 use super::claim_syntax::{field_line, read, FieldError};
-pub use super::one_line::identity_file;
 use crate::error::{Error, Result};
 use serde::Deserialize;
 use std::collections::BTreeMap;

@@ -36,8 +36,9 @@
 // by `tests/layers.rs`).
 //
 // - the work `budget` a proof's searches share (it imports nothing of verify);
-// - the data: `expr` (expression trees), `checked` (verdicts, methods, outcomes), `claims`
-//   (the claim file format);
+// - the data: `expr` (expression trees), `checked` (verdicts, methods, outcomes),
+//   `claim_syntax` (each field's expected form, for errors), `claims` (the claim file
+//   format), `one_line` (the claim of `prove --identity`);
 // - expressions: `alg` (the algebras evaluated in), `poly` (rational functions), `parse`,
 //   `rewrite` (definitions, substitution, `diff`), `eval` (the evaluator), `methods` (library
 //   operations callable in expressions);
@@ -90,6 +91,7 @@ use std::path::PathBuf;
 
 pub use checked::{Checked, Evaluation, Method, Step, StepKind, Verdict};
 pub use kinds::check_claim;
+pub use one_line::identity_file;
 pub use report::{ClaimOutcome, ExplainStyle, Report, TextSummary};
 pub use scope::{range_bound, PROVABLE};
 pub use theorems::elevation_bound;

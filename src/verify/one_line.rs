@@ -9,7 +9,7 @@ use std::path::PathBuf;
 /// its `for` ranges and `vars`, read exactly as the same fields of a claim file (id `identity`).
 ///
 /// ```
-/// use casteljau::verify::{claims::identity_file, prove_files, Verdict};
+/// use casteljau::verify::{identity_file, prove_files, Verdict};
 /// let file = identity_file("sum(k, 0, n, C(n, k)) = 2^n", &["n = 0..".to_string()], None).unwrap();
 /// let report = prove_files(&[file], &mut |_, _, _| {}).unwrap();
 /// assert_eq!(report.outcomes[0].verdict, Verdict::Proved);
