@@ -7,7 +7,7 @@
 use casteljau::figure::FigureRequest;
 use casteljau::float::nearest_f64;
 use casteljau::oracle::{self, check_weight_count, Answer, FloatMethod, Op};
-use casteljau::verify::{claims, explain_files, prove_files, ExplainStyle, Verdict};
+use casteljau::verify::{claims, explain_files, identity_file, prove_files, ExplainStyle, Verdict};
 use casteljau::CubicFitData;
 use casteljau::{parse_count, parse_net, parse_number, parse_numbers, parse_point, parse_points};
 use casteljau::{BezierCurve, BezierSurface, BigRational, Error, Point, RationalBezierCurve};
@@ -60,9 +60,18 @@ enum Command {
     Prove {
         /// Claim files or directories (default: proofs/ when present, else the four texts' claims built into the program).
         paths: Vec<PathBuf>,
-        /// Print the proof of one claim instead: the argument and one worked case.
-        #[arg(long, value_name = "ID")]
+        /// Print the proof of one claim instead: the argument and one worked case (with --identity, no ID).
+        #[arg(long, value_name = "ID", num_args = 0..=1, default_missing_value = "")]
         explain: Option<String>,
+        /// Check one identity instead of claim files: "lhs = rhs", read as a claim file's lhs and rhs.
+        #[arg(long, value_name = "LHS = RHS", conflicts_with_all = ["paths", "html"], allow_hyphen_values = true)]
+        identity: Option<String>,
+        /// With --identity: an integer range, "n = 0..=10" or "n = 0.." (every n); repeatable.
+        #[arg(long = "for", value_name = "RANGE", requires = "identity")]
+        ranges: Vec<String>,
+        /// With --identity: the continuous parameters, e.g. "t,u" (default: the free one-letter names).
+        #[arg(long, value_name = "NAMES", requires = "identity", value_delimiter = ',')]
+        vars: Option<Vec<String>>,
         /// With --explain: also the full log of every checked case (text and JSON only).
         #[arg(long, requires = "explain")]
         verbose: bool,
@@ -257,11 +266,15 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
         Command::Prove {
             paths,
             explain: id,
+            identity,
+            ranges,
+            vars,
             verbose,
             html,
             force,
         } => prove(
             &paths,
+            identity.map(|i| (i, ranges, vars)),
             id.as_deref(),
             verbose,
             html.as_deref().map(|d| (d, force)),
@@ -549,15 +562,30 @@ fn prepare_report_dir(dir: &Path, force: bool) -> Result<(), String> {
     std::fs::create_dir_all(dir).map_err(|err| format!("--html: cannot create {}: {err}", dir.display()))
 }
 
+/// The `--identity` check: the identity, its `--for` ranges and its `--vars`.
+type OneLine = (String, Vec<String>, Option<Vec<String>>);
+
 fn prove(
     paths: &[PathBuf],
+    identity: Option<OneLine>,
     id: Option<&str>,
     verbose: bool,
     html: Option<(&Path, bool)>,
     format: Format,
 ) -> Result<ExitCode, String> {
     check_claim_paths(paths)?;
-    let files = claim_files(paths)?;
+    let files = match &identity {
+        Some((lhs_rhs, ranges, vars)) => {
+            let vars: Option<Vec<String>> = vars.as_ref().map(|v| v.iter().map(|s| s.trim().to_string()).collect());
+            vec![identity_file(lhs_rhs, ranges, vars.as_deref()).map_err(|e| e.to_string())?]
+        }
+        None => claim_files(paths)?,
+    };
+    let id = match id {
+        Some("") if identity.is_some() => Some("identity"),
+        Some("") => return Err("--explain needs a claim id (only --identity has one claim)".into()),
+        other => other,
+    };
     if let Some(id) = id {
         let style = match (format, verbose) {
             (Format::Latex, true) => {
@@ -602,6 +630,7 @@ fn prove(
         );
     }
     match format {
+        Format::Text if identity.is_some() => output(&report.claims_text())?,
         Format::Text => output(&report.to_text())?,
         Format::Json => output(&format!("{}\n", report.to_json()))?,
         Format::Latex => return Err(LATEX_ONLY.into()),

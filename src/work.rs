@@ -140,7 +140,7 @@ const TRIANGLE_WEIGHT: f64 = 16.0;
 
 /// Relative cost of numbers grown by a dyadic parameter (powers of two in the
 /// denominators reduce by shifts, but the numerators still grow).
-/// Calibrated by `examples/work_calibration.rs`: `split` of 64-D floats of degree 53 at
+/// Calibrated by `scripts/work_calibration.rs`: `split` of 64-D floats of degree 53 at
 /// `t = 0.1` took 6.8 s at weight 3, so the weight is 6.
 const DYADIC_WEIGHT: f64 = 6.0;
 
@@ -245,7 +245,7 @@ pub(crate) fn elevate_work(curve: &BezierCurve<BigRational>, by: usize) -> f64 {
     // every output point combines up to n + 1 inputs with weights C(n,j)C(r,i−j)/C(n+r,i)
     // of about 2·total bits; each term is a multiplication and an addition, of an input
     // number by a weight: linear in the weight's size (calibrated by
-    // `examples/work_calibration.rs`: a cubic elevated by 1717 takes 0.04 s)
+    // `scripts/work_calibration.rs`: a cubic elevated by 1717 takes 0.04 s)
     let terms = (total + 1) as f64 * (n.min(by) + 1) as f64 * curve.dim() as f64;
     let mixed = (n.min(by) + 1) as f64 * curve_den_growth(curve);
     // in lowest terms a weight has at most about 2·total bits, and at most
@@ -315,7 +315,7 @@ pub(crate) fn fit_cubic_work(data: &CubicFitData<BigRational>) -> f64 {
     let numbers = [&d.x0, &d.x1, &d.xh, &d.d0, &d.d1].into_iter().flat_map(|p| p.coords());
     // Gram matrix, right-hand side, a 2×2 solve and δ²: a few dozen operations per
     // coordinate on products of up to about ten input numbers; calibrated by
-    // `examples/work_calibration.rs` (64-D points of 32-digit fractions took 14–48 s
+    // `scripts/work_calibration.rs` (64-D points of 32-digit fractions took 14–48 s
     // at weight 1 on a busy machine, so the weight is 15)
     // sums over the coordinates of products with unrelated denominators grow by the common
     // denominator's bits (`tests/calibration.rs`: 30-digit fractions take dim^2.8)

@@ -99,7 +99,10 @@ fn check_in(vars: &str, lhs: &str, rhs: &str) -> (Result<Verdict, String>, Durat
     let file = parse_file(&text, Path::new("reproducer.toml")).unwrap();
     let start = thread_cpu();
     let out = check_claim(&file.claim[0], false);
-    (out.map(|c| c.verdict()).map_err(|e| e.to_string()), thread_cpu() - start)
+    (
+        out.map(|c| c.verdict()).map_err(|e| e.to_string()),
+        thread_cpu() - start,
+    )
 }
 
 /// Binomial theorems in five and six parameters (issue 41): the WZ ansatz built its equations

@@ -101,7 +101,26 @@ fn the_builtin_claims_are_the_proofs_directory() {
     assert_eq!(disk.len(), builtin.len());
     for (d, b) in disk.iter().zip(&builtin) {
         assert_eq!(d.path, b.path);
-        // every field of every claim, as parsed
-        assert_eq!(format!("{d:?}"), format!("{b:?}"));
+        assert!(b.builtin && !d.builtin);
+        // every claim, every field as parsed
+        assert_eq!(format!("{:?}", d.claim), format!("{:?}", b.claim));
+        assert_eq!(format!("{:?}", d.text), format!("{:?}", b.text));
+        // an explanation says where its claim comes from: the file read, or the program
+        assert_eq!(d.origin(), d.path.display().to_string());
+        assert!(b.origin().starts_with("built into casteljau: 0"), "{}", b.origin());
     }
+    let e = explain_files(&builtin, "004-8", ExplainStyle::Short).unwrap();
+    assert!(
+        e.starts_with("claim 004-8 (built into casteljau: 004_658c519a4aef48a5.toml)\n"),
+        "{e}"
+    );
+    // an unknown id gets the nearest ones
+    let err = explain_files(&builtin, "004-08", ExplainStyle::Short)
+        .unwrap_err()
+        .to_string();
+    assert!(err.ends_with("(did you mean 004-8?)"), "{err}");
+    let err = explain_files(&builtin, "no-such-claim-at-all", ExplainStyle::Short)
+        .unwrap_err()
+        .to_string();
+    assert!(!err.contains("did you mean"), "{err}");
 }

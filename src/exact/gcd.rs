@@ -118,7 +118,7 @@ fn gcd_u128_lanes<const LANES: usize>(first: [u128; LANES], second: [u128; LANES
 
 /// `gcd(a, b)` for every pair of nonzero double words given (0 for those not given), two
 /// pairs at a time: with the word-split steps above, two lanes were faster than four on the
-/// case's 100-bit denominators (docs/performance.md, fifth pass).
+/// case's 100-bit denominators (`git log -p -- docs/performance.md`, issue 24's fifth pass).
 pub(crate) fn paired_gcds(pairs: impl Iterator<Item = Option<(u128, u128)>>) -> Vec<u128> {
     const LANES: usize = 2;
     let mut gcds = Vec::new();

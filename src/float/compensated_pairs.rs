@@ -99,7 +99,7 @@ fn fused(x: f64, k: f64, p: f64) -> f64 {
 }
 
 /// Two floats, operated on lane by lane, written out lane by lane: loops over the lanes
-/// compiled to more instructions, partly scalar (docs/performance.md).
+/// compiled to more instructions, partly scalar (measured: `git log -p -- docs/performance.md`).
 #[derive(Clone, Copy)]
 struct Pair([f64; 2]);
 
@@ -464,7 +464,7 @@ fn abs_node<V: Lanes>(f: &Factors<V>, a: V, b: V) -> V {
 /// register), the second's two in one of two, the last alone. Values are never stored and
 /// read back at another width, which stalls the read. The same nodes as [`unrolled`], so
 /// the same bits. Only where the target has FMA: on the default target four lanes are two
-/// SSE2 registers, and this form was slower there than [`unrolled`] (docs/performance.md).
+/// SSE2 registers, and this form was slower there than [`unrolled`] (measured: `git log -p -- docs/performance.md`).
 #[cfg(target_feature = "fma")]
 #[inline(always)]
 fn cubic(f: &Factors<Pair>, b: &[f64]) -> Option<(f64, f64, f64)> {

@@ -164,6 +164,12 @@ pub(crate) fn sample_evaluations<'a>(case: &Case<'a>, k: usize) -> Vec<&'a Evalu
 /// is placed here by the compiler.
 pub(crate) fn argument(c: &Claim, checked: &Checked) -> Vec<String> {
     let mut a = Vec::new();
+    let own_failure = matches!(c.kind, Kind::Inequality(_) | Kind::Implies(_));
+    if checked.verdict() == Verdict::Fails && !own_failure {
+        a.push("One counterexample disproves a claim: the counterexample above is computed in exact rational".into());
+        a.push("arithmetic, so the statement is false there, and nothing more needs checking.".into());
+        return a;
+    }
     match checked.method() {
         _ if matches!(c.kind, Kind::Inequality(_)) => {
             a.extend(super::inequality::ARGUMENT.iter().map(|l| l.to_string()));

@@ -5,6 +5,7 @@
 //! "fails") and, for the correction of a misprint, `corrects = "<id>"`. The remaining fields
 //! depend on the kind; unknown fields are errors, so a typo never silently drops data.
 
+use super::claim_syntax::{field_line, read, FieldError};
 use super::kernel::checked::Verdict;
 use crate::error::{Error, Result};
 use serde::Deserialize;
@@ -18,8 +19,20 @@ pub struct ClaimFile {
     pub text: Option<TextInfo>,
     /// The claims, in order.
     pub claim: Vec<Claim>,
-    /// Where it was loaded from.
+    /// Where it was loaded from (for a built-in file, its path in the repository).
     pub path: PathBuf,
+    /// Built into the program (the texts' claims), not read from `path`.
+    pub builtin: bool,
+}
+
+impl ClaimFile {
+    /// Where its claims come from, for people: the path read, or that it is built in.
+    pub fn origin(&self) -> String {
+        match (self.builtin, self.path.file_name()) {
+            (true, Some(name)) => format!("built into casteljau: {}", name.to_string_lossy()),
+            _ => self.path.display().to_string(),
+        }
+    }
 }
 
 /// The `[text]` table.
@@ -322,7 +335,7 @@ impl TryFrom<IdentityFields> for Identity {
         let sides = match (f.lhs, f.rhs, f.chain) {
             (Some(l), Some(r), None) => Sides::Pair(l, r),
             (None, None, Some(c)) => Sides::Chain(c),
-            _ => return Err("an identity needs either lhs and rhs, or chain".into()),
+            _ => return Err(r#"an identity needs either lhs and rhs, or chain; expected: lhs = "(1 - t)^2" and rhs = "B(0, 2, t)", or chain = ["a", "b", "c"]"#.into()),
         };
         Ok(Identity {
             sides,
@@ -510,19 +523,22 @@ macro_rules! claim_kinds {
             }
 
             /// The kind named `kind`, from its own fields (unknown fields refused).
-            fn from_table(kind: &str, own: toml::Table) -> std::result::Result<Self, String> {
+            fn from_table(kind: &str, own: toml::Table) -> std::result::Result<Self, FieldError> {
                 match kind {
                     $( $name => claim_kinds!(@read $variant $(($fields))?, own), )*
-                    other => Err(format!("unknown kind '{other}' ({})", KINDS.join(", "))),
+                    other => Err(FieldError {
+                        field: Some("kind".into()),
+                        message: format!("unknown kind '{other}' ({})", KINDS.join(", ")),
+                    }),
                 }
             }
         }
     };
     (@read $variant:ident ($fields:ty), $own:expr) => {
-        $own.try_into::<$fields>().map(Kind::$variant).map_err(|e| e.message().to_string())
+        read::<$fields>($own).map(Kind::$variant)
     };
     (@read $variant:ident, $own:expr) => {
-        $own.try_into::<Empty>().map(|_| Kind::$variant).map_err(|e| e.message().to_string())
+        read::<Empty>($own).map(|_| Kind::$variant)
     };
 }
 
@@ -692,13 +708,19 @@ pub struct Claim {
 impl Claim {
     /// Reads one `[[claim]]` table: the header, then the kind's own fields and the declarations
     /// it takes; any other field is an error naming it.
-    fn from_table(mut table: toml::Table) -> std::result::Result<Self, String> {
+    pub(super) fn from_table(mut table: toml::Table) -> std::result::Result<Self, FieldError> {
         let id = table.get("id").and_then(|v| v.as_str()).map(str::to_string);
         if let Some(id) = &id {
-            check_id(id)?;
+            check_id(id).map_err(|e| FieldError {
+                field: Some("id".into()),
+                message: e,
+            })?;
         }
-        let in_claim = |e: String| match &id {
-            Some(id) => format!("claim {id}: {e}"),
+        let in_claim = |e: FieldError| match &id {
+            Some(id) => FieldError {
+                message: format!("claim {id}: {}", e.message),
+                ..e
+            },
             None => e,
         };
         let mut head = toml::Table::new();
@@ -713,13 +735,16 @@ impl Claim {
                 decls.insert(key.to_string(), v);
             }
         }
-        let head: Header = head
-            .try_into()
-            .map_err(|e: toml::de::Error| in_claim(e.message().to_string()))?;
-        let kind = Kind::from_table(&head.kind, table).map_err(|e| in_claim(format!("kind {}: {e}", head.kind)))?;
+        let head: Header = read(head).map_err(in_claim)?;
+        let kind = Kind::from_table(&head.kind, table).map_err(|e| {
+            in_claim(FieldError {
+                message: format!("kind {}: {}", head.kind, e.message),
+                ..e
+            })
+        })?;
         let allowed = kind.declares();
         if let Some(k) = decls.keys().find(|k| !allowed.contains(&k.as_str())) {
-            return Err(in_claim(format!(
+            return Err(in_claim(FieldError::whole(format!(
                 "the field '{k}' does not belong to kind {} (its declarations: {})",
                 head.kind,
                 if allowed.is_empty() {
@@ -727,18 +752,17 @@ impl Claim {
                 } else {
                     allowed.join(", ")
                 }
-            )));
+            ))));
         }
-        let decls: Decls = decls
-            .try_into()
-            .map_err(|e: toml::de::Error| in_claim(e.message().to_string()))?;
+        let decls: Decls = read(decls).map_err(in_claim)?;
         let expect = match head.expect.as_deref() {
             None => None,
             Some(name) if name != "error" && Verdict::from_name(name).is_some() => Verdict::from_name(name),
             Some(other) => {
-                return Err(in_claim(format!(
-                    "expect must be \"proved\", \"proved_in_range\", \"verified\" or \"fails\", not \"{other}\""
-                )))
+                return Err(in_claim(FieldError {
+                    field: Some("expect".into()),
+                    message: format!("expect must be one of the verdicts, not \"{other}\""),
+                }))
             }
         };
         Ok(Claim {
@@ -802,8 +826,21 @@ struct RawFile {
 
 /// Parses one claim file's text.
 pub fn parse_file(text: &str, path: &Path) -> Result<ClaimFile> {
-    let raw: RawFile =
-        toml::from_str(text).map_err(|e| Error::Parse(format!("{}: {}", path.display(), e.to_string().trim())))?;
+    let raw: RawFile = toml::from_str(text).map_err(|e| {
+        let at = e
+            .span()
+            .map(|s| text[..s.start.min(text.len())].matches('\n').count() + 1);
+        // `[claim]` (one table) for `[[claim]]` is the mistake serde words as "expected a sequence"
+        let single = toml::from_str::<toml::Table>(text).is_ok_and(|t| t.get("claim").is_some_and(|c| c.is_table()));
+        match (single, at) {
+            (true, Some(at)) => Error::Parse(format!(
+                "{}:{at}: [claim] is a single table; expected: {}",
+                path.display(),
+                super::claim_syntax::expected("claim").unwrap_or_default()
+            )),
+            _ => Error::Parse(format!("{}: {}", path.display(), e.to_string().trim())),
+        }
+    })?;
     if raw.claim.is_empty() {
         return Err(Error::Parse(format!(
             "{}: no claims (a claim file lists [[claim]] tables; see proofs/README.md)",
@@ -815,15 +852,29 @@ pub fn parse_file(text: &str, path: &Path) -> Result<ClaimFile> {
         .claim
         .into_iter()
         .map(|t| {
-            let at = line(t.span().start);
-            Claim::from_table(t.into_inner())
-                .map_err(|e| Error::Parse(format!("{}: the claim at line {at}: {e}", path.display())))
+            let span = t.span();
+            Claim::from_table(t.into_inner()).map_err(|e| {
+                let at = e
+                    .field
+                    .as_deref()
+                    .and_then(|f| field_line(text, span.start, span.end, f));
+                Error::Parse(match at {
+                    Some(at) => format!("{}:{at}: {}", path.display(), e.with_syntax()),
+                    None => format!(
+                        "{}: the claim at line {}: {}",
+                        path.display(),
+                        line(span.start),
+                        e.with_syntax()
+                    ),
+                })
+            })
         })
         .collect::<Result<Vec<_>>>()?;
     let f = ClaimFile {
         text: raw.text,
         claim: claims,
         path: path.to_path_buf(),
+        builtin: false,
     };
     let mut seen = std::collections::BTreeSet::new();
     for c in &f.claim {
@@ -902,7 +953,7 @@ const BUILTIN: [(&str, &str); 4] = [
 pub fn builtin_files() -> Result<Vec<ClaimFile>> {
     BUILTIN
         .iter()
-        .map(|(path, text)| parse_file(text, Path::new(path)))
+        .map(|(path, text)| parse_file(text, Path::new(path)).map(|f| ClaimFile { builtin: true, ..f }))
         .collect()
 }
 

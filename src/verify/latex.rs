@@ -641,7 +641,7 @@ pub(super) fn explain(f: &ClaimFile, c: &Claim, checked: &Checked, range_bound: 
     let _ = writeln!(s, "{PREAMBLE_NOTE}");
     // the claim file on the heading's line may break after its folder (a long id and path
     // overfill the line otherwise); the source on its own line, as in the text output
-    let path = plain(&f.path.display().to_string()).replace('/', "/\\allowbreak ");
+    let path = plain(&f.origin()).replace('/', "/\\allowbreak ");
     let _ = writeln!(
         s,
         "\\paragraph{{Claim \\texttt{{{}}}}} (\\texttt{{{path}}})\\\\",

@@ -38,8 +38,8 @@
 // - the trusted `kernel`: verdicts, methods, outcomes, and the one door to `proved` (it imports
 //   nothing of verify outside `kernel/`);
 // - the work `budget` a proof's searches share (it imports nothing of verify);
-// - the data: `expr` (expression trees), `claims`
-//   (the claim file format);
+// - the data: `expr` (expression trees), `claim_syntax` (each field's expected form, for
+//   errors), `claims` (the claim file format), `one_line` (the claim of `prove --identity`);
 // - expressions: `alg` (the algebras evaluated in), `poly` (rational functions), `parse`,
 //   `rewrite` (definitions, substitution, `diff`), `eval` (the evaluator), `methods` (library
 //   operations callable in expressions);
@@ -57,6 +57,7 @@ mod ansatz;
 mod argue;
 mod beta;
 mod budget;
+mod claim_syntax;
 pub mod claims;
 mod context;
 mod eval;
@@ -72,6 +73,7 @@ mod lemma;
 mod methods;
 mod names;
 mod objects;
+mod one_line;
 mod parse;
 mod pieces;
 mod poly;
@@ -91,6 +93,7 @@ use std::path::PathBuf;
 pub use kernel::checked::{Checked, Evaluation, Method, Step, StepKind, Verdict};
 pub use kernel::{Proof, Trusted};
 pub use kinds::check_claim;
+pub use one_line::identity_file;
 pub use report::{ClaimOutcome, ExplainStyle, Report, TextSummary};
 pub use scope::{range_bound, PROVABLE};
 pub use theorems::elevation_bound;
@@ -353,7 +356,14 @@ pub fn explain_files(files: &[claims::ClaimFile], id: &str, style: ExplainStyle)
             return Ok(report::explain_text(f, c, &checked, range_bound.as_deref(), style));
         }
     }
-    Err(Error::Domain(format!(
-        "no claim with id '{id}' in the given claim files"
-    )))
+    let ids = files.iter().flat_map(|f| f.claim.iter().map(|c| c.id.as_str()));
+    let near = names::nearest(id, ids);
+    Err(Error::Domain(if near.is_empty() {
+        format!("no claim with id '{id}' in the given claim files")
+    } else {
+        format!(
+            "no claim with id '{id}' in the given claim files (did you mean {}?)",
+            near.join(", ")
+        )
+    }))
 }

@@ -98,3 +98,52 @@ mod tests {
         assert!(err.contains("declared twice"), "{err}");
     }
 }
+
+/// The ids nearest to `id` by edit distance (at most three, and only close ones: within a
+/// third of the length, at least 2), for a "did you mean" after an unknown id.
+pub fn nearest<'a>(id: &str, ids: impl Iterator<Item = &'a str>) -> Vec<String> {
+    let within = (id.chars().count() / 3).max(2);
+    let mut scored: Vec<(usize, &str)> = ids
+        .map(|c| (edit_distance(id, c), c))
+        .filter(|(d, _)| *d <= within)
+        .collect();
+    scored.sort();
+    let best = scored.first().map(|(d, _)| *d);
+    scored
+        .into_iter()
+        .filter(|(d, _)| Some(*d) == best)
+        .take(3)
+        .map(|(_, c)| c.to_string())
+        .collect()
+}
+
+/// Levenshtein distance between two strings, by characters.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diag = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let next = (row[j + 1] + 1).min(row[j] + 1).min(diag + usize::from(ca != *cb));
+            diag = row[j + 1];
+            row[j + 1] = next;
+        }
+    }
+    row[b.len()]
+}
+
+#[cfg(test)]
+mod nearest_tests {
+    use super::{edit_distance, nearest};
+
+    #[test]
+    fn the_nearest_ids_are_suggested_and_far_ones_are_not() {
+        assert_eq!(edit_distance("004-08", "004-8"), 1);
+        assert_eq!(edit_distance("kitten", "sitting"), 3);
+        let ids = ["004-8", "004-8-corrected", "004-10", "000-ex4-y"];
+        assert_eq!(nearest("004-08", ids.iter().copied()), ["004-8"]);
+        assert_eq!(nearest("004-9", ids.iter().copied()), ["004-8"]);
+        assert!(nearest("zzzzzzzzzz", ids.iter().copied()).is_empty());
+    }
+}

@@ -121,6 +121,16 @@ impl Report {
         to_text(self)
     }
 
+    /// Each claim's block alone, without the texts' headers and the summary (the one-line
+    /// `prove --identity` check, whose claim has no file to compare with).
+    pub fn claims_text(&self) -> String {
+        let mut s = String::new();
+        for o in &self.outcomes {
+            outcome_text(&mut s, o, "");
+        }
+        s
+    }
+
     /// The JSON report `{"claims": [...], "summary": {...}}` with a summary per text.
     pub fn to_json(&self) -> serde_json::Value {
         to_json(self)
@@ -217,6 +227,31 @@ fn total(sums: &[TextSummary]) -> TextSummary {
     t
 }
 
+/// One claim's block of the report: verdict, source, statement, notes, certificate.
+fn outcome_text(s: &mut String, o: &ClaimOutcome, flag: &str) {
+    let _ = writeln!(s, "[{}] {}{flag}", o.verdict_text(), printable(&o.id));
+    let _ = writeln!(s, "    source:      {}", printable(&o.source));
+    let _ = writeln!(s, "    statement:   {}", printable(&o.statement));
+    if let Some(c) = &o.corrects {
+        let _ = writeln!(s, "    corrects:    {}", printable(c));
+    }
+    if let Some(n) = &o.note {
+        let _ = writeln!(s, "    note:        {}", printable(n));
+    }
+    let label = match o.verdict {
+        Verdict::Fails => "counterexample",
+        Verdict::Error => "error",
+        _ => "certificate",
+    };
+    let _ = writeln!(s, "    {label}: {}", printable(&o.certificate));
+    if let Some(m) = o.method_text() {
+        let _ = writeln!(s, "    method:      {m}");
+    }
+    if let Some(r) = &o.range_bound {
+        let _ = writeln!(s, "    range-bound: {}", printable(r));
+    }
+}
+
 pub(super) fn to_text(r: &Report) -> String {
     let mut s = String::new();
     let sums = summaries(&r.outcomes);
@@ -237,27 +272,7 @@ pub(super) fn to_text(r: &Report) -> String {
             } else {
                 format!("  !! MISMATCH: expected {}", o.expect.as_str())
             };
-            let _ = writeln!(s, "[{}] {}{flag}", o.verdict_text(), printable(&o.id));
-            let _ = writeln!(s, "    source:      {}", printable(&o.source));
-            let _ = writeln!(s, "    statement:   {}", printable(&o.statement));
-            if let Some(c) = &o.corrects {
-                let _ = writeln!(s, "    corrects:    {}", printable(c));
-            }
-            if let Some(n) = &o.note {
-                let _ = writeln!(s, "    note:        {}", printable(n));
-            }
-            let label = match o.verdict {
-                Verdict::Fails => "counterexample",
-                Verdict::Error => "error",
-                _ => "certificate",
-            };
-            let _ = writeln!(s, "    {label}: {}", printable(&o.certificate));
-            if let Some(m) = o.method_text() {
-                let _ = writeln!(s, "    method:      {m}");
-            }
-            if let Some(r) = &o.range_bound {
-                let _ = writeln!(s, "    range-bound: {}", printable(r));
-            }
+            outcome_text(&mut s, o, &flag);
         }
         let _ = writeln!(s, "--- {}: {}\n", printable(&sum.text), counts(sum));
     }
@@ -363,12 +378,7 @@ pub enum ExplainStyle {
 /// The claim and its verdict; the range-bound note shares the verdict's line (the short
 /// explanation fits one screen).
 fn header(s: &mut String, f: &ClaimFile, c: &Claim, checked: &Checked, range_bound: Option<&str>) {
-    let _ = writeln!(
-        s,
-        "claim {} ({})",
-        printable(&c.id),
-        printable(&f.path.display().to_string())
-    );
+    let _ = writeln!(s, "claim {} ({})", printable(&c.id), printable(&f.origin()));
     let _ = writeln!(s, "source:    {}", printable(&c.source));
     let _ = writeln!(s, "statement: {}", printable(&c.statement));
     let _ = writeln!(s, "kind:      {}", c.kind.name());

@@ -2,7 +2,7 @@
 //! parameters, coefficients near 1e308, near-cancellation, mixed scales) and the checks run on
 //! them: every method's float answer against its bound (decided exactly) and against the
 //! bound's derived formula in rationals, interval enclosures, filtered predicates against
-//! exact ones. Shared by `tests/float_edges.rs` and `examples/float_edges.rs`.
+//! exact ones. Shared by `tests/float_edges.rs` and `scripts/float_edges.rs`.
 
 #![allow(dead_code)]
 

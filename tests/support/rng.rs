@@ -1,6 +1,6 @@
 //! A small deterministic generator (xorshift64*) for the float experiments, so that a failing
 //! case reproduces from its seed. Shared by `tests/float_bounds.rs` and
-//! `examples/float_errors.rs`, which run the same random sets.
+//! `scripts/float_errors.rs`, which run the same random sets.
 
 pub struct Rng(pub u64);
 

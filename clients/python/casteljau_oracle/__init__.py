@@ -4,3 +4,4 @@ project may have for its own module). See `_casteljau_oracle` for the documentat
 
 from _casteljau_oracle import *
 from _casteljau_oracle import __all__, __doc__  # noqa: F401
+from .prove import prove_identity  # noqa: E402,F401
