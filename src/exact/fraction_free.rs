@@ -31,8 +31,8 @@
 
 use crate::curve::{BezierCurve, DeCasteljauScheme};
 use crate::error::{check_degree, Error, Result};
+use crate::exact::gcd::gcd_u128;
 use crate::exact::gcd::{self, Part};
-use crate::exact::small_rational::gcd_u128;
 use crate::exact::{elevation_words, splitting};
 use crate::point::Point;
 use crate::rational::RationalBezierCurve;
