@@ -335,7 +335,7 @@ fn small_decimal(value: &BigInt, scale: i64) -> Option<BigRational> {
         let n = i128::from(v) * i128::from(power);
         return Some(BigRational::from_integer(BigInt::from(n)));
     }
-    let g = crate::exact::small_rational::gcd_u128(u128::from(v.unsigned_abs()), u128::from(power)) as u64;
+    let g = crate::exact::gcd::gcd_u128(u128::from(v.unsigned_abs()), u128::from(power)) as u64;
     let (num, den) = (v / g as i64, power / g);
     Some(BigRational::new_raw(BigInt::from(num), BigInt::from(den)))
 }
@@ -347,13 +347,15 @@ fn quotient(num: BigRational, den: BigRational) -> BigRational {
         if let (Some(p), Some(q)) = (num.numer().to_i64(), den.numer().to_i64()) {
             let negative = (p < 0) != (q < 0);
             let (p, q) = (u128::from(p.unsigned_abs()), u128::from(q.unsigned_abs()));
-            let g = crate::exact::small_rational::gcd_u128(p, q);
+            let g = crate::exact::gcd::gcd_u128(p, q);
             // |p|/g and |q|/g fit 64 bits unsigned; the sign goes to the numerator.
             let (p, q) = ((p / g) as i128, (q / g) as i128);
             return BigRational::new_raw(BigInt::from(if negative { -p } else { p }), BigInt::from(q));
         }
     }
-    num / den
+    // Knuth's two gcds by Lehmer's algorithm, not num-rational's division (its binary gcd of
+    // the whole numbers was two thirds of reading a request of 100-digit fractions).
+    crate::exact::gcd::divide(&num, &den)
 }
 
 /// Formats an exact rational in lowest terms as `p` or `p/q` with a positive denominator.

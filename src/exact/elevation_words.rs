@@ -27,12 +27,12 @@
 //! modulo `2^64`. The tests compare both with `==` against
 //! [`BezierCurve::elevate_reference`](crate::BezierCurve::elevate_reference).
 
+use crate::exact::gcd::gcd_u64;
 use crate::exact::gcd::{self, Part};
-use crate::exact::small_rational::gcd_u64;
 use crate::point::Point;
 use num_bigint::{BigInt, BigUint, Sign};
 use num_rational::BigRational;
-use num_traits::{Signed, ToPrimitive, Zero};
+use num_traits::{One, Signed, ToPrimitive, Zero};
 
 /// Inputs longer than this many bits take the big-integer path: with `α, n+1 < 2^32`, every
 /// intermediate then fits 256 bits (`2^32 · 2^110 · 2^110 · 2 < 2^256`).
@@ -298,13 +298,46 @@ fn pair_words(
     ))
 }
 
-/// `(α a + β b) / total` in lowest terms on big integers.
+/// `(α a + β b) / total` in lowest terms on big integers, the way GMP adds two fractions
+/// (Knuth, TAOCP vol. 2, 4.5.1): with `a = x/d`, `b = y/e`, `g = gcd(d, e)`, `d = g d'`,
+/// `e = g e'`, the sum is `s / (g d' e')` with `s = α x e' + β y d'`. A prime of `d'` that
+/// divides `s` divides `α` (it divides neither `x` nor `e'`), and likewise for `e'` and `β`:
+/// so `s` is tested against `g` and `total` only, and against `d'` or `e'` only when it
+/// shares a factor with `α` or `β` — one gcd of denominator length instead of two of the
+/// sum's.
 fn pair_big(a: &BigRational, alpha: u32, b: &BigRational, beta: u32, total: &BigInt) -> BigRational {
-    // a = x/d, b = y/e over L = lcm(d, e).
-    let l = gcd::lcm_int(a.denom(), b.denom());
-    let x = a.numer() * (&l / a.denom()) * alpha;
-    let y = b.numer() * (&l / b.denom()) * beta;
-    gcd::reduce(x + y, &[Part::Number(&l), Part::Number(total)])
+    let (x, d, y, e) = (a.numer(), a.denom(), b.numer(), b.denom());
+    let g = gcd::gcd_int(d, e);
+    let (d1, e1) = if g.is_one() {
+        (d.clone(), e.clone())
+    } else {
+        (d / &g, e / &g)
+    };
+    let s = x * &e1 * alpha + y * &d1 * beta;
+    // `m` shares no factor with `weight` exactly when no prime of `m` can divide `s`.
+    let coprime = |m: &BigInt, weight: u32| {
+        let r = (m % weight).to_u64().expect("a remainder below a u32");
+        gcd_u64(r, u64::from(weight)) == 1
+    };
+    let (d_free, e_free) = (coprime(&d1, alpha), coprime(&e1, beta));
+    let mut tested = vec![Part::Number(total)];
+    if !g.is_one() {
+        tested.push(Part::Number(&g));
+    }
+    let mut untested = BigInt::one();
+    for (m, free) in [(&d1, d_free), (&e1, e_free)] {
+        if free {
+            untested *= m;
+        } else {
+            tested.push(Part::Number(m));
+        }
+    }
+    let r = gcd::reduce(s, &tested);
+    if r.numer().is_zero() {
+        return r;
+    }
+    let (num, den) = r.into_raw();
+    BigRational::new_raw(num, den * untested)
 }
 
 /// One elevation step (7) of the points, each new coordinate reduced on its own.
@@ -376,7 +409,7 @@ fn combine_neighbours(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::exact::small_rational::gcd_u128;
+    use crate::exact::gcd::gcd_u128;
     use proptest::prelude::*;
 
     /// Double words with shared factors of every size: products of a random common part and

@@ -8,11 +8,57 @@
 //! algorithm, unbalanced operands divided first), and a denominator known as a product of
 //! parts (`D qⁿ`) is reduced part by part, which is never more work and usually far less.
 
-use crate::exact::small_rational::gcd_u128;
 use num_bigint::{BigInt, BigUint, Sign};
 use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
+
+/// The greatest common divisor of two unsigned words (binary gcd, no division).
+pub(crate) fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
+    if a == 0 {
+        return b;
+    }
+    if b == 0 {
+        return a;
+    }
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        // Both odd; min and difference without a branch on which is larger (conditional
+        // moves): that branch is a coin flip the processor mispredicts half the time.
+        b >>= b.trailing_zeros();
+        let difference = a.abs_diff(b);
+        a = a.min(b);
+        b = difference;
+        if b == 0 {
+            return a << shift;
+        }
+    }
+}
+
+/// The greatest common divisor of two unsigned double words.
+pub(crate) fn gcd_u128(mut a: u128, mut b: u128) -> u128 {
+    if a == 0 {
+        return b;
+    }
+    if b == 0 {
+        return a;
+    }
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        if a <= u64::MAX as u128 && b <= u64::MAX as u128 {
+            return (gcd_u64(a as u64, (b >> b.trailing_zeros()) as u64) as u128) << shift;
+        }
+        b >>= b.trailing_zeros();
+        let difference = a.abs_diff(b);
+        a = a.min(b);
+        b = difference;
+        if b == 0 {
+            return a << shift;
+        }
+    }
+}
 
 /// `gcd(a, b)` of natural numbers: within two words by a machine gcd, otherwise by
 /// dashu-int's (its digits are copied in and out: still faster, `benches/exact.rs`).

@@ -22,6 +22,7 @@
 //! ```
 
 use crate::error::{Error, Result};
+use crate::exact::gcd::{gcd_u128, gcd_u64};
 use crate::scalar::{forward_ring_ops, Ring, Scalar};
 use num_bigint::BigInt;
 use num_integer::Integer;
@@ -41,53 +42,6 @@ enum Repr {
     Small { num: i64, den: i64 },
     /// A value that does not fit `Small` (never one that does: the form is canonical).
     Big(Box<BigRational>),
-}
-
-/// The greatest common divisor of two unsigned words (binary gcd, no division).
-pub(crate) fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
-    if a == 0 {
-        return b;
-    }
-    if b == 0 {
-        return a;
-    }
-    let shift = (a | b).trailing_zeros();
-    a >>= a.trailing_zeros();
-    loop {
-        // Both odd; min and difference without a branch on which is larger (conditional
-        // moves): that branch is a coin flip the processor mispredicts half the time.
-        b >>= b.trailing_zeros();
-        let difference = a.abs_diff(b);
-        a = a.min(b);
-        b = difference;
-        if b == 0 {
-            return a << shift;
-        }
-    }
-}
-
-/// The greatest common divisor of two unsigned double words.
-pub(crate) fn gcd_u128(mut a: u128, mut b: u128) -> u128 {
-    if a == 0 {
-        return b;
-    }
-    if b == 0 {
-        return a;
-    }
-    let shift = (a | b).trailing_zeros();
-    a >>= a.trailing_zeros();
-    loop {
-        if a <= u64::MAX as u128 && b <= u64::MAX as u128 {
-            return (gcd_u64(a as u64, (b >> b.trailing_zeros()) as u64) as u128) << shift;
-        }
-        b >>= b.trailing_zeros();
-        let difference = a.abs_diff(b);
-        a = a.min(b);
-        b = difference;
-        if b == 0 {
-            return a << shift;
-        }
-    }
 }
 
 impl SmallRational {
