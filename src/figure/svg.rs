@@ -375,7 +375,7 @@ impl Panel {
         // finite for subnormal drawings
         let magnitude = x0.abs().max(x1.abs()).max(y0.abs()).max(y1.abs());
         let mut span = dx.max(dy);
-        if !(span > magnitude * 1e-12) {
+        if span.is_nan() || span <= magnitude * 1e-12 {
             span = if magnitude > 0.0 { magnitude } else { 1.0 };
         }
         let span = span.max(1e-290);

@@ -78,10 +78,11 @@ fn parameters(obj: &Map<String, Value>) -> Result<Vec<BigRational>> {
         .collect()
 }
 
-/// How much more a batch's parameter costs than its work estimate says: the estimates are
-/// calibrated at the largest single requests, where the kernel's work dominates, and a
-/// batch is many small ones, each judged and written as its own object (301 planar points
-/// at 4096 parameters `1/3`, 37% of the limit at weight 4, took 0.5–1.1 s of CPU).
+/// How much more a batch's further parameter costs than its work estimate says: the
+/// estimates are calibrated at the largest single requests, where the kernel's work
+/// dominates, and a batch is many small ones, each judged and written as its own object
+/// (301 planar points at 4096 parameters `1/3`, 37% of the limit at weight 4, took 0.5–1.1 s
+/// of CPU). The first parameter counts once: a batch of one is the request alone.
 const BATCH_WEIGHT: f64 = 16.0;
 
 /// Refuses a batch whose summed work estimate is beyond [`MAX_REQUEST_WORK`]; `op` is any one of its
@@ -99,12 +100,12 @@ fn check_batch_work(op: &mut Op, ts: &[BigRational]) -> Result<()> {
                     Op::Eval { t: slot, .. } | Op::FloatEval { t: slot, .. } => *slot = t.clone(),
                     _ => unreachable!("batches are of eval and float_eval"),
                 }
-                let w = op.work() * BATCH_WEIGHT;
+                let w = op.work();
                 seen.insert(t, w);
                 w
             }
         };
-        work += one;
+        work += if k == 0 { one } else { one * BATCH_WEIGHT };
         if work.is_nan() || work > MAX_REQUEST_WORK {
             return Err(Error::TooLarge {
                 what: "batch (estimated exact work of all its parameters)",
