@@ -44,9 +44,14 @@ pub(crate) enum NumberKind {
     General,
 }
 
-/// The kind of `numbers`: the most general of their denominators' kinds.
-pub(crate) fn number_kind<'a>(numbers: impl IntoIterator<Item = &'a BigRational>) -> NumberKind {
-    let mut kind = NumberKind::Integer;
+/// The kinds of denominators among `numbers`, as a set: bit `k` for [`NumberKind`] `k`.
+///
+/// A request is charged by every kind it holds, not only by the most general: a model unit
+/// costs less on decimals or fractions than on integers (their models count denominators
+/// that the kernels share), so one `"0.1"` among 40-digit integers must not make the
+/// integers' work cheap.
+pub(crate) fn number_kinds<'a>(numbers: impl IntoIterator<Item = &'a BigRational>) -> u8 {
+    let mut kinds = 0u8;
     let mut last: Option<&num_bigint::BigInt> = None;
     for r in numbers {
         let d = r.denom();
@@ -55,12 +60,29 @@ pub(crate) fn number_kind<'a>(numbers: impl IntoIterator<Item = &'a BigRational>
             continue;
         }
         last = Some(d);
-        kind = kind.max(denominator_kind(d));
-        if kind == NumberKind::General {
+        kinds |= 1 << denominator_kind(d) as u8;
+        if kinds == 0b1111 {
             break;
         }
     }
-    kind
+    kinds
+}
+
+/// The kinds in a set of [`number_kinds`].
+pub(crate) fn kinds_in(set: u8) -> impl Iterator<Item = NumberKind> {
+    [
+        NumberKind::Integer,
+        NumberKind::Dyadic,
+        NumberKind::Decimal,
+        NumberKind::General,
+    ]
+    .into_iter()
+    .filter(move |k| set & (1 << *k as u8) != 0)
+}
+
+/// The kind of one number's denominator.
+pub(crate) fn kind_of(r: &BigRational) -> NumberKind {
+    denominator_kind(r.denom())
 }
 
 fn denominator_kind(d: &num_bigint::BigInt) -> NumberKind {

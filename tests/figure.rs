@@ -577,3 +577,30 @@ fn hull_certificates_in_space_are_exact_and_outside_agrees_with_the_library() {
     }
     assert!(inside >= 10 && outside >= 1, "{inside} inside, {outside} outside");
 }
+
+#[test]
+fn coinciding_points_draw() {
+    // issue 41: "coordinate (5, 5) is beyond the range of f64" after 390 MB
+    let dir = std::env::temp_dir().join(format!("casteljau-figure-coinciding-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for (kind, points) in [
+        ("construction", "5,5"),
+        ("hull", "0,0; 0,0"),
+        ("construction", "1e-200,0; 1e-200,0"),
+        ("subdivision", "3,-7; 3,-7; 3,-7"),
+    ] {
+        let out = dir.join(format!("{kind}.svg"));
+        let run = Command::new(env!("CARGO_BIN_EXE_casteljau"))
+            .args(["figure", kind, points, "-o"])
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert!(
+            run.status.success(),
+            "{kind} {points}: {}",
+            String::from_utf8_lossy(&run.stderr)
+        );
+        check_svg(&std::fs::read_to_string(&out).unwrap());
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}

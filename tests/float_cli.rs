@@ -17,7 +17,7 @@ fn eval_f64_judges_each_method() {
     for (method, needle) in [
         ("de-casteljau", "running_bound_ulps"),
         ("compensated", "method: compensated"),
-        ("interval", "interval: [-8.67"),
+        ("interval", "interval: [-3.902"),
     ] {
         let out = casteljau(&["eval", CUBE, "--t", "0.7500001", "--f64", "--method", method]);
         assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));

@@ -370,7 +370,15 @@ impl Panel {
     fn map(&self, left: f64, top: f64) -> (PanelMap, f64, f64) {
         let [x0, y0, x1, y1] = self.bounds().unwrap_or([0.0, 0.0, 1.0, 1.0]);
         let (mut dx, mut dy) = (x1 - x0, y1 - y0);
-        let span = dx.max(dy).max(f64::MIN_POSITIVE);
+        // coinciding points (a box of size 0, or of rounding size next to the coordinates)
+        // get a frame as large as the coordinates (1 at the origin); the floor keeps the scale
+        // finite for subnormal drawings
+        let magnitude = x0.abs().max(x1.abs()).max(y0.abs()).max(y1.abs());
+        let mut span = dx.max(dy);
+        if span.is_nan() || span <= magnitude * 1e-12 {
+            span = if magnitude > 0.0 { magnitude } else { 1.0 };
+        }
+        let span = span.max(1e-290);
         // a flat drawing (a segment, a point) still gets a square-ish frame
         if dx < span * 1e-9 {
             dx = span;

@@ -5,8 +5,8 @@ use super::Op;
 use crate::curve::BezierCurve;
 use crate::error::Result;
 use crate::work::{
-    conic_work, derivative_work, elevate_work, eval_work, fit_cubic_work, number_kind, rational_eval_work, split_work,
-    surface_eval_work, to_bezier_work, NumberKind,
+    conic_work, derivative_work, elevate_work, eval_work, fit_cubic_work, kind_of, kinds_in, number_kinds,
+    rational_eval_work, split_work, surface_eval_work, to_bezier_work, NumberKind,
 };
 use num_rational::BigRational;
 
@@ -23,8 +23,9 @@ use num_rational::BigRational;
 struct ByKind([f64; 4]);
 
 impl ByKind {
-    fn of(&self, kind: NumberKind) -> f64 {
-        self.0[kind as usize]
+    /// The calibration for a set of kinds ([`number_kinds`]): the most general one's.
+    fn of(&self, kinds: u8) -> f64 {
+        kinds_in(kinds).last().map_or(self.0[0], |k| self.0[k as usize])
     }
 }
 
@@ -47,13 +48,123 @@ impl Op {
     /// take about a quarter of a second of CPU: its kernel's model (roughly Σ bits² over its
     /// rational operations) times the op's calibration for the kind of its input numbers.
     /// Computed before anything else so that absurd requests are refused at once.
+    ///
+    /// A request mixing kinds of numbers is calibrated by its most general kind, whose unit
+    /// may cost far less than another kind's (decimals' and fractions' models count
+    /// denominators the kernels share): it is also estimated for each other kind it holds
+    /// alone (the other numbers set to 1), and charged the largest, so that one `"0.1"`
+    /// among 40-digit integers costs at least what those integers cost. Integers among floats
+    /// (`0`, `3.0`, `1e308`) are left to the floats' calibration: charged as integers, 3-D
+    /// fits of floats holding `1e308`, which take 0.01 s, were refused.
     pub fn work(&self) -> f64 {
-        let kind = |numbers: &mut dyn Iterator<Item = &BigRational>| number_kind(numbers);
+        let kinds = self.input_kinds();
+        let top = kinds_in(kinds).last();
+        // integers among floats are floats: the floats' calibration counts them
+        let among_floats = |k: &NumberKind| *k == NumberKind::Integer && top == Some(NumberKind::Dyadic);
+        kinds_in(kinds)
+            .filter(|k| Some(*k) != top && !among_floats(k))
+            .filter_map(|k| self.with_only(k).ok())
+            .map(|alone| alone.calibrated_work())
+            .fold(self.calibrated_work(), f64::max)
+    }
+
+    /// The kinds of the request's input numbers (its parameters not counted).
+    fn input_kinds(&self) -> u8 {
+        match self {
+            Op::Eval { curve, .. }
+            | Op::FloatEval { curve, .. }
+            | Op::Split { curve, .. }
+            | Op::Elevate { curve, .. }
+            | Op::Derivative { curve, .. } => number_kinds(curve.points().iter().flat_map(|p| p.coords())),
+            Op::RationalEval { curve, .. } | Op::Conic { curve } => {
+                number_kinds(curve.points().iter().flat_map(|p| p.coords()).chain(curve.weights()))
+            }
+            Op::SurfaceEval { surface, .. } => number_kinds(surface.net().iter().flatten().flat_map(|p| p.coords())),
+            Op::FitCubic { data: d } => {
+                number_kinds([&d.x0, &d.x1, &d.xh, &d.d0, &d.d1].into_iter().flat_map(|p| p.coords()))
+            }
+            Op::ToBezier { power } => number_kinds(power.iter().flatten()),
+        }
+    }
+
+    /// The request with its input numbers of kinds other than `kind` replaced by 1.
+    fn with_only(&self, kind: NumberKind) -> Result<Op> {
+        let keep = move |x: &BigRational| -> Result<BigRational> {
+            Ok(if kind_of(x) == kind {
+                x.clone()
+            } else {
+                BigRational::from_integer(1.into())
+            })
+        };
+        let point = |p: &crate::point::Point<BigRational>| p.try_map(keep);
+        Ok(match self {
+            Op::Eval { curve, t, .. } => Op::Eval {
+                curve: curve.try_map(keep)?,
+                t: t.clone(),
+                approx: None,
+            },
+            Op::FloatEval { curve, t, method } => Op::FloatEval {
+                curve: curve.try_map(keep)?,
+                t: t.clone(),
+                method: *method,
+            },
+            Op::Split { curve, t } => Op::Split {
+                curve: curve.try_map(keep)?,
+                t: t.clone(),
+            },
+            Op::Elevate { curve, by } => Op::Elevate {
+                curve: curve.try_map(keep)?,
+                by: *by,
+            },
+            Op::Derivative { curve, order, at } => Op::Derivative {
+                curve: curve.try_map(keep)?,
+                order: *order,
+                at: at.clone(),
+            },
+            Op::RationalEval { curve, t, .. } => Op::RationalEval {
+                curve: curve.try_map(keep)?,
+                t: t.clone(),
+                approx: None,
+            },
+            Op::Conic { curve } => Op::Conic {
+                curve: curve.try_map(keep)?,
+            },
+            Op::SurfaceEval { surface, u, v, .. } => Op::SurfaceEval {
+                surface: surface.try_map(keep)?,
+                u: u.clone(),
+                v: v.clone(),
+                approx: None,
+            },
+            Op::FitCubic { data: d } => Op::FitCubic {
+                data: crate::fit::CubicFitData {
+                    x0: point(&d.x0)?,
+                    x1: point(&d.x1)?,
+                    xh: point(&d.xh)?,
+                    d0: point(&d.d0)?,
+                    d1: point(&d.d1)?,
+                },
+            },
+            Op::ToBezier { power } => Op::ToBezier {
+                power: power
+                    .iter()
+                    .map(|c| c.iter().map(keep).collect::<Result<Vec<_>>>())
+                    .collect::<Result<_>>()?,
+            },
+        })
+    }
+
+    /// The op's model times the calibration of the most general kind of its numbers.
+    fn calibrated_work(&self) -> f64 {
+        let kind = |numbers: &mut dyn Iterator<Item = &BigRational>| number_kinds(numbers);
         // integers at a dyadic parameter run the dyadic kernels, whose numbers grow by the
         // parameter's bits at every level (degree 3788 of integers at 0.1 took 5 s as integers)
-        let at = |kind: NumberKind, ts: &[&BigRational]| match number_kind(ts.iter().copied()) {
-            NumberKind::Dyadic if kind == NumberKind::Integer => NumberKind::Dyadic,
-            _ => kind,
+        let at = |kinds: u8, ts: &[&BigRational]| {
+            let top_is_integer = kinds_in(kinds).last() == Some(NumberKind::Integer);
+            if top_is_integer && kinds_in(number_kinds(ts.iter().copied())).last() == Some(NumberKind::Dyadic) {
+                1 << NumberKind::Dyadic as u8
+            } else {
+                kinds
+            }
         };
         let curve_kind =
             |c: &crate::curve::BezierCurve<BigRational>| kind(&mut c.points().iter().flat_map(|p| p.coords()));

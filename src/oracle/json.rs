@@ -1,6 +1,6 @@
 //! Reading requests: JSON fields into exact inputs, with errors that name the field.
 
-use super::judge::{not_a_float, FloatMethod};
+use super::judge::{floats_from_json, not_a_float, FloatMethod};
 use super::protocol::{too_large, truncate};
 use super::values::{
     count_from_json, describe, net_from_json, number_from_json, numbers_from_json, point_from_json, points_from_json,
@@ -66,7 +66,7 @@ impl Op {
             "eval" => Op::Eval {
                 curve: req.curve("points")?,
                 t: req.number("t")?,
-                approx: req.approx()?,
+                approx: req.approx(true)?,
             },
             "elevate" => Op::Elevate {
                 curve: req.curve("points")?,
@@ -109,7 +109,7 @@ impl Op {
             "rational_eval" => Op::RationalEval {
                 curve: req.rational_curve()?,
                 t: req.number("t")?,
-                approx: req.approx()?,
+                approx: req.approx(false)?,
             },
             "conic" => Op::Conic {
                 curve: req.rational_curve()?,
@@ -123,7 +123,7 @@ impl Op {
                     surface: req.in_field("net", BezierSurface::new(net))?,
                     u: req.number("u")?,
                     v: req.number("v")?,
-                    approx: req.approx()?,
+                    approx: req.approx(false)?,
                 }
             }
             "fit_cubic" => {
@@ -185,10 +185,11 @@ impl Fields<'_> {
         self.in_field(name, number_from_json(self.get(name)?))
     }
 
-    fn approx(&self) -> Result<Option<Vec<f64>>> {
+    /// `approx`: JSON numbers, and for `eval` (`overflow`) also `"inf"`, `"-inf"`, `"nan"`.
+    fn approx(&self, overflow: bool) -> Result<Option<Vec<f64>>> {
         match self.obj.get("approx") {
             None => Ok(None),
-            Some(v) => Ok(Some(self.in_field("approx", floats_from_json(v))?)),
+            Some(v) => Ok(Some(self.in_field("approx", floats_from_json(v, overflow))?)),
         }
     }
 
@@ -209,30 +210,6 @@ impl Fields<'_> {
         }
         self.in_field(name, BezierCurve::new(points))
     }
-}
-
-fn floats_from_json(v: &Value) -> Result<Vec<f64>> {
-    let items = v.as_array().ok_or_else(|| {
-        Error::Parse(format!(
-            "expected an array of JSON numbers (one per coordinate), got {}",
-            describe(v)
-        ))
-    })?;
-    if items.len() > MAX_REQUEST_DIMENSION {
-        return Err(too_large("dimension", items.len(), MAX_REQUEST_DIMENSION));
-    }
-    items
-        .iter()
-        .enumerate()
-        .map(|(k, x)| {
-            x.as_f64().ok_or_else(|| {
-                Error::Parse(format!(
-                    "coordinate {k}: the approximation must be a JSON number (a float), got {}",
-                    describe(x)
-                ))
-            })
-        })
-        .collect()
 }
 
 /// Refuses a request object that gives a field twice: JSON parsers disagree on which copy

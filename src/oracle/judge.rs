@@ -28,11 +28,27 @@ pub struct BoundCheck {
 
 impl BoundCheck {
     /// Judges `approx` against the exact `x` with the absolute bound `bound`.
+    ///
+    /// A bound that came out NaN (`∞ · 0` in a bound's float arithmetic, on inputs near the
+    /// largest float) bounds nothing: it is `+∞`. An answer with no error is within every
+    /// bound, and so is `±∞` where the exact value is beyond the largest float on that side
+    /// (the correctly rounded answer).
     pub fn new(approx: f64, x: &BigRational, bound: f64) -> Self {
+        let bound = no_nan(bound);
+        let correctly_rounded_overflow = approx.is_infinite() && nearest_f64(x) == approx;
         BoundCheck {
-            bound_ulps: scale_pow2_up(bound, -ulp_exponent(x)),
-            within: error_at_most(approx, x, bound),
+            bound_ulps: no_nan(scale_pow2_up(bound, -ulp_exponent(x))),
+            within: correctly_rounded_overflow || error_at_most(approx, x, bound),
         }
+    }
+}
+
+/// A bound, `+∞` for NaN: a bound is a number or `+∞` (no bound), never NaN.
+pub(super) fn no_nan(bound: f64) -> f64 {
+    if bound.is_nan() {
+        f64::INFINITY
+    } else {
+        bound
     }
 }
 
@@ -290,24 +306,24 @@ pub fn float_eval(
     let mut bound = Vec::new();
     let mut running = Vec::new();
     let mut enclosure = Vec::new();
+    // De Casteljau's convex form in interval arithmetic: for t in [0, 1] its widths add up
+    // level by level like the a priori bound, where the generic lerp form `a + t·(b − a)`
+    // grows them with the degree (3.3e44 ulps at degree 100). Both enclose the value, so
+    // their intersection does, and it is the narrower at every degree.
     let intervals = if method == FloatMethod::Interval {
         let c = curve.try_map(Interval::from_rational)?;
         let generic = c.eval_reference(&Interval::from_rational(t)?);
-        if generic
-            .coords()
-            .iter()
-            .all(|x| x.lo().is_finite() && x.hi().is_finite())
-        {
-            Some(generic.coords().to_vec())
-        } else {
-            // the generic lerp form overflowed in b − a: the convex form stays in range
-            Some(
-                coords
-                    .iter()
-                    .map(|b| tight_interval_de_casteljau(b, tf))
-                    .collect::<Result<Vec<_>>>()?,
-            )
-        }
+        Some(
+            coords
+                .iter()
+                .zip(generic.coords())
+                .map(|(b, g)| {
+                    let convex = unbounded_for_nan(tight_interval_de_casteljau(b, tf)?);
+                    let g = unbounded_for_nan(*g);
+                    Ok(Interval::new(convex.lo().max(g.lo()), convex.hi().min(g.hi())).unwrap_or(convex))
+                })
+                .collect::<Result<Vec<_>>>()?,
+        )
     } else {
         None
     };
@@ -335,8 +351,9 @@ pub fn float_eval(
             }
             FloatMethod::Interval => {
                 let iv = intervals.as_ref().expect("computed above")[k];
+                // the midpoint: an infinite end where there is one, NaN for [−∞, ∞] (no value)
                 let mid = iv.to_f64();
-                let reach = crate::float::next_up((iv.hi() - mid).max(mid - iv.lo()));
+                let reach = no_nan(crate::float::next_up((iv.hi() - mid).max(mid - iv.lo())));
                 values.push(mid);
                 bound.push(BoundCheck::new(mid, x, reach));
                 enclosure.push((iv.lo(), iv.hi(), iv.contains(x)));
@@ -360,6 +377,14 @@ pub fn float_eval(
         running: (method == FloatMethod::DeCasteljau).then_some(running),
         enclosure: (method == FloatMethod::Interval).then_some(enclosure),
     })
+}
+
+/// An enclosure with a NaN endpoint (`∞ − ∞` where the values overflowed) widened to the
+/// infinity on that side: `[−∞, ∞]` encloses every value.
+fn unbounded_for_nan(iv: Interval) -> Interval {
+    let lo = if iv.lo().is_nan() { f64::NEG_INFINITY } else { iv.lo() };
+    let hi = if iv.hi().is_nan() { f64::INFINITY } else { iv.hi() };
+    Interval::new(lo, hi).unwrap_or_else(|_| Interval::new(f64::NEG_INFINITY, f64::INFINITY).expect("an interval"))
 }
 
 /// The error for an input that `float_eval` needs as a float.
@@ -408,4 +433,36 @@ pub fn float_from_json(v: &Value) -> Option<f64> {
         },
         _ => None,
     }
+}
+
+/// A caller's float answer, one per coordinate: JSON numbers, and with `overflow` also the
+/// strings of [`float_from_json`]. Both of `eval`'s paths read `approx` here, so that they
+/// answer alike.
+pub(super) fn floats_from_json(v: &Value, overflow: bool) -> Result<Vec<f64>> {
+    let items = v.as_array().ok_or_else(|| {
+        Error::Parse(format!(
+            "expected an array of JSON numbers (one per coordinate), got {}",
+            super::values::describe(v)
+        ))
+    })?;
+    if items.len() > super::MAX_REQUEST_DIMENSION {
+        return Err(super::protocol::too_large(
+            "dimension",
+            items.len(),
+            super::MAX_REQUEST_DIMENSION,
+        ));
+    }
+    let what = if overflow {
+        "a float answer must be a JSON number or one of \"inf\", \"-inf\", \"nan\""
+    } else {
+        "the approximation must be a JSON number (a float)"
+    };
+    items
+        .iter()
+        .enumerate()
+        .map(|(k, x)| {
+            let float = if overflow { float_from_json(x) } else { x.as_f64() };
+            float.ok_or_else(|| Error::Parse(format!("coordinate {k}: {what}, got {}", super::values::describe(x))))
+        })
+        .collect()
 }

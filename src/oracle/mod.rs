@@ -279,7 +279,7 @@ fn point_response(
     }
     if let Some(u) = ulps {
         key(&mut out, "nearest");
-        array(&mut out, u.iter().map(|e| e.nearest));
+        array(&mut out, u.iter().map(|e| judge::float_json(e.nearest)));
     }
     key(&mut out, "ok");
     out.extend_from_slice(b"true");

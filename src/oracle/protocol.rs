@@ -165,7 +165,12 @@ impl Answer {
                     insert_bound(&mut m, "running_bound", "within_running_bound", r);
                 }
                 if let Some(e) = &f.enclosure {
-                    m.insert("interval".into(), e.iter().map(|(lo, hi, _)| json!([lo, hi])).collect());
+                    m.insert(
+                        "interval".into(),
+                        e.iter()
+                            .map(|(lo, hi, _)| json!([float_json(*lo), float_json(*hi)]))
+                            .collect(),
+                    );
                     m.insert("encloses".into(), e.iter().map(|(_, _, ok)| json!(ok)).collect());
                 }
             }
