@@ -644,30 +644,20 @@ impl BezierCurve<BigRational> {
     /// `r` elevation steps by the closed form (8) over integers; equals
     /// [`BezierCurve::elevate_by`].
     ///
-    /// Past machine words, `r ≤ n` steps are taken one by one (each point combines its
-    /// neighbours over their own denominators: point `i` after `k` steps is over the
-    /// denominators of `k + 1` inputs), not (8) over the common denominator of the whole
-    /// curve: with distinct denominators every point of (8) is as long as all `n + 1`
-    /// inputs together, `O(n)` times the pairwise length, so one step cost quadratic time.
+    ///
+    /// One step (`r = 1`) combines each point with its neighbour over their own denominators,
+    /// not (8) over the common denominator of the whole curve: with distinct denominators every
+    /// point of (8) is as long as all `n + 1` inputs together, so one step would cost time
+    /// quadratic in the degree. Several steps keep (8): taken one by one they re-reduce every
+    /// point at every step, which the oracle's calibration measured slower on integers, floats
+    /// and decimals (its work estimate is made for (8)).
     pub fn elevate_by_fraction_free(&self, r: usize) -> Result<Self> {
         check_degree("degree after elevation", self.degree() as u128 + r as u128)?;
-        if r == 0 {
-            return Ok(self.clone());
+        match r {
+            0 => Ok(self.clone()),
+            1 => self.elevate_fraction_free(),
+            _ => BezierCurve::new(words_then_big(|tier| on_tier!(tier, curve_elevate_by(self, r)))),
         }
-        if r == 1 {
-            return self.elevate_fraction_free();
-        }
-        if let Some(points) = curve_elevate_by::<i128>(self, r) {
-            return BezierCurve::new(points);
-        }
-        if r <= self.degree() {
-            let mut c = self.elevate_fraction_free()?;
-            for _ in 1..r {
-                c = c.elevate_fraction_free()?;
-            }
-            return Ok(c);
-        }
-        BezierCurve::new(curve_elevate_by::<BigInt>(self, r).expect("big integers do not overflow"))
     }
 }
 
