@@ -9,6 +9,7 @@ from fractions import Fraction
 import pytest
 
 from casteljau_oracle import Oracle, OracleError, OracleInputError, assert_within_bound, ulps
+from _reference import de_casteljau
 
 
 def test_every_op_has_a_helper(casteljau_oracle):
@@ -68,15 +69,6 @@ def test_ulps_counts_floats_between():
     assert ulps([1.0, 1.0], 1.0) == [0, 0]
     with pytest.raises(OracleError):
         ulps("x", 1.0)
-
-
-def de_casteljau(points, t):
-    s = 1.0 - t
-    column = [list(p) for p in points]
-    for r in range(1, len(points)):
-        for i in range(len(points) - r):
-            column[i] = [s * a + t * b for a, b in zip(column[i], column[i + 1])]
-    return column[0]
 
 
 def test_assert_within_bound_passes_a_correct_answer_and_explains_a_wrong_one(casteljau_oracle):

@@ -17,17 +17,9 @@ from casteljau_oracle.strategies import (  # noqa: E402
     rational_curves,
     surfaces,
 )
+from _reference import de_casteljau  # noqa: E402
 
 SETTINGS = settings(deadline=None, max_examples=150, derandomize=True, database=None)
-
-
-def de_casteljau(points, t):
-    s = 1.0 - t
-    column = [list(p) for p in points]
-    for r in range(1, len(points)):
-        for i in range(len(points) - r):
-            column[i] = [s * a + t * b for a, b in zip(column[i], column[i + 1])]
-    return column[0]
 
 
 def sloppy(points, t):
