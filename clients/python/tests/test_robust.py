@@ -66,7 +66,8 @@ def interrupt_when_reading(o, delay):
         while not o._lock.locked():  # held for the whole exchange
             threading.Event().wait(0.001)
         threading.Event().wait(delay)
-        signal.pthread_kill(main, signal.SIGALRM)
+        if o._lock.locked():  # an exchange that already ended is not interrupted
+            signal.pthread_kill(main, signal.SIGALRM)
 
     threading.Thread(target=watch, daemon=True).start()
 
@@ -79,7 +80,9 @@ def on_alarm(*_):
 @pytest.mark.parametrize("delay", [0.0, 0.05, 0.3])
 def test_an_interrupted_batch_leaves_nothing_for_the_next_request(casteljau_oracle, delay):
     o = Oracle(casteljau_oracle.binary)
-    big = [{"op": "eval", "points": [[k], [k + 1]], "t": "1/2"} for k in range(40000)]
+    # long enough to be still under way at the latest delay on a fast machine (40,000 took
+    # under 0.3 s here)
+    big = [{"op": "eval", "points": [[k], [k + 1]], "t": "1/2"} for k in range(400000)]
     old = signal.signal(signal.SIGALRM, on_alarm)
     try:
         interrupt_when_reading(o, delay)
