@@ -204,19 +204,6 @@ impl Decls {
         self.ranges.iter().any(IntRange::is_open)
     }
 
-    /// The declarations with each open range closed after `extra` values past its first.
-    pub(crate) fn closed_after(&self, extra: i64) -> Decls {
-        let ranges = self
-            .ranges
-            .iter()
-            .map(|r| IntRange {
-                to: Some(r.to.clone().unwrap_or_else(|| format!("({}) + {extra}", r.from))),
-                ..r.clone()
-            })
-            .collect();
-        Decls { ranges, ..self.clone() }
-    }
-
     /// Whether the claim is decided by symbolic expansion (it declares symbols or vectors).
     pub fn symbolic(&self) -> bool {
         self.symbols.is_some() || self.vectors.is_some()
@@ -271,6 +258,17 @@ impl Decls {
         );
         out
     }
+}
+
+/// The ranges with each open one closed after `extra` values past its first.
+pub(crate) fn close_ranges(ranges: &[IntRange], extra: i64) -> Vec<IntRange> {
+    ranges
+        .iter()
+        .map(|r| IntRange {
+            to: Some(r.to.clone().unwrap_or_else(|| format!("({}) + {extra}", r.from))),
+            ..r.clone()
+        })
+        .collect()
 }
 
 /// The name a definition `f(i) = …` defines.

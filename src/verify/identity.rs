@@ -12,17 +12,16 @@ use super::sampling::check_chain;
 use crate::error::Result;
 use crate::quadratic::QuadraticIrrational;
 
-/// Checks `members[0] = members[1] = …` over `decls`; a proof over finite ranges is
-/// `proved_in_range` with the ranges.
-pub fn check_identity(id: &str, decls: &Decls, members: &[String], detail: bool) -> Result<Checked> {
-    let ctx = Ctx::new(id, decls, Vec::new())?;
+/// Checks `members[0] = members[1] = …` in the claim's context; a proof over finite ranges
+/// is `proved_in_range` with the ranges.
+pub fn check_identity(ctx: &Ctx<'_>, members: &[String], detail: bool) -> Result<Checked> {
     let sides: Vec<Expr> = members.iter().map(|s| ctx.expr(s)).collect::<Result<_>>()?;
     let out = if ctx.symbolic() {
-        check_chain_symbolic(&ctx, &sides, detail)?
+        check_chain_symbolic(ctx, &sides, detail)?
     } else {
-        chain_in_field(&ctx, &sides, detail)?
+        chain_in_field(ctx, &sides, detail)?
     };
-    if decls.ranges.is_empty() {
+    if ctx.decls.ranges.is_empty() {
         return Ok(out);
     }
     Ok(out.in_range(ctx.range_text()))
@@ -50,7 +49,7 @@ pub fn uses_sqrt(decls: &Decls, exprs: &[Expr]) -> bool {
 
 /// Checks a chain in exact rationals, or in the quadratic irrationals when a `sqrt` occurs.
 pub fn chain_in_field(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Result<Checked> {
-    if uses_sqrt(ctx.decls, sides) {
+    if uses_sqrt(&ctx.decls, sides) {
         let mut out = check_chain::<QuadraticIrrational>(ctx, sides, detail)?;
         out.certificate = format!("{} (exact arithmetic in Q(√d))", out.certificate);
         Ok(out)
@@ -59,14 +58,11 @@ pub fn chain_in_field(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Result<Che
     }
 }
 
-/// An identity to prove over declarations: what identity claims are, and what other claims
-/// (a theorem's parts, a claim written with its ranges opened) lower to.
-#[derive(Clone, Debug)]
-pub struct Goal {
-    /// The claim's id (for messages).
-    pub id: String,
-    /// What the expressions may use.
-    pub decls: Decls,
+/// An identity to prove in a claim's context: what identity claims are, and what other
+/// claims (a claim written with its ranges opened) lower to.
+pub struct Goal<'c> {
+    /// The elaborated declarations.
+    pub ctx: Ctx<'c>,
     /// The chain to prove.
     pub identity: Identity,
 }

@@ -16,7 +16,7 @@
 //! [`super::symbolic::nonneg_for_every`] (each term a product of factors ≥ 0 on `[a, b]`), after
 //! the first values are evaluated as above.
 
-use super::claims::{Decls, Inequality, Relation};
+use super::claims::{Inequality, Relation};
 use super::context::Ctx;
 use super::eval::{Alg, Deg, Evaluator, Value, VarEnv};
 use super::expr::Expr;
@@ -274,14 +274,15 @@ fn eval_at(v: &RatFunc, x: &BigRational) -> Result<BigRational> {
 
 /// Checks an `inequality` claim with open ranges: the first values by [`check_inequality`],
 /// every value by [`super::symbolic::nonneg_for_every`].
-pub fn check_for_every(id: &str, decls: &Decls, ineq: &Inequality, detail: bool) -> Result<Checked> {
+/// `claim` is the claim's context, over its open ranges.
+pub fn check_for_every(claim: &Ctx<'_>, ineq: &Inequality, detail: bool) -> Result<Checked> {
+    let (id, decls) = (claim.id, &*claim.decls);
     if ineq.relation == Relation::Greater {
         return Err(Error::Domain(format!(
             "claim {id}: a strict inequality for every n is not supported (only ≥ by nonnegative factors)"
         )));
     }
-    let closed = super::symbolic::closed_decls(decls);
-    let ctx = Ctx::new(id, &closed, Vec::new())?;
+    let ctx = claim.closed_after(super::symbolic::CROSS_CHECK)?;
     let evaluated = check_inequality(&ctx, ineq, false)?;
     if evaluated.verdict() == Verdict::Fails {
         return Ok(evaluated);

@@ -35,6 +35,7 @@ use crate::rational::RationalBezierCurve;
 use crate::surface::BezierSurface;
 use num_rational::BigRational;
 use num_traits::Zero;
+use std::borrow::Cow;
 use std::collections::BTreeMap;
 use std::rc::Rc;
 
@@ -53,21 +54,32 @@ pub fn check_claim(claim: &Claim, detail: bool) -> Result<Checked> {
             claim.uses.join(", ")
         )));
     }
-    check_citing(claim, &Ok(Vec::new()), detail)
+    check_citing(claim, &Ok(Vec::new()), detail).map(|(out, _)| out)
 }
 
 /// Checks one claim with the lemmas it cites, or the reason they cannot serve (a cited claim
 /// not proved for every value): a claim with open ranges then is that error, one over finite
-/// ranges is checked case by case as without them.
-pub(crate) fn check_citing(claim: &Claim, lemmas: &Result<Vec<Lemma>>, detail: bool) -> Result<Checked> {
+/// ranges is checked case by case as without them. The claim is elaborated once, here; its
+/// context is returned with the outcome (the note on its scope and its lemma read it).
+pub(crate) fn check_citing<'c>(
+    claim: &'c Claim,
+    lemmas: &Result<Vec<Lemma>>,
+    detail: bool,
+) -> Result<(Checked, Ctx<'c>)> {
     super::names::check_declarations(claim)?;
     if claim.for_every() {
         if let (Some(identity), false) = (claim.kind.identity(), claim.decls.symbolic()) {
             let lemmas = lemmas.as_ref().map_err(|e| Error::Domain(e.to_string()))?;
-            return super::symbolic::check(&claim.id, &claim.decls, &identity, lemmas, detail);
+            let ctx = elaborate(claim)?;
+            let out = super::symbolic::check(&ctx, &identity, lemmas, detail)?;
+            return Ok((out, ctx));
         }
         return match &claim.kind {
-            Kind::Inequality(ineq) => super::inequality::check_for_every(&claim.id, &claim.decls, ineq, detail),
+            Kind::Inequality(ineq) => {
+                let ctx = elaborate(claim)?;
+                let out = super::inequality::check_for_every(&ctx, ineq, detail)?;
+                Ok((out, ctx))
+            }
             _ => Err(Error::Parse(format!(
                 "claim {}: open ranges (n = 0..) are for identity (without symbols or vectors) and inequality claims",
                 claim.id
@@ -86,15 +98,10 @@ pub(crate) fn check_citing(claim: &Claim, lemmas: &Result<Vec<Lemma>>, detail: b
             claim.id
         )));
     }
-    let bound_by_kind = match &claim.kind {
-        Kind::Implicit(i) => i.coordinates(),
-        Kind::BezierPoints(b) => vec![b.parameter()],
-        _ => Vec::new(),
-    };
-    let ctx = Ctx::new(&claim.id, &claim.decls, bound_by_kind)?;
+    let ctx = elaborate(claim)?;
     let out = check_kind(&ctx, &claim.kind, detail)?;
     if out.proof().is_none() {
-        return Ok(out);
+        return Ok((out, ctx));
     }
     let out = library_operations(&ctx, &claim.kind)
         .into_iter()
@@ -104,10 +111,57 @@ pub(crate) fn check_citing(claim: &Claim, lemmas: &Result<Vec<Lemma>>, detail: b
         _ if claim.has_ranges() => Some(ctx.range_text()),
         _ => None,
     };
-    Ok(match scope {
+    let out = match scope {
         Some(range) => out.in_range(range),
         None => out,
-    })
+    };
+    Ok((out, ctx))
+}
+
+/// The claim elaborated: its declarations, with the objects its kind lowers it to (a power
+/// form's curve with the printed points, Enneper's surface as a definition) and the names
+/// the kind binds.
+pub(crate) fn elaborate(claim: &Claim) -> Result<Ctx<'_>> {
+    let decls = &claim.decls;
+    let (decls, bound_by_kind) = match &claim.kind {
+        Kind::Implicit(i) => (Cow::Borrowed(decls), i.coordinates()),
+        Kind::BezierPoints(b) => (
+            Cow::Owned(Decls {
+                curves: Some(BTreeMap::from([(
+                    "P".to_string(),
+                    CurveSpec {
+                        points: b.points.clone(),
+                        weights: None,
+                    },
+                )])),
+                vars: Some(vec![power_form_var(b).to_string()]),
+                ..decls.clone()
+            }),
+            vec![b.parameter()],
+        ),
+        Kind::Enneper => (
+            Cow::Owned(Decls {
+                vars: Some(vec!["s".into(), "t".into()]),
+                defs: vec![ENNEPER.into()],
+                ..decls.clone()
+            }),
+            Vec::new(),
+        ),
+        _ => (Cow::Borrowed(decls), Vec::new()),
+    };
+    Ctx::new(&claim.id, decls, bound_by_kind)
+}
+
+/// Enneper's surface, the definition an `enneper` claim is lowered with.
+const ENNEPER: &str = "E(u, v) = (u - u^3/3 + u*v^2, v - v^3/3 + v*u^2, u^2 - v^2)";
+
+/// The parameter of the curve with a power form's printed points (not the power form's).
+fn power_form_var(b: &BezierPoints) -> &'static str {
+    if b.parameter() == "t" {
+        "s"
+    } else {
+        "t"
+    }
 }
 
 /// The library operations on a polygon or net (`bsum`, `elev`, `isou`, …) that the claim's
@@ -127,18 +181,18 @@ fn library_operations(ctx: &Ctx<'_>, kind: &Kind) -> Vec<Trusted> {
 
 fn check_kind(ctx: &Ctx<'_>, kind: &Kind, detail: bool) -> Result<Checked> {
     match kind {
-        Kind::Identity(identity) => check_identity(ctx.id, ctx.decls, &identity.sides.members(), detail),
+        Kind::Identity(identity) => check_identity(ctx, &identity.sides.members(), detail),
         Kind::Implicit(implicit) => check_implicit(ctx, implicit, detail),
         Kind::BezierPoints(b) => check_bezier_points(ctx, b, detail),
         Kind::ConicType(c) => check_conic_type(ctx, c),
         Kind::Implies(i) => check_implies(ctx, i, detail),
-        Kind::Theorem(t) => theorems::check_theorem(ctx.id, t, detail),
+        Kind::Theorem(t) => theorems::check_theorem(ctx, t, detail),
         Kind::Enneper => check_enneper(ctx, detail),
         Kind::WeightType(w) => check_weight_type(ctx, w),
         Kind::Convergence(c) => theorems::check_convergence(ctx, c, detail),
         Kind::Fit(f) => check_fit(ctx, f),
         Kind::Inequality(i) => super::inequality::check_inequality(ctx, i, detail),
-        Kind::Vanishes(v) => check_identity(ctx.id, ctx.decls, &v.identity().sides.members(), detail),
+        Kind::Vanishes(v) => check_identity(ctx, &v.identity().sides.members(), detail),
     }
 }
 
@@ -164,29 +218,19 @@ fn check_implicit(ctx: &Ctx<'_>, implicit: &Implicit, detail: bool) -> Result<Ch
 }
 
 /// Lowered to the identity `P(t) = power(a + (b − a) t)` over the curve `P` with the printed
-/// points, then compared with the library's conversion.
-fn check_bezier_points(outer: &Ctx<'_>, claim: &BezierPoints, detail: bool) -> Result<Checked> {
+/// points (declared by the claim's elaboration), then compared with the library's conversion.
+fn check_bezier_points(ctx: &Ctx<'_>, claim: &BezierPoints, detail: bool) -> Result<Checked> {
     let param = claim.parameter();
-    let t = if param == "t" { "s" } else { "t" };
+    let t = power_form_var(claim);
     let [a, b] = &claim.interval;
     let pts = &claim.points;
-    let curve = CurveSpec {
-        points: pts.clone(),
-        weights: None,
-    };
-    let decls = Decls {
-        curves: Some(BTreeMap::from([("P".to_string(), curve)])),
-        vars: Some(vec![t.to_string()]),
-        ..outer.decls.clone()
-    };
-    let ctx = Ctx::new(outer.id, &decls, vec![param.clone()])?;
     let power = ctx.expr(&claim.power)?;
     let (ea, eb) = (ctx.expr(&a.text()?)?, ctx.expr(&b.text()?)?);
     // u = a + (b - a) t
     let u = Expr::add(ea, Expr::mul(Expr::sub(eb, ctx.expr(&a.text()?)?), Expr::Var(t.into())));
     let lhs = Expr::Call("P".into(), vec![Expr::Var(t.into())]);
     let rhs = substitute(&power, std::slice::from_ref(&param), &[u]);
-    let out = check_chain::<BigRational>(&ctx, &[lhs, rhs], detail)?;
+    let out = check_chain::<BigRational>(ctx, &[lhs, rhs], detail)?;
     if out.proof().is_none() {
         return Ok(out);
     }
@@ -392,7 +436,7 @@ fn check_weight_type(ctx: &Ctx<'_>, claim: &WeightType) -> Result<Checked> {
         Some(proof) => Checked::proved(proof, format!("{detail} ⇒ {kind}: proof")),
         None => Checked::fails(format!("{detail} ⇒ {kind}, not {printed}")),
     };
-    if uses_sqrt(ctx.decls, &[]) {
+    if uses_sqrt(&ctx.decls, &[]) {
         let pts = points::<QuadraticIrrational>(&spec.points)?;
         let ws = w
             .iter()
@@ -462,15 +506,10 @@ fn check_enneper(ctx: &Ctx<'_>, detail: bool) -> Result<Checked> {
             format!("({})*t + ({})", m.gamma, m.delta),
         )
     };
-    let decls = Decls {
-        vars: Some(vec!["s".into(), "t".into()]),
-        defs: vec!["E(u, v) = (u - u^3/3 + u*v^2, v - v^3/3 + v*u^2, u^2 - v^2)".into()],
-        ..ctx.decls.clone()
-    };
-    let sub = Ctx::new(ctx.id, &decls, Vec::new())?;
-    let lhs = sub.expr(&format!("{name}(s, t)"))?;
-    let rhs = sub.expr(&format!("({})*E({u}, {v})", m.lambda))?;
-    let out = check_chain::<BigRational>(&sub, &[lhs, rhs], detail)?;
+    // The claim is elaborated with Enneper's surface as the definition `E` (see `elaborate`).
+    let lhs = ctx.expr(&format!("{name}(s, t)"))?;
+    let rhs = ctx.expr(&format!("({})*E({u}, {v})", m.lambda))?;
+    let out = check_chain::<BigRational>(ctx, &[lhs, rhs], detail)?;
     // The library's match only proposes the parameters; the proof is the identity's.
     let Some(proof) = out.proof().cloned() else {
         return Ok(Checked::fails(format!(

@@ -181,18 +181,20 @@ impl Lemma {
     /// The lemma a proved claim states: an identity whose left side (first member) is an object
     /// of its polygon applied to distinct variables, each a range variable or a parameter; every
     /// range variable is one of them or the polygon's degree.
-    pub(crate) fn from_claim(claim: &Claim) -> Result<Lemma> {
+    /// `ctx` is the claim's elaborated context.
+    pub(crate) fn from_claim(claim: &Claim, ctx: &Ctx<'_>) -> Result<Lemma> {
         let Some(identity) = claim.kind.identity() else {
             return Err(Error::Domain(format!(
                 "claim {} cannot serve as a lemma: it is not an identity",
                 claim.id
             )));
         };
-        Lemma::from_parts(&claim.id, &claim.decls, &identity)
+        Lemma::from_parts(ctx, &identity)
     }
 
-    /// The lemma of an identity `id` over `decls` (see [`Lemma::from_claim`]).
-    pub(crate) fn from_parts(id: &str, decls: &Decls, identity: &Identity) -> Result<Lemma> {
+    /// The lemma of an identity in the context of its claim (see [`Lemma::from_claim`]).
+    pub(crate) fn from_parts(ctx: &Ctx<'_>, identity: &Identity) -> Result<Lemma> {
+        let (id, decls) = (ctx.id, &*ctx.decls);
         let not_a_lemma = |why: &str| Error::Domain(format!("claim {id} cannot serve as a lemma: {why}"));
         let Some(polygon) = &decls.polygon else {
             return Err(not_a_lemma("it declares no polygon"));
@@ -201,8 +203,6 @@ impl Lemma {
             Sides::Pair(l, r) => vec![l.clone(), r.clone()],
             Sides::Chain(c) => vec![c[0].clone(), c[c.len() - 1].clone()],
         };
-        let closed = decls.closed_after(1);
-        let ctx = Ctx::new(id, &closed, Vec::new())?;
         let lhs = ctx.expr(&members[0])?;
         let formula = ctx.expr(&members[1])?;
         let Some((object, args)) = Object::of(&lhs, &polygon.name) else {

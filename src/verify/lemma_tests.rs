@@ -1,6 +1,8 @@
 // Induction from a first value other than 0: the base read from the definition there.
 use super::super::claims::parse_file;
+use super::super::context::Ctx;
 use super::super::symbolic::attempt_for_every;
+use std::borrow::Cow;
 use std::path::Path;
 
 /// Claims by induction from a first value other than 0 (the scheme and the differences
@@ -72,7 +74,8 @@ fn induction_alone(id: &str) -> Result<String, String> {
     let file = parse_file(FROM_ONE, Path::new("from_one.toml")).unwrap();
     let claim = file.claim.iter().find(|c| c.id == id).unwrap();
     let identity = claim.kind.identity().unwrap();
-    attempt_for_every(id, &claim.decls, &identity).map_err(|e| e.to_string())
+    let ctx = Ctx::new(&claim.id, Cow::Borrowed(&claim.decls), Vec::new()).unwrap();
+    attempt_for_every(&ctx, &identity).map_err(|e| e.to_string())
 }
 
 #[test]

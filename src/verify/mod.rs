@@ -121,19 +121,40 @@ pub fn prove_files(files: &[claims::ClaimFile], progress: &mut dyn FnMut(usize, 
     let outcomes = jobs
         .iter()
         .zip(decided)
-        .map(|(&(f, c), checked)| outcome(f, c, checked))
+        .map(|(&(f, c), d)| outcome(f, c, d.checked, d.range_bound))
         .collect();
     Ok(Report { outcomes })
 }
 
 type Job<'a> = (&'a claims::ClaimFile, &'a claims::Claim);
 
+/// A claim decided, with what is read from its one elaboration: the note on its scope and,
+/// for a claim proved for every value, the lemma it states (for the claims citing it).
+struct Decided {
+    checked: Checked,
+    range_bound: Option<String>,
+    lemma: Option<Result<lemma::Lemma>>,
+}
+
+/// Checks one claim (elaborated once, in [`kinds::check_citing`]) with the lemmas it cites.
+fn decide_one(claim: &claims::Claim, lemmas: &Result<Vec<lemma::Lemma>>, detail: bool) -> Result<Decided> {
+    let (checked, ctx) = kinds::check_citing(claim, lemmas, detail)?;
+    let range_bound = scope::range_bound_in(claim, &ctx, checked.verdict());
+    let lemma =
+        (checked.verdict() == Verdict::Proved && claim.for_every()).then(|| lemma::Lemma::from_claim(claim, &ctx));
+    Ok(Decided {
+        checked,
+        range_bound,
+        lemma,
+    })
+}
+
 /// Every claim of `jobs` checked, the cited ones first (see [`prove_files`]).
-fn decide(jobs: &[Job<'_>], progress: &mut dyn FnMut(usize, usize, &str)) -> Vec<Checked> {
+fn decide(jobs: &[Job<'_>], progress: &mut dyn FnMut(usize, usize, &str)) -> Vec<Decided> {
     use rayon::prelude::*;
     let total = jobs.len();
     let rounds = citation_rounds(jobs);
-    let mut decided: Vec<Option<Checked>> = vec![None; total];
+    let mut decided: Vec<Option<Decided>> = (0..total).map(|_| None).collect();
     let mut done = 0;
     for round in rounds {
         // Each round's claims cite only claims decided in earlier rounds.
@@ -143,14 +164,17 @@ fn decide(jobs: &[Job<'_>], progress: &mut dyn FnMut(usize, usize, &str)) -> Vec
         let check = |&(index, ref cited): &(usize, Result<Vec<usize>>)| {
             let lemmas = cited.clone().and_then(|cited| lemmas_of(jobs, decided_so_far, &cited));
             // A claim that cannot be decided is reported as such; it never hides the others.
-            let checked =
-                kinds::check_citing(jobs[index].1, &lemmas, false).unwrap_or_else(|e| Checked::error(e.to_string()));
-            (index, checked)
+            let decided = decide_one(jobs[index].1, &lemmas, false).unwrap_or_else(|e| Decided {
+                checked: Checked::error(e.to_string()),
+                range_bound: None,
+                lemma: None,
+            });
+            (index, decided)
         };
         if rayon::current_thread_index().is_some() {
             // Called from a worker of the pool (a caller's parallel loop): no thread of the pool
             // may wait for the others, so the round runs on the pool and reports at its end.
-            let results: Vec<(usize, Checked)> = round.par_iter().map(check).collect();
+            let results: Vec<(usize, Decided)> = round.par_iter().map(check).collect();
             for (index, checked) in results {
                 done += 1;
                 progress(done, total, &jobs[index].1.id);
@@ -159,7 +183,7 @@ fn decide(jobs: &[Job<'_>], progress: &mut dyn FnMut(usize, usize, &str)) -> Vec
             continue;
         }
         let (done_tx, done_rx) = std::sync::mpsc::channel::<usize>();
-        let results: Vec<(usize, Checked)> = std::thread::scope(|scope| {
+        let results: Vec<(usize, Decided)> = std::thread::scope(|scope| {
             let worker = scope.spawn(move || {
                 round
                     .par_iter()
@@ -242,13 +266,16 @@ fn citation_rounds(jobs: &[Job<'_>]) -> Vec<Vec<(usize, Result<Vec<usize>>)>> {
 }
 
 /// The lemmas of the cited claims, each proved for every value; otherwise why not.
-fn lemmas_of(jobs: &[Job<'_>], decided: &[Option<Checked>], cited: &[usize]) -> Result<Vec<lemma::Lemma>> {
+fn lemmas_of(jobs: &[Job<'_>], decided: &[Option<Decided>], cited: &[usize]) -> Result<Vec<lemma::Lemma>> {
     cited
         .iter()
         .map(|&k| {
             let claim = jobs[k].1;
-            match decided[k].as_ref().map(Checked::verdict) {
-                Some(Verdict::Proved) if claim.for_every() => lemma::Lemma::from_claim(claim),
+            let d = decided[k].as_ref();
+            match d.map(|d| d.checked.verdict()) {
+                Some(Verdict::Proved) if claim.for_every() => d
+                    .and_then(|d| d.lemma.clone())
+                    .unwrap_or_else(|| Err(Error::Domain(format!("the lemma of {} was not read", claim.id)))),
                 Some(v) => Err(Error::Domain(format!(
                     "it cites {}, which is {} and not proved for every value (a lemma must be; a claim resting on a lemma proved in a range is at most proved in that range)",
                     claim.id,
@@ -260,8 +287,7 @@ fn lemmas_of(jobs: &[Job<'_>], decided: &[Option<Checked>], cited: &[usize]) -> 
         .collect()
 }
 
-fn outcome(f: &claims::ClaimFile, c: &claims::Claim, checked: Checked) -> ClaimOutcome {
-    let range_bound = scope::range_bound(c, checked.verdict());
+fn outcome(f: &claims::ClaimFile, c: &claims::Claim, checked: Checked, range_bound: Option<String>) -> ClaimOutcome {
     let proof = checked.proof();
     ClaimOutcome {
         id: c.id.clone(),
@@ -281,10 +307,11 @@ fn outcome(f: &claims::ClaimFile, c: &claims::Claim, checked: Checked) -> ClaimO
     }
 }
 
-/// One claim checked with its steps, after the claims it cites (and theirs).
-fn explained(files: &[claims::ClaimFile], claim: &claims::Claim) -> Result<Checked> {
+/// One claim checked with its steps, after the claims it cites (and theirs), and the note on
+/// its scope.
+fn explained(files: &[claims::ClaimFile], claim: &claims::Claim) -> Result<(Checked, Option<String>)> {
     if claim.uses.is_empty() {
-        return kinds::check_claim(claim, true);
+        return decide_one(claim, &Ok(Vec::new()), true).map(|d| (d.checked, d.range_bound));
     }
     let all: Vec<Job<'_>> = files.iter().flat_map(|f| f.claim.iter().map(move |c| (f, c))).collect();
     let mut wanted: Vec<&str> = claim.uses.iter().map(String::as_str).collect();
@@ -317,12 +344,12 @@ fn explained(files: &[claims::ClaimFile], claim: &claims::Claim) -> Result<Check
         .find(|(k, _)| *k == jobs.len() - 1)
         .map(|(_, cited)| cited.clone())
         .expect("every claim is in a round");
-    let decided: Vec<Option<Checked>> = decide(&jobs[..jobs.len() - 1], &mut |_, _, _| {})
+    let decided: Vec<Option<Decided>> = decide(&jobs[..jobs.len() - 1], &mut |_, _, _| {})
         .into_iter()
         .map(Some)
         .collect();
     let lemmas = cited.and_then(|cited| lemmas_of(&jobs, &decided, &cited));
-    kinds::check_citing(claim, &lemmas, true)
+    decide_one(claim, &lemmas, true).map(|d| (d.checked, d.range_bound))
 }
 
 fn text_name(f: &claims::ClaimFile) -> String {
@@ -351,8 +378,7 @@ pub fn explain(paths: &[PathBuf], id: &str, style: ExplainStyle) -> Result<Strin
 pub fn explain_files(files: &[claims::ClaimFile], id: &str, style: ExplainStyle) -> Result<String> {
     for f in files {
         if let Some(c) = f.claim.iter().find(|c| c.id == id) {
-            let checked = explained(files, c).map_err(|e| in_claim(f, id, e))?;
-            let range_bound = scope::range_bound(c, checked.verdict());
+            let (checked, range_bound) = explained(files, c).map_err(|e| in_claim(f, id, e))?;
             return Ok(report::explain_text(f, c, &checked, range_bound.as_deref(), style));
         }
     }
@@ -366,4 +392,41 @@ pub fn explain_files(files: &[claims::ClaimFile], id: &str, style: ExplainStyle)
             near.join(", ")
         )
     }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every claim of the texts is elaborated once ([`context::Ctx::new`]): its check on every
+    /// route, the note on its scope and its lemma all take that one context (the cases of a
+    /// claim are derived from it without parsing its definitions again). The claims are
+    /// decided here one after the other on this thread, in the rounds `prove` uses.
+    #[test]
+    fn every_claim_of_the_texts_is_elaborated_once() {
+        let files = claims::builtin_files().unwrap();
+        let jobs: Vec<Job<'_>> = files.iter().flat_map(|f| f.claim.iter().map(move |c| (f, c))).collect();
+        let mut decided: Vec<Option<Decided>> = (0..jobs.len()).map(|_| None).collect();
+        let (mut counted, mut in_range, mut cited) = (0, 0, 0);
+        for round in citation_rounds(&jobs) {
+            for (index, uses) in round {
+                let claim = jobs[index].1;
+                let lemmas = uses.and_then(|uses| lemmas_of(&jobs, &decided, &uses));
+                cited += usize::from(lemmas.as_ref().is_ok_and(|l| !l.is_empty()));
+                let before = context::elaborations();
+                let d = decide_one(claim, &lemmas, false).unwrap_or_else(|e| panic!("{}: {e}", claim.id));
+                let n = context::elaborations() - before;
+                assert_eq!(n, 1, "claim {} is elaborated {n} times", claim.id);
+                in_range += usize::from(d.range_bound.is_some());
+                decided[index] = Some(d);
+                counted += 1;
+            }
+        }
+        assert_eq!(counted, jobs.len());
+        // The routes that derive contexts were taken: notes on the scope, lemmas cited.
+        assert!(
+            in_range > 10 && cited > 0,
+            "{in_range} notes, {cited} claims citing lemmas"
+        );
+    }
 }

@@ -294,7 +294,7 @@ fn prepare<T: Exact>(
     detail: bool,
 ) -> Result<Prepared<T>> {
     let params = ctx.params(&[lhs, rhs]);
-    let mut num: NumEnv<T> = NumEnv::new(ctx.decls)?;
+    let mut num: NumEnv<T> = NumEnv::new(&ctx.decls)?;
     // Shape the symbolic polygon/net for this instance. Both sides are affine in all their
     // control points together, so one basis covers every declared polygon and net at once:
     // all zero, then each single control point of each object set to 1.
@@ -666,7 +666,7 @@ mod tests {
     #[test]
     fn the_work_estimate_grows_with_degree_and_basis() {
         let c = claim("polygon = { name = \"b\", degree = \"3\" }");
-        let ctx = Ctx::new(&c.id, &c.decls, Vec::new()).unwrap();
+        let ctx = Ctx::new(&c.id, std::borrow::Cow::Borrowed(&c.decls), Vec::new()).unwrap();
         let (l, r) = (ctx.expr("b(t)").unwrap(), ctx.expr("bsum(b, t)").unwrap());
         let ints = BTreeMap::new();
         let w = estimate_work::<BigRational>(&ctx, &l, &r, &ints).unwrap();

@@ -25,12 +25,20 @@ pub const PROVABLE: &str = "also provable for every n: write";
 /// The note for a claim with verdict `verdict`: for `proved_in_range`, why it stays bound to
 /// its ranges, or that (and how) it is provable for every n; `None` for every other verdict.
 pub fn range_bound(claim: &Claim, verdict: Verdict) -> Option<String> {
-    (verdict == Verdict::ProvedInRange).then(|| reason(claim))
+    (verdict == Verdict::ProvedInRange).then(|| match super::kinds::elaborate(claim) {
+        Ok(ctx) => reason(claim, &ctx),
+        Err(e) => readable(&e),
+    })
 }
 
-fn reason(claim: &Claim) -> String {
+/// [`range_bound`] for a claim already elaborated (`ctx`, its context).
+pub(crate) fn range_bound_in(claim: &Claim, ctx: &Ctx<'_>, verdict: Verdict) -> Option<String> {
+    (verdict == Verdict::ProvedInRange).then(|| reason(claim, ctx))
+}
+
+fn reason(claim: &Claim, ctx: &Ctx<'_>) -> String {
     if let Kind::Theorem(t) = &claim.kind {
-        return theorem_reason(&claim.id, t);
+        return theorem_reason(ctx, t);
     }
     let Some(identity) = claim.kind.identity() else {
         return format!(
@@ -38,18 +46,17 @@ fn reason(claim: &Claim) -> String {
             claim.kind.name()
         );
     };
-    let goal = Goal {
-        id: claim.id.clone(),
-        decls: claim.decls.clone(),
-        identity: identity.into_owned(),
-    };
-    let decls = &goal.decls;
+    let decls = &claim.decls;
     if decls.symbolic() {
         return "it expands symbols or vectors exactly, which the symbolic route does not take".into();
     }
     if decls.curves.is_some() || decls.surfaces.is_some() {
         return "it uses concrete curves or surfaces, evaluated per degree".into();
     }
+    let goal = Goal {
+        ctx: ctx.clone(),
+        identity: identity.into_owned(),
+    };
     let objects = library_objects(&goal);
     if !objects.is_empty() {
         return format!(
@@ -57,23 +64,29 @@ fn reason(claim: &Claim) -> String {
             listed(&objects)
         );
     }
-    let (opened, written) = open_ranges(&goal);
+    let (ranges, written) = open_ranges(&goal);
     if written.is_empty() {
         return "no range with a constant upper bound to open".into();
     }
-    match attempt(&opened) {
+    let outcome = match goal.ctx.with_ranges(ranges) {
+        Ok(ctx) => {
+            let opened = Goal { ctx, ..goal };
+            attempt(&opened).map_err(|(k, e)| (step(&opened, k), e))
+        }
+        Err(e) => Err((String::new(), e)),
+    };
+    match outcome {
         Ok(ranges) => format!("{PROVABLE} {}", quoted(&ranges)),
-        Err((k, e)) => format!(
-            "with {} the symbolic proof does not go through{}: {}",
+        Err((at, e)) => format!(
+            "with {} the symbolic proof does not go through{at}: {}",
             written.join(", "),
-            step(&opened, k),
             readable(&e)
         ),
     }
 }
 
 /// ` at equality 3 of 5 (`a = b`)` for a chain of more than two sides, else empty.
-fn step(goal: &Goal, k: usize) -> String {
+fn step(goal: &Goal<'_>, k: usize) -> String {
     match &goal.identity.sides {
         Sides::Chain(chain) if chain.len() > 2 => format!(
             " at equality {} of {} (`{} = {}`)",
@@ -87,14 +100,14 @@ fn step(goal: &Goal, k: usize) -> String {
 }
 
 /// The sides of equality `k` (the claim's `lhs`, `rhs`, or two neighbours of its chain).
-fn sides(goal: &Goal, k: usize) -> Vec<String> {
+fn sides(goal: &Goal<'_>, k: usize) -> Vec<String> {
     goal.identity.sides.members().into_iter().skip(k).take(2).collect()
 }
 
 /// The symbolic proof of each equality of a goal with open ranges, in order: the index of
 /// the first that does not go through, with the reason.
-fn attempt_equalities(goal: &Goal) -> Result<(), (usize, Error)> {
-    let attempt = |identity: &Identity| super::symbolic::attempt_for_every(&goal.id, &goal.decls, identity);
+fn attempt_equalities(goal: &Goal<'_>) -> Result<(), (usize, Error)> {
+    let attempt = |identity: &Identity| super::symbolic::attempt_for_every(&goal.ctx, identity);
     match &goal.identity.sides {
         Sides::Chain(chain) if chain.len() > 2 => {
             for (k, pair) in chain.windows(2).enumerate() {
@@ -115,23 +128,22 @@ fn attempt_equalities(goal: &Goal) -> Result<(), (usize, Error)> {
 /// stops it has a sum starting at a variable bounded by an open one — with its ranges
 /// reordered ([`reordered`]): `Ok` with the ranges that work, else the first failing
 /// equality and the reason.
-fn attempt(goal: &Goal) -> Result<Vec<IntRange>, (usize, Error)> {
-    let written = &goal.decls.ranges;
+fn attempt(goal: &Goal<'_>) -> Result<Vec<IntRange>, (usize, Error)> {
+    let written = &goal.ctx.decls.ranges;
     let (k, first) = match attempt_equalities(goal) {
         Ok(()) => return Ok(written.clone()),
         Err(failed) => failed,
     };
     if let Some((rs, v)) = reordered(written) {
         if sums_from(goal, &sides(goal, k), &v) {
-            let again = Goal {
-                decls: Decls {
-                    ranges: rs.clone(),
-                    ..goal.decls.clone()
-                },
-                ..goal.clone()
-            };
-            if attempt_equalities(&again).is_ok() {
-                return Ok(rs);
+            if let Ok(ctx) = goal.ctx.with_ranges(rs.clone()) {
+                let again = Goal {
+                    ctx,
+                    identity: goal.identity.clone(),
+                };
+                if attempt_equalities(&again).is_ok() {
+                    return Ok(rs);
+                }
             }
         }
     }
@@ -139,7 +151,7 @@ fn attempt(goal: &Goal) -> Result<Vec<IntRange>, (usize, Error)> {
 }
 
 /// Whether one of `texts` has a sum whose lower bound uses the variable `v`.
-fn sums_from(goal: &Goal, texts: &[String], v: &str) -> bool {
+fn sums_from(goal: &Goal<'_>, texts: &[String], v: &str) -> bool {
     fn walk(e: &Expr, v: &str) -> bool {
         match e {
             Expr::Sum(_, a, b, body) => a.free_vars().iter().any(|x| x == v) || walk(b, v) || walk(body, v),
@@ -150,11 +162,8 @@ fn sums_from(goal: &Goal, texts: &[String], v: &str) -> bool {
             Expr::Num(_) | Expr::Var(_) => false,
         }
     }
-    let closed = super::symbolic::closed_decls(&goal.decls);
-    let Ok(ctx) = Ctx::new(&goal.id, &closed, Vec::new()) else {
-        return false;
-    };
-    texts.iter().any(|t| ctx.expr(t).is_ok_and(|e| walk(&e, v)))
+    // The sides parse alike over any bounds of the same range variables.
+    texts.iter().any(|t| goal.ctx.expr(t).is_ok_and(|e| walk(&e, v)))
 }
 
 /// `n = c..`, `j = a..=n` (constants, `c ≤ a`) written as `j = a..`, `n = j..`: the same
@@ -201,7 +210,7 @@ fn quoted(ranges: &[IntRange]) -> String {
 
 /// A theorem claim stays in its `degrees` (a theorem takes no open range); the note says
 /// whether that is all that binds it, or the library code it runs.
-fn theorem_reason(id: &str, theorem: &Theorem) -> String {
+fn theorem_reason(ctx: &Ctx<'_>, theorem: &Theorem) -> String {
     let name = theorem.theorem.as_str();
     let head = format!("a theorem claim (`{name}`), checked for each degree of its `degrees`");
     let Some(parts) = super::theorems::identities(name) else {
@@ -220,12 +229,12 @@ fn theorem_reason(id: &str, theorem: &Theorem) -> String {
     let mut objects: Vec<(String, String)> = Vec::new();
     let mut formulas = Vec::new();
     for (min_n, ranges, chain, vars) in parts {
-        let Ok(decls) = super::theorems::part_decls(format!("n = {}..", lo.max(min_n)), &ranges, &vars) else {
+        let part = super::theorems::part_decls(format!("n = {}..", lo.max(min_n)), &ranges, &vars);
+        let Ok(part) = part.and_then(|decls| ctx.with_declarations(decls)) else {
             continue;
         };
         let mut goal = Goal {
-            id: id.to_string(),
-            decls,
+            ctx: part,
             identity: Identity {
                 sides: Sides::Chain(chain),
                 certificates: Vec::new(),
@@ -237,13 +246,13 @@ fn theorem_reason(id: &str, theorem: &Theorem) -> String {
             // Without control points the identity is over no polygon (a polygon's degree
             // would bound `n` from below by its symbolic index).
             if !goal.identity.sides.members().iter().any(|e| e.contains("b[")) {
-                goal = Goal {
-                    decls: Decls {
-                        polygon: None,
-                        ..goal.decls
-                    },
-                    ..goal
+                let without = Decls {
+                    polygon: None,
+                    ..Decls::clone(&goal.ctx.decls)
                 };
+                if let Ok(ctx) = ctx.with_declarations(without) {
+                    goal = Goal { ctx, ..goal };
+                }
             }
             formulas.push(goal);
         }
@@ -261,13 +270,19 @@ fn theorem_reason(id: &str, theorem: &Theorem) -> String {
     }
     let mut forms = Vec::new();
     for g in &formulas {
-        let (opened, _) = open_ranges(g);
-        match attempt(&opened) {
+        let (ranges, _) = open_ranges(g);
+        let outcome = g.ctx.with_ranges(ranges.clone()).map_err(|e| (0, e)).and_then(|ctx| {
+            attempt(&Goal {
+                ctx,
+                identity: g.identity.clone(),
+            })
+        });
+        match outcome {
             Ok(rs) => forms.push(quoted(&rs)),
             Err((_, e)) => {
                 return format!(
                     "{head}; written as an identity claim with {} the symbolic proof does not go through: {}",
-                    quoted(&opened.decls.ranges),
+                    quoted(&ranges),
                     readable(&e)
                 )
             }
@@ -287,11 +302,12 @@ fn open_range(r: &IntRange) -> IntRange {
     }
 }
 
-/// The goal with each constant upper bound dropped, and the opened ranges as written
-/// (`n = 0..`).
-fn open_ranges(goal: &Goal) -> (Goal, Vec<String>) {
+/// The ranges of the goal with each constant upper bound dropped, and the opened ranges as
+/// written (`n = 0..`).
+fn open_ranges(goal: &Goal<'_>) -> (Vec<IntRange>, Vec<String>) {
     let mut written = Vec::new();
     let ranges = goal
+        .ctx
         .decls
         .ranges
         .iter()
@@ -303,14 +319,7 @@ fn open_ranges(goal: &Goal) -> (Goal, Vec<String>) {
             open
         })
         .collect();
-    let opened = Goal {
-        decls: Decls {
-            ranges,
-            ..goal.decls.clone()
-        },
-        ..goal.clone()
-    };
-    (opened, written)
+    (ranges, written)
 }
 
 /// What a library operation of expressions ([`super::methods`]) computes.
@@ -362,20 +371,16 @@ fn readable(e: &Error) -> String {
 }
 
 /// The library objects and operations the goal's expressions use, each once, described.
-fn library_objects(goal: &Goal) -> Vec<String> {
+fn library_objects(goal: &Goal<'_>) -> Vec<String> {
     describe(&objects_of(goal))
 }
 
 /// The `(phrase, name)` of each library object the goal's expressions use.
-fn objects_of(goal: &Goal) -> Vec<(String, String)> {
-    let closed = super::symbolic::closed_decls(&goal.decls);
-    let Ok(ctx) = Ctx::new(&goal.id, &closed, Vec::new()) else {
-        return Vec::new();
-    };
+fn objects_of(goal: &Goal<'_>) -> Vec<(String, String)> {
     let mut found = Vec::new();
     for t in goal.identity.sides.members() {
-        if let Ok(e) = ctx.expr(&t) {
-            objects_in(&goal.decls, &e, &mut found);
+        if let Ok(e) = goal.ctx.expr(&t) {
+            objects_in(&goal.ctx.decls, &e, &mut found);
         }
     }
     found

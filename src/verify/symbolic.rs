@@ -96,17 +96,6 @@ pub const REFUTATION_COMBINATIONS: i64 = 200;
 /// The refutation search starts no new window after this long.
 pub const REFUTATION_TIME: Duration = Duration::from_secs(4);
 
-/// The declarations with each open range closed after [`CROSS_CHECK`] values (for the
-/// evaluation check).
-pub fn closed_decls(decls: &Decls) -> Decls {
-    closed_after(decls, CROSS_CHECK)
-}
-
-/// The declarations with each open range closed after `extra` values past its first.
-fn closed_after(decls: &Decls, extra: i64) -> Decls {
-    decls.closed_after(extra)
-}
-
 /// `p ≥ 0` for every integer point of the open ranges and every `t` in `[a, b]`: on each
 /// piece of the domain every live term is a product of nonnegative factors — a positive
 /// constant or a polynomial in `t` with nonnegative Bernstein coefficients on `[a, b]`,
@@ -212,12 +201,14 @@ pub fn nonneg_for_every(
 /// counterexample (in widening windows, within [`REFUTATION_COMBINATIONS`] and
 /// [`REFUTATION_TIME`], up to the first window that cannot be evaluated); without one the claim
 /// is an error with the reason and the extent of the search.
-pub(crate) fn check(id: &str, decls: &Decls, identity: &Identity, lemmas: &[Lemma], detail: bool) -> Result<Checked> {
-    prove_for_every(id, decls, identity, lemmas, detail).or_else(|reason| refute_in_search(id, decls, identity, reason))
+/// `ctx` is the claim's context, over its open ranges.
+pub(crate) fn check(ctx: &Ctx<'_>, identity: &Identity, lemmas: &[Lemma], detail: bool) -> Result<Checked> {
+    prove_for_every(ctx, identity, lemmas, detail).or_else(|reason| refute_in_search(ctx, identity, reason))
 }
 
-fn refute_in_search(id: &str, decls: &Decls, identity: &Identity, reason: Error) -> Result<Checked> {
-    let open: Vec<&str> = decls
+fn refute_in_search(ctx: &Ctx<'_>, identity: &Identity, reason: Error) -> Result<Checked> {
+    let open: Vec<&str> = ctx
+        .decls
         .ranges
         .iter()
         .filter(|r| r.is_open())
@@ -235,8 +226,10 @@ fn refute_in_search(id: &str, decls: &Decls, identity: &Identity, reason: Error)
             stop = "the search time";
             break;
         }
-        let closed = closed_after(decls, extra);
-        match check_identity(id, &closed, &members, false) {
+        match ctx
+            .closed_after(extra)
+            .and_then(|closed| check_identity(&closed, &members, false))
+        {
             Ok(out) if out.verdict() == Verdict::Fails => return Ok(out),
             Ok(_) => tried = extra + 1,
             Err(_) if tried == 0 => return Err(reason),
@@ -267,13 +260,13 @@ fn refutation_windows(open: u32) -> Vec<i64> {
     w
 }
 
-fn prove_for_every(id: &str, decls: &Decls, identity: &Identity, lemmas: &[Lemma], detail: bool) -> Result<Checked> {
-    let closed = closed_decls(decls);
-    let evaluated = check_identity(id, &closed, &identity.sides.members(), false)?;
+fn prove_for_every(ctx: &Ctx<'_>, identity: &Identity, lemmas: &[Lemma], detail: bool) -> Result<Checked> {
+    let closed = ctx.closed_after(CROSS_CHECK)?;
+    let evaluated = check_identity(&closed, &identity.sides.members(), false)?;
     if evaluated.verdict() == Verdict::Fails {
         return Ok(evaluated);
     }
-    let (cert, log, method) = prove_symbolic(id, decls, identity, &closed, lemmas)?;
+    let (cert, log, method) = prove_symbolic(ctx, identity, &closed, lemmas)?;
     let proof = check_for_every(method, true)
         .ok_or_else(|| Error::Domain(format!("the kernel refuses a for-every proof by {method:?}")))?;
     let mut out = Checked::proved(
@@ -293,29 +286,27 @@ fn prove_for_every(id: &str, decls: &Decls, identity: &Identity, lemmas: &[Lemma
 /// Tries the symbolic proof alone (no evaluation cross-check, no counterexample search) of an
 /// identity with open ranges: `Ok` with the certificate when it goes through, else the reason.
 /// No verdict comes from here: the caller only reports the outcome.
-pub(crate) fn attempt_for_every(id: &str, decls: &Decls, identity: &Identity) -> Result<String> {
-    let closed = closed_decls(decls);
-    prove_symbolic(id, decls, identity, &closed, &[]).map(|(cert, _, _)| cert)
+pub(crate) fn attempt_for_every(ctx: &Ctx<'_>, identity: &Identity) -> Result<String> {
+    let closed = ctx.closed_after(CROSS_CHECK)?;
+    prove_symbolic(ctx, identity, &closed, &[]).map(|(cert, _, _)| cert)
 }
 
-/// The symbolic proof of `identity` over the open ranges of `decls`, parsed in the context of
-/// `closed` (the same declarations over finite ranges), the library objects read through
-/// `lemmas`: the certificate, the proof's log and its kind of argument.
+/// The symbolic proof of `identity` over the open ranges of `ctx`, parsed in `closed` (the
+/// same declarations over finite ranges), the library objects read through `lemmas`: the
+/// certificate, the proof's log and its kind of argument.
 fn prove_symbolic(
-    id: &str,
-    decls: &Decls,
+    ctx: &Ctx<'_>,
     identity: &Identity,
-    closed: &Decls,
+    closed: &Ctx<'_>,
     lemmas: &[Lemma],
 ) -> Result<(String, Vec<Step>, Method)> {
     if let Some(var) = &identity.induction {
-        let (cert, log) = induction::prove(id, decls, identity, var, lemmas)?;
+        let (cert, log) = induction::prove(ctx, identity, var, lemmas)?;
         return Ok((cert, log, Method::Induction));
     }
-    let ctx = Ctx::new(id, closed, Vec::new())?;
-    let sides = parsed_sides(&ctx, identity)?;
-    let rewritten = lemma::apply(&sides, decls, lemmas)?;
-    prove_sides(decls, &ctx, rewritten, &identity.certificates)
+    let sides = parsed_sides(closed, identity)?;
+    let rewritten = lemma::apply(&sides, &ctx.decls, lemmas)?;
+    prove_sides(&ctx.decls, closed, rewritten, &identity.certificates)
 }
 
 /// The members of an identity, parsed in `ctx`.

@@ -266,7 +266,8 @@ fn sub_sides(sub: &Ctx<'_>, chain: &[String]) -> Result<Vec<super::expr::Expr>> 
 }
 
 /// `kind = "theorem"`.
-pub fn check_theorem(id: &str, theorem: &Theorem, detail: bool) -> Result<Checked> {
+pub fn check_theorem(ctx: &Ctx<'_>, theorem: &Theorem, detail: bool) -> Result<Checked> {
+    let id = ctx.id;
     let name = theorem.theorem.as_str();
     let (lo, hi) = degrees(theorem)?;
     match name {
@@ -289,24 +290,22 @@ pub fn check_theorem(id: &str, theorem: &Theorem, detail: bool) -> Result<Checke
         if from > hi {
             continue;
         }
-        let decls = part_decls(format!("n = {from}..={hi}"), &p.ranges, &p.vars)?;
-        prepared.push((p, decls));
-    }
-    for (p, decls) in &prepared {
-        let sub = Ctx::new(id, decls, Vec::new())?;
+        // The theorem claim declares nothing: each part's context is its declarations.
+        let sub = ctx.with_declarations(part_decls(format!("n = {from}..={hi}"), &p.ranges, &p.vars)?)?;
         let sides = sub_sides(&sub, &p.chain)?;
-        work = chain_work::<Q>(&sub, &sides, work).map_err(|e| lower_degrees(e, name))?;
+        prepared.push((p, sub, sides));
+    }
+    for (_, sub, sides) in &prepared {
+        work = chain_work::<Q>(sub, sides, work).map_err(|e| lower_degrees(e, name))?;
     }
     let mut certs = Vec::new();
     let mut steps = Vec::new();
     let mut method = Method::Evaluation;
     let mut proofs = Vec::new();
     let mut operations = Vec::new();
-    for (p, decls) in &prepared {
-        let sub = Ctx::new(id, decls, Vec::new())?;
-        let sides = sub_sides(&sub, &p.chain)?;
-        let out = check_chain::<Q>(&sub, &sides, detail)?;
-        operations.extend(super::methods::operations_called(&sides));
+    for (p, sub, sides) in &prepared {
+        let out = check_chain::<Q>(sub, sides, detail)?;
+        operations.extend(super::methods::operations_called(sides));
         if let Some(m) = out.method() {
             method = method.join(m);
         }

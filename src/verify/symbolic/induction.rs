@@ -14,7 +14,7 @@
 //! Both are proved by the symbolic route ([`super::prove_sides`]), the claim's other lemmas
 //! (`uses`) available to both.
 
-use super::super::claims::{Decls, Identity, IntRange};
+use super::super::claims::{Identity, IntRange};
 use super::super::context::Ctx;
 use super::super::expr::Expr;
 use super::super::kernel::checked::Step;
@@ -25,13 +25,8 @@ use super::{parsed_sides, prove_sides};
 use crate::error::{Error, Result};
 
 /// The proof by induction on `var` (see the module documentation): the certificate and the log.
-pub(super) fn prove(
-    id: &str,
-    decls: &Decls,
-    identity: &Identity,
-    var: &str,
-    lemmas: &[Lemma],
-) -> Result<(String, Vec<Step>)> {
+pub(super) fn prove(ctx: &Ctx<'_>, identity: &Identity, var: &str, lemmas: &[Lemma]) -> Result<(String, Vec<Step>)> {
+    let decls = &*ctx.decls;
     let Some(k) = decls.ranges.iter().position(|r| r.var == var) else {
         return Err(Error::Domain(format!(
             "induction on {var}: it is not a range variable of the claim"
@@ -44,10 +39,9 @@ pub(super) fn prove(
     }
     let range = &decls.ranges[k];
     let lo = parse(&range.from, &[])?;
-    let hypothesis = Lemma::from_parts(id, decls, identity)?.hypothesis(var)?;
-    let closed = decls.closed_after(1);
-    let ctx = Ctx::new(id, &closed, Vec::new())?;
-    let sides = parsed_sides(&ctx, identity)?;
+    let hypothesis = Lemma::from_parts(ctx, identity)?.hypothesis(var)?;
+    // The sides parse alike over any bounds of the same range variables.
+    let sides = parsed_sides(ctx, identity)?;
     let name = [var.to_string()];
 
     // The base: the claim at var = lo, its other ranges there (and lo within var's range).
@@ -66,11 +60,8 @@ pub(super) fn prove(
             )
         })
         .collect::<Result<_>>()?;
-    let base_decls = Decls {
-        ranges: ranges_at(&decls.ranges, k, None, &lo)?,
-        ..decls.clone()
-    };
-    let (base_cert, mut log) = prove_part(id, &base_decls, at_lo, base, lemmas, &identity.certificates)?;
+    let base_ctx = ctx.with_ranges(ranges_at(&decls.ranges, k, None, &lo)?)?;
+    let (base_cert, mut log) = prove_part(&base_ctx, at_lo, base, lemmas, &identity.certificates)?;
 
     // The step: var from lo while var + 1 is in range, the later ranges at var + 1.
     let next = Expr::add(Expr::Var(var.into()), Expr::int(1));
@@ -93,13 +84,10 @@ pub(super) fn prove(
         },
         ..range.clone()
     };
-    let step_decls = Decls {
-        ranges: ranges_at(&decls.ranges, k, Some(own_range), &next)?,
-        ..decls.clone()
-    };
+    let step_ctx = ctx.with_ranges(ranges_at(&decls.ranges, k, Some(own_range), &next)?)?;
     let mut with_hypothesis = lemmas.to_vec();
     with_hypothesis.push(hypothesis);
-    let (step_cert, step_log) = prove_part(id, &step_decls, at_next, step, &with_hypothesis, &identity.certificates)?;
+    let (step_cert, step_log) = prove_part(&step_ctx, at_next, step, &with_hypothesis, &identity.certificates)?;
     log.extend(step_log);
     Ok((
         format!(
@@ -128,23 +116,23 @@ fn ranges_at(ranges: &[IntRange], k: usize, own: Option<IntRange>, value: &Expr)
     Ok(out)
 }
 
-/// One part of the induction: its objects replaced by `lemmas`, proved on its ranges.
+/// One part of the induction (its context `part`): its objects replaced by `lemmas`, proved
+/// on its ranges.
 fn prove_part(
-    id: &str,
-    decls: &Decls,
+    part: &Ctx<'_>,
     sides: Vec<Expr>,
     unfolded: Rewritten,
     lemmas: &[Lemma],
     certificates: &[String],
 ) -> Result<(String, Vec<Step>)> {
+    let decls = &*part.decls;
     let mut rewritten = lemma::apply(&sides, decls, lemmas)?;
     rewritten.obligations.extend(unfolded.obligations);
     rewritten.assumptions.extend(unfolded.assumptions);
     let mut definitions = unfolded.definitions;
     definitions.extend(rewritten.definitions);
     rewritten.definitions = definitions;
-    let closed = decls.closed_after(1);
-    let ctx = Ctx::new(id, &closed, Vec::new())?;
+    let closed = part.closed_after(1)?;
     // The base and the step are parts of the induction, whatever argument each took.
-    prove_sides(decls, &ctx, rewritten, certificates).map(|(cert, log, _)| (cert, log))
+    prove_sides(decls, &closed, rewritten, certificates).map(|(cert, log, _)| (cert, log))
 }
