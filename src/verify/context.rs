@@ -2,7 +2,7 @@
 //! `diff` applied) and integer ranges.
 
 use super::claims::Decls;
-use super::expr::{self, check_index, Expr};
+use super::kernel::expr::{self, check_index, Expr};
 use super::methods::{NetMethod, PolygonMethod};
 use super::parse::parse;
 use super::parse::{closed_range, ClosedRange};
