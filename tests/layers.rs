@@ -214,13 +214,15 @@ fn the_kernel_is_the_bottom_and_imports_nothing_of_verify() {
             .filter(|m| is_module(m) && m != "kernel")
             .collect();
         assert!(outside.is_empty(), "{} imports {outside:?} of verify", f.display());
-        // Of the crate, only the number types the kernel computes with.
+        // Of the crate, only the number code the kernel computes with: the scalar types,
+        // `exact/`, `quadratic`, and `bernstein` (binomials) and `linalg` (dot products), which
+        // import nothing of `verify` either.
         let code = code_of(f);
         for (k, _) in code.match_indices("crate::") {
             let head = heads(&code[k + "crate::".len()..]);
             for h in head {
                 assert!(
-                    ["scalar", "exact", "quadratic", "error"].contains(&h.as_str()),
+                    ["scalar", "exact", "quadratic", "bernstein", "linalg", "error"].contains(&h.as_str()),
                     "{} uses crate::{h}",
                     f.display()
                 );

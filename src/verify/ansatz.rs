@@ -2,7 +2,7 @@
 //! linear algebra.
 //!
 //! For one term `F`, the quotients `r1 = F(n+1, k)/F(n, k)` and `r2 = F(n, k+1)/F(n, k)` are
-//! rational functions ([`super::pieces::ratio`]). The WZ equation divided by `F(n, k)` is
+//! rational functions ([`super::kernel::pieces::ratio`]). The WZ equation divided by `F(n, k)` is
 //! `r1 − 1 = R(k+1)·r2 − R(k)`. The denominator `D` is guessed as the denominator factors of `r1`
 //! (the factorials of `F` that grow with `n`, as in Gosper's algorithm), and the numerator `P` as
 //! a polynomial of total degree ≤ [`MAX_DEGREE`] in every symbol and parameter with unknown
@@ -11,12 +11,12 @@
 //! given certificate (the WZ equation on the whole range with its boundary pieces, the ends, the
 //! base case), so the search can fail to find a certificate but never proves anything itself.
 
-use super::eval::Alg;
-use super::expr::Expr;
-use super::hyper::{Aff, Symbols, Term};
+use super::kernel::eval::Alg;
+use super::kernel::expr::Expr;
+use super::kernel::hyper::{Aff, Symbols, Term};
+use super::kernel::pieces::{ratio, ratio_denominator};
+use super::kernel::poly::{Poly, RatFunc};
 use super::parse;
-use super::pieces::{ratio, ratio_denominator};
-use super::poly::{Poly, RatFunc};
 use crate::error::{Error, Result};
 use crate::linalg::row_reduce;
 use num_rational::BigRational;

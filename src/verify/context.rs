@@ -9,7 +9,7 @@
 //! ([`Ctx::with_declarations`], a theorem's parts).
 
 use super::claims::{close_ranges, Decls, IntRange};
-use super::expr::{self, check_index, Expr};
+use super::kernel::expr::{self, check_index, Expr};
 use super::methods::{NetMethod, PolygonMethod};
 use super::parse::parse;
 use super::rewrite;

@@ -2,11 +2,11 @@
 
 use super::claims::Implies;
 use super::context::Ctx;
-use super::eval::{Deg, Env, Evaluator, Value, VarEnv};
-use super::expr::Expr;
 use super::kernel::check_expanded;
 use super::kernel::checked::{Checked, Step};
-use super::poly::{Poly, RatFunc};
+use super::kernel::eval::{Deg, Env, Evaluator, Value, VarEnv};
+use super::kernel::expr::Expr;
+use super::kernel::poly::{Poly, RatFunc};
 use super::sampling::{list, PairProof, PairResult};
 use crate::error::{Error, Result};
 use crate::scalar::{Ring, Scalar};
@@ -128,7 +128,7 @@ pub fn symbolic_equal(ctx: &Ctx<'_>, lhs: &Expr, rhs: &Expr, ints: &BTreeMap<Str
     let extra = ctx.params(&[lhs, rhs]);
     let extra: Vec<String> = extra.into_iter().filter(|v| !ctx.is_bound(v)).collect();
     let (names, layout) = sym_names(ctx, &extra);
-    super::eval::check_symbolic_degrees(layout_degrees(&layout), ints, &[lhs, rhs])?;
+    super::kernel::eval::check_symbolic_degrees(layout_degrees(&layout), ints, &[lhs, rhs])?;
     let env = sym_env(&names, &layout);
     let l = Evaluator::new(&env, ints.clone()).eval(lhs)?;
     let r = Evaluator::new(&env, ints.clone()).eval(rhs)?;

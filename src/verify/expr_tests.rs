@@ -1,7 +1,7 @@
 // The expression parser and evaluator: round trips, agreement with the library, bad input.
 
-use super::eval::{Evaluator, Value, VarEnv};
-use super::expr::Expr;
+use super::kernel::eval::{Evaluator, Value, VarEnv};
+use super::kernel::expr::Expr;
 use super::parse::parse;
 use crate::{bernstein, eval_power};
 use crate::{BigRational, Ring, Scalar};

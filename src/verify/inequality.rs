@@ -18,12 +18,12 @@
 
 use super::claims::{Inequality, Relation};
 use super::context::Ctx;
-use super::eval::{Alg, Deg, Evaluator, Value, VarEnv};
-use super::expr::Expr;
 use super::kernel::check_bernstein;
 use super::kernel::checked::Verdict;
 use super::kernel::checked::{Checked, Step};
-use super::poly::{Poly, RatFunc};
+use super::kernel::eval::{Alg, Deg, Evaluator, Value, VarEnv};
+use super::kernel::expr::Expr;
+use super::kernel::poly::{Poly, RatFunc};
 use crate::bernstein::{power_to_bernstein, reparametrize};
 use crate::error::{Error, Result};
 use num_rational::BigRational;
@@ -187,7 +187,7 @@ pub fn check_inequality(ctx: &Ctx<'_>, ineq: &Inequality, detail: bool) -> Resul
             format!("{}: ", at.join(", "))
         };
         let degrees = std::iter::once((t.clone(), Value::S(Deg::var(&t)))).collect();
-        super::eval::check_symbolic_degrees(degrees, &ints, &[&p])?;
+        super::kernel::eval::check_symbolic_degrees(degrees, &ints, &[&p])?;
         let mut vars = BTreeMap::new();
         vars.insert(t.clone(), Value::S(RatFunc::poly(Poly::var(&names, 0))));
         let env = VarEnv(vars);

@@ -14,15 +14,15 @@
 
 use super::claims::{BezierPoints, Claim, ConicType, CurveSpec, Decls, Fit, Implicit, Kind, Number, WeightType};
 use super::context::Ctx;
-use super::eval::{Alg, Deg, Evaluator, Value};
 use super::expansion::check_implies;
-use super::expr::Expr;
 use super::identity::{chain_in_field, check_identity, uses_sqrt};
 use super::kernel::checked::Checked;
+use super::kernel::eval::{Alg, Deg, Evaluator, Value};
+use super::kernel::expr::Expr;
+use super::kernel::poly::{Poly, RatFunc};
 use super::kernel::{check_computed, Trusted};
 use super::lemma::Lemma;
 use super::objects::{curve_from_spec, points};
-use super::poly::{Poly, RatFunc};
 use super::rewrite::substitute;
 use super::sampling::check_chain;
 use super::theorems;
@@ -253,10 +253,10 @@ fn check_bezier_points(ctx: &Ctx<'_>, claim: &BezierPoints, detail: bool) -> Res
 fn library_power_on(power: &Expr, param: &str, a: &Number, b: &Number) -> Result<BezierCurve<BigRational>> {
     let names: Rc<[String]> = Rc::from(vec![param.to_string()]);
     let degrees = std::iter::once((param.to_string(), Value::S(Deg::var(param)))).collect();
-    super::eval::check_symbolic_degrees(degrees, &BTreeMap::new(), &[power])?;
+    super::kernel::eval::check_symbolic_degrees(degrees, &BTreeMap::new(), &[power])?;
     let mut vars = BTreeMap::new();
     vars.insert(param.to_string(), Value::S(RatFunc::poly(Poly::var(&names, 0))));
-    let env = super::eval::VarEnv(vars);
+    let env = super::kernel::eval::VarEnv(vars);
     let v = Evaluator::new(&env, BTreeMap::new()).eval(power)?;
     let comps: Vec<Vec<BigRational>> = v.entries().iter().map(|r| poly_coeffs_1d(r)).collect::<Result<_>>()?;
     let n = comps.iter().map(Vec::len).max().unwrap_or(1);
@@ -304,11 +304,11 @@ fn check_conic_type(ctx: &Ctx<'_>, claim: &ConicType) -> Result<Checked> {
         .iter()
         .map(|v| (v.to_string(), Value::S(Deg::var(v))))
         .collect();
-    super::eval::check_symbolic_degrees(degrees, &BTreeMap::new(), &[&l, &r])?;
+    super::kernel::eval::check_symbolic_degrees(degrees, &BTreeMap::new(), &[&l, &r])?;
     let mut vars = BTreeMap::new();
     vars.insert("x".into(), Value::S(RatFunc::poly(Poly::var(&names, 0))));
     vars.insert("y".into(), Value::S(RatFunc::poly(Poly::var(&names, 1))));
-    let env = super::eval::VarEnv(vars);
+    let env = super::kernel::eval::VarEnv(vars);
     let lv = Evaluator::new(&env, BTreeMap::new()).scalar(&l)?;
     let rv = Evaluator::new(&env, BTreeMap::new()).scalar(&r)?;
     let diff = lv.sub(&rv);

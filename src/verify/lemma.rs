@@ -23,7 +23,7 @@
 
 use super::claims::{Claim, Decls, Identity, Sides};
 use super::context::Ctx;
-use super::expr::Expr;
+use super::kernel::expr::Expr;
 use super::rewrite::{all_names, derive, map_children, substitute};
 use crate::error::{Error, Result};
 
@@ -492,7 +492,7 @@ impl Rewriter<'_> {
         let (Some((net, m, n)), Expr::Call(name, args)) = (self.net, e) else {
             return Ok(None);
         };
-        let (ku, kv) = match super::rewrite::split_partial(name) {
+        let (ku, kv) = match super::kernel::expr::split_partial(name) {
             Some((base, ku, kv)) if base == net => (ku, kv),
             _ if name == net => (0, 0),
             _ => return Ok(None),

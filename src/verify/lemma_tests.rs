@@ -1,7 +1,8 @@
 // Induction from a first value other than 0: the base read from the definition there.
 use super::super::claims::parse_file;
 use super::super::context::Ctx;
-use super::super::symbolic::attempt_for_every;
+use super::super::symbolic::{attempt_for_every, prove_symbolic};
+use super::super::{Method, Verdict};
 use std::borrow::Cow;
 use std::path::Path;
 
@@ -88,4 +89,28 @@ fn the_base_is_the_definition_at_the_first_value() {
         let err = induction_alone(id).expect_err(id);
         assert!(!err.is_empty(), "{id}");
     }
+}
+
+/// The claims of `../shared/repro/induction_base_not_zero.toml` (w2a, w2b true; w2c false,
+/// passing base and step only under a reading of `b(i, 1, t)` as `b[i]`), as `FROM_ONE` writes
+/// them: the kernel's induction check alone, without the evaluation cross-check, proves the
+/// true ones and refuses the false one.
+#[test]
+fn the_kernel_checks_the_induction_without_the_cross_check() {
+    let file = parse_file(FROM_ONE, Path::new("from_one.toml")).unwrap();
+    let kernel_alone = |id: &str| {
+        let claim = file.claim.iter().find(|c| c.id == id).unwrap();
+        let identity = claim.kind.identity().unwrap();
+        let ctx = Ctx::new(&claim.id, Cow::Borrowed(&claim.decls), Vec::new()).unwrap();
+        let closed = ctx.closed_after(super::super::symbolic::CROSS_CHECK).unwrap();
+        prove_symbolic(&ctx, &identity, &closed, &[]).map(|(_, _, proof)| proof)
+    };
+    for id in ["scheme-from-1", "delta-from-1"] {
+        let proof = kernel_alone(id).unwrap_or_else(|e| panic!("{id}: {e}"));
+        assert!(proof.verdict() == Verdict::Proved, "{id}");
+        assert_eq!(proof.method(), Method::Induction, "{id}");
+        assert!(proof.rests_on().is_empty(), "{id}");
+    }
+    let err = kernel_alone("scheme-offset-false").expect_err("the false claim");
+    assert!(err.to_string().contains("does not hold"), "{err}");
 }

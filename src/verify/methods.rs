@@ -3,8 +3,8 @@
 //! bound (for the prover) live in one `impl`, matched exhaustively, so the two cannot drift
 //! apart: a new operation without a bound does not compile.
 
-use super::eval::{Alg, Deg, Evaluator};
-use super::expr::Expr;
+use super::kernel::eval::{Alg, Deg, Evaluator};
+use super::kernel::expr::Expr;
 use super::kernel::Trusted;
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};

@@ -35,16 +35,15 @@
 // The modules, bottom up: each imports only modules named before it in this list (checked
 // by `tests/layers.rs`).
 //
-// - the trusted `kernel`: verdicts, methods, outcomes, and the one door to `proved` (it imports
+// - the trusted `kernel`: verdicts, methods, outcomes, the one door to `proved`, and what
+//   the checks compute with: expression trees, the algebras and the evaluator, rational
+//   functions, hypergeometric terms, domain pieces, Beta integrals, the work budget (it imports
 //   nothing of verify outside `kernel/`);
-// - the work `budget` a proof's searches share (it imports nothing of verify);
-// - the data: `expr` (expression trees), `claim_syntax` (each field's expected form, for
-//   errors), `claims` (the claim file format), `one_line` (the claim of `prove --identity`);
-// - expressions: `alg` (the algebras evaluated in), `poly` (rational functions), `parse`,
-//   `rewrite` (definitions, substitution, `diff`), `eval` (the evaluator), `methods` (library
+// - the data: `claim_syntax` (each field's expected form, for errors), `claims` (the claim
+//   file format), `one_line` (the claim of `prove --identity`);
+// - expressions: `parse`, `rewrite` (definitions, substitution, `diff`), `methods` (library
 //   operations callable in expressions);
-// - hypergeometric terms: `hyper`, `pieces` (zero on every piece of a domain), `ansatz`,
-//   `telescope` (recurrences by creative telescoping), `beta` (integrals over [0, 1]);
+// - searches: `ansatz` (WZ certificates), `telescope` (recurrences by creative telescoping);
 // - a claim's context: `objects`, `context`, `names`, `lemma` (library objects by their
 //   definitions and by lemmas);
 // - provers: `sampling` (degree bounds and exact evaluation), `expansion` (symbolic expansion,
@@ -52,18 +51,12 @@
 //   every n), `theorems`, `inequality`;
 // - the kinds and the scope of a verdict: `kinds`, `scope`;
 // - the reports: `argue`, `latex`, `report`.
-mod alg;
 mod ansatz;
 mod argue;
-mod beta;
-mod budget;
 mod claim_syntax;
 pub mod claims;
 mod context;
-mod eval;
 mod expansion;
-mod expr;
-mod hyper;
 mod identity;
 mod inequality;
 mod kernel;
@@ -75,8 +68,6 @@ mod names;
 mod objects;
 mod one_line;
 mod parse;
-mod pieces;
-mod poly;
 mod recurrence;
 mod report;
 mod rewrite;

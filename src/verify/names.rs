@@ -6,7 +6,7 @@
 //! claim about Bernstein polynomials into a claim about something else.
 
 use super::claims::Claim;
-use super::expr::FUNCTIONS;
+use super::kernel::expr::FUNCTIONS;
 use super::methods::{NetMethod, PolygonMethod};
 use crate::error::{Error, Result};
 
@@ -33,7 +33,7 @@ pub fn check_declarations(c: &Claim) -> Result<()> {
     for (k, (name, what)) in declared.iter().enumerate() {
         // `x_uv` is the notation for a partial of the surface `x`: a name of that form
         // would be read as a derivative (or hide one).
-        if let Some((base, _, _)) = super::rewrite::split_partial(name) {
+        if let Some((base, _, _)) = super::kernel::expr::split_partial(name) {
             if surfaces.contains(&name.as_str()) || surfaces.contains(&base) {
                 return Err(Error::Parse(format!(
                     "claim {}: the {what} '{name}' reads as a partial derivative ({base}_u, {base}_uv, … are the partials of a surface {base}); choose another name",

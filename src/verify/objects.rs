@@ -2,11 +2,10 @@
 //! surfaces, the symbolic polygon and net, and the environments the evaluator reads them from.
 
 use super::claims::{CurveSpec, Decls, Number, SurfaceSpec};
-use super::eval::{Alg, Deg, Env, Evaluator, Value, VarEnv};
-use super::expr::Expr;
+use super::kernel::eval::{Alg, Deg, Env, Evaluator, Value, VarEnv};
+use super::kernel::expr::Expr;
 use super::methods::{NetMethod, PolygonMethod};
 use super::parse::parse;
-use super::rewrite;
 use crate::any_curve::AnyCurve;
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
@@ -93,7 +92,7 @@ fn surface_ref<'n>(
     let found = if is_surface(name) {
         Some((name, 0, 0))
     } else {
-        rewrite::split_partial(name).filter(|(base, _, _)| is_surface(base))
+        super::kernel::expr::split_partial(name).filter(|(base, _, _)| is_surface(base))
     };
     let Some((base, ku, kv)) = found else {
         let (primed, order) = split_primes(name);
@@ -107,7 +106,7 @@ fn surface_ref<'n>(
                 "{name}: a partial of the {what} {surface} is written with u (by the first argument) and v (by the second), e.g. {surface}_u, {surface}_uv, not '{suffix}'"
             )));
         }
-        if let Some((curve, _, _)) = rewrite::split_partial(name).filter(|(b, _, _)| is_curve(b)) {
+        if let Some((curve, _, _)) = super::kernel::expr::split_partial(name).filter(|(b, _, _)| is_curve(b)) {
             return Err(Error::Domain(format!(
                 "{name}: {curve} is a curve; its derivatives are {curve}'(t), {curve}''(t), … (or diff({curve}(t), t))"
             )));

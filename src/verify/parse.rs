@@ -25,10 +25,10 @@
 //! `Δ^k b_j` of a control polygon). Claim objects are called by name: `b(t)` (a curve),
 //! `b(i, r, t)` (the de Casteljau point `b_i^r(t)`), `b'(t)` (derivative), `b[j]` (a control
 //! point), `x(u, v)` (a surface), `x_u(u, v)`, `x_uv(u, v)`, … (its partials: `u` by the
-//! first argument, `v` by the second; see [`super::rewrite::split_partial`]).
+//! first argument, `v` by the second; see [`super::kernel::expr::split_partial`]).
 
 use super::claims::IntRange;
-use super::expr::*;
+use super::kernel::expr::*;
 use crate::error::{Error, Result};
 use crate::scalar::parse_exact;
 use num_rational::BigRational;

@@ -16,14 +16,17 @@
 //! 2. `G(n, b(n)+1) − G(n, a) + Σ_j p_j Σ_{m=1}^{j} F(n+j, b(n)+m) + rest(n) = 0` — the sum of
 //!    1 over `k`, with the terms of `S(n+j)` past `b(n)` added, is the claim.
 //!
-//! A claim of another shape is not for this route (the caller keeps its own reason).
+//! The kernel (`kernel::recurrence`) checks the summands' shifts, that the recurrence found has
+//! the stated coefficients, and both identities. A claim of another shape is not for this
+//! route (the caller keeps its own reason).
 
-use super::eval::Alg;
-use super::expr::{Expr, Op};
-use super::hyper::{lin_neg, Aff, Lin, Term};
-use super::kernel::checked::{Method, Step};
-use super::pieces::Domain;
-use super::poly::RatFunc;
+use super::kernel::checked::Method;
+use super::kernel::eval::Alg;
+use super::kernel::expr::{Expr, Op};
+use super::kernel::hyper::{lin_neg, Aff, Lin, Term};
+use super::kernel::pieces::Domain;
+use super::kernel::poly::RatFunc;
+use super::kernel::recurrence::{self, Bounds};
 use super::telescope::{self, Coefficients};
 use super::translate::Translator;
 use crate::error::{Error, Result};
@@ -150,54 +153,26 @@ pub(crate) fn prove(tr: &mut Translator<'_>, lhs: &Expr, rhs: &Expr, d: &Domain)
     };
     let f = base.summand.clone();
     let what = format!("the recurrence of Σ_{{{k}={a}}}^{{{b}}}");
-    let mark = tr.log.len();
-    let mut p: Vec<RatFunc> = Vec::new();
-    for s in &sums {
-        let j = s.b.minus(&b).c as usize;
-        if p.len() <= j {
-            p.resize(j + 1, RatFunc::from_int(0));
-        }
-        p[j] = p[j].add(&s.coef);
-        // The summand is F at n + j.
-        let fj = f.subst(sym, &n, &Aff::var(&n).shifted(j as i64));
-        let dk = d.with(Aff::var(&k).minus(&a)).with(s.b.minus(&Aff::var(&k)));
-        let check = vec![s.summand.clone(), lin_neg(&[fj])[0].clone()];
-        if tr
-            .expect_zero(
-                &check,
-                &dk,
-                &format!("{what}: the summand of Σ^{{{}}} is F({n}+{j}, {k})", s.b),
-            )
-            .is_err()
-        {
-            tr.log.truncate(mark);
-            return Ok(None);
-        }
-    }
+    let bounds = Bounds {
+        k: &k,
+        a: &a,
+        b: &b,
+        n: &n,
+    };
+    let parts: Vec<(RatFunc, Aff, Term)> = sums
+        .iter()
+        .map(|s| (s.coef.clone(), s.b.clone(), s.summand.clone()))
+        .collect();
+    let Some(stated) = recurrence::stated_sums(sym, &parts, &f, &bounds, d, &what, &mut tr.log)? else {
+        return Ok(None);
+    };
     if !d.implies_ge(&b.minus(&a).shifted(1)) {
         return Err(Error::Domain(format!("{what}: cannot show b − a ≥ −1 on {}", d.show())));
     }
-    let rec =
-        telescope::find(sym, &f, &n, &k, Coefficients::Given(&p)).map_err(|e| Error::Domain(format!("{what}: {e}")))?;
-    tr.log.push(Step::text(format!(
-        "{what} by creative telescoping: F = {}; G = R·F = {}",
-        f.show(),
-        rec.g.show()
-    )));
-    let dk = d.with(Aff::var(&k).minus(&a)).with(b.minus(&Aff::var(&k)));
-    let equation = telescope::telescoping_equation(sym, &f, &rec, &n, &k)?;
-    tr.expect_zero(
-        &equation,
-        &dk,
-        &format!("{what}: Σ_j p_j({n}) F({n}+j, {k}) = G({n}, {k}+1) − G({n}, {k})"),
-    )?;
-    let mut ends = telescope::telescoped_sum(sym, &f, &rec, (&n, &k, &a, &b))?;
-    ends.extend(rest);
-    tr.expect_zero(
-        &ends,
-        d,
-        &format!("{what}: the telescoped ends and the other terms of the claim cancel"),
-    )?;
+    let rec = telescope::find(sym, &f, &n, &k, Coefficients::Given(stated.coefficients()))
+        .map_err(|e| Error::Domain(format!("{what}: {e}")))?;
+    let discharged = recurrence::check_stated_recurrence(sym, &stated, &f, &rec, &bounds, rest, d, &what, &mut tr.log)?;
+    tr.evidence.push(discharged);
     tr.recurrences.push((
         Method::StatedRecurrence,
         format!(

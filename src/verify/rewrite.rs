@@ -2,7 +2,7 @@
 //! that renames a binder instead of capturing, and symbolic differentiation by a real
 //! parameter (an integer position depending on it is an error).
 
-use super::expr::*;
+use super::kernel::expr::*;
 use super::parse::parse;
 use crate::error::{Error, Result};
 use num_rational::BigRational;
@@ -510,18 +510,6 @@ fn derive_call(e: &Expr, name: &str, args: &[Expr], var: &str) -> Result<Expr> {
     }
 }
 
-/// The partial-derivative notation of a surface: `x_u`, `x_vv`, `x_uuv`, … is
-/// `(x, ku, kv)`, `ku` the count of `u` (the first argument) and `kv` of `v` (the second)
-/// after the last `_`; `None` for any other name (`x_uvu` is `(x, 2, 1)`, `x_w` is `None`).
-pub fn split_partial(name: &str) -> Option<(&str, usize, usize)> {
-    let (base, suffix) = name.rsplit_once('_')?;
-    if base.is_empty() || suffix.is_empty() || !suffix.chars().all(|c| c == 'u' || c == 'v') {
-        return None;
-    }
-    let ku = suffix.chars().filter(|&c| c == 'u').count();
-    Some((base, ku, suffix.len() - ku))
-}
-
 /// The name of the partial `∂^{ku+kv} x / ∂u^{ku} ∂v^{kv}`: `x_uuv` (`x` itself for 0, 0).
 pub fn partial_name(base: &str, ku: usize, kv: usize) -> String {
     if ku + kv == 0 {
@@ -533,7 +521,7 @@ pub fn partial_name(base: &str, ku: usize, kv: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::super::claims::IntRange;
-    use super::super::expr::*;
+    use super::super::kernel::expr::*;
     use super::super::parse::parse;
     use super::*;
     use std::collections::BTreeMap;

@@ -2,9 +2,9 @@
 //! points, on a basis of control polygons; the work of a claim estimated before it runs.
 
 use super::context::Ctx;
-use super::eval::{Deg, Evaluator, Value};
-use super::expr::{self, check_index, Expr};
 use super::kernel::checked::{Checked, Evaluation, Method, Step};
+use super::kernel::eval::{Deg, Evaluator, Value};
+use super::kernel::expr::{self, check_index, Expr};
 use super::kernel::{check_sampled, Sampled};
 use super::objects::{DegEnv, Exact, NumEnv};
 use super::parse::parse;

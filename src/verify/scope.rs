@@ -14,9 +14,9 @@
 
 use super::claims::{Claim, Decls, Identity, IntRange, Kind, Sides, Theorem};
 use super::context::Ctx;
-use super::expr::Expr;
 use super::identity::Goal;
 use super::kernel::checked::Verdict;
+use super::kernel::expr::Expr;
 use crate::error::Error;
 
 /// The prefix of the note for a claim whose open-range version is proved.
@@ -351,7 +351,7 @@ fn listed(items: &[String]) -> String {
 /// Whether a range bound is a constant (`6`, not `n` or `n-r`).
 fn is_constant(bound: &str) -> bool {
     super::parse::parse(bound, &[])
-        .and_then(|e| super::expr::eval_int(&e, &Default::default()))
+        .and_then(|e| super::kernel::expr::eval_int(&e, &Default::default()))
         .is_ok()
 }
 

@@ -1,7 +1,7 @@
 //! Claims for every value of an integer symbol: `for = ["n = 0.."]` (an open range) keeps `n`
 //! symbolic, and the claim is proved for every integer point of its ranges, or it is an error.
 //!
-//! Both sides are translated into finite sums of hypergeometric terms ([`super::hyper`]):
+//! Both sides are translated into finite sums of hypergeometric terms ([`super::kernel::hyper`]):
 //! `B(i, n, g)` is `n!/(i!(n−i)!) g^i (1−g)^(n−i)` with its support `0 ≤ i ≤ n`, `C(a, b)` likewise,
 //! powers with affine exponents of polynomials in the continuous parameters, factorials, and the
 //! derivatives `diff` produces. A symbolic control polygon `b` (the claim must be affine in it)
@@ -13,7 +13,7 @@
 //! the claim's `certificate = ["R"]`, one per such sum, innermost first): with `G = R·F` (the
 //! factors of `R` that are affine in the integers cancel against the factorials of `F`, so `G`
 //! is itself a hypergeometric term — any `G` would do, the checks below are about `G` itself) it
-//! checks, each as a finite identity by [`super::pieces::prove_zero`]:
+//! checks, each as a finite identity by [`super::kernel::pieces::prove_zero`]:
 //!
 //! 1. `F(n+1, k) − F(n, k) = G(n, k+1) − G(n, k)` for every `a ≤ k ≤ b(n)`;
 //! 2. `G(n, b(n)+1) − G(n, a) + F(n+1, b(n)+1) = rhs(n+1) − rhs(n)` (the telescoped ends, with
@@ -31,18 +31,18 @@
 
 use super::claims::{Decls, Identity, IntRange};
 use super::context::Ctx;
-use super::expr::Expr;
-use super::hyper::{lin_mul, lin_neg, Aff, Lin, Term};
 use super::identity::check_identity;
-use super::kernel::check_for_every;
 use super::kernel::checked::Verdict;
 use super::kernel::checked::{Checked, Method, Step};
+use super::kernel::expr::Expr;
+use super::kernel::hyper::{lin_mul, lin_neg, Aff, Lin, Term};
+use super::kernel::pieces::{Domain, ZeroOutcome};
+use super::kernel::{check_discharged, check_for_every, check_induction, Discharged, Proof};
 use super::lemma::{self, Lemma, Obligation, Rewritten};
-use super::pieces::{Domain, ZeroOutcome};
 
 mod collapse;
 mod induction;
-use super::poly::RatFunc;
+use super::kernel::poly::RatFunc;
 use super::recurrence::{self, coefficient_times_sum, has_sum};
 use super::translate::{prepare, Translator, UNIT, UNIT2};
 use crate::error::{Error, Result};
@@ -156,8 +156,8 @@ pub fn nonneg_for_every(
             }
             for (b, e) in &t.pows {
                 let ok = match b {
-                    super::hyper::Base::Const(c) => c > &num_rational::BigRational::from_integer(0.into()),
-                    super::hyper::Base::Poly(q) => {
+                    super::kernel::hyper::Base::Const(c) => c > &num_rational::BigRational::from_integer(0.into()),
+                    super::kernel::hyper::Base::Poly(q) => {
                         let q = RatFunc::poly(q.clone());
                         nonneg(&q, true)? || (d.implies_ge(e) && nonneg(&q, false)?)
                     }
@@ -173,7 +173,7 @@ pub fn nonneg_for_every(
         )));
         Ok(None)
     };
-    let out = super::pieces::prove_pieces(&sym, &lin, &dom, &mut log, &mut check)?;
+    let out = super::kernel::pieces::prove_pieces(&sym, &lin, &dom, &mut log, &mut check)?;
     match out {
         ZeroOutcome::Zero(pieces) => {
             let open = scope(rs);
@@ -266,9 +266,7 @@ fn prove_for_every(ctx: &Ctx<'_>, identity: &Identity, lemmas: &[Lemma], detail:
     if evaluated.verdict() == Verdict::Fails {
         return Ok(evaluated);
     }
-    let (cert, log, method) = prove_symbolic(ctx, identity, &closed, lemmas)?;
-    let proof = check_for_every(method, true)
-        .ok_or_else(|| Error::Domain(format!("the kernel refuses a for-every proof by {method:?}")))?;
+    let (cert, log, proof) = prove_symbolic(ctx, identity, &closed, lemmas)?;
     let mut out = Checked::proved(
         proof,
         format!(
@@ -288,25 +286,30 @@ fn prove_for_every(ctx: &Ctx<'_>, identity: &Identity, lemmas: &[Lemma], detail:
 /// No verdict comes from here: the caller only reports the outcome.
 pub(crate) fn attempt_for_every(ctx: &Ctx<'_>, identity: &Identity) -> Result<String> {
     let closed = ctx.closed_after(CROSS_CHECK)?;
-    prove_symbolic(ctx, identity, &closed, &[]).map(|(cert, _, _)| cert)
+    prove_symbolic(ctx, identity, &closed, &[]).map(|(cert, ..)| cert)
 }
 
 /// The symbolic proof of `identity` over the open ranges of `ctx`, parsed in `closed` (the
 /// same declarations over finite ranges), the library objects read through `lemmas`: the
-/// certificate, the proof's log and its kind of argument.
-fn prove_symbolic(
+/// certificate, the proof's log, and the kernel's proof from the obligations it checked (no
+/// evaluation cross-check here).
+pub(crate) fn prove_symbolic(
     ctx: &Ctx<'_>,
     identity: &Identity,
     closed: &Ctx<'_>,
     lemmas: &[Lemma],
-) -> Result<(String, Vec<Step>, Method)> {
+) -> Result<(String, Vec<Step>, Proof)> {
+    let refused = |method: Method| Error::Domain(format!("the kernel refuses a for-every proof by {method:?}"));
     if let Some(var) = &identity.induction {
-        let (cert, log) = induction::prove(ctx, identity, var, lemmas)?;
-        return Ok((cert, log, Method::Induction));
+        let (cert, log, base, step) = induction::prove(ctx, identity, var, lemmas)?;
+        let proof = check_induction(&base, &step).ok_or_else(|| refused(Method::Induction))?;
+        return Ok((cert, log, proof));
     }
     let sides = parsed_sides(closed, identity)?;
     let rewritten = lemma::apply(&sides, &ctx.decls, lemmas)?;
-    prove_sides(&ctx.decls, closed, rewritten, &identity.certificates)
+    let (cert, log, method, evidence) = prove_sides(&ctx.decls, closed, rewritten, &identity.certificates)?;
+    let proof = check_discharged(method, &evidence).ok_or_else(|| refused(method))?;
+    Ok((cert, log, proof))
 }
 
 /// The members of an identity, parsed in `ctx`.
@@ -408,7 +411,7 @@ fn prove_sides(
     ctx: &Ctx<'_>,
     rewritten: Rewritten,
     certificates: &[String],
-) -> Result<(String, Vec<Step>, Method)> {
+) -> Result<(String, Vec<Step>, Method, Vec<Discharged>)> {
     let rs = &decls.ranges;
     let sides = rewritten.sides;
     let (certs, sym, conts) = prepare(certificates, ctx, &sides)?;
@@ -547,5 +550,5 @@ fn prove_sides(
             rewritten.lemmas.join(", ")
         ));
     }
-    Ok((cert, tr.log, method))
+    Ok((cert, tr.log, method, tr.evidence))
 }

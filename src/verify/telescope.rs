@@ -8,7 +8,7 @@
 //! `Σ_j p_j(n) F(n+j, k) = G(n, k+1) − G(n, k)`.
 //!
 //! Divided by `F(n, k)` this is `Σ_j p_j r_j = R(k+1)·F(n, k+1)/F(n, k) − R(k)` with
-//! `r_j = F(n+j, k)/F(n, k)` rational ([`super::pieces::ratio`]). `R = P / (D·c)`: `D` the
+//! `r_j = F(n+j, k)/F(n, k)` rational ([`super::kernel::pieces::ratio`]). `R = P / (D·c)`: `D` the
 //! factors of the denominator of `r_J` (the factorials of `F` that grow with `n`, as in
 //! Gosper's algorithm), `c` the numerator of `F`'s rational coefficient (so `G` is `P` times
 //! `F` without it), and `P` a polynomial with unknown coefficients, like the `p_j`. Cleared of
@@ -16,26 +16,17 @@
 //! `p_j ≠ 0` are candidates. With the `p_j` given ([`Coefficients::Given`]), only `P` is
 //! unknown (a claim that *states* a recurrence).
 //!
-//! Nothing found here is trusted: [`closed_form`] turns a candidate into identities of
-//! hypergeometric terms ([`Obligation`]s) that the caller proves on every piece of the domain
-//! ([`super::pieces::prove_zero`]):
-//!
-//! 1. the telescoping equation for every `a ≤ k ≤ b(n)` and every `n ≥ n₁`;
-//! 2. `Σ_j p_j(n) rhs(n+j) = G(n, b(n)+1) − G(n, a) + Σ_j p_j(n) Σ_{m=1}^{j} F(n+j, b(n)+m)`
-//!    for every `n ≥ n₁` — summing 1 over `k` shows the same of `S`, so `Δ = S − rhs` satisfies
-//!    `Σ_j p_j(n) Δ(n+j) = 0` there;
-//! 3. `S(n) = rhs(n)` for `n = n₀, …, n₁ + J − 1`, finite sums,
-//!
-//! where `n₁ ≥ n₀` is past every integer zero of the leading coefficient `p_J` (which is then a
-//! nonzero polynomial in the parameters for every `n ≥ n₁`, whatever the other integers).
-//! Induction on `n`: `Δ(n+J) = −Σ_{j<J} p_j(n) Δ(n+j) / p_J(n)`, so `Δ = 0` for every `n ≥ n₀`.
-//! Any `p_j` and `G` satisfying 1–3 prove the claim; a wrong candidate can only be rejected.
+//! Nothing found here is trusted: the kernel (`kernel::recurrence`) builds from a candidate
+//! the identities that prove a closed form (the telescoping equation, the telescoped ends, the
+//! initial values past the leading coefficient's zeros) and proves each on every piece of the
+//! domain; a wrong candidate can only be rejected.
 
 use super::ansatz::solve;
-use super::eval::Alg;
-use super::hyper::{lin_mul, lin_neg, lin_subst, Aff, Lin, Symbols, Term};
-use super::pieces::{ratio, ratio_denominator, Domain};
-use super::poly::{Poly, RatFunc};
+use super::kernel::eval::Alg;
+use super::kernel::hyper::{Aff, Symbols, Term};
+use super::kernel::pieces::{ratio, ratio_denominator};
+use super::kernel::poly::{Poly, RatFunc};
+use super::kernel::recurrence::Telescoper;
 use crate::error::{Error, Result};
 use num_bigint::BigInt;
 use num_integer::Integer;
@@ -53,45 +44,12 @@ pub const MAX_UNKNOWNS: usize = 400;
 /// (64-bit words of the largest coefficient) of its linear systems (a 32nd of it for the
 /// modular pass that rules most of them out).
 pub const MAX_TELESCOPE_WORK: u128 = 5_000_000;
-/// Most values of `n` checked directly before an induction (initial values, and the zeros of
-/// a leading coefficient or of a closed form's coefficient).
-pub const MAX_DIRECT_CASES: i64 = 64;
-
 /// The coefficients `p_j` of the recurrence: searched, or given by the claim.
 pub enum Coefficients<'a> {
     /// Unknown, up to [`MAX_ORDER`] and [`MAX_COEFFICIENT_DEGREE`].
     Search,
     /// `p_0, …, p_J` as stated.
     Given(&'a [RatFunc]),
-}
-
-/// A recurrence with its certificate: `Σ_j p[j](n) F(n+j, k) = G(n, k+1) − G(n, k)`.
-pub struct Telescoper {
-    /// `p_0, …, p_J`, polynomials in every symbol but `k` (or as given).
-    pub p: Vec<RatFunc>,
-    /// `G = R·F`, a term.
-    pub g: Term,
-    /// `R`, readable.
-    pub r: String,
-}
-
-impl Telescoper {
-    /// The order `J`.
-    pub fn order(&self) -> usize {
-        self.p.len() - 1
-    }
-    /// The recurrence as text: `(p_J)·S(n+J) + … + (p_0)·S(n)`.
-    pub fn show(&self, s: &str, n: &str) -> String {
-        let mut parts = Vec::new();
-        for (j, p) in self.p.iter().enumerate().rev() {
-            if p.num.is_zero() {
-                continue;
-            }
-            let at = if j == 0 { n.to_string() } else { format!("{n}+{j}") };
-            parts.push(format!("({p})·{s}({at})"));
-        }
-        parts.join(" + ")
-    }
 }
 
 /// The exponent vectors of `p` over every symbol (a constant built without names has none).
@@ -448,215 +406,4 @@ pub fn find(sym: &Symbols, f: &Term, n: &str, k: &str, coefficients: Coefficient
     Err(none(format!(
         "{reached} (MAX_ORDER = {MAX_ORDER}, MAX_COEFFICIENT_DEGREE = {MAX_COEFFICIENT_DEGREE})"
     )))
-}
-
-/// One identity a proof rests on: `Σ lin = 0` at every integer point of `domain`.
-pub struct Obligation {
-    /// The terms.
-    pub lin: Lin,
-    /// Where.
-    pub domain: Domain,
-    /// What it says, for the log and the error.
-    pub what: String,
-}
-
-/// A sum `Σ_{k=a}^{b(n)} F(n, k)` over the induction variable `n ≥ n₀`, the other integers on
-/// `rest`.
-pub struct SumShape<'a> {
-    /// The summation variable.
-    pub k: &'a str,
-    /// The lower bound (free of `n`).
-    pub a: &'a Aff,
-    /// The upper bound `n + c`.
-    pub b: &'a Aff,
-    /// The induction variable.
-    pub n: &'a str,
-    /// Its least value.
-    pub n0: &'a Aff,
-    /// The domain of the other integers.
-    pub rest: &'a Domain,
-}
-
-/// `p · lin` for a scalar `p`.
-fn scaled(p: &RatFunc, lin: &[Term]) -> Result<Lin> {
-    lin_mul(&[Term::scalar(p.clone())], lin)
-}
-
-/// The terms of `Σ_{k=a}^{b} F` at `n = n0`, where the sum must have a fixed number of terms
-/// (at most 10 001).
-pub fn finite_sum(
-    sym: &Symbols,
-    f: &[Term],
-    (k, a, b): (&str, &Aff, &Aff),
-    (n, n0): (&str, &Aff),
-    what: &str,
-) -> Result<Lin> {
-    let width = b.subst(n, n0).minus(a);
-    if !width.is_const() || width.c < -1 || width.c > 10_000 {
-        return Err(Error::Domain(format!(
-            "{what}: at {n} = {n0} the sum does not have a fixed number of terms"
-        )));
-    }
-    let at0 = lin_subst(sym, f, n, n0);
-    let mut out = Vec::new();
-    for m in 0..=width.c {
-        out.extend(lin_subst(sym, &at0, k, &a.shifted(m)));
-    }
-    Ok(out)
-}
-
-/// The first `n ≥ n0` past every integer zero (in `n`) of the coefficient of the closed-form
-/// term `h`, so that dividing by `h` is defined for the whole induction; at most
-/// [`MAX_DIRECT_CASES`] values past `n0`.
-pub(crate) fn induction_start(sym: &Symbols, h: &Term, n: &str, n0: &Aff, what: &str) -> Result<Aff> {
-    let mut start = n0.clone();
-    for z in sym.integer_zeros(&h.coef.num)? {
-        let c = z.coef(n);
-        if c == 0 {
-            continue;
-        }
-        let moving = z.v.keys().any(|x| x != n);
-        if moving || !n0.is_const() {
-            return Err(Error::Domain(format!(
-                "{what}: the closed form's coefficient vanishes where {z} = 0, which moves with the other symbols: the induction cannot start past it"
-            )));
-        }
-        if z.c % c != 0 {
-            continue;
-        }
-        let root = -z.c / c;
-        if root >= start.c {
-            start = Aff::constant(root + 1);
-        }
-    }
-    if start.minus(n0).c > MAX_DIRECT_CASES {
-        return Err(Error::Domain(format!(
-            "{what}: the closed form's coefficient vanishes at {n} = {}, more than {MAX_DIRECT_CASES} values past {n0}",
-            start.c - 1
-        )));
-    }
-    Ok(start)
-}
-
-/// `Σ_j p_j(n) F(n+j, k) − G(n, k+1) + G(n, k)`, the telescoping equation as one sum.
-pub fn telescoping_equation(sym: &Symbols, f: &Term, t: &Telescoper, n: &str, k: &str) -> Result<Lin> {
-    let mut out = Vec::new();
-    for (j, p) in t.p.iter().enumerate() {
-        let fj = f.subst(sym, n, &Aff::var(n).shifted(j as i64));
-        out.extend(scaled(p, &[fj])?);
-    }
-    out.extend(lin_neg(&[t.g.subst(sym, k, &Aff::var(k).shifted(1))]));
-    out.push(t.g.clone());
-    Ok(out)
-}
-
-/// `Σ_j p_j(n) S(n+j)` for `S(n) = Σ_{k=a}^{b(n)} F(n, k)`, by the telescoped ends:
-/// `G(n, b+1) − G(n, a) + Σ_j p_j Σ_{m=1}^{j} F(n+j, b+m)`.
-pub fn telescoped_sum(sym: &Symbols, f: &Term, t: &Telescoper, (n, k, a, b): (&str, &str, &Aff, &Aff)) -> Result<Lin> {
-    let mut out = vec![t.g.subst(sym, k, &b.shifted(1))];
-    out.extend(lin_neg(&[t.g.subst(sym, k, a)]));
-    for (j, p) in t.p.iter().enumerate() {
-        // Shift n first, then put k = b(n) + m (written in the old n).
-        let fj = f.subst(sym, n, &Aff::var(n).shifted(j as i64));
-        for m in 1..=j as i64 {
-            out.extend(scaled(p, &[fj.subst(sym, k, &b.shifted(m))])?);
-        }
-    }
-    Ok(out)
-}
-
-/// The first `n ≥ n₀` past every integer zero in `n` of the leading coefficient `p_J`; an
-/// error when it may vanish at a point that moves with the other integers.
-fn past_leading_zeros(sym: &Symbols, lead: &RatFunc, s: &SumShape<'_>, what: &str) -> Result<Aff> {
-    let mut start = s.n0.clone();
-    for z in sym.integer_zeros(&lead.num)? {
-        let c = z.coef(s.n);
-        if c == 0 {
-            // Free of n: harmless only where the domain rules z = 0 out.
-            if s.rest.with(z.clone()).with(z.scaled(-1)).feasible() {
-                return Err(Error::Domain(format!(
-                    "{what}: the recurrence's leading coefficient {lead} vanishes where {z} = 0, for every {}",
-                    s.n
-                )));
-            }
-            continue;
-        }
-        if z.v.len() > 1 || !s.n0.is_const() {
-            return Err(Error::Domain(format!(
-                "{what}: the recurrence's leading coefficient {lead} vanishes where {z} = 0, which moves with the other symbols"
-            )));
-        }
-        if z.c % c != 0 {
-            continue;
-        }
-        let root = -z.c / c;
-        if root >= start.c {
-            start = Aff::constant(root + 1);
-        }
-    }
-    Ok(start)
-}
-
-/// The identities proving `Σ_{k=a}^{b(n)} F(n, k) = rhs(n)` for every `n ≥ n₀` by the
-/// recurrence `t` (see the module documentation), and the text of the certificate.
-pub fn closed_form(
-    sym: &Symbols,
-    f: &Term,
-    t: &Telescoper,
-    s: &SumShape<'_>,
-    rhs: &[Term],
-    what: &str,
-) -> Result<(Vec<Obligation>, String)> {
-    let n = s.n;
-    let order = t.order();
-    let lead = &t.p[order];
-    let n1 = past_leading_zeros(sym, lead, s, what)?;
-    let span = n1.minus(s.n0);
-    if !span.is_const() || span.c + order as i64 > MAX_DIRECT_CASES {
-        return Err(Error::Domain(format!(
-            "{what}: the recurrence needs the values n = {}..{n1}+{order} directly, more than MAX_DIRECT_CASES = {MAX_DIRECT_CASES}",
-            s.n0
-        )));
-    }
-    let d_rec = s.rest.with(Aff::var(n).minus(&n1));
-    let d_k = d_rec.with(Aff::var(s.k).minus(s.a)).with(s.b.minus(&Aff::var(s.k)));
-    let mut out = vec![Obligation {
-        lin: telescoping_equation(sym, f, t, n, s.k)?,
-        domain: d_k,
-        what: format!(
-            "{what}: Σ_j p_j({n}) F({n}+j, {k}) = G({n}, {k}+1) − G({n}, {k})",
-            k = s.k
-        ),
-    }];
-    let mut ends = Vec::new();
-    for (j, p) in t.p.iter().enumerate() {
-        ends.extend(scaled(p, &lin_subst(sym, rhs, n, &Aff::var(n).shifted(j as i64)))?);
-    }
-    ends.extend(lin_neg(&telescoped_sum(sym, f, t, (n, s.k, s.a, s.b))?));
-    out.push(Obligation {
-        lin: ends,
-        domain: d_rec.clone(),
-        what: format!(
-            "{what}: the closed form satisfies the recurrence (Σ_j p_j({n}) rhs({n}+j) = the telescoped ends)"
-        ),
-    });
-    let cases = span.c + order as i64;
-    for m in 0..cases {
-        let at = s.n0.shifted(m);
-        let mut case = finite_sum(sym, std::slice::from_ref(f), (s.k, s.a, s.b), (n, &at), what)?;
-        case.extend(lin_neg(&lin_subst(sym, rhs, n, &at)));
-        out.push(Obligation {
-            lin: case,
-            domain: s.rest.clone(),
-            what: format!("{what}: the initial value {n} = {at}"),
-        });
-    }
-    let last = s.n0.shifted(cases - 1);
-    let text = format!(
-        "{what}: {} = the telescoped ends, R = {}; leading coefficient ≠ 0 for {n} ≥ {n1}; {n} = {}..={last} checked directly",
-        t.show("S", n),
-        t.r,
-        s.n0
-    );
-    Ok((out, text))
 }

@@ -66,8 +66,8 @@ fn degrees(theorem: &Theorem) -> Result<(i64, i64)> {
     let r = super::parse::closed_range(&IntRange::parse(&format!("n = {text}"))?)?;
     let empty = Default::default();
     let (lo, hi) = (
-        super::expr::eval_int(&r.from, &empty)?,
-        super::expr::eval_int(&r.to, &empty)?,
+        super::kernel::expr::eval_int(&r.from, &empty)?,
+        super::kernel::expr::eval_int(&r.to, &empty)?,
     );
     if lo < 0 || hi < lo {
         return Err(Error::Domain(format!(
@@ -261,7 +261,7 @@ pub(crate) fn part_decls(n_range: String, ranges: &[String], vars: &[&str]) -> R
     })
 }
 
-fn sub_sides(sub: &Ctx<'_>, chain: &[String]) -> Result<Vec<super::expr::Expr>> {
+fn sub_sides(sub: &Ctx<'_>, chain: &[String]) -> Result<Vec<super::kernel::expr::Expr>> {
     chain.iter().map(|s| sub.expr(s)).collect()
 }
 

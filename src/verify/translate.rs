@@ -2,13 +2,15 @@
 //! (sums with symbolic bounds evaluated by their WZ certificates or by induction from a
 //! closed form), for the symbolic route of [`super::symbolic`].
 
-use super::eval::Alg;
-use super::expr::{self, Expr, Op};
-use super::hyper::{lin_mul, lin_neg, lin_subst, power_of, Aff, Lin, Symbols, Term};
 use super::kernel::checked::{Method, Step};
-use super::pieces::{prove_zero, Domain, ZeroOutcome};
-use super::poly::RatFunc;
-use super::telescope::{self, cancel, Coefficients, SumShape};
+use super::kernel::eval::Alg;
+use super::kernel::expr::{self, Expr, Op};
+use super::kernel::hyper::{lin_mul, lin_neg, lin_subst, power_of, Aff, Lin, Symbols, Term};
+use super::kernel::pieces::Domain;
+use super::kernel::poly::RatFunc;
+use super::kernel::recurrence::{self as obligations, Bounds, SumShape};
+use super::kernel::Discharged;
+use super::telescope::{self, cancel, Coefficients};
 use crate::error::{Error, Result};
 use num_traits::Zero;
 
@@ -49,6 +51,8 @@ pub struct Translator<'a> {
     pub recurrences: Vec<(Method, String)>,
     /// The Beta integrals evaluated.
     pub(crate) integrals: usize,
+    /// The obligations the kernel checked, for the proof.
+    pub(crate) evidence: Vec<Discharged>,
 }
 
 impl<'a> Translator<'a> {
@@ -65,6 +69,7 @@ impl<'a> Translator<'a> {
             used: Vec::new(),
             recurrences: Vec::new(),
             integrals: 0,
+            evidence: Vec::new(),
         }
     }
 }
@@ -169,8 +174,8 @@ impl<'a> Translator<'a> {
             if c.is_zero() {
                 return Err(Error::DivisionByZero(format!("'{base}'")));
             }
-            let inv = super::hyper::Base::Const(num_rational::BigRational::from_integer(1.into()) / c);
-            if inv != super::hyper::Base::Const(num_rational::BigRational::from_integer(1.into())) {
+            let inv = super::kernel::hyper::Base::Const(num_rational::BigRational::from_integer(1.into()) / c);
+            if inv != super::kernel::hyper::Base::Const(num_rational::BigRational::from_integer(1.into())) {
                 t.pows.push((inv, e.clone()));
             }
         }
@@ -405,14 +410,15 @@ impl<'a> Translator<'a> {
                 Ok(vec![t])
             }
             ("integral", 4) => {
-                let (Expr::Var(t), true) = (&args[1], super::beta::is_unit_interval(&args[2], &args[3])) else {
+                let (Expr::Var(t), true) = (&args[1], super::kernel::beta::is_unit_interval(&args[2], &args[3])) else {
                     return Err(Error::Domain(format!(
                         "'{e}': for symbolic integers only integrals over [0, 1] are evaluated (Euler's Beta integral)"
                     )));
                 };
                 let integrand = self.lin(&args[0], d)?;
-                let value = super::beta::integrate(self.sym, &integrand, t, d)?;
+                let (value, rule) = super::kernel::beta::check_beta(self.sym, &integrand, t, d)?;
                 self.integrals += 1;
+                self.evidence.push(rule);
                 Ok(value)
             }
             _ => Err(Error::Domain(format!(
@@ -544,56 +550,14 @@ impl<'a> Translator<'a> {
             return Err(Error::Domain(format!("{what}: cannot show b − a ≥ −1 on {}", d.show())));
         }
         // Normalise by a one-term value depending on n. Where that term's coefficient
-        // vanishes the quotient means nothing: those values of n are checked directly, and the
-        // induction starts past them.
+        // vanishes the quotient means nothing: those values of n are checked directly (by the
+        // kernel), and the induction starts past them.
         // The sum as written, for creative telescoping when no WZ certificate is found.
         let original = (f.clone(), hint.clone(), n0.clone());
-        let mut n0 = n0;
-        let mut d_ind = d.clone();
-        let mut direct = String::new();
-        let (f, rhs, value) = match hint {
-            Some(h) if h.len() == 1 && h[0].mentions(sym, &n) => {
-                // On the unit polygon a control point's factor is 1 once its delta is resolved:
-                // the sum and its one-term value, of the same degree in the control points, are
-                // divided as numbers.
-                let same_degree = h[0].deltas.is_empty()
-                    && h[0].bdeg > 0
-                    && f.iter().all(|t| t.deltas.is_empty() && t.bdeg == h[0].bdeg);
-                let numbers = |l: &[Term]| -> Lin { l.iter().map(|t| Term { bdeg: 0, ..t.clone() }).collect() };
-                let (f, hn) = if same_degree {
-                    (numbers(&f), numbers(&h))
-                } else {
-                    (f, h.clone())
-                };
-                let start = telescope::induction_start(sym, &hn[0], &n, &n0, &what)?;
-                for m in 0..start.minus(&n0).c {
-                    let at = n0.shifted(m);
-                    let mut case = telescope::finite_sum(sym, &f, (k, a, b), (&n, &at), &what)?;
-                    case.extend(lin_neg(&lin_subst(sym, &hn, &n, &at)));
-                    self.expect_zero(
-                        &case,
-                        &at_value(&at),
-                        &format!("{what}: the case {n} = {at}, where the closed form's coefficient vanishes (checked directly)"),
-                    )?;
-                }
-                if start != n0 {
-                    direct = format!("; {n} = {n0}..={} checked directly", start.shifted(-1));
-                    d_ind = Domain {
-                        cons: d.cons.iter().filter(|c| c.coef(&n) <= 0).cloned().collect(),
-                    }
-                    .with(Aff::var(&n).minus(&start));
-                    n0 = start;
-                }
-                let r = hn[0].recip(sym)?;
-                (lin_mul(&f, &[r])?, vec![Term::scalar(RatFunc::from_int(1))], Some(h))
-            }
-            Some(h) => (f, h.clone(), Some(h)),
-            None => {
-                let base = telescope::finite_sum(sym, &f, (k, a, b), (&n, &n0), &what)?;
-                (f, base, None)
-            }
-        };
-        let d_ind = next_in_domain(d_ind);
+        let bounds = Bounds { k, a, b, n: &n };
+        let goal = obligations::wz_goal(sym, f, hint, &bounds, &n0, d, &at_value, &what, &mut self.log)?;
+        let (f, n0, direct) = (&goal.f, &goal.n0, &goal.direct);
+        let d_ind = next_in_domain(goal.d_ind.clone());
         let (cert, found) = match self.certs.get(self.next_cert).cloned() {
             Some(c) => {
                 self.next_cert += 1;
@@ -636,7 +600,7 @@ impl<'a> Translator<'a> {
         };
         let marks = (self.log.len(), self.used.len());
         let checked: Result<()> = 'checks: {
-            let g = match self.times_certificate(&cert, &f) {
+            let g = match self.times_certificate(&cert, f) {
                 Ok(g) => g,
                 Err(e) => break 'checks Err(e),
             };
@@ -645,57 +609,19 @@ impl<'a> Translator<'a> {
             ));
             self.log.push(Step::text(format!(
                 "{what} by induction on {n} ≥ {n0}: F = {}; certificate R = {cert}, G = R·F = {}",
-                show(&f),
+                show(f),
                 show(&g)
             )));
-            let n1 = Aff::var(&n).shifted(1);
-            let k1 = Aff::var(k).shifted(1);
-            // 1. The WZ equation on a ≤ k ≤ b.
-            let mut wzeq = lin_subst(sym, &f, &n, &n1);
-            wzeq.extend(lin_neg(&f));
-            wzeq.extend(lin_neg(&lin_subst(sym, &g, k, &k1)));
-            wzeq.extend(g.iter().cloned());
-            let dk = d_ind.with(Aff::var(k).minus(a)).with(b.minus(&Aff::var(k)));
-            if let Err(e) = self.expect_zero(
-                &wzeq,
-                &dk,
-                &format!("{what}: F({n}+1, {k}) − F({n}, {k}) = G({n}, {k}+1) − G({n}, {k})"),
-            ) {
-                break 'checks Err(e);
-            }
-            // 2. The ends.
-            let mut ends = lin_subst(sym, &g, k, &b.shifted(1));
-            ends.extend(lin_neg(&lin_subst(sym, &g, k, a)));
-            // F(n+1, b(n)+1): shift n first, then put k = b(n) + 1 (which is written in the old n).
-            ends.extend(lin_subst(sym, &lin_subst(sym, &f, &n, &n1), k, &b.shifted(1)));
-            ends.extend(lin_neg(&lin_subst(sym, &rhs, &n, &n1)));
-            ends.extend(rhs.iter().cloned());
-            if let Err(e) = self.expect_zero(
-                &ends,
-                &d_ind,
-                &format!("{what}: G({n}, {b}+1) − G({n}, {a}) + F({n}+1, {b}+1) = rhs({n}+1) − rhs({n})"),
-            ) {
-                break 'checks Err(e);
-            }
-            // 3. The base case.
-            if value.is_some() {
-                let base = telescope::finite_sum(sym, &f, (k, a, b), (&n, &n0), &what).and_then(|mut base| {
-                    base.extend(lin_neg(&lin_subst(sym, &rhs, &n, &n0)));
-                    self.expect_zero(&base, &at_value(&n0), &format!("{what}: the base case {n} = {n0}"))
-                });
-                if let Err(e) = base {
-                    break 'checks Err(e);
+            match obligations::check_wz(sym, &goal, &g, &bounds, &d_ind, &at_value(n0), &what, &mut self.log) {
+                Ok(discharged) => {
+                    self.evidence.push(discharged);
+                    Ok(())
                 }
-            } else {
-                self.log.push(Step::text(format!(
-                    "{what}: its value is its value at {n} = {n0}: {}",
-                    show(&rhs)
-                )));
+                Err(e) => Err(e),
             }
-            Ok(())
         };
         match (checked, &original.0[..], original.1) {
-            (Ok(()), ..) => Ok(value.unwrap_or(rhs)),
+            (Ok(()), ..) => Ok(goal.value.unwrap_or(goal.rhs)),
             // A WZ candidate of the search that does not prove the closed form: a recurrence
             // of higher order may; if not, the WZ reason stands.
             (Err(e), [summand], Some(closed)) if found && above.is_empty() => {
@@ -724,39 +650,16 @@ impl<'a> Translator<'a> {
         let what = format!("{what} by creative telescoping");
         let rec = telescope::find(self.sym, f, s.n, s.k, Coefficients::Search)
             .map_err(|e| Error::Domain(format!("{what}: {e}")))?;
-        let (obligations, text) = telescope::closed_form(self.sym, f, &rec, s, rhs, &what)?;
-        let mark = self.log.len();
-        self.log.push(Step::text(format!(
-            "{what}: F = {}; G = R·F = {}",
-            f.show(),
-            rec.g.show()
-        )));
-        for o in &obligations {
-            if let Err(e) = self.expect_zero(&o.lin, &o.domain, &o.what) {
-                self.log.truncate(mark);
-                return Err(e);
-            }
-        }
+        let (discharged, text) = obligations::check_telescoper(self.sym, f, &rec, s, rhs, &what, &mut self.log)?;
+        self.evidence.push(discharged);
         self.recurrences.push((Method::Telescoping, text));
         Ok(())
     }
 
     pub(crate) fn expect_zero(&mut self, lin: &[Term], d: &Domain, what: &str) -> Result<()> {
-        let mut log = Vec::new();
-        match prove_zero(self.sym, lin, d, &mut log)? {
-            ZeroOutcome::Zero(pieces) => {
-                self.log.push(Step::text(format!(
-                    "{what}: proved on {} ({pieces} piece{})",
-                    d.show(),
-                    if pieces == 1 { "" } else { "s" }
-                )));
-                self.log.extend(log.into_iter().map(|l| l.nested(1)));
-                Ok(())
-            }
-            ZeroOutcome::NonZero { region, residue } => Err(Error::Domain(format!(
-                "{what} does not hold as an identity on {region}: {residue}"
-            ))),
-        }
+        let discharged = obligations::check_zero(self.sym, lin, d, what, &mut self.log)?;
+        self.evidence.push(discharged);
+        Ok(())
     }
 
     /// `G = R · F`, the factors of `R` affine in the integers cancelled against factorials.

@@ -7,14 +7,23 @@
 //! name ([`Trusted`], as Lean's `#print axioms` names compiled code it trusts).
 //!
 //! What the entries check themselves, and what they still take from their callers, is listed
-//! in `docs/trust.md`: the sampling entry checks that every parameter was evaluated at more
-//! distinct points than its degree bound and the Bernstein entry that no coefficient is
-//! negative; the evaluations, expansions and for-every obligations themselves still run in the
-//! provers outside this folder, which pass their outcome in.
+//! in `docs/trust.md`. The for-every obligations of sums (WZ, creative telescoping, stated
+//! recurrences) are built and proved here from what the searches propose (`recurrence`), on
+//! the hypergeometric terms and domain pieces of this folder; sampling, expansion and the
+//! nonnegativity on pieces still pass their outcome in.
 //!
 //! This module imports nothing of `verify` outside `kernel/` (checked by `tests/layers.rs`).
 
+pub(crate) mod alg;
+pub(crate) mod beta;
+pub(crate) mod budget;
 pub mod checked;
+pub(crate) mod eval;
+pub(crate) mod expr;
+pub(crate) mod hyper;
+pub(crate) mod pieces;
+pub(crate) mod poly;
+pub(crate) mod recurrence;
 
 use checked::{Method, Verdict};
 use num_rational::BigRational;
@@ -216,6 +225,36 @@ pub fn check_for_every(method: Method, discharged: bool) -> Option<Proof> {
     (discharged && method.is_for_every()).then(|| Proof::new(method, &[]))
 }
 
+/// An obligation of a for-every proof checked by this module (made only here): the evidence
+/// [`check_discharged`] assembles a proof from.
+#[derive(Clone, Debug)]
+pub struct Discharged {
+    method: Method,
+}
+
+impl Discharged {
+    fn new(method: Method) -> Discharged {
+        Discharged { method }
+    }
+}
+
+/// A proof for every value of the open ranges by `method` from the obligations this module
+/// checked: at least one, and one of `method`'s own kind unless `method` is [`Method::Pieces`]
+/// (rational identities on the pieces of a domain).
+pub fn check_discharged(method: Method, evidence: &[Discharged]) -> Option<Proof> {
+    let backed = method == Method::Pieces || evidence.iter().any(|d| d.method == method);
+    (method.is_for_every() && !evidence.is_empty() && backed).then(|| Proof::new(method, &[]))
+}
+
+/// A proof by induction on an integer variable from its two parts, each proved for every value
+/// by obligations this module checked: the base (the claim at the variable's first value, the
+/// recursive objects there read from their definitions, unfolded from the recursion's base
+/// whatever that first value is) and the step (the claim at `v + 1` from the claim at `v`, used
+/// only as stated).
+pub fn check_induction(base: &[Discharged], step: &[Discharged]) -> Option<Proof> {
+    (!base.is_empty() && !step.is_empty()).then(|| Proof::new(Method::Induction, &[]))
+}
+
 /// The proof of several parts together: every part proved (`None` without parts).
 pub fn check_all(parts: Vec<Proof>) -> Option<Proof> {
     let mut parts = parts.into_iter();
@@ -268,6 +307,24 @@ mod tests {
             polygons: 1,
         };
         assert_eq!(check_sampled(&[e]).unwrap().method(), Method::Evaluation);
+    }
+
+    #[test]
+    fn for_every_proofs_need_obligations_the_kernel_checked() {
+        let (pieces, wz) = (Discharged::new(Method::Pieces), Discharged::new(Method::Wz));
+        assert!(check_discharged(Method::Pieces, &[]).is_none());
+        assert!(check_discharged(Method::Wz, std::slice::from_ref(&pieces)).is_none());
+        assert!(check_discharged(Method::Computation, std::slice::from_ref(&pieces)).is_none());
+        let p = check_discharged(Method::Wz, &[pieces.clone(), wz]).unwrap();
+        assert_eq!((p.verdict(), p.method()), (Verdict::Proved, Method::Wz));
+        assert_eq!(
+            check_discharged(Method::Pieces, std::slice::from_ref(&pieces)).map(|p| p.method()),
+            Some(Method::Pieces)
+        );
+        assert!(check_induction(&[], std::slice::from_ref(&pieces)).is_none());
+        assert!(check_induction(std::slice::from_ref(&pieces), &[]).is_none());
+        let i = check_induction(std::slice::from_ref(&pieces), std::slice::from_ref(&pieces)).unwrap();
+        assert_eq!((i.verdict(), i.method()), (Verdict::Proved, Method::Induction));
     }
 
     #[test]

@@ -6,9 +6,9 @@
 //! (`Σ_j Σ_r b[j] …`, bounds free of each other) is interchanged first. Only exact rewrites of
 //! finite sums are made; where the domain does not show the range condition the sum is kept.
 
-use super::super::expr::{eval_int, Expr, Op};
-use super::super::hyper::Aff;
-use super::super::pieces::Domain;
+use super::super::kernel::expr::{eval_int, Expr, Op};
+use super::super::kernel::hyper::Aff;
+use super::super::kernel::pieces::Domain;
 use super::super::rewrite::{map_children, substitute};
 use super::super::translate::{Translator, UNIT};
 use crate::error::Result;

@@ -16,16 +16,21 @@
 
 use super::super::claims::{Identity, IntRange};
 use super::super::context::Ctx;
-use super::super::expr::Expr;
 use super::super::kernel::checked::Step;
+use super::super::kernel::expr::Expr;
+use super::super::kernel::Discharged;
 use super::super::lemma::{self, Lemma, Rewritten, Unfold};
 use super::super::parse::parse;
 use super::super::rewrite::substitute;
 use super::{parsed_sides, prove_sides};
 use crate::error::{Error, Result};
 
-/// The proof by induction on `var` (see the module documentation): the certificate and the log.
-pub(super) fn prove(ctx: &Ctx<'_>, identity: &Identity, var: &str, lemmas: &[Lemma]) -> Result<(String, Vec<Step>)> {
+/// The certificate, the log, and the obligations the kernel checked for the base and for the
+/// step.
+type Induction = (String, Vec<Step>, Vec<Discharged>, Vec<Discharged>);
+
+/// The proof by induction on `var` (see the module documentation).
+pub(super) fn prove(ctx: &Ctx<'_>, identity: &Identity, var: &str, lemmas: &[Lemma]) -> Result<Induction> {
     let decls = &*ctx.decls;
     let Some(k) = decls.ranges.iter().position(|r| r.var == var) else {
         return Err(Error::Domain(format!(
@@ -61,7 +66,7 @@ pub(super) fn prove(ctx: &Ctx<'_>, identity: &Identity, var: &str, lemmas: &[Lem
         })
         .collect::<Result<_>>()?;
     let base_ctx = ctx.with_ranges(ranges_at(&decls.ranges, k, None, &lo)?)?;
-    let (base_cert, mut log) = prove_part(&base_ctx, at_lo, base, lemmas, &identity.certificates)?;
+    let (base_cert, mut log, base_evidence) = prove_part(&base_ctx, at_lo, base, lemmas, &identity.certificates)?;
 
     // The step: var from lo while var + 1 is in range, the later ranges at var + 1.
     let next = Expr::add(Expr::Var(var.into()), Expr::int(1));
@@ -87,13 +92,16 @@ pub(super) fn prove(ctx: &Ctx<'_>, identity: &Identity, var: &str, lemmas: &[Lem
     let step_ctx = ctx.with_ranges(ranges_at(&decls.ranges, k, Some(own_range), &next)?)?;
     let mut with_hypothesis = lemmas.to_vec();
     with_hypothesis.push(hypothesis);
-    let (step_cert, step_log) = prove_part(&step_ctx, at_next, step, &with_hypothesis, &identity.certificates)?;
+    let (step_cert, step_log, step_evidence) =
+        prove_part(&step_ctx, at_next, step, &with_hypothesis, &identity.certificates)?;
     log.extend(step_log);
     Ok((
         format!(
             "by induction on {var} from {lo}, the objects unfolded by their recursions — the base {var} = {lo}: {base_cert}; the step {var} → {var} + 1, the claim at {var} its only hypothesis: {step_cert}"
         ),
         log,
+        base_evidence,
+        step_evidence,
     ))
 }
 
@@ -124,7 +132,7 @@ fn prove_part(
     unfolded: Rewritten,
     lemmas: &[Lemma],
     certificates: &[String],
-) -> Result<(String, Vec<Step>)> {
+) -> Result<(String, Vec<Step>, Vec<Discharged>)> {
     let decls = &*part.decls;
     let mut rewritten = lemma::apply(&sides, decls, lemmas)?;
     rewritten.obligations.extend(unfolded.obligations);
@@ -134,5 +142,5 @@ fn prove_part(
     rewritten.definitions = definitions;
     let closed = part.closed_after(1)?;
     // The base and the step are parts of the induction, whatever argument each took.
-    prove_sides(decls, &closed, rewritten, certificates).map(|(cert, log, _)| (cert, log))
+    prove_sides(decls, &closed, rewritten, certificates).map(|(cert, log, _, evidence)| (cert, log, evidence))
 }

@@ -1,9 +1,9 @@
 //! Facts about a sum's range used before its evaluation: where its terms start, a domain
 //! without redundant bounds, and the ends of the parameter interval.
 
-use super::super::hyper::{Aff, Term};
-use super::super::pieces::Domain;
-use super::super::poly::RatFunc;
+use super::super::kernel::hyper::{Aff, Term};
+use super::super::kernel::pieces::Domain;
+use super::super::kernel::poly::RatFunc;
 use super::{UNIT, UNIT2};
 use num_traits::{CheckedDiv, One, Zero};
 

@@ -3,9 +3,9 @@
 
 use super::super::claims::{Decls, IntRange};
 use super::super::context::Ctx;
-use super::super::expr::Expr;
-use super::super::hyper::{Aff, Symbols};
-use super::super::pieces::Domain;
+use super::super::kernel::expr::Expr;
+use super::super::kernel::hyper::{Aff, Symbols};
+use super::super::kernel::pieces::Domain;
 use super::super::{parse, rewrite};
 use super::{Translator, UNIT, UNIT2};
 use crate::error::{Error, Result};
@@ -84,7 +84,7 @@ pub(crate) fn prepare(
     // The variables of integration are parameters of the integrands only.
     let mut all = conts.clone();
     for e in &refs {
-        super::super::beta::integral_vars(e, &mut all);
+        super::super::kernel::beta::integral_vars(e, &mut all);
     }
     let all: Vec<String> = all.into_iter().filter(|v| !ints.contains(v)).collect();
     let sym = Symbols::new(&ints, &all);

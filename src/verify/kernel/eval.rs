@@ -485,7 +485,7 @@ fn unknown_call(name: &str) -> Error {
     let base = if primed.len() < name.len() {
         Some(primed)
     } else {
-        super::rewrite::split_partial(name).map(|(b, _, _)| b)
+        super::expr::split_partial(name).map(|(b, _, _)| b)
     };
     match base {
         Some(b) => Error::Domain(format!(
@@ -635,7 +635,7 @@ pub fn check_symbolic_degrees(
 
 #[cfg(test)]
 mod tests {
-    use super::super::parse::parse;
+    use super::super::super::parse::parse;
     use super::*;
     use crate::scalar::Ring;
 

@@ -1,6 +1,6 @@
 //! Expressions written as in a book: the syntax tree, its printing, and integer evaluation
-//! of ranges and indices. The grammar is in [`super::parse`]; definitions and `diff` are
-//! rewrites of the tree ([`super::rewrite`]).
+//! of ranges and indices. The grammar is in `verify::parse`; definitions and `diff` are
+//! rewrites of the tree (`verify::rewrite`).
 //!
 //! Limits: exponents and Bernstein/binomial indices at most [`MAX_EXPONENT`]; at most
 //! [`MAX_SUM_TERMS`] terms summed per evaluation; factorials of at most [`MAX_FACTORIAL`];
@@ -428,4 +428,16 @@ pub fn check_index(n: i64) -> Result<()> {
         });
     }
     Ok(())
+}
+
+/// The partial-derivative notation of a surface: `x_u`, `x_vv`, `x_uuv`, … is
+/// `(x, ku, kv)`, `ku` the count of `u` (the first argument) and `kv` of `v` (the second)
+/// after the last `_`; `None` for any other name (`x_uvu` is `(x, 2, 1)`, `x_w` is `None`).
+pub fn split_partial(name: &str) -> Option<(&str, usize, usize)> {
+    let (base, suffix) = name.rsplit_once('_')?;
+    if base.is_empty() || suffix.is_empty() || !suffix.chars().all(|c| c == 'u' || c == 'v') {
+        return None;
+    }
+    let ku = suffix.chars().filter(|&c| c == 'u').count();
+    Some((base, ku, suffix.len() - ku))
 }

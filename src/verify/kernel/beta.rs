@@ -23,6 +23,13 @@ fn refuse(why: String) -> Error {
     Error::Domain(format!("∫_0^1 for symbolic integers: {why}"))
 }
 
+/// Euler's Beta rule applied to `∫_0^1 Σ lin dt` on `d` (see [`integrate`]): its value, and
+/// the rule's use as evidence for the proof.
+pub fn check_beta(sym: &Symbols, lin: &[Term], t: &str, d: &Domain) -> Result<(Lin, super::Discharged)> {
+    let value = integrate(sym, lin, t, d)?;
+    Ok((value, super::Discharged::new(super::checked::Method::Beta)))
+}
+
 /// `∫_0^1 Σ lin dt` as a sum of terms, on the domain `d` (see the module documentation).
 pub fn integrate(sym: &Symbols, lin: &[Term], t: &str, d: &Domain) -> Result<Lin> {
     let Some(tx) = sym.index(t).filter(|_| sym.is_cont(t)) else {

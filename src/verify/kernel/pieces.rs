@@ -2,9 +2,9 @@
 //! for every integer point of a polyhedral domain: the domain split by affine conditions
 //! (Fourier–Motzkin with integer tightening), each piece divided by its first live term.
 
+use super::checked::Step;
 use super::eval::Alg;
 use super::hyper::*;
-use super::kernel::checked::Step;
 use super::poly::{Poly, RatFunc};
 use crate::error::{Error, Result};
 use num_traits::{One, Signed};
