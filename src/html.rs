@@ -21,6 +21,7 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
 
+pub mod interactive;
 mod statement;
 pub use statement::formula;
 
@@ -157,6 +158,14 @@ pub fn write_report(report: &Report, files: &[ClaimFile], dir: &Path) -> Result<
         .map_err(|e| Error::Domain(format!("cannot create the report directory {}: {e}", dir.display())))?;
     for (name, html) in &pages {
         let path = dir.join(name);
+        std::fs::write(&path, html).map_err(|e| Error::Domain(format!("cannot write {}: {e}", path.display())))?;
+    }
+    // the interactive figures the pages link to: pages with a script, kept apart from the
+    // report's static, printable pages
+    let folder = dir.join("interactive");
+    std::fs::create_dir_all(&folder).map_err(|e| Error::Domain(format!("cannot create {}: {e}", folder.display())))?;
+    for (name, html) in interactive::interactive_pages()? {
+        let path = folder.join(name);
         std::fs::write(&path, html).map_err(|e| Error::Domain(format!("cannot write {}: {e}", path.display())))?;
     }
     Ok(pages.len())
@@ -569,6 +578,13 @@ fn claim_section(
                         );
                         drawn.push((key, o.id.clone()));
                     }
+                }
+                if let Some(href) = topic(c).filter(|_| !cf.own_data).and_then(interactive::link) {
+                    let _ = writeln!(
+                        s,
+                        "<p class=\"interactive\"><a href=\"{href}\">Interactive version</a> (drag the points, \
+                         slide t; exact values)</p>"
+                    );
                 }
             }
             Ok(None) => {}
