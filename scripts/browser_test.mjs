@@ -75,6 +75,17 @@ function fraction(k, g) {
   return m === 1n ? String(n) : `${n}/${m}`;
 }
 
+// The values the sliders move over (src/html/interactive.rs): t over the fractions in [0, 1]
+// with denominators up to 12, the middle weight over WEIGHTS.
+const FAREY = [...new Set([...Array(12)].flatMap((_, q) => [...Array(q + 2)].map((_, p) => p / (q + 1))))]
+  .sort((a, b) => a - b)
+  .map((x) => {
+    for (let q = 1; ; q++) if (Math.abs(x * q - Math.round(x * q)) < 1e-9) return fraction(Math.round(x * q), q);
+  });
+const FAREY_VALUES = FAREY.map((f) => f.split("/").reduce((a, b) => a / b));
+const WEIGHTS = ["1/8", "1/6", "1/5", "1/4", "1/3", "2/5", "1/2", "3/5", "2/3", "3/4", "4/5", "1", "5/4", "4/3", "3/2",
+  "5/3", "2", "5/2", "3", "4", "5", "6", "8"];
+
 // The expected `id → [exact, text]` for the state the page shows (its points, t, r, w, n).
 async function expected(kind, shown) {
   const out = new Map();
@@ -174,20 +185,28 @@ async function move(page, kind) {
   const ts = await page.$("#t-slider");
   if (ts && !(kind === "bernstein" && random() < 0.5)) {
     const [lo, hi] = await sliderRange(page, "t-slider");
-    await slide(page, "t-slider", randInt(lo, hi));
+    const k = randInt(lo, hi);
+    await slide(page, "t-slider", k);
+    want["t-value"] = JSON.stringify(FAREY[k]);
   }
-  for (const id of ["r-slider", "w-slider", "n-slider"]) {
+  for (const [id, shown, value] of [["r-slider", "r-value", String], ["w-slider", "w-value", (k) => WEIGHTS[k]],
+    ["n-slider", "n-value", String]]) {
     if (await page.$("#" + id)) {
       const [lo, hi] = await sliderRange(page, id);
-      await slide(page, id, randInt(lo, hi));
+      const k = randInt(lo, hi);
+      await slide(page, id, k);
+      want[shown] = JSON.stringify(value(k));
     }
   }
   const handles = await grabbable(page);
   const h = handles[randInt(0, handles.length - 1)];
   if (kind === "bernstein") {
     // the t handle on the axis: dropped over a random place, it snaps to the nearest listed t
-    const target = await page.evaluate((t) => window.casteljau.tToClient(t), random());
+    const t = random();
+    const target = await page.evaluate((t) => window.casteljau.tToClient(t), t);
     await drag(page, [h.x, h.y], target);
+    const nearest = FAREY_VALUES.reduce((best, v, i) => (Math.abs(v - t) < Math.abs(FAREY_VALUES[best] - t) ? i : best), 0);
+    want["t-value"] = JSON.stringify(FAREY[nearest]);
     return want;
   }
   const { grid, view } = await page.evaluate(() => ({ grid: window.casteljau.grid, view: window.casteljau.view() }));

@@ -530,7 +530,14 @@ pub fn interactive_page(req: &FigureRequest) -> Result<String> {
     let (title, what, legend) = intro(state.kind);
     let grid = match state.kind {
         FigureKind::Bernstein => String::new(),
-        _ => format!("points snap to a grid of 1/{}, ", state.grid),
+        _ => format!(": points snap to a grid of 1/{}", state.grid),
+    };
+    let moves = match (&state.t, state.kind) {
+        (None, _) => String::new(),
+        (Some(_), FigureKind::Bernstein) => {
+            format!(": t moves over the fractions with denominators up to {T_DENOMINATORS}")
+        }
+        (Some(_), _) => format!(", t over the fractions with denominators up to {T_DENOMINATORS}"),
     };
     let mut s = String::new();
     let _ = write!(
@@ -538,8 +545,7 @@ pub fn interactive_page(req: &FigureRequest) -> Result<String> {
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
          <title>{title} — casteljau (interactive)</title>\n<style>{STYLE}</style>\n</head>\n<body>\n\
-         <h1>{title}</h1>\n<p>{what} Every value shown is an exact fraction: {grid}t moves over the fractions \
-         with denominators up to {T_DENOMINATORS}.</p>\n<div class=\"layout\">\n<div class=\"figure\">\n"
+         <h1>{title}</h1>\n<p>{what} Every value shown is an exact fraction{grid}{moves}.</p>\n<div class=\"layout\">\n<div class=\"figure\">\n"
     );
     s.push_str("<div class=\"controls\">\n");
     if let Some(t) = &state.t {
