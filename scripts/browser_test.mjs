@@ -293,11 +293,16 @@ try {
     await compare(page, kind, "start (1280 px)");
     if (shots) await page.screenshot({ path: join(shots, `${kind}-1280.png`) });
     let values = 0;
-    for (let k = 1; k <= positions; k++) {
-      // the last third at phone width: the drags and the overflow check there too
-      if (k === Math.floor((2 * positions) / 3) + 1) await page.setViewportSize(phone);
-      const want = await move(page, kind);
-      values += await compare(page, kind, `position ${k}`, want);
+    try {
+      for (let k = 1; k <= positions; k++) {
+        // the last third at phone width: the drags and the overflow check there too
+        if (k === Math.floor((2 * positions) / 3) + 1) await page.setViewportSize(phone);
+        const want = await move(page, kind);
+        values += await compare(page, kind, `position ${k}`, want);
+      }
+    } catch (e) {
+      // a page whose script failed cannot be driven: one failure, then the next figure
+      fail(`${kind}: ${e.message.split("\n")[0]}`);
     }
     if (errors.length) fail(`${kind}: script errors: ${errors.join("; ")}`);
     summary.push(`${kind}: ${positions} positions, ${values} values equal to the oracle's`);

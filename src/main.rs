@@ -27,7 +27,7 @@ use std::process::ExitCode;
                   2 bad usage or input."
 )]
 struct Cli {
-    /// Output format (default text; `figure` always writes SVG and takes none).
+    /// Output format (default text; `figure` writes SVG or, with --interactive, HTML, and takes none).
     #[arg(long, global = true, value_enum)]
     format: Option<Format>,
     #[command(subcommand)]
@@ -297,7 +297,7 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             interactive,
         } => {
             if cli.format.is_some() {
-                return Err("--format does not apply to `figure` (it always writes SVG)".into());
+                return Err("--format does not apply to `figure` (it writes SVG, or HTML with --interactive)".into());
             }
             let request = FigureRequest {
                 kind: what.parse().map_err(e)?,

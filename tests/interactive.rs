@@ -231,7 +231,7 @@ fn bad_requests_are_clear_errors() {
     assert!(err(request(FigureKind::Conics, Some("0,0; 1,1; 2,0; 3,3"), &[])).contains("three control points"));
     assert!(err(request(FigureKind::Construction, Some("0,0,0; 1,1,1"), &[])).contains("planar"));
     assert!(err(request(FigureKind::Construction, Some("0,0"), &[])).contains("2 to 10 control points"));
-    let eleven = vec!["0,0"; 11].join("; ");
+    let eleven = ["0,0"; 11].join("; ");
     assert!(err(request(FigureKind::Construction, Some(&eleven), &[])).contains("2 to 10 control points"));
     let big = format!("0,0; 1,{}", "9".repeat(30));
     assert!(err(request(FigureKind::Construction, Some(&big), &[])).contains("64 bits"));
