@@ -160,14 +160,7 @@ pub fn write_report(report: &Report, files: &[ClaimFile], dir: &Path) -> Result<
         let path = dir.join(name);
         std::fs::write(&path, html).map_err(|e| Error::Domain(format!("cannot write {}: {e}", path.display())))?;
     }
-    // the interactive figures the pages link to: pages with a script, kept apart from the
-    // report's static, printable pages
-    let folder = dir.join("interactive");
-    std::fs::create_dir_all(&folder).map_err(|e| Error::Domain(format!("cannot create {}: {e}", folder.display())))?;
-    for (name, html) in interactive::interactive_pages()? {
-        let path = folder.join(name);
-        std::fs::write(&path, html).map_err(|e| Error::Domain(format!("cannot write {}: {e}", path.display())))?;
-    }
+    interactive::write_pages(dir)?;
     Ok(pages.len())
 }
 
@@ -262,6 +255,7 @@ footer { margin-top: 2rem; color: var(--muted); font-size: 0.85rem; }
   dl { gap: 0.1rem 0.6rem; margin-top: 0.2rem; }
   pre { font-size: 7pt; }
   figure { break-inside: avoid; page-break-inside: avoid; margin-top: 0.3rem; }
+  p.interactive { display: none; }
   /* figures at most 145 mm high, their labels and legends at 16 px so that they print at 9 pt or
      more (labels are placed for this size: figure/place.rs); a legend line made longer by the
      larger font runs on past the drawing's right edge */
@@ -576,15 +570,11 @@ fn claim_section(
                                 .replacen("<svg ", &format!("<svg id=\"fig-{}\" ", claim_anchor(&o.id)), 1),
                             esc(&cf.caption)
                         );
+                        if let Some(link) = topic(c).filter(|_| !cf.own_data).and_then(interactive::link) {
+                            s.push_str(&link);
+                        }
                         drawn.push((key, o.id.clone()));
                     }
-                }
-                if let Some(href) = topic(c).filter(|_| !cf.own_data).and_then(interactive::link) {
-                    let _ = writeln!(
-                        s,
-                        "<p class=\"interactive\"><a href=\"{href}\">Interactive version</a> (drag the points, \
-                         slide t; exact values)</p>"
-                    );
                 }
             }
             Ok(None) => {}

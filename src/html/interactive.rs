@@ -23,6 +23,7 @@ use crate::{classify_conic, implicit_conic, BezierCurve, BigRational, ConicKind}
 use num_integer::Integer;
 use num_traits::{One, Zero};
 use std::fmt::Write as _;
+use std::path::Path;
 
 type Q = BigRational;
 
@@ -58,7 +59,8 @@ pub fn interactive_file(kind: FigureKind) -> String {
     format!("{}.html", kind.name())
 }
 
-/// The link from a report page to the interactive version of an illustration, if it has one.
+/// The paragraph linking a report page's illustration to its interactive version, if it has
+/// one (hidden in print).
 pub fn link(illustration: Illustration) -> Option<String> {
     let kind = match illustration {
         Illustration::Construction => FigureKind::Construction,
@@ -68,7 +70,23 @@ pub fn link(illustration: Illustration) -> Option<String> {
         Illustration::Conics => FigureKind::Conics,
         Illustration::Hull | Illustration::Fit | Illustration::Projection => return None,
     };
-    Some(format!("interactive/{}", interactive_file(kind)))
+    Some(format!(
+        "<p class=\"interactive\"><a href=\"interactive/{}\">Interactive version</a> (drag the points, slide t; \
+         exact values)</p>\n",
+        interactive_file(kind)
+    ))
+}
+
+/// Writes the interactive pages into `dir/interactive/`: pages with a script, kept apart
+/// from the report's static, printable pages that link to them.
+pub fn write_pages(dir: &Path) -> Result<()> {
+    let folder = dir.join("interactive");
+    std::fs::create_dir_all(&folder).map_err(|e| Error::Domain(format!("cannot create {}: {e}", folder.display())))?;
+    for (name, html) in interactive_pages()? {
+        let path = folder.join(name);
+        std::fs::write(&path, html).map_err(|e| Error::Domain(format!("cannot write {}: {e}", path.display())))?;
+    }
+    Ok(())
 }
 
 /// The report's interactive pages, `(file name, HTML)`, each at the texts' example.
