@@ -21,6 +21,7 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
 
+pub mod interactive;
 mod statement;
 pub use statement::formula;
 
@@ -159,6 +160,7 @@ pub fn write_report(report: &Report, files: &[ClaimFile], dir: &Path) -> Result<
         let path = dir.join(name);
         std::fs::write(&path, html).map_err(|e| Error::Domain(format!("cannot write {}: {e}", path.display())))?;
     }
+    interactive::write_pages(dir)?;
     Ok(pages.len())
 }
 
@@ -253,6 +255,7 @@ footer { margin-top: 2rem; color: var(--muted); font-size: 0.85rem; }
   dl { gap: 0.1rem 0.6rem; margin-top: 0.2rem; }
   pre { font-size: 7pt; }
   figure { break-inside: avoid; page-break-inside: avoid; margin-top: 0.3rem; }
+  p.interactive { display: none; }
   /* figures at most 145 mm high, their labels and legends at 16 px so that they print at 9 pt or
      more (labels are placed for this size: figure/place.rs); a legend line made longer by the
      larger font runs on past the drawing's right edge */
@@ -567,6 +570,9 @@ fn claim_section(
                                 .replacen("<svg ", &format!("<svg id=\"fig-{}\" ", claim_anchor(&o.id)), 1),
                             esc(&cf.caption)
                         );
+                        if let Some(link) = topic(c).filter(|_| !cf.own_data).and_then(interactive::link) {
+                            s.push_str(&link);
+                        }
                         drawn.push((key, o.id.clone()));
                     }
                 }

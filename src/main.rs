@@ -27,7 +27,7 @@ use std::process::ExitCode;
                   2 bad usage or input."
 )]
 struct Cli {
-    /// Output format (default text; `figure` always writes SVG and takes none).
+    /// Output format (default text; `figure` writes SVG or, with --interactive, HTML, and takes none).
     #[arg(long, global = true, value_enum)]
     format: Option<Format>,
     #[command(subcommand)]
@@ -215,6 +215,10 @@ enum Command {
         /// Write the SVG here (default: standard output).
         #[arg(short, long, value_name = "FILE")]
         output: Option<PathBuf>,
+        /// Write one self-contained HTML page instead, with draggable points and sliders (construction,
+        /// subdivision, elevation, hodograph, conics, bernstein).
+        #[arg(long)]
+        interactive: bool,
     },
 }
 
@@ -290,9 +294,10 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             iso,
             degree,
             output: out,
+            interactive,
         } => {
             if cli.format.is_some() {
-                return Err("--format does not apply to `figure` (it always writes SVG)".into());
+                return Err("--format does not apply to `figure` (it writes SVG, or HTML with --interactive)".into());
             }
             let request = FigureRequest {
                 kind: what.parse().map_err(e)?,
@@ -304,7 +309,11 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
                 iso,
                 degree,
             };
-            let svg = request.figure().and_then(|f| f.to_svg()).map_err(e)?;
+            let svg = if interactive {
+                casteljau::html::interactive::interactive_page(&request).map_err(e)?
+            } else {
+                request.figure().and_then(|f| f.to_svg()).map_err(e)?
+            };
             match out {
                 Some(path) => {
                     std::fs::write(&path, svg).map_err(|err| format!("cannot write {}: {err}", path.display()))?

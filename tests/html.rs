@@ -2,6 +2,7 @@
 //! every claim is there with its statement, verdict, certificate and figure; misprints sit
 //! beside their corrections; the index's table is the report's summary.
 
+use casteljau::html::interactive::{interactive_file, INTERACTIVE_KINDS};
 use casteljau::html::{claim_anchor, page_name, render_pages, verdict_text};
 use casteljau::verify::claims::{load_paths, Kind};
 use casteljau::verify::{prove_paths, Report, Verdict};
@@ -70,8 +71,12 @@ fn every_page_is_well_formed_offline_and_printable() {
                 if let Some(v) = n.attribute(a) {
                     assert!(!v.contains("://"), "{name}: {a}=\"{v}\" leaves the report");
                     let target = v.split('#').next().unwrap();
+                    // or one of the interactive figures written beside the pages
+                    let interactive = target
+                        .strip_prefix("interactive/")
+                        .is_some_and(|f| INTERACTIVE_KINDS.iter().any(|k| interactive_file(*k) == f));
                     assert!(
-                        target.is_empty() || pages.iter().any(|(p, _)| p == target),
+                        target.is_empty() || pages.iter().any(|(p, _)| p == target) || interactive,
                         "{name}: broken link {v}"
                     );
                 }
@@ -262,7 +267,8 @@ fn prove_html_writes_the_report() {
             "001_d6775559ddbdd5b2.html",
             "003_bd67d8bed055bcf9.html",
             "004_658c519a4aef48a5.html",
-            "index.html"
+            "index.html",
+            "interactive"
         ]
     );
     // the text report on stdout is unchanged by --html
