@@ -392,3 +392,63 @@ fn the_shapes_and_errors_of_judged_answers() {
     assert!(judged > 2.0 * plain, "{plain} {judged}");
     let _ = BigRational::zero();
 }
+
+#[test]
+fn a_batch_of_splits_answers_each_parameter_as_its_single_request() {
+    let b = [0.1, 0.7, 0.3, -0.4];
+    let ts = [0.3, 0.5, 0.9];
+    let mut approxes = Vec::new();
+    let mut singles = Vec::new();
+    for t in ts {
+        let (l, r) = split_convex(&b, t);
+        let approx = format!(r#"{{"left":{},"right":{}}}"#, points(&l), points(&r));
+        let single = format!(
+            r#"{{"op":"split","points":{},"t":{},"approx":{approx}}}"#,
+            points(&b),
+            fj(t)
+        );
+        singles.push(serde_json::from_str::<Value>(&handle_line(&single)).unwrap());
+        approxes.push(approx);
+    }
+    let batch = format!(
+        r#"{{"id":5,"op":"split","points":{},"t":[{}],"approx":[{}]}}"#,
+        points(&b),
+        ts.map(fj).join(","),
+        approxes.join(",")
+    );
+    let r: Value = serde_json::from_str(&handle_line(&batch)).unwrap();
+    assert_eq!(r["id"], 5, "{r}");
+    let results = r["results"].as_array().unwrap();
+    for (one, mut single) in results.iter().zip(singles) {
+        single.as_object_mut().unwrap().remove("ok");
+        assert_eq!(one, &single);
+        assert_eq!(one["within_bound"]["left"][3], serde_json::json!([true]));
+    }
+    // without approx: the exact halves per parameter; errors name the parameter
+    let r: Value =
+        serde_json::from_str(&handle_line(r#"{"op":"split","points":[[0],[1],[3]],"t":["1/2",0]}"#)).unwrap();
+    assert_eq!(
+        r["results"][0]["left"],
+        serde_json::json!([["0"], ["1/2"], ["5/4"]]),
+        "{r}"
+    );
+    let r: Value = serde_json::from_str(&handle_line(
+        r#"{"op":"split","points":[[0],[1]],"t":[0.5,0.5],"approx":[{"left":[[0],[0.5]],"right":[[0.5],[1]]}]}"#,
+    ))
+    .unwrap();
+    assert!(
+        r["error"].as_str().unwrap().contains("one approximation per parameter"),
+        "{r}"
+    );
+    let r: Value = serde_json::from_str(&handle_line(r#"{"op":"split","points":[[0],[1]],"t":[0.5,0.25],"approx":[{"left":[[0],[0.5]],"right":[[0.5],[1]]},{"left":[[0]],"right":[]}]}"#)).unwrap();
+    assert!(r["error"].as_str().unwrap().contains("parameter 1"), "{r}");
+    // the work limit counts the whole batch
+    let pts: Vec<String> = (0..=200).map(|i| format!("[{}]", (i * 7919) % 1000)).collect();
+    let many = vec!["0.1"; 4000].join(",");
+    let r: Value = serde_json::from_str(&handle_line(&format!(
+        r#"{{"op":"split","points":[{}],"t":[{many}]}}"#,
+        pts.join(",")
+    )))
+    .unwrap();
+    assert!(r["error"].as_str().unwrap().contains("batch"), "{r}");
+}

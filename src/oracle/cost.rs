@@ -89,6 +89,7 @@ impl Op {
             }
             Op::ToBezier { power } => number_kinds(power.iter().flatten()),
             Op::Judged { op, .. } => op.input_kinds(),
+            Op::Batch { ops } => ops.iter().fold(0, |k, op| k | op.input_kinds()),
         }
     }
 
@@ -103,6 +104,9 @@ impl Op {
         };
         let point = |p: &crate::point::Point<BigRational>| p.try_map(keep);
         Ok(match self {
+            Op::Batch { ops } => Op::Batch {
+                ops: ops.iter().map(|op| op.with_only(kind)).collect::<Result<_>>()?,
+            },
             Op::Judged { op, approx, method } => Op::Judged {
                 op: Box::new(op.with_only(kind)?),
                 approx: approx.clone(),
@@ -210,6 +214,12 @@ impl Op {
             // judging an answer reads each exact coordinate about as writing it does, and the
             // bounds are float triangles: a float operation is about 5 ns, a coordinate's
             // judgement (ulps, the bound decided exactly, the condition) about 2 µs
+            // each parameter after the first weighted as `eval`'s batches are
+            Op::Batch { ops } => ops
+                .iter()
+                .enumerate()
+                .map(|(k, op)| op.calibrated_work() * if k == 0 { 1.0 } else { super::batch::BATCH_WEIGHT })
+                .sum(),
             Op::Judged { op, .. } => {
                 2.0 * op.calibrated_work()
                     + FLOAT_OPERATION * super::judged::float_work(op)

@@ -61,6 +61,9 @@ impl Op {
                 fields.join(", ")
             )));
         }
+        if op == "split" && obj.get("t").is_some_and(Value::is_array) {
+            return super::batch::split_batch(obj);
+        }
         let req = Fields { obj, op };
         let name = op;
         let op = match op {

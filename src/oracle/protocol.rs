@@ -111,6 +111,12 @@ pub enum Op {
         /// the caller's algorithm
         method: PointsMethod,
     },
+    /// One request at many parameters (`split` with `"t": [..]`): one op per parameter,
+    /// answered as `results`, the work limit counting them all.
+    Batch {
+        /// the requests, one per parameter
+        ops: Vec<Op>,
+    },
 }
 
 /// The exact result of an [`Op`].
@@ -152,6 +158,8 @@ pub enum Answer {
     Fit(Box<CubicFit<BigRational>>),
     /// Control points (or a split's halves) with the caller's float answer judged.
     Judged(Box<JudgedAnswer>),
+    /// A batch's answers, one per parameter.
+    Results(Vec<Answer>),
 }
 
 impl Answer {
@@ -214,6 +222,9 @@ impl Answer {
                 m.insert("warnings".into(), json!(fit.warnings));
             }
             Answer::Judged(j) => m = j.to_json(),
+            Answer::Results(r) => {
+                m.insert("results".into(), r.iter().map(|a| Value::Object(a.to_json())).collect());
+            }
         }
         m
     }
@@ -292,6 +303,18 @@ impl Op {
                 }
             }
             Op::Judged { op, .. } => op.check_limits()?,
+            Op::Batch { ops } => {
+                if ops.is_empty() || ops.len() > super::MAX_BATCH {
+                    return Err(too_large(
+                        "number of parameters in a batch",
+                        ops.len(),
+                        super::MAX_BATCH,
+                    ));
+                }
+                for op in ops {
+                    op.check_limits()?;
+                }
+            }
             Op::FitCubic { data } => {
                 if data.x0.dim() > MAX_REQUEST_DIMENSION {
                     return Err(too_large("dimension", data.x0.dim(), MAX_REQUEST_DIMENSION));
@@ -401,6 +424,7 @@ impl Op {
             }
             Op::FitCubic { data } => Answer::Fit(Box::new(fit_cubic(data)?)),
             Op::Judged { op, approx, method } => super::judged::run(op, approx.as_ref(), *method)?,
+            Op::Batch { ops } => Answer::Results(ops.iter().map(Op::run_checked).collect::<Result<_>>()?),
             Op::ToBezier { power } => {
                 let coeffs = (0..power[0].len())
                     .map(|i| Point::new(power.iter().map(|c| c[i].clone()).collect()))
