@@ -15,7 +15,7 @@
 //! .unwrap();
 //! let exact = curve.eval(&f64_to_rational(t).unwrap()).coords()[0].clone();
 //! let j = judge(de_casteljau(&b, t), &exact, a_priori_bound(&b, t)).unwrap();
-//! assert!(j.within_bound && j.ulps <= 1);
+//! assert!(j.within_bound && j.ulps() <= 1);
 //! // an answer 1e-10 off is far outside de Casteljau's bound
 //! let off = judge(de_casteljau(&b, t) + 1e-10, &exact, a_priori_bound(&b, t)).unwrap();
 //! assert!(!off.within_bound);
