@@ -9,7 +9,8 @@ use super::judge::{
     float_coords, float_eval, float_json, floats_from_json, judge_float, no_nan, not_a_float, rounded_inputs,
     BoundCheck, FloatMethod,
 };
-use super::protocol::{insert_bound, insert_errors, insert_verdicts, too_large};
+use super::protocol::{insert_bound, insert_errors, insert_verdicts};
+use super::values::too_large;
 use super::values::{describe, number_from_json, point_to_json};
 use super::{Answer, Op, MAX_REQUEST_WORK};
 use crate::curve::BezierCurve;
@@ -83,7 +84,7 @@ fn parameters(obj: &Map<String, Value>) -> Result<Vec<BigRational>> {
 /// dominates, and a batch is many small ones, each judged and written as its own object
 /// (301 planar points at 4096 parameters `1/3`, 37% of the limit at weight 4, took 0.5–1.1 s
 /// of CPU). The first parameter counts once: a batch of one is the request alone.
-const BATCH_WEIGHT: f64 = 16.0;
+pub(super) const BATCH_WEIGHT: f64 = 16.0;
 
 /// Refuses a batch whose summed work estimate is beyond [`MAX_REQUEST_WORK`]; `op` is any one of its
 /// requests, its parameter replaced in turn. The sum is compared with the limit as it grows,
@@ -97,8 +98,14 @@ fn check_batch_work(op: &mut Op, ts: &[BigRational]) -> Result<()> {
             Some(w) => *w,
             None => {
                 match op {
-                    Op::Eval { t: slot, .. } | Op::FloatEval { t: slot, .. } => *slot = t.clone(),
-                    _ => unreachable!("batches are of eval and float_eval"),
+                    Op::Eval { t: slot, .. } | Op::FloatEval { t: slot, .. } | Op::Split { t: slot, .. } => {
+                        *slot = t.clone()
+                    }
+                    Op::Judged { op, .. } => match op.as_mut() {
+                        Op::Split { t: slot, .. } => *slot = t.clone(),
+                        _ => unreachable!("batches of judged ops are splits"),
+                    },
+                    _ => unreachable!("batches are of eval, float_eval and split"),
                 }
                 let w = op.work();
                 seen.insert(t, w);
@@ -272,4 +279,51 @@ fn float_eval_batch(obj: &Map<String, Value>) -> Result<Map<String, Value>> {
     let mut m = Map::new();
     m.insert("results".into(), Value::Array(results));
     Ok(m)
+}
+
+/// `split` at many parameters (`"t": [..]`, `approx` then one per parameter): the typed
+/// [`Op::Batch`] of one split per parameter, read by the general path and its work limit
+/// checked before any op is built.
+pub(super) fn split_batch(obj: &Map<String, Value>) -> Result<Op> {
+    let ts = parameters(obj)?;
+    let approx = match obj.get("approx") {
+        None => None,
+        Some(v) => Some(v.as_array().filter(|a| a.len() == ts.len()).ok_or_else(|| {
+            Error::Parse(format!(
+                "field 'approx': a batch needs one approximation per parameter ({}), got {}",
+                ts.len(),
+                describe(v)
+            ))
+        })?),
+    };
+    let mut first = base_request(obj, &["approx"], &obj["t"][0]);
+    if let Some(a) = approx {
+        first["approx"] = a[0].clone();
+    }
+    let mut op = Op::from_json(&first).map_err(|e| in_context("parameter 0", e))?;
+    check_batch_work(&mut op, &ts)?;
+    let mut ops = Vec::with_capacity(ts.len());
+    for (k, t) in ts.iter().enumerate() {
+        let mut one = op.clone();
+        match &mut one {
+            Op::Split { t: slot, .. } => *slot = t.clone(),
+            Op::Judged {
+                op: inner,
+                approx: slot,
+                ..
+            } => {
+                let Op::Split { curve, t: at } = inner.as_mut() else {
+                    unreachable!("a split request reads as a split")
+                };
+                *at = t.clone();
+                if let Some(a) = approx {
+                    let read = super::judged::Approx::from_json(&a[k], true, curve.points().len(), curve.dim());
+                    *slot = Some(read.map_err(|e| in_context(&format!("parameter {k}"), e))?);
+                }
+            }
+            _ => unreachable!("a split request reads as a split"),
+        }
+        ops.push(one);
+    }
+    Ok(Op::Batch { ops })
 }

@@ -4,6 +4,8 @@ use super::judge::{
     curve_bounds, float_eval, float_json, rational_bounds, surface_bounds, ulps_json, BoundCheck, FloatEvalAnswer,
     FloatMethod,
 };
+use super::judged::{Approx, JudgedAnswer, PointsMethod};
+use super::values::too_large;
 use super::values::{number_to_json, point_to_json, points_to_json};
 use super::{MAX_DEGREE, MAX_POINTS, MAX_REQUEST_DIMENSION, MAX_REQUEST_WORK};
 use crate::conic::{classify_conic, implicit_conic, ConicKind};
@@ -98,6 +100,23 @@ pub enum Op {
         /// the evaluator
         method: FloatMethod,
     },
+    /// An op answering control points (`split`, `elevate`, `derivative` without `t`,
+    /// `to_bezier`) with the caller's float answer judged against the a priori bound of
+    /// `method`, the caller's algorithm.
+    Judged {
+        /// the op
+        op: Box<Op>,
+        /// the caller's float answer, shaped as the exact one (without it, the bounds alone)
+        approx: Option<Approx>,
+        /// the caller's algorithm
+        method: PointsMethod,
+    },
+    /// One request at many parameters (`split` with `"t": [..]`): one op per parameter,
+    /// answered as `results`, the work limit counting them all.
+    Batch {
+        /// the requests, one per parameter
+        ops: Vec<Op>,
+    },
 }
 
 /// The exact result of an [`Op`].
@@ -137,6 +156,10 @@ pub enum Answer {
     },
     /// Text 004's cubic fit.
     Fit(Box<CubicFit<BigRational>>),
+    /// Control points (or a split's halves) with the caller's float answer judged.
+    Judged(Box<JudgedAnswer>),
+    /// A batch's answers, one per parameter.
+    Results(Vec<Answer>),
 }
 
 impl Answer {
@@ -197,6 +220,10 @@ impl Answer {
                 m.insert("points".into(), points_to_json(fit.curve.points()));
                 m.insert("delta2".into(), number_to_json(&fit.delta2));
                 m.insert("warnings".into(), json!(fit.warnings));
+            }
+            Answer::Judged(j) => m = j.to_json(),
+            Answer::Results(r) => {
+                m.insert("results".into(), r.iter().map(|a| Value::Object(a.to_json())).collect());
             }
         }
         m
@@ -273,6 +300,19 @@ impl Op {
                 }
                 if surface.dim() > MAX_REQUEST_DIMENSION {
                     return Err(too_large("dimension", surface.dim(), MAX_REQUEST_DIMENSION));
+                }
+            }
+            Op::Judged { op, .. } => op.check_limits()?,
+            Op::Batch { ops } => {
+                if ops.is_empty() || ops.len() > super::MAX_BATCH {
+                    return Err(too_large(
+                        "number of parameters in a batch",
+                        ops.len(),
+                        super::MAX_BATCH,
+                    ));
+                }
+                for op in ops {
+                    op.check_limits()?;
                 }
             }
             Op::FitCubic { data } => {
@@ -383,6 +423,8 @@ impl Op {
                 Answer::Point { point, ulps, bound }
             }
             Op::FitCubic { data } => Answer::Fit(Box::new(fit_cubic(data)?)),
+            Op::Judged { op, approx, method } => super::judged::run(op, approx.as_ref(), *method)?,
+            Op::Batch { ops } => Answer::Results(ops.iter().map(Op::run_checked).collect::<Result<_>>()?),
             Op::ToBezier { power } => {
                 let coeffs = (0..power[0].len())
                     .map(|i| Point::new(power.iter().map(|c| c[i].clone()).collect()))
@@ -447,19 +489,3 @@ pub const OPS: &[&str] = &[
     "fit_cubic",
     "float_eval",
 ];
-
-pub(super) fn too_large(what: &'static str, value: usize, limit: usize) -> Error {
-    Error::TooLarge {
-        what,
-        value: value.to_string(),
-        limit: limit.to_string(),
-    }
-}
-
-pub(super) fn truncate(s: &str) -> String {
-    if s.chars().count() > 40 {
-        format!("{}…", s.chars().take(40).collect::<String>())
-    } else {
-        s.to_string()
-    }
-}
