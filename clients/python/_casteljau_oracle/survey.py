@@ -1,0 +1,449 @@
+"""A conformance survey: float Bézier code judged by the oracle, case by seeded case.
+
+A survey is (library, op, seed, count): `cases` draws `count` curves from the seed, each
+from its own `random.Random` (so any range of case numbers gives the same cases whichever
+process draws them), the library answers each in floats, and the oracle judges every
+answer against the exact one. `run` does it in one process with an `OraclePool`;
+`run_on_dask` splits the case numbers into partitions and runs the same `run` on each
+partition on a Dask cluster (each task with its own pool), so the records are the same.
+
+Ops, in the shape of the oracle's exact answers:
+
+- `eval` at t: a point; `split` at t, `subdivide` (split at 1/2) and `specialize` (two
+  calls, [0, t] and [t, 1]): `{"left": points, "right": points}`; `elevate` (by one):
+  points; `derivative`: the hodograph's control points; `derivative_at`: the derivative
+  vector at t.
+
+Each record gives, over the answer's coordinates, the largest `ulps` (steps from the
+correctly rounded exact value) and `error_ulps`, and how many coordinates are outside the
+a priori bound of the algorithm (`bound_method`), or None where the oracle gives no bound
+for that op. The core needs only the standard library; the numpy reference needs numpy and
+the `bezier` library needs the PyPI package `bezier`.
+"""
+
+import json
+import math
+import random
+from fractions import Fraction
+
+from .errors import OracleError
+from .floats import ulps as float_ulps
+from .pool import OraclePool
+
+#: the oracle op and the exact answer's fields for each surveyed op
+_EXACT = {
+    "eval": ("eval", ("point",)),
+    "split": ("split", ("left", "right")),
+    "subdivide": ("split", ("left", "right")),
+    "specialize": ("split", ("left", "right")),
+    "elevate": ("elevate", ("points",)),
+    "derivative": ("derivative", ("points",)),
+    "derivative_at": ("derivative", ("vector",)),
+}
+
+#: ops that take a parameter t
+_WITH_T = {"eval", "split", "subdivide", "specialize", "derivative_at"}
+
+KINDS = ("ordinary", "near_root", "cancel")
+
+
+def case(seed, i, degrees=range(1, 13), dims=(2, 3), t=None):
+    """Case `i` of the seed: a dict with `id`, `degree`, `dim`, `kind`, `points` (floats)
+    and `t` (a float in [0, 1], or the given `t`).
+
+    Half of the cases are ordinary (coordinates uniform in ±2^k, |k| ≤ 8, t uniform); a
+    quarter put a root of multiplicity n of every coordinate near t (b_i = (−r)^(n−i)
+    (1 − r)^i, rounded, r within 2^−10 … 2^−40 of t): the value is tiny beside the control
+    points; a quarter alternate large control points (±2^10 … 2^30, each off by a little)
+    around a small offset, with t near 1/2: cancellation."""
+    rng = random.Random(seed * 1_000_003 + i)
+    degrees, dims = list(degrees), list(dims)
+    n = degrees[rng.randrange(len(degrees))]
+    dim = dims[rng.randrange(len(dims))]
+    u = rng.random()
+    kind = "ordinary" if u < 0.5 else ("near_root" if u < 0.75 else "cancel")
+    if kind == "ordinary":
+        tt = rng.random() if t is None else t
+        scale = 2.0 ** rng.randint(-8, 8)
+        points = [[rng.uniform(-1, 1) * scale for _ in range(dim)] for _ in range(n + 1)]
+    elif kind == "near_root":
+        tt = rng.random() if t is None else t
+        coords = []
+        for _ in range(dim):
+            r = tt + rng.choice((-1.0, 1.0)) * 2.0 ** -rng.randint(10, 40)
+            scale = 2.0 ** rng.randint(-4, 4)
+            coords.append([scale * (-r) ** (n - k) * (1 - r) ** k for k in range(n + 1)])
+        points = [[coords[c][k] for c in range(dim)] for k in range(n + 1)]
+    else:
+        tt = 0.5 + rng.uniform(-1e-3, 1e-3) if t is None else t
+        big = 2.0 ** rng.randint(10, 30)
+        points = [
+            [(-1) ** k * big * (1 + rng.uniform(-1e-6, 1e-6)) + rng.uniform(-1, 1) for _ in range(dim)]
+            for k in range(n + 1)
+        ]
+    return {"id": i, "degree": n, "dim": dim, "kind": kind, "points": points, "t": tt}
+
+
+def cases(seed, start, stop, op, degrees=range(1, 13), dims=(2, 3)):
+    """Cases start..stop of the seed for `op` (`subdivide` splits at 1/2; ops without t
+    drop it)."""
+    out = []
+    for i in range(start, stop):
+        c = case(seed, i, degrees, dims, t=0.5 if op == "subdivide" else None)
+        if op not in _WITH_T:
+            c["t"] = None
+        out.append(c)
+    return out
+
+
+# -- the libraries ----------------------------------------------------------------------
+
+
+def _numpy_answer(op, points, t):
+    """The numpy reference: de Casteljau's convex form fl(fl(s·a) + fl(t·b)), s = fl(1 − t),
+    for eval and split; elevation w_i = fl(fl(α_i·b_(i−1)) + fl((1 − α_i)·b_i)) with
+    α_i = fl(i/(n+1)) and fl(1 − α_i); the hodograph fl(n·fl(b_(i+1) − b_i))."""
+    import numpy as np
+
+    b = np.asarray(points, dtype=np.float64)
+    n = len(b) - 1
+    if op in ("eval", "split", "subdivide"):
+        s = 1.0 - t
+        rows, left, right = b, [b[0]], [b[-1]]
+        for _ in range(n):
+            rows = s * rows[:-1] + t * rows[1:]
+            left.append(rows[0])
+            right.append(rows[-1])
+        if op == "eval":
+            return rows[0].tolist()
+        return {"left": np.array(left).tolist(), "right": np.array(right[::-1]).tolist()}
+    if op == "elevate":
+        alpha = np.arange(1, n + 1, dtype=np.float64)[:, None] / (n + 1)
+        inner = alpha * b[:-1] + (1.0 - alpha) * b[1:]
+        return np.concatenate([b[:1], inner, b[-1:]]).tolist()
+    if op == "derivative":
+        return (float(n) * (b[1:] - b[:-1])).tolist()
+    raise OracleError(f"the numpy reference has no {op}")
+
+
+def _bezier_answer(op, points, t):
+    """The PyPI package `bezier` (its compiled speedups where built): Curve.evaluate (the
+    VS algorithm, a nested Bernstein sum), subdivide (matrix products), specialize (de
+    Casteljau rounds), elevate, evaluate_hodograph."""
+    import bezier
+    import numpy as np
+
+    nodes = np.asfortranarray(np.asarray(points, dtype=np.float64).T)
+    curve = bezier.Curve(nodes, degree=len(points) - 1, copy=False)
+    if op == "eval":
+        return curve.evaluate(t)[:, 0].tolist()
+    if op == "subdivide":
+        left, right = curve.subdivide()
+        return {"left": left.nodes.T.tolist(), "right": right.nodes.T.tolist()}
+    if op == "specialize":
+        return {"left": curve.specialize(0.0, t).nodes.T.tolist(), "right": curve.specialize(t, 1.0).nodes.T.tolist()}
+    if op == "elevate":
+        return curve.elevate().nodes.T.tolist()
+    if op == "derivative_at":
+        return curve.evaluate_hodograph(t)[:, 0].tolist()
+    raise OracleError(f"bezier has no {op} here")
+
+
+#: library name -> (answer function or None for answers computed elsewhere, ops, degrees, dims)
+LIBRARIES = {
+    "numpy": (_numpy_answer, ("eval", "split", "elevate", "derivative"), range(1, 13), (2, 3)),
+    "bezier": (_bezier_answer, ("eval", "subdivide", "specialize", "elevate", "derivative_at"), range(1, 13), (2, 3)),
+    "kurbo": (None, ("eval", "subdivide", "split", "elevate", "derivative"), range(1, 4), (2,)),
+    "lyon": (None, ("eval", "split", "elevate", "derivative_at"), range(1, 4), (2,)),
+}
+
+#: the Rust crates' ops only for some degrees (kurbo and lyon elevate only quadratics,
+#: kurbo's hodograph starts at quadratics, lyon's derivative_at at quadratics)
+_DEGREES = {
+    ("kurbo", "elevate"): range(2, 3),
+    ("lyon", "elevate"): range(2, 3),
+    ("kurbo", "derivative"): range(2, 4),
+    ("lyon", "derivative_at"): range(2, 4),
+}
+
+
+def library_cases(lib, op, seed, start, stop):
+    """The cases of `lib` for `op`: its degrees and dimensions."""
+    _, ops, degrees, dims = LIBRARIES[lib]
+    if op not in ops:
+        raise OracleError(f"{lib} has no {op} in the survey (it has {', '.join(ops)})")
+    return cases(seed, start, stop, op, _DEGREES.get((lib, op), degrees), dims)
+
+
+def bound_method(lib, op, degree):
+    """The oracle's name of the algorithm `lib` runs for `op`, whose bound judges it (None:
+    the oracle's default for the op)."""
+    if op != "eval":
+        return None
+    if lib == "numpy" or (lib == "lyon" and degree == 1):
+        return "de_casteljau"  # lyon's line: euclid's lerp, (1 − t)·a + t·b
+    if lib == "kurbo" and degree == 1:
+        return "lerp"  # kurbo's Vec2::lerp, a + t·(b − a)
+    return "bernstein"  # sums of products: bezier's VS algorithm, kurbo's and lyon's cubics
+
+
+# -- judging ------------------------------------------------------------------------------
+
+
+def exact_request(op, c):
+    """The oracle request for the exact answer of case `c`."""
+    oracle_op, _ = _EXACT[op]
+    req = {"op": oracle_op, "points": c["points"]}
+    if oracle_op == "elevate":
+        req["by"] = 1
+    elif oracle_op == "derivative":
+        req["order"] = 1
+    if c.get("t") is not None:
+        req["t"] = c["t"]
+    return req
+
+
+def _ulp(x):
+    """ulp of the exact value x as docs/oracle.md defines it."""
+    if x == 0:
+        return Fraction(1, 2**1074)
+    e = math.floor(math.log2(abs(x)))
+    while Fraction(2) ** e > abs(x):
+        e -= 1
+    while Fraction(2) ** (e + 1) <= abs(x):
+        e += 1
+    return Fraction(2) ** (max(e, -1022) - 52)
+
+
+def _flat(answer, fields):
+    out = []
+    for f in fields:
+        v = answer[f]
+        out.extend(c for p in v for c in p) if v and isinstance(v[0], list) else out.extend(v)
+    return out
+
+
+def _judged_locally(exact, approx):
+    """ulps and error_ulps per coordinate, without a bound (the oracle gives none for this op)."""
+    rows = []
+    for x, a in zip(exact, approx):
+        x = Fraction(x)
+        if not math.isfinite(a):
+            rows.append((None, math.inf, None, None))
+            continue
+        err = abs(Fraction(a) - x) / _ulp(x)
+        rows.append((float_ulps(a, float(x)), float(err), None, None))
+    return rows
+
+
+def _judged_by_oracle(answer, fields):
+    """(ulps, error_ulps, within_bound) per coordinate from the oracle's judged fields."""
+
+    def flat(name, conv):
+        if name not in answer:
+            return None
+        v = answer[name]
+        if isinstance(v, dict):
+            return [conv(c) for f in fields for p in v[f] for c in p]
+        return [conv(c) for c in _flat({name: v}, [name])] if v and isinstance(v[0], list) else [conv(c) for c in v]
+
+    def num(x):
+        return math.inf if x == "inf" else float(x)
+
+    def steps(x):
+        return None if x is None else int(x)
+
+    us, es = flat("ulps", steps), flat("error_ulps", num)
+    wb = flat("within_bound", bool)
+    wb = wb if wb is not None else [None] * len(us)
+    bs = flat("bound", num)
+    bs = bs if bs is not None else [None] * len(us)
+    return list(zip(us, es, wb, bs))
+
+
+def judge(pool, lib, op, answered, capabilities):
+    """Records for the answered cases (each case with its `approx`), judged by the pool."""
+    oracle_op, fields = _EXACT[op]
+    with_approx = capabilities.get(oracle_op, False)
+    reqs = []
+    for c in answered:
+        req = exact_request(op, c)
+        if with_approx:
+            req["approx"] = c["approx"]
+            method = bound_method(lib, op, c["degree"])
+            if method is not None:
+                req["method"] = method
+        reqs.append(req)
+    answers = pool.requests(reqs, check=True)
+    records = []
+    for c, req, a in zip(answered, reqs, answers):
+        if with_approx:
+            rows = _judged_by_oracle(a, fields)
+        else:
+            rows = _judged_locally(_flat(a, fields), _flat_approx(c["approx"], fields))
+        finite = [u for u, _, _, _ in rows if u is not None]
+        judged = [w for _, _, w, _ in rows if w is not None]
+        # the share of its bound an answer uses: error_ulps / bound (1 at the bound)
+        used = [e / b if b else (0.0 if e == 0 else math.inf) for _, e, _, b in rows if b is not None]
+        repro = dict(req)
+        repro["approx"] = c["approx"]
+        records.append(
+            {
+                "lib": lib,
+                "op": op,
+                "id": c["id"],
+                "degree": c["degree"],
+                "dim": c["dim"],
+                "kind": c["kind"],
+                "ulps": max(finite) if len(finite) == len(rows) else None,
+                "error_ulps": max(e for _, e, _, _ in rows),
+                "bound_used": max(used) if used else None,
+                "outside": sum(1 for w in judged if not w) if judged else None,
+                "bound_method": (bound_method(lib, op, c["degree"]) or "default") if judged else None,
+                "request": repro,
+            }
+        )
+    return records
+
+
+def _flat_approx(approx, fields):
+    if isinstance(approx, dict):
+        return [float(x) for f in fields for p in approx[f] for x in p]
+    if approx and isinstance(approx[0], list):
+        return [float(x) for p in approx for x in p]
+    return [float(x) for x in approx]
+
+
+def capabilities(pool):
+    """Which oracle ops judge an `approx` (the others are judged here: ulps, no bound)."""
+    probes = {
+        "eval": {"op": "eval", "points": [[0.0], [1.0]], "t": 0.5, "approx": [0.5]},
+        "split": {"op": "split", "points": [[0.0], [1.0]], "t": 0.5, "approx": {"left": [[0.0], [0.5]], "right": [[0.5], [1.0]]}},
+        "elevate": {"op": "elevate", "points": [[0.0], [1.0]], "by": 1, "approx": [[0.0], [0.5], [1.0]]},
+        "derivative": {"op": "derivative", "points": [[0.0], [1.0]], "order": 1, "approx": [[1.0]]},
+    }
+    answers = pool.requests(list(probes.values()), check=False)
+    return {op: bool(a.get("ok")) and "ulps" in a for op, a in zip(probes, answers)}
+
+
+def answer_cases(lib, op, cs, rust_answers=None):
+    """The cases with the library's `approx`; `rust_answers(lib, op, cases)` answers for
+    the Rust crates (scripts/survey.py runs the example)."""
+    fn = LIBRARIES[lib][0]
+    if fn is None:
+        if rust_answers is None:
+            raise OracleError(f"{lib} is a Rust crate: its answers come from scripts/peers_survey.rs")
+        approxes = rust_answers(lib, op, cs)
+    else:
+        approxes = [fn(op, c["points"], c["t"]) for c in cs]
+    return [dict(c, approx=a) for c, a in zip(cs, approxes)]
+
+
+def run(lib, op, seed, start, stop, binary=None, pool_size=2, rust_answers=None, pool=None):
+    """Records of cases start..stop of (lib, op, seed), in case order. Uses `pool`, or
+    opens an `OraclePool` of `pool_size` oracles for the call."""
+    cs = answer_cases(lib, op, library_cases(lib, op, seed, start, stop), rust_answers)
+    if pool is not None:
+        return judge(pool, lib, op, cs, capabilities(pool))
+    with OraclePool(pool_size, binary) as p:
+        return judge(p, lib, op, cs, capabilities(p))
+
+
+def run_on_dask(client, lib, op, seed, count, partitions, binary=None, pool_size=1):
+    """`run` over case numbers 0..count in `partitions` Dask tasks, each opening its own
+    pool of `pool_size` oracles on its worker: the records in case order, the same as
+    `run(lib, op, seed, 0, count)`'s."""
+    step = -(-count // partitions)
+    bounds = [(s, min(s + step, count)) for s in range(0, count, step)]
+    futures = client.map(
+        lambda b: run(lib, op, seed, b[0], b[1], binary=binary, pool_size=pool_size),
+        bounds,
+        key=[f"casteljau-survey-{lib}-{op}-{seed}-{a}-{b}" for a, b in bounds],
+    )
+    return [r for part in client.gather(futures) for r in part]
+
+
+# -- the summary ----------------------------------------------------------------------------
+
+
+def _quantile(sorted_values, q):
+    """The q-quantile by the nearest rank (an element of the data)."""
+    if not sorted_values:
+        return None
+    k = max(0, math.ceil(q * len(sorted_values)) - 1)
+    return sorted_values[k]
+
+
+def summary(records):
+    """Per (lib, op): counts, median/p99/max of the largest ulps per answer (overall and
+    per kind), answers outside the bound, and the worst case's request."""
+    out = {}
+    for r in records:
+        out.setdefault((r["lib"], r["op"]), []).append(r)
+    rows = []
+    for (lib, op), rs in out.items():
+
+        def stats(sub):
+            us = sorted(math.inf if r["ulps"] is None else r["ulps"] for r in sub)
+            return {"n": len(sub), "median": _quantile(us, 0.5), "p99": _quantile(us, 0.99), "max": us[-1] if us else None}
+
+        judged = [r for r in rs if r["outside"] is not None]
+        outside = [r for r in judged if r["outside"]]
+        worst = max(rs, key=lambda r: (math.inf if r["ulps"] is None else r["ulps"], r["error_ulps"]))
+        rows.append(
+            {
+                "lib": lib,
+                "op": op,
+                "all": stats(rs),
+                "ordinary": stats([r for r in rs if r["kind"] == "ordinary"]),
+                "ill": stats([r for r in rs if r["kind"] != "ordinary"]),
+                "judged": len(judged),
+                "bound_used": max((r["bound_used"] for r in judged if r["bound_used"] is not None), default=None),
+                "outside": len(outside),
+                "methods": sorted({r["bound_method"] for r in judged}),
+                "worst": worst,
+                "worst_outside": max(outside, key=lambda r: r["bound_used"] or math.inf) if outside else None,
+            }
+        )
+    return rows
+
+
+def _fmt(x):
+    if x is None:
+        return "–"
+    if x == math.inf:
+        return "inf"
+    return f"{x:.3g}" if x >= 1e6 else str(x)
+
+
+def _compact(req):
+    return json.dumps(req, separators=(",", ":"))
+
+
+def _share(x):
+    return "–" if x is None else ("inf" if x == math.inf else f"{x:.3g}")
+
+
+def markdown(rows):
+    """The summary as a Markdown table, then the worst inputs as requests."""
+    lines = [
+        "| library | op | answers | ulps median / p99 / max (ordinary) | ulps median / p99 / max (ill-conditioned) | outside the bound | most of the bound used | bound of |",
+        "|---|---|---:|---|---|---|---|---|",
+    ]
+    for r in rows:
+        o, i = r["ordinary"], r["ill"]
+        outside = f"{r['outside']} of {r['judged']}" if r["judged"] else "no bound"
+        lines.append(
+            f"| {r['lib']} | {r['op']} | {r['all']['n']} | {_fmt(o['median'])} / {_fmt(o['p99'])} / {_fmt(o['max'])}"
+            f" | {_fmt(i['median'])} / {_fmt(i['p99'])} / {_fmt(i['max'])} | {outside} | {_share(r['bound_used'])} | {', '.join(r['methods']) or '–'} |"
+        )
+    lines.append("")
+    for r in rows:
+        w = r["worst"]
+        lines.append(f"- {r['lib']} {r['op']}, the most ulps ({_fmt(w['ulps'])}, case {w['id']}, {w['kind']}):")
+        lines.append(f"  `{_compact(w['request'])}`")
+        if r["worst_outside"] is not None:
+            w = r["worst_outside"]
+            lines.append(f"  outside the bound, farthest ({_share(w['bound_used'])} of it, case {w['id']}):")
+            lines.append(f"  `{_compact(w['request'])}`")
+    return "\n".join(lines)
