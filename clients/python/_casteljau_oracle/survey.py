@@ -99,7 +99,7 @@ def cases(seed, start, stop, op, degrees=range(1, 13), dims=(2, 3)):
 # -- the libraries ----------------------------------------------------------------------
 
 
-def _numpy_answer(op, points, t):
+def numpy_answer(op, points, t):
     """The numpy reference: de Casteljau's convex form fl(fl(s·a) + fl(t·b)), s = fl(1 − t),
     for eval and split; elevation w_i = fl(fl(α_i·b_(i−1)) + fl((1 − α_i)·b_i)) with
     α_i = fl(i/(n+1)) and fl(1 − α_i); the hodograph fl(n·fl(b_(i+1) − b_i))."""
@@ -126,7 +126,7 @@ def _numpy_answer(op, points, t):
     raise OracleError(f"the numpy reference has no {op}")
 
 
-def _bezier_answer(op, points, t):
+def bezier_answer(op, points, t):
     """The PyPI package `bezier` (its compiled speedups where built): Curve.evaluate (the
     VS algorithm, a nested Bernstein sum), subdivide (matrix products), specialize (de
     Casteljau rounds), elevate, evaluate_hodograph."""
@@ -151,8 +151,8 @@ def _bezier_answer(op, points, t):
 
 #: library name -> (answer function or None for answers computed elsewhere, ops, degrees, dims)
 LIBRARIES = {
-    "numpy": (_numpy_answer, ("eval", "split", "elevate", "derivative"), range(1, 13), (2, 3)),
-    "bezier": (_bezier_answer, ("eval", "subdivide", "specialize", "elevate", "derivative_at"), range(1, 13), (2, 3)),
+    "numpy": (numpy_answer, ("eval", "split", "elevate", "derivative"), range(1, 13), (2, 3)),
+    "bezier": (bezier_answer, ("eval", "subdivide", "specialize", "elevate", "derivative_at"), range(1, 13), (2, 3)),
     "kurbo": (None, ("eval", "subdivide", "split", "elevate", "derivative"), range(1, 4), (2,)),
     "lyon": (None, ("eval", "split", "elevate", "derivative_at"), range(1, 4), (2,)),
 }
