@@ -101,8 +101,9 @@ def cases(seed, start, stop, op, degrees=range(1, 13), dims=(2, 3)):
 
 def numpy_answer(op, points, t):
     """The numpy reference: de Casteljau's convex form fl(fl(s·a) + fl(t·b)), s = fl(1 − t),
-    for eval and split; elevation w_i = fl(fl(α_i·b_(i−1)) + fl((1 − α_i)·b_i)) with
-    α_i = fl(i/(n+1)) and fl(1 − α_i); the hodograph fl(n·fl(b_(i+1) − b_i))."""
+    for eval and split; elevation w_i = fl(fl(α_i·b_(i−1)) + fl(β_i·b_i)) with
+    α_i = fl(i/(n+1)), β_i = fl((n+1−i)/(n+1)); the hodograph fl(n·fl(b_(i+1) − b_i)).
+    The oracle's methods de_casteljau, formula and differences."""
     import numpy as np
 
     b = np.asarray(points, dtype=np.float64)
@@ -118,8 +119,8 @@ def numpy_answer(op, points, t):
             return rows[0].tolist()
         return {"left": np.array(left).tolist(), "right": np.array(right[::-1]).tolist()}
     if op == "elevate":
-        alpha = np.arange(1, n + 1, dtype=np.float64)[:, None] / (n + 1)
-        inner = alpha * b[:-1] + (1.0 - alpha) * b[1:]
+        i = np.arange(1, n + 1, dtype=np.float64)[:, None]
+        inner = (i / (n + 1)) * b[:-1] + ((n + 1 - i) / (n + 1)) * b[1:]
         return np.concatenate([b[:1], inner, b[-1:]]).tolist()
     if op == "derivative":
         return (float(n) * (b[1:] - b[:-1])).tolist()
@@ -175,16 +176,41 @@ def library_cases(lib, op, seed, start, stop):
     return cases(seed, start, stop, op, _DEGREES.get((lib, op), degrees), dims)
 
 
+#: per (library, op): the oracle's name of the algorithm whose a priori bound judges the
+#: answers, per degree, and whether it is the library's own algorithm (then an answer
+#: outside it is a finding) or only the textbook algorithm's bound, for reference
+_METHODS = {
+    # sums of products (Bernstein form): bezier's VS algorithm, kurbo's and lyon's curves
+    ("numpy", "eval"): lambda n: ("de_casteljau", True),
+    ("bezier", "eval"): lambda n: ("bernstein", True),
+    ("kurbo", "eval"): lambda n: ("lerp", True) if n == 1 else ("bernstein", True),  # Vec2::lerp: a + t(b − a)
+    ("lyon", "eval"): lambda n: ("de_casteljau", True) if n == 1 else ("bernstein", True),  # euclid: (1 − t)a + tb
+    ("numpy", "split"): lambda n: ("de_casteljau", True),
+    # matrix products with exact dyadic entries: at most j + 1 roundings for point j, within
+    # de Casteljau's 2j at t = 1/2
+    ("bezier", "subdivide"): lambda n: ("de_casteljau", True),
+    # rounds of (1 − t)a + tb and exact rounds of (1, 0), (0, 1)
+    ("bezier", "specialize"): lambda n: ("de_casteljau", True),
+    # midpoints, (a + 2b + c)/4 and eval(1/2): at most 2j roundings for point j
+    ("kurbo", "subdivide"): lambda n: ("de_casteljau", True),
+    # subsegment: ends by eval, inner points from the derivative and fl(1/3): not de Casteljau
+    ("kurbo", "split"): lambda n: ("de_casteljau", False),
+    # the cubic's triangle in the lerp form; the quadratic's split point is a Bernstein sum
+    ("lyon", "split"): lambda n: ("lerp", True) if n == 3 else ("de_casteljau", n == 1),
+    ("numpy", "elevate"): lambda n: ("formula", True),
+    ("bezier", "elevate"): lambda n: ("formula", True),  # fl(fl(i·a + (m+1−i)·b)/(m+1))
+    ("lyon", "elevate"): lambda n: ("formula", True),  # (a + 2b)/3
+    ("kurbo", "elevate"): lambda n: ("formula", False),  # a + fl(2/3)·(b − a)
+    ("numpy", "derivative"): lambda n: ("differences", True),
+    ("kurbo", "derivative"): lambda n: ("differences", True),
+}
+
+
 def bound_method(lib, op, degree):
-    """The oracle's name of the algorithm `lib` runs for `op`, whose bound judges it (None:
-    the oracle's default for the op)."""
-    if op != "eval":
-        return None
-    if lib == "numpy" or (lib == "lyon" and degree == 1):
-        return "de_casteljau"  # lyon's line: euclid's lerp, (1 − t)·a + t·b
-    if lib == "kurbo" and degree == 1:
-        return "lerp"  # kurbo's Vec2::lerp, a + t·(b − a)
-    return "bernstein"  # sums of products: bezier's VS algorithm, kurbo's and lyon's cubics
+    """(the oracle's method name, whether it is `lib`'s own algorithm) for `op` at `degree`,
+    or (None, False) where the survey names none."""
+    pick = _METHODS.get((lib, op))
+    return pick(degree) if pick else (None, False)
 
 
 # -- judging ------------------------------------------------------------------------------
@@ -264,13 +290,14 @@ def _judged_by_oracle(answer, fields):
 def judge(pool, lib, op, answered, capabilities):
     """Records for the answered cases (each case with its `approx`), judged by the pool."""
     oracle_op, fields = _EXACT[op]
-    with_approx = capabilities.get(oracle_op, False)
+    # the oracle judges a derivative's control points, not its vector at t
+    with_approx = capabilities.get(oracle_op, False) and op != "derivative_at"
     reqs = []
     for c in answered:
         req = exact_request(op, c)
         if with_approx:
             req["approx"] = c["approx"]
-            method = bound_method(lib, op, c["degree"])
+            method, _ = bound_method(lib, op, c["degree"])
             if method is not None:
                 req["method"] = method
         reqs.append(req)
@@ -299,11 +326,18 @@ def judge(pool, lib, op, answered, capabilities):
                 "error_ulps": max(e for _, e, _, _ in rows),
                 "bound_used": max(used) if used else None,
                 "outside": sum(1 for w in judged if not w) if judged else None,
-                "bound_method": (bound_method(lib, op, c["degree"]) or "default") if judged else None,
+                "bound_method": _method_label(lib, op, c["degree"]) if judged else None,
+                "own": bound_method(lib, op, c["degree"])[1] if judged else None,
                 "request": repro,
             }
         )
     return records
+
+
+def _method_label(lib, op, degree):
+    """The bound's method, marked † when it is not the library's own algorithm."""
+    method, own = bound_method(lib, op, degree)
+    return (method or "default") + ("" if own else "†")
 
 
 def _flat_approx(approx, fields):
@@ -374,6 +408,10 @@ def _quantile(sorted_values, q):
     return sorted_values[k]
 
 
+def _farthest(records):
+    return max(records, key=lambda r: r["bound_used"] or math.inf) if records else None
+
+
 def summary(records):
     """Per (lib, op): counts, median/p99/max of the largest ulps per answer (overall and
     per kind), answers outside the bound, and the worst case's request."""
@@ -387,8 +425,9 @@ def summary(records):
             us = sorted(math.inf if r["ulps"] is None else r["ulps"] for r in sub)
             return {"n": len(sub), "median": _quantile(us, 0.5), "p99": _quantile(us, 0.99), "max": us[-1] if us else None}
 
-        judged = [r for r in rs if r["outside"] is not None]
+        judged = [r for r in rs if r["outside"] is not None and r["own"]]
         outside = [r for r in judged if r["outside"]]
+        reference = [r for r in rs if r["outside"] is not None and not r["own"]]
         worst = max(rs, key=lambda r: (math.inf if r["ulps"] is None else r["ulps"], r["error_ulps"]))
         rows.append(
             {
@@ -399,10 +438,16 @@ def summary(records):
                 "ill": stats([r for r in rs if r["kind"] != "ordinary"]),
                 "judged": len(judged),
                 "bound_used": max((r["bound_used"] for r in judged if r["bound_used"] is not None), default=None),
+                "bound_used_reference": max(
+                    (r["bound_used"] for r in reference if r["bound_used"] is not None), default=None
+                ),
                 "outside": len(outside),
-                "methods": sorted({r["bound_method"] for r in judged}),
+                "reference": len(reference),
+                "outside_reference": sum(1 for r in reference if r["outside"]),
+                "methods": sorted({r["bound_method"] for r in judged + reference}),
                 "worst": worst,
-                "worst_outside": max(outside, key=lambda r: r["bound_used"] or math.inf) if outside else None,
+                "worst_outside": _farthest(outside),
+                "worst_outside_reference": _farthest([r for r in reference if r["outside"]]),
             }
         )
     return rows
@@ -432,18 +477,24 @@ def markdown(rows):
     ]
     for r in rows:
         o, i = r["ordinary"], r["ill"]
-        outside = f"{r['outside']} of {r['judged']}" if r["judged"] else "no bound"
+        outside = f"{r['outside']} of {r['judged']}" if r["judged"] else ""
+        used = _share(r["bound_used"]) if r["judged"] else ""
+        if r["reference"]:
+            outside += ("; " if outside else "") + f"{r['outside_reference']} of {r['reference']} †"
+            used += ("; " if used else "") + f"{_share(r['bound_used_reference'])} †"
+        outside, used = outside or "no bound", used or "–"
         lines.append(
             f"| {r['lib']} | {r['op']} | {r['all']['n']} | {_fmt(o['median'])} / {_fmt(o['p99'])} / {_fmt(o['max'])}"
-            f" | {_fmt(i['median'])} / {_fmt(i['p99'])} / {_fmt(i['max'])} | {outside} | {_share(r['bound_used'])} | {', '.join(r['methods']) or '–'} |"
+            f" | {_fmt(i['median'])} / {_fmt(i['p99'])} / {_fmt(i['max'])} | {outside} | {used} | {', '.join(r['methods']) or '–'} |"
         )
     lines.append("")
     for r in rows:
         w = r["worst"]
         lines.append(f"- {r['lib']} {r['op']}, the most ulps ({_fmt(w['ulps'])}, case {w['id']}, {w['kind']}):")
         lines.append(f"  `{_compact(w['request'])}`")
-        if r["worst_outside"] is not None:
-            w = r["worst_outside"]
-            lines.append(f"  outside the bound, farthest ({_share(w['bound_used'])} of it, case {w['id']}):")
-            lines.append(f"  `{_compact(w['request'])}`")
+        for key, what in (("worst_outside", "its algorithm's bound"), ("worst_outside_reference", "the † bound")):
+            w = r[key]
+            if w is not None:
+                lines.append(f"  outside {what}, farthest ({_share(w['bound_used'])} times it, case {w['id']}):")
+                lines.append(f"  `{_compact(w['request'])}`")
     return "\n".join(lines)
