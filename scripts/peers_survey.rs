@@ -68,18 +68,19 @@ fn kurbo(op: &str, b: &[P], t: f64) -> Result<Value, String> {
             let d = CubicBez::new(kp(b[0]), kp(b[1]), kp(b[2]), kp(b[3])).deriv();
             Ok(json!([d.p0, d.p1, d.p2].map(from_k)))
         }
-        (2, _) => on_curve!(Line::new(kp(b[0]), kp(b[1])), |l: &Line| vec![from_k(l.p0), from_k(l.p1)]),
+        (2, _) => on_curve!(Line::new(kp(b[0]), kp(b[1])), |l: &Line| vec![
+            from_k(l.p0),
+            from_k(l.p1)
+        ]),
         (3, _) => on_curve!(QuadBez::new(kp(b[0]), kp(b[1]), kp(b[2])), |q: &QuadBez| vec![
             from_k(q.p0),
             from_k(q.p1),
             from_k(q.p2)
         ]),
-        (4, _) => on_curve!(CubicBez::new(kp(b[0]), kp(b[1]), kp(b[2]), kp(b[3])), |c: &CubicBez| vec![
-            from_k(c.p0),
-            from_k(c.p1),
-            from_k(c.p2),
-            from_k(c.p3)
-        ]),
+        (4, _) => on_curve!(
+            CubicBez::new(kp(b[0]), kp(b[1]), kp(b[2]), kp(b[3])),
+            |c: &CubicBez| vec![from_k(c.p0), from_k(c.p1), from_k(c.p2), from_k(c.p3)]
+        ),
         (n, _) => Err(format!("kurbo has no curve of {n} points")),
     }
 }
@@ -89,18 +90,28 @@ fn kurbo(op: &str, b: &[P], t: f64) -> Result<Value, String> {
 fn lyon(op: &str, b: &[P], t: f64) -> Result<Value, String> {
     match b.len() {
         2 => {
-            let c = LineSegment { from: lp(b[0]), to: lp(b[1]) };
+            let c = LineSegment {
+                from: lp(b[0]),
+                to: lp(b[1]),
+            };
             match op {
                 "eval" => Ok(json!(from_l(c.sample(t)))),
                 "split" => {
                     let (l, r) = c.split(t);
-                    Ok(split_answer(vec![from_l(l.from), from_l(l.to)], vec![from_l(r.from), from_l(r.to)]))
+                    Ok(split_answer(
+                        vec![from_l(l.from), from_l(l.to)],
+                        vec![from_l(r.from), from_l(r.to)],
+                    ))
                 }
                 _ => Err(format!("lyon has no line {op} here")),
             }
         }
         3 => {
-            let c = QuadraticBezierSegment { from: lp(b[0]), ctrl: lp(b[1]), to: lp(b[2]) };
+            let c = QuadraticBezierSegment {
+                from: lp(b[0]),
+                ctrl: lp(b[1]),
+                to: lp(b[2]),
+            };
             let pts = |q: &QuadraticBezierSegment<f64>| vec![from_l(q.from), from_l(q.ctrl), from_l(q.to)];
             match op {
                 "eval" => Ok(json!(from_l(c.sample(t)))),
@@ -120,8 +131,14 @@ fn lyon(op: &str, b: &[P], t: f64) -> Result<Value, String> {
             }
         }
         4 => {
-            let c = CubicBezierSegment { from: lp(b[0]), ctrl1: lp(b[1]), ctrl2: lp(b[2]), to: lp(b[3]) };
-            let pts = |q: &CubicBezierSegment<f64>| vec![from_l(q.from), from_l(q.ctrl1), from_l(q.ctrl2), from_l(q.to)];
+            let c = CubicBezierSegment {
+                from: lp(b[0]),
+                ctrl1: lp(b[1]),
+                ctrl2: lp(b[2]),
+                to: lp(b[3]),
+            };
+            let pts =
+                |q: &CubicBezierSegment<f64>| vec![from_l(q.from), from_l(q.ctrl1), from_l(q.ctrl2), from_l(q.to)];
             match op {
                 "eval" => Ok(json!(from_l(c.sample(t)))),
                 "split" => {
