@@ -189,10 +189,12 @@ _METHODS = {
     # matrix products with exact dyadic entries: at most j + 1 roundings for point j, within
     # de Casteljau's 2j at t = 1/2
     ("bezier", "subdivide"): lambda n: ("de_casteljau", True),
-    # rounds of (1 − t)a + tb and exact rounds of (1, 0), (0, 1)
-    ("bezier", "specialize"): lambda n: ("de_casteljau", True),
-    # midpoints, (a + 2b + c)/4 and eval(1/2): at most 2j roundings for point j
-    ("kurbo", "subdivide"): lambda n: ("de_casteljau", True),
+    # rounds of (1 − t)a + tb and exact rounds of (1, 0), (0, 1); the quadratic's is a
+    # closed form of products (bezier's specialize_curve_quadratic)
+    ("bezier", "specialize"): lambda n: ("de_casteljau", n != 2),
+    # midpoints, (a + 2b + c)/4 and eval(1/2): at most 2j roundings for point j; the line's
+    # halves are subsegments, its end point recomputed as p0 + 1·(p1 − p0)
+    ("kurbo", "subdivide"): lambda n: ("de_casteljau", n != 1),
     # subsegment: ends by eval, inner points from the derivative and fl(1/3): not de Casteljau
     ("kurbo", "split"): lambda n: ("de_casteljau", False),
     # the cubic's triangle in the lerp form; the quadratic's split point is a Bernstein sum
@@ -280,6 +282,8 @@ def _judged_by_oracle(answer, fields):
         return None if x is None else int(x)
 
     us, es = flat("ulps", steps), flat("error_ulps", num)
+    if us is None:  # an answer without judged fields (a point of one control point)
+        raise OracleError(f"the oracle did not judge: {answer}")
     wb = flat("within_bound", bool)
     wb = wb if wb is not None else [None] * len(us)
     bs = flat("bound", num)
@@ -287,27 +291,46 @@ def _judged_by_oracle(answer, fields):
     return list(zip(us, es, wb, bs))
 
 
+def _split_by_points(c, method):
+    """A split judged point by point: left point j is de Casteljau's triangle at level j
+    over b_0..b_j, right point k at level n − k over b_k..b_n, each the same float
+    operations as evaluating that sub-curve at t, so the evaluation bound of the sub-curve
+    (`eval` with `method`) is the bound of that point (for the oracles without `approx` on
+    `split`)."""
+    pts, t, n = c["points"], c["t"], c["degree"]
+    reqs = [{"op": "eval", "points": pts[: j + 1], "t": t, "approx": c["approx"]["left"][j]} for j in range(n + 1)]
+    reqs += [{"op": "eval", "points": pts[k:], "t": t, "approx": c["approx"]["right"][k]} for k in range(n + 1)]
+    for r in reqs:
+        r["method"] = method
+    return reqs
+
+
 def judge(pool, lib, op, answered, capabilities):
     """Records for the answered cases (each case with its `approx`), judged by the pool."""
     oracle_op, fields = _EXACT[op]
     # the oracle judges a derivative's control points, not its vector at t
     with_approx = capabilities.get(oracle_op, False) and op != "derivative_at"
-    reqs = []
+    by_points = oracle_op == "split" and not with_approx and capabilities.get("eval", False)
+    reqs, parts = [], []
     for c in answered:
         req = exact_request(op, c)
+        method, _ = bound_method(lib, op, c["degree"])
         if with_approx:
             req["approx"] = c["approx"]
-            method, _ = bound_method(lib, op, c["degree"])
             if method is not None:
                 req["method"] = method
         reqs.append(req)
-    answers = pool.requests(reqs, check=True)
-    records = []
-    for c, req, a in zip(answered, reqs, answers):
-        if with_approx:
-            rows = _judged_by_oracle(a, fields)
+        parts.append(_split_by_points(c, method or "de_casteljau") if by_points else [req])
+    flat = pool.requests([r for ps in parts for r in ps], check=True)
+    records, at = [], 0
+    for c, req, ps in zip(answered, reqs, parts):
+        answers, at = flat[at : at + len(ps)], at + len(ps)
+        if by_points:
+            rows = [row for a in answers for row in _judged_by_oracle(a, ("point",))]
+        elif with_approx:
+            rows = _judged_by_oracle(answers[0], fields)
         else:
-            rows = _judged_locally(_flat(a, fields), _flat_approx(c["approx"], fields))
+            rows = _judged_locally(_flat(answers[0], fields), _flat_approx(c["approx"], fields))
         finite = [u for u, _, _, _ in rows if u is not None]
         judged = [w for _, _, w, _ in rows if w is not None]
         # the share of its bound an answer uses: error_ulps / bound (1 at the bound)
