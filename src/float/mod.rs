@@ -16,6 +16,7 @@ mod dispatch;
 mod dyadic;
 mod eft;
 mod methods;
+mod ops;
 mod scratch;
 mod ulp;
 
@@ -34,6 +35,9 @@ pub(crate) use eft::{ExactRange, Factor};
 pub use methods::{
     bernstein_bound, bernstein_sum, binomials, condition_number, horner, horner_bound, lerp_bound, lerp_de_casteljau,
     power_coefficients,
+};
+pub use ops::{
+    derivative_bounds, elevate_bounds, split_bounds, to_bezier_bounds, OpBound, SplitForm, TO_BEZIER_MAX_DEGREE,
 };
 pub(crate) use scratch::with_scratch;
 pub use scratch::STACK_COEFFICIENTS;

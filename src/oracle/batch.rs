@@ -9,7 +9,8 @@ use super::judge::{
     float_coords, float_eval, float_json, floats_from_json, judge_float, no_nan, not_a_float, rounded_inputs,
     BoundCheck, FloatMethod,
 };
-use super::protocol::{insert_bound, insert_errors, insert_verdicts, too_large};
+use super::protocol::{insert_bound, insert_errors, insert_verdicts};
+use super::values::too_large;
 use super::values::{describe, number_from_json, point_to_json};
 use super::{Answer, Op, MAX_REQUEST_WORK};
 use crate::curve::BezierCurve;

@@ -41,6 +41,10 @@ const RATIONAL_EVAL: ByKind = ByKind([0.014, 0.035, 0.019, 0.15]);
 // nets of shorter fractions, whose model is smaller, are not admitted much further.
 const SURFACE_EVAL: ByKind = ByKind([0.63, 0.41, 0.33, 1.0e-4]);
 const FIT_CUBIC: ByKind = ByKind([0.16, 0.015, 0.017, 0.0006]);
+/// One float operation of a bound (`Op::Judged`), in the oracle's units (5 ns).
+const FLOAT_OPERATION: f64 = 1.0e4;
+/// One coordinate judged exactly (`Op::Judged`), in the oracle's units (2 µs).
+const JUDGED_COORDINATE: f64 = 4.0e6;
 const CONIC: ByKind = ByKind([0.17, 0.17, 0.17, 0.17]);
 
 impl Op {
@@ -84,6 +88,7 @@ impl Op {
                 number_kinds([&d.x0, &d.x1, &d.xh, &d.d0, &d.d1].into_iter().flat_map(|p| p.coords()))
             }
             Op::ToBezier { power } => number_kinds(power.iter().flatten()),
+            Op::Judged { op, .. } => op.input_kinds(),
         }
     }
 
@@ -98,6 +103,11 @@ impl Op {
         };
         let point = |p: &crate::point::Point<BigRational>| p.try_map(keep);
         Ok(match self {
+            Op::Judged { op, approx, method } => Op::Judged {
+                op: Box::new(op.with_only(kind)?),
+                approx: approx.clone(),
+                method: *method,
+            },
             Op::Eval { curve, t, .. } => Op::Eval {
                 curve: curve.try_map(keep)?,
                 t: t.clone(),
@@ -197,6 +207,14 @@ impl Op {
                 fit_cubic_work(data) * FIT_CUBIC.of(kind(numbers))
             }
             Op::ToBezier { power } => to_bezier_work(power) * TO_BEZIER.of(kind(&mut power.iter().flatten())),
+            // judging an answer reads each exact coordinate about as writing it does, and the
+            // bounds are float triangles: a float operation is about 5 ns, a coordinate's
+            // judgement (ulps, the bound decided exactly, the condition) about 2 µs
+            Op::Judged { op, .. } => {
+                2.0 * op.calibrated_work()
+                    + FLOAT_OPERATION * super::judged::float_work(op)
+                    + JUDGED_COORDINATE * super::judged::output_coordinates(op)
+            }
         }
     }
 }

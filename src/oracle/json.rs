@@ -1,10 +1,10 @@
 //! Reading requests: JSON fields into exact inputs, with errors that name the field.
 
 use super::judge::{floats_from_json, not_a_float, FloatMethod};
-use super::protocol::{too_large, truncate};
 use super::values::{
     count_from_json, describe, net_from_json, number_from_json, numbers_from_json, point_from_json, points_from_json,
 };
+use super::values::{too_large, truncate};
 use super::{check_weight_count, Op, MAX_POINTS, MAX_REQUEST_DIMENSION, OPS};
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
@@ -34,10 +34,10 @@ impl Op {
         };
         let fields: &[&str] = match op {
             "eval" => &["points", "t", "approx"],
-            "elevate" => &["points", "by"],
-            "split" => &["points", "t"],
-            "derivative" => &["points", "order", "t"],
-            "to_bezier" => &["power"],
+            "elevate" => &["points", "by", "approx", "method"],
+            "split" => &["points", "t", "approx", "method"],
+            "derivative" => &["points", "order", "t", "approx", "method"],
+            "to_bezier" => &["power", "approx", "method"],
             "rational_eval" => &["points", "weights", "t", "approx"],
             "conic" => &["points", "weights"],
             "surface_eval" => &["net", "u", "v", "approx"],
@@ -62,6 +62,7 @@ impl Op {
             )));
         }
         let req = Fields { obj, op };
+        let name = op;
         let op = match op {
             "eval" => Op::Eval {
                 curve: req.curve("points")?,
@@ -161,6 +162,13 @@ impl Op {
             _ => unreachable!("op names were matched above"),
         };
         op.check_limits()?;
+        if matches!(name, "split" | "elevate" | "derivative" | "to_bezier") {
+            let judged = super::judged::from_json(op, name, obj)?;
+            if matches!(judged, Op::Judged { .. }) {
+                judged.check_limits()?;
+            }
+            return Ok(judged);
+        }
         Ok(op)
     }
 }

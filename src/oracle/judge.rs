@@ -7,7 +7,7 @@ use crate::float::{
     a_priori_bound, abs_bernstein_sum, bernstein_bound, bernstein_sum, compensated_a_priori_bound,
     compensated_de_casteljau, condition_number, de_casteljau, de_casteljau_running, error_at_most, exact_f64, horner,
     horner_bound, lerp_bound, lerp_de_casteljau, nearest_f64, power_coefficients, rational_a_priori_bound,
-    scale_pow2_up, surface_a_priori_bound, ulp_distance, ulp_error, ulp_exponent, UlpError, UNIT_ROUNDOFF,
+    scale_pow2_up, surface_a_priori_bound, ulp_distance, ulp_error, ulp_exponent, OpBound, UlpError, UNIT_ROUNDOFF,
 };
 use crate::interval::{tight_interval_de_casteljau, Interval};
 use crate::point::Point;
@@ -50,6 +50,83 @@ pub(super) fn no_nan(bound: f64) -> f64 {
     } else {
         bound
     }
+}
+
+/// One point's coordinates judged: errors when an approximation was sent, the bound and the
+/// condition when the inputs are floats.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Judgement {
+    /// per coordinate, the caller's error (with `approx`)
+    pub errors: Option<Vec<UlpError>>,
+    /// per coordinate, a sentence when the caller's float is `±∞` or NaN
+    pub verdicts: Vec<Option<&'static str>>,
+    /// per coordinate, the algorithm's bound in ulps, and whether the answer is within it
+    /// (`within` is false without `approx`)
+    pub bound: Option<Vec<BoundCheck>>,
+    /// per coordinate, `S / |x|`: `S` the sum of absolute values the bound is `γ_k` times
+    pub condition: Option<Vec<f64>>,
+}
+
+/// Judges one point's float answer (`approx`, when sent) against the exact point `x`, and
+/// with `bounds` (per coordinate, an absolute bound of the caller's algorithm and the sum it
+/// is `γ_k` times) gives the bound in ulps, the verdict and the condition.
+pub fn judge_coords(approx: Option<&[f64]>, x: &Point<BigRational>, bounds: Option<&[OpBound]>) -> Result<Judgement> {
+    let (errors, verdicts) = match approx {
+        Some(a) => {
+            if a.len() != x.dim() {
+                return Err(Error::DimensionMismatch {
+                    expected: x.dim(),
+                    found: a.len(),
+                    context: "field 'approx'".into(),
+                });
+            }
+            let (e, v): (Vec<_>, Vec<_>) = a
+                .iter()
+                .zip(x.coords())
+                .map(|(a, x)| judge_float(*a, x))
+                .collect::<Result<Vec<_>>>()?
+                .into_iter()
+                .unzip();
+            (Some(e), v)
+        }
+        None => (None, vec![None; x.dim()]),
+    };
+    let bound = bounds.map(|b| {
+        b.iter()
+            .zip(x.coords())
+            .enumerate()
+            .map(|(k, (b, x))| match approx {
+                Some(a) => BoundCheck::new(a[k], x, b.bound),
+                None => BoundCheck {
+                    bound_ulps: no_nan(scale_pow2_up(no_nan(b.bound), -ulp_exponent(x))),
+                    within: false,
+                },
+            })
+            .collect()
+    });
+    let condition = bounds.map(|b| {
+        b.iter()
+            .zip(x.coords())
+            .map(|(b, x)| {
+                let p = nearest_f64(x);
+                if p == 0.0 {
+                    if b.sum == 0.0 {
+                        0.0
+                    } else {
+                        f64::INFINITY
+                    }
+                } else {
+                    no_nan(crate::float::next_up(b.sum / p.abs()))
+                }
+            })
+            .collect()
+    });
+    Ok(Judgement {
+        errors,
+        verdicts,
+        bound,
+        condition,
+    })
 }
 
 /// A float evaluation algorithm: one of casteljau's evaluators (`float_eval`), or the one
@@ -99,7 +176,7 @@ impl FloatMethod {
             other => {
                 return Err(Error::Parse(format!(
                     "unknown method {:?} (one of {METHODS})",
-                    super::protocol::truncate(other)
+                    super::values::truncate(other)
                 )))
             }
         })
@@ -446,7 +523,7 @@ pub(super) fn floats_from_json(v: &Value, overflow: bool) -> Result<Vec<f64>> {
         ))
     })?;
     if items.len() > super::MAX_REQUEST_DIMENSION {
-        return Err(super::protocol::too_large(
+        return Err(super::values::too_large(
             "dimension",
             items.len(),
             super::MAX_REQUEST_DIMENSION,

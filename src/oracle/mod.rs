@@ -90,6 +90,7 @@ mod fast;
 mod io;
 mod json;
 mod judge;
+mod judged;
 mod protocol;
 mod text;
 mod values;
@@ -98,7 +99,8 @@ pub use crate::float::{nearest_f64, ulp, ulp_distance, ulp_error, UlpError};
 pub use batch::MAX_BATCH;
 pub use cost::check_scheme_work;
 pub use io::{read_line_bounded, serve, skip_line, Line, READ_CHUNK_BYTES};
-pub use judge::{judge_float, BoundCheck, FloatEvalAnswer, FloatMethod};
+pub use judge::{judge_coords, judge_float, BoundCheck, FloatEvalAnswer, FloatMethod, Judgement};
+pub use judged::{Approx, JudgedAnswer, PointsMethod};
 pub use protocol::{check_weight_count, Answer, Op, OPS};
 pub use text::conic_polynomial;
 pub use values::{

@@ -4,6 +4,8 @@ use super::judge::{
     curve_bounds, float_eval, float_json, rational_bounds, surface_bounds, ulps_json, BoundCheck, FloatEvalAnswer,
     FloatMethod,
 };
+use super::judged::{Approx, JudgedAnswer, PointsMethod};
+use super::values::too_large;
 use super::values::{number_to_json, point_to_json, points_to_json};
 use super::{MAX_DEGREE, MAX_POINTS, MAX_REQUEST_DIMENSION, MAX_REQUEST_WORK};
 use crate::conic::{classify_conic, implicit_conic, ConicKind};
@@ -98,6 +100,17 @@ pub enum Op {
         /// the evaluator
         method: FloatMethod,
     },
+    /// An op answering control points (`split`, `elevate`, `derivative` without `t`,
+    /// `to_bezier`) with the caller's float answer judged against the a priori bound of
+    /// `method`, the caller's algorithm.
+    Judged {
+        /// the op
+        op: Box<Op>,
+        /// the caller's float answer, shaped as the exact one (without it, the bounds alone)
+        approx: Option<Approx>,
+        /// the caller's algorithm
+        method: PointsMethod,
+    },
 }
 
 /// The exact result of an [`Op`].
@@ -137,6 +150,8 @@ pub enum Answer {
     },
     /// Text 004's cubic fit.
     Fit(Box<CubicFit<BigRational>>),
+    /// Control points (or a split's halves) with the caller's float answer judged.
+    Judged(Box<JudgedAnswer>),
 }
 
 impl Answer {
@@ -198,6 +213,7 @@ impl Answer {
                 m.insert("delta2".into(), number_to_json(&fit.delta2));
                 m.insert("warnings".into(), json!(fit.warnings));
             }
+            Answer::Judged(j) => m = j.to_json(),
         }
         m
     }
@@ -275,6 +291,7 @@ impl Op {
                     return Err(too_large("dimension", surface.dim(), MAX_REQUEST_DIMENSION));
                 }
             }
+            Op::Judged { op, .. } => op.check_limits()?,
             Op::FitCubic { data } => {
                 if data.x0.dim() > MAX_REQUEST_DIMENSION {
                     return Err(too_large("dimension", data.x0.dim(), MAX_REQUEST_DIMENSION));
@@ -383,6 +400,7 @@ impl Op {
                 Answer::Point { point, ulps, bound }
             }
             Op::FitCubic { data } => Answer::Fit(Box::new(fit_cubic(data)?)),
+            Op::Judged { op, approx, method } => super::judged::run(op, approx.as_ref(), *method)?,
             Op::ToBezier { power } => {
                 let coeffs = (0..power[0].len())
                     .map(|i| Point::new(power.iter().map(|c| c[i].clone()).collect()))
@@ -447,19 +465,3 @@ pub const OPS: &[&str] = &[
     "fit_cubic",
     "float_eval",
 ];
-
-pub(super) fn too_large(what: &'static str, value: usize, limit: usize) -> Error {
-    Error::TooLarge {
-        what,
-        value: value.to_string(),
-        limit: limit.to_string(),
-    }
-}
-
-pub(super) fn truncate(s: &str) -> String {
-    if s.chars().count() > 40 {
-        format!("{}…", s.chars().take(40).collect::<String>())
-    } else {
-        s.to_string()
-    }
-}

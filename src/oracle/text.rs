@@ -38,6 +38,7 @@ impl Answer {
                 text
             }
             Answer::Points(p) => format_points(p),
+            Answer::Judged(j) => j.exact.to_text(),
             Answer::Vector(v) => v.to_string(),
             Answer::Split { left, right } => {
                 format!("left:  {}\nright: {}", format_points(left), format_points(right))

@@ -192,6 +192,24 @@ pub fn points_to_json(points: &[Point<BigRational>]) -> Value {
     Value::Array(points.iter().map(point_to_json).collect())
 }
 
+/// An error for a size beyond its limit.
+pub(super) fn too_large(what: &'static str, value: usize, limit: usize) -> crate::error::Error {
+    crate::error::Error::TooLarge {
+        what,
+        value: value.to_string(),
+        limit: limit.to_string(),
+    }
+}
+
+/// A name from a request, cut to 40 characters for an error message.
+pub(super) fn truncate(s: &str) -> String {
+    if s.chars().count() > 40 {
+        format!("{}…", s.chars().take(40).collect::<String>())
+    } else {
+        s.to_string()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
