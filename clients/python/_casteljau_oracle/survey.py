@@ -432,7 +432,11 @@ def _quantile(sorted_values, q):
 
 
 def _farthest(records):
-    return max(records, key=lambda r: r["bound_used"] or math.inf) if records else None
+    """The answers farthest outside the bound: the farthest finite multiple of it, and the
+    first where the bound is 0 (an exact point not kept exactly), when there are such."""
+    finite = [r for r in records if r["bound_used"] is not None and r["bound_used"] < math.inf]
+    zero = [r for r in records if r["bound_used"] == math.inf]
+    return ([max(finite, key=lambda r: r["bound_used"])] if finite else []) + zero[:1]
 
 
 def summary(records):
@@ -516,8 +520,8 @@ def markdown(rows):
         lines.append(f"- {r['lib']} {r['op']}, the most ulps ({_fmt(w['ulps'])}, case {w['id']}, {w['kind']}):")
         lines.append(f"  `{_compact(w['request'])}`")
         for key, what in (("worst_outside", "its algorithm's bound"), ("worst_outside_reference", "the † bound")):
-            w = r[key]
-            if w is not None:
-                lines.append(f"  outside {what}, farthest ({_share(w['bound_used'])} times it, case {w['id']}):")
+            for w in r[key]:
+                how = "where it is 0" if w["bound_used"] == math.inf else f"{_share(w['bound_used'])} times it"
+                lines.append(f"  outside {what} ({how}, case {w['id']}, degree {w['degree']}, {w['kind']}):")
                 lines.append(f"  `{_compact(w['request'])}`")
     return "\n".join(lines)

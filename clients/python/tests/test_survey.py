@@ -83,3 +83,16 @@ def test_the_survey_on_a_local_dask_cluster_gives_the_serial_records(casteljau_o
             assert [r["id"] for r in on_dask] == list(range(400))
             assert on_dask == serial
     assert all(r["outside"] == 0 for r in serial if r["outside"] is not None)
+
+
+def test_the_oracles_split_bound_is_each_sub_curves_evaluation_bound(casteljau_oracle):
+    cs = survey.answer_cases("numpy", "split", survey.library_cases("numpy", "split", 9, 0, 150))
+    with OraclePool(2, casteljau_oracle.binary) as pool:
+        caps = survey.capabilities(pool)
+        assert caps == {"eval": True, "split": True, "elevate": True, "derivative": True}
+        native = survey.judge(pool, "numpy", "split", cs, caps)
+        by_points = survey.judge(pool, "numpy", "split", cs, {"eval": True})
+    strip = [{k: v for k, v in r.items() if k != "request"} for r in native]
+    assert strip == [{k: v for k, v in r.items() if k != "request"} for r in by_points]
+    assert "approx" in native[0]["request"] and all(r["outside"] == 0 for r in native)
+    assert max(r["bound_used"] for r in native) > 0.1
