@@ -2,6 +2,7 @@
 """The conformance survey of docs/peers.md: float Bézier libraries judged by the oracle.
 
     python3 scripts/survey.py [--seed 44] [--curves 1000] [--pool 2] [--json out.json]
+    python3 scripts/survey.py --dask local            # or --dask tcp://scheduler:8786
 
 Builds the oracle and the Rust half (`cargo build --release --bin casteljau --example
 peers_survey`), then for every library and op draws `--curves` seeded cases
@@ -9,7 +10,9 @@ peers_survey`), then for every library and op draws `--curves` seeded cases
 planar for kurbo and lyon_geom; half ordinary, half ill-conditioned), has the library
 answer them in f64 (numpy and `bezier` here, kurbo and lyon_geom in
 scripts/peers_survey.rs) and has an `OraclePool` judge every answer against the exact one.
-Prints the Markdown table of docs/peers.md (and with --json every record).
+Prints the Markdown table of docs/peers.md (and with --json every record). With --dask the
+cases are judged in partitions on a Dask cluster, each task with its own `OraclePool`: the
+same table.
 
 Needs numpy and the PyPI package `bezier` (`pip install numpy bezier`).
 """
@@ -46,6 +49,31 @@ def rust_answers(example):
     return answers
 
 
+def on_dask(args, jobs, binary, example):
+    from dask.distributed import Client, LocalCluster
+
+    # the workers import this checkout's client
+    here = os.path.join(ROOT, "clients", "python")
+    os.environ["PYTHONPATH"] = os.pathsep.join(filter(None, [here, os.environ.get("PYTHONPATH")]))
+    if args.dask == "local":
+        cluster = LocalCluster(n_workers=args.pool, threads_per_worker=1, dashboard_address=None)
+        client = Client(cluster)
+    else:
+        cluster, client = None, Client(args.dask)
+    try:
+        return [
+            r
+            for lib, op in jobs
+            for r in survey.run_on_dask(
+                client, lib, op, args.seed, args.curves, args.partitions, binary=binary, rust_answers=example
+            )
+        ]
+    finally:
+        client.close()
+        if cluster is not None:
+            cluster.close()
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--seed", type=int, default=44)
@@ -54,6 +82,13 @@ def main():
     ap.add_argument("--libs", default="numpy,bezier,kurbo,lyon")
     ap.add_argument("--json", help="write every record here")
     ap.add_argument("--no-build", action="store_true", help="use target/release as it is")
+    ap.add_argument(
+        "--dask",
+        metavar="ADDRESS",
+        help="run on a Dask cluster: a scheduler's address, or 'local' for a local cluster of --pool workers "
+        "(the workers need this checkout's binaries at the same paths)",
+    )
+    ap.add_argument("--partitions", type=int, default=8, help="Dask tasks per library and op")
     args = ap.parse_args()
 
     if not args.no_build:
@@ -64,13 +99,17 @@ def main():
     example = rust_answers(os.path.join(ROOT, "target", "release", "examples", "peers_survey"))
     started = time.process_time(), time.time()
     records = []
-    with OraclePool(args.pool, binary) as pool:
-        for lib in args.libs.split(","):
-            for op in survey.LIBRARIES[lib][1]:
+    jobs = [(lib, op) for lib in args.libs.split(",") for op in survey.LIBRARIES[lib][1]]
+    if args.dask:
+        records = on_dask(args, jobs, binary, example)
+    else:
+        with OraclePool(args.pool, binary) as pool:
+            for lib, op in jobs:
                 records += survey.run(lib, op, args.seed, 0, args.curves, rust_answers=example, pool=pool)
     cpu, wall = time.process_time() - started[0], time.time() - started[1]
     print(
-        f"<!-- python3 scripts/survey.py --seed {args.seed} --curves {args.curves}; "
+        f"<!-- python3 scripts/survey.py --seed {args.seed} --curves {args.curves}"
+        f"{f' --dask {args.dask}' if args.dask else ''}; "
         f"{datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC; "
         f"{len(records)} answers judged in {wall:.0f} s wall ({cpu:.0f} s CPU in Python) -->"
     )

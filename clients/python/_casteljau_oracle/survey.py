@@ -375,7 +375,12 @@ def capabilities(pool):
     """Which oracle ops judge an `approx` (the others are judged here: ulps, no bound)."""
     probes = {
         "eval": {"op": "eval", "points": [[0.0], [1.0]], "t": 0.5, "approx": [0.5]},
-        "split": {"op": "split", "points": [[0.0], [1.0]], "t": 0.5, "approx": {"left": [[0.0], [0.5]], "right": [[0.5], [1.0]]}},
+        "split": {
+            "op": "split",
+            "points": [[0.0], [1.0]],
+            "t": 0.5,
+            "approx": {"left": [[0.0], [0.5]], "right": [[0.5], [1.0]]},
+        },
         "elevate": {"op": "elevate", "points": [[0.0], [1.0]], "by": 1, "approx": [[0.0], [0.5], [1.0]]},
         "derivative": {"op": "derivative", "points": [[0.0], [1.0]], "order": 1, "approx": [[1.0]]},
     }
@@ -406,14 +411,15 @@ def run(lib, op, seed, start, stop, binary=None, pool_size=2, rust_answers=None,
         return judge(p, lib, op, cs, capabilities(p))
 
 
-def run_on_dask(client, lib, op, seed, count, partitions, binary=None, pool_size=1):
+def run_on_dask(client, lib, op, seed, count, partitions, binary=None, pool_size=1, rust_answers=None):
     """`run` over case numbers 0..count in `partitions` Dask tasks, each opening its own
     pool of `pool_size` oracles on its worker: the records in case order, the same as
-    `run(lib, op, seed, 0, count)`'s."""
+    `run(lib, op, seed, 0, count)`'s. `binary` (and whatever `rust_answers` runs) must
+    exist on the workers."""
     step = -(-count // partitions)
     bounds = [(s, min(s + step, count)) for s in range(0, count, step)]
     futures = client.map(
-        lambda b: run(lib, op, seed, b[0], b[1], binary=binary, pool_size=pool_size),
+        lambda b: run(lib, op, seed, b[0], b[1], binary=binary, pool_size=pool_size, rust_answers=rust_answers),
         bounds,
         key=[f"casteljau-survey-{lib}-{op}-{seed}-{a}-{b}" for a, b in bounds],
     )
@@ -450,7 +456,8 @@ def summary(records):
 
         def stats(sub):
             us = sorted(math.inf if r["ulps"] is None else r["ulps"] for r in sub)
-            return {"n": len(sub), "median": _quantile(us, 0.5), "p99": _quantile(us, 0.99), "max": us[-1] if us else None}
+            top = us[-1] if us else None
+            return {"n": len(sub), "median": _quantile(us, 0.5), "p99": _quantile(us, 0.99), "max": top}
 
         judged = [r for r in rs if r["outside"] is not None and r["own"]]
         outside = [r for r in judged if r["outside"]]
@@ -499,7 +506,8 @@ def _share(x):
 def markdown(rows):
     """The summary as a Markdown table, then the worst inputs as requests."""
     lines = [
-        "| library | op | answers | ulps median / p99 / max (ordinary) | ulps median / p99 / max (ill-conditioned) | outside the bound | most of the bound used | bound of |",
+        "| library | op | answers | ulps median / p99 / max (ordinary) | ulps median / p99 / max (ill-conditioned)"
+        " | outside the bound | most of the bound used | bound of |",
         "|---|---|---:|---|---|---|---|---|",
     ]
     for r in rows:
@@ -510,10 +518,9 @@ def markdown(rows):
             outside += ("; " if outside else "") + f"{r['outside_reference']} of {r['reference']} †"
             used += ("; " if used else "") + f"{_share(r['bound_used_reference'])} †"
         outside, used = outside or "no bound", used or "–"
-        lines.append(
-            f"| {r['lib']} | {r['op']} | {r['all']['n']} | {_fmt(o['median'])} / {_fmt(o['p99'])} / {_fmt(o['max'])}"
-            f" | {_fmt(i['median'])} / {_fmt(i['p99'])} / {_fmt(i['max'])} | {outside} | {used} | {', '.join(r['methods']) or '–'} |"
-        )
+        ulps = " | ".join(" / ".join(_fmt(x[k]) for k in ("median", "p99", "max")) for x in (o, i))
+        methods = ", ".join(r["methods"]) or "–"
+        lines.append(f"| {r['lib']} | {r['op']} | {r['all']['n']} | {ulps} | {outside} | {used} | {methods} |")
     lines.append("")
     for r in rows:
         w = r["worst"]

@@ -96,3 +96,15 @@ def test_the_oracles_split_bound_is_each_sub_curves_evaluation_bound(casteljau_o
     assert strip == [{k: v for k, v in r.items() if k != "request"} for r in by_points]
     assert "approx" in native[0]["request"] and all(r["outside"] == 0 for r in native)
     assert max(r["bound_used"] for r in native) > 0.1
+
+
+def test_without_approx_on_an_op_the_ulps_are_counted_here_and_no_bound_is_claimed(casteljau_oracle):
+    cs = survey.answer_cases("numpy", "elevate", survey.library_cases("numpy", "elevate", 9, 0, 100))
+    with OraclePool(1, casteljau_oracle.binary) as pool:
+        native = survey.judge(pool, "numpy", "elevate", cs, survey.capabilities(pool))
+        local = survey.judge(pool, "numpy", "elevate", cs, {})
+    assert [r["ulps"] for r in local] == [r["ulps"] for r in native]
+    assert [r["error_ulps"] for r in local] == pytest.approx([r["error_ulps"] for r in native], rel=1e-9)
+    assert max(r["ulps"] for r in local) > 0
+    assert all(r["outside"] is None and r["bound_used"] is None for r in local)
+    assert "no bound" in survey.markdown(survey.summary(local))
