@@ -129,7 +129,7 @@ def numpy_answer(op, points, t):
 
 def bezier_answer(op, points, t):
     """The PyPI package `bezier` (its compiled speedups where built): Curve.evaluate (the
-    VS algorithm, a nested Bernstein sum), subdivide (matrix products), specialize (de
+    VS algorithm, a nested Bernstein sum), subdivide (sums with exact dyadic weights), specialize (de
     Casteljau rounds), elevate, evaluate_hodograph."""
     import bezier
     import numpy as np
@@ -186,7 +186,7 @@ _METHODS = {
     ("kurbo", "eval"): lambda n: ("lerp", True) if n == 1 else ("bernstein", True),  # Vec2::lerp: a + t(b − a)
     ("lyon", "eval"): lambda n: ("de_casteljau", True) if n == 1 else ("bernstein", True),  # euclid: (1 − t)a + tb
     ("numpy", "split"): lambda n: ("de_casteljau", True),
-    # matrix products with exact dyadic entries: at most j + 1 roundings for point j, within
+    # sums with exact dyadic weights (Pascal's triangle halved): at most j + 1 roundings for point j, within
     # de Casteljau's 2j at t = 1/2
     ("bezier", "subdivide"): lambda n: ("de_casteljau", True),
     # rounds of (1 − t)a + tb and exact rounds of (1, 0), (0, 1); the quadratic's is a
