@@ -129,8 +129,9 @@ def numpy_answer(op, points, t):
 
 def bezier_answer(op, points, t):
     """The PyPI package `bezier` (its compiled speedups where built): Curve.evaluate (the
-    VS algorithm, a nested Bernstein sum), subdivide (sums with exact dyadic weights), specialize (de
-    Casteljau rounds), elevate, evaluate_hodograph."""
+    VS algorithm, a nested Bernstein sum), subdivide (sums with exact dyadic weights),
+    specialize (de Casteljau rounds; a closed form for quadratics), elevate,
+    evaluate_hodograph."""
     import bezier
     import numpy as np
 
@@ -186,8 +187,8 @@ _METHODS = {
     ("kurbo", "eval"): lambda n: ("lerp", True) if n == 1 else ("bernstein", True),  # Vec2::lerp: a + t(b − a)
     ("lyon", "eval"): lambda n: ("de_casteljau", True) if n == 1 else ("bernstein", True),  # euclid: (1 − t)a + tb
     ("numpy", "split"): lambda n: ("de_casteljau", True),
-    # sums with exact dyadic weights (Pascal's triangle halved): at most j + 1 roundings for point j, within
-    # de Casteljau's 2j at t = 1/2
+    # sums with exact dyadic weights (Pascal's triangle halved): at most j + 1 roundings
+    # for point j, within de Casteljau's 2j at t = 1/2
     ("bezier", "subdivide"): lambda n: ("de_casteljau", True),
     # rounds of (1 − t)a + tb and exact rounds of (1, 0), (0, 1); the quadratic's is a
     # closed form of products (bezier's specialize_curve_quadratic)
