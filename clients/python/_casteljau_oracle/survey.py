@@ -171,6 +171,8 @@ _DEGREES = {
 
 def library_cases(lib, op, seed, start, stop):
     """The cases of `lib` for `op`: its degrees and dimensions."""
+    if lib not in LIBRARIES:
+        raise OracleError(f"no library {lib!r} in the survey (one of {', '.join(LIBRARIES)})")
     _, ops, degrees, dims = LIBRARIES[lib]
     if op not in ops:
         raise OracleError(f"{lib} has no {op} in the survey (it has {', '.join(ops)})")
@@ -417,6 +419,11 @@ def run_on_dask(client, lib, op, seed, count, partitions, binary=None, pool_size
     pool of `pool_size` oracles on its worker: the records in case order, the same as
     `run(lib, op, seed, 0, count)`'s. `binary` (and whatever `rust_answers` runs) must
     exist on the workers."""
+    for name, value, least in (("count", count, 0), ("partitions", partitions, 1)):
+        if not isinstance(value, int) or isinstance(value, bool) or value < least:
+            raise OracleError(f"{name} must be an int of at least {least}, not {value!r}")
+    if count == 0:
+        return []
     step = -(-count // partitions)
     bounds = [(s, min(s + step, count)) for s in range(0, count, step)]
     futures = client.map(

@@ -6,7 +6,7 @@ import os
 
 import pytest
 
-from casteljau_oracle import OraclePool, survey
+from casteljau_oracle import OracleError, OraclePool, survey
 
 from _reference import de_casteljau
 
@@ -22,6 +22,10 @@ def test_a_case_depends_on_its_seed_and_number_only():
     assert all(len(c["points"]) == c["degree"] + 1 and len(c["points"][0]) == c["dim"] for c in a)
     assert all(c["t"] == 0.5 for c in survey.cases(7, 0, 40, "subdivide"))
     assert all(c["t"] is None for c in survey.cases(7, 0, 40, "elevate"))
+    with pytest.raises(OracleError, match="no library 'cairo'"):
+        survey.library_cases("cairo", "eval", 7, 0, 1)
+    with pytest.raises(OracleError, match="kurbo has no specialize"):
+        survey.library_cases("kurbo", "specialize", 7, 0, 1)
 
 
 def test_the_numpy_reference_is_the_tests_de_casteljau_and_splits_at_the_point():
@@ -82,6 +86,9 @@ def test_the_survey_on_a_local_dask_cluster_gives_the_serial_records(casteljau_o
             serial = survey.run("numpy", op, 44, 0, 400, binary=binary)
             assert [r["id"] for r in on_dask] == list(range(400))
             assert on_dask == serial
+        assert survey.run_on_dask(client, "numpy", "eval", 44, 0, partitions=4, binary=binary) == []
+        with pytest.raises(OracleError, match="partitions"):
+            survey.run_on_dask(client, "numpy", "eval", 44, 10, partitions=0, binary=binary)
     assert all(r["outside"] == 0 for r in serial if r["outside"] is not None)
 
 
