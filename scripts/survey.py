@@ -91,6 +91,9 @@ def main():
     ap.add_argument("--partitions", type=int, default=8, help="Dask tasks per library and op")
     args = ap.parse_args()
 
+    unknown = [lib for lib in args.libs.split(",") if lib not in survey.LIBRARIES]
+    if unknown or args.curves < 1 or args.pool < 1 or args.partitions < 1:
+        ap.error(f"--libs is a list of {', '.join(survey.LIBRARIES)}; --curves, --pool, --partitions at least 1")
     if not args.no_build:
         subprocess.run(
             ["cargo", "build", "--release", "--bin", "casteljau", "--example", "peers_survey"], cwd=ROOT, check=True
