@@ -132,8 +132,11 @@ def bezier_answer(op, points, t):
     VS algorithm, a nested Bernstein sum), subdivide (sums with exact dyadic weights),
     specialize (de Casteljau rounds; a closed form for quadratics), elevate,
     evaluate_hodograph."""
-    import bezier
-    import numpy as np
+    try:
+        import bezier
+        import numpy as np
+    except ImportError as e:
+        raise OracleError(f"the survey of `bezier` needs numpy and bezier (pip install numpy bezier): {e}") from None
 
     nodes = np.asfortranarray(np.asarray(points, dtype=np.float64).T)
     curve = bezier.Curve(nodes, degree=len(points) - 1, copy=False)
