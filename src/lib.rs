@@ -51,6 +51,7 @@ pub mod html;
 mod hull;
 mod input;
 mod interval;
+pub mod judge;
 mod kernel;
 mod least_squares;
 pub mod linalg;

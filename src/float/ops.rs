@@ -138,7 +138,7 @@ pub fn elevate_bounds(b: &[f64], by: usize) -> Vec<OpBound> {
 /// differences: `order` rounds of `d_i ← fl((m − l + 1)·fl(d_{i+1} − d_i))`, `m` the degree.
 /// The first round errs relative to its own exact result (a difference of floats is rounded
 /// once, and never underflows; neither does a product by a whole number), so the bound is
-/// `γ_{2k} · m!/(m−k+1)! · Σ_j C(k−1, j) |m (b_{i+j+1} − b_{i+j})|`.
+/// `γ_{2k} · (m−1)!/(m−k)! · Σ_j C(k−1, j) |m (b_{i+j+1} − b_{i+j})|`.
 pub fn derivative_bounds(b: &[f64], order: usize) -> Vec<OpBound> {
     let m = b.len() - 1;
     if order == 0 {

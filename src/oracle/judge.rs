@@ -7,7 +7,7 @@ use crate::float::{
     a_priori_bound, abs_bernstein_sum, bernstein_bound, bernstein_sum, compensated_a_priori_bound,
     compensated_de_casteljau, condition_number, de_casteljau, de_casteljau_running, error_at_most, exact_f64, horner,
     horner_bound, lerp_bound, lerp_de_casteljau, nearest_f64, power_coefficients, rational_a_priori_bound,
-    scale_pow2_up, surface_a_priori_bound, ulp_distance, ulp_error, ulp_exponent, OpBound, UlpError, UNIT_ROUNDOFF,
+    scale_pow2_up, surface_a_priori_bound, ulp_exponent, OpBound, UlpError, UNIT_ROUNDOFF,
 };
 use crate::interval::{tight_interval_de_casteljau, Interval};
 use crate::point::Point;
@@ -213,35 +213,7 @@ impl FloatMethod {
 /// `ulps` count from the nearest float; its `error_ulps` is `+∞`. A NaN has `ulps` `u64::MAX`
 /// and `error_ulps` NaN (written `"nan"`).
 pub fn judge_float(approx: f64, exact: &BigRational) -> Result<(UlpError, Option<&'static str>)> {
-    if approx.is_finite() {
-        return Ok((ulp_error(approx, exact)?, None));
-    }
-    let nearest = nearest_f64(exact);
-    if approx.is_nan() {
-        let e = UlpError {
-            nearest,
-            ulps: u64::MAX,
-            error_ulps: f64::NAN,
-        };
-        return Ok((e, Some("nan: the float is NaN, the exact value is a number")));
-    }
-    let verdict = if nearest.is_finite() {
-        if approx > 0.0 {
-            "overflow: the float is inf, the exact value is finite"
-        } else {
-            "overflow: the float is -inf, the exact value is finite"
-        }
-    } else if nearest == approx {
-        "correctly rounded: the exact value is beyond the largest f64"
-    } else {
-        "wrong sign: the exact value is beyond the largest f64 on the other side"
-    };
-    let e = UlpError {
-        nearest,
-        ulps: ulp_distance(approx, nearest),
-        error_ulps: f64::INFINITY,
-    };
-    Ok((e, Some(verdict)))
+    crate::judge::float_error(approx, exact)
 }
 
 /// What `float_eval` answers: the float results with their exact errors and bounds.

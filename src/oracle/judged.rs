@@ -309,6 +309,14 @@ pub(super) fn from_json(op: Op, name: &str, obj: &Map<String, Value>) -> Result<
     })
 }
 
+/// A list of a point's coordinates' values as JSON, when it has them.
+fn per(xs: Option<Vec<Value>>) -> Option<Value> {
+    xs.map(Value::Array)
+}
+
+/// One judged field of one point, when it has it.
+type Field = dyn Fn(&Judgement) -> Option<Value>;
+
 impl JudgedAnswer {
     /// The response fields: the exact answer's, then per coordinate in its shape `ulps`,
     /// `error_ulps`, `nearest` (with `approx`), `bound`, `within_bound` (with `approx`),
@@ -316,7 +324,7 @@ impl JudgedAnswer {
     pub fn to_json(&self) -> Map<String, Value> {
         let mut m = self.exact.to_json();
         m.insert("method".into(), json!(self.method.as_str()));
-        let field = |get: &dyn Fn(&Judgement) -> Option<Value>| -> Option<Value> {
+        let field = |get: &Field| -> Option<Value> {
             let mut shaped = Vec::new();
             for (name, points) in &self.groups {
                 let values: Option<Vec<Value>> = points.iter().map(get).collect();
@@ -328,8 +336,7 @@ impl JudgedAnswer {
                 Value::Object(shaped.into_iter().map(|(k, v)| (k.to_string(), v)).collect())
             })
         };
-        let per = |xs: Option<Vec<Value>>| xs.map(Value::Array);
-        let fields: [(&str, &dyn Fn(&Judgement) -> Option<Value>); 6] = [
+        let fields: [(&str, &Field); 6] = [
             ("ulps", &|j| {
                 per(j.errors.as_ref().map(|e| e.iter().map(|e| ulps_json(e.ulps)).collect()))
             }),

@@ -26,10 +26,10 @@
 //! | op           | fields                                   | answer                     |
 //! |--------------|------------------------------------------|----------------------------|
 //! | `eval`       | `points`, `t`, optional `approx`, `method` | `point` (+ `ulps`, `error_ulps`, `nearest`, `bound`, `within_bound`; with `method` also `condition`) |
-//! | `elevate`    | `points`, `by`                           | `points`                   |
-//! | `split`      | `points`, `t`                            | `left`, `right`            |
-//! | `derivative` | `points`, `order`, optional `t`          | `points`, or `vector` with `t` |
-//! | `to_bezier`  | `power` (one array per coordinate, `t^0..t^n`) | `points`             |
+//! | `elevate`    | `points`, `by`, optional `approx`, `method` | `points` (+ judged fields per point) |
+//! | `split`      | `points`, `t`, optional `approx`, `method` | `left`, `right` (+ judged fields per half and point) |
+//! | `derivative` | `points`, `order`, optional `t`; without `t` optional `approx`, `method` | `points`, or `vector` with `t` |
+//! | `to_bezier`  | `power` (one array per coordinate, `t^0..t^n`), optional `approx`, `method` | `points` |
 //! | `rational_eval` | `points`, `weights`, `t`, optional `approx` | `point` (+ ulps)      |
 //! | `conic`      | `points` (three 2D points), `weights` (three) | `type`, `implicit`    |
 //! | `surface_eval` | `net` (rows `i = 0..m` of points `j = 0..n`), `u`, `v`, optional `approx` | `point` (+ ulps) |
@@ -41,6 +41,10 @@
 //! is sent as `"inf"`, `"-inf"` or `"nan"` and judged, with a `verdict`. For `eval` and
 //! `float_eval`, `"t": [..]` (at most [`MAX_BATCH`]) asks at many parameters in one request,
 //! answered as `results`, one object per parameter; the work limit counts the whole batch.
+//!
+//! `split`, `elevate`, `derivative` and `to_bezier` judge `approx` (shaped as the exact
+//! answer) against the a priori bound of the caller's `method` ([`PointsMethod`]), per point
+//! and coordinate, through [`Op::Judged`] and [`Answer::Judged`].
 //!
 //! `conic`'s `type` is `"ellipse"`, `"parabola"`, `"hyperbola"` or `"degenerate (…)"`;
 //! `implicit` is `[A, B, C, D, E, F]` of `A x² + B xy + C y² + D x + E y + F = 0` scaled to

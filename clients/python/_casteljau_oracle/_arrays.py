@@ -58,6 +58,7 @@ def bools(rows):
 #: how each field of a judgement becomes an array
 _FIELDS = {
     "point": exact,
+    "points": exact,
     "ulps": floats,
     "error_ulps": floats,
     "nearest": floats,

@@ -178,34 +178,73 @@ class Oracle:
         a = self.request({"op": "eval", "points": V.points(points), "t": V.parameters(ts)})
         return self._exact(points, [_fractions(V.field(r, "point")) for r in V.field(a, "results")])
 
-    def elevate(self, points, by=1):
-        """The control points of the same curve at degree n + by, exactly."""
-        a = self.request({"op": "elevate", "points": V.points(points), "by": V.number(by)})
-        return self._exact(points, _point_list(V.field(a, "points")))
+    def elevate(self, points, by=1, approx=None, method=None):
+        """The control points of the same curve at degree n + by, exactly; with `approx`
+        (your elevated points) or `method` ("formula"), the judgement (see `_judge_points`)."""
+        req = {"op": "elevate", "points": V.points(points), "by": V.number(by)}
+        if approx is not None or method is not None:
+            return self._judge_points(points, req, approx, method)
+        return self._exact(points, _point_list(V.field(self.request(req), "points")))
 
-    def split(self, points, t):
-        """The control points of b on [0, t] and on [t, 1], exactly: (left, right)."""
-        a = self.request({"op": "split", "points": V.points(points), "t": V.number(t)})
+    def split(self, points, t, approx=None, method=None):
+        """The control points of b on [0, t] and on [t, 1], exactly: (left, right). With
+        `approx` (your halves: a pair, or {"left": ..., "right": ...}) or `method`
+        ("de_casteljau", "lerp"), the judgement: {"method", "left": {...}, "right": {...}},
+        each half judged as `_judge_points` describes."""
+        req = {"op": "split", "points": V.points(points), "t": V.number(t)}
+        if approx is not None or method is not None:
+            return self._judge_points(points, req, approx, method, split=True)
+        a = self.request(req)
         left, right = (_point_list(V.field(a, k)) for k in ("left", "right"))
         return self._exact(points, left), self._exact(points, right)
 
-    def derivative(self, points, order=1, t=None):
+    def derivative(self, points, order=1, t=None, approx=None, method=None):
         """The control points of the `order`-th derivative (degree n − order), or with `t`
-        the derivative vector at t, exactly."""
+        the derivative vector at t, exactly; with `approx` (your control points of the
+        derivative) or `method` ("differences"), the judgement (see `_judge_points`)."""
         req = {"op": "derivative", "points": V.points(points), "order": V.number(order)}
         if t is not None:
             req["t"] = V.number(t)
             return self._exact(points, _fractions(V.field(self.request(req), "vector")))
+        if approx is not None or method is not None:
+            return self._judge_points(points, req, approx, method)
         return self._exact(points, _point_list(V.field(self.request(req), "points")))
 
-    def to_bezier(self, power):
+    def to_bezier(self, power, approx=None, method=None):
         """The Bézier control points of the polynomial curve with power coefficients
-        `power` (one list per coordinate, of the coefficients of t^0..t^n), exactly."""
+        `power` (one list per coordinate, of the coefficients of t^0..t^n), exactly; with
+        `approx` (your control points) or `method` ("formula"), the judgement."""
         rows = V._as_list(power)
         if not isinstance(rows, list):
             raise OracleInputError(f"power must be one list of coefficients per coordinate, not {power!r}")
-        a = self.request({"op": "to_bezier", "power": [V.coordinates(r, "a coordinate's coefficients") for r in rows]})
-        return self._exact(power, _point_list(V.field(a, "points")))
+        req = {"op": "to_bezier", "power": [V.coordinates(r, "a coordinate's coefficients") for r in rows]}
+        if approx is not None or method is not None:
+            return self._judge_points(power, req, approx, method)
+        return self._exact(power, _point_list(V.field(self.request(req), "points")))
+
+    def _judge_points(self, given, req, approx, method, split=False):
+        """Sends `req` with `approx` and `method`; the judgement of a list of points: a dict
+        with `points` (Fractions), and per point and coordinate `ulps`, `error_ulps`,
+        `nearest`, `verdict` (with `approx`), `bound` (ulps of the exact value),
+        `within_bound` (with `approx`) and `condition` (when the inputs are floats), plus
+        `method`. For a split, {"method", "left": judgement, "right": judgement}. With
+        arrays, each numeric field is an array of shape (points, coordinates)."""
+        if method is not None:
+            req["method"] = method
+        if approx is not None:
+            if split:
+                halves = (approx["left"], approx["right"]) if isinstance(approx, dict) else tuple(approx)
+                if len(halves) != 2:
+                    raise OracleInputError("a split's approx is (left, right) or {'left': ..., 'right': ...}")
+                req["approx"] = {"left": _answer_points(halves[0]), "right": _answer_points(halves[1])}
+            else:
+                req["approx"] = _answer_points(approx)
+        a = self.request(req)
+        keys = ("left", "right") if split else ("points",)
+        groups = {k: self._judged(given, _points_judgement(a, k)) for k in keys}
+        out = groups if split else groups["points"]
+        out["method"] = V.field(a, "method")
+        return out
 
     def rational_eval(self, points, weights, t):
         """The rational curve with `weights` at t, exactly, one Fraction per coordinate."""
@@ -325,6 +364,36 @@ def _surface(net, u, v):
     if isinstance(rows, (str, bytes)) or not hasattr(rows, "__iter__"):
         raise OracleInputError(f"net must be a list of rows of points, not {net!r}")
     return {"op": "surface_eval", "net": [V.points(r) for r in rows], "u": V.number(u), "v": V.number(v)}
+
+
+def _answer_points(points):
+    rows = V._as_list(points)
+    if isinstance(rows, (str, bytes)) or not hasattr(rows, "__iter__"):
+        raise OracleInputError(f"approx must be a list of points (one float per coordinate), not {points!r}")
+    return [V.answers(p) for p in rows]
+
+
+def _points_judgement(a, key):
+    """One group (`points`, `left` or `right`) of a judged answer."""
+
+    def group(v):
+        return v[key] if isinstance(v, dict) else v
+
+    exact = _point_list(V.field(a, key))
+    out = {"points": exact}
+    if "ulps" in a:
+        out["ulps"] = [[V.ulps_count(u) for u in p] for p in group(a["ulps"])]
+        out["error_ulps"] = [[V.to_float(e) for e in p] for p in group(V.field(a, "error_ulps"))]
+        out["nearest"] = [[V.to_float(e) for e in p] for p in group(V.field(a, "nearest"))]
+        verdict = a.get("verdict")
+        out["verdict"] = group(verdict) if verdict is not None else [[None] * len(p) for p in exact]
+    if "bound" in a:
+        out["bound"] = [[V.to_float(b) for b in p] for p in group(a["bound"])]
+    if "within_bound" in a:
+        out["within_bound"] = group(a["within_bound"])
+    if "condition" in a:
+        out["condition"] = [[V.to_float(c) for c in p] for p in group(a["condition"])]
+    return out
 
 
 def _judgement(a):
