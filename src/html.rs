@@ -21,7 +21,9 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
 
+mod handout;
 mod statement;
+pub use handout::{render_handout, write_handout};
 pub use statement::formula;
 
 /// The exact scalar of claim figures: claim files may write `2*sqrt(2)`.
@@ -197,7 +199,7 @@ const STYLE: &str = r#"
 * { box-sizing: border-box; }
 body { font-family: "DejaVu Sans", "Noto Sans", "Noto Sans CJK JP", Arial, sans-serif; color: var(--ink); line-height: 1.45;
        max-width: 62rem; margin: 0 auto; padding: 1.2rem 1.5rem 3rem; font-size: 15px; }
-h1 { font-size: 1.6rem; margin: 0.3rem 0 0.2rem; }
+h1 { font-size: 1.6rem; margin: 0.3rem 0 0.2rem; overflow-wrap: anywhere; }
 h2 { font-size: 1.05rem; margin: 0 0 0.4rem; display: flex; flex-wrap: wrap; gap: 0.5rem; align-items: baseline; }
 a { color: #1a56a8; }
 .crumbs { margin: 0; font-size: 0.9rem; color: var(--muted); }
@@ -220,7 +222,7 @@ tr.total td { font-weight: bold; border-top: 2px solid var(--ink); }
 .claim.fails { border-left-color: var(--fails); }
 .claim.misprint { background: #fff5f4; }
 .claim.correction { background: #f3fbf4; }
-.claim .id { font-family: "DejaVu Sans Mono", monospace; font-size: 0.95rem; }
+.claim .id { font-family: "DejaVu Sans Mono", monospace; font-size: 0.95rem; white-space: nowrap; }
 .claim .source { color: var(--muted); font-weight: normal; font-size: 0.9rem; }
 .statement { font-size: 1.1rem; margin: 0.3rem 0 0.5rem; padding: 0.4rem 0.7rem; background: #f7f7f9; border-radius: 3px; }
 .scope { margin: 0.2rem 0; font-size: 0.92rem; }
@@ -232,13 +234,38 @@ dl { margin: 0.4rem 0 0; display: grid; grid-template-columns: max-content 1fr; 
 dt { color: var(--muted); font-size: 0.88rem; }
 dd { margin: 0; }
 pre { margin: 0; white-space: pre-wrap; overflow-wrap: anywhere; font-family: "DejaVu Sans Mono", monospace; font-size: 0.85rem; }
+.printonly { display: none; }
 figure { margin: 0.7rem 0 0; }
-figure svg { max-width: 100%; height: auto; border: 1px solid var(--rule); }
+figure svg { width: 100%; max-width: 100%; height: auto; border: 1px solid var(--rule); }
 figcaption { color: var(--muted); font-size: 0.85rem; }
 nav.toc { columns: 2; font-size: 0.88rem; margin: 0.5rem 0 1rem; }
 nav.toc a { text-decoration: none; }
 nav.toc div { break-inside: avoid; }
 footer { margin-top: 2rem; color: var(--muted); font-size: 0.85rem; }
+@media (max-width: 640px) {
+  /* a phone: the summary's rows stacked, each count with its name; figures scroll sideways at
+     560 px or more, so that their 13 px labels show at 9.5 px or more */
+  body { padding: 0.6rem 0.7rem 2rem; font-size: 14px; }
+  h1 { font-size: 1.25rem; }
+  nav.toc { columns: 1; }
+  table.summary, table.summary tbody, table.summary tr, table.summary td { display: block; }
+  table.summary tr:first-child { display: none; }
+  table.summary tr { border-bottom: 1px solid var(--rule); padding: 0.3rem 0; }
+  table.summary td { border: none; padding: 0.05rem 0.3rem; white-space: normal; }
+  table.summary td:nth-child(2) { white-space: normal; }
+  table.summary td.n { display: inline-block; text-align: left; }
+  table.summary td.n::before { content: attr(data-label) " "; color: var(--muted); }
+  table.misprints, table.misprints tbody, table.misprints tr, table.misprints td { display: block; }
+  table.misprints tr:first-child { display: none; }
+  table.misprints tr { border-bottom: 1px solid var(--rule); padding: 0.3rem 0; }
+  table.misprints td { border: none; padding: 0.05rem 0.3rem; }
+  table.misprints td:nth-child(2)::before { content: "as printed: "; color: var(--muted); }
+  table.misprints td:nth-child(3)::before { content: "correction: "; color: var(--muted); }
+  table.misprints a, nav.toc a { white-space: nowrap; }
+  dl { grid-template-columns: 1fr; }
+  figure { overflow-x: auto; }
+  figure svg { min-width: 560px; }
+}
 @media print {
   /* A4, compact text; a claim or a figure is never split across pages */
   @page { size: A4; margin: 8mm 10mm; }
@@ -247,7 +274,9 @@ footer { margin-top: 2rem; color: var(--muted); font-size: 0.85rem; }
   a { color: inherit; text-decoration: none; }
   h1 { font-size: 14pt; } h2 { font-size: 10pt; margin-bottom: 0.15rem; }
   table { margin: 0.4rem 0 0.8rem; } th, td { padding: 0.15rem 0.4rem; }
-  .claim { break-inside: avoid; page-break-inside: avoid; border-color: #999; padding: 0.25rem 0.5rem; margin: 0.3rem 0; }
+  /* a claim may break across pages; its figure (below its text) never does */
+  .claim { border-color: #999; padding: 0.25rem 0.5rem; margin: 0.3rem 0; }
+  .scope.proved { display: none; } .printonly { display: block; }
   .statement { font-size: 9pt; margin: 0.1rem 0 0.2rem; padding: 0.1rem 0.4rem; }
   .scope, .banner, dt { font-size: 8pt; } .banner { margin: 0.2rem 0; padding: 0.2rem 0.5rem; }
   dl { gap: 0.1rem 0.6rem; margin-top: 0.2rem; }
@@ -315,8 +344,10 @@ fn index_page(
         let title = titles.get(&sum.text).map(String::as_str).unwrap_or("");
         let _ = writeln!(
             s,
-            "<tr><td><a href=\"{}\">{}</a></td><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td>\
-             <td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}/{}</td></tr>",
+            "<tr><td><a href=\"{}\">{}</a></td><td>{}</td><td class=\"n\" data-label=\"claims\">{}</td>\
+             <td class=\"n\" data-label=\"proved\">{}</td><td class=\"n\" data-label=\"proved in range\">{}</td>\
+             <td class=\"n\" data-label=\"verified\">{}</td><td class=\"n\" data-label=\"fails\">{}</td>\
+             <td class=\"n\" data-label=\"as expected\">{}/{}</td></tr>",
             pages[&sum.text],
             esc(&sum.text),
             esc(title),
@@ -341,8 +372,10 @@ fn index_page(
     }
     let _ = writeln!(
         s,
-        "<tr class=\"total\"><td>total</td><td></td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td>\
-         <td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}/{}</td></tr>\n</table>",
+        "<tr class=\"total\"><td>total</td><td></td><td class=\"n\" data-label=\"claims\">{}</td>\
+         <td class=\"n\" data-label=\"proved\">{}</td><td class=\"n\" data-label=\"proved in range\">{}</td>\
+         <td class=\"n\" data-label=\"verified\">{}</td><td class=\"n\" data-label=\"fails\">{}</td>\
+         <td class=\"n\" data-label=\"as expected\">{}/{}</td></tr>\n</table>",
         total[0], total[1], total[2], total[3], total[4], total[5], total[0]
     );
     let mismatches = report.mismatches();
@@ -414,6 +447,12 @@ fn text_page(sum: &TextSummary, title: &str, outcomes: &[&ClaimOutcome], files: 
         } else {
             format!("; {} NOT as expected", sum.mismatches)
         }
+    );
+    // the print leaves out each proof's scope line (the same words every time): said once here
+    let _ = writeln!(
+        s,
+        "<p class=\"scope printonly\"><strong>proved</strong>, on every claim marked so: {}.</p>",
+        esc(&verdict_words(Verdict::Proved, None).scope)
     );
     s.push_str("<nav class=\"toc\">\n");
     for o in outcomes {
@@ -517,7 +556,8 @@ fn claim_section(
     }
     let _ = writeln!(
         s,
-        "<p class=\"scope\"><strong>{}</strong>: {}</p>",
+        "<p class=\"scope {}\"><strong>{}</strong>: {}</p>",
+        vt.class,
         vt.label,
         esc(&vt.scope)
     );
