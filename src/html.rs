@@ -8,13 +8,14 @@
 //! print stylesheet.
 
 use crate::error::{Error, Result};
+use crate::figure::FigureKind;
 use crate::figure::{self, svg::esc, AnyCurve, Figure};
 use crate::point::Point;
 use crate::quadratic::QuadraticIrrational;
 use crate::rational::RationalBezierCurve;
 use crate::scalar::{Ring, Scalar};
 use crate::surface::BezierSurface;
-use crate::verify::claims::{Claim, ClaimFile, Illustration, Kind, Number, SurfaceSpec};
+use crate::verify::claims::{Claim, ClaimFile, Kind, Number, SurfaceSpec};
 use crate::verify::{ClaimOutcome, Report, TextSummary, Verdict};
 use crate::BezierCurve;
 use std::collections::BTreeMap;
@@ -657,30 +658,30 @@ const ON_EXAMPLE: &str = "illustration on text 000's example 4), b = (0, 0), (4/
 
 /// Which illustration a general statement about curves gets: the claim's `figure`, or its
 /// theorem's.
-fn topic(c: &Claim) -> Option<Illustration> {
+fn topic(c: &Claim) -> Option<FigureKind> {
     if let Kind::Theorem(t) = &c.kind {
         return match t.theorem.as_str() {
-            "de_casteljau_bernstein" => Some(Illustration::Construction),
-            "subdivision" => Some(Illustration::Subdivision),
-            "elevation_7" | "elevation_8" => Some(Illustration::Elevation),
-            "derivative" | "derivative_k" | "endpoint_tangent" | "tangent_at_t0" => Some(Illustration::Hodograph),
-            "convex_hull" => Some(Illustration::Hull),
+            "de_casteljau_bernstein" => Some(FigureKind::Construction),
+            "subdivision" => Some(FigureKind::Subdivision),
+            "elevation_7" | "elevation_8" => Some(FigureKind::Elevation),
+            "derivative" | "derivative_k" | "endpoint_tangent" | "tangent_at_t0" => Some(FigureKind::Hodograph),
+            "convex_hull" => Some(FigureKind::Hull),
             _ => None,
         };
     }
     c.figure
 }
 
-fn illustrate(t: Illustration) -> Result<Figure> {
+fn illustrate(t: FigureKind) -> Result<Figure> {
     let c = example_curve()?;
     let half = q(1, 2);
     match t {
-        Illustration::Construction => figure::construction(&c, &half),
-        Illustration::Subdivision => figure::subdivision(&c, &q(1, 3)),
-        Illustration::Elevation => figure::elevation(&c, &[1, 2, 4, 8, 16]),
-        Illustration::Hodograph => figure::hodograph(&c),
-        Illustration::Hull => figure::hull(&c, &c.eval(&q(1, 3))),
-        Illustration::Conics => {
+        FigureKind::Construction => figure::construction(&c, &half),
+        FigureKind::Subdivision => figure::subdivision(&c, &q(1, 3)),
+        FigureKind::Elevation => figure::elevation(&c, &[1, 2, 4, 8, 16]),
+        FigureKind::Hodograph => figure::hodograph(&c),
+        FigureKind::Hull => figure::hull(&c, &c.eval(&q(1, 3))),
+        FigureKind::Conics => {
             let rows = crate::input::parse_points(figure::DEFAULT_CONIC_POLYGON)?;
             let pts = rows
                 .iter()
@@ -688,13 +689,13 @@ fn illustrate(t: Illustration) -> Result<Figure> {
                 .collect::<Result<Vec<_>>>()?;
             figure::conics(&pts, &q(1, 1), &q(1, 1), &[q(1, 2), q(1, 1), q(2, 1)])
         }
-        Illustration::Projection => figure::conic_projection(&BezierCurve::new(
+        FigureKind::Projection => figure::conic_projection(&BezierCurve::new(
             crate::input::parse_points(figure::DEFAULT_PARABOLA)?
                 .iter()
                 .map(|p| p.try_map(|x| Ok(Q::rational(x.clone()))))
                 .collect::<Result<_>>()?,
         )?),
-        Illustration::Fit => {
+        FigureKind::Fit => {
             let rows = crate::input::parse_points(figure::DEFAULT_FIT_CURVE)?;
             let pts = rows
                 .iter()
@@ -702,6 +703,8 @@ fn illustrate(t: Illustration) -> Result<Figure> {
                 .collect::<Result<Vec<_>>>()?;
             figure::fit(&AnyCurve::Polynomial(BezierCurve::new(pts)?))
         }
+        // the others on the figure command's own defaults (its texts' examples)
+        FigureKind::Net | FigureKind::Enneper | FigureKind::Bernstein => figure::FigureRequest::new(t).figure(),
     }
 }
 
@@ -806,9 +809,12 @@ pub fn claim_figure(c: &Claim) -> Result<Option<ClaimFigure>> {
     }
     if let Some(t) = topic(c) {
         let caption = match t {
-            Illustration::Fit => "illustration of text 004's method on our worked example x(t) = (t, 1 + t², t⁴)",
-            Illustration::Conics => "illustration on the control polygon of text 001's Ex. 3 and Ex. 4, w₀ = w₂ = 1",
-            Illustration::Projection => "illustration on the parabola of text 001's Ex. 1 of the proof of (10)",
+            FigureKind::Fit => "illustration of text 004's method on our worked example x(t) = (t, 1 + t², t⁴)",
+            FigureKind::Conics => "illustration on the control polygon of text 001's Ex. 3 and Ex. 4, w₀ = w₂ = 1",
+            FigureKind::Projection => "illustration on the parabola of text 001's Ex. 1 of the proof of (10)",
+            FigureKind::Net => "illustration on text 003's Ex. 2 net (degree (2, 2))",
+            FigureKind::Enneper => "illustration on Enneper's net of text 003's Ex. 5",
+            FigureKind::Bernstein => "the Bernstein basis of degree 3, with its values at t = 1/3",
             _ => ON_EXAMPLE,
         };
         return Ok(Some(ClaimFigure {
