@@ -450,11 +450,18 @@ fn text_page(sum: &TextSummary, title: &str, outcomes: &[&ClaimOutcome], files: 
         }
     );
     // the print leaves out each proof's scope line (the same words every time): said once here
-    let _ = writeln!(
-        s,
-        "<p class=\"scope printonly\"><strong>proved</strong>, on every claim marked so: {}.</p>",
-        esc(&verdict_words(Verdict::Proved, None).scope)
-    );
+    if let Some(vt) = Verdict::SHOWN
+        .into_iter()
+        .map(|v| verdict_words(v, None))
+        .find(|vt| vt.class == "proved")
+    {
+        let _ = writeln!(
+            s,
+            "<p class=\"scope printonly\"><strong>{}</strong>, on every claim marked so: {}.</p>",
+            vt.label,
+            esc(&vt.scope)
+        );
+    }
     s.push_str("<nav class=\"toc\">\n");
     for o in outcomes {
         let vt = verdict_text(o);

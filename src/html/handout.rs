@@ -71,10 +71,27 @@ fn about_the_library(o: &ClaimOutcome) -> bool {
 }
 
 /// The printed label of a claim's source, without the text's file name (`000_….txt 4)` → `4)`).
-fn label<'a>(o: &'a ClaimOutcome) -> &'a str {
+fn label(o: &ClaimOutcome) -> &str {
     match o.source.strip_prefix(o.text.as_str()) {
         Some(rest) => rest.trim(),
         None => o.source.as_str(),
+    }
+}
+
+/// A counterexample as a reader wants it: the point and the two sides' values, without the
+/// claim file's own expressions (`at x = 1: the premise 'diff(D2, k)' = 0 holds, but … gives
+/// left side = -32, right side = 22` → `at x = 1: left side = -32, right side = 22`).
+fn counterexample(certificate: &str) -> String {
+    if !certificate.contains('\'') {
+        return certificate.to_string();
+    }
+    let point = certificate
+        .strip_prefix("at ")
+        .and_then(|rest| rest.split_once(": "))
+        .map(|(p, _)| p);
+    match (point, certificate.find("left side =")) {
+        (Some(point), Some(k)) => format!("at {point}: {}", &certificate[k..]),
+        _ => certificate.to_string(),
     }
 }
 
@@ -168,7 +185,7 @@ fn text_handout(sum: &TextSummary, title: &str, outcomes: &[&ClaimOutcome], file
                 "<p class=\"statement printed\" lang=\"ja\">{}</p>\n<p class=\"note\"><span class=\"label\">Misprint.</span> \
                  As printed this is false: {}.{}</p>",
                 formula(&o.statement),
-                esc(&o.certificate),
+                esc(&counterexample(&o.certificate)),
                 o.note
                     .as_deref()
                     .map(|n| format!(" {}", formula(n.trim_start_matches("misprint: "))))

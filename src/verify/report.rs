@@ -504,7 +504,10 @@ pub(super) fn worked_lines(c: &Claim, checked: &Checked) -> Vec<String> {
                 // a case header in the prover's own terms (quoted expressions, pieces of a
                 // domain, generated names) is not for the handout
                 let line = case.header.line();
-                if !["'", "__", "piece", "≥ 0"].iter().any(|w| line.contains(w)) {
+                if !["'", "__", "piece", "≥ 0", "expanded", "terms"]
+                    .iter()
+                    .any(|w| line.contains(w))
+                {
                     out.push(line);
                 }
             }
