@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Compiles every `--format latex` output of the texts' claims (`prove --explain ID`, one per
 # claim the binary reports) and one `eval --scheme` with pdflatex, one document per fragment;
-# checks that nothing outside ASCII is left outside the CJK environments and that no character
-# was left unmapped (`[U+....]`). Lists overfull lines (text past the margin) as warnings.
+# checks that nothing outside ASCII is left outside the CJK environments, that no character
+# was left unmapped (`[U+....]`), that no equation is set in `\texttt` and that no command-line
+# text (`--explain`) is left. Lists overfull lines (text past the margin) as warnings.
 #
 #   scripts/latex.sh [BINARY [OUT_DIR]]      (defaults: a fresh release build, target/latex/)
 #
@@ -44,6 +45,15 @@ compile() { # NAME FRAGMENT_FILE
   # outside \begin{CJK}...\end{CJK}, ASCII only
   if sed 's/\\begin{CJK}{UTF8}{min}[^\\]*\\end{CJK}//g' "$fragment" | LC_ALL=C grep -q '[^ -~]'; then
     echo "latex: $name: non-ASCII outside a CJK environment"
+    return 1
+  fi
+  # an equation is typeset as math, never as typewriter text
+  if grep -q '\\texttt{[^}]*=' "$fragment"; then
+    echo "latex: $name: an equation in \\texttt: $(grep -o '\\texttt{[^}]*=[^}]*}' "$fragment" | head -1)"
+    return 1
+  fi
+  if grep -v '^%' "$fragment" | grep -q -e '--explain' -e '-{}-explain'; then
+    echo "latex: $name: command-line text in the fragment"
     return 1
   fi
   if grep -q '\[U+[0-9A-F]*\]' "$fragment"; then

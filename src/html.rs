@@ -8,21 +8,24 @@
 //! print stylesheet.
 
 use crate::error::{Error, Result};
+use crate::figure::FigureKind;
 use crate::figure::{self, svg::esc, AnyCurve, Figure};
 use crate::point::Point;
 use crate::quadratic::QuadraticIrrational;
 use crate::rational::RationalBezierCurve;
 use crate::scalar::{Ring, Scalar};
 use crate::surface::BezierSurface;
-use crate::verify::claims::{Claim, ClaimFile, Illustration, Kind, Number, SurfaceSpec};
+use crate::verify::claims::{Claim, ClaimFile, Kind, Number, SurfaceSpec};
 use crate::verify::{ClaimOutcome, Report, TextSummary, Verdict};
 use crate::BezierCurve;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
 
+mod handout;
 pub mod interactive;
 mod statement;
+pub use handout::{render_handout, write_handout};
 pub use statement::formula;
 
 /// The exact scalar of claim figures: claim files may write `2*sqrt(2)`.
@@ -199,7 +202,7 @@ const STYLE: &str = r#"
 * { box-sizing: border-box; }
 body { font-family: "DejaVu Sans", "Noto Sans", "Noto Sans CJK JP", Arial, sans-serif; color: var(--ink); line-height: 1.45;
        max-width: 62rem; margin: 0 auto; padding: 1.2rem 1.5rem 3rem; font-size: 15px; }
-h1 { font-size: 1.6rem; margin: 0.3rem 0 0.2rem; }
+h1 { font-size: 1.6rem; margin: 0.3rem 0 0.2rem; overflow-wrap: anywhere; }
 h2 { font-size: 1.05rem; margin: 0 0 0.4rem; display: flex; flex-wrap: wrap; gap: 0.5rem; align-items: baseline; }
 a { color: #1a56a8; }
 .crumbs { margin: 0; font-size: 0.9rem; color: var(--muted); }
@@ -222,7 +225,7 @@ tr.total td { font-weight: bold; border-top: 2px solid var(--ink); }
 .claim.fails { border-left-color: var(--fails); }
 .claim.misprint { background: #fff5f4; }
 .claim.correction { background: #f3fbf4; }
-.claim .id { font-family: "DejaVu Sans Mono", monospace; font-size: 0.95rem; }
+.claim .id { font-family: "DejaVu Sans Mono", monospace; font-size: 0.95rem; white-space: nowrap; }
 .claim .source { color: var(--muted); font-weight: normal; font-size: 0.9rem; }
 .statement { font-size: 1.1rem; margin: 0.3rem 0 0.5rem; padding: 0.4rem 0.7rem; background: #f7f7f9; border-radius: 3px; }
 .scope { margin: 0.2rem 0; font-size: 0.92rem; }
@@ -234,13 +237,38 @@ dl { margin: 0.4rem 0 0; display: grid; grid-template-columns: max-content 1fr; 
 dt { color: var(--muted); font-size: 0.88rem; }
 dd { margin: 0; }
 pre { margin: 0; white-space: pre-wrap; overflow-wrap: anywhere; font-family: "DejaVu Sans Mono", monospace; font-size: 0.85rem; }
+.printonly { display: none; }
 figure { margin: 0.7rem 0 0; }
-figure svg { max-width: 100%; height: auto; border: 1px solid var(--rule); }
+figure svg { width: 100%; max-width: 100%; height: auto; border: 1px solid var(--rule); }
 figcaption { color: var(--muted); font-size: 0.85rem; }
 nav.toc { columns: 2; font-size: 0.88rem; margin: 0.5rem 0 1rem; }
 nav.toc a { text-decoration: none; }
 nav.toc div { break-inside: avoid; }
 footer { margin-top: 2rem; color: var(--muted); font-size: 0.85rem; }
+@media (max-width: 640px) {
+  /* a phone: the summary's rows stacked, each count with its name; figures scroll sideways at
+     560 px or more, so that their 13 px labels show at 9.5 px or more */
+  body { padding: 0.6rem 0.7rem 2rem; font-size: 14px; }
+  h1 { font-size: 1.25rem; }
+  nav.toc { columns: 1; }
+  table.summary, table.summary tbody, table.summary tr, table.summary td { display: block; }
+  table.summary tr:first-child { display: none; }
+  table.summary tr { border-bottom: 1px solid var(--rule); padding: 0.3rem 0; }
+  table.summary td { border: none; padding: 0.05rem 0.3rem; white-space: normal; }
+  table.summary td:nth-child(2) { white-space: normal; }
+  table.summary td.n { display: inline-block; text-align: left; }
+  table.summary td.n::before { content: attr(data-label) " "; color: var(--muted); }
+  table.misprints, table.misprints tbody, table.misprints tr, table.misprints td { display: block; }
+  table.misprints tr:first-child { display: none; }
+  table.misprints tr { border-bottom: 1px solid var(--rule); padding: 0.3rem 0; }
+  table.misprints td { border: none; padding: 0.05rem 0.3rem; }
+  table.misprints td:nth-child(2)::before { content: "as printed: "; color: var(--muted); }
+  table.misprints td:nth-child(3)::before { content: "correction: "; color: var(--muted); }
+  table.misprints a, nav.toc a { white-space: nowrap; }
+  dl { grid-template-columns: 1fr; }
+  figure { overflow-x: auto; }
+  figure svg { min-width: 560px; }
+}
 @media print {
   /* A4, compact text; a claim or a figure is never split across pages */
   @page { size: A4; margin: 8mm 10mm; }
@@ -249,7 +277,9 @@ footer { margin-top: 2rem; color: var(--muted); font-size: 0.85rem; }
   a { color: inherit; text-decoration: none; }
   h1 { font-size: 14pt; } h2 { font-size: 10pt; margin-bottom: 0.15rem; }
   table { margin: 0.4rem 0 0.8rem; } th, td { padding: 0.15rem 0.4rem; }
-  .claim { break-inside: avoid; page-break-inside: avoid; border-color: #999; padding: 0.25rem 0.5rem; margin: 0.3rem 0; }
+  /* a claim may break across pages; its figure (below its text) never does */
+  .claim { border-color: #999; padding: 0.25rem 0.5rem; margin: 0.3rem 0; }
+  .scope.proved { display: none; } .printonly { display: block; }
   .statement { font-size: 9pt; margin: 0.1rem 0 0.2rem; padding: 0.1rem 0.4rem; }
   .scope, .banner, dt { font-size: 8pt; } .banner { margin: 0.2rem 0; padding: 0.2rem 0.5rem; }
   dl { gap: 0.1rem 0.6rem; margin-top: 0.2rem; }
@@ -318,8 +348,10 @@ fn index_page(
         let title = titles.get(&sum.text).map(String::as_str).unwrap_or("");
         let _ = writeln!(
             s,
-            "<tr><td><a href=\"{}\">{}</a></td><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td>\
-             <td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}/{}</td></tr>",
+            "<tr><td><a href=\"{}\">{}</a></td><td>{}</td><td class=\"n\" data-label=\"claims\">{}</td>\
+             <td class=\"n\" data-label=\"proved\">{}</td><td class=\"n\" data-label=\"proved in range\">{}</td>\
+             <td class=\"n\" data-label=\"verified\">{}</td><td class=\"n\" data-label=\"fails\">{}</td>\
+             <td class=\"n\" data-label=\"as expected\">{}/{}</td></tr>",
             pages[&sum.text],
             esc(&sum.text),
             esc(title),
@@ -344,8 +376,10 @@ fn index_page(
     }
     let _ = writeln!(
         s,
-        "<tr class=\"total\"><td>total</td><td></td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td>\
-         <td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}/{}</td></tr>\n</table>",
+        "<tr class=\"total\"><td>total</td><td></td><td class=\"n\" data-label=\"claims\">{}</td>\
+         <td class=\"n\" data-label=\"proved\">{}</td><td class=\"n\" data-label=\"proved in range\">{}</td>\
+         <td class=\"n\" data-label=\"verified\">{}</td><td class=\"n\" data-label=\"fails\">{}</td>\
+         <td class=\"n\" data-label=\"as expected\">{}/{}</td></tr>\n</table>",
         total[0], total[1], total[2], total[3], total[4], total[5], total[0]
     );
     let mismatches = report.mismatches();
@@ -418,6 +452,19 @@ fn text_page(sum: &TextSummary, title: &str, outcomes: &[&ClaimOutcome], files: 
             format!("; {} NOT as expected", sum.mismatches)
         }
     );
+    // the print leaves out each proof's scope line (the same words every time): said once here
+    if let Some(vt) = Verdict::SHOWN
+        .into_iter()
+        .map(|v| verdict_words(v, None))
+        .find(|vt| vt.class == "proved")
+    {
+        let _ = writeln!(
+            s,
+            "<p class=\"scope printonly\"><strong>{}</strong>, on every claim marked so: {}.</p>",
+            vt.label,
+            esc(&vt.scope)
+        );
+    }
     s.push_str("<nav class=\"toc\">\n");
     for o in outcomes {
         let vt = verdict_text(o);
@@ -520,7 +567,8 @@ fn claim_section(
     }
     let _ = writeln!(
         s,
-        "<p class=\"scope\"><strong>{}</strong>: {}</p>",
+        "<p class=\"scope {}\"><strong>{}</strong>: {}</p>",
+        vt.class,
         vt.label,
         esc(&vt.scope)
     );
@@ -623,30 +671,30 @@ const ON_EXAMPLE: &str = "illustration on text 000's example 4), b = (0, 0), (4/
 
 /// Which illustration a general statement about curves gets: the claim's `figure`, or its
 /// theorem's.
-fn topic(c: &Claim) -> Option<Illustration> {
+fn topic(c: &Claim) -> Option<FigureKind> {
     if let Kind::Theorem(t) = &c.kind {
         return match t.theorem.as_str() {
-            "de_casteljau_bernstein" => Some(Illustration::Construction),
-            "subdivision" => Some(Illustration::Subdivision),
-            "elevation_7" | "elevation_8" => Some(Illustration::Elevation),
-            "derivative" | "derivative_k" | "endpoint_tangent" | "tangent_at_t0" => Some(Illustration::Hodograph),
-            "convex_hull" => Some(Illustration::Hull),
+            "de_casteljau_bernstein" => Some(FigureKind::Construction),
+            "subdivision" => Some(FigureKind::Subdivision),
+            "elevation_7" | "elevation_8" => Some(FigureKind::Elevation),
+            "derivative" | "derivative_k" | "endpoint_tangent" | "tangent_at_t0" => Some(FigureKind::Hodograph),
+            "convex_hull" => Some(FigureKind::Hull),
             _ => None,
         };
     }
     c.figure
 }
 
-fn illustrate(t: Illustration) -> Result<Figure> {
+fn illustrate(t: FigureKind) -> Result<Figure> {
     let c = example_curve()?;
     let half = q(1, 2);
     match t {
-        Illustration::Construction => figure::construction(&c, &half),
-        Illustration::Subdivision => figure::subdivision(&c, &q(1, 3)),
-        Illustration::Elevation => figure::elevation(&c, &[1, 2, 4, 8, 16]),
-        Illustration::Hodograph => figure::hodograph(&c),
-        Illustration::Hull => figure::hull(&c, &c.eval(&q(1, 3))),
-        Illustration::Conics => {
+        FigureKind::Construction => figure::construction(&c, &half),
+        FigureKind::Subdivision => figure::subdivision(&c, &q(1, 3)),
+        FigureKind::Elevation => figure::elevation(&c, &[1, 2, 4, 8, 16]),
+        FigureKind::Hodograph => figure::hodograph(&c),
+        FigureKind::Hull => figure::hull(&c, &c.eval(&q(1, 3))),
+        FigureKind::Conics => {
             let rows = crate::input::parse_points(figure::DEFAULT_CONIC_POLYGON)?;
             let pts = rows
                 .iter()
@@ -654,13 +702,13 @@ fn illustrate(t: Illustration) -> Result<Figure> {
                 .collect::<Result<Vec<_>>>()?;
             figure::conics(&pts, &q(1, 1), &q(1, 1), &[q(1, 2), q(1, 1), q(2, 1)])
         }
-        Illustration::Projection => figure::conic_projection(&BezierCurve::new(
+        FigureKind::Projection => figure::conic_projection(&BezierCurve::new(
             crate::input::parse_points(figure::DEFAULT_PARABOLA)?
                 .iter()
                 .map(|p| p.try_map(|x| Ok(Q::rational(x.clone()))))
                 .collect::<Result<_>>()?,
         )?),
-        Illustration::Fit => {
+        FigureKind::Fit => {
             let rows = crate::input::parse_points(figure::DEFAULT_FIT_CURVE)?;
             let pts = rows
                 .iter()
@@ -668,6 +716,8 @@ fn illustrate(t: Illustration) -> Result<Figure> {
                 .collect::<Result<Vec<_>>>()?;
             figure::fit(&AnyCurve::Polynomial(BezierCurve::new(pts)?))
         }
+        // the others on the figure command's own defaults (its texts' examples)
+        FigureKind::Net | FigureKind::Enneper | FigureKind::Bernstein => figure::FigureRequest::new(t).figure(),
     }
 }
 
@@ -772,9 +822,12 @@ pub fn claim_figure(c: &Claim) -> Result<Option<ClaimFigure>> {
     }
     if let Some(t) = topic(c) {
         let caption = match t {
-            Illustration::Fit => "illustration of text 004's method on our worked example x(t) = (t, 1 + t², t⁴)",
-            Illustration::Conics => "illustration on the control polygon of text 001's Ex. 3 and Ex. 4, w₀ = w₂ = 1",
-            Illustration::Projection => "illustration on the parabola of text 001's Ex. 1 of the proof of (10)",
+            FigureKind::Fit => "illustration of text 004's method on our worked example x(t) = (t, 1 + t², t⁴)",
+            FigureKind::Conics => "illustration on the control polygon of text 001's Ex. 3 and Ex. 4, w₀ = w₂ = 1",
+            FigureKind::Projection => "illustration on the parabola of text 001's Ex. 1 of the proof of (10)",
+            FigureKind::Net => "illustration on text 003's Ex. 2 net (degree (2, 2))",
+            FigureKind::Enneper => "illustration on Enneper's net of text 003's Ex. 5",
+            FigureKind::Bernstein => "the Bernstein basis of degree 3, with its values at t = 1/3",
             _ => ON_EXAMPLE,
         };
         return Ok(Some(ClaimFigure {

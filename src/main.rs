@@ -78,8 +78,11 @@ enum Command {
         /// Also write a static HTML report (index, one page per text, figures) into DIR.
         #[arg(long, value_name = "DIR", conflicts_with = "explain")]
         html: Option<PathBuf>,
-        /// With --html: overwrite an existing report (DIR/index.html).
-        #[arg(long, requires = "html")]
+        /// Also write a students' handout into DIR (statements, worked cases, figures, misprints; no ids).
+        #[arg(long, value_name = "DIR", conflicts_with_all = ["explain", "identity"])]
+        handout: Option<PathBuf>,
+        /// With --html or --handout: overwrite an existing report (DIR/index.html).
+        #[arg(long)]
         force: bool,
     },
     /// Evaluate b(t) exactly by de Casteljau's algorithm (a rational curve with --weights).
@@ -275,15 +278,25 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             vars,
             verbose,
             html,
+            handout,
             force,
-        } => prove(
-            &paths,
-            identity.map(|i| (i, ranges, vars)),
-            id.as_deref(),
-            verbose,
-            html.as_deref().map(|d| (d, force)),
-            format,
-        ),
+        } => {
+            if force && html.is_none() && handout.is_none() {
+                return Err("--force applies only with --html or --handout".into());
+            }
+            prove(
+                &paths,
+                identity.map(|i| (i, ranges, vars)),
+                id.as_deref(),
+                verbose,
+                Reports {
+                    html: html.as_deref(),
+                    handout: handout.as_deref(),
+                    force,
+                },
+                format,
+            )
+        }
         Command::Figure {
             what,
             input,
@@ -557,18 +570,25 @@ fn check_claim_paths(paths: &[PathBuf]) -> Result<(), String> {
 
 /// Checks the report directory before any claim is proved: it is created (so an unwritable
 /// place fails at once), and an existing report is only replaced with `--force`.
-fn prepare_report_dir(dir: &Path, force: bool) -> Result<(), String> {
+fn prepare_report_dir(flag: &str, dir: &Path, force: bool) -> Result<(), String> {
     if dir.exists() && !dir.is_dir() {
-        return Err(format!("--html: {} exists and is not a directory", dir.display()));
+        return Err(format!("{flag}: {} exists and is not a directory", dir.display()));
     }
     let index = dir.join("index.html");
     if index.exists() && !force {
         return Err(format!(
-            "--html: {} already exists (add --force to overwrite the report)",
+            "{flag}: {} already exists (add --force to overwrite the report)",
             index.display()
         ));
     }
-    std::fs::create_dir_all(dir).map_err(|err| format!("--html: cannot create {}: {err}", dir.display()))
+    std::fs::create_dir_all(dir).map_err(|err| format!("{flag}: cannot create {}: {err}", dir.display()))
+}
+
+/// The HTML a `prove` run also writes: the report and the handout, each into its directory.
+struct Reports<'a> {
+    html: Option<&'a Path>,
+    handout: Option<&'a Path>,
+    force: bool,
 }
 
 /// The `--identity` check: the identity, its `--for` ranges and its `--vars`.
@@ -579,7 +599,7 @@ fn prove(
     identity: Option<OneLine>,
     id: Option<&str>,
     verbose: bool,
-    html: Option<(&Path, bool)>,
+    reports: Reports<'_>,
     format: Format,
 ) -> Result<ExitCode, String> {
     check_claim_paths(paths)?;
@@ -614,8 +634,16 @@ fn prove(
     if matches!(format, Format::Latex) {
         return Err(LATEX_ONLY.into());
     }
-    if let Some((dir, force)) = html {
-        prepare_report_dir(dir, force)?;
+    if let (Some(a), Some(b)) = (reports.html, reports.handout) {
+        if a == b {
+            return Err("--html and --handout need two different directories".into());
+        }
+    }
+    if let Some(dir) = reports.html {
+        prepare_report_dir("--html", dir, reports.force)?;
+    }
+    if let Some(dir) = reports.handout {
+        prepare_report_dir("--handout", dir, reports.force)?;
     }
     let show_progress = io::stderr().is_terminal();
     let mut progress = |done: usize, total: usize, claim: &str| {
@@ -631,10 +659,17 @@ fn prove(
         eprint!("\r\x1b[2K");
     }
     let report = report.map_err(|e| e.to_string())?;
-    if let Some((dir, _)) = html {
+    if let Some(dir) = reports.html {
         let written = casteljau::html::write_report(&report, &files, dir).map_err(|e| e.to_string())?;
         eprintln!(
             "casteljau: wrote the HTML report ({written} pages) to {}",
+            dir.join("index.html").display()
+        );
+    }
+    if let Some(dir) = reports.handout {
+        let written = casteljau::html::write_handout(&report, &files, dir).map_err(|e| e.to_string())?;
+        eprintln!(
+            "casteljau: wrote the handout ({written} pages) to {}",
             dir.join("index.html").display()
         );
     }

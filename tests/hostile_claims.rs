@@ -228,6 +228,7 @@ const WRITTEN: &[&str] = &[
     "cdot",
     "le",
     "ge",
+    "frac",
 ];
 
 /// The property: no `^^`, braces balanced in every `$…$` and outside, `$` paired, and every

@@ -275,3 +275,56 @@ fn prove_html_writes_the_report() {
     assert!(String::from_utf8_lossy(&run.stdout).contains("=== summary ==="));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn the_handout_has_statements_misprints_corrections_and_figures_but_no_ids_or_commands() {
+    let (report, _) = fixture();
+    let files = load_paths(&proofs()).unwrap();
+    let pages = casteljau::html::render_handout(report, &files).unwrap();
+    assert_eq!(pages.len(), report.summaries().len() + 1);
+    for (name, html) in &pages {
+        let doc = parse(html);
+        let text = text_of(&doc.root_element());
+        for o in &report.outcomes {
+            assert!(!text.contains(&o.id), "{name} names the claim {}", o.id);
+        }
+        // outside the figures (the hull figure's title names its "certificate weights")
+        let prose: String = doc
+            .descendants()
+            .filter(|n| n.is_text() && !n.ancestors().any(|a| a.has_tag_name("svg")))
+            .filter_map(|n| n.text())
+            .collect();
+        for word in ["--", "certificate", "proofs/"] {
+            assert!(!prose.contains(word), "{name} holds '{word}'");
+        }
+    }
+    for m in report.outcomes.iter().filter(|o| o.expect == Verdict::Fails) {
+        let html = &pages.iter().find(|(n, _)| *n == page_name(&m.text)).unwrap().1;
+        let doc = parse(html);
+        let item = doc
+            .descendants()
+            .find(|n| {
+                has_class(n, "printed") && text_of(n).replace('_', "") == m.statement.replace(['_', '^', '{', '}'], "")
+            })
+            .unwrap_or_else(|| panic!("misprint {} not struck through", m.id));
+        let section = item.parent().unwrap();
+        assert!(text_of(&section).contains("As printed this is false"), "{}", m.id);
+        if let Some(fix) = report
+            .outcomes
+            .iter()
+            .find(|c| c.corrects.as_deref() == Some(m.id.as_str()))
+        {
+            let correct = section.descendants().find(|n| has_class(n, "correction")).unwrap();
+            assert!(text_of(&correct).contains("Correct:"), "{}", fix.id);
+        }
+    }
+    let text000 = &pages.iter().find(|(n, _)| n.starts_with("000_")).unwrap().1;
+    assert!(
+        text000.matches("<svg ").count() >= 5,
+        "text 000's handout has few figures"
+    );
+    assert!(
+        text000.contains("both sides = "),
+        "no worked case in text 000's handout"
+    );
+}

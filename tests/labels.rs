@@ -249,6 +249,17 @@ fn print_figure_font(page: &str) -> f64 {
 /// 190 mm = 718 px, less the claim box's padding and border (693 px, as measured in
 /// Chromium's PDF), and to the print stylesheet's `max-height: 145mm` (548 px).
 fn print_scale(svg: roxmltree::Node) -> f64 {
-    let size = |a: &str| svg.attribute(a).unwrap().parse::<f64>().unwrap();
-    (693.0 / size("width")).min(548.0 / size("height")).min(1.0)
+    let (w, h) = view_size(svg);
+    (693.0 / w).min(548.0 / h).min(1.0)
+}
+
+/// The width and height of an SVG's `viewBox` (its drawing's own size; it has no fixed width).
+fn view_size(svg: roxmltree::Node) -> (f64, f64) {
+    let v: Vec<f64> = svg
+        .attribute("viewBox")
+        .expect("a viewBox")
+        .split_whitespace()
+        .map(|x| x.parse().unwrap())
+        .collect();
+    (v[2], v[3])
 }

@@ -469,7 +469,7 @@ impl Figure {
         let (w, h) = (layout.width, layout.height);
         let _ = writeln!(
             s,
-            r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" role="img" aria-label="{}" font-family="DejaVu Sans, Noto Sans, Arial, sans-serif" font-size="13">"#,
+            r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {w} {h}" role="img" aria-label="{}" font-family="DejaVu Sans, Noto Sans, Arial, sans-serif" font-size="13">"#,
             esc(&self.title)
         );
         let _ = writeln!(s, "<title>{}</title>", esc(&self.title));

@@ -18,7 +18,6 @@ use crate::figure::{FigureKind, FigureRequest, DEFAULT_CONIC_POLYGON, DEFAULT_CU
 use crate::input::{parse_count, parse_number, parse_points};
 use crate::point::Point;
 use crate::rational::RationalBezierCurve;
-use crate::verify::claims::Illustration;
 use crate::{classify_conic, implicit_conic, BezierCurve, BigRational, ConicKind};
 use num_integer::Integer;
 use num_traits::{One, Zero};
@@ -61,15 +60,10 @@ pub fn interactive_file(kind: FigureKind) -> String {
 
 /// The paragraph linking a report page's illustration to its interactive version, if it has
 /// one (hidden in print).
-pub fn link(illustration: Illustration) -> Option<String> {
-    let kind = match illustration {
-        Illustration::Construction => FigureKind::Construction,
-        Illustration::Subdivision => FigureKind::Subdivision,
-        Illustration::Elevation => FigureKind::Elevation,
-        Illustration::Hodograph => FigureKind::Hodograph,
-        Illustration::Conics => FigureKind::Conics,
-        Illustration::Hull | Illustration::Fit | Illustration::Projection => return None,
-    };
+pub fn link(kind: FigureKind) -> Option<String> {
+    if !INTERACTIVE_KINDS.contains(&kind) {
+        return None;
+    }
     Some(format!(
         "<p class=\"interactive\"><a href=\"interactive/{}\">Interactive version</a> (drag the points, slide t; \
          exact values)</p>\n",

@@ -8,6 +8,7 @@
 use super::claim_syntax::{field_line, read, FieldError};
 use super::kernel::checked::Verdict;
 use crate::error::{Error, Result};
+use crate::figure::FigureKind;
 use serde::Deserialize;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -283,29 +284,6 @@ fn definition_name(def: &str) -> Option<String> {
     Some(head.split('(').next().unwrap_or("").trim().to_string())
 }
 
-/// The illustration the report draws for a general statement about curves (a claim with
-/// objects of its own is drawn from them instead).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Illustration {
-    /// De Casteljau's construction.
-    Construction,
-    /// Subdivision at a parameter.
-    Subdivision,
-    /// Repeated degree elevation.
-    Elevation,
-    /// The hodograph (derivative curve).
-    Hodograph,
-    /// The convex hull.
-    Hull,
-    /// Text 004's cubic fit.
-    Fit,
-    /// Text 001's family of conic arcs.
-    Conics,
-    /// Text 001's parabola in space projected to the plane z = 1.
-    Projection,
-}
-
 /// The fields every claim has.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -317,7 +295,7 @@ struct Header {
     expect: Option<String>,
     corrects: Option<String>,
     note: Option<String>,
-    figure: Option<Illustration>,
+    figure: Option<String>,
     #[serde(default)]
     uses: Vec<String>,
 }
@@ -350,8 +328,9 @@ pub struct Claim {
     pub corrects: Option<String>,
     /// A remark shown in the report.
     pub note: Option<String>,
-    /// The illustration of a general statement in the report (`figure = "subdivision"`).
-    pub figure: Option<Illustration>,
+    /// The figure that illustrates a general statement in the report (`figure = "subdivision"`):
+    /// one of `casteljau figure`'s kinds, drawn on a text's example.
+    pub figure: Option<FigureKind>,
     /// The claims it cites as lemmas (`uses = ["000-9-intermediate"]`): a library object is
     /// replaced by its formula in a proof for every value only through such a proved lemma.
     pub uses: Vec<String>,
@@ -421,6 +400,18 @@ impl Claim {
                 }))
             }
         };
+        let figure = match head.figure.as_deref() {
+            None => None,
+            Some(name) => Some(name.parse::<FigureKind>().map_err(|_| {
+                in_claim(FieldError {
+                    field: Some("figure".into()),
+                    message: format!(
+                        "figure must be one of {}, not \"{name}\"",
+                        FigureKind::ALL.map(|k| k.name()).join(", ")
+                    ),
+                })
+            })?),
+        };
         Ok(Claim {
             id: head.id,
             source: head.source,
@@ -428,7 +419,7 @@ impl Claim {
             expect,
             corrects: head.corrects,
             note: head.note,
-            figure: head.figure,
+            figure,
             uses: head.uses,
             decls,
             kind,

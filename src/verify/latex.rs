@@ -10,6 +10,9 @@ use super::claims::{Claim, ClaimFile};
 use super::kernel::checked::Checked;
 use std::fmt::Write as _;
 
+mod mathmode;
+use mathmode::{balance_parentheses, fractions, paren_script_len};
+
 /// The first line of every fragment: what the document around it must load.
 pub const PREAMBLE_NOTE: &str =
     "% casteljau --explain: needs \\usepackage{CJKutf8} (Japanese statements; Debian: latex-cjk-japanese)";
@@ -174,7 +177,12 @@ pub fn text(t: &str) -> String {
         };
         if let Some(len) = code_end.filter(|&len| len > 0) {
             let inner: String = chars[i + 1..i + 1 + len].iter().collect();
-            let _ = write!(out, "\\texttt{{{}}}", plain(&inner));
+            if is_expression(&inner) {
+                // an expression of a claim file (`4/3*B(1, 3, t)`): a formula, `*` a dot
+                let _ = write!(out, "${}$", fractions(&formula(&inner.replace('*', "·"))));
+            } else {
+                let _ = write!(out, "\\texttt{{{}}}", plain(&inner));
+            }
             i += len + 2;
             continue;
         }
@@ -193,6 +201,27 @@ pub fn text(t: &str) -> String {
         i += 1;
     }
     out
+}
+
+/// Whether quoted text is an expression (set as a formula) rather than a name or code (set
+/// in `\texttt`): it has an operator or a call, and no library path or identifier.
+fn is_expression(t: &str) -> bool {
+    let chars: Vec<char> = t.chars().collect();
+    let operator = t.contains(['=', '+', '*', '/', '^', '<', '>']) || t.contains("(");
+    let code = t.contains("::")
+        || (0..chars.len()).any(|k| {
+            chars[k].is_ascii_alphabetic() && identifier_len(&chars, k, word_at(&chars, k), &word(&chars, k)).is_some()
+        });
+    let number = t.chars().all(|c| c.is_ascii_digit() || c == '-') && t.chars().any(|c| c.is_ascii_digit());
+    (operator || number) && !code && !t.contains(['`', '\\', '$', '%', '#', '&', '~'])
+}
+
+fn word_at(chars: &[char], k: usize) -> usize {
+    chars[k..].iter().take_while(|c| c.is_ascii_alphabetic()).count()
+}
+
+fn word(chars: &[char], k: usize) -> String {
+    chars[k..k + word_at(chars, k)].iter().collect()
 }
 
 fn push_text_char(ch: char, out: &mut String) {
@@ -396,6 +425,8 @@ fn resolve_parts(mut parts: Vec<(Part, String)>) -> Vec<(Part, String)> {
             _ => merged.push((p, s)),
         }
     }
+    balance_parentheses(&mut merged);
+    merged.retain(|(_, s)| !s.is_empty());
     merged
 }
 
@@ -413,7 +444,7 @@ pub fn statement(t: &str) -> String {
                 let lead = s.len() - s.trim_start().len();
                 let trail = s.len() - s.trim_end().len();
                 out.push_str(&" ".repeat(lead.min(1)));
-                let _ = write!(out, "${}$", formula(s.trim()));
+                let _ = write!(out, "${}$", fractions(&formula(s.trim())));
                 out.push_str(&" ".repeat(trail.min(1)));
             }
             Part::Code => {
@@ -540,6 +571,16 @@ fn formula(t: &str) -> String {
                 out.push(ch);
                 i += 1;
                 match chars.get(i) {
+                    // the texts' `b_i^(r)`: a superscript in parentheses, of simple characters
+                    Some('(') if ch == '^' && paren_script_len(&chars, i).is_some() => {
+                        let len = paren_script_len(&chars, i).expect("checked");
+                        out.push('{');
+                        for &c in &chars[i..i + len] {
+                            push_math_char(c, &mut out);
+                        }
+                        out.push('}');
+                        i += len;
+                    }
                     Some('{') if partner[i].is_some() => {
                         out.push('{');
                         groups.push(Scripts::default());
@@ -661,7 +702,9 @@ pub(super) fn explain(f: &ClaimFile, c: &Claim, checked: &Checked, range_bound: 
     };
     let _ = writeln!(s, "{label}: {}\n", text(&checked.certificate));
     for line in misprint_lines(f, c) {
-        let (key, value) = line.split_once(':').unwrap_or(("", &line));
+        // the correction by name; the command that shows it is for the terminal
+        let line = line.split(" (see --explain").next().unwrap_or(&line);
+        let (key, value) = line.split_once(':').unwrap_or(("", line));
         let _ = writeln!(s, "\\noindent {}: {}\n", text(key.trim()), text(value.trim()));
     }
     if let Some(r) = range_bound {
@@ -718,20 +761,20 @@ mod tests {
 
     #[test]
     fn formulas_are_math_and_everything_is_ascii_outside_cjk() {
-        // a closing parenthesis before Japanese text is set as text, outside the formula
+        // a formula keeps the parenthesis that closes its own before Japanese text
         assert_eq!(
             statement("−3/4 ẋ(0)·ẋ(0) k = X·x(0) を得る"),
-            "$-3/4 \\dot{x}(0)\\cdot \\dot{x}(0) k = X\\cdot x(0$) \\begin{CJK}{UTF8}{min}を得る\\end{CJK}"
+            "$-\\frac{3}{4} \\dot{x}(0)\\cdot \\dot{x}(0) k = X\\cdot x(0)$ \\begin{CJK}{UTF8}{min}を得る\\end{CJK}"
         );
         assert_eq!(statement("x\u{307} ≤ Σ b_i"), "$\\dot{x} \\le  \\sum  b_i$");
-        assert_eq!(statement("gives k = l = 3/10"), "gives $k = l = 3/10$");
+        assert_eq!(statement("gives k = l = 3/10"), "gives $k = l = \\frac{3}{10}$");
         assert_eq!(
             text("`delta` and 'b(t)' ≤ 1, the claim's"),
-            "\\texttt{delta} and \\texttt{b(t)} $\\le$ 1, the claim's"
+            "\\texttt{delta} and $b(t)$ $\\le$ 1, the claim's"
         );
         assert_eq!(text("b_0^n {x} 100%"), "b\\_0\\^{}n \\{x\\} 100\\%");
         assert_eq!(text("see --explain x: -32, b-1"), "see -{}-explain x: $-$32, b-1");
-        assert_eq!(statement("(from (7) = 0)"), "(from ($7) = 0$)");
+        assert_eq!(statement("(from (7) = 0)"), "(from $(7) = 0$)");
         assert_eq!(statement("M⁻¹ xᵀ₁₂"), "$M^{-1} x^{T}_{12}$");
         // library names are code, not a word with a subscript
         assert_eq!(statement("elevate_by, once"), "\\texttt{elevate\\_by}, once");
@@ -741,11 +784,11 @@ mod tests {
         );
         // words beside formulas: short words after `(`, `sum` not called, hyphens, names
         assert_eq!(statement("x = 1 (at the corner)"), "$x = 1$ (at the corner)");
-        assert_eq!(statement("B_i(t) and sum to 1"), "$B_i(t$) and sum to $1$");
-        assert_eq!(statement("sum(i, 0, n, b)"), "$\\mathrm{sum}(i, 0, n, b$)");
+        assert_eq!(statement("B_i(t) and sum to 1"), "$B_i(t)$ and sum to $1$");
+        assert_eq!(statement("sum(i, 0, n, b)"), "$\\mathrm{sum}(i, 0, n, b)$");
         assert_eq!(statement("non-zero weights, n-k"), "non-zero weights, $n-k$");
         assert_eq!(statement("the Bézier points"), "the B\\'{e}zier points");
-        assert_eq!(statement("as a curve, a(t)"), "as a curve, $a(t$)");
+        assert_eq!(statement("as a curve, a(t)"), "as a curve, $a(t)$");
         assert_eq!(statement("e.g. x(t) = t"), "e.g. $x(t) = t$");
         assert_eq!(text("§2"), "\\S{}2");
         assert_eq!(text("✓"), "[U+2713]");

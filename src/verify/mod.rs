@@ -365,6 +365,20 @@ pub fn explain(paths: &[PathBuf], id: &str, style: ExplainStyle) -> Result<Strin
     explain_files(&claims::load_paths(paths)?, id, style)
 }
 
+/// The worked case of claim `id` as a reader of the texts wants it (the handout): exact
+/// evaluations and the scheme (9), or the counterexample; no proof internals.
+pub fn worked_case_lines(files: &[claims::ClaimFile], id: &str) -> Result<Vec<String>> {
+    for f in files {
+        if let Some(c) = f.claim.iter().find(|c| c.id == id) {
+            let (checked, _) = explained(files, c).map_err(|e| in_claim(f, id, e))?;
+            return Ok(report::worked_lines(c, &checked));
+        }
+    }
+    Err(Error::Domain(format!(
+        "no claim with id '{id}' in the given claim files"
+    )))
+}
+
 /// The proof of claim `id`, searched in claim files already loaded; see [`explain`].
 pub fn explain_files(files: &[claims::ClaimFile], id: &str, style: ExplainStyle) -> Result<String> {
     for f in files {

@@ -486,6 +486,43 @@ pub(super) fn explain_text(
     s
 }
 
+/// The worked case for a reader of the texts (the handout): the exact evaluations of the
+/// worked case and its scheme (9), or, with no evaluation, the counterexample or the claim's own
+/// data. The symbolic pieces of a proof for every n are left out: they say how the proof
+/// went, not what the statement gives.
+pub(super) fn worked_lines(c: &Claim, checked: &Checked) -> Vec<String> {
+    let mut out = Vec::new();
+    let all = cases(&checked.steps);
+    let case = worked_case(&all);
+    let evals = case.map(|c| sample_evaluations(c, 3)).unwrap_or_default();
+    for e in &evals {
+        out.push(e.to_string());
+    }
+    if evals.is_empty() {
+        match case {
+            Some(case) if checked.verdict() != Verdict::Fails => {
+                // a case header in the prover's own terms (quoted expressions, pieces of a
+                // domain, generated names) is not for the handout
+                let line = case.header.line();
+                if !["'", "__", "piece", "≥ 0", "expanded", "terms"]
+                    .iter()
+                    .any(|w| line.contains(w))
+                {
+                    out.push(line);
+                }
+            }
+            _ => out.extend(certificate_case(checked).1.into_iter().map(str::to_string)),
+        }
+    }
+    if let Some(scheme) = worked_scheme(c, checked, evals.first().copied()) {
+        out.extend(scheme.to_string().lines().map(str::to_string));
+        if let Some(sum) = evals.first().and_then(|e| worked_sum(c, &scheme, e)) {
+            out.push(sum);
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
