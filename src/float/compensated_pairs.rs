@@ -69,7 +69,8 @@ pub(super) fn compensated_in_unit_interval(b: &[f64], t: f64) -> Option<(f64, f6
     if !in_domain(b, t) {
         return None;
     }
-    best_triangle(b, t)
+    let (res, bound) = best_triangle(b, t);
+    (!bound.is_nan()).then_some((res, bound))
 }
 
 /// [`compensated_in_unit_interval`] by the fused multiply-add's formulas (`FMA`) or by
@@ -84,14 +85,17 @@ pub(super) fn compensated_in_unit_interval_by<const FMA: bool>(b: &[f64], t: f64
 
 /// [`triangle`] compiled twice, for the build's target and for x86-64 with AVX and FMA, the
 /// second taken where the CPU has them (the FMA formulas); where the build's target has FMA
-/// already there is one version and no choice at run time.
+/// already there is one version and no choice at run time. A declined triangle comes back
+/// as a NaN bound (a bound the triangle gives is finite): two floats return in registers,
+/// an `Option` of them through memory, which the call cannot inline away.
 #[multiversion(targets("x86_64+avx+fma"))]
-fn best_triangle(b: &[f64], t: f64) -> Option<(f64, f64)> {
-    if target_cfg_f!(target_feature = "fma") {
+fn best_triangle(b: &[f64], t: f64) -> (f64, f64) {
+    let parts = if target_cfg_f!(target_feature = "fma") {
         triangle::<true>(b, t)
     } else {
         triangle::<false>(b, t)
-    }
+    };
+    parts.unwrap_or((f64::NAN, f64::NAN))
 }
 
 /// The compensated triangle of `b` at `t` (in the domain) and its bound, TwoProduct by
