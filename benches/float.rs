@@ -1,4 +1,5 @@
-//! Float evaluators side by side: plain de Casteljau, with its running bound, compensated,
+//! Float evaluators side by side: plain de Casteljau, with its running bound, compensated
+//! (FMA chosen at run time, and with Dekker's product forced),
 //! the generic algorithm on `f64`, the public `BezierCurve<Interval>::eval` (`interval`: at a
 //! point of `[0, 1]` it takes the kernel of `interval_de_casteljau`), that kernel, and kurbo's
 //! cubic, one coordinate of a curve of degree 3, 10, 20 at t = 0.3. `plain` is the floor they
@@ -7,7 +8,7 @@
 //! CPU time of the bench thread (`support/cpu_time.rs`): the figures come from a shared
 //! machine. `cargo bench --bench float`.
 
-use casteljau::float::{compensated_de_casteljau, de_casteljau, de_casteljau_running};
+use casteljau::float::{compensated_de_casteljau, compensated_de_casteljau_by, de_casteljau, de_casteljau_running};
 use casteljau::{interval_de_casteljau, tight_interval_de_casteljau, Interval};
 use casteljau::{BezierCurve, Scalar};
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
@@ -67,6 +68,13 @@ fn evaluators(c: &mut Criterion) {
         });
         group.bench_with_input(BenchmarkId::new("compensated", n), &b, |bch, b| {
             bch.iter_custom(|iters| cpu_time_of(iters, || compensated_de_casteljau(black_box(b), black_box(t))))
+        });
+        // the same triangle with Dekker's product forced: what the default target ran before
+        // FMA was chosen at run time
+        group.bench_with_input(BenchmarkId::new("compensated_dekker", n), &b, |bch, b| {
+            bch.iter_custom(|iters| {
+                cpu_time_of(iters, || compensated_de_casteljau_by(black_box(b), black_box(t), false))
+            })
         });
         group.bench_with_input(BenchmarkId::new("generic_f64", n), &generic, |bch, c| {
             bch.iter_custom(|iters| cpu_time_of(iters, || c.eval(black_box(&t))))

@@ -62,6 +62,19 @@ fn array_casteljau(points: &[[f64; 2]; 21], t: f64) -> [f64; 2] {
     b[0]
 }
 
+/// de Casteljau by hand, the plainest way: each point read, the new one written whole,
+/// `a + t (b − a)` per coordinate (the steps `Bezier::eval` takes).
+fn plain_casteljau(points: &[[f64; 2]; 21], t: f64) -> [f64; 2] {
+    let mut b = *points;
+    for len in (1..21).rev() {
+        for i in 0..len {
+            let (p, q) = (b[i], b[i + 1]);
+            b[i] = [p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])];
+        }
+    }
+    b[0]
+}
+
 fn peers(c: &mut Criterion) {
     let (ours, theirs, lyon) = (cubic(), kurbo_cubic(), lyon_cubic());
     let any = Bezier::from(ours);
@@ -142,6 +155,39 @@ fn peers(c: &mut Criterion) {
     });
     g.finish();
 
+    // One cubic at 1,000 parameters in [0, 1]: casteljau's `eval_many` against a loop of
+    // per-point `eval` calls, kurbo's and casteljau's.
+    let ts: Vec<f64> = (0..1000).map(|i| (i as f64 + 0.5) / 1000.0).collect();
+    let ours = cubic();
+    let mut out = vec![Point2::new(0.0, 0.0); ts.len()];
+    let mut kout = vec![kurbo::Point::ZERO; ts.len()];
+    let mut g = c.benchmark_group("cubic_eval_1000");
+    long_samples(&mut g);
+    g.bench_function("casteljau_eval_many", |b| {
+        b.iter_custom(|iters| cpu_time_of(iters, || black_box(&ours).eval_many(black_box(&ts), &mut out)))
+    });
+    g.bench_function("casteljau_per_point", |b| {
+        b.iter_custom(|iters| {
+            cpu_time_of(iters, || {
+                let c = black_box(&ours);
+                for (t, o) in black_box(&ts).iter().zip(out.iter_mut()) {
+                    *o = c.eval(t);
+                }
+            })
+        })
+    });
+    g.bench_function("kurbo_per_point", |b| {
+        b.iter_custom(|iters| {
+            cpu_time_of(iters, || {
+                let c = black_box(&theirs);
+                for (t, o) in black_box(&ts).iter().zip(kout.iter_mut()) {
+                    *o = c.eval(*t);
+                }
+            })
+        })
+    });
+    g.finish();
+
     let array = degree_20();
     let ours = Bezier::from_points(array.map(Point2::from)).unwrap();
     let lyon_points = array.map(|[x, y]| point(x, y));
@@ -152,6 +198,9 @@ fn peers(c: &mut Criterion) {
     });
     g.bench_function("array", |b| {
         b.iter_custom(|iters| cpu_time_of(iters, || array_casteljau(black_box(&array), black_box(T))))
+    });
+    g.bench_function("plain", |b| {
+        b.iter_custom(|iters| cpu_time_of(iters, || plain_casteljau(black_box(&array), black_box(T))))
     });
     // Neither kurbo nor lyon_geom has curves above degree 3: lyon's point lerp in the same
     // de Casteljau loop stands in for them.

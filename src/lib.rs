@@ -55,6 +55,7 @@ pub mod judge;
 mod kernel;
 mod least_squares;
 pub mod linalg;
+mod many;
 #[cfg(feature = "oracle")]
 pub mod oracle;
 mod param;
@@ -82,6 +83,7 @@ pub use error::{Error, Result, MAX_DEGREE, MAX_DIMENSION};
 pub use fixed::{BezierN, Cubic, Line, Quad};
 pub use hull::{convex_weights, hull_contains, MAX_SUBSETS};
 pub use input::{format_points, parse_count, parse_net, parse_number, parse_numbers, parse_point, parse_points};
+pub use many::LANES;
 pub use num_bigint::BigInt;
 pub use num_rational::BigRational;
 pub use param::{ParamCurve, ParamCurveDeriv};

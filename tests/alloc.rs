@@ -188,3 +188,19 @@ fn interval_eval_in_the_unit_interval_allocates_nothing_up_to_the_stack_limit() 
         assert_eq!(n, 0, "Bezier<Point2<Interval>>::eval allocated at degree {}", len - 1);
     }
 }
+
+#[test]
+fn eval_many_allocates_nothing_up_to_degree_23() {
+    let ts: Vec<f64> = (0..100).map(|i| i as f64 / 99.0).collect();
+    let mut out = vec![Point2::new(0.0, 0.0); ts.len()];
+    let c = Cubic::try_from(&cubic()).unwrap();
+    let (n, r) = allocations(|| c.eval_many(&ts, &mut out));
+    assert_eq!((n, r), (0, Ok(())), "Cubic::eval_many allocated");
+    assert_eq!(out[37], c.eval(&ts[37]));
+    let (n, r) = allocations(|| cubic().eval_many(&ts, &mut out));
+    assert_eq!((n, r), (0, Ok(())), "Bezier::eval_many allocated");
+    let high = Bezier::from_points((0..24).map(|i| Point2::new(i as f64, (i % 5) as f64))).unwrap();
+    let (n, r) = allocations(|| high.eval_many(&ts, &mut out));
+    assert_eq!((n, r), (0, Ok(())), "eval_many at degree 23 allocated");
+    assert_eq!(out[99], high.eval(&ts[99]));
+}

@@ -2,9 +2,13 @@
 //! (`casteljau::float::TWO_PRODUCT_METHOD`), Dekker's product and the FMA form are compared
 //! with the exact `a·b − p` computed in rationals, on random floats of every magnitude and
 //! on the edges: subnormals, products near underflow, operands beyond Dekker's split limit
-//! (2^995) and products near overflow, signed zeros, infinities and NaN.
+//! (2^995) and products near overflow, signed zeros, infinities and NaN. Compensated de
+//! Casteljau, whose method is chosen at run time, gives the bits of both methods' formulas.
 
-use casteljau::float::{nearest_f64, two_product, two_product_dekker, two_product_fma, TWO_PRODUCT_METHOD};
+use casteljau::float::{
+    compensated_de_casteljau, compensated_de_casteljau_by, nearest_f64, two_product, two_product_dekker,
+    two_product_fma, TWO_PRODUCT_METHOD,
+};
 use casteljau::{BigRational, Scalar};
 
 #[path = "support/rng.rs"]
@@ -128,4 +132,64 @@ fn edge_products_are_exact() {
         let tiny = random_float(&mut rng, -1074, -900);
         check(tiny, random_float(&mut rng, -100, 100));
     }
+}
+
+/// Whether compensated de Casteljau takes the FMA formulas on this CPU: the build's target
+/// has FMA, or the CPU has AVX and FMA (chosen at run time).
+fn runtime_fma() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        cfg!(target_feature = "fma") || (is_x86_feature_detected!("avx") && is_x86_feature_detected!("fma"))
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        cfg!(target_feature = "fma")
+    }
+}
+
+/// Compensated de Casteljau as called (FMA chosen at run time where the CPU has it, the
+/// compile-time method else) against the FMA formulas and Dekker's, forced: the same bits
+/// of the value by both, and of the bound by the method this CPU takes (the other method
+/// may give another valid bound where its fast path declines a triangle of tiny values),
+/// on random coefficients of every magnitude (subnormals, near Dekker's limits, huge,
+/// zeros), at degrees 1 to 70 (past the unit-interval path's 63) and at parameters in and
+/// out of [0, 1].
+#[test]
+fn compensated_runtime_choice_gives_the_bits_of_both_methods() {
+    let chosen = runtime_fma();
+    let mut rng = Rng(47);
+    let mut checked = 0;
+    for round in 0..6_000 {
+        let degree = 1 + (rng.next() % if round % 10 == 0 { 70 } else { 8 }) as usize;
+        let (lo, hi) = [(-60, 60), (-1074, -900), (900, 1000), (-1074, 1024)][(rng.next() % 4) as usize];
+        let b: Vec<f64> = (0..=degree)
+            .map(|_| {
+                if rng.next() % 9 == 0 {
+                    0.0
+                } else {
+                    random_float(&mut rng, lo, hi)
+                }
+            })
+            .collect();
+        let t = match rng.next() % 6 {
+            0 => rng.unit() * 3.0 - 1.0,
+            1 => [0.0, 1.0, 5e-324, 1.0 - f64::EPSILON / 2.0][(rng.next() % 4) as usize],
+            _ => rng.unit(),
+        };
+        let runtime = compensated_de_casteljau(&b, t);
+        let bits = |(x, e): (f64, f64)| (x.to_bits(), e.to_bits());
+        for fma in [true, false] {
+            let forced = compensated_de_casteljau_by(&b, t, fma);
+            if runtime.0.is_nan() {
+                assert!(forced.0.is_nan(), "fma {fma}: {b:?} at {t:e}");
+                continue;
+            }
+            assert_eq!(forced.0.to_bits(), runtime.0.to_bits(), "fma {fma}: {b:?} at {t:e}");
+            if fma == chosen {
+                assert_eq!(bits(forced), bits(runtime), "fma {fma}: {b:?} at {t:e}");
+            }
+        }
+        checked += 1;
+    }
+    assert!(checked > 5_000);
 }

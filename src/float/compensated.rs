@@ -18,7 +18,7 @@ use super::casteljau::{
     abs_bernstein_sum_in, abs_factors, abs_sum_rounded_up, add_up, convex_triangle, gamma, inflate, level_growth,
     mul_up, next_up, one_minus, underflow_term, ETA, UNIT_ROUNDOFF,
 };
-use super::compensated_pairs::compensated_in_unit_interval;
+use super::compensated_pairs::{compensated_in_unit_interval, compensated_in_unit_interval_by};
 use super::eft::{two_product, two_sum, ExactRange, Factor};
 use super::scratch::{with_copy, with_scratch, with_scratch2};
 
@@ -35,11 +35,44 @@ use super::scratch::{with_copy, with_scratch, with_scratch2};
 /// assert!((res - exact).abs() < 1e-13 * exact && bound < 1e-30); // 13 digits
 /// assert!((de_casteljau(&b, t) - exact).abs() > 100.0 * exact); // none
 /// ```
+///
+/// TwoProduct is by a fused multiply-add where the CPU has the instruction, chosen at run
+/// time for `t ∈ [0, 1]` (else as the build's target has it, [`super::TWO_PRODUCT_METHOD`]):
+/// the same bits either way ([`compensated_de_casteljau_by`]).
 #[inline]
 pub fn compensated_de_casteljau(b: &[f64], t: f64) -> (f64, f64) {
     if let Some(result) = compensated_in_unit_interval(b, t) {
         return result;
     }
+    compensated_checked(b, t)
+}
+
+/// [`compensated_de_casteljau`] with TwoProduct by the formulas of a fused multiply-add
+/// (`fma`) or by Dekker's product, whatever this CPU has: the same value, bit for bit, as
+/// [`compensated_de_casteljau`] for every input, and the same bound by the method it takes
+/// on this CPU (by the other, where its fast path declines a triangle of values near
+/// underflow, the checked triangle's bound, also valid). Without the instruction, each
+/// fused multiply-add is a call to the C library's correctly rounded `fma` (slow): this is
+/// for checking that the methods agree and for measuring them.
+///
+/// ```
+/// use casteljau::float::{compensated_de_casteljau, compensated_de_casteljau_by};
+/// let b = [-0.421875, 0.140625, -0.046875, 0.015625];
+/// let (fma, dekker) = (compensated_de_casteljau_by(&b, 0.7500001, true), compensated_de_casteljau_by(&b, 0.7500001, false));
+/// assert_eq!(fma.0.to_bits(), dekker.0.to_bits());
+/// assert_eq!(fma.0.to_bits(), compensated_de_casteljau(&b, 0.7500001).0.to_bits());
+/// ```
+pub fn compensated_de_casteljau_by(b: &[f64], t: f64, fma: bool) -> (f64, f64) {
+    let fast = if fma {
+        compensated_in_unit_interval_by::<true>(b, t)
+    } else {
+        compensated_in_unit_interval_by::<false>(b, t)
+    };
+    fast.unwrap_or_else(|| compensated_checked(b, t))
+}
+
+/// [`compensated_de_casteljau`] by the node-by-node triangle that checks each value's range.
+fn compensated_checked(b: &[f64], t: f64) -> (f64, f64) {
     let n = b.len() - 1;
     // low degrees on arrays of constant length: unrolled, in registers (the same steps)
     let (hi, lo, abs_triangle) = match b.len() {

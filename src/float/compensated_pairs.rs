@@ -4,8 +4,9 @@
 //! x86-64 target. Nodes `i` and `i + 1` of a level read the values `[x_i, x_{i+1}]` and
 //! `[x_{i+1}, x_{i+2}]`: the pair loaded for the next step, shifted by one. A level of `len`
 //! nodes takes `⌈len/2⌉` steps; an odd level's last step computes one value too many, in
-//! the buffers' padding. Where the target has FMA (and so AVX), a cubic runs on values held
-//! in registers instead, its first level's three nodes in one step of four lanes.
+//! the buffers' padding. With FMA (and so AVX), a cubic runs on values held in registers
+//! instead, its first level's three nodes in one step of four lanes. FMA is chosen at run
+//! time where the CPU has it (`multiversion`), with the same bits as without.
 //!
 //! Three things make it cheaper than the node-by-node loop, none of them changing a bit:
 //!
@@ -44,36 +45,75 @@
 //! The bound is one expression with constants per degree ([`UnitBound`]).
 
 use super::casteljau::{gamma_computed, next_up, ETA, UNIT_ROUNDOFF};
-#[cfg(not(target_feature = "fma"))]
-use super::eft::split;
-use super::eft::{fast_two_sum, MAX_SPLIT};
+use super::eft::{fast_two_sum, split, MAX_SPLIT};
+use multiversion::multiversion;
+use multiversion::target::target_cfg_f;
 use std::ops::{Add, Mul, Sub};
 
 /// Up to this degree (exclusive) the pairs run on the stack with tabulated bound constants.
 const MAX_DEGREE: usize = super::STACK_COEFFICIENTS;
 
+/// Whether `t` and the degree of `b` are in this module's domain: `t ∈ [0, 1]`, degrees 1
+/// to 63.
+#[inline(always)]
+fn in_domain(b: &[f64], t: f64) -> bool {
+    (0.0..=1.0).contains(&t) && (2..=MAX_DEGREE).contains(&b.len())
+}
+
 /// `(res, e)` of [`super::compensated_de_casteljau`] for `t ∈ [0, 1]` and degrees 1 to 63;
 /// `None` elsewhere and when a value may leave the range where the products' errors are
 /// exact without a check (the caller then runs its checked triangle: the same bits).
+/// TwoProduct by a fused multiply-add where the CPU has one, chosen at run time.
 #[inline]
 pub(super) fn compensated_in_unit_interval(b: &[f64], t: f64) -> Option<(f64, f64)> {
-    let n = b.len().checked_sub(1)?;
-    if !(0.0..=1.0).contains(&t) || n == 0 || n >= MAX_DEGREE {
+    if !in_domain(b, t) {
         return None;
     }
-    let factors = Factors::<Pair>::new(t);
+    let (res, bound) = best_triangle(b, t);
+    (!bound.is_nan()).then_some((res, bound))
+}
+
+/// [`compensated_in_unit_interval`] by the fused multiply-add's formulas (`FMA`) or by
+/// Dekker's product, whatever the CPU has (without the instruction, each `f64::mul_add` is a
+/// call to the C library's correctly rounded `fma`: slow, and the same bits).
+pub(super) fn compensated_in_unit_interval_by<const FMA: bool>(b: &[f64], t: f64) -> Option<(f64, f64)> {
+    if !in_domain(b, t) {
+        return None;
+    }
+    triangle::<FMA>(b, t)
+}
+
+/// [`triangle`] compiled twice, for the build's target and for x86-64 with AVX and FMA, the
+/// second taken where the CPU has them (the FMA formulas); where the build's target has FMA
+/// already there is one version and no choice at run time. A declined triangle comes back
+/// as a NaN bound (a bound the triangle gives is finite): two floats return in registers,
+/// an `Option` of them through memory, which the call cannot inline away.
+#[multiversion(targets("x86_64+avx+fma"))]
+fn best_triangle(b: &[f64], t: f64) -> (f64, f64) {
+    let parts = if target_cfg_f!(target_feature = "fma") {
+        triangle::<true>(b, t)
+    } else {
+        triangle::<false>(b, t)
+    };
+    parts.unwrap_or((f64::NAN, f64::NAN))
+}
+
+/// The compensated triangle of `b` at `t` (in the domain) and its bound, TwoProduct by
+/// fused multiply-adds (`FMA`) or by Dekker's product: the same bits.
+#[inline(always)]
+fn triangle<const FMA: bool>(b: &[f64], t: f64) -> Option<(f64, f64)> {
+    let n = b.len() - 1;
+    let factors = Factors::<Pair, FMA>::new(t);
     let (hi, lo, abs) = match b.len() {
-        2 => unrolled::<2, 4>(&factors, b),
-        3 => unrolled::<3, 6>(&factors, b),
-        #[cfg(target_feature = "fma")]
-        4 => cubic(&factors, b),
-        #[cfg(not(target_feature = "fma"))]
-        4 => unrolled::<4, 6>(&factors, b),
-        5 => unrolled::<5, 8>(&factors, b),
-        len if len + 2 <= 8 => looped::<8>(&factors, b),
-        len if len + 2 <= 16 => looped::<16>(&factors, b),
-        len if len + 2 <= 32 => looped::<32>(&factors, b),
-        _ => looped::<{ MAX_DEGREE + 2 }>(&factors, b),
+        2 => unrolled::<2, 4, FMA>(&factors, b),
+        3 => unrolled::<3, 6, FMA>(&factors, b),
+        4 if FMA => cubic(&factors, b),
+        4 => unrolled::<4, 6, FMA>(&factors, b),
+        5 => unrolled::<5, 8, FMA>(&factors, b),
+        len if len + 2 <= 8 => looped::<8, FMA>(&factors, b),
+        len if len + 2 <= 16 => looped::<16, FMA>(&factors, b),
+        len if len + 2 <= 32 => looped::<32, FMA>(&factors, b),
+        _ => looped::<{ MAX_DEGREE + 2 }, FMA>(&factors, b),
     }?;
     let res = hi + lo;
     Some((res, UnitBound::of(n, abs, res)))
@@ -84,15 +124,12 @@ trait Lanes: Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self>
     fn splat(x: f64) -> Self;
     fn map(self, f: impl Fn(f64) -> f64) -> Self;
     /// Lane 0 (every lane of a splat value).
-    #[cfg(target_feature = "fma")]
     fn first(self) -> f64;
     /// `k·self − p` in each lane, rounded once.
-    #[cfg(target_feature = "fma")]
     fn fused(self, k: Self, p: Self) -> Self;
 }
 
 /// `k·x − p` rounded once: the exact error of `p = fl(k·x)` when `p` is that product.
-#[cfg(target_feature = "fma")]
 #[inline(always)]
 fn fused(x: f64, k: f64, p: f64) -> f64 {
     k.mul_add(x, -p)
@@ -114,13 +151,11 @@ impl Lanes for Pair {
         Pair([f(self.0[0]), f(self.0[1])])
     }
 
-    #[cfg(target_feature = "fma")]
     #[inline(always)]
     fn first(self) -> f64 {
         self.0[0]
     }
 
-    #[cfg(target_feature = "fma")]
     #[inline(always)]
     fn fused(self, k: Self, p: Self) -> Self {
         Pair([fused(self.0[0], k.0[0], p.0[0]), fused(self.0[1], k.0[1], p.0[1])])
@@ -170,14 +205,12 @@ impl Mul for Pair {
     }
 }
 
-/// `W` floats, operated on lane by lane: the cubic's levels on FMA targets (four lanes are
-/// an AVX register). Written with `array::from_fn`, which compiled to the faster cubic
-/// there; the two-lane levels keep [`Pair`].
-#[cfg(target_feature = "fma")]
+/// `W` floats, operated on lane by lane: the cubic's levels with FMA (four lanes are an
+/// AVX register). Written with `array::from_fn`, which compiled to the faster cubic there;
+/// the two-lane levels keep [`Pair`].
 #[derive(Clone, Copy)]
 struct Wide<const W: usize>([f64; W]);
 
-#[cfg(target_feature = "fma")]
 impl<const W: usize> Lanes for Wide<W> {
     #[inline(always)]
     fn splat(x: f64) -> Self {
@@ -200,7 +233,6 @@ impl<const W: usize> Lanes for Wide<W> {
     }
 }
 
-#[cfg(target_feature = "fma")]
 impl<const W: usize> Wide<W> {
     /// The `V` lanes from lane `i` on.
     #[inline(always)]
@@ -217,7 +249,6 @@ impl<const W: usize> Wide<W> {
 }
 
 /// The three operations of [`Wide`], lane by lane.
-#[cfg(target_feature = "fma")]
 macro_rules! wide_operation {
     ($trait:ident, $method:ident, $op:tt) => {
         impl<const W: usize> $trait for Wide<W> {
@@ -230,30 +261,24 @@ macro_rules! wide_operation {
     };
 }
 
-#[cfg(target_feature = "fma")]
 wide_operation!(Add, add, +);
-#[cfg(target_feature = "fma")]
 wide_operation!(Sub, sub, -);
-#[cfg(target_feature = "fma")]
 wide_operation!(Mul, mul, *);
 
 /// A factor of every product (`s` or `t`) in every lane, split by Veltkamp for Dekker's
-/// product.
+/// product; its errors by fused multiply-adds when `FMA` (the halves then go unused).
 #[derive(Clone, Copy)]
-struct Factor<V> {
+struct Factor<V, const FMA: bool> {
     value: V,
-    #[cfg(not(target_feature = "fma"))]
     halves: (V, V),
 }
 
-impl<V: Lanes> Factor<V> {
+impl<V: Lanes, const FMA: bool> Factor<V, FMA> {
     #[inline(always)]
     fn new(k: f64) -> Self {
-        #[cfg(not(target_feature = "fma"))]
         let (h, l) = split(k);
         Factor {
             value: V::splat(k),
-            #[cfg(not(target_feature = "fma"))]
             halves: (V::splat(h), V::splat(l)),
         }
     }
@@ -263,34 +288,30 @@ impl<V: Lanes> Factor<V> {
     /// multiply-add.
     #[inline(always)]
     fn error(&self, x: V, p: V) -> V {
-        #[cfg(not(target_feature = "fma"))]
-        {
-            /// All but the last 26 bits of a float's significand.
-            const HIGH_27_BITS: u64 = !((1 << 26) - 1);
-            let (kh, kl) = self.halves;
-            let xh = x.map(|v| f64::from_bits(v.to_bits() & HIGH_27_BITS));
-            let xl = x - xh;
-            ((kh * xh - p) + kh * xl + kl * xh) + kl * xl
+        if FMA {
+            return x.fused(self.value, p);
         }
-        #[cfg(target_feature = "fma")]
-        {
-            x.fused(self.value, p)
-        }
+        /// All but the last 26 bits of a float's significand.
+        const HIGH_27_BITS: u64 = !((1 << 26) - 1);
+        let (kh, kl) = self.halves;
+        let xh = x.map(|v| f64::from_bits(v.to_bits() & HIGH_27_BITS));
+        let xl = x - xh;
+        ((kh * xh - p) + kh * xl + kl * xh) + kl * xl
     }
 }
 
 /// What every node needs: `s = fl(1 − t)` and its error `ρ`, `t`, the factor `s' ≥ 1 − t`
 /// of the `|b_i|` triangle, and the ulp exponent `L` of the granularity argument.
-struct Factors<V> {
-    s: Factor<V>,
-    t: Factor<V>,
+struct Factors<V, const FMA: bool> {
+    s: Factor<V, FMA>,
+    t: Factor<V, FMA>,
     rho: V,
     s_abs: V,
     /// `−L ≥ 52`: how much a level may refine the grid of the values (in exponent).
     refinement: i64,
 }
 
-impl<V: Lanes> Factors<V> {
+impl<V: Lanes, const FMA: bool> Factors<V, FMA> {
     #[inline(always)]
     fn new(t: f64) -> Self {
         // `|1| ≥ |t|` for `t ∈ [0, 1]`: FastTwoSum's error is exact, the one `one_minus` gives
@@ -307,11 +328,11 @@ impl<V: Lanes> Factors<V> {
     }
 
     /// The same factors in the lanes of `U`.
-    #[cfg(target_feature = "fma")]
     #[inline(always)]
-    fn widen<U: Lanes>(&self) -> Factors<U> {
-        let widen = |f: &Factor<V>| Factor {
+    fn widen<U: Lanes>(&self) -> Factors<U, FMA> {
+        let widen = |f: &Factor<V, FMA>| Factor {
             value: U::splat(f.value.first()),
+            halves: (U::splat(f.halves.0.first()), U::splat(f.halves.1.first())),
         };
         Factors {
             s: widen(&self.s),
@@ -327,7 +348,7 @@ impl<V: Lanes> Factors<V> {
     /// that much (so `⌊budget / refinement⌋` levels, without dividing).
     #[inline(always)]
     fn level_budget(&self, finest: i64) -> i64 {
-        if cfg!(target_feature = "fma") {
+        if FMA {
             // a fused multiply-add is the reference itself
             return i64::MAX / 2;
         }
@@ -408,12 +429,18 @@ fn scan(b: &[f64], hi: &mut [f64], abs: &mut [f64]) -> Option<i64> {
 /// One level in place: `len` nodes from `hi, lo, abs[0..=len]`, two per step; the buffers
 /// hold `len + 3` values at least (the last step reads one pair past the level).
 #[inline(always)]
-fn level<const FIRST: bool>(f: &Factors<Pair>, hi: &mut [f64], lo: &mut [f64], abs: &mut [f64], len: usize) {
+fn level<const FIRST: bool, const FMA: bool>(
+    f: &Factors<Pair, FMA>,
+    hi: &mut [f64],
+    lo: &mut [f64],
+    abs: &mut [f64],
+    len: usize,
+) {
     let (mut a, mut a_lo) = (Pair::load(hi, 0), Pair::load(lo, 0));
     let mut i = 0;
     while i < len {
         let (c, c_lo) = (Pair::load(hi, i + 2), Pair::load(lo, i + 2));
-        let (sum, low) = node::<FIRST, _>(f, a, a_lo, a.shifted(c), a_lo.shifted(c_lo));
+        let (sum, low) = node::<FIRST, _, FMA>(f, a, a_lo, a.shifted(c), a_lo.shifted(c_lo));
         sum.store(hi, i);
         low.store(lo, i);
         (a, a_lo) = (c, c_lo);
@@ -434,7 +461,7 @@ fn level<const FIRST: bool>(f: &Factors<Pair>, hi: &mut [f64], lo: &mut [f64], a
 /// (high parts) and `a_lo`, `b_lo` (low parts, zeros on the first level), the new high
 /// and low parts.
 #[inline(always)]
-fn node<const FIRST: bool, V: Lanes>(f: &Factors<V>, a: V, a_lo: V, b: V, b_lo: V) -> (V, V) {
+fn node<const FIRST: bool, V: Lanes, const FMA: bool>(f: &Factors<V, FMA>, a: V, a_lo: V, b: V, b_lo: V) -> (V, V) {
     let (s, t) = (f.s.value, f.t.value);
     let p1 = s * a;
     let e1 = f.s.error(a, p1);
@@ -454,7 +481,7 @@ fn node<const FIRST: bool, V: Lanes>(f: &Factors<V>, a: V, a_lo: V, b: V, b_lo: 
 
 /// Nodes of the `|b_i|` triangle, one per lane.
 #[inline(always)]
-fn abs_node<V: Lanes>(f: &Factors<V>, a: V, b: V) -> V {
+fn abs_node<V: Lanes, const FMA: bool>(f: &Factors<V, FMA>, a: V, b: V) -> V {
     f.s_abs * a + f.t.value * b
 }
 
@@ -463,11 +490,9 @@ fn abs_node<V: Lanes>(f: &Factors<V>, a: V, b: V) -> V {
 /// that [`scan`] makes: the first level's three nodes in one step of four lanes (an AVX
 /// register), the second's two in one of two, the last alone. Values are never stored and
 /// read back at another width, which stalls the read. The same nodes as [`unrolled`], so
-/// the same bits. Only where the target has FMA: on the default target four lanes are two
-/// SSE2 registers, and this form was slower there than [`unrolled`] (measured: `git log -p -- docs/performance.md`).
-#[cfg(target_feature = "fma")]
+/// the same bits. Only with FMA: without AVX four lanes are two SSE2 registers, and this form was slower there than [`unrolled`] (measured: `git log -p -- docs/performance.md`).
 #[inline(always)]
-fn cubic(f: &Factors<Pair>, b: &[f64]) -> Option<(f64, f64, f64)> {
+fn cubic<const FMA: bool>(f: &Factors<Pair, FMA>, b: &[f64]) -> Option<(f64, f64, f64)> {
     let x = Wide::<4>([b[0], b[1], b[2], b[3]]);
     let abs = x.map(f64::abs);
     let sum = (abs.0[0] + abs.0[1]) + (abs.0[2] + abs.0[3]);
@@ -477,18 +502,18 @@ fn cubic(f: &Factors<Pair>, b: &[f64]) -> Option<(f64, f64, f64)> {
     let (four, two, one) = (f.widen(), f.widen(), f.widen());
     let zero = Wide::splat(0.0);
     // lane 3 of the first level is not a node: it is never read
-    let (hi, lo) = node::<true, _>(&four, x, zero, x.rotated(), zero);
+    let (hi, lo) = node::<true, _, FMA>(&four, x, zero, x.rotated(), zero);
     let abs = abs_node(&four, abs, abs.rotated());
-    let (hi, lo) = node::<false, Wide<2>>(&two, hi.part(0), lo.part(0), hi.part(1), lo.part(1));
+    let (hi, lo) = node::<false, Wide<2>, FMA>(&two, hi.part(0), lo.part(0), hi.part(1), lo.part(1));
     let abs = abs_node(&two, abs.part(0), abs.part(1));
-    let (hi, lo) = node::<false, Wide<1>>(&one, hi.part(0), lo.part(0), hi.part(1), lo.part(1));
+    let (hi, lo) = node::<false, Wide<1>, FMA>(&one, hi.part(0), lo.part(0), hi.part(1), lo.part(1));
     let abs = abs_node(&one, abs.part(0), abs.part(1));
     Some((hi.0[0], lo.0[0], abs.0[0]))
 }
 
 /// The triangle on `b` in buffers of `N ≥ len + 2` values: `(hi, lo, the |b_i| triangle)`.
 #[inline(always)]
-fn looped<const N: usize>(f: &Factors<Pair>, b: &[f64]) -> Option<(f64, f64, f64)> {
+fn looped<const N: usize, const FMA: bool>(f: &Factors<Pair, FMA>, b: &[f64]) -> Option<(f64, f64, f64)> {
     let len = b.len();
     let (mut hi, mut lo, mut abs) = ([0.0; N], [0.0; N], [0.0; N]);
     let mut budget = f.level_budget(scan(b, &mut hi[..len], &mut abs[..len])?);
@@ -500,9 +525,9 @@ fn looped<const N: usize>(f: &Factors<Pair>, b: &[f64]) -> Option<(f64, f64, f64
             }
         }
         if level_len == len - 1 {
-            level::<true>(f, &mut hi, &mut lo, &mut abs, level_len);
+            level::<true, FMA>(f, &mut hi, &mut lo, &mut abs, level_len);
         } else {
-            level::<false>(f, &mut hi, &mut lo, &mut abs, level_len);
+            level::<false, FMA>(f, &mut hi, &mut lo, &mut abs, level_len);
         }
         budget -= f.refinement;
     }
@@ -512,14 +537,17 @@ fn looped<const N: usize>(f: &Factors<Pair>, b: &[f64]) -> Option<(f64, f64, f64
 /// [`looped`] for `LEN` coefficients known at compile time (unrolled, in registers), with
 /// one range check up front.
 #[inline(always)]
-fn unrolled<const LEN: usize, const N: usize>(f: &Factors<Pair>, b: &[f64]) -> Option<(f64, f64, f64)> {
+fn unrolled<const LEN: usize, const N: usize, const FMA: bool>(
+    f: &Factors<Pair, FMA>,
+    b: &[f64],
+) -> Option<(f64, f64, f64)> {
     let (mut hi, mut lo, mut abs) = ([0.0; N], [0.0; N], [0.0; N]);
     if f.level_budget(scan(b, &mut hi[..LEN], &mut abs[..LEN])?) < (LEN as i64 - 1) * f.refinement {
         return None;
     }
-    level::<true>(f, &mut hi, &mut lo, &mut abs, LEN - 1);
+    level::<true, FMA>(f, &mut hi, &mut lo, &mut abs, LEN - 1);
     for len in (1..LEN - 1).rev() {
-        level::<false>(f, &mut hi, &mut lo, &mut abs, len);
+        level::<false, FMA>(f, &mut hi, &mut lo, &mut abs, len);
     }
     Some((hi[0], lo[0], abs[0]))
 }

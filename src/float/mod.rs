@@ -26,7 +26,8 @@ pub use casteljau::{
 };
 pub(crate) use casteljau::{add_up, gamma_computed};
 pub use compensated::{
-    compensated_a_priori_bound, compensated_de_casteljau, compensated_derivative, compensated_surface,
+    compensated_a_priori_bound, compensated_de_casteljau, compensated_de_casteljau_by, compensated_derivative,
+    compensated_surface,
 };
 pub(crate) use dispatch::interval_eval;
 pub use dyadic::{dyadic_ratio, eval_dyadic};
