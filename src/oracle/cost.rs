@@ -76,6 +76,7 @@ impl Op {
     fn input_kinds(&self) -> u8 {
         match self {
             Op::Eval { curve, .. }
+            | Op::EvalJudged { curve, .. }
             | Op::FloatEval { curve, .. }
             | Op::Split { curve, .. }
             | Op::Elevate { curve, .. }
@@ -116,6 +117,12 @@ impl Op {
                 curve: curve.try_map(keep)?,
                 t: t.clone(),
                 approx: None,
+            },
+            Op::EvalJudged { curve, t, method, .. } => Op::EvalJudged {
+                curve: curve.try_map(keep)?,
+                t: t.clone(),
+                approx: None,
+                method: *method,
             },
             Op::FloatEval { curve, t, method } => Op::FloatEval {
                 curve: curve.try_map(keep)?,
@@ -186,7 +193,7 @@ impl Op {
             kind(&mut c.points().iter().flat_map(|p| p.coords()).chain(c.weights()))
         };
         match self {
-            Op::Eval { curve, t, .. } | Op::FloatEval { curve, t, .. } => {
+            Op::Eval { curve, t, .. } | Op::EvalJudged { curve, t, .. } | Op::FloatEval { curve, t, .. } => {
                 eval_work(curve, t) * EVAL.of(at(curve_kind(curve), &[t]))
             }
             Op::Split { curve, t } => split_work(curve, t) * SPLIT.of(at(curve_kind(curve), &[t])),
