@@ -160,6 +160,7 @@ pub(super) fn eval_judged(obj: &Map<String, Value>) -> Result<Op> {
         }
         Some(v) => Some(vec![approx_point(v, "field 'approx'")?]),
     };
+    let curve = std::sync::Arc::new(curve);
     let mut ops: Vec<Op> = ts
         .into_iter()
         .enumerate()

@@ -75,8 +75,8 @@ impl Op {
     /// The kinds of the request's input numbers (its parameters not counted).
     fn input_kinds(&self) -> u8 {
         match self {
+            Op::EvalJudged { curve, .. } => number_kinds(curve.points().iter().flat_map(|p| p.coords())),
             Op::Eval { curve, .. }
-            | Op::EvalJudged { curve, .. }
             | Op::FloatEval { curve, .. }
             | Op::Split { curve, .. }
             | Op::Elevate { curve, .. }
@@ -119,7 +119,7 @@ impl Op {
                 approx: None,
             },
             Op::EvalJudged { curve, t, method, .. } => Op::EvalJudged {
-                curve: curve.try_map(keep)?,
+                curve: std::sync::Arc::new(curve.try_map(keep)?),
                 t: t.clone(),
                 approx: None,
                 method: *method,
@@ -193,9 +193,10 @@ impl Op {
             kind(&mut c.points().iter().flat_map(|p| p.coords()).chain(c.weights()))
         };
         match self {
-            Op::Eval { curve, t, .. } | Op::EvalJudged { curve, t, .. } | Op::FloatEval { curve, t, .. } => {
+            Op::Eval { curve, t, .. } | Op::FloatEval { curve, t, .. } => {
                 eval_work(curve, t) * EVAL.of(at(curve_kind(curve), &[t]))
             }
+            Op::EvalJudged { curve, t, .. } => eval_work(curve, t) * EVAL.of(at(curve_kind(curve), &[t])),
             Op::Split { curve, t } => split_work(curve, t) * SPLIT.of(at(curve_kind(curve), &[t])),
             Op::Elevate { curve, by } => elevate_work(curve, *by) * ELEVATE.of(curve_kind(curve)),
             Op::Derivative { curve, order, at: t } => {

@@ -106,8 +106,8 @@ pub enum Op {
     /// `"inf"`, `"-inf"` or `"nan"` in `approx`, or in a batch. Without `approx`, the bound
     /// and the condition alone.
     EvalJudged {
-        /// the curve
-        curve: BezierCurve<BigRational>,
+        /// the curve (shared by a batch's parameters)
+        curve: std::sync::Arc<BezierCurve<BigRational>>,
         /// the parameter
         t: BigRational,
         /// the caller's float result, one per coordinate (`±∞` and NaN allowed)
@@ -316,8 +316,8 @@ impl Op {
             Ok(())
         };
         match self {
+            Op::EvalJudged { curve, .. } => degree(curve)?,
             Op::Eval { curve, .. }
-            | Op::EvalJudged { curve, .. }
             | Op::FloatEval { curve, .. }
             | Op::Split { curve, .. }
             | Op::Derivative { curve, .. } => degree(curve)?,
