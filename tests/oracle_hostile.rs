@@ -4,7 +4,7 @@
 //! work estimates that neither fall when a cheaper kind of number joins nor run long before
 //! refusing a batch.
 
-use casteljau::oracle::handle_line;
+use casteljau::oracle::{handle_line, nearest_f64};
 use casteljau::{parse_exact, BigRational};
 use proptest::prelude::*;
 use serde_json::{json, Value};
@@ -297,5 +297,113 @@ fn interval_enclosures_are_as_narrow_as_de_casteljaus_bound() {
                 "degree {n}, t = {t}: the enclosure reaches {reach} ulps, de Casteljau's bound is {a_priori}"
             );
         }
+    }
+}
+
+/// The answer of a single request without `ok` and `id`: what a batch lists per parameter.
+fn fields_of(line: &str) -> Value {
+    let mut v = ask(line);
+    assert_eq!(v["ok"], json!(true), "{line} -> {v}");
+    let m = v.as_object_mut().unwrap();
+    m.remove("ok");
+    m.remove("id");
+    v
+}
+
+/// A batch is its single requests, one per parameter: each of its `results` is byte for
+/// byte the answer to the request at that parameter alone (with that parameter's `approx`),
+/// for every op and method that takes `"t": [..]`.
+#[test]
+fn a_batch_answers_as_its_single_requests_one_by_one() {
+    let points = json!([[0.1, -2.5], [0.7, 1e-3], [-0.3, 4.0], [1.0, 0.25]]);
+    // floats, an end point, a non-float fraction (no bound), a parameter outside [0, 1]
+    let ts = [json!(0.1), json!(0), json!(0.75), json!("1/3"), json!(1.5)];
+    let floats_only = &ts[..3];
+    let point_approx = |t: &Value| -> Value {
+        let r = ask(&json!({"op": "eval", "points": points, "t": t}).to_string());
+        let p: Vec<f64> = r["point"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|c| nearest_f64(&parse_exact(c.as_str().unwrap()).unwrap()) * (1.0 + 3e-16))
+            .collect();
+        json!(p)
+    };
+    let split_approx = |t: &Value| -> Value {
+        let r = ask(&json!({"op": "split", "points": points, "t": t}).to_string());
+        let moved = |side: &Value| -> Value {
+            side.as_array()
+                .unwrap()
+                .iter()
+                .map(|p| {
+                    p.as_array()
+                        .unwrap()
+                        .iter()
+                        .map(|c| json!(nearest_f64(&parse_exact(c.as_str().unwrap()).unwrap()) * (1.0 - 5e-16)))
+                        .collect::<Value>()
+                })
+                .collect()
+        };
+        json!({"left": moved(&r["left"]), "right": moved(&r["right"])})
+    };
+    let mut checked = 0;
+    let mut check = |base: Value, ts: &[Value], approx: Option<&dyn Fn(&Value) -> Value>| {
+        let mut batch = base.clone();
+        batch["t"] = json!(ts);
+        if let Some(a) = approx {
+            batch["approx"] = ts.iter().map(a).collect();
+        }
+        let batch = batch.to_string();
+        let r = ask(&batch);
+        assert_eq!(r["ok"], json!(true), "{batch} -> {r}");
+        let results = r["results"].as_array().unwrap();
+        assert_eq!(results.len(), ts.len(), "{batch}");
+        for (k, t) in ts.iter().enumerate() {
+            let mut single = base.clone();
+            single["t"] = t.clone();
+            if let Some(a) = approx {
+                single["approx"] = a(t);
+            }
+            let single = single.to_string();
+            assert_eq!(
+                serde_json::to_string(&results[k]).unwrap(),
+                serde_json::to_string(&fields_of(&single)).unwrap(),
+                "parameter {k} of {batch} vs {single}"
+            );
+            checked += 1;
+        }
+    };
+    for method in ["de_casteljau", "lerp", "horner", "bernstein", "compensated"] {
+        let base = json!({"op": "eval", "points": points, "method": method});
+        check(base.clone(), &ts, None);
+        check(base, &ts, Some(&point_approx));
+    }
+    // without a method: with an approximation as plain `eval` answers it
+    check(json!({"op": "eval", "points": points}), &ts, Some(&point_approx));
+    for method in ["de_casteljau", "lerp", "horner", "bernstein", "compensated", "interval"] {
+        check(
+            json!({"op": "float_eval", "points": points, "method": method}),
+            floats_only,
+            None,
+        );
+    }
+    check(json!({"op": "float_eval", "points": points}), floats_only, None);
+    check(json!({"op": "split", "points": points}), &ts, None);
+    for method in ["de_casteljau", "lerp"] {
+        let base = json!({"op": "split", "points": points, "method": method});
+        check(base.clone(), &ts, None);
+        check(base, &ts, Some(&split_approx));
+    }
+    check(json!({"op": "split", "points": points}), &ts, Some(&split_approx));
+    assert_eq!(checked, 11 * 5 + 7 * 3 + 6 * 5);
+    // an `eval` batch without approximations gives the bound and condition of plain de
+    // Casteljau: the single request naming it, without the method's name
+    let batch = ask(&json!({"op": "eval", "points": points, "t": ts}).to_string());
+    for (k, t) in ts.iter().enumerate() {
+        let mut single =
+            fields_of(&json!({"op": "eval", "points": points, "t": t, "method": "de_casteljau"}).to_string());
+        single.as_object_mut().unwrap().remove("method");
+        assert_eq!(batch["results"][k], single, "parameter {k}");
+        assert_eq!(batch["results"][k].get("bound").is_some(), k != 3, "parameter {k}");
     }
 }

@@ -2,41 +2,24 @@
 //! (`"inf"`, `"-inf"`, `"nan"` in `approx`), and batches: one curve at many parameters
 //! (`"t": [..]`) for `eval` and `float_eval`, the work limit counting the whole batch.
 //!
-//! The general path reads everything else; this one reads its requests through it too (the
-//! curve, its limits and its errors are the general path's), then adds what it knows.
+//! Each is read into typed ops ([`Op::EvalJudged`], [`Op::Batch`]) answered as single
+//! requests are ([`Op::run`]); the curve, its limits and its errors are read by the general
+//! path ([`Op::from_json`]), which calls this module for these requests.
 
-use super::judge::{
-    float_coords, float_eval, float_json, floats_from_json, judge_float, no_nan, not_a_float, rounded_inputs,
-    BoundCheck, FloatMethod,
-};
-use super::protocol::{insert_bound, insert_errors, insert_verdicts};
+use super::judge::{floats_from_json, FloatMethod};
 use super::values::too_large;
-use super::values::{describe, number_from_json, point_to_json};
-use super::{Answer, Op, MAX_REQUEST_WORK};
-use crate::curve::BezierCurve;
+use super::values::{describe, number_from_json};
+use super::{Op, MAX_REQUEST_WORK};
 use crate::error::{Error, Result};
-use crate::float::{condition_number, eval_dyadic, exact_f64, nearest_f64, scale_pow2_up, ulp_exponent};
 use crate::input::in_context;
-use crate::point::Point;
 use num_rational::BigRational;
-use serde_json::{json, Map, Value};
+use serde_json::{Map, Value};
 
 /// Most parameters in one batch.
 pub const MAX_BATCH: usize = 4096;
 
-/// The answer's fields when the request is one for this module, `None` otherwise.
-pub(super) fn respond(request: &Value) -> Option<Result<Map<String, Value>>> {
-    let obj = request.as_object()?;
-    let op = obj.get("op")?.as_str()?;
-    let batch = obj.get("t").is_some_and(Value::is_array);
-    match op {
-        "eval" if batch || obj.contains_key("method") || has_string(obj.get("approx")) => Some(judged_eval(obj, batch)),
-        "float_eval" if batch => Some(float_eval_batch(obj)),
-        _ => None,
-    }
-}
-
-fn has_string(v: Option<&Value>) -> bool {
+/// Whether `approx` holds a string (`"inf"`, `"-inf"`, `"nan"`): only [`Op::EvalJudged`] reads them.
+pub(super) fn has_string(v: Option<&Value>) -> bool {
     match v {
         Some(Value::String(_)) => true,
         Some(Value::Array(items)) => items.iter().any(|x| has_string(Some(x))),
@@ -130,7 +113,11 @@ fn approx_point(v: &Value, what: &str) -> Result<Vec<f64>> {
     floats_from_json(v, true).map_err(|e| in_context(what, e))
 }
 
-fn judged_eval(obj: &Map<String, Value>, batch: bool) -> Result<Map<String, Value>> {
+/// `eval` with `method`, with a string in `approx`, or at many parameters: one
+/// [`Op::EvalJudged`] per parameter (a batch of them for `"t": [..]`), the curve, its limits
+/// and its errors read by the general path.
+pub(super) fn eval_judged(obj: &Map<String, Value>) -> Result<Op> {
+    let batch = obj.get("t").is_some_and(Value::is_array);
     let method = match obj.get("method") {
         None => None,
         Some(Value::String(s)) => Some(FloatMethod::parse(s).map_err(|e| in_context("field 'method'", e))?),
@@ -153,7 +140,7 @@ fn judged_eval(obj: &Map<String, Value>, batch: bool) -> Result<Map<String, Valu
     let Op::Eval { curve, .. } = op else {
         unreachable!("an eval request reads as Op::Eval")
     };
-    let approx: Option<Vec<Vec<f64>>> = match obj.get("approx") {
+    let mut approx: Option<Vec<Vec<f64>>> = match obj.get("approx") {
         None => None,
         Some(v) if batch => {
             let items = v.as_array().filter(|a| a.len() == ts.len()).ok_or_else(|| {
@@ -173,112 +160,43 @@ fn judged_eval(obj: &Map<String, Value>, batch: bool) -> Result<Map<String, Valu
         }
         Some(v) => Some(vec![approx_point(v, "field 'approx'")?]),
     };
-    let mut results = Vec::with_capacity(ts.len());
-    for (k, t) in ts.iter().enumerate() {
-        let a = approx.as_ref().map(|a| a[k].as_slice());
-        results.push(judge_point(&curve, t, a, method)?);
-    }
+    let curve = std::sync::Arc::new(curve);
+    let mut ops: Vec<Op> = ts
+        .into_iter()
+        .enumerate()
+        .map(|(k, t)| Op::EvalJudged {
+            curve: curve.clone(),
+            t,
+            approx: approx.as_mut().map(|a| std::mem::take(&mut a[k])),
+            method,
+        })
+        .collect();
     if batch {
-        let mut m = Map::new();
-        m.insert("results".into(), results.into_iter().map(Value::Object).collect());
-        Ok(m)
+        Ok(Op::Batch { ops })
     } else {
-        Ok(results.pop().expect("one parameter"))
+        Ok(ops.pop().expect("one parameter"))
     }
 }
 
-/// One parameter's fields: the exact point; with `approx` the errors (and verdicts); at a
-/// float parameter the bound of `method` (convex de Casteljau by default) and the condition.
-fn judge_point(
-    curve: &BezierCurve<BigRational>,
-    t: &BigRational,
-    approx: Option<&[f64]>,
-    method: Option<FloatMethod>,
-) -> Result<Map<String, Value>> {
-    let point = eval_dyadic(curve, t).unwrap_or_else(|| curve.eval_nested(t));
-    let mut m = Map::new();
-    m.insert("point".into(), point_to_json(&point));
-    if let Some(name) = method {
-        m.insert("method".into(), json!(name.as_str()));
-    }
-    if let Some(a) = approx {
-        if a.len() != point.dim() {
-            return Err(Error::DimensionMismatch {
-                expected: point.dim(),
-                found: a.len(),
-                context: "field 'approx'".into(),
-            });
-        }
-        let (errors, verdicts): (Vec<_>, Vec<_>) = a
-            .iter()
-            .zip(point.coords())
-            .map(|(a, x)| judge_float(*a, x))
-            .collect::<Result<Vec<_>>>()?
-            .into_iter()
-            .unzip();
-        insert_errors(&mut m, &errors);
-        insert_verdicts(&mut m, &verdicts);
-    }
-    if let Some(tf) = exact_f64(t) {
-        let method_named = method.is_some();
-        let method = method.unwrap_or(FloatMethod::DeCasteljau);
-        let (coords, exact) = float_coords(curve.points());
-        let near: Vec<f64> = point.coords().iter().map(nearest_f64).collect();
-        let bounds: Vec<f64> = coords
-            .iter()
-            .zip(&near)
-            .map(|(b, p)| rounded_inputs(method.bound(b, tf, *p), b, tf, exact))
-            .collect();
-        match approx {
-            Some(a) => {
-                let checks: Vec<BoundCheck> = a
-                    .iter()
-                    .zip(point.coords())
-                    .zip(&bounds)
-                    .map(|((a, x), bound)| BoundCheck::new(*a, x, *bound))
-                    .collect();
-                insert_bound(&mut m, "bound", "within_bound", &checks);
-            }
-            None => {
-                let ulps = bounds
-                    .iter()
-                    .zip(point.coords())
-                    .map(|(b, x)| float_json(no_nan(scale_pow2_up(no_nan(*b), -ulp_exponent(x)))));
-                m.insert("bound".into(), ulps.collect());
-            }
-        }
-        // the condition comes with a method, or with the bound alone: an approximation without
-        // a method is answered as the general path answers it, whatever its numbers' encoding
-        if method_named || approx.is_none() {
-            let condition = coords
-                .iter()
-                .zip(&near)
-                .map(|(b, p)| float_json(condition_number(b, tf, *p)));
-            m.insert("condition".into(), condition.collect());
-        }
-    }
-    Ok(m)
-}
-
-fn float_eval_batch(obj: &Map<String, Value>) -> Result<Map<String, Value>> {
+/// `float_eval` at many parameters: the [`Op::Batch`] of one [`Op::FloatEval`] per
+/// parameter. The first is read by the general path; the others are checked to be floats
+/// when the batch reaches them ([`Op::run`]), as the general path checks the first.
+pub(super) fn float_eval_batch(obj: &Map<String, Value>) -> Result<Op> {
     let ts = parameters(obj)?;
     let mut op = Op::from_json(&base_request(obj, &[], &obj["t"][0]))?;
     check_batch_work(&mut op, &ts)?;
     let Op::FloatEval { curve, method, .. } = op else {
         unreachable!("a float_eval request reads as Op::FloatEval")
     };
-    let mut results = Vec::with_capacity(ts.len());
-    for (k, t) in ts.iter().enumerate() {
-        if exact_f64(t).is_none() {
-            return Err(in_context(&format!("parameter {k}"), not_a_float("t", t)));
-        }
-        let point: Point<BigRational> = eval_dyadic(&curve, t).unwrap_or_else(|| curve.eval_nested(t));
-        let answer = Answer::FloatEval(Box::new(float_eval(&curve, t, method, point)?));
-        results.push(Value::Object(answer.to_json()));
-    }
-    let mut m = Map::new();
-    m.insert("results".into(), Value::Array(results));
-    Ok(m)
+    let ops = ts
+        .into_iter()
+        .map(|t| Op::FloatEval {
+            curve: curve.clone(),
+            t,
+            method,
+        })
+        .collect();
+    Ok(Op::Batch { ops })
 }
 
 /// `split` at many parameters (`"t": [..]`, `approx` then one per parameter): the typed

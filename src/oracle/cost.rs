@@ -75,6 +75,7 @@ impl Op {
     /// The kinds of the request's input numbers (its parameters not counted).
     fn input_kinds(&self) -> u8 {
         match self {
+            Op::EvalJudged { curve, .. } => number_kinds(curve.points().iter().flat_map(|p| p.coords())),
             Op::Eval { curve, .. }
             | Op::FloatEval { curve, .. }
             | Op::Split { curve, .. }
@@ -116,6 +117,12 @@ impl Op {
                 curve: curve.try_map(keep)?,
                 t: t.clone(),
                 approx: None,
+            },
+            Op::EvalJudged { curve, t, method, .. } => Op::EvalJudged {
+                curve: std::sync::Arc::new(curve.try_map(keep)?),
+                t: t.clone(),
+                approx: None,
+                method: *method,
             },
             Op::FloatEval { curve, t, method } => Op::FloatEval {
                 curve: curve.try_map(keep)?,
@@ -189,6 +196,7 @@ impl Op {
             Op::Eval { curve, t, .. } | Op::FloatEval { curve, t, .. } => {
                 eval_work(curve, t) * EVAL.of(at(curve_kind(curve), &[t]))
             }
+            Op::EvalJudged { curve, t, .. } => eval_work(curve, t) * EVAL.of(at(curve_kind(curve), &[t])),
             Op::Split { curve, t } => split_work(curve, t) * SPLIT.of(at(curve_kind(curve), &[t])),
             Op::Elevate { curve, by } => elevate_work(curve, *by) * ELEVATE.of(curve_kind(curve)),
             Op::Derivative { curve, order, at: t } => {

@@ -32,6 +32,14 @@ impl Op {
             }
             None => return Err(Error::Parse(format!("missing field 'op' (one of {})", OPS.join(", ")))),
         };
+        let batch = obj.get("t").is_some_and(Value::is_array);
+        match op {
+            "eval" if batch || obj.contains_key("method") || super::batch::has_string(obj.get("approx")) => {
+                return super::batch::eval_judged(obj)
+            }
+            "float_eval" if batch => return super::batch::float_eval_batch(obj),
+            _ => {}
+        }
         let fields: &[&str] = match op {
             "eval" => &["points", "t", "approx"],
             "elevate" => &["points", "by", "approx", "method"],
@@ -61,7 +69,7 @@ impl Op {
                 fields.join(", ")
             )));
         }
-        if op == "split" && obj.get("t").is_some_and(Value::is_array) {
+        if op == "split" && batch {
             return super::batch::split_batch(obj);
         }
         let req = Fields { obj, op };

@@ -6,8 +6,9 @@ use crate::error::{Error, Result};
 use crate::float::{
     a_priori_bound, abs_bernstein_sum, bernstein_bound, bernstein_sum, compensated_a_priori_bound,
     compensated_de_casteljau, compensated_de_casteljau_by, condition_number, de_casteljau, de_casteljau_running,
-    error_at_most, exact_f64, horner, horner_bound, lerp_bound, lerp_de_casteljau, nearest_f64, power_coefficients,
-    rational_a_priori_bound, scale_pow2_up, surface_a_priori_bound, ulp_exponent, OpBound, UlpError, UNIT_ROUNDOFF,
+    error_at_most, eval_dyadic, exact_f64, horner, horner_bound, lerp_bound, lerp_de_casteljau, nearest_f64,
+    power_coefficients, rational_a_priori_bound, scale_pow2_up, surface_a_priori_bound, ulp_exponent, OpBound,
+    UlpError, UNIT_ROUNDOFF,
 };
 use crate::interval::{tight_interval_de_casteljau, Interval};
 use crate::point::Point;
@@ -127,6 +128,36 @@ pub fn judge_coords(approx: Option<&[f64]>, x: &Point<BigRational>, bounds: Opti
         bound,
         condition,
     })
+}
+
+/// `b(t)` and the caller's float answer (`approx`, when sent) judged by [`judge_coords`]
+/// against the a priori bound of `method` (plain de Casteljau when `None`) at a float
+/// parameter; the condition comes with a named method or with the bound alone (without a
+/// method an approximation is answered as plain `eval` answers it).
+pub(super) fn eval_judgement(
+    curve: &BezierCurve<BigRational>,
+    t: &BigRational,
+    approx: Option<&[f64]>,
+    method: Option<FloatMethod>,
+) -> Result<(Point<BigRational>, Judgement)> {
+    let point = eval_dyadic(curve, t).unwrap_or_else(|| curve.eval_nested(t));
+    let bounds: Option<Vec<OpBound>> = exact_f64(t).map(|tf| {
+        let algorithm = method.unwrap_or(FloatMethod::DeCasteljau);
+        let (coords, exact) = float_coords(curve.points());
+        coords
+            .iter()
+            .zip(point.coords())
+            .map(|(b, x)| OpBound {
+                bound: rounded_inputs(algorithm.bound(b, tf, nearest_f64(x)), b, tf, exact),
+                sum: abs_bernstein_sum(b, tf),
+            })
+            .collect()
+    });
+    let mut judgement = judge_coords(approx, &point, bounds.as_deref())?;
+    if method.is_none() && approx.is_some() {
+        judgement.condition = None;
+    }
+    Ok((point, judgement))
 }
 
 /// A float evaluation algorithm: one of casteljau's evaluators (`float_eval`), or the one

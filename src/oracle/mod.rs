@@ -175,9 +175,6 @@ fn respond_in_general(line: &str) -> String {
     if let Err(e) = json::check_unique_fields(line) {
         return answer_line(Err(e), request.get("id"), line);
     }
-    if let Some(fields) = batch::respond(&request) {
-        return finish_line(with_ok(fields), request.get("id"), line);
-    }
     let answer = Op::from_json(&request).and_then(|op| op.run_checked());
     answer_line(answer, request.get("id"), line)
 }

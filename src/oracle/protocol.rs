@@ -1,8 +1,8 @@
 //! The oracle's requests ([`Op`]) and answers ([`Answer`]): limits checked, exact work run.
 
 use super::judge::{
-    curve_bounds, float_eval, float_json, rational_bounds, surface_bounds, ulps_json, BoundCheck, FloatEvalAnswer,
-    FloatMethod,
+    curve_bounds, eval_judgement, float_eval, float_json, not_a_float, rational_bounds, surface_bounds, ulps_json,
+    BoundCheck, FloatEvalAnswer, FloatMethod, Judgement,
 };
 use super::judged::{Approx, JudgedAnswer, PointsMethod};
 use super::values::too_large;
@@ -12,7 +12,8 @@ use crate::conic::{classify_conic, implicit_conic, ConicKind};
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
 use crate::fit::{fit_cubic, CubicFit, CubicFitData};
-use crate::float::{eval_dyadic, ulp_error, UlpError};
+use crate::float::{eval_dyadic, exact_f64, ulp_error, UlpError};
+use crate::input::in_context;
 use crate::point::Point;
 use crate::rational::RationalBezierCurve;
 use crate::surface::BezierSurface;
@@ -100,6 +101,20 @@ pub enum Op {
         /// the evaluator
         method: FloatMethod,
     },
+    /// `b(t)` with the caller's float answer judged against the a priori bound of `method`,
+    /// the caller's algorithm (plain de Casteljau when `None`): `eval` with `"method"`, with
+    /// `"inf"`, `"-inf"` or `"nan"` in `approx`, or in a batch. Without `approx`, the bound
+    /// and the condition alone.
+    EvalJudged {
+        /// the curve (shared by a batch's parameters)
+        curve: std::sync::Arc<BezierCurve<BigRational>>,
+        /// the parameter
+        t: BigRational,
+        /// the caller's float result, one per coordinate (`±∞` and NaN allowed)
+        approx: Option<Vec<f64>>,
+        /// the caller's algorithm, when named
+        method: Option<FloatMethod>,
+    },
     /// An op answering control points (`split`, `elevate`, `derivative` without `t`,
     /// `to_bezier`) with the caller's float answer judged against the a priori bound of
     /// `method`, the caller's algorithm.
@@ -111,7 +126,8 @@ pub enum Op {
         /// the caller's algorithm
         method: PointsMethod,
     },
-    /// One request at many parameters (`split` with `"t": [..]`): one op per parameter,
+    /// One request at many parameters (`eval`, `float_eval` and `split` with `"t": [..]`):
+    /// one op per parameter, each answered as the single request would be,
     /// answered as `results`, the work limit counting them all.
     Batch {
         /// the requests, one per parameter
@@ -132,6 +148,15 @@ pub enum Answer {
         /// per coordinate, the caller's result judged against the a priori de Casteljau
         /// bound (when `approx` was given and the parameters are floats)
         bound: Option<Vec<BoundCheck>>,
+    },
+    /// A point of a curve with the caller's float answer judged ([`Op::EvalJudged`]).
+    JudgedPoint {
+        /// the exact point
+        point: Point<BigRational>,
+        /// the caller's algorithm, when named
+        method: Option<FloatMethod>,
+        /// per coordinate: errors, verdicts, bound and condition
+        judgement: Judgement,
     },
     /// casteljau's own float evaluation, judged exactly.
     FloatEval(Box<FloatEvalAnswer>),
@@ -174,6 +199,31 @@ impl Answer {
                 }
                 if let Some(b) = bound {
                     insert_bound(&mut m, "bound", "within_bound", b);
+                }
+            }
+            Answer::JudgedPoint {
+                point,
+                method,
+                judgement: j,
+            } => {
+                m.insert("point".into(), point_to_json(point));
+                if let Some(name) = method {
+                    m.insert("method".into(), json!(name.as_str()));
+                }
+                if let Some(e) = &j.errors {
+                    insert_errors(&mut m, e);
+                }
+                insert_verdicts(&mut m, &j.verdicts);
+                match &j.bound {
+                    Some(b) if j.errors.is_some() => insert_bound(&mut m, "bound", "within_bound", b),
+                    // without an approximation there is no verdict, only the bound
+                    Some(b) => {
+                        m.insert("bound".into(), b.iter().map(|c| float_json(c.bound_ulps)).collect());
+                    }
+                    None => {}
+                }
+                if let Some(c) = &j.condition {
+                    m.insert("condition".into(), c.iter().map(|c| float_json(*c)).collect());
                 }
             }
             Answer::FloatEval(f) => {
@@ -266,6 +316,7 @@ impl Op {
             Ok(())
         };
         match self {
+            Op::EvalJudged { curve, .. } => degree(curve)?,
             Op::Eval { curve, .. }
             | Op::FloatEval { curve, .. }
             | Op::Split { curve, .. }
@@ -369,6 +420,19 @@ impl Op {
                 let bound = approx.as_deref().and_then(|a| curve_bounds(curve, t, a, &point));
                 Answer::Point { point, ulps, bound }
             }
+            Op::EvalJudged {
+                curve,
+                t,
+                approx,
+                method,
+            } => {
+                let (point, judgement) = eval_judgement(curve, t, approx.as_deref(), *method)?;
+                Answer::JudgedPoint {
+                    point,
+                    method: *method,
+                    judgement,
+                }
+            }
             Op::FloatEval { curve, t, method } => {
                 let point = eval_dyadic(curve, t).unwrap_or_else(|| curve.eval_nested(t));
                 Answer::FloatEval(Box::new(float_eval(curve, t, *method, point)?))
@@ -424,7 +488,19 @@ impl Op {
             }
             Op::FitCubic { data } => Answer::Fit(Box::new(fit_cubic(data)?)),
             Op::Judged { op, approx, method } => super::judged::run(op, approx.as_ref(), *method)?,
-            Op::Batch { ops } => Answer::Results(ops.iter().map(Op::run_checked).collect::<Result<_>>()?),
+            Op::Batch { ops } => Answer::Results(
+                ops.iter()
+                    .enumerate()
+                    .map(|(k, op)| match op {
+                        // float_eval's parameters after the first are checked in turn, as
+                        // they are reached, and named by their place in the batch
+                        Op::FloatEval { t, .. } if exact_f64(t).is_none() => {
+                            Err(in_context(&format!("parameter {k}"), not_a_float("t", t)))
+                        }
+                        _ => op.run_checked(),
+                    })
+                    .collect::<Result<_>>()?,
+            ),
             Op::ToBezier { power } => {
                 let coeffs = (0..power[0].len())
                     .map(|i| Point::new(power.iter().map(|c| c[i].clone()).collect()))

@@ -10,7 +10,7 @@ impl Answer {
     /// that [`crate::parse_points`] reads them back.
     pub fn to_text(&self) -> String {
         match self {
-            Answer::Point { point, .. } => point.to_string(),
+            Answer::Point { point, .. } | Answer::JudgedPoint { point, .. } => point.to_string(),
             Answer::FloatEval(f) => {
                 let list = |items: Vec<String>| items.join(", ");
                 let mut text = format!(
