@@ -129,6 +129,9 @@ pub struct Case {
     pub(super) polygons: usize,
 }
 
+/// What sees each point where both sides agree: its grid values, basis polygon, the value.
+pub type Observe<'o, A> = dyn FnMut(&[BigRational], usize, &Value<A>) + 'o;
+
 /// The outcome of checking one equality at the proposed points.
 pub enum Pair<A> {
     /// Equal at every point of the grid on every basis polygon.
@@ -154,7 +157,7 @@ pub fn check_pair<A: Alg>(
     bounds: &Bounds<'_>,
     env: &mut dyn Points<A>,
     points: &[Vec<BigRational>],
-    observe: &mut dyn FnMut(&[BigRational], usize, &Value<A>),
+    observe: &mut Observe<'_, A>,
 ) -> Result<Pair<A>> {
     let refuse = |m: String| Err(Error::Domain(format!("the kernel refuses the evaluations: {m}")));
     if points.len() != bounds.needs.len() {
