@@ -2,10 +2,11 @@
 //! points, on a basis of control polygons; the work of a claim estimated before it runs.
 
 use super::context::Ctx;
+use super::kernel::check_sampled;
 use super::kernel::checked::{Checked, Evaluation, Method, Step};
-use super::kernel::eval::{Deg, Evaluator, Value};
+use super::kernel::eval::{Deg, Env, Value};
 use super::kernel::expr::{self, check_index, Expr};
-use super::kernel::{check_sampled, Sampled};
+use super::kernel::sample::{self, Bounds, Pair, Points};
 use super::objects::{DegEnv, Exact, NumEnv};
 use super::parse::parse;
 use crate::error::{Error, Result};
@@ -104,6 +105,8 @@ pub struct PairProof {
     pub skipped: usize,
     /// Detailed lines (for explain).
     pub lines: Vec<Step>,
+    /// The kernel's evidence that the pair was checked on its grid.
+    pub case: Option<sample::Case>,
 }
 
 /// The outcome of one equality check.
@@ -114,51 +117,42 @@ pub enum PairResult {
     Fails(String),
 }
 
-fn describe_deg(d: &Value<Deg>, v: &str) -> String {
-    let ds: Vec<(u64, u64)> = d.entries().iter().map(|x| x.get(v)).collect();
-    let n = ds.iter().map(|x| x.0).max().unwrap_or(0);
-    let m = ds.iter().map(|x| x.1).max().unwrap_or(0);
-    if m == 0 {
-        format!("{n}")
-    } else {
-        format!("{n}/{m}")
-    }
+/// The claim's objects for one case, set to one basis polygon and parameter point.
+struct Grid<T> {
+    num: NumEnv<T>,
+    basis: Vec<Basis>,
 }
 
-fn needed_degree(l: &Value<Deg>, r: &Value<Deg>, v: &str) -> Result<u64> {
-    let mut need = 0;
-    for (a, b) in l.paired_entries(r)? {
-        let (na, da) = a.get(v);
-        let (nb, db) = b.get(v);
-        let d = if da == 0 && db == 0 {
-            na.max(nb)
-        } else {
-            (na + db).max(nb + da)
-        };
-        need = need.max(d);
+impl<T: Exact> Points<T> for Grid<T> {
+    fn polygons(&self) -> usize {
+        self.basis.len()
     }
-    Ok(need)
+    fn at(&mut self, basis: usize, params: &[String], values: &[BigRational]) -> Result<&dyn Env<T>> {
+        set_basis(&mut self.num, &self.basis[basis]);
+        for (v, x) in params.iter().zip(values) {
+            self.num.vars.insert(v.clone(), Value::S(T::from_rational(x)?));
+        }
+        Ok(&self.num)
+    }
 }
 
 fn prove_prepared<T: Exact>(
     ctx: &Ctx<'_>,
-    lhs: &Expr,
-    rhs: &Expr,
     ints: &BTreeMap<String, i64>,
     detail: bool,
-    prepared: Prepared<T>,
+    prepared: Prepared<'_, T>,
 ) -> Result<PairResult> {
     let Prepared {
-        params,
-        mut num,
-        basis,
+        bounds,
+        mut grid,
         needs,
         mut proof,
         ..
     } = prepared;
+    let params = bounds.params().to_vec();
 
-    // Choose the parameter sets and check on the grid; a point where some denominator
-    // vanishes is replaced by the next candidate of its (last) parameter.
+    // Propose the parameter sets; the kernel checks both sides on the grid. A point where
+    // some denominator vanishes is replaced by the next candidate of its (last) parameter.
     let mut gens: Vec<Candidates> = needs.iter().map(|&d| Candidates::new(d)).collect();
     let mut sets: Vec<Vec<BigRational>> = gens
         .iter_mut()
@@ -166,98 +160,73 @@ fn prove_prepared<T: Exact>(
         .map(|(g, &d)| g.take(d + 1).collect())
         .collect();
     let limit_skips = 64 + needs.iter().sum::<usize>() * 4;
-    'retry: loop {
-        let mut idx = vec![0usize; params.len()];
+    let basis = grid.basis.clone();
+    loop {
         let mut lines = Vec::new();
-        let mut evaluations = 0;
-        loop {
-            let values: Vec<BigRational> = idx.iter().zip(&sets).map(|(&i, s)| s[i].clone()).collect();
-            for b in &basis {
-                set_basis(&mut num, b);
-                for (v, x) in params.iter().zip(&values) {
-                    num.vars.insert(v.clone(), Value::S(T::from_rational(x)?));
-                }
-                let l = Evaluator::new(&num, ints.clone()).eval(lhs);
-                let r = Evaluator::new(&num, ints.clone()).eval(rhs);
-                evaluations += 2;
-                let (l, r) = match (l, r) {
-                    (Ok(l), Ok(r)) => (l, r),
-                    (Err(e @ (Error::DivisionByZero(_) | Error::Singular(_))), _)
-                    | (_, Err(e @ (Error::DivisionByZero(_) | Error::Singular(_)))) => {
-                        // Replace the offending value of the last parameter and start again.
-                        proof.skipped += 1;
-                        if params.is_empty() || proof.skipped > limit_skips {
-                            return Err(Error::Domain(format!(
-                                "no parameter values found where every denominator is non-zero ({e}); \
-                                 is a denominator the zero polynomial?"
-                            )));
-                        }
-                        let k = params.len() - 1;
-                        let fresh = gens[k].next().expect("candidates are infinite");
-                        sets[k][idx[k]] = fresh;
-                        continue 'retry;
-                    }
-                    (Err(e), _) | (_, Err(e)) => return Err(e),
-                };
-                // Described only when it is printed: formatting every point costs more than
-                // evaluating a small claim.
-                let at = || describe_point(&params, &values, ints, b, ctx);
-                match l.equals(&r) {
-                    Some(true) => {
-                        if detail {
-                            lines.push(Step::evaluation(Evaluation {
-                                at: at(),
-                                values: ints
-                                    .iter()
-                                    .map(|(k, v)| (k.clone(), BigRational::from_integer((*v).into())))
-                                    .chain(params.iter().cloned().zip(values.iter().cloned()))
-                                    .collect(),
-                                unit: match b {
-                                    Basis::Unit(k) => Some(*k),
-                                    _ => None,
-                                },
-                                value: l.to_string(),
-                            }));
-                        }
-                    }
-                    Some(false) => {
-                        let at = at();
-                        return Ok(PairResult::Fails(format!("at {at}: left side = {l}, right side = {r}")));
-                    }
-                    None => {
-                        let at = at();
-                        return Err(Error::Domain(format!(
-                            "at {at} the sides are {l} and {r}: the claim mixes square roots of different fields \
-                             (exact arithmetic here is in one Q(√d) per claim), so it cannot be decided"
-                        )));
-                    }
-                }
+        // Described only when it is printed: formatting every point costs more than
+        // evaluating a small claim.
+        let mut observe = |values: &[BigRational], b: usize, l: &Value<T>| {
+            if detail {
+                lines.push(Step::evaluation(Evaluation {
+                    at: describe_point(&params, values, ints, &basis[b], ctx),
+                    values: ints
+                        .iter()
+                        .map(|(k, v)| (k.clone(), BigRational::from_integer((*v).into())))
+                        .chain(params.iter().cloned().zip(values.iter().cloned()))
+                        .collect(),
+                    unit: match basis[b] {
+                        Basis::Unit(k) => Some(k),
+                        _ => None,
+                    },
+                    value: l.to_string(),
+                }));
             }
-            // next grid point
-            let mut k = params.len();
-            loop {
-                if k == 0 {
-                    proof.points = sets;
-                    proof.evaluations = evaluations;
-                    proof.lines.extend(lines);
-                    return Ok(PairResult::Proved(proof));
+        };
+        match sample::check_pair(&bounds, &mut grid, &sets, &mut observe)? {
+            Pair::Equal(case) => {
+                proof.evaluations = 2 * basis.len() * sets.iter().map(Vec::len).product::<usize>();
+                proof.points = sets;
+                proof.lines.extend(lines);
+                proof.case = Some(case);
+                return Ok(PairResult::Proved(proof));
+            }
+            Pair::Differs {
+                at,
+                basis: b,
+                lhs: l,
+                rhs: r,
+                equal,
+            } => {
+                let at = describe_point(&params, &at, ints, &basis[b], ctx);
+                if equal == Some(false) {
+                    return Ok(PairResult::Fails(format!("at {at}: left side = {l}, right side = {r}")));
                 }
-                k -= 1;
-                idx[k] += 1;
-                if idx[k] < sets[k].len() {
-                    break;
+                return Err(Error::Domain(format!(
+                    "at {at} the sides are {l} and {r}: the claim mixes square roots of different fields \
+                     (exact arithmetic here is in one Q(√d) per claim), so it cannot be decided"
+                )));
+            }
+            Pair::Vanishes { index, error: e } => {
+                // Replace the offending value of the last parameter and start again.
+                proof.skipped += 1;
+                if params.is_empty() || proof.skipped > limit_skips {
+                    return Err(Error::Domain(format!(
+                        "no parameter values found where every denominator is non-zero ({e}); \
+                         is a denominator the zero polynomial?"
+                    )));
                 }
-                idx[k] = 0;
+                let k = params.len() - 1;
+                let fresh = gens[k].next().expect("candidates are infinite");
+                sets[k][index[k]] = fresh;
             }
         }
     }
 }
 
 /// A pair of sides ready to be checked at one integer instance.
-struct Prepared<T> {
-    params: Vec<String>,
-    num: NumEnv<T>,
-    basis: Vec<Basis>,
+struct Prepared<'a, T> {
+    bounds: Bounds<'a>,
+    grid: Grid<T>,
     needs: Vec<usize>,
     proof: PairProof,
     /// The estimated work, in units of [`MAX_WORK`].
@@ -286,13 +255,13 @@ pub fn estimate_work<T: Exact>(ctx: &Ctx<'_>, lhs: &Expr, rhs: &Expr, ints: &BTr
     Ok(prepare::<T>(ctx, lhs, rhs, ints, false)?.work)
 }
 
-fn prepare<T: Exact>(
+fn prepare<'a, T: Exact>(
     ctx: &Ctx<'_>,
-    lhs: &Expr,
-    rhs: &Expr,
+    lhs: &'a Expr,
+    rhs: &'a Expr,
     ints: &BTreeMap<String, i64>,
     detail: bool,
-) -> Result<Prepared<T>> {
+) -> Result<Prepared<'a, T>> {
     let params = ctx.params(&[lhs, rhs]);
     let mut num: NumEnv<T> = NumEnv::new(&ctx.decls)?;
     // Shape the symbolic polygon/net for this instance. Both sides are affine in all their
@@ -320,19 +289,10 @@ fn prepare<T: Exact>(
         basis.extend((0..=m as usize).flat_map(|i| (0..=n as usize).map(move |j| Basis::NetUnit(i, j))));
     }
 
-    // Degree bounds, derived by evaluating both sides in the algebra of degree bounds.
+    // Degree bounds, derived by the kernel in the algebra of degree bounds.
     let degenv = DegEnv::new(&num, &params);
-    let dl = Evaluator::new(&degenv, ints.clone()).eval(lhs)?;
-    let dr = Evaluator::new(&degenv, ints.clone()).eval(rhs)?;
-    for (side, d) in [("left", &dl), ("right", &dr)] {
-        if d.entries().iter().any(|x| x.poly > 1) {
-            return Err(Error::Domain(format!(
-                "the {side} side is not affine in the symbolic control points (it multiplies two of them)"
-            )));
-        }
-    }
-    let uses_polygon = dl.entries().iter().chain(dr.entries().iter()).any(|x| x.poly > 0);
-    if !uses_polygon {
+    let bounds = sample::bounds(lhs, rhs, ints, params, &degenv)?;
+    if !bounds.uses_polygon() {
         basis = vec![Basis::None];
     }
     let mut proof = PairProof {
@@ -340,8 +300,8 @@ fn prepare<T: Exact>(
         ..Default::default()
     };
     let mut needs = Vec::new();
-    for v in &params {
-        let need = needed_degree(&dl, &dr, v)?;
+    let (first_l, first_r) = bounds.first();
+    for (v, &need) in bounds.params().iter().zip(bounds.needs()) {
         if need > 100_000 {
             return Err(Error::TooLarge {
                 what: "degree of the identity",
@@ -350,17 +310,11 @@ fn prepare<T: Exact>(
             });
         }
         needs.push(need as usize);
-        proof.degrees.push((
-            v.clone(),
-            need,
-            dl.entries().first().map(|x| (*x).clone()).unwrap_or_default(),
-            dr.entries().first().map(|x| (*x).clone()).unwrap_or_default(),
-        ));
+        proof.degrees.push((v.clone(), need, first_l.clone(), first_r.clone()));
         if detail {
+            let (l, r) = bounds.describe(v);
             proof.lines.push(Step::text(format!(
-                "degree in {v}: left side {}, right side {} (num/den bounds from the expression) ⇒ the cleared difference has degree ≤ {need}, so {} points suffice",
-                describe_deg(&dl, v),
-                describe_deg(&dr, v),
+                "degree in {v}: left side {l}, right side {r} (num/den bounds from the expression) ⇒ the cleared difference has degree ≤ {need}, so {} points suffice",
                 need + 1
             )));
         }
@@ -398,9 +352,8 @@ fn prepare<T: Exact>(
         .saturating_mul(size * size)
         .saturating_mul(words.saturating_mul(words));
     Ok(Prepared {
-        params,
-        num,
-        basis,
+        bounds,
+        grid: Grid { num, basis },
         needs,
         proof,
         work,
@@ -548,8 +501,8 @@ pub fn check_chain<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Res
     let mut evaluations = 0;
     let mut last: Option<PairProof> = None;
     let mut first_params: Vec<BigRational> = Vec::new();
-    // What each case and pair was evaluated at, for the kernel to check.
-    let mut sampled_cases: Vec<(Vec<u64>, Vec<Vec<BigRational>>, usize)> = Vec::new();
+    // The kernel's evidence for each case and pair.
+    let mut sampled_cases: Vec<sample::Case> = Vec::new();
     let mut rational = false;
     let mut polygons = (usize::MAX, 0usize);
     // The explanation argues from the derived degrees when any pair has parameters.
@@ -564,7 +517,7 @@ pub fn check_chain<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Res
     for inst in &instances {
         for (k, pair) in sides.windows(2).enumerate() {
             let plan = plans.next().expect("one plan per case and pair");
-            match prove_prepared::<T>(ctx, &pair[0], &pair[1], inst, detail, plan)? {
+            match prove_prepared::<T>(ctx, inst, detail, plan)? {
                 PairResult::Fails(cx) => {
                     let which = if sides.len() > 2 {
                         format!("step {} ('{}' = '{}') ", k + 1, pair[0], pair[1])
@@ -597,7 +550,7 @@ pub fn check_chain<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Res
                     if first_params.is_empty() {
                         first_params = p.points.first().cloned().unwrap_or_default();
                     }
-                    sampled_cases.push((p.degrees.iter().map(|d| d.1).collect(), p.points.clone(), p.polygons));
+                    sampled_cases.extend(p.case.clone());
                     last = Some(p);
                 }
             }
@@ -643,15 +596,8 @@ pub fn check_chain<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Res
             instances.len()
         )
     };
-    let cases: Vec<Sampled<'_>> = sampled_cases
-        .iter()
-        .map(|(degrees, points, polygons)| Sampled {
-            degrees: degrees.clone(),
-            points,
-            polygons: *polygons,
-        })
-        .collect();
-    let proof = check_sampled(&cases).map_err(|e| Error::Domain(format!("the kernel refuses the evaluations: {e}")))?;
+    let proof =
+        check_sampled(&sampled_cases).map_err(|e| Error::Domain(format!("the kernel refuses the evaluations: {e}")))?;
     let mut c = Checked::proved(proof, cert);
     c.steps = steps;
     c.params = first_params;

@@ -9,8 +9,9 @@
 //! What the entries check themselves, and what they still take from their callers, is listed
 //! in `docs/trust.md`. The for-every obligations of sums (WZ, creative telescoping, stated
 //! recurrences) are built and proved here from what the searches propose (`recurrence`), on
-//! the hypergeometric terms and domain pieces of this folder; sampling, expansion and the
-//! nonnegativity on pieces still pass their outcome in.
+//! the hypergeometric terms and domain pieces of this folder; so are identities by exact
+//! evaluation at enough points (`sample`). Expansion and the nonnegativity on pieces still
+//! pass their outcome in.
 //!
 //! This module imports nothing of `verify` outside `kernel/` (checked by `tests/layers.rs`).
 
@@ -24,6 +25,7 @@ pub(crate) mod hyper;
 pub(crate) mod pieces;
 pub(crate) mod poly;
 pub(crate) mod recurrence;
+pub(crate) mod sample;
 
 use checked::{Method, Verdict};
 use num_rational::BigRational;
@@ -144,42 +146,17 @@ impl Proof {
     }
 }
 
-/// One equality at one case, checked by exact evaluation: the degree bound `d` derived for each
-/// parameter and the distinct values it was evaluated at, on `polygons` basis polygons.
-pub struct Sampled<'a> {
-    /// The degree bound of each parameter, in the order of `points`.
-    pub degrees: Vec<u64>,
-    /// The values each parameter was evaluated at (both sides found equal at every point of
-    /// their grid).
-    pub points: &'a [Vec<BigRational>],
-    /// How many basis polygons the grid was evaluated on (1: none).
-    pub polygons: usize,
-}
-
-/// A proof from exact evaluation: each parameter of each case must have been evaluated at
-/// d + 1 distinct values or more, d its degree bound (a nonzero polynomial of degree ≤ d has
-/// at most d roots). Parameter-free cases are exact evaluations of both sides.
-pub fn check_sampled(cases: &[Sampled<'_>]) -> Result<Proof, String> {
+/// A proof from exact evaluation: every equality of every case checked by
+/// [`sample::check_pair`] on its whole grid, each parameter at more distinct values than its
+/// degree bound d (a nonzero polynomial of degree ≤ d has at most d roots). Parameter-free
+/// cases are exact evaluations of both sides.
+pub fn check_sampled(cases: &[sample::Case]) -> Result<Proof, String> {
     if cases.is_empty() {
         return Err("no case was evaluated".into());
     }
     let (mut degree, mut basis, mut sampled) = (0, false, false);
     for case in cases {
-        if case.degrees.len() != case.points.len() {
-            return Err(format!(
-                "{} degree bounds for {} parameters",
-                case.degrees.len(),
-                case.points.len()
-            ));
-        }
-        for (d, values) in case.degrees.iter().zip(case.points) {
-            let distinct: BTreeSet<&BigRational> = values.iter().collect();
-            if (distinct.len() as u64) <= *d {
-                return Err(format!(
-                    "a parameter of degree ≤ {d} evaluated at only {} distinct values",
-                    distinct.len()
-                ));
-            }
+        for d in &case.degrees {
             degree = degree.max(*d);
             sampled = true;
         }
@@ -278,35 +255,6 @@ mod tests {
 
     fn q(n: i64) -> BigRational {
         BigRational::from_integer(n.into())
-    }
-
-    #[test]
-    fn sampling_needs_more_distinct_points_than_the_degree() {
-        let three = [vec![q(0), q(1), q(2)]];
-        let repeated = [vec![q(0), q(1), q(1)]];
-        let case = |points| Sampled {
-            degrees: vec![2],
-            points,
-            polygons: 1,
-        };
-        let p = check_sampled(&[case(&three)]).unwrap();
-        assert_eq!(p.verdict(), Verdict::Proved);
-        assert_eq!(
-            p.method(),
-            Method::Sampling {
-                basis: false,
-                degree: 2
-            }
-        );
-        assert!(check_sampled(&[case(&repeated)]).is_err());
-        assert!(check_sampled(&[]).is_err());
-        let none: [Vec<BigRational>; 0] = [];
-        let e = Sampled {
-            degrees: Vec::new(),
-            points: &none,
-            polygons: 1,
-        };
-        assert_eq!(check_sampled(&[e]).unwrap().method(), Method::Evaluation);
     }
 
     #[test]
