@@ -157,27 +157,39 @@ pub fn claim_anchor(id: &str) -> String {
 /// Returns the number of pages written.
 pub fn write_report(report: &Report, files: &[ClaimFile], dir: &Path) -> Result<usize> {
     let pages = render_pages(report, files)?;
-    std::fs::create_dir_all(dir)
-        .map_err(|e| Error::Domain(format!("cannot create the report directory {}: {e}", dir.display())))?;
-    for (name, html) in &pages {
-        let path = dir.join(name);
-        std::fs::write(&path, html).map_err(|e| Error::Domain(format!("cannot write {}: {e}", path.display())))?;
-    }
+    write_pages(dir, "report", &pages)?;
     interactive::write_pages(dir)?;
     Ok(pages.len())
 }
 
-/// The pages as `(file name, HTML)`, `index.html` first.
-pub fn render_pages(report: &Report, files: &[ClaimFile]) -> Result<Vec<(String, String)>> {
-    let sums = report.summaries();
-    let titles: BTreeMap<String, String> = files
+/// Writes `pages` (`(file name, HTML)`) into `dir`, created if needed; `what` names the
+/// directory in errors.
+fn write_pages(dir: &Path, what: &str, pages: &[(String, String)]) -> Result<()> {
+    std::fs::create_dir_all(dir)
+        .map_err(|e| Error::Domain(format!("cannot create the {what} directory {}: {e}", dir.display())))?;
+    for (name, html) in pages {
+        let path = dir.join(name);
+        std::fs::write(&path, html).map_err(|e| Error::Domain(format!("cannot write {}: {e}", path.display())))?;
+    }
+    Ok(())
+}
+
+/// Each text's title by its file name (empty where the claim file gives none).
+fn text_titles(files: &[ClaimFile]) -> BTreeMap<String, String> {
+    files
         .iter()
         .filter_map(|f| {
             f.text
                 .as_ref()
                 .map(|t| (t.file.clone(), t.title.clone().unwrap_or_default()))
         })
-        .collect();
+        .collect()
+}
+
+/// The pages as `(file name, HTML)`, `index.html` first.
+pub fn render_pages(report: &Report, files: &[ClaimFile]) -> Result<Vec<(String, String)>> {
+    let sums = report.summaries();
+    let titles = text_titles(files);
     let names = page_names(sums.iter().map(|s| s.text.as_str()));
     let mut pages = vec![("index.html".to_string(), index_page(report, &sums, &titles, &names))];
     for sum in &sums {

@@ -4,10 +4,12 @@
 //! teacher hands out, not how the program checked it. Printed on A4, a statement's block may
 //! break across pages; only a figure is kept whole.
 
-use super::{claim_figure, find_claim, formula, page_names, ClaimFile, ClaimOutcome, Report, TextSummary, Verdict};
-use crate::error::{Error, Result};
+use super::{
+    claim_figure, find_claim, formula, page_names, text_titles, write_pages, ClaimFile, ClaimOutcome, Report,
+    TextSummary, Verdict,
+};
+use crate::error::Result;
 use crate::figure::svg::esc;
-use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -99,26 +101,14 @@ fn counterexample(certificate: &str) -> String {
 /// Returns the number of pages written.
 pub fn write_handout(report: &Report, files: &[ClaimFile], dir: &Path) -> Result<usize> {
     let pages = render_handout(report, files)?;
-    std::fs::create_dir_all(dir)
-        .map_err(|e| Error::Domain(format!("cannot create the handout directory {}: {e}", dir.display())))?;
-    for (name, html) in &pages {
-        let path = dir.join(name);
-        std::fs::write(&path, html).map_err(|e| Error::Domain(format!("cannot write {}: {e}", path.display())))?;
-    }
+    write_pages(dir, "handout", &pages)?;
     Ok(pages.len())
 }
 
 /// The handout's pages as `(file name, HTML)`, `index.html` first.
 pub fn render_handout(report: &Report, files: &[ClaimFile]) -> Result<Vec<(String, String)>> {
     let sums = report.summaries();
-    let titles: BTreeMap<String, String> = files
-        .iter()
-        .filter_map(|f| {
-            f.text
-                .as_ref()
-                .map(|t| (t.file.clone(), t.title.clone().unwrap_or_default()))
-        })
-        .collect();
+    let titles = text_titles(files);
     let names = page_names(sums.iter().map(|s| s.text.as_str()));
     let mut index = head("Handout: the texts' statements, checked exactly");
     index.push_str("<h1>The texts' statements, checked exactly</h1>\n<ul>\n");
