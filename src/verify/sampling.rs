@@ -134,6 +134,18 @@ impl<T: Exact> Points<T> for Grid<T> {
         }
         Ok(&self.num)
     }
+    fn control_points(&self) -> Vec<(String, Vec<i64>)> {
+        let mut out = Vec::new();
+        if let Some((name, c)) = &self.num.polygon {
+            out.extend((0..c.len() as i64).map(|j| (name.clone(), vec![j])));
+        }
+        if let Some((name, n)) = &self.num.net {
+            for (i, row) in n.iter().enumerate() {
+                out.extend((0..row.len() as i64).map(|j| (name.clone(), vec![i as i64, j])));
+            }
+        }
+        out
+    }
 }
 
 fn prove_prepared<T: Exact>(

@@ -19,6 +19,46 @@ pub trait Points<A: Alg> {
     fn polygons(&self) -> usize;
     /// The environment with basis polygon `basis` and the parameters `params` set to `values`.
     fn at(&mut self, basis: usize, params: &[String], values: &[BigRational]) -> Result<&dyn Env<A>>;
+    /// The symbolic control points, by name and index (`b[j]`, `p[i, j]`), in the order of
+    /// the unit polygons: basis polygon `k + 1` sets the `k`-th to 1.
+    fn control_points(&self) -> Vec<(String, Vec<i64>)>;
+}
+
+/// Checks that `env`'s basis is complete for sides affine in its control points: basis
+/// polygon 0 is the zero polygon and polygon `k + 1` the unit polygon of the `k`-th control
+/// point (1 there, 0 at every other), one for each control point. An affine function that
+/// vanishes on all of them is zero.
+fn check_basis<A: Alg>(
+    env: &mut dyn Points<A>,
+    params: &[String],
+    values: &[BigRational],
+) -> std::result::Result<(), String> {
+    let points = env.control_points();
+    let polygons = env.polygons();
+    if points.is_empty() || polygons != points.len() + 1 {
+        return Err(format!(
+            "{polygons} basis polygons for {} control points (the zero polygon and one unit polygon each)",
+            points.len()
+        ));
+    }
+    let (zero, one) = (A::from_int(0), A::from_int(1));
+    for b in 0..polygons {
+        let e = env.at(b, params, values).map_err(|e| e.to_string())?;
+        for (k, (name, idx)) in points.iter().enumerate() {
+            let want = if b == k + 1 { &one } else { &zero };
+            let holds = match e.index(name, idx) {
+                Ok(Some(Value::S(x))) => x.equals(want) == Some(true),
+                _ => false,
+            };
+            if !holds {
+                return Err(format!(
+                    "basis polygon {b} is not the {} polygon at {name}{idx:?}",
+                    if b == 0 { "zero" } else { "unit" }
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// The degree bounds of an equality `lhs = rhs` at one integer case, derived by the kernel.
@@ -178,8 +218,17 @@ pub fn check_pair<A: Alg>(
         }
     }
     let polygons = env.polygons();
-    if polygons == 0 || (bounds.uses_polygon() && polygons < 2) {
-        return refuse(format!("{polygons} basis polygons for sides using control points"));
+    if polygons == 0 {
+        return refuse("no basis polygon".into());
+    }
+    if bounds.uses_polygon() {
+        let first: Vec<BigRational> = points.iter().filter_map(|s| s.first().cloned()).collect();
+        if first.len() != points.len() {
+            return refuse("a parameter without values".into());
+        }
+        if let Err(m) = check_basis(env, &bounds.params, &first) {
+            return refuse(m);
+        }
     }
     let mut idx = vec![0usize; points.len()];
     loop {
@@ -260,6 +309,86 @@ mod tests {
             }
             Ok(&self.0)
         }
+        fn control_points(&self) -> Vec<(String, Vec<i64>)> {
+            Vec::new()
+        }
+    }
+
+    /// A control polygon `b[0], b[1]` whose basis polygons are `basis` (their values).
+    struct Polygon {
+        basis: Vec<[i64; 2]>,
+        at: usize,
+    }
+    impl Env<BigRational> for Polygon {
+        fn var(&self, _: &str) -> Option<Value<BigRational>> {
+            None
+        }
+        fn call(&self, _: &str, _: &[Expr], _: &mut Evaluator<'_, BigRational>) -> Result<Option<Value<BigRational>>> {
+            Ok(None)
+        }
+        fn index(&self, name: &str, idx: &[i64]) -> Result<Option<Value<BigRational>>> {
+            let j = usize::try_from(idx[0]).ok().filter(|&j| name == "b" && j < 2);
+            Ok(j.map(|j| Value::S(q(self.basis[self.at][j]))))
+        }
+    }
+    impl Points<BigRational> for Polygon {
+        fn polygons(&self) -> usize {
+            self.basis.len()
+        }
+        fn at(&mut self, basis: usize, _: &[String], _: &[BigRational]) -> Result<&dyn Env<BigRational>> {
+            self.at = basis;
+            Ok(self)
+        }
+        fn control_points(&self) -> Vec<(String, Vec<i64>)> {
+            vec![("b".into(), vec![0]), ("b".into(), vec![1])]
+        }
+    }
+    struct PolygonDegrees;
+    impl Env<Deg> for PolygonDegrees {
+        fn var(&self, _: &str) -> Option<Value<Deg>> {
+            None
+        }
+        fn call(&self, _: &str, _: &[Expr], _: &mut Evaluator<'_, Deg>) -> Result<Option<Value<Deg>>> {
+            Ok(None)
+        }
+        fn index(&self, _: &str, _: &[i64]) -> Result<Option<Value<Deg>>> {
+            Ok(Some(Value::S(Deg::control_point())))
+        }
+    }
+
+    #[test]
+    fn an_incomplete_basis_is_refused() {
+        // b[0] + b[1] = b[0] + 2·b[1] holds on the zero polygon and the unit polygon of b[0].
+        let b = |j: i64| Expr::Index("b".into(), vec![num(j)]);
+        let lhs = bin(Op::Add, b(0), b(1));
+        let rhs = bin(Op::Add, b(0), bin(Op::Mul, num(2), b(1)));
+        let ints = BTreeMap::new();
+        let bd = bounds(&lhs, &rhs, &ints, Vec::new(), &PolygonDegrees).unwrap();
+        assert!(bd.uses_polygon());
+        let check = |basis: Vec<[i64; 2]>| check_pair(&bd, &mut Polygon { basis, at: 0 }, &[], &mut |_, _, _| {});
+        for basis in [
+            vec![[0, 0], [1, 0]],
+            vec![[0, 0], [1, 0], [1, 0]],
+            vec![[0, 0], [1, 0], [0, 2]],
+            vec![[0, 1], [1, 0], [0, 1]],
+            vec![[0, 0], [1, 1], [0, 1]],
+            vec![[0, 0], [1, 0], [0, 1], [0, 0]],
+        ] {
+            assert!(check(basis.clone()).is_err(), "{basis:?}");
+        }
+        let complete = check(vec![[0, 0], [1, 0], [0, 1]]).unwrap();
+        assert!(matches!(complete, Pair::Differs { basis: 2, .. }));
+        let same = bounds(&lhs, &lhs, &ints, Vec::new(), &PolygonDegrees).unwrap();
+        let equal = check_pair(
+            &same,
+            &mut Polygon {
+                basis: vec![[0, 0], [1, 0], [0, 1]],
+                at: 0,
+            },
+            &[],
+            &mut |_, _, _| {},
+        );
+        assert!(matches!(equal.unwrap(), Pair::Equal(Case { polygons: 3, .. })));
     }
 
     #[test]
