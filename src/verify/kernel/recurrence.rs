@@ -51,6 +51,14 @@ pub fn check_zero(sym: &Symbols, lin: &[Term], d: &Domain, what: &str, log: &mut
     }
 }
 
+/// Every obligation proved by [`check_zero`], in order; the first that fails is the error.
+fn discharge(sym: &Symbols, obligations: &[Obligation], log: &mut Vec<Step>) -> Result<()> {
+    for o in obligations {
+        check_zero(sym, &o.lin, &o.domain, &o.what, log)?;
+    }
+    Ok(())
+}
+
 /// Most values of `n` checked directly before an induction (initial values, and the zeros of
 /// a leading coefficient or of a closed form's coefficient).
 pub const MAX_DIRECT_CASES: i64 = 64;
@@ -445,14 +453,6 @@ pub fn check_wz(
     wzeq.extend(lin_neg(f));
     wzeq.extend(lin_neg(&lin_subst(sym, g, k, &k1)));
     wzeq.extend(g.iter().cloned());
-    let dk = d_ind.with(Aff::var(k).minus(a)).with(b.minus(&Aff::var(k)));
-    check_zero(
-        sym,
-        &wzeq,
-        &dk,
-        &format!("{what}: F({n}+1, {k}) − F({n}, {k}) = G({n}, {k}+1) − G({n}, {k})"),
-        log,
-    )?;
     // 2. The ends.
     let mut ends = lin_subst(sym, g, k, &b.shifted(1));
     ends.extend(lin_neg(&lin_subst(sym, g, k, a)));
@@ -460,19 +460,30 @@ pub fn check_wz(
     ends.extend(lin_subst(sym, &lin_subst(sym, f, n, &n1), k, &b.shifted(1)));
     ends.extend(lin_neg(&lin_subst(sym, rhs, n, &n1)));
     ends.extend(rhs.iter().cloned());
-    check_zero(
-        sym,
-        &ends,
-        d_ind,
-        &format!("{what}: G({n}, {b}+1) − G({n}, {a}) + F({n}+1, {b}+1) = rhs({n}+1) − rhs({n})"),
-        log,
-    )?;
+    let mut obligations = vec![
+        Obligation {
+            lin: wzeq,
+            domain: d_ind.with(Aff::var(k).minus(a)).with(b.minus(&Aff::var(k))),
+            what: format!("{what}: F({n}+1, {k}) − F({n}, {k}) = G({n}, {k}+1) − G({n}, {k})"),
+        },
+        Obligation {
+            lin: ends,
+            domain: d_ind.clone(),
+            what: format!("{what}: G({n}, {b}+1) − G({n}, {a}) + F({n}+1, {b}+1) = rhs({n}+1) − rhs({n})"),
+        },
+    ];
     // 3. The base case (without a closed form, rhs is the sum at n0 by construction).
     if goal.value.is_some() {
         let mut base = finite_sum(sym, f, (k, a, b), (n, n0), what)?;
         base.extend(lin_neg(&lin_subst(sym, rhs, n, n0)));
-        check_zero(sym, &base, at_n0, &format!("{what}: the base case {n} = {n0}"), log)?;
-    } else {
+        obligations.push(Obligation {
+            lin: base,
+            domain: at_n0.clone(),
+            what: format!("{what}: the base case {n} = {n0}"),
+        });
+    }
+    discharge(sym, &obligations, log)?;
+    if goal.value.is_none() {
         log.push(Step::text(format!(
             "{what}: its value is its value at {n} = {n0}: {}",
             show(rhs)
@@ -507,11 +518,9 @@ pub fn check_telescoper(
         f.show(),
         t.g.show()
     )));
-    for o in &obligations {
-        if let Err(e) = check_zero(sym, &o.lin, &o.domain, &o.what, log) {
-            log.truncate(mark);
-            return Err(e);
-        }
+    if let Err(e) = discharge(sym, &obligations, log) {
+        log.truncate(mark);
+        return Err(e);
     }
     Ok((Discharged::new(Method::Telescoping), text))
 }
@@ -610,24 +619,21 @@ pub fn check_stated_recurrence(
         f.show(),
         t.g.show()
     )));
-    let dk = d.with(Aff::var(k).minus(a)).with(b.minus(&Aff::var(k)));
-    let equation = telescoping_equation(sym, f, t, n, k)?;
-    check_zero(
-        sym,
-        &equation,
-        &dk,
-        &format!("{what}: Σ_j p_j({n}) F({n}+j, {k}) = G({n}, {k}+1) − G({n}, {k})"),
-        log,
-    )?;
     let mut ends = telescoped_sum(sym, f, t, (n, k, a, b))?;
     ends.extend(rest);
-    check_zero(
-        sym,
-        &ends,
-        d,
-        &format!("{what}: the telescoped ends and the other terms of the claim cancel"),
-        log,
-    )?;
+    let obligations = [
+        Obligation {
+            lin: telescoping_equation(sym, f, t, n, k)?,
+            domain: d.with(Aff::var(k).minus(a)).with(b.minus(&Aff::var(k))),
+            what: format!("{what}: Σ_j p_j({n}) F({n}+j, {k}) = G({n}, {k}+1) − G({n}, {k})"),
+        },
+        Obligation {
+            lin: ends,
+            domain: d.clone(),
+            what: format!("{what}: the telescoped ends and the other terms of the claim cancel"),
+        },
+    ];
+    discharge(sym, &obligations, log)?;
     Ok(Discharged::new(Method::StatedRecurrence))
 }
 
