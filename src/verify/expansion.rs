@@ -4,10 +4,11 @@ use super::claims::Implies;
 use super::context::Ctx;
 use super::kernel::check_expanded;
 use super::kernel::checked::{Checked, Step};
-use super::kernel::eval::{Deg, Env, Evaluator, Value, VarEnv};
+use super::kernel::eval::{Evaluator, Value, VarEnv};
+use super::kernel::expand::{expand, sym_env, Expanded};
 use super::kernel::expr::Expr;
 use super::kernel::poly::{Poly, RatFunc};
-use super::sampling::{list, PairProof, PairResult};
+use super::sampling::{list, PairProof};
 use crate::error::{Error, Result};
 use crate::scalar::{Ring, Scalar};
 use num_rational::BigRational;
@@ -16,23 +17,6 @@ use std::rc::Rc;
 
 // ---------------------------------------------------------------------------------------
 // Symbolic expansion
-
-/// The symbolic environment: every scalar symbol and every vector component is a variable.
-pub struct SymEnv {
-    vars: BTreeMap<String, Value<RatFunc>>,
-}
-
-impl Env<RatFunc> for SymEnv {
-    fn var(&self, name: &str) -> Option<Value<RatFunc>> {
-        self.vars.get(name).cloned()
-    }
-    fn call(&self, _: &str, _: &[Expr], _: &mut Evaluator<'_, RatFunc>) -> Result<Option<Value<RatFunc>>> {
-        Ok(None)
-    }
-    fn index(&self, _: &str, _: &[i64]) -> Result<Option<Value<RatFunc>>> {
-        Ok(None)
-    }
-}
 
 fn sym_names(ctx: &Ctx<'_>, extra: &[String]) -> (Rc<[String]>, Vec<(String, usize)>) {
     let mut names: Vec<String> = Vec::new();
@@ -50,22 +34,6 @@ fn sym_names(ctx: &Ctx<'_>, extra: &[String]) -> (Rc<[String]>, Vec<(String, usi
         }
     }
     (Rc::from(names), layout)
-}
-
-fn sym_env(names: &Rc<[String]>, layout: &[(String, usize)]) -> SymEnv {
-    let mut vars = BTreeMap::new();
-    let mut k = 0;
-    for (v, dim) in layout {
-        if *dim == 0 {
-            vars.insert(v.clone(), Value::S(RatFunc::poly(Poly::var(names, k))));
-            k += 1;
-        } else {
-            let comps = (0..*dim).map(|i| RatFunc::poly(Poly::var(names, k + i))).collect();
-            vars.insert(v.clone(), Value::V(comps));
-            k += dim;
-        }
-    }
-    SymEnv { vars }
 }
 
 /// A point where a nonzero polynomial does not vanish (small integers tried in turn).
@@ -109,18 +77,12 @@ fn sym_assignment(
     (parts.join(", "), vars)
 }
 
-fn layout_degrees(layout: &[(String, usize)]) -> BTreeMap<String, Value<Deg>> {
-    layout
-        .iter()
-        .map(|(v, dim)| {
-            let d = if *dim == 0 {
-                Value::S(Deg::var(v))
-            } else {
-                Value::V((1..=*dim).map(|k| Deg::var(&format!("{v}_{k}"))).collect())
-            };
-            (v.clone(), d)
-        })
-        .collect()
+/// What the expansion of one equality found.
+pub enum PairResult {
+    /// Equal as rational functions: the log, and the kernel's expansion.
+    Proved(PairProof, Expanded),
+    /// Not equal: a point where the sides differ.
+    Fails(String),
 }
 
 /// Proves or refutes `lhs = rhs` by exact symbolic expansion in the claim's symbols.
@@ -128,43 +90,37 @@ pub fn symbolic_equal(ctx: &Ctx<'_>, lhs: &Expr, rhs: &Expr, ints: &BTreeMap<Str
     let extra = ctx.params(&[lhs, rhs]);
     let extra: Vec<String> = extra.into_iter().filter(|v| !ctx.is_bound(v)).collect();
     let (names, layout) = sym_names(ctx, &extra);
-    super::kernel::eval::check_symbolic_degrees(layout_degrees(&layout), ints, &[lhs, rhs])?;
-    let env = sym_env(&names, &layout);
-    let l = Evaluator::new(&env, ints.clone()).eval(lhs)?;
-    let r = Evaluator::new(&env, ints.clone()).eval(rhs)?;
-    let mut terms = 0;
-    for (a, b) in l.paired_entries(&r)? {
-        let d = a.cleared_difference(b);
-        if !d.is_zero() {
-            let point = nonzero_point(&d, names.len());
-            let (at, vars) = sym_assignment(&names, &layout, &point);
-            let env = VarEnv(vars);
-            let lv = Evaluator::new(&env, ints.clone()).eval(lhs);
-            let rv = Evaluator::new(&env, ints.clone()).eval(rhs);
-            let shown = match (lv, rv) {
-                (Ok(x), Ok(y)) => format!("left side = {x}, right side = {y}"),
-                _ => "a denominator vanishes there".into(),
-            };
-            return Ok(PairResult::Fails(format!(
-                "the difference of the two sides does not expand to 0 (it has {} terms); at {at}: {shown}",
-                d.len()
-            )));
-        }
-        terms += a.num.len() + b.num.len();
+    let expanded = expand(&layout, lhs, rhs, ints)?;
+    if let Some(d) = expanded.difference() {
+        let point = nonzero_point(d, names.len());
+        let (at, vars) = sym_assignment(&names, &layout, &point);
+        let env = VarEnv(vars);
+        let lv = Evaluator::new(&env, ints.clone()).eval(lhs);
+        let rv = Evaluator::new(&env, ints.clone()).eval(rhs);
+        let shown = match (lv, rv) {
+            (Ok(x), Ok(y)) => format!("left side = {x}, right side = {y}"),
+            _ => "a denominator vanishes there".into(),
+        };
+        return Ok(PairResult::Fails(format!(
+            "the difference of the two sides does not expand to 0 (it has {} terms); at {at}: {shown}",
+            d.len()
+        )));
     }
+    let terms = expanded.terms();
     let mut proof = PairProof::default();
     proof.lines.push(Step::text(format!(
         "expanded exactly in {} variables ({}); both sides agree term by term after clearing denominators ({terms} terms)",
         names.len(),
         names.join(", ")
     )));
-    Ok(PairResult::Proved(proof))
+    Ok(PairResult::Proved(proof, expanded))
 }
 
 /// Checks a chain by symbolic expansion.
 pub fn check_chain_symbolic(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Result<Checked> {
     let instances = ctx.instances()?;
     let mut steps = Vec::new();
+    let mut expanded = Vec::new();
     let mut nvars = 0;
     for inst in &instances {
         for (k, pair) in sides.windows(2).enumerate() {
@@ -179,7 +135,8 @@ pub fn check_chain_symbolic(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Resu
                     c.steps = steps;
                     return Ok(c);
                 }
-                PairResult::Proved(p) => {
+                PairResult::Proved(p, e) => {
+                    expanded.push(e);
                     if detail {
                         steps.push(Step::text(format!("'{}' = '{}':", pair[0], pair[1])));
                         steps.extend(p.lines.iter().cloned().map(|l| l.nested(2)));
@@ -195,7 +152,7 @@ pub fn check_chain_symbolic(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Resu
         "identity".into()
     };
     // Every pair expanded to a zero difference: a `Fails` returned above otherwise.
-    let proof = check_expanded(true).expect("every pair expanded to zero");
+    let proof = check_expanded(&expanded).ok_or_else(|| Error::Domain("the kernel refuses the expansion".into()))?;
     let mut c = Checked::proved(
         proof,
         format!(
@@ -219,8 +176,8 @@ fn factor_pole(ctx: &Ctx<'_>, concl: &Expr, factor: &Expr, prem: &Expr) -> Resul
         .into_iter()
         .filter(|v| !ctx.is_bound(v))
         .collect();
-    let (names, layout) = sym_names(ctx, &extra);
-    let env = sym_env(&names, &layout);
+    let (_, layout) = sym_names(ctx, &extra);
+    let (_, env) = sym_env(&layout)?;
     let c = Evaluator::new(&env, BTreeMap::new()).eval(concl)?;
     let f = Evaluator::new(&env, BTreeMap::new()).eval(factor)?;
     let p = Evaluator::new(&env, BTreeMap::new()).eval(prem)?;
@@ -332,7 +289,7 @@ pub fn check_implies(ctx: &Ctx<'_>, imp: &Implies, detail: bool) -> Result<Check
     let rhs = Expr::mul(factor.clone(), prem.clone());
     let inst = BTreeMap::new();
     match symbolic_equal(ctx, &concl, &rhs, &inst)? {
-        PairResult::Proved(pp) => {
+        PairResult::Proved(pp, expanded) => {
             if let Some(reason) = factor_pole(ctx, &concl, &factor, &prem)? {
                 if let Some(found) = refute_at_poles(ctx, imp, &prem, (&a, &b))? {
                     return Ok(found);
@@ -344,7 +301,8 @@ pub fn check_implies(ctx: &Ctx<'_>, imp: &Implies, detail: bool) -> Result<Check
             }
             // The difference expanded to zero (`PairResult::Proved`) and the factor has no pole
             // where the premise holds.
-            let proof = check_expanded(true).expect("the difference expanded to zero");
+            let proof = check_expanded(std::slice::from_ref(&expanded))
+                .ok_or_else(|| Error::Domain("the kernel refuses the expansion".into()))?;
             let mut out = Checked::proved(
                 proof,
                 format!(

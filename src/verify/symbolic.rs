@@ -32,20 +32,21 @@
 use super::claims::{Decls, Identity, IntRange};
 use super::context::Ctx;
 use super::identity::check_identity;
+use super::kernel::bernstein::check_nonneg_pieces;
 use super::kernel::checked::Verdict;
 use super::kernel::checked::{Checked, Method, Step};
 use super::kernel::expr::Expr;
-use super::kernel::hyper::{lin_mul, lin_neg, Aff, Lin, Term};
-use super::kernel::pieces::{Domain, ZeroOutcome};
-use super::kernel::{check_discharged, check_for_every, check_induction, Discharged, Proof};
+use super::kernel::hyper::{lin_mul, lin_neg, Aff, Lin};
+use super::kernel::pieces::Domain;
+use super::kernel::{check_discharged, check_induction, Discharged, Proof};
 use super::lemma::{self, Lemma, Obligation, Rewritten};
 
 mod collapse;
 mod induction;
-use super::kernel::poly::RatFunc;
 use super::recurrence::{self, coefficient_times_sum, has_sum};
 use super::translate::{prepare, Translator, UNIT, UNIT2};
 use crate::error::{Error, Result};
+use num_rational::BigRational;
 use std::time::{Duration, Instant};
 
 /// Why a symbolic proof suffices, as `--explain` prints it.
@@ -100,13 +101,13 @@ pub const REFUTATION_TIME: Duration = Duration::from_secs(4);
 /// piece of the domain every live term is a product of nonnegative factors — a positive
 /// constant or a polynomial in `t` with nonnegative Bernstein coefficients on `[a, b]`,
 /// factorials of arguments ≥ 0, powers of positive constants, and powers with exponent ≥ 0 of
-/// polynomials ≥ 0 on `[a, b]` (or any exponent of one > 0 there). `nonneg(q, strict)` decides a
-/// polynomial in the parameter on `[a, b]`. The evaluation check is the caller's.
+/// polynomials ≥ 0 on `[a, b]` (or any exponent of one > 0 there), checked by the kernel
+/// ([`check_nonneg_pieces`]). The evaluation check is the caller's.
 pub fn nonneg_for_every(
     decls: &Decls,
     ctx: &Ctx<'_>,
     p: &Expr,
-    nonneg: &dyn Fn(&RatFunc, bool) -> Result<bool>,
+    interval: (&BigRational, &BigRational),
     detail: bool,
 ) -> Result<Checked> {
     let rs = &decls.ranges;
@@ -122,80 +123,22 @@ pub fn nonneg_for_every(
     let dom = tr.domain(decls, rs)?;
     let lin = tr.lin(p, &dom)?;
     let mut log = Vec::new();
-    let mut check = |live: &[&Term], d: &Domain, place: &str, log: &mut Vec<Step>| -> Result<Option<String>> {
-        for t in live {
-            if sym.poly_has_ints(&t.coef.num) || sym.poly_has_ints(&t.coef.den) {
-                // An affine coefficient in the integers (n, i + 1, …) shown ≥ 0 on the piece, or
-                // a polynomial with coefficients ≥ 0 in variables ≥ 0 (n t, with n ≥ 0, t ∈ [0, 1]).
-                let affine = sym.rf_to_aff(&t.coef).is_some_and(|a| d.implies_ge(&a));
-                let positive_den = t
-                    .coef
-                    .den
-                    .as_constant()
-                    .is_some_and(|c| c > num_rational::BigRational::from_integer(0.into()));
-                let mut monomials = positive_den;
-                for (e, c) in t.coef.num.terms_in(sym.names.len()) {
-                    monomials &= c > num_rational::BigRational::from_integer(0.into());
-                    for (k, &x) in e.iter().enumerate() {
-                        if x == 0 || !monomials {
-                            continue;
-                        }
-                        let name = &sym.names[k];
-                        monomials &= if k < sym.ints {
-                            d.implies_ge(&Aff::var(name))
-                        } else {
-                            nonneg(&sym.var(name), false)?
-                        };
-                    }
-                }
-                if !affine && !monomials {
-                    return Ok(Some(format!("the coefficient of {} is not shown ≥ 0", t.show())));
-                }
-            } else if t.coef.den.as_constant().is_none() || !nonneg(&t.coef, false)? {
-                return Ok(Some(format!("the coefficient of {} is not shown ≥ 0", t.show())));
-            }
-            for (b, e) in &t.pows {
-                let ok = match b {
-                    super::kernel::hyper::Base::Const(c) => c > &num_rational::BigRational::from_integer(0.into()),
-                    super::kernel::hyper::Base::Poly(q) => {
-                        let q = RatFunc::poly(q.clone());
-                        nonneg(&q, true)? || (d.implies_ge(e) && nonneg(&q, false)?)
-                    }
-                };
-                if !ok {
-                    return Ok(Some(format!("the factor {b}^({e}) of {} is not shown ≥ 0", t.show())));
-                }
-            }
-        }
-        log.push(Step::text(format!(
-            "on {place}: {} live terms, each a product of factors ≥ 0",
-            live.len()
-        )));
-        Ok(None)
-    };
-    let out = super::kernel::pieces::prove_pieces(&sym, &lin, &dom, &mut log, &mut check)?;
-    match out {
-        ZeroOutcome::Zero(pieces) => {
-            let open = scope(rs);
-            let proof = check_for_every(Method::Pieces, true).expect("pieces prove for every value");
-            let mut out = Checked::proved(
-                proof,
-                format!(
-                    "for {}: the left side minus the right is a sum of hypergeometric terms; on each piece of the domain ({pieces} in all) every live term is a product of factors ≥ 0 on the interval (positive constants and factorials, powers with exponent ≥ 0 of polynomials with Bernstein coefficients ≥ 0)",
-                    open
-                ),
-            );
-            if detail {
-                out.steps = log;
-            }
-            Ok(out)
-        }
-        ZeroOutcome::NonZero { region, residue } => Err(Error::Domain(format!(
-            "cannot show the inequality on {region}: {residue} (a product-of-nonnegative-factors argument only)"
-        ))),
+    let (discharged, pieces) = check_nonneg_pieces(&sym, &lin, &dom, interval, &mut log)?;
+    let proof = check_discharged(Method::Pieces, &[discharged])
+        .ok_or_else(|| Error::Domain("the kernel refuses a for-every proof by Pieces".into()))?;
+    let open = scope(rs);
+    let mut out = Checked::proved(
+        proof,
+        format!(
+            "for {}: the left side minus the right is a sum of hypergeometric terms; on each piece of the domain ({pieces} in all) every live term is a product of factors ≥ 0 on the interval (positive constants and factorials, powers with exponent ≥ 0 of polynomials with Bernstein coefficients ≥ 0)",
+            open
+        ),
+    );
+    if detail {
+        out.steps = log;
     }
+    Ok(out)
 }
-
 /// Checks an identity claim with open ranges for every value (see the module documentation).
 /// When no proof is found, the first values of the open ranges are searched for an exact
 /// counterexample (in widening windows, within [`REFUTATION_COMBINATIONS`] and

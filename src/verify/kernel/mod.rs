@@ -10,16 +10,19 @@
 //! in `docs/trust.md`. The for-every obligations of sums (WZ, creative telescoping, stated
 //! recurrences) are built and proved here from what the searches propose (`recurrence`), on
 //! the hypergeometric terms and domain pieces of this folder; so are identities by exact
-//! evaluation at enough points (`sample`). Expansion and the nonnegativity on pieces still
-//! pass their outcome in.
+//! evaluation at enough points (`sample`), identities by symbolic expansion (`expand`), and
+//! inequalities by Bernstein coefficients, on an interval or on the pieces of a domain
+//! (`bernstein`).
 //!
 //! This module imports nothing of `verify` outside `kernel/` (checked by `tests/layers.rs`).
 
 pub(crate) mod alg;
+pub(crate) mod bernstein;
 pub(crate) mod beta;
 pub(crate) mod budget;
 pub mod checked;
 pub(crate) mod eval;
+pub(crate) mod expand;
 pub(crate) mod expr;
 pub(crate) mod hyper;
 pub(crate) mod pieces;
@@ -170,10 +173,11 @@ pub fn check_sampled(cases: &[sample::Case]) -> Result<Proof, String> {
     Ok(Proof::new(method, &[]))
 }
 
-/// A proof by exact symbolic expansion: the cleared difference of both sides expanded to the
-/// zero rational function (`expanded_to_zero`, computed by `verify::expansion`).
-pub fn check_expanded(expanded_to_zero: bool) -> Option<Proof> {
-    expanded_to_zero.then(|| Proof::new(Method::Expansion, &[]))
+/// A proof by exact symbolic expansion from pairs of sides expanded by [`expand::expand`]:
+/// at least one, and in each the cleared difference of every pair of entries is the zero
+/// polynomial.
+pub fn check_expanded(pairs: &[expand::Expanded]) -> Option<Proof> {
+    (!pairs.is_empty() && pairs.iter().all(|p| p.difference().is_none())).then(|| Proof::new(Method::Expansion, &[]))
 }
 
 /// A proof accepting library computations by name: every fact the computation reported
@@ -185,21 +189,13 @@ pub fn check_computed(facts: &[bool], rests_on: &[Trusted]) -> Option<Proof> {
         .then(|| Proof::new(Method::Computation, rests_on))
 }
 
-/// A proof that `lhs − rhs ≥ 0` (or `> 0`) on an interval from the least Bernstein coefficient
-/// of its numerator on each subinterval: none may be negative.
-pub fn check_bernstein<'a>(least: impl IntoIterator<Item = &'a BigRational>) -> Option<Proof> {
-    let zero = BigRational::from_integer(0.into());
-    least
-        .into_iter()
-        .all(|l| *l >= zero)
+/// A proof that `lhs − rhs ≥ 0` (`> 0` when `strict`) on `[a, b]` from its values, one
+/// rational function of the parameter per case: for each, the kernel computes the Bernstein
+/// coefficients of the denominator and the numerator on the subintervals of its own halving
+/// ([`bernstein::nonnegative`]); none may be negative, and the denominator keeps one sign.
+pub fn check_bernstein(values: &[poly::RatFunc], a: &BigRational, b: &BigRational, strict: bool) -> Option<Proof> {
+    (a < b && !values.is_empty() && values.iter().all(|v| bernstein::nonnegative(v, a, b, strict)))
         .then(|| Proof::new(Method::Bernstein, &[]))
-}
-
-/// A proof for every value of the open ranges by `method` (one of the for-every arguments:
-/// pieces, WZ, telescoping, a stated recurrence, induction, Beta integrals), whose obligations
-/// `verify::symbolic` discharged (`discharged`).
-pub fn check_for_every(method: Method, discharged: bool) -> Option<Proof> {
-    (discharged && method.is_for_every()).then(|| Proof::new(method, &[]))
 }
 
 /// An obligation of a for-every proof checked by this module (made only here): the evidence
@@ -253,10 +249,6 @@ pub fn check_all(parts: Vec<Proof>) -> Option<Proof> {
 mod tests {
     use super::*;
 
-    fn q(n: i64) -> BigRational {
-        BigRational::from_integer(n.into())
-    }
-
     #[test]
     fn for_every_proofs_need_obligations_the_kernel_checked() {
         let (pieces, wz) = (Discharged::new(Method::Pieces), Discharged::new(Method::Wz));
@@ -277,11 +269,7 @@ mod tests {
 
     #[test]
     fn the_other_entries_refuse_what_does_not_hold() {
-        assert!(check_expanded(false).is_none());
         assert!(check_computed(&[true, false], &[Trusted::CubicFit]).is_none());
-        assert!(check_bernstein(&[q(1), q(-1)]).is_none());
-        assert!(check_for_every(Method::Computation, true).is_none());
-        assert!(check_for_every(Method::Wz, false).is_none());
         assert!(check_all(Vec::new()).is_none());
         let p = check_computed(&[true], &[Trusted::ClassifyConic, Trusted::ClassifyConic]).unwrap();
         assert_eq!(p.rests_on(), &[Trusted::ClassifyConic]);
