@@ -68,6 +68,30 @@ for = ["n = 2..", "k = 2..=n", "j = 0..=n-k"]
 induction = "k"
 lhs = "delta(b, k, j)"
 rhs = "sum(i, 0, k-1, (-1)^(k-1-i)*C(k-1, i)*b[j+i])"
+
+[[claim]]
+id = "delta-late-false"
+source = "s"
+statement = "s"
+kind = "identity"
+polygon = { name = "b", degree = "n" }
+vars = []
+for = ["n = 1..", "k = 1..=n", "j = 0..=n-k"]
+induction = "k"
+lhs = "delta(b, k, j)"
+rhs = "sum(i, 0, k, (-1)^(k-i)*C(k, i)*b[j+i]) + (k-1)*(k-2)*b[j]"
+
+[[claim]]
+id = "scheme-late-false"
+source = "s"
+statement = "s"
+kind = "identity"
+polygon = { name = "b", degree = "n" }
+vars = ["t"]
+for = ["n = 1..", "r = 1..=n", "i = 0..=n-r"]
+induction = "r"
+lhs = "b(i, r, t)"
+rhs = "sum(j, 0, r, b[i+j]*B(j, r, t)) + (r-1)*(r-2)*t*b[i]"
 "#;
 
 /// The symbolic proof alone (no evaluation cross-check, no counterexample search).
@@ -85,7 +109,13 @@ fn the_base_is_the_definition_at_the_first_value() {
         let cert = induction_alone(id).unwrap_or_else(|e| panic!("{id}: {e}"));
         assert!(cert.starts_with("by induction on"), "{id}: {cert}");
     }
-    for id in ["scheme-offset-false", "delta-from-2-false"] {
+    // Wrong only at the first value, and right there but wrong from r = 3 (the step fails).
+    for id in [
+        "scheme-offset-false",
+        "delta-from-2-false",
+        "delta-late-false",
+        "scheme-late-false",
+    ] {
         let err = induction_alone(id).expect_err(id);
         assert!(!err.is_empty(), "{id}");
     }
