@@ -13,49 +13,52 @@ use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
-/// Binary gcd (no division) at one width; with `narrow`, it finishes at the narrower width
-/// once both operands fit there. One algorithm, stamped out per width.
-macro_rules! binary_gcd {
-    ($(#[$doc:meta])* $name:ident: $t:ty $(, narrow $narrow:ident: $n:ty)?) => {
-        $(#[$doc])*
-        pub(crate) fn $name(mut a: $t, mut b: $t) -> $t {
-            if a == 0 {
-                return b;
-            }
-            if b == 0 {
-                return a;
-            }
-            let shift = (a | b).trailing_zeros();
-            a >>= a.trailing_zeros();
-            loop {
-                $(
-                    if a <= <$n>::MAX as $t && b <= <$n>::MAX as $t {
-                        return ($narrow(a as $n, (b >> b.trailing_zeros()) as $n) as $t) << shift;
-                    }
-                )?
-                // Both odd; min and difference without a branch on which is larger
-                // (conditional moves): that branch is a coin flip the processor
-                // mispredicts half the time.
-                b >>= b.trailing_zeros();
-                let difference = a.abs_diff(b);
-                a = a.min(b);
-                b = difference;
-                if b == 0 {
-                    return a << shift;
-                }
-            }
+/// The greatest common divisor of two unsigned words (binary gcd, no division).
+pub(crate) fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
+    if a == 0 {
+        return b;
+    }
+    if b == 0 {
+        return a;
+    }
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        // Both odd; min and difference without a branch on which is larger (conditional
+        // moves): that branch is a coin flip the processor mispredicts half the time.
+        b >>= b.trailing_zeros();
+        let difference = a.abs_diff(b);
+        a = a.min(b);
+        b = difference;
+        if b == 0 {
+            return a << shift;
         }
-    };
+    }
 }
 
-binary_gcd!(
-    /// The greatest common divisor of two unsigned words (binary gcd, no division).
-    gcd_u64: u64
-);
-binary_gcd!(
-    /// The greatest common divisor of two unsigned double words.
-    gcd_u128: u128, narrow gcd_u64: u64
-);
+/// The greatest common divisor of two unsigned double words.
+pub(crate) fn gcd_u128(mut a: u128, mut b: u128) -> u128 {
+    if a == 0 {
+        return b;
+    }
+    if b == 0 {
+        return a;
+    }
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        if a <= u64::MAX as u128 && b <= u64::MAX as u128 {
+            return (gcd_u64(a as u64, (b >> b.trailing_zeros()) as u64) as u128) << shift;
+        }
+        b >>= b.trailing_zeros();
+        let difference = a.abs_diff(b);
+        a = a.min(b);
+        b = difference;
+        if b == 0 {
+            return a << shift;
+        }
+    }
+}
 
 /// `gcd(a, b)` of natural numbers: within two words by a machine gcd, otherwise by
 /// dashu-int's (its digits are copied in and out: still faster, `benches/exact.rs`).
@@ -410,16 +413,6 @@ mod tests {
     }
 
     proptest! {
-        /// The two widths of `binary_gcd!` against num-bigint's gcd, zero included.
-        #[test]
-        fn word_gcds_are_num_bigints((a, b) in double_word_pair(), zero in 0u8..4) {
-            let (a, b) = match zero { 0 => (0, b), 1 => (a, 0), _ => (a, b) };
-            let want = |a: u128, b: u128| Integer::gcd(&BigUint::from(a), &BigUint::from(b)).to_u128().expect("fits");
-            prop_assert_eq!(gcd_u128(a, b), want(a, b));
-            let (x, y) = (a as u64, (b >> 64) as u64 | b as u64);
-            prop_assert_eq!(u128::from(gcd_u64(x, y)), want(x.into(), y.into()));
-        }
-
         /// The interleaved word gcds against num-bigint's gcd, in lanes of two and four and
         /// through `paired_gcds`.
         #[test]
