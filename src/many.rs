@@ -129,7 +129,33 @@ fn check_lengths<P>(ts: &[f64], out: &[P]) -> Result<()> {
     })
 }
 
-impl<const D: usize, const N: usize> BezierN<PointN<f64, D>, N> {
+/// `eval_many` and `sample` of one `f64` curve type: the same kernels ([`many_into`]) for
+/// the fixed-degree and the any-degree curve, each with its own documentation.
+macro_rules! many_methods {
+    ($curve:literal, impl[$($generics:tt)*] $ty:ty, $(#[$doc:meta])*) => {
+        impl<$($generics)*> $ty {
+            $(#[$doc])*
+            pub fn eval_many(&self, ts: &[f64], out: &mut [PointN<f64, D>]) -> Result<()> {
+                check_lengths(ts, out)?;
+                many_into(self.points(), ts, out, |t| self.eval(&t));
+                Ok(())
+            }
+
+            #[doc = concat!("The points `b(t)` at the parameters `ts`, as [`", $curve, "::eval_many`] computes them.")]
+            pub fn sample(&self, ts: &[f64]) -> Vec<PointN<f64, D>> {
+                let mut out = vec![PointN([0.0; D]); ts.len()];
+                let Ok(()) = self.eval_many(ts, &mut out) else {
+                    unreachable!("out has one point per parameter")
+                };
+                out
+            }
+        }
+    };
+}
+
+many_methods!(
+    "BezierN",
+    impl[const D: usize, const N: usize] BezierN<PointN<f64, D>, N>,
     /// `b(t)` at every parameter of `ts`, written to `out[i]` for `ts[i]`: the same bits as
     /// [`BezierN::eval`] at each of them, vectorised across parameters with the widest
     /// vector instructions the CPU has (chosen at run time). No allocation up to degree 23;
@@ -145,23 +171,11 @@ impl<const D: usize, const N: usize> BezierN<PointN<f64, D>, N> {
     /// assert!(ts.iter().zip(&out).all(|(t, p)| *p == c.eval(t)));
     /// assert!(c.eval_many(&ts, &mut out[1..]).is_err());
     /// ```
-    pub fn eval_many(&self, ts: &[f64], out: &mut [PointN<f64, D>]) -> Result<()> {
-        check_lengths(ts, out)?;
-        many_into(self.points(), ts, out, |t| self.eval(&t));
-        Ok(())
-    }
+);
 
-    /// The points `b(t)` at the parameters `ts`, as [`BezierN::eval_many`] computes them.
-    pub fn sample(&self, ts: &[f64]) -> Vec<PointN<f64, D>> {
-        let mut out = vec![PointN([0.0; D]); ts.len()];
-        let Ok(()) = self.eval_many(ts, &mut out) else {
-            unreachable!("out has one point per parameter")
-        };
-        out
-    }
-}
-
-impl<const D: usize> Bezier<PointN<f64, D>> {
+many_methods!(
+    "Bezier",
+    impl[const D: usize] Bezier<PointN<f64, D>>,
     /// `b(t)` at every parameter of `ts`, written to `out[i]` for `ts[i]`: the same bits as
     /// [`Bezier::eval`] at each of them, vectorised across parameters as
     /// [`BezierN::eval_many`] (the same kernels). No allocation up to degree 23; above,
@@ -175,18 +189,4 @@ impl<const D: usize> Bezier<PointN<f64, D>> {
     /// let points = c.sample(&ts);
     /// assert!(ts.iter().zip(&points).all(|(t, p)| *p == c.eval(t)));
     /// ```
-    pub fn eval_many(&self, ts: &[f64], out: &mut [PointN<f64, D>]) -> Result<()> {
-        check_lengths(ts, out)?;
-        many_into(self.points(), ts, out, |t| self.eval(&t));
-        Ok(())
-    }
-
-    /// The points `b(t)` at the parameters `ts`, as [`Bezier::eval_many`] computes them.
-    pub fn sample(&self, ts: &[f64]) -> Vec<PointN<f64, D>> {
-        let mut out = vec![PointN([0.0; D]); ts.len()];
-        let Ok(()) = self.eval_many(ts, &mut out) else {
-            unreachable!("out has one point per parameter")
-        };
-        out
-    }
-}
+);
