@@ -2,11 +2,13 @@
 //! Euler's Beta integral `∫_0^1 t^a (1−t)^b dt = a! b! / (a+b+1)!` for integers `a, b ≥ 0`.
 //!
 //! A term (see [`super::hyper::Term`]) qualifies when `t` occurs only as `t^e` and `(1−t)^e`
-//! with affine exponents and in a polynomial numerator of its coefficient (each power `t^β`
-//! of which adds β to the exponent of `t`); its other factors do not depend on `t` and come
-//! out of the integral. The exponents must be shown ≥ 0 wherever the term is nonzero (every
-//! support condition and reciprocal factorial argument ≥ 0, on the domain), so the formula is
-//! only used where the integral converges and the result's conditions say nothing new.
+//! with affine exponents, in a polynomial numerator of its coefficient (each power `t^β`
+//! of which adds β to the exponent of `t`) and as powers of `t` and `1 − t` dividing its
+//! denominator; its other factors do not depend on `t` and come out of the integral. The
+//! exponents must be shown ≥ 0 wherever the term is nonzero (every support condition and
+//! reciprocal factorial argument ≥ 0, on the domain), so the formula is only used where the
+//! integral converges and the result's conditions say nothing new; an exponent negative only
+//! where a factor of the coefficient is 0 splits the term there ([`integrate_term`]).
 //! Anything else is an error (the claim can still be checked on a finite range).
 
 use super::eval::Alg;
@@ -51,9 +53,7 @@ const MAX_SPLITS: u8 = 4;
 /// denominator is constant (so the term is 0 where `c = 0`, see [`vanishes`]), and `c = 0`
 /// somewhere on `live`.
 fn zero_of_coefficient(sym: &Symbols, term: &Term, x: &Aff, live: &Domain) -> Option<Aff> {
-    if term.coef.den.as_constant().is_none() {
-        return None;
-    }
+    term.coef.den.as_constant()?;
     (1..=3).map(|j| x.shifted(j)).find(|c| {
         let factor = c.to_rf(sym).num;
         factor.as_constant().is_none()

@@ -539,8 +539,8 @@ pub fn bernstein<A: Alg>(i: i64, n: i64, g: &A) -> Result<A> {
     g.bernstein(i, n)
 }
 
-/// `∫_a^b e dt` for an integrand that is a polynomial in `t` alone (and the integer ranges):
-/// expanded exactly, integrated term by term, its antiderivative evaluated at `b` and `a` in
+/// `∫_a^b e dt` for an integrand that is a polynomial in `t` alone (and the integer ranges),
+/// or a quotient that divides exactly to one: expanded exactly, integrated term by term, its antiderivative evaluated at `b` and `a` in
 /// the evaluator's algebra (so the bounds may be parameters, and degree bounds compose).
 fn integral<A: Alg>(ev: &mut Evaluator<'_, A>, e: &Expr, args: &[Expr]) -> Result<A> {
     use super::poly::{Poly, RatFunc};
