@@ -23,6 +23,7 @@ use num_rational::BigRational;
 use num_traits::{One, Zero};
 use std::collections::BTreeMap;
 
+mod lift;
 mod modular;
 
 /// How much cheaper a modular pass is counted than exact elimination.
@@ -385,11 +386,16 @@ pub(super) fn solve(
     let Some(basis) = modular::may_solve(&a, width, given.is_some(), first_free) else {
         return Ok(None);
     };
-    // Exact elimination on the rows that span the system modulo the prime (almost surely its
-    // rows over Q too); a solution of them is checked on every row, else all rows are used.
-    let mut sub = dense(&basis.iter().map(|&r| &a[r]).collect::<Vec<_>>(), width);
-    let sub_estimate = estimate * (sub.len() as u128 + 1) / (h as u128 + 1);
+    // The rows that span the system modulo the prime (almost surely its rows over Q too),
+    // solved modulo more primes and lifted, or else by exact elimination; a solution of them is
+    // checked on every row, else all rows are eliminated. The work is counted as exact
+    // elimination's, so the lift changes how fast a search ends, not where.
+    let sub_estimate = estimate * (basis.len() as u128 + 1) / (h as u128 + 1);
     charge(sub_estimate, &system)?;
+    if let Some(x) = lift::solve(&a, &basis, width, given.is_some(), first_free) {
+        return Ok(Some(x));
+    }
+    let mut sub = dense(&basis.iter().map(|&r| &a[r]).collect::<Vec<_>>(), width);
     if let Some(x) = exact(&mut sub, given.is_some(), first_free)? {
         if a.iter().all(|row| satisfied(row, width, &x)) {
             return Ok(Some(x));

@@ -13,7 +13,7 @@ use crate::error::{Error, Result};
 use crate::linalg::{self, dot};
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::Zero;
+use num_traits::{One, Zero};
 use std::collections::BTreeMap;
 use std::fmt;
 
@@ -539,8 +539,8 @@ pub fn bernstein<A: Alg>(i: i64, n: i64, g: &A) -> Result<A> {
     g.bernstein(i, n)
 }
 
-/// `∫_a^b e dt` for an integrand that is a polynomial in `t` alone (and the integer ranges):
-/// expanded exactly, integrated term by term, its antiderivative evaluated at `b` and `a` in
+/// `∫_a^b e dt` for an integrand that is a polynomial in `t` alone (and the integer ranges),
+/// or a quotient that divides exactly to one: expanded exactly, integrated term by term, its antiderivative evaluated at `b` and `a` in
 /// the evaluator's algebra (so the bounds may be parameters, and degree bounds compose).
 fn integral<A: Alg>(ev: &mut Evaluator<'_, A>, e: &Expr, args: &[Expr]) -> Result<A> {
     use super::poly::{Poly, RatFunc};
@@ -561,11 +561,17 @@ fn integral<A: Alg>(ev: &mut Evaluator<'_, A>, e: &Expr, args: &[Expr]) -> Resul
             "'{e}': the integrand must be a polynomial in {t} (and the integer ranges) only: {err}"
         ))
     })?;
-    let den = f
-        .den
-        .as_constant()
-        .filter(|d| !d.is_zero())
-        .ok_or_else(|| Error::Domain(format!("'{e}': the integrand must be a polynomial in {t}")))?;
+    let not_polynomial = || Error::Domain(format!("'{e}': the integrand must be a polynomial in {t}"));
+    let (f, den) = match f.den.as_constant() {
+        Some(d) if d.is_zero() => return Err(not_polynomial()),
+        Some(d) => (f, d),
+        // A quotient that is a polynomial (t^(−1)·B_i^n(t) with i ≥ 1): the exact quotient,
+        // equal to the integrand except at the finitely many zeros of the denominator.
+        None => {
+            let q = f.num.exact_div(&f.den).ok_or_else(not_polynomial)?;
+            (RatFunc::poly(q), BigRational::one())
+        }
+    };
     let (a, b) = (ev.scalar(&args[2])?, ev.scalar(&args[3])?);
     // F(x) = Σ c_k x^(k+1) / (k+1), by Horner on the coefficients of F.
     let mut coeffs: Vec<BigRational> = Vec::new();
