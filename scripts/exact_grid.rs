@@ -85,17 +85,19 @@ fn main() -> Result<()> {
         // are counted by doubling until the count has moved by a tenth of a batch or more.
         let batches = if once > 10 * BATCH_NS { 0 } else { BATCHES };
         let mut reps = 1u64;
-        while batches > 0 {
-            let start = cpu_ns();
-            for _ in 0..reps {
-                std::hint::black_box(run());
+        if batches > 0 {
+            loop {
+                let start = cpu_ns();
+                for _ in 0..reps {
+                    std::hint::black_box(run());
+                }
+                let spent = cpu_ns() - start;
+                if spent >= BATCH_NS / 10 {
+                    reps = (reps * BATCH_NS / spent).max(1);
+                    break;
+                }
+                reps *= 2;
             }
-            let spent = cpu_ns() - start;
-            if spent >= BATCH_NS / 10 {
-                reps = (reps * BATCH_NS / spent).max(1);
-                break;
-            }
-            reps *= 2;
         }
         let mut means: Vec<u64> = (0..batches)
             .map(|_| {
