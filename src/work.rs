@@ -355,32 +355,3 @@ pub(crate) fn to_bezier_work(power: &[Vec<BigRational>]) -> f64 {
     let mixed = (n + 1) as f64 * den_growth(power.iter().flatten());
     3.0 * (n + 1) as f64 * (n + 1) as f64 * power.len() as f64 * op_cost(b, 2.0 * n as f64, mixed)
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use num_bigint::BigInt;
-
-    /// Powers of five (times powers of two) are decimals; numbers that share a power of
-    /// five's low word, or its size, are not.
-    #[test]
-    fn decimal_denominators_by_their_low_word_then_whole() {
-        let five = BigInt::from(5);
-        for m in [1u32, 2, 27, 28, 60, 100, 300] {
-            let p = five.pow(m);
-            for twos in [0usize, 1, 70] {
-                assert_eq!(
-                    denominator_kind(&(p.clone() << twos)),
-                    NumberKind::Decimal,
-                    "5^{m} 2^{twos}"
-                );
-            }
-            let same_low_word = &p + (BigInt::from(1) << 64);
-            assert_eq!(denominator_kind(&same_low_word), NumberKind::General, "5^{m} + 2^64");
-            assert_eq!(denominator_kind(&(&p * 3)), NumberKind::General, "3 5^{m}");
-            assert_eq!(denominator_kind(&(&p + 2)), NumberKind::General, "5^{m} + 2");
-        }
-        assert_eq!(denominator_kind(&BigInt::from(1)), NumberKind::Integer);
-        assert_eq!(denominator_kind(&(BigInt::from(1) << 100)), NumberKind::Dyadic);
-    }
-}
