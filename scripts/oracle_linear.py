@@ -13,8 +13,12 @@ The oracle's elevate answer is checked against fractions' before a ratio is prin
 
   cargo build --release
   python3 scripts/oracle_linear.py [--digits 100] [--degrees 50,100,200,400] [--ops elevate,eval,split,derivative]
+  python3 scripts/oracle_linear.py --digits 30 --degrees 200 --ops read --repeat 200
 
-Standard library only (gmpy2 optional). One run per cell: the figures are single runs.
+Standard library only (gmpy2 optional). One run per cell: the figures are single runs. With
+--repeat N one oracle process answers the request N times (start-up subtracted, divided by N)
+and each Python peer answers it N times in a loop: per-request times that a single run's
+start-up and scheduling noise do not swamp.
 """
 
 import argparse
@@ -80,7 +84,8 @@ def oracle_cpu(binary, line):
     out = subprocess.run([binary, "oracle"], input=line, capture_output=True, text=True, check=True)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    return cpu, (json.loads(out.stdout) if out.stdout.strip() else None)
+    first = out.stdout.split("\n", 1)[0]
+    return cpu, (json.loads(first) if first.strip() else None)
 
 
 def empty_cpu(binary):
@@ -94,6 +99,14 @@ PEERS = ("elevate", "derivative", "read")
 
 def fmt(x):
     return f"{x.numerator}/{x.denominator}" if x.denominator != 1 else str(x.numerator)
+
+
+def python_op_repeated(op, line, make, repeat):
+    """python_op `repeat` times: CPU seconds per request, and the answer."""
+    start = time.process_time()
+    for _ in range(repeat):
+        text = python_op(op, line, make)[1]
+    return (time.process_time() - start) / repeat, text
 
 
 def python_op(op, line, make):
@@ -146,6 +159,7 @@ def main():
     ap.add_argument("--degrees", default="50,100,200,400")
     ap.add_argument("--ops", default="elevate,eval,split,derivative")
     ap.add_argument("--seed", type=int, default=47)
+    ap.add_argument("--repeat", type=int, default=1, help="answers per timing (one process)")
     args = ap.parse_args()
     rng = random.Random(args.seed)
     base = empty_cpu(args.binary)
@@ -155,18 +169,18 @@ def main():
         for degree in [int(d) for d in args.degrees.split(",")]:
             pts = curve(rng, degree, args.digits)
             line = json.dumps(request(op, pts, rng, args.digits)) + "\n"
-            cpu, ans = oracle_cpu(args.binary, line)
+            cpu, ans = oracle_cpu(args.binary, line * args.repeat)
             if not ans.get("ok"):
                 print(f"{op:<11}{degree:>7}  refused: {ans.get('error')}")
                 continue
-            cpu = max(cpu - base, 1e-6)
+            cpu = max(cpu - base, 1e-6) / args.repeat
             if op not in PEERS:
                 print(f"{op:<11}{degree:>7}{cpu * 1e3:>11.1f}{'':>11}{'':>9}{'':>8}{'':>8}{cpu / degree * 1e6:>12.0f}")
                 continue
-            fr, fr_text = python_op(op, line, Fraction)
+            fr, fr_text = python_op_repeated(op, line, Fraction, args.repeat)
             if op == "elevate" and json.loads(fr_text)["points"] != ans["points"]:
                 sys.exit("elevate: the oracle's points differ from fractions'")
-            gm = python_op(op, line, gmpy2.mpq)[0] if gmpy2 else float("nan")
+            gm = python_op_repeated(op, line, gmpy2.mpq, args.repeat)[0] if gmpy2 else float("nan")
             print(
                 f"{op:<11}{degree:>7}{cpu * 1e3:>11.1f}{fr * 1e3:>11.1f}{gm * 1e3:>9.1f}"
                 f"{fr / cpu:>8.2f}{gm / cpu:>8.2f}{cpu / degree * 1e6:>12.0f}"

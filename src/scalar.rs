@@ -241,6 +241,9 @@ pub fn parse_exact(text: &str) -> Result<BigRational> {
         });
     }
     if let Some((p, q)) = s.split_once('/') {
+        if let Some(r) = word_fraction(p.trim(), q.trim()) {
+            return Ok(r);
+        }
         let num = parse_decimal(p.trim(), text)?;
         let den = parse_decimal(q.trim(), text)?;
         if Zero::is_zero(&den) {
@@ -323,6 +326,38 @@ fn parse_decimal(s: &str, whole: &str) -> Result<BigRational> {
     } else {
         BigRational::new(value, power)
     })
+}
+
+/// `p/q` in lowest terms on machine words when both are integers of at most 38 digits and
+/// `q ≠ 0` (anything else takes the general path, and its errors): no big integer is built
+/// before the result, since an oracle request of 30-digit fractions is thousands of them.
+fn word_fraction(p: &str, q: &str) -> Option<BigRational> {
+    fn integer(s: &str) -> Option<(bool, u128)> {
+        let (negative, digits) = match s.as_bytes().first()? {
+            b'-' => (true, &s[1..]),
+            b'+' => (false, &s[1..]),
+            _ => (false, s),
+        };
+        // 10^38 < 2^127: 38 digits cannot overflow
+        if digits.is_empty() || digits.len() > 38 {
+            return None;
+        }
+        let mut value = 0u128;
+        for b in digits.bytes() {
+            if !b.is_ascii_digit() {
+                return None;
+            }
+            value = value * 10 + u128::from(b - b'0');
+        }
+        Some((negative, value))
+    }
+    let ((p_negative, p), (q_negative, q)) = (integer(p)?, integer(q)?);
+    if q == 0 {
+        return None;
+    }
+    let g = crate::exact::gcd::gcd_u128(p, q);
+    let (p, q) = (BigInt::from(p / g), BigInt::from(q / g));
+    Some(BigRational::new_raw(if p_negative != q_negative { -p } else { p }, q))
 }
 
 /// `value · 10^scale` in lowest terms on machine words, when `value` and `10^|scale|` fit

@@ -95,10 +95,12 @@ fn denominator_kind(d: &num_bigint::BigInt) -> NumberKind {
             NumberKind::Dyadic
         };
     }
-    // a power of five has about bits / log2(5) factors: the two exponents that fit its size
+    // a power of five has about bits / log2(5) factors: the two exponents that fit its size;
+    // their low words first, so that a general denominator costs no power
     let guess = ((odd.bits() - 1) as f64 / 5f64.log2()) as u32;
+    let low = odd.iter_u64_digits().next().unwrap_or(0);
     let five = num_bigint::BigInt::from(5);
-    if (guess..=guess + 1).any(|m| five.pow(m) == odd) {
+    if (guess..=guess + 1).any(|m| 5u64.wrapping_pow(m) == low && five.pow(m) == odd) {
         NumberKind::Decimal
     } else {
         NumberKind::General

@@ -584,6 +584,14 @@ impl BezierCurve<BigRational> {
     /// assert_eq!(c.eval_nested(&t), c.eval(&t));
     /// ```
     pub fn eval_nested(&self, t: &BigRational) -> Point<BigRational> {
+        // The curve passes through its end points, (1) at t = 0 and 1: no sum to form.
+        let points = self.points();
+        if t.is_zero() {
+            return points[0].clone();
+        }
+        if t.is_one() {
+            return points[points.len() - 1].clone();
+        }
         words_then_big(|tier| on_tier!(tier, curve_eval(self, t)))
     }
 

@@ -1,0 +1,129 @@
+//! The casteljau side of `scripts/exact_grid.py`: reads one case a line from stdin, runs the
+//! public exact operation on it and prints its CPU time per run and its result.
+//!
+//! A line is `op <TAB> t <TAB> data`: `op` one of `eval`, `split`, `elevate`, `derivative`,
+//! `to_power`, `rational_eval`, `surface_eval`; `t` an exact number (`u = v = t` for the
+//! surface; unused by `elevate`, `derivative`, `to_power`); `data` the points in
+//! [`casteljau::parse_points`]'s syntax, `points # weights` for `rational_eval`, a net in
+//! [`casteljau::parse_net`]'s for `surface_eval`. The answer line is
+//! `median_ns <TAB> min_ns <TAB> max_ns <TAB> runs <TAB> result`, the result every output
+//! coordinate in order (point by point; `split` left piece then right), separated by spaces.
+//!
+//! CPU time is the thread's (`/proc/thread-self/schedstat`, Linux; it moves at scheduler
+//! ticks): the median, min and max of five batches' means, each batch repeating the operation
+//! for about `BATCH_NS`, after one run that gives the result (the only run, timed by itself,
+//! when it took more than ten batches' time).
+//!
+//! ```sh
+//! cargo run --release --example exact_grid < cases.tsv
+//! ```
+
+use casteljau::{format_exact, parse_exact, parse_net, parse_numbers, parse_points};
+use casteljau::{BezierCurve, BezierSurface, BigRational, Point, RationalBezierCurve, Result};
+use std::io::{BufRead, Write};
+
+const BATCH_NS: u64 = 50_000_000;
+const BATCHES: usize = 5;
+
+fn cpu_ns() -> u64 {
+    let stat = std::fs::read_to_string("/proc/thread-self/schedstat").expect("a Linux thread's schedstat");
+    stat.split_whitespace()
+        .next()
+        .and_then(|f| f.parse().ok())
+        .expect("nanoseconds on the CPU")
+}
+
+fn coords(points: &[Point<BigRational>]) -> Vec<BigRational> {
+    points.iter().flat_map(|p| p.coords().iter().cloned()).collect()
+}
+
+/// The operation, ready to run: its result as the list of output coordinates.
+fn operation(op: &str, t: BigRational, data: &str) -> Result<Box<dyn Fn() -> Vec<BigRational>>> {
+    Ok(match op {
+        "rational_eval" => {
+            let (points, weights) = data.split_once('#').expect("points # weights");
+            let c = RationalBezierCurve::new(parse_points(points)?, parse_numbers(weights)?)?;
+            Box::new(move || c.eval(&t).expect("a positive weight").into_coords())
+        }
+        "surface_eval" => {
+            let s = BezierSurface::new(parse_net(data)?)?;
+            Box::new(move || s.eval(&t, &t).into_coords())
+        }
+        _ => {
+            let c = BezierCurve::new(parse_points(data)?)?;
+            match op {
+                "eval" => Box::new(move || c.eval(&t).into_coords()),
+                "split" => Box::new(move || {
+                    let (l, r) = c.split_at(&t);
+                    [coords(l.points()), coords(r.points())].concat()
+                }),
+                "elevate" => Box::new(move || coords(c.elevate().expect("below the degree limit").points())),
+                "derivative" => Box::new(move || coords(c.derivative(1).expect("degree ≥ 1").points())),
+                "to_power" => Box::new(move || coords(&c.to_power().expect("below the degree limit"))),
+                other => panic!("unknown op {other}"),
+            }
+        }
+    })
+}
+
+fn main() -> Result<()> {
+    let stdin = std::io::stdin();
+    let mut out = std::io::stdout().lock();
+    for line in stdin.lock().lines() {
+        let line = line.expect("stdin");
+        let mut fields = line.splitn(3, '\t');
+        let (op, t, data) = (
+            fields.next().unwrap_or(""),
+            fields.next().unwrap_or(""),
+            fields.next().unwrap_or(""),
+        );
+        let run = operation(op, parse_exact(t)?, data)?;
+        let start = cpu_ns();
+        let result = std::hint::black_box(run());
+        let once = cpu_ns() - start;
+        // The kernel's count moves at scheduler ticks (a few ms): the repetitions of a batch
+        // are counted by doubling until the count has moved by a tenth of a batch or more.
+        let batches = if once > 10 * BATCH_NS { 0 } else { BATCHES };
+        let mut reps = 1u64;
+        if batches > 0 {
+            loop {
+                let start = cpu_ns();
+                for _ in 0..reps {
+                    std::hint::black_box(run());
+                }
+                let spent = cpu_ns() - start;
+                if spent >= BATCH_NS / 10 {
+                    reps = (reps * BATCH_NS / spent).max(1);
+                    break;
+                }
+                reps *= 2;
+            }
+        }
+        let mut means: Vec<u64> = (0..batches)
+            .map(|_| {
+                let start = cpu_ns();
+                for _ in 0..reps {
+                    std::hint::black_box(run());
+                }
+                (cpu_ns() - start) / reps
+            })
+            .collect();
+        if means.is_empty() {
+            means.push(once);
+        }
+        means.sort_unstable();
+        let text: Vec<String> = result.iter().map(format_exact).collect();
+        writeln!(
+            out,
+            "{}\t{}\t{}\t{}\t{}",
+            means[means.len() / 2],
+            means[0],
+            means[means.len() - 1],
+            if batches == 0 { 1 } else { reps * batches as u64 },
+            text.join(" ")
+        )
+        .expect("stdout");
+        out.flush().expect("stdout");
+    }
+    Ok(())
+}
