@@ -126,12 +126,8 @@ fn elevation_notes_carry_the_exact_distances() {
     let all = notes.join(" ");
     for r in steps {
         let d = c.elevation_distance(r).unwrap();
-        let line = format!(
-            "r = {r} (degree {}): max_i |b_i^({r}) − b(i/{})|∞ = {},",
-            5 + r,
-            5 + r,
-            d.max_norm
-        );
+        let b_ir = figure::svg::indexed("b", "ᵢ", Some(&format!("({r})")));
+        let line = format!("r = {r}: maxᵢ |{b_ir} − b(i/{})|∞ = {},", 5 + r, d.max_norm);
         assert!(all.contains(&line), "missing {line} in {all}");
     }
     assert!(figure::elevation(&c, &[100_000]).is_err());
