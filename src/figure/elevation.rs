@@ -79,7 +79,7 @@ pub fn elevation<T: Scalar>(curve: &BezierCurve<T>, steps: &[usize]) -> Result<F
     fig.add_panel(panel);
     fig.note(
         Some(CURVE),
-        "the curve b(t); the elevated polygons approach it as r grows (|·|₂²: squared Euclidean distance)",
+        "the curve b(t); the polygons approach it as r grows (|·|₂²: squared Euclidean distance)",
     );
     Ok(fig)
 }
