@@ -126,12 +126,8 @@ fn elevation_notes_carry_the_exact_distances() {
     let all = notes.join(" ");
     for r in steps {
         let d = c.elevation_distance(r).unwrap();
-        let line = format!(
-            "r = {r} (degree {}): max_i |b_i^({r}) − b(i/{})|∞ = {},",
-            5 + r,
-            5 + r,
-            d.max_norm
-        );
+        let b_ir = figure::svg::indexed("b", "ᵢ", Some(&format!("({r})")));
+        let line = format!("r = {r}: maxᵢ |{b_ir} − b(i/{})|∞ = {},", 5 + r, d.max_norm);
         assert!(all.contains(&line), "missing {line} in {all}");
     }
     assert!(figure::elevation(&c, &[100_000]).is_err());
@@ -291,17 +287,15 @@ fn elevation_distances_are_the_library_s() {
     let notes = fig.notes().join("\n").replace("\n    ", " ");
     for r in [0, 1, 3, 7] {
         let d = c.elevation_distance(r).unwrap();
-        let needle = format!("max_i |b_i^({r}) − b(i/{})|∞ = {}", 4 + r, d.max_norm);
-        let needle0 = format!("max_i |b_i − b(i/4)|∞ = {}", d.max_norm);
+        let b_ir = figure::svg::indexed("b", "ᵢ", Some(&format!("({r})")));
+        let needle = format!("maxᵢ |{b_ir} − b(i/{})|∞ = {}", 4 + r, d.max_norm);
+        let needle0 = format!("maxᵢ |bᵢ − b(i/4)|∞ = {}", d.max_norm);
         assert!(
             notes.contains(&needle) || (r == 0 && notes.contains(&needle0)),
             "r = {r}: {notes}"
         );
         if r > 0 {
-            assert!(
-                notes.contains(&format!("squared Euclidean {}", d.max_squared)),
-                "{notes}"
-            );
+            assert!(notes.contains(&format!("|·|₂² = {}", d.max_squared)), "{notes}");
         }
     }
 }

@@ -263,3 +263,140 @@ fn view_size(svg: roxmltree::Node) -> (f64, f64) {
         .collect();
     (v[2], v[3])
 }
+
+/// The text of every `<title>` in an SVG.
+fn titles(svg: &str) -> Vec<String> {
+    let doc = roxmltree::Document::parse(svg).unwrap();
+    doc.descendants()
+        .filter(|n| n.has_tag_name("title"))
+        .map(|n| n.text().unwrap_or("").to_string())
+        .collect()
+}
+
+#[test]
+fn the_interactive_construction_starts_with_the_static_figure_s_labels_and_values() {
+    // the page's starting values (`bᵢʳ(t) = …`, written by the engine before any script runs)
+    // are the exact points the static figure labels `bᵢʳ(1/2) = …`, every level of the scheme
+    let page = casteljau::html::interactive::interactive_page(&FigureRequest::new(FigureKind::Construction)).unwrap();
+    let shown: Vec<String> = page
+        .split("<dd id=\"b-")
+        .skip(1)
+        .map(|p| p.split_once('>').unwrap().1.split_once("</dd>").unwrap().0.to_string())
+        .collect();
+    let svg = FigureRequest::new(FigureKind::Construction)
+        .figure()
+        .unwrap()
+        .to_svg()
+        .unwrap();
+    let drawn = titles(&svg);
+    // degree 3: 4 + 3 + 2 + 1 points of the scheme
+    assert_eq!(shown.len(), 10, "{shown:?}");
+    for s in &shown {
+        let at_half = s.replacen("(t) = ", "(1/2) = ", 1);
+        // level 0 is drawn as the control points `bᵢ = …`
+        let control = s.replacen("⁰(t) = ", " = ", 1);
+        assert!(
+            drawn.contains(&at_half) || drawn.contains(&control),
+            "the page starts with {s}; the figure's points: {drawn:?}"
+        );
+    }
+    // and a false value is not among them
+    assert!(!drawn.contains(&"b₀³(1/2) = (1, 1)".to_string()));
+}
+
+#[test]
+fn every_interactive_page_starts_with_values_equal_to_the_engine_s() {
+    use casteljau::html::interactive::{interactive_page, INTERACTIVE_KINDS};
+    use casteljau::{BezierCurve, BigRational, Scalar};
+    let half = BigRational::from_ratio(1, 2).unwrap();
+    let curve: BezierCurve<BigRational> = BezierCurve::from_ints(&[&[0, 0], &[1, 2], &[3, 2], &[4, 0]]).unwrap();
+    let list = |c: &BezierCurve<BigRational>| c.points().iter().map(|p| p.to_string()).collect::<Vec<_>>().join("; ");
+    for kind in INTERACTIVE_KINDS {
+        let input =
+            (kind != FigureKind::Bernstein && kind != FigureKind::Conics).then(|| "0,0; 1,2; 3,2; 4,0".to_string());
+        let mut req = FigureRequest::new(kind);
+        req.input = input;
+        let page = interactive_page(&req).unwrap();
+        let text = |id: &str| -> String {
+            let at = page
+                .find(&format!("<dd id=\"{id}\""))
+                .unwrap_or_else(|| panic!("{id} on {}", kind.name()));
+            page[at..]
+                .split_once('>')
+                .unwrap()
+                .1
+                .split_once("</dd>")
+                .unwrap()
+                .0
+                .to_string()
+        };
+        match kind {
+            FigureKind::Subdivision => {
+                let (l, r) = curve.split_at(&half);
+                assert_eq!(text("left"), list(&l));
+                assert_eq!(text("right"), list(&r));
+            }
+            FigureKind::Elevation => assert_eq!(text("elevated"), list(&curve.elevate_by(1).unwrap())),
+            FigureKind::Hodograph => {
+                assert_eq!(text("point"), curve.eval(&half).to_string());
+                assert_eq!(text("vector"), curve.derivative_at(1, &half).unwrap().to_string());
+            }
+            FigureKind::Construction => assert_eq!(text("b-3-0"), format!("b₀³(t) = {}", curve.eval(&half))),
+            _ => {}
+        }
+    }
+}
+
+#[test]
+fn the_projection_s_labels_are_each_nearest_their_own_point() {
+    let svg = FigureRequest::new(FigureKind::Projection)
+        .figure()
+        .unwrap()
+        .to_svg()
+        .unwrap();
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let (_, _, labels) = read_svg(doc.root_element(), None);
+    // each point's name is its tooltip up to " = "
+    let mut points: Vec<(String, [f64; 2])> = Vec::new();
+    for n in doc.descendants().filter(|n| n.has_tag_name("circle")) {
+        let f = |a: &str| n.attribute(a).unwrap().parse::<f64>().unwrap();
+        let title = n
+            .children()
+            .find(|c| c.has_tag_name("title"))
+            .and_then(|t| t.text())
+            .unwrap_or("");
+        points.push((title.split(" = ").next().unwrap().to_string(), [f("cx"), f("cy")]));
+    }
+    let distance = |c: [f64; 2], b: Box2| (c[0] - c[0].clamp(b[0], b[2])).hypot(c[1] - c[1].clamp(b[1], b[3]));
+    let mut checked = 0;
+    for l in &labels {
+        let Some((_, own)) = points.iter().find(|(name, _)| *name == l.text) else {
+            continue;
+        };
+        let own_d = distance(*own, l.bounds);
+        for (name, at) in &points {
+            if at != own {
+                assert!(
+                    // clearly nearer: half-way between two points, a label reads as either's
+                    distance(*at, l.bounds) > 1.5 * own_d,
+                    "'{}' is {own_d:.1} px from its point but {:.1} px from {name}'s",
+                    l.text,
+                    distance(*at, l.bounds)
+                );
+            }
+        }
+        checked += 1;
+    }
+    assert!(labels.iter().any(|l| l.text == "x(1/2)") && checked >= 3, "{labels:?}");
+    for (i, a) in labels.iter().enumerate() {
+        for b in &labels[i + 1..] {
+            let (p, q) = (a.bounds, b.bounds);
+            assert!(
+                !(p[0] < q[2] && q[0] < p[2] && p[1] < q[3] && q[1] < p[3]),
+                "'{}' overlaps '{}'",
+                a.text,
+                b.text
+            );
+        }
+    }
+}

@@ -1,6 +1,6 @@
 //! Degree elevation converging to the curve (Theorem 1.2), with the exact distances.
 
-use super::svg::{Figure, Panel, Style, CURVE, PALETTE, POLYGON};
+use super::svg::{indexed, Figure, Panel, Style, CURVE, PALETTE, POLYGON};
 use super::{planar, planar_curve};
 use crate::error::{Error, Result};
 use crate::scalar::Scalar;
@@ -31,20 +31,23 @@ pub fn elevation<T: Scalar>(curve: &BezierCurve<T>, steps: &[usize]) -> Result<F
     let original = curve.points().iter().map(planar).collect::<Result<Vec<_>>>()?;
     panel.polyline(&original, false, Style::line(POLYGON, 1.3), "polygon", None)?;
     for (i, p) in curve.points().iter().enumerate() {
-        panel.dot(&original[i], 3.0, POLYGON, format!("b_{i} = {p}"))?;
+        panel.dot(
+            &original[i],
+            3.0,
+            POLYGON,
+            format!("{} = {p}", indexed("b", &i.to_string(), None)),
+        )?;
     }
     let d0 = curve.distance_of_elevated(curve, 0);
-    fig.note(
-        Some(POLYGON),
-        format!("r = 0 (degree {n}): max_i |b_i − b(i/{n})|∞ = {}", d0.max_norm),
-    );
+    fig.note(Some(POLYGON), format!("r = 0: maxᵢ |bᵢ − b(i/{n})|∞ = {}", d0.max_norm));
     for (k, &r) in steps.iter().enumerate() {
         let color = PALETTE[k % PALETTE.len()];
         let elevated = curve.elevate_by(r)?;
         let drawn = elevated.points().iter().map(planar).collect::<Result<Vec<_>>>()?;
         let d = curve.distance_of_elevated(&elevated, r);
+        let b_ir = indexed("b", "ᵢ", Some(&format!("({r})")));
         let title = format!(
-            "r = {r}: the {} Bézier points of degree {}; max_i |b_i^({r}) − b(i/{})|∞ = {}",
+            "r = {r}: the {} Bézier points of degree {}; maxᵢ |{b_ir} − b(i/{})|∞ = {}",
             elevated.points().len(),
             n + r,
             n + r,
@@ -53,14 +56,14 @@ pub fn elevation<T: Scalar>(curve: &BezierCurve<T>, steps: &[usize]) -> Result<F
         panel.polyline(&drawn, false, Style::line(color, 1.2), "polygon", Some(title))?;
         if drawn.len() <= 40 {
             for (i, (p, q)) in elevated.points().iter().zip(&drawn).enumerate() {
-                panel.dot(q, 2.0, color, format!("b_{i}^({r}) = {p}"))?;
+                let name = indexed("b", &i.to_string(), Some(&format!("({r})")));
+                panel.dot(q, 2.0, color, format!("{name} = {p}"))?;
             }
         }
         fig.note(
             Some(color),
             format!(
-                "r = {r} (degree {}): max_i |b_i^({r}) − b(i/{})|∞ = {}, squared Euclidean {}",
-                n + r,
+                "r = {r}: maxᵢ |{b_ir} − b(i/{})|∞ = {}, |·|₂² = {}",
                 n + r,
                 d.max_norm,
                 d.max_squared
@@ -76,7 +79,7 @@ pub fn elevation<T: Scalar>(curve: &BezierCurve<T>, steps: &[usize]) -> Result<F
     fig.add_panel(panel);
     fig.note(
         Some(CURVE),
-        "the curve b(t); the elevated polygons approach it as r grows",
+        "the curve b(t); the polygons approach it as r grows (|·|₂²: squared Euclidean distance)",
     );
     Ok(fig)
 }

@@ -35,6 +35,9 @@ const MOST_COUNTED: usize = 16;
 /// Obstacle tests one figure's placement may make: past this, the remaining labels stay where
 /// the figure asked (a figure with thousands of crowded labels is placed in bounded time).
 const MAX_TESTS: u64 = 4_000_000;
+/// How much nearer its own point than any other a label's box should be, as a ratio of
+/// distances: a label half-way between two points reads as either's.
+const CLEARLY_NEARER: f64 = 1.5;
 /// Grid cell size for the obstacle index, in pixels.
 const CELL: f64 = 24.0;
 
@@ -212,6 +215,33 @@ impl Obstacles {
         seen.len()
     }
 
+    /// Whether some point marker other than the anchor's own lies about as near the box as
+    /// the anchor, or nearer (within [`CLEARLY_NEARER`] times its distance): a reader might
+    /// take the label for that point's.
+    fn nearer_another_point(&self, b: [f64; 4], anchor: [f64; 2]) -> bool {
+        let own = CLEARLY_NEARER * distance_to_box(anchor, b);
+        let g = [b[0] - own, b[1] - own, b[2] + own, b[3] + own];
+        let Some((xs, ys)) = self.span(g) else {
+            return false;
+        };
+        for j in ys {
+            for i in xs.clone() {
+                let cell = &self.cells[j * self.columns + i];
+                self.tests.set(self.tests.get() + cell.len() as u64);
+                for &o in cell {
+                    if let Obstacle::Dot(k) = o {
+                        let (c, r) = self.dots[k];
+                        let from_anchor = (c[0] - anchor[0]).hypot(c[1] - anchor[1]);
+                        if from_anchor > r + 0.5 && distance_to_box(c, b) < own {
+                            return true;
+                        }
+                    }
+                }
+            }
+        }
+        false
+    }
+
     /// The candidate touching fewest things with the label at `font` pixels (the first free
     /// one), its cost and box.
     fn best_position(&self, l: &Wanted, font: f64, frame: [f64; 4]) -> (usize, Placed, [f64; 4]) {
@@ -230,7 +260,13 @@ impl Obstacles {
             if penalty >= least {
                 continue;
             }
-            let cost = penalty + self.hits(b, (least - penalty).min(MOST_COUNTED));
+            // each obstacle counts twice, so that a free box nearer another point than its
+            // own (a label read as that point's) loses only to a free box that is not
+            let hits = self.hits(b, ((least - penalty) / 2 + 1).min(MOST_COUNTED));
+            let cost = penalty + 2 * hits + usize::from(self.nearer_another_point(b, l.at));
+            if cost >= least {
+                continue;
+            }
             if best.as_ref().is_none_or(|(least, _, _)| cost < *least) {
                 best = Some((cost, c, b));
             }
@@ -249,10 +285,10 @@ impl Obstacles {
             .iter()
             .map(|l| {
                 let (cost, mut placed, mut b) = self.best_position(l, LABEL_FONT, frame);
-                if cost > 0 {
+                if cost > 1 {
                     // crowded at the print size: a position free at the drawn size, if any
                     let (screen_cost, p, screen_box) = self.best_position(l, SVG_LABEL_FONT, frame);
-                    if screen_cost == 0 {
+                    if screen_cost <= 1 {
                         (placed, b) = (p, screen_box);
                     }
                 }
@@ -296,6 +332,13 @@ fn candidates(l: &Wanted, font: f64) -> Vec<Placed> {
         }
     }
     out
+}
+
+/// The distance from `p` to the box (0 inside it).
+fn distance_to_box(p: [f64; 2], b: [f64; 4]) -> f64 {
+    let dx = p[0] - p[0].clamp(b[0], b[2]);
+    let dy = p[1] - p[1].clamp(b[1], b[3]);
+    dx.hypot(dy)
 }
 
 fn boxes_meet(a: [f64; 4], b: [f64; 4]) -> bool {

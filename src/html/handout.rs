@@ -4,12 +4,13 @@
 //! teacher hands out, not how the program checked it. Printed on A4, a statement's block may
 //! break across pages; only a figure is kept whole.
 
-use super::{
-    claim_figure, find_claim, formula, page_names, text_titles, write_pages, ClaimFile, ClaimOutcome, Report,
-    TextSummary, Verdict,
-};
+use super::claim_figure::claim_figure;
+use super::pages::{find_claim, page_names, text_titles, write_pages};
+use super::statement::formula;
 use crate::error::Result;
 use crate::figure::svg::esc;
+use crate::verify::claims::ClaimFile;
+use crate::verify::{ClaimOutcome, Report, TextSummary, Verdict};
 use std::fmt::Write as _;
 use std::path::Path;
 

@@ -243,22 +243,16 @@ impl State {
     }
 
     fn json(&self) -> String {
-        let show = |v: &[Q]| {
-            format!(
-                "[{}]",
-                v.iter().map(|x| format!("\"{x}\"")).collect::<Vec<_>>().join(",")
-            )
-        };
         let (ts, ws) = (self.ts(), self.ws());
         format!(
             "{{\"kind\":\"{}\",\"points\":[{}],\"t\":\"{}\",\"ts\":{},\"r\":{},\"w\":\"{}\",\"ws\":{},\"n\":{},\"grid\":{}}}",
             self.kind.name(),
             self.points.iter().map(point_json).collect::<Vec<_>>().join(","),
             self.t.as_ref().map(|t| t.to_string()).unwrap_or_default(),
-            show(&ts),
+            strings_json(&ts),
             self.r,
             self.w,
-            show(&ws),
+            strings_json(&ws),
             self.n,
             self.grid
         )
@@ -284,15 +278,16 @@ fn farey() -> Vec<Q> {
     v
 }
 
-fn point_json(p: &Point<Q>) -> String {
+/// A JSON array of the values as strings (`["1/2","3"]`): how the page reads exact numbers.
+fn strings_json<T: std::fmt::Display>(values: &[T]) -> String {
     format!(
         "[{}]",
-        p.coords()
-            .iter()
-            .map(|x| format!("\"{x}\""))
-            .collect::<Vec<_>>()
-            .join(",")
+        values.iter().map(|x| format!("\"{x}\"")).collect::<Vec<_>>().join(",")
     )
+}
+
+fn point_json(p: &Point<Q>) -> String {
+    strings_json(p.coords())
 }
 
 fn list_json(ps: &[Point<Q>]) -> String {
@@ -404,13 +399,7 @@ fn values(s: &State) -> Result<Vec<(String, String, String)>> {
                     .iter()
                     .map(|c| c.to_string())
                     .collect();
-                (
-                    format!(
-                        "[{}]",
-                        k.iter().map(|c| format!("\"{c}\"")).collect::<Vec<_>>().join(",")
-                    ),
-                    equation(&k),
-                )
+                (strings_json(&k), equation(&k))
             };
             out.push(("w-value".into(), format!("\"{}\"", s.w), s.w.to_string()));
             out.push(("point".into(), point_json(&x), point_text(&x)));
@@ -431,14 +420,7 @@ fn values(s: &State) -> Result<Vec<(String, String, String)>> {
                 .map(|(i, v)| format!("B{}{} = {v}", digits(i, &SUB), digits(s.n, &SUP)))
                 .collect();
             out.push(("n-value".into(), format!("\"{}\"", s.n), s.n.to_string()));
-            out.push((
-                "basis".into(),
-                format!(
-                    "[{}]",
-                    strings.iter().map(|c| format!("\"{c}\"")).collect::<Vec<_>>().join(",")
-                ),
-                text.join(", "),
-            ));
+            out.push(("basis".into(), strings_json(&strings), text.join(", ")));
         }
         _ => unreachable!("checked in State::from_request"),
     }
