@@ -145,10 +145,13 @@ pub fn symbolic_equal(ctx: &Ctx<'_>, lhs: &Expr, rhs: &Expr, ints: &BTreeMap<Str
                 (Ok(x), Ok(y)) => format!("left side = {x}, right side = {y}"),
                 _ => "a denominator vanishes there".into(),
             };
-            return Ok(PairResult::Fails(format!(
-                "the difference of the two sides does not expand to 0 (it has {} terms); at {at}: {shown}",
-                d.len()
-            )));
+            return Ok(PairResult::Fails(
+                format!(
+                    "the difference of the two sides does not expand to 0 (it has {} terms); at {at}: {shown}",
+                    d.len()
+                ),
+                None,
+            ));
         }
         terms += a.num.len() + b.num.len();
     }
@@ -169,7 +172,7 @@ pub fn check_chain_symbolic(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Resu
     for inst in &instances {
         for (k, pair) in sides.windows(2).enumerate() {
             match symbolic_equal(ctx, &pair[0], &pair[1], inst)? {
-                PairResult::Fails(cx) => {
+                PairResult::Fails(cx, _) => {
                     let which = if sides.len() > 2 {
                         format!("step {} ('{}' = '{}'): ", k + 1, pair[0], pair[1])
                     } else {
@@ -361,7 +364,7 @@ pub fn check_implies(ctx: &Ctx<'_>, imp: &Implies, detail: bool) -> Result<Check
             }
             Ok(out)
         }
-        PairResult::Fails(_) => {
+        PairResult::Fails(..) => {
             // A concrete counterexample: data where the premise holds (solved for the first
             // symbol, which it contains linearly) but the equation does not.
             let unknown = ctx
