@@ -176,7 +176,7 @@ pub fn check_sampled(cases: &[sample::Case]) -> Result<Proof, String> {
         Method::Evaluation
     };
     let mut proof = Proof::new(method, &[]);
-    proof.data = certificate::Data::Sampled(cases.iter().map(|c| c.data.clone()).collect());
+    proof.data = certificate::Data::Sampled(cases.iter().map(|c| (*c.data).clone()).collect());
     Ok(proof)
 }
 

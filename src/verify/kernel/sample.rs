@@ -144,7 +144,7 @@ fn needed_degree(l: &Value<Deg>, r: &Value<Deg>, v: &str) -> Result<u64> {
 pub struct Case {
     pub(super) degrees: Vec<u64>,
     pub(super) polygons: usize,
-    pub(super) data: certificate::Equality,
+    pub(super) data: Box<certificate::Equality>,
 }
 
 /// What sees each point where both sides agree: its grid values, basis polygon, the value.
@@ -260,7 +260,13 @@ pub fn check_pair<A: Alg>(
                 return Ok(Pair::Equal(Case {
                     degrees: bounds.needs.clone(),
                     polygons,
-                    data: certificate::equality(bounds, points, rows, polygons, written(&*env, bounds)),
+                    data: Box::new(certificate::equality(
+                        bounds,
+                        points,
+                        rows,
+                        polygons,
+                        written(&*env, bounds),
+                    )),
                 }));
             }
             k -= 1;
