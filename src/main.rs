@@ -7,6 +7,7 @@
 use casteljau::figure::FigureRequest;
 use casteljau::float::nearest_f64;
 use casteljau::oracle::{self, check_weight_count, Answer, FloatMethod, Op};
+use casteljau::verify::{check_certificates, write_certificates, Recheck};
 use casteljau::verify::{claims, explain_files, identity_file, prove_files, ExplainStyle, Verdict};
 use casteljau::CubicFitData;
 use casteljau::{parse_count, parse_net, parse_number, parse_numbers, parse_point, parse_points};
@@ -84,6 +85,18 @@ enum Command {
         /// With --html or --handout: overwrite an existing report (DIR/index.html).
         #[arg(long)]
         force: bool,
+        /// Also write one certificate per claim into DIR, as DIR/<id>.json (docs/certificates.md).
+        #[arg(long, value_name = "DIR", conflicts_with = "explain")]
+        certificates: Option<PathBuf>,
+        /// With --certificates: re-check the written certificates with the kernel (a self-test).
+        #[arg(long, requires = "certificates")]
+        check: bool,
+    },
+    /// Re-check certificate files (or directories of them) with the kernel alone; exit 1 if one is refused.
+    Check {
+        /// Certificate files, or directories whose .json files are read.
+        #[arg(required = true)]
+        paths: Vec<PathBuf>,
     },
     /// Evaluate b(t) exactly by de Casteljau's algorithm (a rational curve with --weights).
     Eval {
@@ -280,6 +293,8 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             html,
             handout,
             force,
+            certificates,
+            check,
         } => {
             if force && html.is_none() && handout.is_none() {
                 return Err("--force applies only with --html or --handout".into());
@@ -293,6 +308,8 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
                     html: html.as_deref(),
                     handout: handout.as_deref(),
                     force,
+                    certificates: certificates.as_deref(),
+                    check,
                 },
                 format,
             )
@@ -334,6 +351,40 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
                 None => output(&svg)?,
             }
             Ok(ExitCode::SUCCESS)
+        }
+        Command::Check { paths } => {
+            if matches!(format, Format::Latex) {
+                return Err("--format latex does not apply to `check`".into());
+            }
+            let checked = check_certificates(&paths).map_err(e)?;
+            let (line, refused) = recheck_summary(&checked);
+            match format {
+                Format::Json => {
+                    let files: Vec<Value> = checked
+                        .iter()
+                        .map(|(path, r)| {
+                            let (status, detail) = recheck_status(r);
+                            json!({"file": path.display().to_string(), "status": status, "detail": detail})
+                        })
+                        .collect();
+                    output(&format!("{}\n", json!({"files": files, "summary": line})))?;
+                }
+                _ => {
+                    let mut text = String::new();
+                    for (path, r) in &checked {
+                        let (status, detail) = recheck_status(r);
+                        text.push_str(&format!("{}: {status}: {detail}\n", path.display()));
+                    }
+                    text.push_str(&line);
+                    text.push('\n');
+                    output(&text)?;
+                }
+            }
+            Ok(if refused > 0 {
+                ExitCode::from(1)
+            } else {
+                ExitCode::SUCCESS
+            })
         }
         Command::Oracle => {
             let output = io::BufWriter::with_capacity(oracle::READ_CHUNK_BYTES, io::stdout().lock());
@@ -589,6 +640,8 @@ struct Reports<'a> {
     html: Option<&'a Path>,
     handout: Option<&'a Path>,
     force: bool,
+    certificates: Option<&'a Path>,
+    check: bool,
 }
 
 /// The `--identity` check: the identity, its `--for` ranges and its `--vars`.
@@ -673,6 +726,22 @@ fn prove(
             dir.join("index.html").display()
         );
     }
+    let mut refused = 0;
+    if let Some(dir) = reports.certificates {
+        let written = write_certificates(&report, dir).map_err(|e| e.to_string())?;
+        eprintln!("casteljau: wrote {written} certificates to {}", dir.display());
+        if reports.check {
+            let checked = check_certificates(&[dir.to_path_buf()]).map_err(|e| e.to_string())?;
+            for (path, r) in &checked {
+                if let Recheck::Refused(why) = r {
+                    eprintln!("casteljau: {}: REFUSED: {why}", path.display());
+                }
+            }
+            let (line, bad) = recheck_summary(&checked);
+            refused = bad;
+            eprintln!("casteljau: --check: {line}");
+        }
+    }
     match format {
         Format::Text if identity.is_some() => output(&report.claims_text())?,
         Format::Text => output(&report.to_text())?,
@@ -694,11 +763,35 @@ fn prove(
             undecided.join(", ")
         );
         ExitCode::from(2)
-    } else if report.mismatches() > 0 {
+    } else if report.mismatches() > 0 || refused > 0 {
         ExitCode::from(1)
     } else {
         ExitCode::SUCCESS
     })
+}
+
+/// A re-check's status word and detail, as `check` prints them.
+fn recheck_status(r: &Recheck) -> (&'static str, &str) {
+    match r {
+        Recheck::Accepted(what) => ("re-checked by the kernel", what),
+        Recheck::NotChecked(why) => ("not re-checked", why),
+        Recheck::Refused(why) => ("REFUSED", why),
+    }
+}
+
+/// The one-line summary of re-checked certificates, and how many were refused.
+fn recheck_summary(checked: &[(PathBuf, Recheck)]) -> (String, usize) {
+    let count = |f: fn(&Recheck) -> bool| checked.iter().filter(|(_, r)| f(r)).count();
+    let accepted = count(|r| matches!(r, Recheck::Accepted(_)));
+    let none = count(|r| matches!(r, Recheck::NotChecked(_)));
+    let refused = count(|r| matches!(r, Recheck::Refused(_)));
+    (
+        format!(
+            "{} certificates: {accepted} re-checked by the kernel, {none} not re-checked (no data for their method), {refused} refused",
+            checked.len()
+        ),
+        refused,
+    )
 }
 
 /// The claim files `prove` reads: those given; without any, `proofs/` when the working

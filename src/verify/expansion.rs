@@ -319,7 +319,7 @@ pub fn check_implies(ctx: &Ctx<'_>, imp: &Implies, detail: bool) -> Result<Check
             }
             Ok(out)
         }
-        PairResult::Fails(_) => {
+        PairResult::Fails(..) => {
             // A concrete counterexample: data where the premise holds (solved for the first
             // symbol, which it contains linearly) but the equation does not.
             let unknown = ctx

@@ -44,21 +44,24 @@
 // - expressions: `parse`, `rewrite` (definitions, substitution, `diff`), `methods` (library
 //   operations callable in expressions);
 // - searches: `ansatz` (WZ certificates), `telescope` (recurrences by creative telescoping);
-// - a claim's context: `objects`, `context`, `names`, `lemma` (library objects by their
-//   definitions and by lemmas);
+// - a claim's context: `objects`, `inline`, `context`, `names`, `lemma` (library objects by
+//   their definitions and by lemmas; `inline` writes concrete ones out for certificates);
 // - provers: `sampling` (degree bounds and exact evaluation), `expansion` (symbolic expansion,
 //   `implies`), `identity` (the identity goal), `translate`, `recurrence` and `symbolic` (for
 //   every n), `theorems`, `inequality`;
 // - the kinds and the scope of a verdict: `kinds`, `scope`;
-// - the reports: `argue`, `latex`, `report`.
+// - the reports: `argue`, `latex`, `report`;
+// - certificates as files: `certify` (written from the kernel's data, re-checked by the kernel).
 mod ansatz;
 mod argue;
+mod certify;
 mod claim_syntax;
 pub mod claims;
 mod context;
 mod expansion;
 mod identity;
 mod inequality;
+mod inline;
 mod kernel;
 mod kinds;
 mod latex;
@@ -81,6 +84,7 @@ mod translate;
 use crate::error::{Error, Result};
 use std::path::PathBuf;
 
+pub use certify::{check_certificate, check_certificates, write_certificates, Recheck};
 pub use kernel::checked::{Checked, Evaluation, Method, Step, StepKind, Verdict};
 pub use kernel::{Proof, Trusted};
 pub use kinds::check_claim;
@@ -288,6 +292,7 @@ fn outcome(f: &claims::ClaimFile, c: &claims::Claim, checked: Checked, range_bou
         range: checked.range().map(str::to_string),
         method: proof.map(kernel::Proof::method),
         rests_on: proof.map(|p| p.rests_on().to_vec()),
+        data: checked.data().clone(),
         certificate: checked.certificate,
         expect: c.expected(),
         file: f.path.display().to_string(),

@@ -74,6 +74,9 @@ pub struct ClaimOutcome {
     /// also provable for every n and which ranges to write ([`super::scope::range_bound`]).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub range_bound: Option<String>,
+    /// What the kernel checked, as data (`docs/certificates.md`; not in the JSON report).
+    #[serde(skip)]
+    pub data: super::kernel::certificate::Data,
 }
 
 impl ClaimOutcome {
@@ -548,6 +551,7 @@ mod tests {
             corrects: None,
             note: None,
             range_bound: None,
+            data: Default::default(),
         }
     }
 

@@ -2,6 +2,8 @@
 //! points, on a basis of control polygons; the work of a claim estimated before it runs.
 
 use super::context::Ctx;
+use super::inline::inline;
+use super::kernel::certificate::Refutation;
 use super::kernel::check_sampled;
 use super::kernel::checked::{Checked, Evaluation, Method, Step};
 use super::kernel::eval::{Deg, Env, Value};
@@ -113,8 +115,8 @@ pub struct PairProof {
 pub enum PairResult {
     /// Proved, with what was checked.
     Proved(PairProof),
-    /// Fails: the counterexample.
-    Fails(String),
+    /// Fails: the counterexample, and as data when the kernel recorded it.
+    Fails(String, Option<Box<Refutation>>),
 }
 
 /// The claim's objects for one case, set to one basis polygon and parameter point.
@@ -145,6 +147,9 @@ impl<T: Exact> Points<T> for Grid<T> {
             }
         }
         out
+    }
+    fn written_out(&self, side: &Expr) -> Option<Expr> {
+        inline(side, &self.num)
     }
 }
 
@@ -208,10 +213,14 @@ fn prove_prepared<T: Exact>(
                 lhs: l,
                 rhs: r,
                 equal,
+                refutation,
             } => {
                 let at = describe_point(&params, &at, ints, &basis[b], ctx);
                 if equal == Some(false) {
-                    return Ok(PairResult::Fails(format!("at {at}: left side = {l}, right side = {r}")));
+                    return Ok(PairResult::Fails(
+                        format!("at {at}: left side = {l}, right side = {r}"),
+                        refutation,
+                    ));
                 }
                 return Err(Error::Domain(format!(
                     "at {at} the sides are {l} and {r}: the claim mixes square roots of different fields \
@@ -530,14 +539,16 @@ pub fn check_chain<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Res
         for (k, pair) in sides.windows(2).enumerate() {
             let plan = plans.next().expect("one plan per case and pair");
             match prove_prepared::<T>(ctx, inst, detail, plan)? {
-                PairResult::Fails(cx) => {
+                PairResult::Fails(cx, refutation) => {
                     let which = if sides.len() > 2 {
                         format!("step {} ('{}' = '{}') ", k + 1, pair[0], pair[1])
                     } else {
                         String::new()
                     };
                     let degree = max_need.values().copied().max().unwrap_or(0);
-                    let mut c = Checked::fails(format!("{which}{cx}")).found_by(method(sampled, basis, degree));
+                    let mut c = Checked::fails(format!("{which}{cx}"))
+                        .found_by(method(sampled, basis, degree))
+                        .refuted(refutation);
                     c.steps = steps;
                     c.steps.push(Step::text(format!("FAILS {which}{cx}")));
                     return Ok(c);

@@ -1,6 +1,7 @@
 //! What checking a claim produces: the verdict, what it rests on (a typed [`Method`]), the
 //! certificate and, for `explain`, the steps.
 
+use super::certificate::{Data, Refutation};
 use super::{Proof, Trusted};
 use num_rational::BigRational;
 use serde::Serialize;
@@ -188,6 +189,8 @@ pub struct Checked {
     pub steps: Vec<Step>,
     /// The values of the first parameter that the proof checked (for `explain`).
     pub params: Vec<BigRational>,
+    /// A verdict other than a proof: its data (a counterexample's).
+    data: Data,
 }
 
 impl Checked {
@@ -197,6 +200,7 @@ impl Checked {
             certificate,
             steps: Vec::new(),
             params: Vec::new(),
+            data: Data::None,
         }
     }
 
@@ -207,6 +211,7 @@ impl Checked {
             certificate,
             steps: Vec::new(),
             params: Vec::new(),
+            data: Data::None,
         }
     }
 
@@ -248,6 +253,22 @@ impl Checked {
             self.outcome = Outcome::Proved(p.resting_on(trusted));
         }
         self
+    }
+
+    /// A `fails` verdict with its counterexample as data (other verdicts stay).
+    pub(crate) fn refuted(mut self, refutation: Option<Box<Refutation>>) -> Self {
+        if let (Some(r), Verdict::Fails) = (refutation, self.verdict()) {
+            self.data = Data::Refuted(r);
+        }
+        self
+    }
+
+    /// What the verdict's data is: the proof's, or a counterexample (`docs/certificates.md`).
+    pub fn data(&self) -> &Data {
+        match &self.outcome {
+            Outcome::Proved(p) => p.data(),
+            Outcome::Other(..) => &self.data,
+        }
     }
 
     /// The verdict.

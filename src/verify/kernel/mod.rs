@@ -20,6 +20,7 @@ pub(crate) mod alg;
 pub(crate) mod bernstein;
 pub(crate) mod beta;
 pub(crate) mod budget;
+pub(crate) mod certificate;
 pub mod checked;
 pub(crate) mod eval;
 pub(crate) mod expand;
@@ -94,6 +95,7 @@ pub struct Proof {
     scope: Scope,
     method: Method,
     rests_on: Vec<Trusted>,
+    data: certificate::Data,
 }
 
 impl Proof {
@@ -103,6 +105,7 @@ impl Proof {
             scope: Scope::Every,
             method,
             rests_on: rests_on.into_iter().collect(),
+            data: certificate::Data::None,
         }
     }
 
@@ -122,6 +125,11 @@ impl Proof {
     /// The library computations the proof accepts by name (empty when it accepts none).
     pub fn rests_on(&self) -> &[Trusted] {
         &self.rests_on
+    }
+
+    /// What the kernel checked, as data a checker can re-check (`docs/certificates.md`).
+    pub fn data(&self) -> &certificate::Data {
+        &self.data
     }
 
     /// The finite ranges a `proved_in_range` covers.
@@ -170,7 +178,9 @@ pub fn check_sampled(cases: &[sample::Case]) -> Result<Proof, String> {
     } else {
         Method::Evaluation
     };
-    Ok(Proof::new(method, &[]))
+    let mut proof = Proof::new(method, &[]);
+    proof.data = certificate::Data::Sampled(cases.iter().map(|c| (*c.data).clone()).collect());
+    Ok(proof)
 }
 
 /// A proof by exact symbolic expansion from pairs of sides expanded by [`expand::expand`]:
@@ -234,6 +244,7 @@ pub fn check_all(parts: Vec<Proof>) -> Option<Proof> {
     let first = parts.next()?;
     Some(parts.fold(first, |acc, p| {
         let mut out = Proof::new(acc.method.join(p.method), &acc.rests_on);
+        out.data = acc.data.join(p.data);
         for t in p.rests_on {
             out = out.resting_on(t);
         }

@@ -6,6 +6,7 @@
 //! (the claim's objects shaped for one case, set to one basis polygon) is trusted elaboration.
 
 use super::alg::Alg;
+use super::certificate::{self, Refutation, Row};
 use super::eval::{Deg, Env, Evaluator, Value};
 use super::expr::Expr;
 use crate::error::{Error, Result};
@@ -22,6 +23,10 @@ pub trait Points<A: Alg> {
     /// The symbolic control points, by name and index (`b[j]`, `p[i, j]`), in the order of
     /// the unit polygons: basis polygon `k + 1` sets the `k`-th to 1.
     fn control_points(&self) -> Vec<(String, Vec<i64>)>;
+    /// A side written without the claim's objects, for a certificate (`None`: it cannot be).
+    fn written_out(&self, _side: &Expr) -> Option<Expr> {
+        None
+    }
 }
 
 /// Checks that `env`'s basis is complete for sides affine in its control points: basis
@@ -115,6 +120,18 @@ impl Bounds<'_> {
     pub fn needs(&self) -> &[u64] {
         &self.needs
     }
+    /// The integer values of the case.
+    pub fn ints(&self) -> &BTreeMap<String, i64> {
+        &self.ints
+    }
+    /// The left side.
+    pub fn lhs(&self) -> &Expr {
+        self.lhs
+    }
+    /// The right side.
+    pub fn rhs(&self) -> &Expr {
+        self.rhs
+    }
     /// Whether a side uses the symbolic control points.
     pub fn uses_polygon(&self) -> bool {
         self.dl
@@ -167,6 +184,7 @@ fn needed_degree(l: &Value<Deg>, r: &Value<Deg>, v: &str) -> Result<u64> {
 pub struct Case {
     pub(super) degrees: Vec<u64>,
     pub(super) polygons: usize,
+    pub(super) data: Box<certificate::Equality>,
 }
 
 /// What sees each point where both sides agree: its grid values, basis polygon, the value.
@@ -184,9 +202,15 @@ pub enum Pair<A> {
         lhs: Value<A>,
         rhs: Value<A>,
         equal: Option<bool>,
+        /// The counterexample as data, when the sides are unequal on the only polygon.
+        refutation: Option<Box<Refutation>>,
     },
     /// A denominator vanishes at the grid point with these indices into the proposed points.
     Vanishes { index: Vec<usize>, error: Error },
+}
+
+fn written<A: Alg>(env: &dyn Points<A>, bounds: &Bounds<'_>) -> Option<(Expr, Expr)> {
+    Some((env.written_out(bounds.lhs)?, env.written_out(bounds.rhs)?))
 }
 
 /// Checks `bounds`' equality at the grid `points` (the proposed values of each parameter):
@@ -231,6 +255,8 @@ pub fn check_pair<A: Alg>(
         }
     }
     let mut idx = vec![0usize; points.len()];
+    // The certificate's rows: kept for sides without symbolic control points only.
+    let mut rows = Vec::new();
     loop {
         let values: Vec<BigRational> = idx.iter().zip(points).map(|(&i, s)| s[i].clone()).collect();
         for b in 0..polygons {
@@ -246,15 +272,33 @@ pub fn check_pair<A: Alg>(
                 (Err(e), _) | (_, Err(e)) => return Err(e),
             };
             match l.equals(&r) {
-                Some(true) => observe(&values, b, &l),
+                Some(true) => {
+                    observe(&values, b, &l);
+                    if polygons == 1 {
+                        rows.push(Row {
+                            at: values.clone(),
+                            value: certificate::entries(&l),
+                        });
+                    }
+                }
                 equal => {
+                    let refutation = (polygons == 1 && equal == Some(false)).then(|| {
+                        let equality = certificate::equality(bounds, &[], Vec::new(), polygons, written(&*env, bounds));
+                        Box::new(Refutation {
+                            equality,
+                            at: bounds.params.iter().cloned().zip(values.iter().cloned()).collect(),
+                            lhs: certificate::entries(&l),
+                            rhs: certificate::entries(&r),
+                        })
+                    });
                     return Ok(Pair::Differs {
                         at: values,
                         basis: b,
                         lhs: l,
                         rhs: r,
                         equal,
-                    })
+                        refutation,
+                    });
                 }
             }
         }
@@ -265,6 +309,13 @@ pub fn check_pair<A: Alg>(
                 return Ok(Pair::Equal(Case {
                     degrees: bounds.needs.clone(),
                     polygons,
+                    data: Box::new(certificate::equality(
+                        bounds,
+                        points,
+                        rows,
+                        polygons,
+                        written(&*env, bounds),
+                    )),
                 }));
             }
             k -= 1;

@@ -1,0 +1,583 @@
+//! Certificates as files (`docs/certificates.md`, `docs/certificate.schema.json`): each
+//! claim's verdict written as JSON with the data the kernel checked, and such files re-checked
+//! by the kernel alone, with no claim file and no search.
+//!
+//! Reading a file (JSON, the goal's expression text) is elaboration, trusted like the claim
+//! parser; the obligations are decided by `kernel::certificate`.
+
+use super::kernel::certificate::{self, Claimed, Data, Equality, Param, Refutation};
+use super::kernel::checked::{Method, Verdict};
+use super::kernel::expr::Expr;
+use super::parse::parse;
+use super::report::{ClaimOutcome, Report};
+use crate::error::{Error, Result};
+use num_rational::BigRational;
+use serde_json::{json, Map, Value as Json};
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::str::FromStr;
+
+/// The `format` field of every certificate.
+pub const FORMAT: &str = "casteljau-certificate";
+/// The format's version.
+pub const VERSION: u64 = 1;
+/// Largest certificate file `check` reads.
+pub const MAX_FILE_BYTES: u64 = 4 << 20;
+/// Most certificate files `check` reads from one directory.
+pub const MAX_FILES: usize = 10_000;
+
+/// The calls a re-checkable goal may make: the built-in functions that need no claim object.
+const BUILTINS: &[&str] = &[
+    "B",
+    "C",
+    "binom",
+    "dot",
+    "comp",
+    "det",
+    "inv",
+    "transpose",
+    "rows",
+    "cols",
+    "integral",
+    "__dB",
+    "__dpow",
+];
+
+/// The method's name in a certificate.
+fn method_name(m: Method) -> &'static str {
+    match m {
+        Method::Sampling { .. } => "sampling",
+        Method::Evaluation => "evaluation",
+        Method::Expansion => "expansion",
+        Method::Pieces => "pieces",
+        Method::Wz => "wz",
+        Method::Telescoping => "telescoping",
+        Method::StatedRecurrence => "stated_recurrence",
+        Method::Induction => "induction",
+        Method::Bernstein => "bernstein",
+        Method::Beta => "beta",
+        Method::Computation => "computation",
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Writing
+
+/// The symbols of equalities, with their sorts; an error if a name has both.
+fn symbols(eqs: &[&Equality]) -> std::result::Result<BTreeMap<String, &'static str>, String> {
+    let mut out: BTreeMap<String, &'static str> = BTreeMap::new();
+    for eq in eqs {
+        let names = eq.ints.keys().map(|k| (k, "integer"));
+        for (name, sort) in names.chain(eq.params.iter().map(|p| (&p.name, "real"))) {
+            if *out.entry(name.clone()).or_insert(sort) != sort {
+                return Err(format!("'{name}' is both an integer and a real symbol"));
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// Why a goal's text cannot be re-checked alone (it names a claim object, a control point,
+/// a name that is not a symbol, or does not print back to itself).
+fn not_self_contained(text: &str, known: &[String]) -> Option<String> {
+    let e = match parse(text, known) {
+        Ok(e) => e,
+        Err(err) => return Some(format!("'{text}' does not parse back ({err})")),
+    };
+    if e.to_string() != text {
+        return Some(format!("'{text}' does not print back to itself"));
+    }
+    let mut bad: Option<String> = None;
+    e.visit(&mut |x| match x {
+        Expr::Index(name, _) => {
+            bad.get_or_insert(format!("the control points {name}[…]"));
+        }
+        Expr::Call(name, _) if !BUILTINS.contains(&name.as_str()) => {
+            bad.get_or_insert(format!("the claim's object {name}(…)"));
+        }
+        _ => {}
+    });
+    if bad.is_none() {
+        if let Some(v) = e.free_vars().into_iter().find(|v| !known.contains(v)) {
+            bad = Some(format!("the claim's object {v}"));
+        }
+    }
+    bad
+}
+
+fn rational_entries(values: &[String]) -> bool {
+    values.iter().all(|v| rational(v).is_ok())
+}
+
+fn ints_json(ints: &BTreeMap<String, i64>) -> Json {
+    Json::Object(ints.iter().map(|(k, v)| (k.clone(), json!(v.to_string()))).collect())
+}
+
+fn strings(v: &[BigRational]) -> Vec<String> {
+    v.iter().map(ToString::to_string).collect()
+}
+
+/// The goal of equalities, or why it cannot be re-checked alone.
+fn goal(eqs: &[&Equality]) -> std::result::Result<Json, String> {
+    let syms = symbols(eqs)?;
+    let known: Vec<String> = syms.keys().cloned().collect();
+    for eq in eqs {
+        if eq.polygons != 1 {
+            return Err("the goal uses symbolic control points (basis polygons)".into());
+        }
+        for side in [&eq.lhs, &eq.rhs] {
+            if let Some(why) = not_self_contained(side, &known) {
+                return Err(format!("the goal uses {why}"));
+            }
+        }
+        if !eq.rows.iter().all(|r| rational_entries(&r.value)) {
+            return Err("the values are not rational (a square root)".into());
+        }
+    }
+    let symbols: Vec<Json> = syms.iter().map(|(n, s)| json!({"name": n, "sort": s})).collect();
+    let equalities: Vec<Json> = eqs
+        .iter()
+        .map(|eq| json!({"ints": ints_json(&eq.ints), "lhs": eq.lhs, "rhs": eq.rhs}))
+        .collect();
+    Ok(json!({"relation": "=", "symbols": symbols, "equalities": equalities}))
+}
+
+fn sampling_json(eqs: &[Equality]) -> Json {
+    let equalities: Vec<Json> = eqs
+        .iter()
+        .map(|eq| {
+            let params: Vec<Json> = eq
+                .params
+                .iter()
+                .map(|p| {
+                    json!({"name": p.name, "degree": p.degree, "lhs_degree": p.lhs_degree,
+                           "rhs_degree": p.rhs_degree, "points": strings(&p.points)})
+                })
+                .collect();
+            let values: Vec<Json> = eq
+                .rows
+                .iter()
+                .map(|r| json!({"at": strings(&r.at), "lhs": r.value, "rhs": r.value}))
+                .collect();
+            json!({"params": params, "values": values})
+        })
+        .collect();
+    json!({ "equalities": equalities })
+}
+
+fn refutation_json(r: &Refutation) -> Json {
+    let at: Map<String, Json> = r.at.iter().map(|(k, v)| (k.clone(), json!(v.to_string()))).collect();
+    json!({"equality": 0, "at": at, "lhs": r.lhs, "rhs": r.rhs})
+}
+
+/// The data part of a certificate: `check: kernel` with the goal and the method's data, or
+/// `check: none` with the reason.
+fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Result<(), String> {
+    let method = o.method.map_or("a check", method_name);
+    match (&o.data, o.verdict) {
+        (_, Verdict::Error) => Err("not decided (an error verdict): nothing to re-check".into()),
+        (_, Verdict::Verified) => Err("bounded evidence, not a proof: no data in this version".into()),
+        (Data::Sampled(eqs), Verdict::Proved | Verdict::ProvedInRange) => {
+            let refs: Vec<&Equality> = eqs.iter().collect();
+            out.insert("goal".into(), goal(&refs)?);
+            out.insert("sampling".into(), sampling_json(eqs));
+            Ok(())
+        }
+        (Data::Refuted(r), Verdict::Fails) => {
+            if !rational_entries(&r.lhs) || !rational_entries(&r.rhs) {
+                return Err("the values are not rational (a square root)".into());
+            }
+            let mut eq = r.equality.clone();
+            // The counterexample's parameters are the goal's real symbols.
+            eq.params =
+                r.at.iter()
+                    .map(|(name, _)| Param {
+                        name: name.clone(),
+                        degree: 0,
+                        lhs_degree: String::new(),
+                        rhs_degree: String::new(),
+                        points: Vec::new(),
+                    })
+                    .collect();
+            out.insert("goal".into(), goal(&[&eq])?);
+            out.insert("fails".into(), refutation_json(r));
+            Ok(())
+        }
+        (_, Verdict::Fails) => Err(format!(
+            "the counterexample was found by {method}, whose data this version does not record (not done)"
+        )),
+        _ => Err(format!(
+            "method {method}: this version records no data for it (not done)"
+        )),
+    }
+}
+
+/// The certificate of one claim's outcome.
+pub fn certificate(o: &ClaimOutcome) -> Json {
+    let mut out = Map::new();
+    out.insert("format".into(), json!(FORMAT));
+    out.insert("version".into(), json!(VERSION));
+    out.insert("id".into(), json!(o.id));
+    out.insert("source".into(), json!(o.source));
+    out.insert("statement".into(), json!(o.statement));
+    out.insert("verdict".into(), json!(o.verdict.as_str()));
+    out.insert("method".into(), json!(o.method.map(method_name)));
+    let rests: Vec<&str> = o.rests_on.iter().flatten().map(|t| t.name()).collect();
+    out.insert("rests_on".into(), json!(rests));
+    out.insert("range".into(), json!(o.range));
+    out.insert("summary".into(), json!(o.certificate));
+    let mut data = Map::new();
+    // Only data the kernel accepts on re-reading is written as re-checkable.
+    let reread = |data: Map<String, Json>| {
+        let mut full = out.clone();
+        full.insert("check".into(), json!("kernel"));
+        full.extend(data);
+        let full = Json::Object(full);
+        match recheck(&full) {
+            Ok(_) => Ok(full),
+            Err(why) => Err(format!("the kernel refuses the written-out goal: {why}")),
+        }
+    };
+    match data_fields(o, &mut data).and_then(|()| reread(data)) {
+        Ok(full) => full,
+        Err(reason) => {
+            out.insert("check".into(), json!("none"));
+            out.insert("reason".into(), json!(reason));
+            Json::Object(out)
+        }
+    }
+}
+
+/// A file name for a claim id: its letters, digits, `-`, `_` and `.`, others as `_`.
+fn file_name(id: &str) -> String {
+    let safe: String = id
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || "-_.".contains(c) {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    format!("{safe}.json")
+}
+
+/// Writes one certificate per claim of `report` into `dir` (created if missing), as
+/// `<id>.json`; returns how many. Two claims whose ids give the same file name are an error.
+pub fn write_certificates(report: &Report, dir: &Path) -> Result<usize> {
+    let io = |e: std::io::Error| Error::Parse(format!("cannot write certificates to {}: {e}", dir.display()));
+    std::fs::create_dir_all(dir).map_err(io)?;
+    let mut seen = std::collections::BTreeSet::new();
+    for o in &report.outcomes {
+        let name = file_name(&o.id);
+        if !seen.insert(name.clone()) {
+            return Err(Error::Parse(format!(
+                "two claims write the certificate {name} (ids must be unique across the claim files)"
+            )));
+        }
+        let text = serde_json::to_string_pretty(&certificate(o)).expect("a JSON value serializes");
+        std::fs::write(dir.join(name), text + "\n").map_err(io)?;
+    }
+    Ok(report.outcomes.len())
+}
+
+// ---------------------------------------------------------------------------------------
+// Re-checking
+
+/// What re-checking one certificate found.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Recheck {
+    /// The kernel re-checked the data: it proves (or refutes) the goal. What was checked.
+    Accepted(String),
+    /// The file carries no data to re-check (`check: none`); its reason.
+    NotChecked(String),
+    /// The data does not establish the verdict: the first failing obligation.
+    Refused(String),
+}
+
+type Res<T> = std::result::Result<T, String>;
+
+fn field<'a>(v: &'a Json, key: &str, at: &str) -> Res<&'a Json> {
+    v.get(key).ok_or_else(|| format!("{at}: no field '{key}'"))
+}
+
+fn string<'a>(v: &'a Json, key: &str, at: &str) -> Res<&'a str> {
+    field(v, key, at)?
+        .as_str()
+        .ok_or_else(|| format!("{at}.{key}: not a string"))
+}
+
+fn array<'a>(v: &'a Json, key: &str, at: &str) -> Res<&'a Vec<Json>> {
+    field(v, key, at)?
+        .as_array()
+        .ok_or_else(|| format!("{at}.{key}: not a list"))
+}
+
+/// An exact rational written `p` or `p/q`, reduced, q > 1.
+fn rational(text: &str) -> Res<BigRational> {
+    let r = BigRational::from_str(text).map_err(|_| format!("'{text}' is not an exact rational p/q"))?;
+    if r.to_string() != text {
+        return Err(format!("'{text}' is not written in lowest terms as p/q"));
+    }
+    Ok(r)
+}
+
+fn rationals(v: &Json, at: &str) -> Res<Vec<BigRational>> {
+    let list = v.as_array().ok_or_else(|| format!("{at}: not a list"))?;
+    list.iter()
+        .enumerate()
+        .map(|(i, x)| {
+            x.as_str()
+                .ok_or_else(|| format!("{at}[{i}]: not a string"))
+                .and_then(rational)
+                .map_err(|e| format!("{at}[{i}]: {e}"))
+        })
+        .collect()
+}
+
+/// The goal: its symbols (name → is integer) and equalities (ints, lhs, rhs).
+struct Goal {
+    reals: Vec<String>,
+    equalities: Vec<(BTreeMap<String, i64>, Expr, Expr)>,
+}
+
+fn read_goal(cert: &Json) -> Res<Goal> {
+    let g = field(cert, "goal", "certificate")?;
+    if string(g, "relation", "goal")? != "=" {
+        return Err("goal.relation: only '=' is defined".into());
+    }
+    let (mut reals, mut integers) = (Vec::new(), Vec::new());
+    for (i, s) in array(g, "symbols", "goal")?.iter().enumerate() {
+        let at = format!("goal.symbols[{i}]");
+        let name = string(s, "name", &at)?.to_string();
+        if reals.contains(&name) || integers.contains(&name) {
+            return Err(format!("{at}: '{name}' is declared twice"));
+        }
+        match string(s, "sort", &at)? {
+            "real" => reals.push(name),
+            "integer" => integers.push(name),
+            other => return Err(format!("{at}.sort: '{other}' is not real or integer")),
+        }
+    }
+    let known: Vec<String> = reals.iter().chain(&integers).cloned().collect();
+    let mut equalities = Vec::new();
+    for (i, eq) in array(g, "equalities", "goal")?.iter().enumerate() {
+        let at = format!("goal.equalities[{i}]");
+        let obj = field(eq, "ints", &at)?
+            .as_object()
+            .ok_or_else(|| format!("{at}.ints: not an object"))?;
+        let mut ints = BTreeMap::new();
+        for (k, v) in obj {
+            if !integers.contains(k) {
+                return Err(format!("{at}.ints: '{k}' is not an integer symbol"));
+            }
+            let v = v
+                .as_str()
+                .and_then(|s| s.parse::<i64>().ok())
+                .ok_or_else(|| format!("{at}.ints.{k}: not an integer"))?;
+            ints.insert(k.clone(), v);
+        }
+        let side =
+            |key: &str| -> Res<Expr> { parse(string(eq, key, &at)?, &known).map_err(|e| format!("{at}.{key}: {e}")) };
+        equalities.push((ints, side("lhs")?, side("rhs")?));
+    }
+    if equalities.is_empty() {
+        return Err("goal.equalities: none".into());
+    }
+    Ok(Goal { reals, equalities })
+}
+
+fn read_params(eq: &Json, at: &str, reals: &[String]) -> Res<Vec<Param>> {
+    let mut params = Vec::new();
+    for (j, p) in array(eq, "params", at)?.iter().enumerate() {
+        let at = format!("{at}.params[{j}]");
+        let name = string(p, "name", &at)?.to_string();
+        if !reals.contains(&name) {
+            return Err(format!("{at}: '{name}' is not a real symbol of the goal"));
+        }
+        let degree = field(p, "degree", &at)?
+            .as_u64()
+            .ok_or_else(|| format!("{at}.degree: not a non-negative integer"))?;
+        params.push(Param {
+            name,
+            degree,
+            lhs_degree: string(p, "lhs_degree", &at)?.to_string(),
+            rhs_degree: string(p, "rhs_degree", &at)?.to_string(),
+            points: rationals(field(p, "points", &at)?, &format!("{at}.points"))?,
+        });
+    }
+    Ok(params)
+}
+
+type Rows = Vec<(Vec<BigRational>, Vec<BigRational>, Vec<BigRational>)>;
+
+fn read_rows(eq: &Json, at: &str) -> Res<Rows> {
+    let values = array(eq, "values", at)?;
+    if values.len() > certificate::MAX_RECHECK_POINTS {
+        return Err(format!(
+            "{at}.values: {} rows, more than the limit of {}",
+            values.len(),
+            certificate::MAX_RECHECK_POINTS
+        ));
+    }
+    values
+        .iter()
+        .enumerate()
+        .map(|(k, row)| {
+            let at = format!("{at}.values[{k}]");
+            let get = |key: &str| rationals(field(row, key, &at)?, &format!("{at}.{key}"));
+            Ok((get("at")?, get("lhs")?, get("rhs")?))
+        })
+        .collect()
+}
+
+fn recheck_proof(cert: &Json, goal: &Goal, method: &str) -> Res<String> {
+    let s = field(cert, "sampling", "certificate")?;
+    let eqs = array(s, "equalities", "sampling")?;
+    if eqs.len() != goal.equalities.len() {
+        return Err(format!(
+            "sampling.equalities: {} entries for {} goal equalities",
+            eqs.len(),
+            goal.equalities.len()
+        ));
+    }
+    let mut claimed = Vec::with_capacity(eqs.len());
+    for (i, (eq, (ints, lhs, rhs))) in eqs.iter().zip(&goal.equalities).enumerate() {
+        let at = format!("sampling.equalities[{i}]");
+        claimed.push(Claimed {
+            lhs,
+            rhs,
+            ints: ints.clone(),
+            params: read_params(eq, &at, &goal.reals)?,
+            rows: read_rows(eq, &at)?,
+        });
+    }
+    let proof = certificate::recheck_sampled(&claimed)?;
+    let derived = method_name(proof.method());
+    if derived != method {
+        return Err(format!("method: the file says {method}, the data is {derived}"));
+    }
+    let points: usize = claimed.iter().map(|c| c.rows.len()).sum();
+    Ok(format!(
+        "{} equalities, {}, {points} grid points re-evaluated",
+        claimed.len(),
+        proof.method().text()
+    ))
+}
+
+fn recheck_fails(cert: &Json, goal: &Goal) -> Res<String> {
+    let f = field(cert, "fails", "certificate")?;
+    let k = field(f, "equality", "fails")?
+        .as_u64()
+        .ok_or_else(|| "fails.equality: not an index".to_string())?;
+    let (ints, lhs, rhs) = usize::try_from(k)
+        .ok()
+        .and_then(|k| goal.equalities.get(k))
+        .ok_or_else(|| format!("fails.equality: no equality {k} in the goal"))?;
+    let obj = field(f, "at", "fails")?
+        .as_object()
+        .ok_or_else(|| "fails.at: not an object".to_string())?;
+    let mut at = Vec::new();
+    for (name, v) in obj {
+        if !goal.reals.contains(name) {
+            return Err(format!("fails.at: '{name}' is not a real symbol of the goal"));
+        }
+        let v = v.as_str().ok_or_else(|| format!("fails.at.{name}: not a string"))?;
+        at.push((name.clone(), rational(v).map_err(|e| format!("fails.at.{name}: {e}"))?));
+    }
+    let l = rationals(field(f, "lhs", "fails")?, "fails.lhs")?;
+    let r = rationals(field(f, "rhs", "fails")?, "fails.rhs")?;
+    certificate::recheck_refutation(lhs, rhs, ints, &at, (&l, &r)).map_err(|e| format!("the counterexample: {e}"))?;
+    Ok("the counterexample re-evaluated: the sides differ".into())
+}
+
+fn recheck(cert: &Json) -> Res<Option<String>> {
+    if string(cert, "format", "certificate")? != FORMAT {
+        return Err(format!("format: not '{FORMAT}'"));
+    }
+    let version = field(cert, "version", "certificate")?.as_u64();
+    if version != Some(VERSION) {
+        return Err(format!("version: this program reads version {VERSION}"));
+    }
+    let verdict = string(cert, "verdict", "certificate")?;
+    let verdict = Verdict::from_name(verdict).ok_or_else(|| format!("verdict: '{verdict}' is not a verdict"))?;
+    match string(cert, "check", "certificate")? {
+        "none" => return Ok(None),
+        "kernel" => {}
+        other => return Err(format!("check: '{other}' is not kernel or none")),
+    }
+    let range = field(cert, "range", "certificate")?;
+    if range.is_null() == (verdict == Verdict::ProvedInRange) {
+        return Err("range: given exactly when the verdict is proved_in_range".into());
+    }
+    let goal = read_goal(cert)?;
+    let method = field(cert, "method", "certificate")?.as_str().unwrap_or("none");
+    match verdict {
+        Verdict::Proved | Verdict::ProvedInRange => recheck_proof(cert, &goal, method).map(Some),
+        Verdict::Fails => recheck_fails(cert, &goal).map(Some),
+        other => Err(format!("verdict {}: no kernel data is defined for it", other.as_str())),
+    }
+}
+
+/// Re-checks one certificate's text with the kernel alone.
+pub fn check_certificate(text: &str) -> Recheck {
+    let cert: Json = match serde_json::from_str(text) {
+        Ok(v) => v,
+        Err(e) => return Recheck::Refused(format!("not JSON: {e}")),
+    };
+    match recheck(&cert) {
+        Ok(Some(what)) => Recheck::Accepted(what),
+        Ok(None) => Recheck::NotChecked(
+            cert.get("reason")
+                .and_then(Json::as_str)
+                .unwrap_or("no reason given")
+                .to_string(),
+        ),
+        Err(obligation) => Recheck::Refused(obligation),
+    }
+}
+
+/// Re-checks certificate files: each path a file, or a directory whose `.json` files are read
+/// in name order. An unreadable path, a file over [`MAX_FILE_BYTES`] or a directory over
+/// [`MAX_FILES`] files is an error.
+pub fn check_certificates(paths: &[PathBuf]) -> Result<Vec<(PathBuf, Recheck)>> {
+    let io = |p: &Path, e: std::io::Error| Error::Parse(format!("cannot read {}: {e}", p.display()));
+    let mut files = Vec::new();
+    for p in paths {
+        if p.is_dir() {
+            let mut found: Vec<PathBuf> = std::fs::read_dir(p)
+                .map_err(|e| io(p, e))?
+                .filter_map(|e| e.ok().map(|e| e.path()))
+                .filter(|f| f.extension().is_some_and(|x| x == "json"))
+                .take(MAX_FILES + 1)
+                .collect();
+            if found.len() > MAX_FILES {
+                return Err(Error::TooLarge {
+                    what: "certificate directory",
+                    value: format!("more than {MAX_FILES} files in {}", p.display()),
+                    limit: format!("{MAX_FILES} files"),
+                });
+            }
+            found.sort();
+            files.extend(found);
+        } else {
+            files.push(p.clone());
+        }
+    }
+    let mut out = Vec::with_capacity(files.len());
+    for f in files {
+        let size = std::fs::metadata(&f).map_err(|e| io(&f, e))?.len();
+        if size > MAX_FILE_BYTES {
+            return Err(Error::TooLarge {
+                what: "certificate file",
+                value: format!("{} bytes in {}", size, f.display()),
+                limit: format!("{MAX_FILE_BYTES} bytes"),
+            });
+        }
+        let text = std::fs::read_to_string(&f).map_err(|e| io(&f, e))?;
+        let r = check_certificate(&text);
+        out.push((f, r));
+    }
+    Ok(out)
+}

@@ -1,0 +1,109 @@
+//! A claim's concrete curves and surfaces written out with the built-in `B` (and `__dB` for
+//! derivatives), so that a certificate's goal needs no claim object (`docs/certificates.md`).
+//! Only the printed goal changes; proofs evaluate the objects as before.
+
+use super::kernel::expr::{split_partial, Expr};
+use super::objects::{Exact, NumEnv};
+use crate::any_curve::AnyCurve;
+use crate::point::Point;
+use num_rational::BigRational;
+use std::str::FromStr;
+
+/// `e` with every call of a concrete curve or surface of `env` written out; `None` when a
+/// call cannot be (a symbolic polygon, a de Casteljau point, a rational curve's derivative,
+/// a coordinate that is not rational).
+pub fn inline<T: Exact>(e: &Expr, env: &NumEnv<T>) -> Option<Expr> {
+    let go = |x: &Expr| inline(x, env);
+    let all = |xs: &[Expr]| xs.iter().map(go).collect::<Option<Vec<_>>>();
+    Some(match e {
+        Expr::Num(_) | Expr::Var(_) => e.clone(),
+        Expr::Neg(a) => Expr::Neg(Box::new(go(a)?)),
+        Expr::Fact(a) => Expr::Fact(Box::new(go(a)?)),
+        Expr::Bin(op, a, b) => Expr::Bin(*op, Box::new(go(a)?), Box::new(go(b)?)),
+        Expr::Index(name, args) => Expr::Index(name.clone(), all(args)?),
+        Expr::Tuple(xs) => Expr::Tuple(all(xs)?),
+        Expr::Matrix(rows) => Expr::Matrix(rows.iter().map(|r| all(r)).collect::<Option<_>>()?),
+        Expr::Sum(v, a, b, body) => Expr::Sum(v.clone(), Box::new(go(a)?), Box::new(go(b)?), Box::new(go(body)?)),
+        Expr::Call(name, args) => {
+            let args = all(args)?;
+            object(name, &args, env).unwrap_or(Expr::Call(name.clone(), args))
+        }
+    })
+}
+
+fn rat<T: Exact>(x: &T) -> Option<Expr> {
+    BigRational::from_str(&x.to_string()).ok().map(Expr::Num)
+}
+
+fn tuple<T: Exact>(p: &Point<T>) -> Option<Expr> {
+    Some(Expr::Tuple(p.coords().iter().map(rat).collect::<Option<_>>()?))
+}
+
+/// `B(i, n, x)`, or its `k`-th derivative `__dB(i, n, x, k)`.
+fn basis(i: usize, n: usize, x: &Expr, k: usize) -> Expr {
+    let (i, n) = (Expr::int(i as i64), Expr::int(n as i64));
+    if k == 0 {
+        Expr::Call("B".into(), vec![i, n, x.clone()])
+    } else {
+        Expr::Call("__dB".into(), vec![i, n, x.clone(), Expr::int(k as i64)])
+    }
+}
+
+fn sum(terms: impl Iterator<Item = Expr>) -> Option<Expr> {
+    terms.reduce(Expr::add)
+}
+
+/// The call `name(args)` of a curve or surface of `env`, written out (`None`: not one, or
+/// not written out).
+fn object<T: Exact>(name: &str, args: &[Expr], env: &NumEnv<T>) -> Option<Expr> {
+    let base = name.trim_end_matches('\'');
+    let order = name.len() - base.len();
+    if let (Some(c), [t]) = (env.curves.get(base), args) {
+        return match c {
+            AnyCurve::Polynomial(c) => {
+                let n = c.degree();
+                sum(c
+                    .points()
+                    .iter()
+                    .enumerate()
+                    .map(|(i, p)| Some(Expr::mul(tuple(p)?, basis(i, n, t, order))))
+                    .collect::<Option<Vec<_>>>()?
+                    .into_iter())
+            }
+            AnyCurve::Rational(c) if order == 0 => {
+                let n = c.degree();
+                let terms = |with_point: bool| -> Option<Expr> {
+                    sum(c
+                        .points()
+                        .iter()
+                        .zip(c.weights())
+                        .enumerate()
+                        .map(|(i, (p, w))| {
+                            let wb = Expr::mul(rat(w)?, basis(i, n, t, 0));
+                            Some(if with_point { Expr::mul(tuple(p)?, wb) } else { wb })
+                        })
+                        .collect::<Option<Vec<_>>>()?
+                        .into_iter())
+                };
+                Some(Expr::div(terms(true)?, terms(false)?))
+            }
+            AnyCurve::Rational(_) => None,
+        };
+    }
+    let (base, ku, kv) = if env.surfaces.contains_key(name) {
+        (name, 0, 0)
+    } else {
+        split_partial(name)?
+    };
+    let (net, [u, v]) = (env.surfaces.get(base)?, args) else {
+        return None;
+    };
+    let (m, n) = (net.len().checked_sub(1)?, net.first()?.len().checked_sub(1)?);
+    let mut terms = Vec::new();
+    for (i, row) in net.iter().enumerate() {
+        for (j, p) in row.iter().enumerate() {
+            terms.push(Expr::mul(Expr::mul(tuple(p)?, basis(i, m, u, ku)), basis(j, n, v, kv)));
+        }
+    }
+    sum(terms.into_iter())
+}

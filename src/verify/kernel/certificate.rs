@@ -1,0 +1,308 @@
+//! Certificates as data: what a check verified, kept typed so that it can be written out and
+//! re-checked later by the kernel alone, with no claim and no search (`docs/certificates.md`).
+//!
+//! The checks record it ([`sample::check_pair`] for each equality it proves or refutes); the
+//! re-checks ([`recheck_sampled`], [`recheck_refutation`]) take the goal's expressions (parsed
+//! outside, from the file's text) and the recorded data, and run the same kernel code on them:
+//! the degree bounds derived again, the points checked distinct and numerous enough, both sides
+//! evaluated again at every point and compared with the file's values.
+
+use super::eval::{Deg, Env, Value, VarEnv};
+use super::expr::Expr;
+use super::sample::{self, Pair, Points};
+use super::Proof;
+use crate::error::Result;
+use num_rational::BigRational;
+use std::collections::BTreeMap;
+
+/// Most grid points a re-checked file may list (all its equalities together).
+pub const MAX_RECHECK_POINTS: usize = 10_000;
+
+/// One real parameter of a sampled equality.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Param {
+    /// Its name.
+    pub name: String,
+    /// The degree bound of the cleared difference of both sides in it.
+    pub degree: u64,
+    /// The bounds of each side, `num` or `num/den`.
+    pub lhs_degree: String,
+    /// See `lhs_degree`.
+    pub rhs_degree: String,
+    /// The values it was evaluated at.
+    pub points: Vec<BigRational>,
+}
+
+/// One grid point where both sides were evaluated and found equal.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Row {
+    /// The parameters' values, in the order of the params.
+    pub at: Vec<BigRational>,
+    /// The common value of both sides, entry by entry (printed exactly).
+    pub value: Vec<String>,
+}
+
+/// One equality as the kernel checked it: `lhs = rhs` at the integer values `ints`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Equality {
+    /// The integer symbols' values.
+    pub ints: BTreeMap<String, i64>,
+    /// The left side, printed so that it parses back.
+    pub lhs: String,
+    /// The right side.
+    pub rhs: String,
+    /// The real parameters (empty for an exact evaluation).
+    pub params: Vec<Param>,
+    /// Every grid point, the last parameter fastest.
+    pub rows: Vec<Row>,
+    /// How many basis polygons the sides were evaluated on (1: no symbolic control points).
+    pub polygons: usize,
+}
+
+/// A counterexample: the equality, where it fails and both sides' values there.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Refutation {
+    /// The failing equality (no params, no rows).
+    pub equality: Equality,
+    /// The real parameters' values.
+    pub at: Vec<(String, BigRational)>,
+    /// The left side's value, entry by entry.
+    pub lhs: Vec<String>,
+    /// The right side's value.
+    pub rhs: Vec<String>,
+}
+
+/// What a verdict's data is.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub enum Data {
+    /// No data a checker could re-derive the verdict from (not done for this method).
+    #[default]
+    None,
+    /// Equalities proved by exact evaluation at enough points.
+    Sampled(Vec<Equality>),
+    /// A counterexample.
+    Refuted(Box<Refutation>),
+}
+
+impl Data {
+    /// The data of several parts checked together: kept only when every part was sampled.
+    pub(super) fn join(self, other: Data) -> Data {
+        match (self, other) {
+            (Data::Sampled(mut a), Data::Sampled(b)) => {
+                a.extend(b);
+                Data::Sampled(a)
+            }
+            _ => Data::None,
+        }
+    }
+}
+
+/// The data of one equality proved by [`sample::check_pair`]; `written`: both sides without
+/// the claim's objects, when the environment could write them so (their degree bounds, derived
+/// again, are the ones recorded).
+pub(super) fn equality(
+    bounds: &sample::Bounds<'_>,
+    points: &[Vec<BigRational>],
+    rows: Vec<Row>,
+    polygons: usize,
+    written: Option<(Expr, Expr)>,
+) -> Equality {
+    let names = bounds.params().to_vec();
+    let degrees = VarEnv(names.iter().map(|v| (v.clone(), Value::S(Deg::var(v)))).collect());
+    let again = written
+        .as_ref()
+        .and_then(|(l, r)| sample::bounds(l, r, bounds.ints(), names.clone(), &degrees).ok());
+    let used = again.as_ref().unwrap_or(bounds);
+    let (lhs, rhs) = match &written {
+        Some((l, r)) if again.is_some() => (l.to_string(), r.to_string()),
+        _ => (bounds.lhs().to_string(), bounds.rhs().to_string()),
+    };
+    let params = used
+        .params()
+        .iter()
+        .zip(used.needs())
+        .zip(points)
+        .map(|((name, &degree), points)| {
+            let (lhs_degree, rhs_degree) = used.describe(name);
+            Param {
+                name: name.clone(),
+                degree,
+                lhs_degree,
+                rhs_degree,
+                points: points.clone(),
+            }
+        })
+        .collect();
+    Equality {
+        ints: bounds.ints().clone(),
+        lhs,
+        rhs,
+        params,
+        rows,
+        polygons,
+    }
+}
+
+/// One recorded equality to re-check, its sides parsed from the file's text.
+pub struct Claimed<'a> {
+    /// The left side.
+    pub lhs: &'a Expr,
+    /// The right side.
+    pub rhs: &'a Expr,
+    /// The integer symbols' values.
+    pub ints: BTreeMap<String, i64>,
+    /// The parameters with their recorded bounds and points.
+    pub params: Vec<Param>,
+    /// Every grid point: where, the left side's and the right side's recorded values.
+    pub rows: Vec<(Vec<BigRational>, Vec<BigRational>, Vec<BigRational>)>,
+}
+
+/// Plain variables: the parameters set at each grid point, one (zero) basis polygon.
+struct Plain(VarEnv<BigRational>);
+
+impl Points<BigRational> for Plain {
+    fn polygons(&self) -> usize {
+        1
+    }
+    fn at(&mut self, _: usize, params: &[String], values: &[BigRational]) -> Result<&dyn Env<BigRational>> {
+        for (p, v) in params.iter().zip(values) {
+            self.0 .0.insert(p.clone(), Value::S(v.clone()));
+        }
+        Ok(&self.0)
+    }
+    fn control_points(&self) -> Vec<(String, Vec<i64>)> {
+        Vec::new()
+    }
+}
+
+fn list(v: &[BigRational]) -> String {
+    v.iter().map(ToString::to_string).collect::<Vec<_>>().join(", ")
+}
+
+/// Re-checks recorded equalities: for each, the kernel derives the degree bounds again (they
+/// must be the recorded ones), checks the points distinct and more than the bound, evaluates
+/// both sides at every grid point (the recorded rows, in grid order, must list exactly those
+/// points and both sides' values). The error names the first failing obligation.
+pub fn recheck_sampled(claimed: &[Claimed<'_>]) -> std::result::Result<Proof, String> {
+    let total: usize = claimed.iter().map(|c| c.rows.len()).sum();
+    if total > MAX_RECHECK_POINTS {
+        return Err(format!(
+            "{total} grid points: more than the limit of {MAX_RECHECK_POINTS} per file"
+        ));
+    }
+    let mut cases = Vec::with_capacity(claimed.len());
+    for (i, c) in claimed.iter().enumerate() {
+        let at = |m: String| format!("equality {i}: {m}");
+        let names: Vec<String> = c.params.iter().map(|p| p.name.clone()).collect();
+        let degrees = VarEnv(
+            names
+                .iter()
+                .map(|v| (v.clone(), Value::S(Deg::var(v))))
+                .collect::<BTreeMap<_, _>>(),
+        );
+        let bounds = sample::bounds(c.lhs, c.rhs, &c.ints, names.clone(), &degrees).map_err(|e| at(e.to_string()))?;
+        for (p, &need) in c.params.iter().zip(bounds.needs()) {
+            let (l, r) = bounds.describe(&p.name);
+            if (p.degree, &p.lhs_degree, &p.rhs_degree) != (need, &l, &r) {
+                return Err(at(format!(
+                    "degree bound of {}: the file says {} (sides {}, {}), the kernel derives {need} (sides {l}, {r})",
+                    p.name, p.degree, p.lhs_degree, p.rhs_degree
+                )));
+            }
+        }
+        let points: Vec<Vec<BigRational>> = c.params.iter().map(|p| p.points.clone()).collect();
+        let grid = points.iter().try_fold(1usize, |acc, p| acc.checked_mul(p.len()));
+        if grid != Some(c.rows.len()) {
+            return Err(at(format!(
+                "{} value rows for a grid of {} points",
+                c.rows.len(),
+                grid.map_or("too many".into(), |g| g.to_string())
+            )));
+        }
+        let mut k = 0;
+        let mut mismatch: Option<String> = None;
+        let mut observe = |values: &[BigRational], _: usize, l: &Value<BigRational>| {
+            if mismatch.is_some() {
+                return;
+            }
+            let (row_at, row_l, row_r) = &c.rows[k];
+            k += 1;
+            let got: Vec<BigRational> = l.entries().into_iter().cloned().collect();
+            if row_at.as_slice() != values {
+                mismatch = Some(format!(
+                    "row {}: at ({}), the grid's point is ({})",
+                    k - 1,
+                    list(row_at),
+                    list(values)
+                ));
+            } else if *row_l != got {
+                mismatch = Some(format!(
+                    "at ({}): the left side is ({}), the file says ({})",
+                    list(values),
+                    list(&got),
+                    list(row_l)
+                ));
+            } else if *row_r != got {
+                mismatch = Some(format!(
+                    "at ({}): the right side is ({}), the file says ({})",
+                    list(values),
+                    list(&got),
+                    list(row_r)
+                ));
+            }
+        };
+        let outcome = sample::check_pair(&bounds, &mut Plain(VarEnv(BTreeMap::new())), &points, &mut observe)
+            .map_err(|e| at(e.to_string()))?;
+        if let Some(m) = mismatch {
+            return Err(at(m));
+        }
+        match outcome {
+            Pair::Equal(case) => cases.push(case),
+            Pair::Differs { at: p, lhs, rhs, .. } => {
+                return Err(at(format!("at ({}): the sides differ, {lhs} and {rhs}", list(&p))))
+            }
+            Pair::Vanishes { index, error } => {
+                return Err(at(format!("a denominator vanishes at grid point {index:?} ({error})")))
+            }
+        }
+    }
+    super::check_sampled(&cases)
+}
+
+/// Re-checks a counterexample: both sides of `lhs = rhs` evaluated at `ints` and `at` must be
+/// the recorded values, and differ.
+pub fn recheck_refutation(
+    lhs: &Expr,
+    rhs: &Expr,
+    ints: &BTreeMap<String, i64>,
+    at: &[(String, BigRational)],
+    recorded: (&[BigRational], &[BigRational]),
+) -> std::result::Result<(), String> {
+    let env = VarEnv(at.iter().map(|(k, v)| (k.clone(), Value::S(v.clone()))).collect());
+    let side = |e: &Expr, which: &str, want: &[BigRational]| -> std::result::Result<Value<BigRational>, String> {
+        let v = super::eval::Evaluator::new(&env, ints.clone())
+            .eval(e)
+            .map_err(|err| format!("the {which} side: {err}"))?;
+        let got: Vec<BigRational> = v.entries().into_iter().cloned().collect();
+        if got != want {
+            return Err(format!(
+                "the {which} side is ({}), the file says ({})",
+                list(&got),
+                list(want)
+            ));
+        }
+        Ok(v)
+    };
+    let l = side(lhs, "left", recorded.0)?;
+    let r = side(rhs, "right", recorded.1)?;
+    match l.equals(&r) {
+        Some(false) => Ok(()),
+        Some(true) => Err(format!("both sides are ({}): no counterexample", l)),
+        None => Err("the sides cannot be compared".into()),
+    }
+}
+
+/// The printed entries of a value.
+pub(super) fn entries<A: super::alg::Alg>(v: &Value<A>) -> Vec<String> {
+    v.entries().into_iter().map(ToString::to_string).collect()
+}

@@ -1,0 +1,320 @@
+//! Certificates as data (`docs/certificates.md`): the texts' certificates in
+//! `tests/certificates/texts/` are what `prove --certificates` writes today, the kernel
+//! re-checks every re-checkable one, and tampered copies are refused — or, where a mutant
+//! still proves its (changed) goal, the search proves that goal too.
+
+use casteljau::verify::{check_certificate, claims, identity_file, prove_files, write_certificates, Recheck, Verdict};
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+
+const DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/certificates/texts");
+
+fn committed() -> Vec<(PathBuf, String)> {
+    let mut files: Vec<PathBuf> = std::fs::read_dir(DIR)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "json"))
+        .collect();
+    files.sort();
+    files
+        .into_iter()
+        .map(|p| (p.clone(), std::fs::read_to_string(p).unwrap()))
+        .collect()
+}
+
+#[test]
+fn the_committed_certificates_are_what_prove_writes() {
+    let proofs = Path::new(env!("CARGO_MANIFEST_DIR")).join("proofs");
+    let files = claims::load_paths(&[proofs]).unwrap();
+    let report = prove_files(&files, &mut |_, _, _| {}).unwrap();
+    let out = std::env::temp_dir().join(format!("casteljau-cert-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&out);
+    assert_eq!(write_certificates(&report, &out).unwrap(), 155);
+    let written = std::fs::read_dir(&out).unwrap().count();
+    assert_eq!(written, 155, "one file per claim");
+    for (path, text) in committed() {
+        let name = path.file_name().unwrap();
+        let fresh = std::fs::read_to_string(out.join(name)).unwrap();
+        assert!(
+            fresh == text,
+            "{} is stale: run prove --certificates tests/certificates/texts",
+            name.to_string_lossy()
+        );
+    }
+    assert_eq!(committed().len(), 155);
+    std::fs::remove_dir_all(&out).unwrap();
+}
+
+#[test]
+fn every_recheckable_certificate_is_accepted_and_the_others_say_why() {
+    let (mut accepted, mut none) = (0, 0);
+    for (path, text) in committed() {
+        let cert: Value = serde_json::from_str(&text).unwrap();
+        let r = check_certificate(&text);
+        match cert["check"].as_str().unwrap() {
+            "kernel" => {
+                assert!(matches!(r, Recheck::Accepted(_)), "{}: {r:?}", path.display());
+                accepted += 1;
+            }
+            _ => {
+                assert!(
+                    matches!(r, Recheck::NotChecked(ref why) if !why.is_empty()),
+                    "{}: {r:?}",
+                    path.display()
+                );
+                none += 1;
+            }
+        }
+    }
+    assert_eq!((accepted, none), (47, 108));
+}
+
+/// Where a mutant changes the file.
+fn is_rational(s: &str) -> bool {
+    let body = s.strip_prefix('-').unwrap_or(s);
+    !body.is_empty()
+        && body.split('/').count() <= 2
+        && body
+            .split('/')
+            .all(|p| !p.is_empty() && p.bytes().all(|b| b.is_ascii_digit()))
+}
+
+fn bump_rational(s: &str) -> Vec<String> {
+    let (num, den) = s.split_once('/').unwrap_or((s, "1"));
+    let n: i128 = num.parse().unwrap();
+    let d: i128 = den.parse().unwrap();
+    let mut out = vec![if d == 1 {
+        format!("{}", n + 1)
+    } else {
+        format!("{}/{d}", n + d)
+    }];
+    if n != 0 {
+        out.push(if d == 1 {
+            format!("{}", -n)
+        } else {
+            format!("{}/{d}", -n)
+        });
+    }
+    out
+}
+
+/// Every digit run of an expression incremented, one at a time, and its first sign flipped.
+fn edit_expression(s: &str) -> Vec<String> {
+    let bytes = s.as_bytes();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < bytes.len() {
+        if bytes[i].is_ascii_digit() {
+            let start = i;
+            while i < bytes.len() && bytes[i].is_ascii_digit() {
+                i += 1;
+            }
+            let n: u64 = s[start..i].parse().unwrap();
+            out.push(format!("{}{}{}", &s[..start], n + 1, &s[i..]));
+        } else {
+            i += 1;
+        }
+    }
+    for (from, to) in [(" + ", " - "), (" - ", " + ")] {
+        if let Some(k) = s.find(from) {
+            out.push(format!("{}{to}{}", &s[..k], &s[k + from.len()..]));
+        }
+    }
+    out
+}
+
+/// Most mutants of the numbers of one file (spread evenly over its leaves): the largest file
+/// has 4,356 grid points.
+const PER_FILE: usize = 250;
+
+/// The mutants of one certificate: the numbers of its data, its degree bounds, its integer
+/// cases, each goal expression edited (its data kept), each equality's sides swapped, a row
+/// dropped (at most [`PER_FILE`] edits of leaves, and five equalities, per file).
+fn mutants(cert: &Value) -> Vec<(String, Value)> {
+    // (path, replacement) pairs, built before any copy of the file is made.
+    fn walk(v: &Value, path: &mut Vec<String>, edits: &mut Vec<(Vec<String>, Value)>) {
+        let key = path.last().map(String::as_str).unwrap_or("");
+        let mut set = |new: Value| edits.push((path.clone(), new));
+        match v {
+            Value::Object(o) => {
+                for (k, x) in o {
+                    path.push(k.clone());
+                    walk(x, path, edits);
+                    path.pop();
+                }
+            }
+            Value::Array(a) => {
+                for (i, x) in a.iter().enumerate() {
+                    path.push(i.to_string());
+                    walk(x, path, edits);
+                    path.pop();
+                }
+            }
+            Value::Number(n) => {
+                let n = n.as_u64().unwrap();
+                set(Value::from(n + 1));
+                if n > 0 {
+                    set(Value::from(n - 1));
+                }
+            }
+            Value::String(s) if (key == "lhs" || key == "rhs") && path[0] == "goal" => {
+                for e in edit_expression(s) {
+                    set(Value::from(e));
+                }
+            }
+            Value::String(s) if key == "lhs_degree" || key == "rhs_degree" => {
+                let (num, rest) = s
+                    .split_once('/')
+                    .map_or((s.as_str(), String::new()), |(a, b)| (a, format!("/{b}")));
+                let n: u64 = num.parse().unwrap();
+                set(Value::from(format!("{}{rest}", n + 1)));
+            }
+            Value::String(s) if is_rational(s) => {
+                for b in bump_rational(s) {
+                    set(Value::from(b));
+                }
+            }
+            _ => {}
+        }
+    }
+    let mut edits = Vec::new();
+    for part in ["goal", "sampling", "fails"] {
+        if let Some(v) = cert.get(part) {
+            walk(v, &mut vec![part.to_string()], &mut edits);
+        }
+    }
+    let step = edits.len().div_ceil(PER_FILE).max(1);
+    let mut out: Vec<(String, Value)> = edits
+        .into_iter()
+        .step_by(step)
+        .map(|(path, new)| {
+            let mut m = cert.clone();
+            let mut at = &mut m;
+            for k in &path {
+                at = match at {
+                    Value::Array(a) => &mut a[k.parse::<usize>().unwrap()],
+                    Value::Object(o) => o.get_mut(k).unwrap(),
+                    _ => unreachable!(),
+                };
+            }
+            *at = new;
+            let label: Vec<&str> = path
+                .iter()
+                .map(|k| if k.parse::<usize>().is_ok() { "#" } else { k })
+                .collect();
+            (label.join("."), m)
+        })
+        .collect();
+    let eqs = cert["goal"]["equalities"].as_array().unwrap();
+    for i in 0..eqs.len().min(5) {
+        let mut m = cert.clone();
+        let eq = &mut m["goal"]["equalities"][i];
+        let (l, r) = (eq["lhs"].clone(), eq["rhs"].clone());
+        eq["lhs"] = r;
+        eq["rhs"] = l;
+        out.push(("swapped sides".into(), m));
+        if let Some(rows) = cert["sampling"]["equalities"][i]["values"].as_array() {
+            let mut m = cert.clone();
+            m["sampling"]["equalities"][i]["values"]
+                .as_array_mut()
+                .unwrap()
+                .remove(rows.len() - 1);
+            out.push(("a row dropped".into(), m));
+        }
+    }
+    out
+}
+
+/// The search's verdict on one equality of a goal, at its integer case.
+fn searched(eq: &Value, reals: &[String]) -> Verdict {
+    let ranges: Vec<String> = eq["ints"]
+        .as_object()
+        .unwrap()
+        .iter()
+        .map(|(k, v)| format!("{k} = {0}..={0}", v.as_str().unwrap()))
+        .collect();
+    let identity = format!("{} = {}", eq["lhs"].as_str().unwrap(), eq["rhs"].as_str().unwrap());
+    let file = match identity_file(&identity, &ranges, Some(reals)) {
+        Ok(f) => f,
+        Err(_) => return Verdict::Error,
+    };
+    prove_files(&[file], &mut |_, _, _| {}).unwrap().outcomes[0].verdict
+}
+
+#[test]
+fn tampered_certificates_are_refused_or_prove_a_true_goal() {
+    let (mut total, mut refused, mut still_true) = (0, 0, 0);
+    let mut kinds = std::collections::BTreeMap::new();
+    for (path, text) in committed() {
+        let cert: Value = serde_json::from_str(&text).unwrap();
+        if cert["check"] != "kernel" {
+            continue;
+        }
+        for (label, m) in mutants(&cert) {
+            total += 1;
+            if std::env::var("CERT_DEBUG").is_ok() {
+                eprintln!("{} {total}", path.display());
+            }
+            match check_certificate(&m.to_string()) {
+                Recheck::Refused(why) => {
+                    assert!(why.contains(':') || !why.is_empty());
+                    refused += 1;
+                }
+                Recheck::NotChecked(why) => panic!("{}: a mutant not checked: {why}", path.display()),
+                Recheck::Accepted(_) => {
+                    // The mutant still proves (or refutes) its goal: the search must agree.
+                    let reals: Vec<String> = m["goal"]["symbols"]
+                        .as_array()
+                        .unwrap()
+                        .iter()
+                        .filter(|s| s["sort"] == "real")
+                        .map(|s| s["name"].as_str().unwrap().to_string())
+                        .collect();
+                    let eqs = m["goal"]["equalities"].as_array().unwrap();
+                    if m["verdict"] == "fails" {
+                        let k = m["fails"]["equality"].as_u64().unwrap() as usize;
+                        assert_eq!(searched(&eqs[k], &reals), Verdict::Fails, "{}: {m}", path.display());
+                    } else {
+                        for eq in eqs {
+                            let v = searched(eq, &reals);
+                            assert!(
+                                v == Verdict::Proved || v == Verdict::ProvedInRange,
+                                "{}: an accepted mutant whose goal the search does not prove ({v:?}): {m}",
+                                path.display()
+                            );
+                        }
+                    }
+                    still_true += 1;
+                    *kinds.entry(label).or_insert(0) += 1;
+                }
+            }
+        }
+    }
+    eprintln!("accepted mutants by kind: {kinds:?}");
+    eprintln!("tampering: {total} mutants, {refused} refused, {still_true} accepted with a goal the search proves");
+    assert!(total >= 2_000, "{total} mutants");
+    assert_eq!(total, refused + still_true);
+}
+
+#[test]
+fn bad_files_are_refused_with_a_reason_not_a_panic() {
+    for text in [
+        "",
+        "{",
+        "[]",
+        "{\"format\": 1}",
+        "{\"format\": \"casteljau-certificate\", \"version\": 2}",
+    ] {
+        assert!(matches!(check_certificate(text), Recheck::Refused(_)), "{text}");
+    }
+    let (_, good) = committed()
+        .into_iter()
+        .find(|(p, _)| p.ends_with("000-ex4-x.json"))
+        .unwrap();
+    let mut cert: Value = serde_json::from_str(&good).unwrap();
+    cert["goal"]["equalities"][0]["lhs"] = Value::from("b(t)");
+    match check_certificate(&cert.to_string()) {
+        Recheck::Refused(why) => assert!(why.contains("equality 0"), "{why}"),
+        other => panic!("{other:?}"),
+    }
+}
