@@ -1,0 +1,120 @@
+//! Users' own claims (issue 46), classes 1 and 4: true identities from the books proved for
+//! every n, and false variants of them (wrong only at a late n, or only at a zero of the
+//! closed form) that fail or are errors, never proved.
+
+#[path = "support/identity.rs"]
+mod identity;
+
+use casteljau::verify::Verdict;
+use identity::check_scoped;
+
+/// The claim `lhs = rhs` for every `n ≥ 0` (and `t`), with the proof's steps recorded.
+fn claim(lhs: &str, rhs: &str) -> casteljau::Result<(Verdict, Option<String>, String)> {
+    check_scoped(&format!("for = [\"n = 0..\"]\nlhs = \"{lhs}\"\nrhs = \"{rhs}\""))
+}
+
+/// Proved for every n (no range): the certificate.
+fn proved(lhs: &str, rhs: &str) -> String {
+    let out = claim(lhs, rhs);
+    let Ok((v, range, c)) = out else {
+        panic!("{lhs} = {rhs}: {out:?}");
+    };
+    assert!(
+        v == Verdict::Proved && range.is_none(),
+        "{lhs} = {rhs}: {v:?} {range:?} {c}"
+    );
+    c
+}
+
+/// A false claim: `fails`, or an error; never proved.
+fn not_proved(lhs: &str, rhs: &str) -> Option<String> {
+    match claim(lhs, rhs) {
+        Ok((v, _, c)) => {
+            assert!(v == Verdict::Fails, "{lhs} = {rhs}: {v:?} {c}");
+            Some(c)
+        }
+        Err(_) => None,
+    }
+}
+
+// Class 1: a closed form that vanishes for some n. Its zeros are checked directly and the
+// induction starts past them.
+
+#[test]
+fn factorial_moments_of_the_binomial_row() {
+    // Petkovšek–Wilf–Zeilberger, "A = B", §1 and ch. 5 examples: the falling factorial
+    // moments Σ_k k(k−1)…(k−r+1) C(n,k) = n(n−1)…(n−r+1) 2^(n−r), zero for n < r.
+    let c = proved("sum(k, 0, n, k*(k-1)*C(n, k))", "n*(n-1)*2^(n-2)");
+    assert!(c.contains("n = 0..=1 checked directly"), "{c}");
+    let c = proved("sum(k, 0, n, k*(k-1)*(k-2)*C(n, k))", "n*(n-1)*(n-2)*2^(n-3)");
+    assert!(c.contains("n = 0..=2 checked directly"), "{c}");
+    // A factor (n − 50) on both sides: n = 0..=50 checked directly.
+    let c = proved("sum(k, 0, n, (n-50)*C(n, k))", "(n-50)*2^n");
+    assert!(c.contains("n = 0..=50 checked directly"), "{c}");
+}
+
+#[test]
+fn bernstein_moments_vanishing_for_small_degree() {
+    // Farin, "Curves and Surfaces for CAGD", §5 (degree elevation and the second moment of
+    // the Bernstein polynomials); Prautzsch–Boehm–Paluszny, §2.3: Σ_i i(i−1) B_i^n(t) =
+    // n(n−1) t², zero for n = 0, 1.
+    let c = proved("sum(i, 0, n, i*(i-1)*B(i, n, t))", "n*(n-1)*t^2");
+    assert!(c.contains("n = 0..=1 checked directly"), "{c}");
+}
+
+#[test]
+fn false_closed_forms_wrong_only_at_a_zero_or_late_are_never_proved() {
+    // Wrong only at n = 2, a zero of n(n−1)(n−2): C(2, n)·C(n, 2) is 1 there and 0 elsewhere.
+    let c = not_proved(
+        "sum(k, 0, n, k*(k-1)*(k-2)*C(n, k))",
+        "n*(n-1)*(n-2)*2^(n-3) + C(2, n)*C(n, 2)",
+    );
+    assert!(c.is_some_and(|c| c.contains("at n = 2")));
+    // Wrong only at n = 50, the zero of the factor (n − 50), past the refutation window.
+    not_proved("sum(k, 0, n, (n-50)*C(n, k))", "(n-50)*2^n + C(0, n-50)");
+    // Wrong only from n = 45 on.
+    not_proved(
+        "sum(k, 0, n, k*(k-1)*(k-2)*C(n, k))",
+        "n*(n-1)*(n-2)*2^(n-3) + C(n, 45)",
+    );
+    // The zeros shifted: wrong everywhere but where both vanish.
+    not_proved("sum(k, 0, n, k*(k-1)*C(n, k))", "n*(n-2)*2^(n-2)");
+}
+
+// Class 4: sums of several terms, gathered into one hypergeometric term (the kernel proves
+// the gathered summand equal to the written one).
+
+#[test]
+fn sums_of_several_terms() {
+    // "A = B", §1.2: Σ_k (k + 1) C(n, k) = (n + 2) 2^(n−1).
+    proved("sum(k, 0, n, (k+1)*C(n, k))", "(n+2)*2^(n-1)");
+    // "A = B": the symmetric sum Σ_k (2k − n) C(n, k)² vanishes.
+    proved("sum(k, 0, n, (2*k - n)*C(n, k)^2)", "0");
+    // Prautzsch–Boehm–Paluszny, §2.3 (linear precision and the variance of the Bernstein
+    // weights): Σ_i (i − nt) B_i^n(t) = 0 and Σ_i (i − nt)² B_i^n(t) = n t (1 − t).
+    proved("sum(i, 0, n, (i - n*t)*B(i, n, t))", "0");
+    proved("sum(i, 0, n, (i - n*t)^2*B(i, n, t))", "n*t*(1-t)");
+}
+
+#[test]
+fn derivatives_of_sums_whose_summand_has_several_terms() {
+    // Farin, §5.3 (derivatives of a Bézier curve, here the control points b_i = i): the
+    // derivative's summand is i·C(n,i)(i t^(i−1)(1−t)^(n−i) − (n−i) t^i (1−t)^(n−i−1)), two
+    // terms with exponents one apart.
+    proved("diff(sum(i, 0, n, i*B(i, n, t)), t)", "n");
+    // Prautzsch–Boehm–Paluszny, §2.4: the basis sums to 1, so its derivative vanishes.
+    proved("diff(sum(i, 0, n, B(i, n, t)), t)", "0");
+}
+
+#[test]
+fn false_sums_of_several_terms_are_never_proved() {
+    // Wrong from n = 60 on only.
+    not_proved("sum(k, 0, n, (k+1)*C(n, k))", "(n+2)*2^(n-1) + C(n, 60)");
+    // Wrong from n = 45 on only, in t.
+    not_proved("diff(sum(i, 0, n, i*B(i, n, t)), t)", "n + C(n, 45)*t");
+    // Wrong only at n = 0.
+    let c = not_proved("diff(sum(i, 0, n, i*B(i, n, t)), t)", "n + C(0, n)*(1-t)");
+    assert!(c.is_some_and(|c| c.contains("at n = 0")));
+    // The variance with a wrong sign.
+    not_proved("sum(i, 0, n, (i - n*t)^2*B(i, n, t))", "n*t*(t-1)");
+}
