@@ -1,6 +1,6 @@
-//! Users' own claims (issue 46), classes 1 and 4: true identities from the books proved for
-//! every n, and false variants of them (wrong only at a late n, or only at a zero of the
-//! closed form) that fail or are errors, never proved.
+//! Users' own claims (issue 46), classes 1, 4, 6 and 7: true identities from the books proved
+//! for every n, and false variants of them (wrong only at a late n, only at a zero of the
+//! closed form, only on one piece of a split domain) that fail or are errors, never proved.
 
 #[path = "support/identity.rs"]
 mod identity;
@@ -10,12 +10,26 @@ use identity::check_scoped;
 
 /// The claim `lhs = rhs` for every `n ≥ 0` (and `t`), with the proof's steps recorded.
 fn claim(lhs: &str, rhs: &str) -> casteljau::Result<(Verdict, Option<String>, String)> {
-    check_scoped(&format!("for = [\"n = 0..\"]\nlhs = \"{lhs}\"\nrhs = \"{rhs}\""))
+    claim_on(&["n = 0.."], lhs, rhs)
+}
+
+/// The claim `lhs = rhs` on the ranges `ranges`.
+fn claim_on(ranges: &[&str], lhs: &str, rhs: &str) -> casteljau::Result<(Verdict, Option<String>, String)> {
+    let ranges: Vec<String> = ranges.iter().map(|r| format!("\"{r}\"")).collect();
+    check_scoped(&format!(
+        "for = [{}]\nlhs = \"{lhs}\"\nrhs = \"{rhs}\"",
+        ranges.join(", ")
+    ))
 }
 
 /// Proved for every n (no range): the certificate.
 fn proved(lhs: &str, rhs: &str) -> String {
-    let out = claim(lhs, rhs);
+    proved_on(&["n = 0.."], lhs, rhs)
+}
+
+/// Proved for every point of the open ranges (no range in the verdict): the certificate.
+fn proved_on(ranges: &[&str], lhs: &str, rhs: &str) -> String {
+    let out = claim_on(ranges, lhs, rhs);
     let Ok((v, range, c)) = out else {
         panic!("{lhs} = {rhs}: {out:?}");
     };
@@ -28,7 +42,12 @@ fn proved(lhs: &str, rhs: &str) -> String {
 
 /// A false claim: `fails`, or an error; never proved.
 fn not_proved(lhs: &str, rhs: &str) -> Option<String> {
-    match claim(lhs, rhs) {
+    not_proved_on(&["n = 0.."], lhs, rhs)
+}
+
+/// A false claim on the ranges `ranges`: `fails`, or an error; never proved.
+fn not_proved_on(ranges: &[&str], lhs: &str, rhs: &str) -> Option<String> {
+    match claim_on(ranges, lhs, rhs) {
         Ok((v, _, c)) => {
             assert!(v == Verdict::Fails, "{lhs} = {rhs}: {v:?} {c}");
             Some(c)
@@ -117,4 +136,36 @@ fn false_sums_of_several_terms_are_never_proved() {
     assert!(c.is_some_and(|c| c.contains("at n = 0")));
     // The variance with a wrong sign.
     not_proved("sum(i, 0, n, (i - n*t)^2*B(i, n, t))", "n*t*(t-1)");
+}
+
+// Class 6: powers with symbolic exponents and constant factors, written one way by the
+// kernel (`(−1)^e` by the parity of `e`, constants by their prime factors).
+
+#[test]
+fn powers_with_constant_factors() {
+    // "A = B", §1.1 (the binomial theorem at x = −2 and at x = 2²):
+    // Σ_k C(n,k) (−2)^k = (−1)^n and Σ_k C(n,k) 2^(2k) = 5^n.
+    proved("sum(k, 0, n, C(n, k)*(-2)^k)", "(-1)^n");
+    proved("sum(k, 0, n, C(n, k)*2^(2*k))", "5^n");
+    // Prautzsch–Boehm–Paluszny, §2.1, and Farin, §5.1 (Bernstein and power form):
+    // B_0^n(t) = (1 − t)^n = (−1)^n (t − 1)^n.
+    proved("B(0, n, t)", "(-1)^n*(t-1)^n");
+    // The issue's forms.
+    proved("(1-t)^n*(t-1)^(-n)", "(-1)^n");
+    proved("(-1)^(2*n)", "1");
+    proved("(-2*t)^n", "(-1)^n*2^n*t^n");
+    proved("4^n", "2^(2*n)");
+    proved("6^n*(1/3)^n", "2^n");
+}
+
+#[test]
+fn false_powers_are_never_proved() {
+    let c = not_proved("(-1)^(2*n+1)", "1");
+    assert!(c.is_some_and(|c| c.contains("at n = 0")));
+    let c = not_proved("(1-t)^n*(t-1)^(-n)", "1");
+    assert!(c.is_some_and(|c| c.contains("n = 1")));
+    not_proved("(-2*t)^n", "2^n*t^n");
+    // Wrong from n = 45 or n = 50 on only.
+    not_proved("4^n", "2^(2*n) + C(n, 45)");
+    not_proved("sum(k, 0, n, C(n, k)*(-2)^k)", "(-1)^n + C(n, 50)");
 }
