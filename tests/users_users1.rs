@@ -169,3 +169,37 @@ fn false_powers_are_never_proved() {
     not_proved("4^n", "2^(2*n) + C(n, 45)");
     not_proved("sum(k, 0, n, C(n, k)*(-2)^k)", "(-1)^n + C(n, 50)");
 }
+
+// Class 7: a symbol with two lower bounds neither implying the other (`n ≥ 0` and
+// `n ≥ j − 1` on `0 ≤ j ≤ n + 1`): the domain split by which one is larger, the values of
+// `j` that constants bound on a piece written out one by one.
+
+#[test]
+fn two_lower_bounds() {
+    let on = ["n = 0..", "j = 0..=n+1"];
+    // "A = B", ch. 1 (the upper summation, "hockey stick", identity), for degree n + 1:
+    // Σ_{i=j}^{n+1} C(i, j) = C(n+2, j+1).
+    proved_on(&on, "sum(i, j, n+1, C(i, j))", "C(n+2, j+1)");
+    // "A = B", ch. 1 (trinomial revision summed), as in the subdivision of a Bézier curve
+    // of degree n + 1 (Prautzsch–Boehm–Paluszny, §2.5):
+    // Σ_i C(n+1, i) C(i, j) = C(n+1, j) 2^(n+1−j).
+    proved_on(&on, "sum(i, 0, n+1, C(n+1, i)*C(i, j))", "C(n+1, j)*2^(n+1-j)");
+}
+
+#[test]
+fn false_claims_with_two_lower_bounds_are_never_proved() {
+    let on = ["n = 0..", "j = 0..=n+1"];
+    // Wrong only at j = 0 (a piece of its own).
+    let c = not_proved_on(&on, "sum(i, j, n+1, C(i, j))", "C(n+2, j+1) + C(0, j)");
+    assert!(c.is_some_and(|c| c.contains("j = 0")));
+    // Wrong only at j = 0 or only at j = 1, and only from n = 45 on.
+    not_proved_on(&on, "sum(i, j, n+1, C(i, j))", "C(n+2, j+1) + C(0, j)*C(n, 45)");
+    not_proved_on(&on, "sum(i, j, n+1, C(i, j))", "C(n+2, j+1) + C(0, j-1)*C(n, 45)");
+    // Wrong only from n = 45 on, for every j.
+    not_proved_on(&on, "sum(i, j, n+1, C(i, j))", "C(n+2, j+1) + C(n, 45)");
+    not_proved_on(
+        &on,
+        "sum(i, 0, n+1, C(n+1, i)*C(i, j))",
+        "C(n+1, j)*2^(n+1-j) + C(0, j)*C(n, 50)",
+    );
+}

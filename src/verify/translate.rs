@@ -17,6 +17,7 @@ use num_traits::Zero;
 mod bounds;
 mod like;
 mod setup;
+mod split;
 
 use bounds::{end_point, on_range, support_end, support_start, without_redundant};
 pub(crate) use setup::prepare;
@@ -550,11 +551,29 @@ impl<'a> Translator<'a> {
                 (&pruned, found(&pruned))
             }
         };
-        let n = n.ok_or_else(|| {
-            Error::Domain(format!(
+        let Some(n) = n else {
+            // Two lower bounds neither implying the other: the sum on each piece of the domain
+            // where one of them is the larger, against the closed form.
+            if let (Some(h), Some(pieces)) = (&hint, split::by_lower_bound(d, a, b)) {
+                for (piece, pin) in pieces {
+                    match pin {
+                        Some((y, v)) => self.wz(
+                            k,
+                            &a.subst(&y, &v),
+                            &b.subst(&y, &v),
+                            lin_subst(sym, &f, &y, &v),
+                            &piece.subst(&y, &v),
+                            Some(lin_subst(sym, h, &y, &v)),
+                        )?,
+                        None => self.wz(k, a, b, f.clone(), &piece, Some(h.clone()))?,
+                    };
+                }
+                return Ok(h.clone());
+            }
+            return Err(Error::Domain(format!(
                 "{what}: the upper bound must be m + c for an integer symbol m with one lower bound, and the lower bound must not depend on it"
-            ))
-        })?;
+            )));
+        };
         let low = d.cons.iter().find(|c| c.coef(&n) == 1).expect("found above");
         let n0 = low.minus(&Aff::var(&n)).scaled(-1);
         let rest = Domain {
