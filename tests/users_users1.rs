@@ -8,12 +8,7 @@ mod identity;
 use casteljau::verify::Verdict;
 use identity::check_scoped;
 
-/// The claim `lhs = rhs` for every `n ≥ 0` (and `t`), with the proof's steps recorded.
-fn claim(lhs: &str, rhs: &str) -> casteljau::Result<(Verdict, Option<String>, String)> {
-    claim_on(&["n = 0.."], lhs, rhs)
-}
-
-/// The claim `lhs = rhs` on the ranges `ranges`.
+/// The claim `lhs = rhs` on the ranges `ranges`, with the proof's steps recorded.
 fn claim_on(ranges: &[&str], lhs: &str, rhs: &str) -> casteljau::Result<(Verdict, Option<String>, String)> {
     let ranges: Vec<String> = ranges.iter().map(|r| format!("\"{r}\"")).collect();
     check_scoped(&format!(

@@ -63,7 +63,7 @@ fn split(c: &BigRational, e: &Aff) -> Option<Vec<(Base, Aff)>> {
         while d < TRIAL && x > BigInt::one() {
             let p = BigInt::from(d);
             let mut a = 0i64;
-            while (&x).is_multiple_of(&p) {
+            while x.is_multiple_of(&p) {
                 x /= &p;
                 a += 1;
             }
