@@ -15,7 +15,9 @@ use crate::error::{Error, Result};
 use num_traits::Zero;
 
 mod bounds;
+mod like;
 mod setup;
+mod split;
 
 use bounds::{end_point, on_range, support_end, support_start, without_redundant};
 pub(crate) use setup::prepare;
@@ -484,10 +486,34 @@ impl<'a> Translator<'a> {
         });
         let av = support_start(v, &av, &bv, &rest, d);
         let bv = support_end(v, &av, &bv, &rest, d);
-        on_range(&mut rest, &d.with(Aff::var(v).minus(&av)).with(bv.minus(&Aff::var(v))));
+        let dk = d.with(Aff::var(v).minus(&av)).with(bv.minus(&Aff::var(v)));
+        on_range(&mut rest, &dk);
+        let (rest, hint) = self.gathered(v, rest, hint, &dk)?;
         let closed = self.wz(v, &av, &bv, rest, d, hint)?;
         resolved.extend(closed);
         Ok(resolved)
+    }
+
+    /// A summand of several terms with no certificate given, gathered into fewer like terms
+    /// (`like`), the kernel proving them equal to the summand on `dk` (the summation range);
+    /// the closed form gathered too (the caller compares it with the side it came from).
+    fn gathered(&mut self, k: &str, f: Lin, hint: Option<Lin>, dk: &Domain) -> Result<(Lin, Option<Lin>)> {
+        if f.len() < 2 || self.certs.get(self.next_cert).is_some() {
+            return Ok((f, hint));
+        }
+        let g = like::gather(&f)?;
+        if g.len() == f.len() {
+            return Ok((f, hint));
+        }
+        let mut same = f.clone();
+        same.extend(lin_neg(&g));
+        let what = format!("the summand of Σ_{k} as {} like term(s)", g.len());
+        self.expect_zero(&same, dk, &what)?;
+        let hint = match hint {
+            Some(h) if h.len() > 1 => Some(like::gather(&h)?),
+            h => h,
+        };
+        Ok((g, hint))
     }
 
     /// Evaluates `Σ_{k=a}^{b} F` by a WZ certificate (see the module documentation); returns
@@ -525,11 +551,29 @@ impl<'a> Translator<'a> {
                 (&pruned, found(&pruned))
             }
         };
-        let n = n.ok_or_else(|| {
-            Error::Domain(format!(
+        let Some(n) = n else {
+            // Two lower bounds neither implying the other: the sum on each piece of the domain
+            // where one of them is the larger, against the closed form.
+            if let (Some(h), Some(pieces)) = (&hint, split::by_lower_bound(d, a, b)) {
+                for (piece, pin) in pieces {
+                    match pin {
+                        Some((y, v)) => self.wz(
+                            k,
+                            &a.subst(&y, &v),
+                            &b.subst(&y, &v),
+                            lin_subst(sym, &f, &y, &v),
+                            &piece.subst(&y, &v),
+                            Some(lin_subst(sym, h, &y, &v)),
+                        )?,
+                        None => self.wz(k, a, b, f.clone(), &piece, Some(h.clone()))?,
+                    };
+                }
+                return Ok(h.clone());
+            }
+            return Err(Error::Domain(format!(
                 "{what}: the upper bound must be m + c for an integer symbol m with one lower bound, and the lower bound must not depend on it"
-            ))
-        })?;
+            )));
+        };
         let low = d.cons.iter().find(|c| c.coef(&n) == 1).expect("found above");
         let n0 = low.minus(&Aff::var(&n)).scaled(-1);
         let rest = Domain {

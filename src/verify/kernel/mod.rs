@@ -28,6 +28,7 @@ pub(crate) mod expr;
 pub(crate) mod hyper;
 pub(crate) mod pieces;
 pub(crate) mod poly;
+pub(crate) mod powers;
 pub(crate) mod recurrence;
 pub(crate) mod sample;
 

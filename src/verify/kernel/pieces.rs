@@ -533,7 +533,7 @@ fn power_quotient(sym: &Symbols, t: &Term, first: &Term) -> Result<Vec<(Base, Af
             _ => None,
         });
         let Some((i, j, rest)) = split else {
-            return Ok(bases);
+            return Ok(super::powers::constant_bases(bases));
         };
         let divisor = bases[j].0.clone();
         let (_, e) = bases.remove(i);
