@@ -94,18 +94,19 @@ class _Deg:
         if kind == "sum":
             _, v, lo, hi, body = e
             a, b = self.integer(lo, "a sum's bound"), self.integer(hi, "a sum's bound")
-            acc = (0, 0)
+            acc = None
             saved = self.ints.get(v)
             try:
                 for k in range(a, b + 1):
                     self.ints[v] = k
-                    acc = _add(acc, self.go(body))
+                    term = self.go(body)
+                    acc = term if acc is None else _add(acc, term)
             finally:
                 if saved is None:
                     self.ints.pop(v, None)
                 else:
                     self.ints[v] = saved
-            return acc
+            return acc or (0, 0)
         if kind == "index":
             for a in e[2]:
                 self.constant(a, "an index")
@@ -121,14 +122,19 @@ class _Deg:
 
     def call(self, e):
         name, args = e[1], e[2]
-        if name == "B":
-            i = self.integer(args[0], "a Bernstein index")
-            n = self.integer(args[1], "a Bernstein degree")
-            if i < 0 or i > n:
-                return (0, 0)
+        if name in ("B", "__dB"):
+            # as documented, whatever i is (a zero B keeps the bound of degree n)
+            self.constant(args[0], "a Bernstein index")
+            n = max(self.integer(args[1], "a Bernstein degree"), 0)
+            if name == "__dB":
+                n = max(n - self.integer(args[3], "a derivative's order"), 0)
             p, q = self.go(args[2])
             return (n * max(p, q), n * q)
-        if name in ("C", "binom", "sqrt"):
+        if name == "__dpow":
+            e = self.integer(args[1], "an exponent") - self.integer(args[2], "a derivative's order")
+            p, q = self.go(args[0])
+            return (e * p, e * q) if e >= 0 else (-e * q, -e * p)
+        if name in ("C", "binom", "sqrt", "integral"):
             return self.constant(e, name)
         if name == "dot":
             a, b = self.go(args[0]), self.go(args[1])
