@@ -98,8 +98,12 @@ def _show(vals):
     return "(" + ", ".join(str(x) for x in vals) + ")" if len(vals) != 1 else str(vals[0])
 
 
-def check_certificate(doc, name="?"):
-    """Checks one parsed certificate (a dict); returns an `Outcome`."""
+def check_certificate(doc, name="?", symbolic=False):
+    """Checks one parsed certificate (a dict); returns an `Outcome`.
+
+    `symbolic`: also prove each equality of a re-checked `proved` goal as an identity of
+    rational functions with SymPy (`cancel`), a second argument by other means (needs SymPy).
+    """
     if not isinstance(doc, dict):
         return Outcome(name, REFUSED, "the file is not a JSON object")
     cid = doc.get("id") if isinstance(doc.get("id"), str) else name
@@ -114,7 +118,11 @@ def check_certificate(doc, name="?"):
             goal = _Goal(doc.get("goal"))
             _check_range(doc, goal)
             _check_sampling(doc.get("sampling"), goal, method)
-            return out(RECHECKED, f"{len(goal.equalities)} equalities, {_count_points(doc)} points, all exact")
+            detail = f"{len(goal.equalities)} equalities, {_count_points(doc)} points, all exact"
+            if symbolic:
+                _check_symbolic(goal)
+                detail += "; every equality an identity in SymPy"
+            return out(RECHECKED, detail)
         if verdict == "fails":
             goal = _Goal(doc.get("goal"))
             detail = _check_fails(doc.get("fails"), goal)
@@ -130,6 +138,9 @@ def check_certificate(doc, name="?"):
         return out(REFUSED, f"evaluation: {e}")
     except RecursionError:
         return out(REFUSED, "an expression nested too deeply")
+    except (KeyError, TypeError, AttributeError, IndexError, ValueError) as e:
+        # a field of the wrong type or shape that no obligation above names
+        return out(REFUSED, f"malformed certificate: {type(e).__name__}: {e}")
 
 
 def _count_points(doc):
@@ -321,6 +332,14 @@ def _check_grid(values, grids, ints, lhs, rhs, params, where):
         _need(_entries(lv) == _entries(rv), f"{where}: {point}: the sides differ: {_show(_entries(lv))} and {_show(_entries(rv))}")
 
 
+def _check_symbolic(goal):
+    from .cert_sympy import same, to_sympy
+
+    for k, (ints, lhs, rhs, _) in enumerate(goal.equalities):
+        ok = same(to_sympy(lhs, ints), to_sympy(rhs, ints))
+        _need(ok, f"equality {k}: SymPy finds lhs - rhs not identically zero")
+
+
 def _check_fails(fails, goal):
     _need(isinstance(fails, dict), "fails: missing")
     k = fails.get("equality")
@@ -344,17 +363,17 @@ def _check_fails(fails, goal):
     return f"counterexample at {point}: {_show(_entries(lv))} ≠ {_show(_entries(rv))}"
 
 
-def check_path(path):
+def check_path(path, symbolic=False):
     """Outcomes for a certificate file or every `*.json` file of a directory (sorted)."""
     if os.path.isdir(path):
         names = sorted(n for n in os.listdir(path) if n.endswith(".json"))
         if len(names) > MAX_FILES:
             raise ValueError(f"{path}: {len(names)} files (limit {MAX_FILES})")
-        return [_check_file(os.path.join(path, n)) for n in names]
-    return [_check_file(path)]
+        return [_check_file(os.path.join(path, n), symbolic) for n in names]
+    return [_check_file(path, symbolic)]
 
 
-def _check_file(path):
+def _check_file(path, symbolic):
     name = os.path.basename(path)
     try:
         with open(path, "rb") as f:
@@ -367,4 +386,4 @@ def _check_file(path):
         doc = json.loads(data.decode("utf-8"))
     except (UnicodeDecodeError, ValueError) as e:
         return Outcome(name, REFUSED, f"not JSON: {e}")
-    return check_certificate(doc, name)
+    return check_certificate(doc, name, symbolic)

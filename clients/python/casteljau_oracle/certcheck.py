@@ -1,5 +1,7 @@
-"""`python -m casteljau_oracle.certcheck FILE|DIR …`: re-checks `casteljau prove
+"""`python -m casteljau_oracle.certcheck [--symbolic] FILE|DIR …`: re-checks `casteljau prove
 --certificates` files independently of the program (standard library only: `fractions`).
+`--symbolic` also proves each re-checked goal as an identity of rational functions with
+SymPy (the extra `casteljau-oracle[check]`).
 
 Prints one line per certificate — `re-checked`, `refused` (the first failing obligation) or
 `not re-checked` (why) — then a summary. Exit status 1 when a file is refused, else 0.
@@ -17,10 +19,18 @@ def main(argv=None):
     if not args or args[0] in ("-h", "--help"):
         print(__doc__.strip())
         return 0 if args else 2
+    symbolic = "--symbolic" in args
+    args = [a for a in args if a != "--symbolic"]
+    if symbolic:
+        try:
+            import sympy  # noqa: F401
+        except ImportError:
+            print("certcheck: --symbolic needs SymPy: pip install 'casteljau-oracle[check]'", file=sys.stderr)
+            return 2
     outcomes = []
     for path in args:
         try:
-            outcomes.extend(check_path(path))
+            outcomes.extend(check_path(path, symbolic))
         except (OSError, ValueError) as e:
             print(f"certcheck: {e}", file=sys.stderr)
             return 2
