@@ -168,17 +168,21 @@ class _Sym:
 
     def call(self, name, args):
         if name == "B":
-            i, n, t = (self.go(a) for a in args)
-            if i.is_Integer and n.is_Integer:
-                if i < 0 or i > n:
-                    return sympy.Integer(0)
-                return sympy.binomial(n, i) * t**i * (1 - t) ** (n - i)
-            return sympy.factorial(n) / (sympy.factorial(i) * sympy.factorial(n - i)) * t**i * (1 - t) ** (n - i)
+            return _bern(*(self.go(a) for a in args))
         if name in ("C", "binom"):
             n, k = (self.go(a) for a in args)
             if n.is_Integer and k.is_Integer:
-                return sympy.binomial(n, k) if 0 <= k <= n else sympy.Integer(0)
+                # generalised for a negative top, as docs/certificates.md says
+                return sympy.binomial(n, k) if k >= 0 and (n < 0 or k <= n) else sympy.Integer(0)
             return sympy.factorial(n) / (sympy.factorial(k) * sympy.factorial(n - k))
+        if name == "__dB":
+            i, n, x, k = (self.go(a) for a in args)
+            y = sympy.Dummy("y")
+            return sympy.diff(_bern(i, n, y), y, int(k)).subs(y, x)
+        if name == "__dpow":
+            x, e, k = (self.go(a) for a in args)
+            y = sympy.Dummy("y")
+            return sympy.diff(y**e, y, int(k)).subs(y, x)
         if name == "sqrt":
             return sympy.sqrt(self.go(args[0]))
         if name == "dot":
@@ -188,7 +192,7 @@ class _Sym:
             return sum((x * y for x, y in zip(a, b)), sympy.Integer(0))
         if name == "comp":
             v, k = self.go(args[0]), self.go(args[1])
-            return v[int(k) - 1]
+            return v[int(k)]  # from 0 in a certificate
         if name in ("det", "inv", "transpose"):
             m = self.go(args[0])
             if not isinstance(m, sympy.MatrixBase):
@@ -250,6 +254,14 @@ class _Sym:
                 out.append(sympy.diff(f, x, ku, y, kv).subs({x: u, y: v}))
             return out
         raise Unsupported(f"the function or library operation '{name}'")
+
+
+def _bern(i, n, t):
+    if i.is_Integer and n.is_Integer:
+        if i < 0 or i > n:
+            return sympy.Integer(0)
+        return sympy.binomial(n, i) * t**i * (1 - t) ** (n - i)
+    return sympy.factorial(n) / (sympy.factorial(i) * sympy.factorial(n - i)) * t**i * (1 - t) ** (n - i)
 
 
 def _matmul(a, b):

@@ -10,6 +10,7 @@ import os
 import pytest
 
 from _casteljau_oracle.cert_check import NOT_RECHECKED, RECHECKED, REFUSED, check_certificate, check_path
+from _certgen import certificates
 from _mutants import mutants
 
 DATA = os.path.join(os.path.dirname(__file__), "data", "certificates")
@@ -52,10 +53,16 @@ def _goal_holds(doc):
     return True
 
 
+def test_the_generated_certificates_are_re_checked():
+    for doc in certificates():
+        o = check_certificate(doc)
+        assert o.status == RECHECKED, o.line()
+
+
 def test_tampered_certificates_are_refused():
     counts = collections.Counter()
     accepted = []
-    for doc in _docs():
+    for doc in _docs() + certificates():
         if doc["check"] != "kernel":
             continue
         for kind, where, mutant in mutants(doc):
@@ -69,12 +76,12 @@ def test_tampered_certificates_are_refused():
     print(f"\n{total} mutants: " + ", ".join(f"{k} {s}: {n}" for (k, s), n in sorted(counts.items())))
     for cid, kind, where, mutant in accepted:
         print(f"  still proves its goal: {cid} {kind} {where}")
-    assert total >= 2000, total
     if accepted:
         pytest.importorskip("sympy")
         for cid, kind, where, mutant in accepted:
             if mutant["verdict"] != "fails":
                 assert _goal_holds(mutant), (cid, kind, where, "accepted a false goal")
+    assert total >= 2000, total
 
 
 def _damaged(doc, rng):
@@ -113,3 +120,24 @@ def test_damaged_files_are_refused_never_a_crash():
             pytest.importorskip("sympy")
             assert _goal_holds(doc), o.line()
     assert seen[REFUSED] > 500, seen
+
+
+def test_the_checker_runs_without_sympy():
+    """The client's core and the exact re-check import no SymPy (it is the extra `check`)."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys; sys.modules['sympy'] = None\n"
+        "import casteljau_oracle, casteljau_oracle.certcheck as c\n"
+        f"sys.exit(c.main([{DATA!r}]))\n"
+    )
+    here = os.path.join(os.path.dirname(__file__), "..")
+    r = subprocess.run([sys.executable, "-c", code], cwd=here, capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stderr + r.stdout
+    assert "summary:" in r.stdout and "refused" in r.stdout
+    r = subprocess.run(
+        [sys.executable, "-c", code.replace(f"[{DATA!r}]", f"['--symbolic', {DATA!r}]")],
+        cwd=here, capture_output=True, text=True, timeout=120,
+    )
+    assert r.returncode == 2 and "needs SymPy" in r.stderr
