@@ -162,6 +162,8 @@ def _check_header(doc):
     _need("range" in doc and (doc["range"] is None or isinstance(doc["range"], str)), "range: missing")
     if doc["verdict"] == "proved_in_range" and doc["check"] == "kernel":
         _need(isinstance(doc["range"], str), "proved_in_range without its range")
+    if doc["verdict"] != "proved_in_range":
+        _need(doc["range"] is None, f"verdict {doc['verdict']} with a range (only proved_in_range has one)")
 
 
 class _Goal:

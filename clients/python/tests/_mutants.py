@@ -98,6 +98,9 @@ def mutants(doc):
                 e["lhs"], e["rhs"] = e["rhs"], e["lhs"]
                 out.append(("swapped sides", f"equality {k}", d))
     out.extend(_vanishing_edits(doc))
+    other = {"proved": "proved_in_range", "proved_in_range": "proved", "fails": "proved"}.get(doc.get("verdict"))
+    if other:
+        out.append(("verdict", f"{doc['verdict']} -> {other}", _set(doc, ("verdict",), other)))
     if doc.get("verdict") == "proved_in_range":
         d = copy.deepcopy(doc)
         d["goal"]["equalities"] = d["goal"]["equalities"][:-1] or d["goal"]["equalities"]
