@@ -15,7 +15,8 @@ than a bound on the degree of the cleared difference that this checker derives i
 goal's expressions (the file's `lhs_degree`, `rhs_degree` and `degree` must agree with that
 derivation); the grid is complete, in order; both sides, evaluated here, are the listed values
 and equal at every point. A `fails` certificate: both sides evaluated at the counterexample are
-the listed values and differ. A `proved_in_range` goal must cover every case of its `range`.
+the listed values and differ. A `proved_in_range` goal must cover every case of its `range` (of the variables the range
+text names: an inner range it does not name, `j = 0..=n`, is not checked for completeness).
 """
 
 import itertools
@@ -206,7 +207,13 @@ def _check_range(doc, goal):
     if doc["verdict"] != "proved_in_range":
         return
     cases = _range_cases(doc["range"])
-    have = {tuple(sorted(ints.items())) for ints, *_ in goal.equalities}
+    # the range text may name only the outer ranges (`n = 0..=10` of `j = 0..=n`): compare
+    # the cases on the variables it names
+    named = {v for c in cases for v, _ in c}
+    have = set()
+    for ints, *_ in goal.equalities:
+        _need(named <= set(ints), f"range {doc['range']}: an equality without a value for {sorted(named - set(ints))}")
+        have.add(tuple(sorted((v, x) for v, x in ints.items() if v in named)))
     missing = [c for c in cases if c not in have]
     _need(not missing, f"range {doc['range']}: the case {_case(missing[0]) if missing else ''} has no equality")
     extra = [c for c in have if c not in cases]

@@ -181,18 +181,10 @@ def bernstein(i, n, t):
 
 
 def binomial(n, k):
-    """C(n, k): 0 unless 0 <= k <= n for n >= 0; for n < 0 the generalised
-    n (n - 1) ... (n - k + 1) / k! (0 for k < 0)."""
+    """C(n, k): 0 unless 0 <= k <= n."""
     if max(abs(n), abs(k)) > MAX_EXPONENT:
         raise EvalError(f"binomial argument beyond {MAX_EXPONENT}: C({n}, {k})")
-    if k < 0:
-        return Fraction(0)
-    if n >= 0:
-        return Fraction(comb(n, k)) if k <= n else Fraction(0)
-    num = 1
-    for j in range(k):
-        num *= n - j
-    return Fraction(num, factorial(k))
+    return Fraction(comb(n, k)) if 0 <= k <= n else Fraction(0)
 
 
 def _int(v, what):
@@ -457,10 +449,9 @@ class _Eval:
             return sum((_mul(x, y) for x, y in zip(a, b)), Fraction(0))
         if name == "comp":
             v, k = self.go(args[0]), _int(self.go(args[1]), "comp's index")
-            # coordinates count from 0 in a certificate (docs/certificates.md)
-            if not isinstance(v, tuple) or not 0 <= k < len(v):
-                raise EvalError(f"comp(v, {k}) of {_show(v)}")
-            return v[k]
+            if not isinstance(v, tuple) or not 1 <= k <= len(v):
+                raise EvalError(f"comp(v, {k}) of {_show(v)} (coordinates count from 1)")
+            return v[k - 1]
         if name in ("det", "inv", "transpose"):
             m = self.go(args[0])
             if not isinstance(m, Matrix):

@@ -172,8 +172,7 @@ class _Sym:
         if name in ("C", "binom"):
             n, k = (self.go(a) for a in args)
             if n.is_Integer and k.is_Integer:
-                # generalised for a negative top, as docs/certificates.md says
-                return sympy.binomial(n, k) if k >= 0 and (n < 0 or k <= n) else sympy.Integer(0)
+                return sympy.binomial(n, k) if 0 <= k <= n else sympy.Integer(0)
             return sympy.factorial(n) / (sympy.factorial(k) * sympy.factorial(n - k))
         if name == "__dB":
             i, n, x, k = (self.go(a) for a in args)
@@ -192,7 +191,7 @@ class _Sym:
             return sum((x * y for x, y in zip(a, b)), sympy.Integer(0))
         if name == "comp":
             v, k = self.go(args[0]), self.go(args[1])
-            return v[int(k)]  # from 0 in a certificate
+            return v[int(k) - 1]
         if name in ("det", "inv", "transpose"):
             m = self.go(args[0])
             if not isinstance(m, sympy.MatrixBase):

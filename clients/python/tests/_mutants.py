@@ -1,6 +1,7 @@
 """Tampered copies of a certificate: every number, coefficient, point, sign, range end and
 degree bound changed one at a time, the goal's sides swapped, and the goal edited while its
-data is kept. Each mutant is `(kind, where, doc)`."""
+data is kept. Each mutant is `(kind, where, make)`, `make()` building the tampered copy (so
+that a sample of a large file's mutants costs only what is sampled)."""
 
 import copy
 import json
@@ -30,12 +31,15 @@ def _paths(node, path=()):
 
 
 def _set(doc, path, value):
-    d = copy.deepcopy(doc)
-    node = d
-    for k in path[:-1]:
-        node = node[k]
-    node[path[-1]] = value
-    return d
+    def make():
+        d = copy.deepcopy(doc)
+        node = d
+        for k in path[:-1]:
+            node = node[k]
+        node[path[-1]] = value
+        return d
+
+    return make
 
 
 def _is_rational_path(path):
@@ -82,31 +86,28 @@ def mutants(doc):
     for k, eq in enumerate((doc.get("sampling") or {}).get("equalities") or []):
         for j, p in enumerate(eq.get("params") or []):
             if len(p["points"]) >= 2:
-                d = copy.deepcopy(doc)
-                d["sampling"]["equalities"][k]["params"][j]["points"] = p["points"][:-1]
-                out.append(("point", f"equality {k} {p['name']} dropped", d))
-                d = copy.deepcopy(doc)
-                pts = d["sampling"]["equalities"][k]["params"][j]["points"]
-                pts[-1] = pts[0]
-                out.append(("point", f"equality {k} {p['name']} repeated", d))
+                at = ("sampling", "equalities", k, "params", j, "points")
+                out.append(("point", f"equality {k} {p['name']} dropped", _set(doc, at, p["points"][:-1])))
+                out.append(("point", f"equality {k} {p['name']} repeated", _set(doc, at, p["points"][:-1] + p["points"][:1])))
     goal = doc.get("goal")
     if goal:
         for k, eq in enumerate(goal["equalities"]):
             if eq["lhs"] != eq["rhs"]:
-                d = copy.deepcopy(doc)
-                e = d["goal"]["equalities"][k]
-                e["lhs"], e["rhs"] = e["rhs"], e["lhs"]
-                out.append(("swapped sides", f"equality {k}", d))
+                swapped = {**eq, "lhs": eq["rhs"], "rhs": eq["lhs"]}
+                out.append(("swapped sides", f"equality {k}", _set(doc, ("goal", "equalities", k), swapped)))
     out.extend(_vanishing_edits(doc))
     other = {"proved": "proved_in_range", "proved_in_range": "proved", "fails": "proved"}.get(doc.get("verdict"))
     if other:
         out.append(("verdict", f"{doc['verdict']} -> {other}", _set(doc, ("verdict",), other)))
-    if doc.get("verdict") == "proved_in_range":
-        d = copy.deepcopy(doc)
-        d["goal"]["equalities"] = d["goal"]["equalities"][:-1] or d["goal"]["equalities"]
-        if len(d["goal"]["equalities"]) < len(doc["goal"]["equalities"]):
-            d["sampling"]["equalities"] = d["sampling"]["equalities"][:-1]
-            out.append(("range end", "last case dropped", d))
+    if doc.get("verdict") == "proved_in_range" and len(doc["goal"]["equalities"]) > 1:
+
+        def drop_last():
+            d = copy.deepcopy(doc)
+            d["goal"]["equalities"].pop()
+            d["sampling"]["equalities"].pop()
+            return d
+
+        out.append(("range end", "last case dropped", drop_last))
     return out
 
 
@@ -118,26 +119,34 @@ def _vanishing_edits(doc):
     """The goal's lhs plus a polynomial that vanishes at every sample point of a param: the
     listed values still match, so only the degree obligations can refuse it. Once with the
     file's degree fields kept, once with them re-derived for the edited side."""
-    from _casteljau_oracle.cert_check import _derive_bounds, _fmt
-    from _casteljau_oracle.cert_expr import parse
-
     out = []
     eqs = (doc.get("sampling") or {}).get("equalities") or []
     for k, data in enumerate(eqs):
-        for j, p in enumerate(data.get("params") or []):
+        if "," in doc["goal"]["equalities"][k]["lhs"]:
+            continue  # a vector side: a scalar added would change its shape
+        for p in data.get("params") or []:
             extra = "*".join(f"({p['name']} - {x})" for x in p["points"])
-            d = copy.deepcopy(doc)
-            e = d["goal"]["equalities"][k]
-            e["lhs"] = f"{e['lhs']} + {extra}" if not e["lhs"].startswith("(") else f"({e['lhs']}) + {extra}"
-            if "," in doc["goal"]["equalities"][k]["lhs"]:
-                continue  # a vector side: a scalar added would change its shape
-            out.append(("edited goal", f"equality {k} + a product vanishing at the {p['name']} points", d))
-            d2 = copy.deepcopy(d)
-            e2 = d2["goal"]["equalities"][k]
-            ints = {v: int(x) for v, x in e2["ints"].items()}
-            names = [s["name"] for s in d2["goal"]["symbols"]]
-            for q in d2["sampling"]["equalities"][k]["params"]:
-                lb, rb, deg = _derive_bounds(parse(e2["lhs"], names, True), parse(e2["rhs"], names, True), q["name"], ints)
-                q["lhs_degree"], q["rhs_degree"], q["degree"] = _fmt(lb), _fmt(rb), deg
-            out.append(("edited goal", f"equality {k} + a product vanishing at the {p['name']} points, degrees re-derived", d2))
+            where = f"equality {k} + a product vanishing at the {p['name']} points"
+            out.append(("edited goal", where, _edit(doc, k, extra, False)))
+            out.append(("edited goal", where + ", degrees re-derived", _edit(doc, k, extra, True)))
     return out
+
+
+def _edit(doc, k, extra, rederive):
+    from _casteljau_oracle.cert_check import _derive_bounds, _fmt
+    from _casteljau_oracle.cert_expr import parse
+
+    def make():
+        d = copy.deepcopy(doc)
+        e = d["goal"]["equalities"][k]
+        e["lhs"] = f"{e['lhs']} + {extra}"
+        if rederive:
+            ints = {v: int(x) for v, x in e["ints"].items()}
+            names = [s["name"] for s in d["goal"]["symbols"]]
+            lhs, rhs = parse(e["lhs"], names, True), parse(e["rhs"], names, True)
+            for q in d["sampling"]["equalities"][k]["params"]:
+                lb, rb, deg = _derive_bounds(lhs, rhs, q["name"], ints)
+                q["lhs_degree"], q["rhs_degree"], q["degree"] = _fmt(lb), _fmt(rb), deg
+        return d
+
+    return make

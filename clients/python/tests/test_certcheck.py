@@ -6,6 +6,7 @@ import collections
 import glob
 import json
 import os
+import random
 
 import pytest
 
@@ -13,8 +14,22 @@ from _casteljau_oracle.cert_check import NOT_RECHECKED, RECHECKED, REFUSED, chec
 from _certgen import certificates
 from _mutants import mutants
 
-DATA = os.path.join(os.path.dirname(__file__), "data", "certificates")
+HERE = os.path.dirname(os.path.abspath(__file__))
+# The texts' certificates as the program writes them (`prove --certificates`, committed by the
+# cert branch in tests/certificates/texts); before that branch is merged, the copy in
+# tests/data/certificates (taken from it at commit 5ec46b0).
+_REPO = os.path.join(HERE, "..", "..", "..", "tests", "certificates", "texts")
+DATA = _REPO if glob.glob(os.path.join(_REPO, "*.json")) else os.path.join(HERE, "data", "certificates")
 FILES = sorted(glob.glob(os.path.join(DATA, "*.json")))
+# Mutants per certificate at most (a deterministic sample of a larger file's), and fewer for
+# a file of more than BIG_GRID points (000-4-library has 4,356; each mutant re-checks the
+# whole file): pytest's time stays short.
+MAX_MUTANTS_PER_FILE = 60
+BIG_GRID, MAX_MUTANTS_BIG = 100, 3
+
+
+def _grid(doc):
+    return sum(len(e["values"]) for e in (doc.get("sampling") or {}).get("equalities", []))
 
 
 def _docs():
@@ -34,8 +49,9 @@ def test_every_checkable_certificate_is_re_checked_and_none_refused():
             assert o.status == RECHECKED, o.line()
         else:
             assert o.status == NOT_RECHECKED and doc["reason"] in o.detail
-    fails = [o for o in outcomes if o.verdict == "fails"]
-    assert all(o.status == RECHECKED for o in fails), [o.line() for o in fails]
+    # what the program's files carry data for (docs/certificates.md, version 1), all re-checked
+    kernel = [d["id"] for d in _docs() if d["check"] == "kernel"]
+    assert sum(o.status == RECHECKED for o in outcomes) == len(kernel) >= 1
 
 
 def _goal_holds(doc):
@@ -65,7 +81,12 @@ def test_tampered_certificates_are_refused():
     for doc in _docs() + certificates():
         if doc["check"] != "kernel":
             continue
-        for kind, where, mutant in mutants(doc):
+        ms = mutants(doc)
+        cap = MAX_MUTANTS_BIG if _grid(doc) > BIG_GRID else MAX_MUTANTS_PER_FILE
+        if len(ms) > cap:
+            ms = random.Random(doc["id"]).sample(ms, cap)
+        for kind, where, make in ms:
+            mutant = make()
             o = check_certificate(mutant)
             counts[kind, o.status] += 1
             if o.status == RECHECKED:
@@ -110,16 +131,16 @@ def test_damaged_files_are_refused_never_a_crash():
     import random
 
     rng = random.Random(4343)
-    docs = _docs()
+    docs = [d for d in _docs() if _grid(d) <= BIG_GRID]
     seen = collections.Counter()
-    for _ in range(1500):
+    for _ in range(1000):
         doc = _damaged(rng.choice(docs), rng)
         o = check_certificate(doc)
         seen[o.status] += 1
         if o.status == RECHECKED and doc.get("verdict") in ("proved", "proved_in_range"):
             pytest.importorskip("sympy")
             assert _goal_holds(doc), o.line()
-    assert seen[REFUSED] > 500, seen
+    assert seen[REFUSED] > 300, seen
 
 
 def test_the_checker_runs_without_sympy():
