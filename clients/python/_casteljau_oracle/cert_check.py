@@ -35,8 +35,8 @@ __all__ = ["Outcome", "check_certificate", "check_path", "MAX_FILE_BYTES", "MAX_
 MAX_FILE_BYTES = 4 * 1024 * 1024
 #: Most files read from one directory.
 MAX_FILES = 10_000
-#: Most grid points per equality.
-MAX_GRID = 100_000
+#: Most grid points in one file (all its equalities).
+MAX_GRID = 10_000
 
 RECHECKED, REFUSED, NOT_RECHECKED = "re-checked", "refused", "not re-checked"
 _RATIONAL = re.compile(r"^-?[0-9]+(/[1-9][0-9]*)?$")
@@ -289,6 +289,11 @@ def _check_sampling(sampling, goal, method):
     _need(isinstance(sampling, dict) and isinstance(sampling.get("equalities"), list), "sampling: missing")
     eqs = sampling["equalities"]
     _need(len(eqs) == len(goal.equalities), f"sampling: {len(eqs)} entries for {len(goal.equalities)} equalities")
+    _need(all(isinstance(e, dict) and isinstance(e.get("values"), list) for e in eqs), "sampling: an entry without values")
+    total = sum(len(e["values"]) for e in eqs)
+    _need(total <= MAX_GRID, f"sampling: {total} grid points (limit {MAX_GRID} per file)")
+    with_params = any(e.get("params") for e in eqs)
+    _need(with_params == (method == "sampling"), f"method {method} but {'some' if with_params else 'no'} equality has a param")
     for k, (data, (ints, lhs, rhs, reals)) in enumerate(zip(eqs, goal.equalities)):
         where = f"equality {k}"
         _need(isinstance(data, dict) and isinstance(data.get("params"), list), f"{where}: params missing")
