@@ -2,7 +2,7 @@
 of the texts, as docs/certificates.md describes them: more goals for the tampering test than
 the program's files alone. The degree bounds come from the checker's own derivation, so these
 files test the refusal logic, not the agreement with the program (the program's files in
-tests/data/certificates do that)."""
+tests/certificates/texts do that)."""
 
 import itertools
 from fractions import Fraction

@@ -1,4 +1,4 @@
-"""The independent certificate checker on the texts' certificates (tests/data/certificates,
+"""The independent certificate checker on the texts' certificates (tests/certificates/texts,
 written by `casteljau prove --certificates`), and every tampered copy of them refused — or,
 where the tampered file still proves its (changed) goal, that goal confirmed by SymPy."""
 
@@ -15,11 +15,9 @@ from _certgen import certificates
 from _mutants import mutants
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-# The texts' certificates as the program writes them (`prove --certificates`, committed by the
-# cert branch in tests/certificates/texts); before that branch is merged, the copy in
-# tests/data/certificates (taken from it at commit 5ec46b0).
-_REPO = os.path.join(HERE, "..", "..", "..", "tests", "certificates", "texts")
-DATA = _REPO if glob.glob(os.path.join(_REPO, "*.json")) else os.path.join(HERE, "data", "certificates")
+# The texts' certificates as the program writes them (`prove --certificates`), committed in
+# tests/certificates/texts; tests/cert.rs keeps them current.
+DATA = os.path.join(HERE, "..", "..", "..", "tests", "certificates", "texts")
 FILES = sorted(glob.glob(os.path.join(DATA, "*.json")))
 # Mutants per certificate at most (a deterministic sample of a larger file's), and fewer for
 # a file of more than BIG_GRID points (000-4-library has 4,356; each mutant re-checks the
