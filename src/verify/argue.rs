@@ -3,8 +3,9 @@
 //! misprint lines and the de Casteljau scheme that goes with a case.
 
 use super::claims::{Claim, ClaimFile, Kind};
-use super::kernel::checked::{Checked, Evaluation, Method, Step, StepKind, Verdict};
+use super::kernel::checked::{Evaluation, Method, Step, StepKind, Verdict};
 use super::objects::curve_from_spec;
+use super::outcome::Checked;
 use crate::bernstein::bernstein_all;
 use crate::curve::{BezierCurve, DeCasteljauScheme};
 use crate::point::Point;

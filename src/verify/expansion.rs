@@ -3,11 +3,12 @@
 use super::claims::Implies;
 use super::context::Ctx;
 use super::kernel::check_expanded;
-use super::kernel::checked::{Checked, Step};
+use super::kernel::checked::Step;
 use super::kernel::eval::{Evaluator, Value, VarEnv};
 use super::kernel::expand::{expand, sym_env, Expanded};
 use super::kernel::expr::Expr;
 use super::kernel::poly::{Poly, RatFunc};
+use super::outcome::Checked;
 use super::sampling::{list, PairProof};
 use crate::error::{Error, Result};
 use crate::scalar::{Ring, Scalar};

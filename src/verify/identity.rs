@@ -6,8 +6,8 @@
 use super::claims::{CurveSpec, Decls, Identity, Number};
 use super::context::Ctx;
 use super::expansion::check_chain_symbolic;
-use super::kernel::checked::Checked;
 use super::kernel::expr::Expr;
+use super::outcome::Checked;
 use super::sampling::check_chain;
 use crate::error::Result;
 use crate::quadratic::QuadraticIrrational;

@@ -16,13 +16,13 @@ use super::claims::{BezierPoints, Claim, ConicType, CurveSpec, Decls, Fit, Impli
 use super::context::Ctx;
 use super::expansion::check_implies;
 use super::identity::{chain_in_field, check_identity, uses_sqrt};
-use super::kernel::checked::Checked;
 use super::kernel::eval::{Alg, Deg, Evaluator, Value};
 use super::kernel::expr::Expr;
 use super::kernel::poly::{Poly, RatFunc};
 use super::kernel::{check_computed, Trusted};
 use super::lemma::Lemma;
 use super::objects::{curve_from_spec, points};
+use super::outcome::Checked;
 use super::rewrite::substitute;
 use super::sampling::check_chain;
 use super::theorems;

@@ -7,7 +7,7 @@ use super::argue::{
     worked_sum,
 };
 use super::claims::{Claim, ClaimFile};
-use super::kernel::checked::Checked;
+use super::outcome::Checked;
 use std::fmt::Write as _;
 
 mod mathmode;

@@ -39,6 +39,8 @@
 //   the checks compute with: expression trees, the algebras and the evaluator, rational
 //   functions, hypergeometric terms, domain pieces, Beta integrals, the work budget (it imports
 //   nothing of verify outside `kernel/`);
+// - `outcome`: a claim's result as the reports read it (a proof from the kernel, or a verdict
+//   that needs none);
 // - the data: `claim_syntax` (each field's expected form, for errors), `claims` (the claim
 //   file format), `one_line` (the claim of `prove --identity`);
 // - expressions: `parse`, `rewrite` (definitions, substitution, `diff`), `methods` (library
@@ -70,6 +72,7 @@ mod methods;
 mod names;
 mod objects;
 mod one_line;
+mod outcome;
 mod parse;
 mod recurrence;
 mod report;
@@ -85,10 +88,11 @@ use crate::error::{Error, Result};
 use std::path::PathBuf;
 
 pub use certify::{check_certificate, check_certificates, write_certificates, Recheck};
-pub use kernel::checked::{Checked, Evaluation, Method, Step, StepKind, Verdict};
+pub use kernel::checked::{Evaluation, Method, Step, StepKind, Verdict};
 pub use kernel::{Proof, Trusted};
 pub use kinds::check_claim;
 pub use one_line::identity_file;
+pub use outcome::Checked;
 pub use report::{ClaimOutcome, ExplainStyle, Report, TextSummary};
 pub use scope::{range_bound, PROVABLE};
 pub use theorems::elevation_bound;

@@ -5,9 +5,10 @@ use super::argue::{
     worked_sum,
 };
 use super::claims::{Claim, ClaimFile, Identity, Kind, Sides};
+use super::kernel::checked::Method;
 use super::kernel::checked::Verdict;
-use super::kernel::checked::{Checked, Method};
 use super::kernel::Trusted;
+use super::outcome::Checked;
 use serde::Serialize;
 use std::borrow::Cow;
 use std::fmt::Write as _;

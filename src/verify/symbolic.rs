@@ -34,12 +34,13 @@ use super::context::Ctx;
 use super::identity::check_identity;
 use super::kernel::bernstein::check_nonneg_pieces;
 use super::kernel::checked::Verdict;
-use super::kernel::checked::{Checked, Method, Step};
+use super::kernel::checked::{Method, Step};
 use super::kernel::expr::Expr;
 use super::kernel::hyper::{lin_mul, lin_neg, Aff, Lin};
 use super::kernel::pieces::Domain;
 use super::kernel::{check_discharged, check_induction, Discharged, Proof};
 use super::lemma::{self, Lemma, Obligation, Rewritten};
+use super::outcome::Checked;
 
 mod collapse;
 mod induction;

@@ -9,8 +9,9 @@
 
 use super::claims::{Convergence, Decls, IntRange, PolygonSpec, Theorem};
 use super::context::Ctx;
-use super::kernel::checked::{Checked, Method, Step};
+use super::kernel::checked::{Method, Step};
 use super::kernel::{check_all, check_computed, Trusted};
+use super::outcome::Checked;
 use super::sampling::{chain_work, check_chain, MAX_WORK};
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};

@@ -1,8 +1,6 @@
 //! What checking a claim produces: the verdict, what it rests on (a typed [`Method`]), the
 //! certificate and, for `explain`, the steps.
 
-use super::certificate::{Data, Refutation};
-use super::{Proof, Trusted};
 use num_rational::BigRational;
 use serde::Serialize;
 
@@ -136,170 +134,6 @@ impl Method {
                 | Method::Beta
         )
     }
-
-    /// The method in one line, as the reports show it.
-    pub fn text(self) -> String {
-        match self {
-            Method::Sampling { basis, degree } => format!(
-                "exact evaluation at d + 1 points per parameter (degree bounds up to {degree}){}",
-                if basis { ", on the basis polygons" } else { "" }
-            ),
-            Method::Evaluation => "exact evaluation (no free parameter)".into(),
-            Method::Expansion => "exact symbolic expansion".into(),
-            Method::Pieces => "hypergeometric terms on the pieces of the domain".into(),
-            Method::Wz => "WZ certificates".into(),
-            Method::Telescoping => "creative telescoping".into(),
-            Method::StatedRecurrence => "the stated recurrence, by creative telescoping".into(),
-            Method::Induction => "induction (base and step)".into(),
-            Method::Bernstein => "Bernstein coefficients ≥ 0".into(),
-            Method::Beta => "Euler's Beta integral".into(),
-            Method::Computation => "a library computation accepted by name".into(),
-        }
-    }
-}
-
-/// What a check ended in.
-#[derive(Clone, Debug)]
-enum Outcome {
-    /// A proof: the verdict is the proof's.
-    Proved(Proof),
-    /// Any other verdict (the constructors below make only `verified`, `fails`, `error`), and
-    /// the method of the check that reached it.
-    Other(Verdict, Option<Method>),
-}
-
-/// The result of checking one claim. It is `proved` (or `proved_in_range`) only by holding a
-/// [`Proof`], which only the kernel makes:
-///
-/// ```compile_fail
-/// use casteljau::verify::{Checked, Verdict};
-/// let c = Checked { verdict: Verdict::Proved, certificate: String::new(), steps: Vec::new(), params: Vec::new() };
-/// ```
-/// ```compile_fail
-/// fn promote(c: &mut casteljau::verify::Checked) {
-///     c.verdict = casteljau::verify::Verdict::Proved;
-/// }
-/// ```
-#[derive(Clone, Debug)]
-pub struct Checked {
-    outcome: Outcome,
-    /// The certificate (one line).
-    pub certificate: String,
-    /// The step-by-step account (filled when asked for).
-    pub steps: Vec<Step>,
-    /// The values of the first parameter that the proof checked (for `explain`).
-    pub params: Vec<BigRational>,
-    /// A verdict other than a proof: its data (a counterexample's).
-    data: Data,
-}
-
-impl Checked {
-    fn other(verdict: Verdict, certificate: String) -> Self {
-        Checked {
-            outcome: Outcome::Other(verdict, None),
-            certificate,
-            steps: Vec::new(),
-            params: Vec::new(),
-            data: Data::None,
-        }
-    }
-
-    /// A proved claim.
-    pub(crate) fn proved(proof: Proof, certificate: String) -> Self {
-        Checked {
-            outcome: Outcome::Proved(proof),
-            certificate,
-            steps: Vec::new(),
-            params: Vec::new(),
-            data: Data::None,
-        }
-    }
-
-    /// A false claim; the certificate holds the exact counterexample.
-    pub(crate) fn fails(certificate: String) -> Self {
-        Checked::other(Verdict::Fails, certificate)
-    }
-
-    /// Bounded evidence, saying exactly what was checked.
-    pub(crate) fn verified(certificate: String) -> Self {
-        Checked::other(Verdict::Verified, certificate)
-    }
-
-    /// Not decided; the certificate holds the reason.
-    pub(crate) fn error(certificate: String) -> Self {
-        Checked::other(Verdict::Error, certificate)
-    }
-
-    /// A verdict other than a proof, with the method of the check that reached it (a proof's
-    /// method is its own and stays).
-    pub(crate) fn found_by(mut self, method: Method) -> Self {
-        if let Outcome::Other(_, m) = &mut self.outcome {
-            *m = Some(method);
-        }
-        self
-    }
-
-    /// A proof read as covering only the cases of `range` (other verdicts stay).
-    pub(crate) fn in_range(mut self, range: String) -> Self {
-        if let Outcome::Proved(p) = self.outcome {
-            self.outcome = Outcome::Proved(p.in_range(range));
-        }
-        self
-    }
-
-    /// A proof that also accepts `trusted` (other verdicts stay).
-    pub(crate) fn resting_on(mut self, trusted: Trusted) -> Self {
-        if let Outcome::Proved(p) = self.outcome {
-            self.outcome = Outcome::Proved(p.resting_on(trusted));
-        }
-        self
-    }
-
-    /// A `fails` verdict with its counterexample as data (other verdicts stay).
-    pub(crate) fn refuted(mut self, refutation: Option<Box<Refutation>>) -> Self {
-        if let (Some(r), Verdict::Fails) = (refutation, self.verdict()) {
-            self.data = Data::Refuted(r);
-        }
-        self
-    }
-
-    /// What the verdict's data is: the proof's, or a counterexample (`docs/certificates.md`).
-    pub fn data(&self) -> &Data {
-        match &self.outcome {
-            Outcome::Proved(p) => p.data(),
-            Outcome::Other(..) => &self.data,
-        }
-    }
-
-    /// The verdict.
-    pub fn verdict(&self) -> Verdict {
-        match &self.outcome {
-            Outcome::Proved(p) => p.verdict(),
-            Outcome::Other(v, _) => *v,
-        }
-    }
-
-    /// The proof, when the claim is proved.
-    pub fn proof(&self) -> Option<&Proof> {
-        match &self.outcome {
-            Outcome::Proved(p) => Some(p),
-            Outcome::Other(..) => None,
-        }
-    }
-
-    /// What the verdict rests on: a proof's method, or the method of the check that found a
-    /// counterexample.
-    pub fn method(&self) -> Option<Method> {
-        match &self.outcome {
-            Outcome::Proved(p) => Some(p.method()),
-            Outcome::Other(_, m) => *m,
-        }
-    }
-
-    /// The finite ranges a [`Verdict::ProvedInRange`] covers.
-    pub fn range(&self) -> Option<&str> {
-        self.proof().and_then(Proof::range)
-    }
 }
 
 /// One line of a proof's log. What the reports pick out of a log (the cases, the exact
@@ -348,40 +182,12 @@ pub struct Evaluation {
     pub value: String,
 }
 
-impl Evaluation {
-    /// The value of `name` at this point.
-    pub fn value_of(&self, name: &str) -> Option<&BigRational> {
-        self.values.iter().find(|(k, _)| k == name).map(|(_, v)| v)
-    }
-}
-
 impl Step {
     /// A line of text that heads a case.
     pub fn text(text: impl Into<String>) -> Step {
         Step {
             depth: 0,
             kind: StepKind::Text(text.into()),
-        }
-    }
-    /// A label heading the equality checked under it.
-    pub fn label(text: impl Into<String>) -> Step {
-        Step {
-            depth: 0,
-            kind: StepKind::Label(text.into()),
-        }
-    }
-    /// An exact evaluation where both sides agree.
-    pub fn evaluation(e: Evaluation) -> Step {
-        Step {
-            depth: 0,
-            kind: StepKind::Evaluation(e),
-        }
-    }
-    /// The header of a case of a finite range.
-    pub fn instance(ints: Vec<(String, i64)>, text: String) -> Step {
-        Step {
-            depth: 0,
-            kind: StepKind::Instance { ints, text },
         }
     }
     /// A piece on which every term vanishes.
@@ -397,30 +203,5 @@ impl Step {
             depth: self.depth + by,
             kind: self.kind,
         }
-    }
-    /// The line without its indent.
-    pub fn line(&self) -> String {
-        match &self.kind {
-            StepKind::Text(t) | StepKind::Label(t) => t.clone(),
-            StepKind::Evaluation(e) => e.to_string(),
-            StepKind::Instance { ints, text } if ints.is_empty() => text.clone(),
-            StepKind::Instance { ints, text } => {
-                let ints: Vec<String> = ints.iter().map(|(k, v)| format!("{k} = {v}")).collect();
-                format!("[{}] {text}", ints.join(", "))
-            }
-            StepKind::Vanishes { on } => format!("on {on}: every term vanishes"),
-        }
-    }
-}
-
-impl std::fmt::Display for Evaluation {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}: both sides = {}", self.at, self.value)
-    }
-}
-
-impl std::fmt::Display for Step {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{:width$}{}", "", self.line(), width = 2 * self.depth)
     }
 }

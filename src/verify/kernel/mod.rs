@@ -2,7 +2,7 @@
 //!
 //! A [`Proof`] has private fields and is made only by the `check_*` functions of this module;
 //! [`Proof::verdict`] is the only expression of the crate that yields [`Verdict::Proved`] or
-//! [`Verdict::ProvedInRange`], and a [`Checked`] is `proved` only by holding a `Proof`. Every
+//! [`Verdict::ProvedInRange`], and a `Checked` (`verify::outcome`) is `proved` only by holding a `Proof`. Every
 //! proof names its kind of argument ([`Method`]) and the library computations it accepts by
 //! name ([`Trusted`], as Lean's `#print axioms` names compiled code it trusts).
 //!
