@@ -47,17 +47,21 @@ pub fn fit<T: Scalar>(curve: &AnyCurve<T>) -> Result<Figure> {
         "fit",
         Some(format!("a(t), control points {}", super::list(a))),
     )?;
-    panel.polyline(
-        &[planar(&xh)?, planar(&ah)?],
-        false,
-        Style::line(POINT, 2.0),
-        "residual",
-        Some(format!("a(1/2) − x(1/2) = {}", result.residual)),
-    )?;
-    panel.dot(&planar(&xh)?, 3.5, CURVE, format!("x(1/2) = {xh}"))?;
-    panel.dot(&planar(&ah)?, 3.5, PALETTE[0], format!("a(1/2) = {ah}"))?;
-    panel.label(&planar(&xh)?, "x(1/2)", CURVE, -8.0, 14.0)?;
-    panel.label(&planar(&ah)?, "a(1/2)", PALETTE[0], 8.0, -6.0)?;
+    // The residual a(1/2) − x(1/2) with its two ends, on the main panel and in the inset.
+    let mark_residual = |p: &mut Panel| -> Result<()> {
+        p.polyline(
+            &[planar(&xh)?, planar(&ah)?],
+            false,
+            Style::line(POINT, 2.0),
+            "residual",
+            Some(format!("a(1/2) − x(1/2) = {}", result.residual)),
+        )?;
+        p.dot(&planar(&xh)?, 3.5, CURVE, format!("x(1/2) = {xh}"))?;
+        p.dot(&planar(&ah)?, 3.5, PALETTE[0], format!("a(1/2) = {ah}"))?;
+        p.label(&planar(&xh)?, "x(1/2)", CURVE, -8.0, 14.0)?;
+        p.label(&planar(&ah)?, "a(1/2)", PALETTE[0], 8.0, -6.0)
+    };
+    mark_residual(&mut panel)?;
     let (xd, ad) = (xy(&planar(&xh)?)?, xy(&planar(&ah)?)?);
     // δ is a few pixels at the curve's scale: a magnified view of the window around it
     let half = 1.5 * (xd[0] - ad[0]).abs().max((xd[1] - ad[1]).abs());
@@ -85,17 +89,7 @@ pub fn fit<T: Scalar>(curve: &AnyCurve<T>) -> Result<Figure> {
             for run in clip(&a_samples, w) {
                 p.polyline_f64(run, Style::dashed(PALETTE[0], 2.0), "fit", None);
             }
-            p.polyline(
-                &[planar(&xh)?, planar(&ah)?],
-                false,
-                Style::line(POINT, 2.0),
-                "residual",
-                Some(format!("a(1/2) − x(1/2) = {}", result.residual)),
-            )?;
-            p.dot(&planar(&xh)?, 3.5, CURVE, format!("x(1/2) = {xh}"))?;
-            p.dot(&planar(&ah)?, 3.5, PALETTE[0], format!("a(1/2) = {ah}"))?;
-            p.label(&planar(&xh)?, "x(1/2)", CURVE, -8.0, 14.0)?;
-            p.label(&planar(&ah)?, "a(1/2)", PALETTE[0], 8.0, -6.0)?;
+            mark_residual(&mut p)?;
             Ok(p)
         };
         let mut with_inset = fig.clone();
