@@ -163,13 +163,7 @@ pub(crate) fn induction_start(sym: &Symbols, h: &Term, n: &str, n0: &Aff, what: 
                 "{what}: the closed form's coefficient vanishes where {z} = 0, which moves with the other symbols: the induction cannot start past it"
             )));
         }
-        if z.c % c != 0 {
-            continue;
-        }
-        let root = -z.c / c;
-        if root >= start.c {
-            start = Aff::constant(root + 1);
-        }
+        start = past_root(start, &z, c);
     }
     if start.minus(n0).c > MAX_DIRECT_CASES {
         return Err(Error::Domain(format!(
@@ -209,6 +203,15 @@ pub fn telescoped_sum(sym: &Symbols, f: &Term, t: &Telescoper, (n, k, a, b): (&s
 
 /// The first `n ≥ n₀` past every integer zero in `n` of the leading coefficient `p_J`; an
 /// error when it may vanish at a point that moves with the other integers.
+/// The first value of an induction moved past the integer root of `z = 0` in the induction
+/// variable (whose coefficient in `z` is `c ≠ 0`), if it has one at or after `start`.
+fn past_root(start: Aff, z: &Aff, c: i64) -> Aff {
+    if z.c % c != 0 || -z.c / c < start.c {
+        return start;
+    }
+    Aff::constant(-z.c / c + 1)
+}
+
 fn past_leading_zeros(sym: &Symbols, lead: &RatFunc, s: &SumShape<'_>, what: &str) -> Result<Aff> {
     let mut start = s.n0.clone();
     for z in sym.integer_zeros(&lead.num)? {
@@ -228,13 +231,7 @@ fn past_leading_zeros(sym: &Symbols, lead: &RatFunc, s: &SumShape<'_>, what: &st
                 "{what}: the recurrence's leading coefficient {lead} vanishes where {z} = 0, which moves with the other symbols"
             )));
         }
-        if z.c % c != 0 {
-            continue;
-        }
-        let root = -z.c / c;
-        if root >= start.c {
-            start = Aff::constant(root + 1);
-        }
+        start = past_root(start, &z, c);
     }
     Ok(start)
 }
