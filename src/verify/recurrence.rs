@@ -31,6 +31,8 @@ use super::telescope::{self, Coefficients};
 use super::translate::Translator;
 use crate::error::{Error, Result};
 
+mod forms;
+
 /// The additive parts of `e`, with their signs.
 fn parts(e: &Expr, plus: bool, out: &mut Vec<(bool, Expr)>) {
     match e {
@@ -136,11 +138,12 @@ pub(crate) fn prove(tr: &mut Translator<'_>, lhs: &Expr, rhs: &Expr, d: &Domain)
     let (Some(k), Some(first)) = (k, sums.first()) else {
         return Ok(None);
     };
-    // One lower bound; upper bounds b(n) + j_s with constant j_s ≥ 0 from the least.
+    // One lower bound; upper bounds b(n) + j_s with constant j_s ≥ 0 from the least. Else
+    // two sums may be two forms of one sequence.
     let base = sums.iter().min_by_key(|p| p.b.c).expect("not empty");
     if sums.len() < 2 || sums.iter().any(|p| p.a != first.a || !p.b.minus(&base.b).is_const()) || first.a.coef(&k) != 0
     {
-        return Ok(None);
+        return forms::two_forms(tr, &sums, &rest, &k, d);
     }
     let (a, b) = (first.a.clone(), base.b.clone());
     let Some(n) =
@@ -164,13 +167,26 @@ pub(crate) fn prove(tr: &mut Translator<'_>, lhs: &Expr, rhs: &Expr, d: &Domain)
         .map(|s| (s.coef.clone(), s.b.clone(), s.summand.clone()))
         .collect();
     let Some(stated) = recurrence::stated_sums(sym, &parts, &f, &bounds, d, &what, &mut tr.log)? else {
-        return Ok(None);
+        return forms::two_forms(tr, &sums, &rest, &k, d);
     };
     if !d.implies_ge(&b.minus(&a).shifted(1)) {
         return Err(Error::Domain(format!("{what}: cannot show b − a ≥ −1 on {}", d.show())));
     }
-    let rec = telescope::find(sym, &f, &n, &k, Coefficients::Given(stated.coefficients()))
-        .map_err(|e| Error::Domain(format!("{what}: {e}")))?;
+    let rec = match telescope::find(sym, &f, &n, &k, Coefficients::Given(stated.coefficients())) {
+        Ok(rec) => rec,
+        // No certificate whose ends are the other terms: the recurrence may still hold, with
+        // them its inhomogeneous part, for every n past a first value.
+        Err(e) => {
+            let mark = tr.log.len();
+            return match forms::inhomogeneous(tr, &stated, &f, (&k, &a, &b), &rest, d, &what) {
+                Ok(Some(())) => Ok(Some(())),
+                _ => {
+                    tr.log.truncate(mark);
+                    Err(Error::Domain(format!("{what}: {e}")))
+                }
+            };
+        }
+    };
     let discharged = recurrence::check_stated_recurrence(sym, &stated, &f, &rec, &bounds, rest, d, &what, &mut tr.log)?;
     tr.evidence.push(discharged);
     tr.recurrences.push((

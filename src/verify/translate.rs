@@ -694,7 +694,8 @@ impl<'a> Translator<'a> {
         let what = format!("{what} by creative telescoping");
         let rec = telescope::find(self.sym, f, s.n, s.k, Coefficients::Search)
             .map_err(|e| Error::Domain(format!("{what}: {e}")))?;
-        let (discharged, text) = obligations::check_telescoper(self.sym, f, &rec, s, rhs, &what, &mut self.log)?;
+        let (discharged, text) =
+            obligations::check_telescoper(self.sym, f, &rec, s, (rhs, None), &what, &mut self.log)?;
         self.evidence.push(discharged);
         self.recurrences.push((Method::Telescoping, text));
         Ok(())

@@ -236,19 +236,42 @@ fn past_leading_zeros(sym: &Symbols, lead: &RatFunc, s: &SumShape<'_>, what: &st
     Ok(start)
 }
 
-/// The identities proving `Σ_{k=a}^{b(n)} F(n, k) = rhs(n)` for every `n ≥ n₀` by the
-/// recurrence `t` (see the module documentation), and the text of the certificate.
+/// A second sum `Σ_{k=a}^{b(n)} F(n, k)` added to the right side (two forms of one sequence):
+/// its summand `F`, its certificate of the left sum's recurrence, `a` (free of `n`) and `b`.
+pub type Other<'a> = (&'a Term, &'a Telescoper, &'a Aff, &'a Aff);
+
+/// Whether two recurrences have the same coefficients.
+fn same_coefficients(p: &[RatFunc], q: &[RatFunc]) -> bool {
+    let at = |p: &[RatFunc], j: usize| p.get(j).cloned().unwrap_or_else(|| RatFunc::from_int(0));
+    (0..p.len().max(q.len())).all(|j| at(p, j).add(&at(q, j).neg()).num.is_zero())
+}
+
+/// The identities proving `Σ_{k=a}^{b(n)} F(n, k) = rhs(n) (+ the sum `other`)` for every
+/// `n ≥ n₀` by the recurrence `t` (see the module documentation), and the text of the
+/// certificate.
 pub fn closed_form(
     sym: &Symbols,
     f: &Term,
     t: &Telescoper,
     s: &SumShape<'_>,
-    rhs: &[Term],
+    (rhs, other): (&[Term], Option<&Other<'_>>),
     what: &str,
 ) -> Result<(Vec<Obligation>, String)> {
     let n = s.n;
     let order = t.order();
     let lead = &t.p[order];
+    let d_n0 = s.rest.with(Aff::var(n).minus(s.n0));
+    // Each S(n + j) is its sum to b(n) and the terms past it only where b ≥ a − 1.
+    for (a, b) in [(s.a, s.b)].into_iter().chain(other.map(|o| (o.2, o.3))) {
+        Bounds { k: s.k, a, b, n }.check(what)?;
+        if !d_n0.implies_ge(&b.minus(a).shifted(1)) {
+            let why = format!("{what}: cannot show b ≥ a − 1 on {}", d_n0.show());
+            return Err(Error::Domain(why));
+        }
+    }
+    if other.is_some_and(|o| !same_coefficients(&t.p, &o.1.p)) {
+        return Err(Error::Domain(format!("{what}: the two sums' recurrences differ")));
+    }
     let n1 = past_leading_zeros(sym, lead, s, what)?;
     let span = n1.minus(s.n0);
     if !span.is_const() || span.c + order as i64 > MAX_DIRECT_CASES {
@@ -272,6 +295,14 @@ pub fn closed_form(
         ends.extend(scaled(p, &lin_subst(sym, rhs, n, &Aff::var(n).shifted(j as i64)))?);
     }
     ends.extend(lin_neg(&telescoped_sum(sym, f, t, (n, s.k, s.a, s.b))?));
+    if let Some((f2, t2, a2, b2)) = other {
+        out.push(Obligation {
+            lin: telescoping_equation(sym, f2, t2, n, s.k)?,
+            domain: d_rec.with(Aff::var(s.k).minus(a2)).with(b2.minus(&Aff::var(s.k))),
+            what: format!("{what}: the right sum's telescoping equation"),
+        });
+        ends.extend(telescoped_sum(sym, f2, t2, (n, s.k, a2, b2))?);
+    }
     out.push(Obligation {
         lin: ends,
         domain: d_rec.clone(),
@@ -284,6 +315,10 @@ pub fn closed_form(
         let at = s.n0.shifted(m);
         let mut case = finite_sum(sym, std::slice::from_ref(f), (s.k, s.a, s.b), (n, &at), what)?;
         case.extend(lin_neg(&lin_subst(sym, rhs, n, &at)));
+        if let Some((f2, _, a2, b2)) = other {
+            let right = finite_sum(sym, std::slice::from_ref(f2), (s.k, a2, b2), (n, &at), what)?;
+            case.extend(lin_neg(&right));
+        }
         out.push(Obligation {
             lin: case,
             domain: s.rest.clone(),
@@ -497,17 +532,10 @@ pub fn check_telescoper(
     f: &Term,
     t: &Telescoper,
     s: &SumShape<'_>,
-    rhs: &[Term],
+    rhs: (&[Term], Option<&Other<'_>>),
     what: &str,
     log: &mut Vec<Step>,
 ) -> Result<(Discharged, String)> {
-    Bounds {
-        k: s.k,
-        a: s.a,
-        b: s.b,
-        n: s.n,
-    }
-    .check(what)?;
     let (obligations, text) = closed_form(sym, f, t, s, rhs, what)?;
     let mark = log.len();
     log.push(Step::text(format!(
@@ -598,12 +626,7 @@ pub fn check_stated_recurrence(
 ) -> Result<Discharged> {
     s.check(what)?;
     let (k, a, b, n) = (s.k, s.a, s.b, s.n);
-    let zero = RatFunc::from_int(0);
-    let same = (0..t.p.len().max(stated.p.len())).all(|j| {
-        let (x, y) = (t.p.get(j).unwrap_or(&zero), stated.p.get(j).unwrap_or(&zero));
-        x.add(&y.neg()).num.is_zero()
-    });
-    if !same {
+    if !same_coefficients(&t.p, &stated.p) {
         return Err(Error::Domain(format!(
             "{what}: the recurrence's coefficients are not the claim's"
         )));
@@ -632,6 +655,41 @@ pub fn check_stated_recurrence(
     ];
     discharge(sym, &obligations, log)?;
     Ok(Discharged::new(Method::StatedRecurrence))
+}
+
+/// The proof of a stated recurrence `Σ_j q_j S(n+j) + rest(n) = 0` on `d` (`q` = `stated`)
+/// whose other terms are no telescoped ends: its sums are one sum of `h = Σ_j q_j F(n+j, k)`
+/// (checked on `a ≤ k ≤ b`) and the terms of each `S(n+j)` past `b(n)`, so the claim is the
+/// closed form `Σ_{k=a}^{b(n)} h = −rest − those terms`, proved for every `n ≥ n₀` by `h`'s
+/// own recurrence `t` ([`check_telescoper`], which shows `b ≥ a − 1`).
+#[allow(clippy::too_many_arguments)]
+pub fn check_inhomogeneous(
+    sym: &Symbols,
+    (stated, f, h): (&StatedSums, &Term, &Term),
+    t: &Telescoper,
+    s: &SumShape<'_>,
+    rest: &[Term],
+    d: &Domain,
+    what: &str,
+    log: &mut Vec<Step>,
+) -> Result<(Discharged, String)> {
+    // d within n ≥ n₀ and the other integers' domain, so the induction covers the claim.
+    let on = s.rest.with(Aff::var(s.n).minus(s.n0));
+    if !on.cons.iter().all(|c| d.implies_ge(c)) {
+        let why = format!("{what}: the induction is not on all of {}", d.show());
+        return Err(Error::Domain(why));
+    }
+    // A certificate 0: the equation is Σ_j q_j F(n+j, k), the ends the terms past b(n).
+    let (p, g) = (stated.p.clone(), Term::scalar(RatFunc::from_int(0)));
+    let q = Telescoper { p, g, r: String::new() };
+    let mut comb = telescoping_equation(sym, f, &q, s.n, s.k)?;
+    comb.extend(lin_neg(std::slice::from_ref(h)));
+    let d_k = d.with(Aff::var(s.k).minus(s.a)).with(s.b.minus(&Aff::var(s.k)));
+    let eq = format!("{what}: h = Σ_j q_j F(n+j, k) on a ≤ k ≤ b");
+    check_zero(sym, &comb, &d_k, &eq, log)?;
+    let mut rhs = lin_neg(rest);
+    rhs.extend(lin_neg(&telescoped_sum(sym, f, &q, (s.n, s.k, s.a, s.b))?));
+    check_telescoper(sym, h, t, s, (&rhs, None), what, log)
 }
 
 fn show(l: &[Term]) -> String {
@@ -725,7 +783,7 @@ mod tests {
         let mut rhs = Term::scalar(RatFunc::from_int(1));
         rhs.pows = vec![(Base::Const(BigRational::from_integer(c.into())), n.clone())];
         let f = binomial(RatFunc::from_int(1), 0, 1, 0);
-        check_telescoper(&sym, &f, &t, &shape, &[rhs], "S", &mut Vec::new())
+        check_telescoper(&sym, &f, &t, &shape, (&[rhs], None), "S", &mut Vec::new())
     }
 
     #[test]
