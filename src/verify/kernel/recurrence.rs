@@ -19,9 +19,17 @@
 //!   a nonzero polynomial in the parameters for every `n ≥ n₁`, whatever the other integers).
 //!   Induction on `n`: `Δ(n+J) = −Σ_{j<J} p_j(n) Δ(n+j) / p_J(n)`, so `Δ = 0` for every
 //!   `n ≥ n₀` ([`check_telescoper`]).
+//!
+//!   With a second sum `S₂` on the right (two forms of one sequence, [`Other`]), its certificate
+//!   must be of the same recurrence: its telescoping equation is proved too, its telescoped ends
+//!   join the identity of 2. (so `Δ = S − rhs − S₂` satisfies the recurrence), and 3. compares
+//!   `S` with `rhs + S₂`.
 //! - A recurrence the claim states: each of its sums is the first one's summand shifted in `n`
 //!   ([`stated_sums`]), the coefficients are the claim's, and the telescoping equation and the
-//!   telescoped ends with the claim's other terms cancel ([`check_stated_recurrence`]).
+//!   telescoped ends with the claim's other terms cancel ([`check_stated_recurrence`]). When
+//!   no certificate has those ends, the sums are one sum of `h = Σ_j q_j F(n+j, k)` (proved on
+//!   `a ≤ k ≤ b`) plus the terms past `b(n)`, and that sum's closed form is proved by `h`'s own
+//!   recurrence for every `n ≥ n₀` ([`check_inhomogeneous`]).
 
 use super::checked::{Method, Step};
 use super::eval::Alg;
@@ -797,5 +805,45 @@ mod tests {
         assert!(telescoper(&[-2, 1], g(-1, 1), 3).is_err());
         // A true recurrence of the sum that 3^n does not satisfy: refused at the ends.
         assert!(telescoper(&[-3, 1], g(-1, 1), 3).is_err());
+    }
+
+    /// `Σ_{k=0}^{n} C(n, k) = Σ_{k=1}^{n+1} C(n, k − s2)` for `n ≥ 0` by `S(n+1) − 2 S(n)` for
+    /// the left sum (`G = −C(n, k − 1)`) and `p2`, `G2 = c2·C(n, k − 2)` for the right one.
+    fn two_forms(p2: &[i64], c2: i64, s2: i64) -> Result<(Discharged, String)> {
+        let sym = sym();
+        let (zero, one, n) = (Aff::constant(0), Aff::constant(1), Aff::var("n"));
+        let rest = Domain::default();
+        let shape = SumShape {
+            k: "k",
+            a: &zero,
+            b: &n,
+            n: "n",
+            n0: &zero,
+            rest: &rest,
+        };
+        let tel = |p: &[i64], g: Term| Telescoper {
+            p: p.iter().map(|&x| RatFunc::from_int(x)).collect(),
+            g,
+            r: String::new(),
+        };
+        let t1 = tel(&[-2, 1], binomial(RatFunc::from_int(-1), 1, 1, 0));
+        let t2 = tel(p2, binomial(RatFunc::from_int(c2), 2, 1, 0));
+        let (f1, f2) = (
+            binomial(RatFunc::from_int(1), 0, 1, 0),
+            binomial(RatFunc::from_int(1), s2, 1, 0),
+        );
+        let b2 = n.shifted(1);
+        let other: Other<'_> = (&f2, &t2, &one, &b2);
+        check_telescoper(&sym, &f1, &t1, &shape, (&[], Some(&other)), "S", &mut Vec::new())
+    }
+
+    #[test]
+    fn two_forms_need_one_recurrence_both_certificates_and_the_initial_values() {
+        assert!(two_forms(&[-2, 1], -1, 1).is_ok());
+        // Another recurrence for the right sum, a wrong certificate of it, or the right sum
+        // of another sequence (Σ_{k=1}^{n+1} C(n, k − 2) = 2^n − 1).
+        assert!(two_forms(&[-3, 1], -1, 1).is_err());
+        assert!(two_forms(&[-2, 1], -2, 1).is_err());
+        assert!(two_forms(&[-2, 1], -1, 2).is_err());
     }
 }
