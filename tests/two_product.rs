@@ -214,7 +214,10 @@ fn compensated_sum_error_is_the_same_by_either_two_sum() {
     ];
     for b in &cases {
         for t in [0.5, 0.3, third, 0.0, 1.0, 1e-20, 1.0 - f64::EPSILON / 2.0] {
-            let (fma, dekker) = (compensated_de_casteljau_by(b, t, true), compensated_de_casteljau_by(b, t, false));
+            let (fma, dekker) = (
+                compensated_de_casteljau_by(b, t, true),
+                compensated_de_casteljau_by(b, t, false),
+            );
             let runtime = compensated_de_casteljau(b, t);
             assert_eq!(fma.0.to_bits(), dekker.0.to_bits(), "{b:?} at {t:e}");
             assert_eq!(runtime.0.to_bits(), dekker.0.to_bits(), "{b:?} at {t:e}");
