@@ -1,6 +1,7 @@
 //! Compensated de Casteljau for `t ∈ [0, 1]` two nodes at a time: the operations of
-//! `compensated_triangle` (the same ones, in the same order, so the same bits) on pairs of
-//! floats, which the compiler maps to the two lanes of an SSE2 register on the default
+//! `compensated_triangle` (the same ones, in the same order, so the same bits; with FMA the
+//! error of each node's sum by FastTwoSum on the addends ordered by magnitude, the same
+//! exact error as its TwoSum) on pairs of floats, which the compiler maps to the two lanes of an SSE2 register on the default
 //! x86-64 target. Nodes `i` and `i + 1` of a level read the values `[x_i, x_{i+1}]` and
 //! `[x_{i+1}, x_{i+2}]`: the pair loaded for the next step, shifted by one. A level of `len`
 //! nodes takes `⌈len/2⌉` steps; an odd level's last step computes one value too many, in
