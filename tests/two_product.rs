@@ -193,3 +193,37 @@ fn compensated_runtime_choice_gives_the_bits_of_both_methods() {
     }
     assert!(checked > 5_000);
 }
+
+/// The FMA formulas take the error of each node's sum by FastTwoSum on the two products
+/// ordered by magnitude, Dekker's by Knuth's TwoSum: both are the exact error, so the value
+/// and the bound agree bit for bit, signed zeros included, on inputs built to exercise the
+/// ordering: ties in magnitude, opposite signs that cancel, negative zeros, addends far apart.
+#[test]
+fn compensated_sum_error_is_the_same_by_either_two_sum() {
+    let third = 1.0 / 3.0;
+    let cases: Vec<Vec<f64>> = vec![
+        vec![-0.0, -0.0, -0.0, -0.0],
+        vec![0.0, -0.0, 0.0, -0.0],
+        vec![-0.0, 0.0],
+        vec![1.0, -1.0, 1.0, -1.0],
+        vec![third, -third, third, -third, third],
+        vec![1e300, -1e-300, 1e-300, -1e300],
+        vec![1.0, 1e-30, -1.0, 1e30],
+        vec![-2.5, 2.5, -2.5],
+        vec![f64::MIN_POSITIVE, -f64::MIN_POSITIVE, 5e-324, -5e-324],
+    ];
+    for b in &cases {
+        for t in [0.5, 0.3, third, 0.0, 1.0, 1e-20, 1.0 - f64::EPSILON / 2.0] {
+            let (fma, dekker) = (
+                compensated_de_casteljau_by(b, t, true),
+                compensated_de_casteljau_by(b, t, false),
+            );
+            let runtime = compensated_de_casteljau(b, t);
+            assert_eq!(fma.0.to_bits(), dekker.0.to_bits(), "{b:?} at {t:e}");
+            assert_eq!(runtime.0.to_bits(), dekker.0.to_bits(), "{b:?} at {t:e}");
+            if runtime_fma() {
+                assert_eq!(runtime.1.to_bits(), fma.1.to_bits(), "{b:?} at {t:e}");
+            }
+        }
+    }
+}

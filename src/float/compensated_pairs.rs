@@ -1,6 +1,7 @@
 //! Compensated de Casteljau for `t ∈ [0, 1]` two nodes at a time: the operations of
-//! `compensated_triangle` (the same ones, in the same order, so the same bits) on pairs of
-//! floats, which the compiler maps to the two lanes of an SSE2 register on the default
+//! `compensated_triangle` (the same ones, in the same order, so the same bits; with FMA the
+//! error of each node's sum by FastTwoSum on the addends ordered by magnitude, the same
+//! exact error as its TwoSum) on pairs of floats, which the compiler maps to the two lanes of an SSE2 register on the default
 //! x86-64 target. Nodes `i` and `i + 1` of a level read the values `[x_i, x_{i+1}]` and
 //! `[x_{i+1}, x_{i+2}]`: the pair loaded for the next step, shifted by one. A level of `len`
 //! nodes takes `⌈len/2⌉` steps; an odd level's last step computes one value too many, in
@@ -69,7 +70,13 @@ pub(super) fn compensated_in_unit_interval(b: &[f64], t: f64) -> Option<(f64, f6
     if !in_domain(b, t) {
         return None;
     }
-    let (res, bound) = best_triangle(b, t);
+    // a cubic, the common case, on its own version: without the other degrees' code the
+    // call saves no registers and sets up no stack
+    let (res, bound) = if b.len() == 4 {
+        best_cubic(b, t)
+    } else {
+        best_triangle(b, t)
+    };
     (!bound.is_nan()).then_some((res, bound))
 }
 
@@ -96,6 +103,30 @@ fn best_triangle(b: &[f64], t: f64) -> (f64, f64) {
         triangle::<false>(b, t)
     };
     parts.unwrap_or((f64::NAN, f64::NAN))
+}
+
+/// [`best_triangle`] for a cubic (`b.len() == 4`).
+#[multiversion(targets("x86_64+avx+fma"))]
+fn best_cubic(b: &[f64], t: f64) -> (f64, f64) {
+    let parts = if target_cfg_f!(target_feature = "fma") {
+        cubic_triangle::<true>(b, t)
+    } else {
+        cubic_triangle::<false>(b, t)
+    };
+    parts.unwrap_or((f64::NAN, f64::NAN))
+}
+
+/// [`triangle`] for a cubic.
+#[inline(always)]
+fn cubic_triangle<const FMA: bool>(b: &[f64], t: f64) -> Option<(f64, f64)> {
+    let factors = Factors::<Pair, FMA>::new(t);
+    let (hi, lo, abs) = if FMA {
+        cubic(&factors, b)
+    } else {
+        unrolled::<4, 6, FMA>(&factors, b)
+    }?;
+    let res = hi + lo;
+    Some((res, UnitBound::of(3, abs, res)))
 }
 
 /// The compensated triangle of `b` at `t` (in the domain) and its bound, TwoProduct by
@@ -127,6 +158,18 @@ trait Lanes: Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self>
     fn first(self) -> f64;
     /// `k·self − p` in each lane, rounded once.
     fn fused(self, k: Self, p: Self) -> Self;
+    /// `(larger, smaller)` in magnitude, lane by lane.
+    fn ordered(self, o: Self) -> (Self, Self);
+}
+
+/// `(larger, smaller)` of `a`, `b` in magnitude (`a` on a tie).
+#[inline(always)]
+fn ordered(a: f64, b: f64) -> (f64, f64) {
+    if a.abs() >= b.abs() {
+        (a, b)
+    } else {
+        (b, a)
+    }
 }
 
 /// `k·x − p` rounded once: the exact error of `p = fl(k·x)` when `p` is that product.
@@ -159,6 +202,12 @@ impl Lanes for Pair {
     #[inline(always)]
     fn fused(self, k: Self, p: Self) -> Self {
         Pair([fused(self.0[0], k.0[0], p.0[0]), fused(self.0[1], k.0[1], p.0[1])])
+    }
+
+    #[inline(always)]
+    fn ordered(self, o: Self) -> (Self, Self) {
+        let ((a0, b0), (a1, b1)) = (ordered(self.0[0], o.0[0]), ordered(self.0[1], o.0[1]));
+        (Pair([a0, a1]), Pair([b0, b1]))
     }
 }
 
@@ -230,6 +279,12 @@ impl<const W: usize> Lanes for Wide<W> {
     #[inline(always)]
     fn fused(self, k: Self, p: Self) -> Self {
         Wide(std::array::from_fn(|j| fused(self.0[j], k.0[j], p.0[j])))
+    }
+
+    #[inline(always)]
+    fn ordered(self, o: Self) -> (Self, Self) {
+        let pairs: [(f64, f64); W] = std::array::from_fn(|j| ordered(self.0[j], o.0[j]));
+        (Wide(pairs.map(|p| p.0)), Wide(pairs.map(|p| p.1)))
     }
 }
 
@@ -323,7 +378,12 @@ impl<V: Lanes, const FMA: bool> Factors<V, FMA> {
             t: Factor::new(t),
             rho: V::splat(rho),
             s_abs: V::splat(next_up(s + rho.abs())),
-            refinement: exponent(s).max(exponent(t)).min(1074),
+            // with FMA no grid is kept ([`Factors::level_budget`]): any refinement will do
+            refinement: if FMA {
+                52
+            } else {
+                exponent(s).max(exponent(t)).min(1074)
+            },
         }
     }
 
@@ -468,8 +528,16 @@ fn node<const FIRST: bool, V: Lanes, const FMA: bool>(f: &Factors<V, FMA>, a: V,
     let p2 = t * b;
     let e2 = f.t.error(b, p2);
     let sum = p1 + p2;
-    let bb = sum - p1;
-    let e3 = (p1 - (sum - bb)) + (p2 - bb);
+    let e3 = if FMA {
+        // FastTwoSum on the addends ordered by magnitude: the same exact error as Knuth's
+        // TwoSum (so the same bits, +0 when it is 0 in both), two dependent operations
+        // after the sum instead of four; the blend that orders them needs AVX
+        let (big, small) = p1.ordered(p2);
+        (big - sum) + small
+    } else {
+        let bb = sum - p1;
+        (p1 - (sum - bb)) + (p2 - bb)
+    };
     let w = e1 + e2 + e3 + f.rho * a;
     let low = if FIRST {
         w + V::splat(0.0)

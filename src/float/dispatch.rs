@@ -17,6 +17,43 @@ use crate::space::{PointN, VectorSpace};
 use std::any::{Any, TypeId};
 use std::cell::Cell;
 
+/// The point of `dim ≤ INLINE_COORDS` coordinates, coordinate `k` the expression given
+/// (`?` applied), kept inline in the point as they are (collecting through an iterator cost
+/// as much as the kernel). A macro, not a function taking a closure: each coordinate is
+/// computed where it is written, in registers, and the buffer is written from them at once.
+/// Filled by a loop, it was stored one coordinate at a time and copied into the point with
+/// loads that straddled those stores (a failed store-to-load forwarding each, about as long
+/// as the kernel in all); a closure called for each coordinate was not inlined, and its
+/// result came back through memory.
+macro_rules! inline_point {
+    ($dim:expr, $k:ident => $coordinate:expr) => {{
+        let (dim, z) = ($dim, Interval::zero());
+        let c0 = {
+            let $k = 0;
+            $coordinate?
+        };
+        let c1 = if dim > 1 {
+            let $k = 1;
+            $coordinate?
+        } else {
+            z
+        };
+        let c2 = if dim > 2 {
+            let $k = 2;
+            $coordinate?
+        } else {
+            z
+        };
+        let c3 = if dim > 3 {
+            let $k = 3;
+            $coordinate?
+        } else {
+            z
+        };
+        Point::from_inline_prefix([c0, c1, c2, c3], dim)
+    }};
+}
+
 /// `b(t)` by the sign-split enclosure when the points are intervals and `t` is a point of
 /// `[0, 1]`; `None` otherwise, and when a coefficient is not finite (the generic algorithm
 /// then gives its own enclosure).
@@ -52,7 +89,7 @@ where
             let coords = [p0.coords(), p1.coords(), p2.coords(), p3.coords()];
             let dim = coords[0].len();
             if dim <= INLINE_COORDS && coords.iter().all(|c| c.len() == dim) {
-                return cast(inline_point(dim, |k| enclose_gathered(coords.map(|c| c[k]), t))?).ok();
+                return cast(inline_point!(dim, k => enclose_gathered(coords.map(|c| c[k]), t))).ok();
             }
         }
         return cast(curve_of_points(points, t)?).ok();
@@ -67,22 +104,10 @@ where
 fn curve_of_points(points: &[Point<Interval>], t: f64) -> Option<Point<Interval>> {
     let dim = points[0].dim();
     if dim <= INLINE_COORDS {
-        return inline_point(dim, |k| enclose_coordinate(points, k, t));
+        return Some(inline_point!(dim, k => enclose_coordinate(points, k, t)));
     }
     let coords: Option<Vec<Interval>> = (0..dim).map(|k| enclose_coordinate(points, k, t)).collect();
     Some(Point::from_valid(coords?))
-}
-
-/// The point of `dim ≤ INLINE_COORDS` coordinates `coordinate(k)`: on the stack, kept
-/// inline in the point as they are (collecting through an iterator cost as much as the
-/// kernel).
-#[inline(always)]
-fn inline_point(dim: usize, mut coordinate: impl FnMut(usize) -> Option<Interval>) -> Option<Point<Interval>> {
-    let mut coords = [Interval::zero(); INLINE_COORDS];
-    for (k, x) in coords[..dim].iter_mut().enumerate() {
-        *x = coordinate(k)?;
-    }
-    Some(Point::from_inline_prefix(coords, dim))
 }
 
 #[inline(never)]
