@@ -255,7 +255,7 @@ pub fn check_pair<A: Alg>(
         }
     }
     let mut idx = vec![0usize; points.len()];
-    // The certificate's rows: kept for sides without symbolic control points only.
+    // The certificate's rows: every grid point on every basis polygon.
     let mut rows = Vec::new();
     loop {
         let values: Vec<BigRational> = idx.iter().zip(points).map(|(&i, s)| s[i].clone()).collect();
@@ -274,16 +274,21 @@ pub fn check_pair<A: Alg>(
             match l.equals(&r) {
                 Some(true) => {
                     observe(&values, b, &l);
-                    if polygons == 1 {
-                        rows.push(Row {
-                            at: values.clone(),
-                            value: certificate::entries(&l),
-                        });
-                    }
+                    rows.push(Row {
+                        at: values.clone(),
+                        basis: b,
+                        value: certificate::entries(&l),
+                    });
                 }
                 equal => {
                     let refutation = (polygons == 1 && equal == Some(false)).then(|| {
-                        let equality = certificate::equality(bounds, &[], Vec::new(), polygons, written(&*env, bounds));
+                        let equality = certificate::equality(
+                            bounds,
+                            &[],
+                            Vec::new(),
+                            (polygons, Vec::new()),
+                            written(&*env, bounds),
+                        );
                         Box::new(Refutation {
                             equality,
                             at: bounds.params.iter().cloned().zip(values.iter().cloned()).collect(),
@@ -313,7 +318,7 @@ pub fn check_pair<A: Alg>(
                         bounds,
                         points,
                         rows,
-                        polygons,
+                        (polygons, if polygons > 1 { env.control_points() } else { Vec::new() }),
                         written(&*env, bounds),
                     )),
                 }));
