@@ -195,6 +195,21 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
         (_, Verdict::Error) => Err("not decided (an error verdict): nothing to re-check".into()),
         (_, Verdict::Verified) => Err("bounded evidence, not a proof: no data in this version".into()),
         (Data::Sampled(eqs), Verdict::Proved | Verdict::ProvedInRange) => {
+            // A range variable written into the expressions (not an integer symbol) leaves
+            // a checker no way to see that the goal covers the range.
+            let named = o
+                .range
+                .iter()
+                .flat_map(|r| r.split([',', ';']))
+                .filter_map(|p| p.split_once('='));
+            for (v, _) in named {
+                if eqs.iter().any(|eq| !eq.ints.contains_key(v.trim())) {
+                    return Err(format!(
+                        "the range's {} is not an integer symbol of every equality",
+                        v.trim()
+                    ));
+                }
+            }
             let refs: Vec<&Equality> = eqs.iter().collect();
             out.insert("goal".into(), goal(&refs)?);
             out.insert("sampling".into(), sampling_json(eqs));

@@ -7,13 +7,18 @@ use super::objects::{Exact, NumEnv};
 use crate::any_curve::AnyCurve;
 use crate::point::Point;
 use num_rational::BigRational;
+use std::collections::BTreeMap;
 use std::str::FromStr;
+
+mod library;
 
 /// `e` with every call of a concrete curve or surface of `env`, and of the symbolic polygon
 /// or net as a curve or surface, written out; `None` when a call cannot be (a rational
-/// curve's derivative, a coordinate that is not rational). Library operations stay calls.
-pub fn inline<T: Exact>(e: &Expr, env: &NumEnv<T>) -> Option<Expr> {
-    let go = |x: &Expr| inline(x, env);
+/// curve's derivative, a coordinate that is not rational). The library's operations whose
+/// result is a curve or point with rational coefficients in the control points are written
+/// as what the library computes (`library`); the others stay calls.
+pub fn inline<T: Exact>(e: &Expr, env: &NumEnv<T>, ints: &BTreeMap<String, i64>) -> Option<Expr> {
+    let go = |x: &Expr| inline(x, env, ints);
     let all = |xs: &[Expr]| xs.iter().map(go).collect::<Option<Vec<_>>>();
     Some(match e {
         Expr::Num(_) | Expr::Var(_) => e.clone(),
@@ -28,6 +33,7 @@ pub fn inline<T: Exact>(e: &Expr, env: &NumEnv<T>) -> Option<Expr> {
             let args = all(args)?;
             object(name, &args, env)
                 .or_else(|| symbolic(name, &args, env))
+                .or_else(|| library::written(name, &args, env, ints))
                 .unwrap_or(Expr::Call(name.clone(), args))
         }
     })

@@ -372,8 +372,13 @@ def _check_grid(values, grids, ints, lhs, rhs, params, where, points):
 def _check_symbolic(goal):
     from .cert_sympy import same, to_sympy
 
+    from .cert_polygon import unlisted_to_zero
+
     for k, (ints, lhs, rhs, _) in enumerate(goal.equalities):
-        ok = same(to_sympy(lhs, ints), to_sympy(rhs, ints))
+        sides = [to_sympy(e, ints) for e in (lhs, rhs)]
+        if goal.points[k]:
+            sides = [unlisted_to_zero(v, goal.points[k], goal.sorts) for v in sides]
+        ok = same(*sides)
         _need(ok, f"equality {k}: SymPy finds lhs - rhs not identically zero")
 
 

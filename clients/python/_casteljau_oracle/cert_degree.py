@@ -135,6 +135,11 @@ class _Deg:
             e = self.integer(args[1], "an exponent") - self.integer(args[2], "a derivative's order")
             p, q = self.go(args[0])
             return (e * p, e * q) if e >= 0 else (-e * q, -e * p)
+        if name == "delta":
+            # a combination of control points: constant in the parameter (its k and j too)
+            for x in args[1:]:
+                self.constant(x, "delta's order or index")
+            return (0, 0)
         if name in ("C", "binom", "sqrt", "integral"):
             return self.constant(e, name)
         if name == "dot":

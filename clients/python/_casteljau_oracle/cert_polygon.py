@@ -60,6 +60,8 @@ class _PointsDeg(_Deg):
             for a in e[2]:
                 self.constant(a, "an index")
             return (1, 0)
+        if e[0] == "call" and e[1] == "delta" and e[2][0][0] == "var" and e[2][0][1] in self.names:
+            return (1, 0)  # a combination of the control points
         return super().go(e)
 
 
@@ -69,3 +71,26 @@ def check_affine(side, names, ints, where):
         p, q = _PointsDeg(set(names), ints).go(side)
     if q != 0 or p > 1:
         raise PolygonError(f"{where}: the side is not affine in the control points (degree bound {p}/{q})")
+
+
+def unlisted_to_zero(value, points, declared):
+    """A SymPy value with every control point the equality does not list set to 0 (SymPy
+    names a point `b[i, j]` `b_i_j`; a name that is a declared symbol is kept)."""
+    import sympy
+
+    listed = {name + "_" + "_".join(str(i) for i in idx) for name, idx in points}
+    names = {name for name, _ in points}
+
+    def fix(v):
+        if isinstance(v, (list, tuple)):
+            return [fix(x) for x in v]
+        if isinstance(v, sympy.MatrixBase):
+            return v.applyfunc(fix)
+        zero = {
+            s: 0
+            for s in v.free_symbols
+            if s.name not in listed and s.name not in declared and any(s.name.startswith(n + "_") for n in names)
+        }
+        return v.subs(zero) if zero else v
+
+    return fix(value)

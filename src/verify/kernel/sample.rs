@@ -24,7 +24,7 @@ pub trait Points<A: Alg> {
     /// the unit polygons: basis polygon `k + 1` sets the `k`-th to 1.
     fn control_points(&self) -> Vec<(String, Vec<i64>)>;
     /// A side written without the claim's objects, for a certificate (`None`: it cannot be).
-    fn written_out(&self, _side: &Expr) -> Option<Expr> {
+    fn written_out(&self, _side: &Expr, _ints: &BTreeMap<String, i64>) -> Option<Expr> {
         None
     }
 }
@@ -210,7 +210,10 @@ pub enum Pair<A> {
 }
 
 fn written<A: Alg>(env: &dyn Points<A>, bounds: &Bounds<'_>) -> Option<(Expr, Expr)> {
-    Some((env.written_out(bounds.lhs)?, env.written_out(bounds.rhs)?))
+    Some((
+        env.written_out(bounds.lhs, &bounds.ints)?,
+        env.written_out(bounds.rhs, &bounds.ints)?,
+    ))
 }
 
 /// Checks `bounds`' equality at the grid `points` (the proposed values of each parameter):
