@@ -452,7 +452,7 @@ fn read_params(eq: &Json, at: &str, reals: &[String]) -> Res<Vec<Param>> {
     Ok(params)
 }
 
-type Rows = Vec<(Vec<BigRational>, usize, Vec<BigRational>, Vec<BigRational>)>;
+type Rows = Vec<certificate::RowValues>;
 
 fn read_rows(eq: &Json, at: &str, points: usize) -> Res<Rows> {
     let values = array(eq, "values", at)?;

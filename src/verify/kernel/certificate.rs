@@ -148,6 +148,9 @@ pub(super) fn equality(
     }
 }
 
+/// A recorded row: the point, the basis polygon, the left side's and the right side's values.
+pub type RowValues = (Vec<BigRational>, usize, Vec<BigRational>, Vec<BigRational>);
+
 /// One recorded equality to re-check, its sides parsed from the file's text.
 pub struct Claimed<'a> {
     /// The left side.
@@ -159,7 +162,7 @@ pub struct Claimed<'a> {
     /// The parameters with their recorded bounds and points.
     pub params: Vec<Param>,
     /// Every row: where, on which basis polygon, the left side's and the right side's values.
-    pub rows: Vec<(Vec<BigRational>, usize, Vec<BigRational>, Vec<BigRational>)>,
+    pub rows: Vec<RowValues>,
     /// The goal's symbols at each point and basis polygon, read from the file (elaboration,
     /// like the claim's objects in `prove`; the kernel checks the basis complete).
     pub env: Box<dyn Points<BigRational> + 'a>,
