@@ -17,6 +17,8 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
+mod polygon;
+
 /// The `format` field of every certificate.
 pub const FORMAT: &str = "casteljau-certificate";
 /// The format's version.
@@ -41,6 +43,7 @@ const BUILTINS: &[&str] = &[
     "integral",
     "__dB",
     "__dpow",
+    "delta",
 ];
 
 /// The method's name in a certificate.
@@ -68,7 +71,8 @@ fn symbols(eqs: &[&Equality]) -> std::result::Result<BTreeMap<String, &'static s
     let mut out: BTreeMap<String, &'static str> = BTreeMap::new();
     for eq in eqs {
         let names = eq.ints.keys().map(|k| (k, "integer"));
-        for (name, sort) in names.chain(eq.params.iter().map(|p| (&p.name, "real"))) {
+        let points = eq.control_points.iter().map(|(n, _)| (n, polygon::SORT));
+        for (name, sort) in names.chain(eq.params.iter().map(|p| (&p.name, "real"))).chain(points) {
             if *out.entry(name.clone()).or_insert(sort) != sort {
                 return Err(format!("'{name}' is both an integer and a real symbol"));
             }
@@ -77,9 +81,9 @@ fn symbols(eqs: &[&Equality]) -> std::result::Result<BTreeMap<String, &'static s
     Ok(out)
 }
 
-/// Why a goal's text cannot be re-checked alone (it names a claim object, a control point,
-/// a name that is not a symbol, or does not print back to itself).
-fn not_self_contained(text: &str, known: &[String]) -> Option<String> {
+/// Why a goal's text cannot be re-checked alone (it names a claim object, a control point
+/// not among `points`, a name that is not a symbol, or does not print back to itself).
+fn not_self_contained(text: &str, known: &[String], points: &[&String]) -> Option<String> {
     let e = match parse(text, known) {
         Ok(e) => e,
         Err(err) => return Some(format!("'{text}' does not parse back ({err})")),
@@ -89,7 +93,7 @@ fn not_self_contained(text: &str, known: &[String]) -> Option<String> {
     }
     let mut bad: Option<String> = None;
     e.visit(&mut |x| match x {
-        Expr::Index(name, _) => {
+        Expr::Index(name, _) if !points.contains(&name) => {
             bad.get_or_insert(format!("the control points {name}[…]"));
         }
         Expr::Call(name, _) if !BUILTINS.contains(&name.as_str()) => {
@@ -122,11 +126,12 @@ fn goal(eqs: &[&Equality]) -> std::result::Result<Json, String> {
     let syms = symbols(eqs)?;
     let known: Vec<String> = syms.keys().cloned().collect();
     for eq in eqs {
-        if eq.polygons != 1 {
-            return Err("the goal uses symbolic control points (basis polygons)".into());
+        if eq.polygons != eq.control_points.len() + 1 {
+            return Err("the basis polygons are not the zero and the unit ones".into());
         }
+        let points: Vec<&String> = eq.control_points.iter().map(|(n, _)| n).collect();
         for side in [&eq.lhs, &eq.rhs] {
-            if let Some(why) = not_self_contained(side, &known) {
+            if let Some(why) = not_self_contained(side, &known, &points) {
                 return Err(format!("the goal uses {why}"));
             }
         }
@@ -137,7 +142,13 @@ fn goal(eqs: &[&Equality]) -> std::result::Result<Json, String> {
     let symbols: Vec<Json> = syms.iter().map(|(n, s)| json!({"name": n, "sort": s})).collect();
     let equalities: Vec<Json> = eqs
         .iter()
-        .map(|eq| json!({"ints": ints_json(&eq.ints), "lhs": eq.lhs, "rhs": eq.rhs}))
+        .map(|eq| {
+            let mut e = json!({"ints": ints_json(&eq.ints), "lhs": eq.lhs, "rhs": eq.rhs});
+            if !eq.control_points.is_empty() {
+                e["control_points"] = polygon::points_json(&eq.control_points);
+            }
+            e
+        })
         .collect();
     Ok(json!({"relation": "=", "symbols": symbols, "equalities": equalities}))
 }
@@ -157,7 +168,13 @@ fn sampling_json(eqs: &[Equality]) -> Json {
             let values: Vec<Json> = eq
                 .rows
                 .iter()
-                .map(|r| json!({"at": strings(&r.at), "lhs": r.value, "rhs": r.value}))
+                .map(|r| {
+                    let mut row = json!({"at": strings(&r.at), "lhs": r.value, "rhs": r.value});
+                    if !eq.control_points.is_empty() {
+                        row["polygon"] = json!(r.basis);
+                    }
+                    row
+                })
                 .collect();
             json!({"params": params, "values": values})
         })
@@ -178,6 +195,21 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
         (_, Verdict::Error) => Err("not decided (an error verdict): nothing to re-check".into()),
         (_, Verdict::Verified) => Err("bounded evidence, not a proof: no data in this version".into()),
         (Data::Sampled(eqs), Verdict::Proved | Verdict::ProvedInRange) => {
+            // A range variable written into the expressions (not an integer symbol) leaves
+            // a checker no way to see that the goal covers the range.
+            let named = o
+                .range
+                .iter()
+                .flat_map(|r| r.split([',', ';']))
+                .filter_map(|p| p.split_once('='));
+            for (v, _) in named {
+                if eqs.iter().any(|eq| !eq.ints.contains_key(v.trim())) {
+                    return Err(format!(
+                        "the range's {} is not an integer symbol of every equality",
+                        v.trim()
+                    ));
+                }
+            }
             let refs: Vec<&Equality> = eqs.iter().collect();
             out.insert("goal".into(), goal(&refs)?);
             out.insert("sampling".into(), sampling_json(eqs));
@@ -336,10 +368,13 @@ fn rationals(v: &Json, at: &str) -> Res<Vec<BigRational>> {
         .collect()
 }
 
-/// The goal: its symbols (name → is integer) and equalities (ints, lhs, rhs).
+/// One goal equality: the integer values, both sides, the symbolic control points.
+type GoalEq = (BTreeMap<String, i64>, Expr, Expr, Vec<(String, Vec<i64>)>);
+
+/// The goal: its real symbols and equalities.
 struct Goal {
     reals: Vec<String>,
-    equalities: Vec<(BTreeMap<String, i64>, Expr, Expr)>,
+    equalities: Vec<GoalEq>,
 }
 
 fn read_goal(cert: &Json) -> Res<Goal> {
@@ -347,20 +382,26 @@ fn read_goal(cert: &Json) -> Res<Goal> {
     if string(g, "relation", "goal")? != "=" {
         return Err("goal.relation: only '=' is defined".into());
     }
-    let (mut reals, mut integers) = (Vec::new(), Vec::new());
+    let (mut reals, mut integers, mut polygons) = (Vec::new(), Vec::new(), Vec::new());
     for (i, s) in array(g, "symbols", "goal")?.iter().enumerate() {
         let at = format!("goal.symbols[{i}]");
         let name = string(s, "name", &at)?.to_string();
-        if reals.contains(&name) || integers.contains(&name) {
+        if reals.contains(&name) || integers.contains(&name) || polygons.contains(&name) {
             return Err(format!("{at}: '{name}' is declared twice"));
         }
         match string(s, "sort", &at)? {
             "real" => reals.push(name),
             "integer" => integers.push(name),
-            other => return Err(format!("{at}.sort: '{other}' is not real or integer")),
+            polygon::SORT => polygons.push(name),
+            other => {
+                return Err(format!(
+                    "{at}.sort: '{other}' is not real, integer or {}",
+                    polygon::SORT
+                ))
+            }
         }
     }
-    let known: Vec<String> = reals.iter().chain(&integers).cloned().collect();
+    let known: Vec<String> = reals.iter().chain(&integers).chain(&polygons).cloned().collect();
     let mut equalities = Vec::new();
     for (i, eq) in array(g, "equalities", "goal")?.iter().enumerate() {
         let at = format!("goal.equalities[{i}]");
@@ -380,7 +421,8 @@ fn read_goal(cert: &Json) -> Res<Goal> {
         }
         let side =
             |key: &str| -> Res<Expr> { parse(string(eq, key, &at)?, &known).map_err(|e| format!("{at}.{key}: {e}")) };
-        equalities.push((ints, side("lhs")?, side("rhs")?));
+        let points = polygon::read_points(eq, &at, &polygons)?;
+        equalities.push((ints, side("lhs")?, side("rhs")?, points));
     }
     if equalities.is_empty() {
         return Err("goal.equalities: none".into());
@@ -410,9 +452,9 @@ fn read_params(eq: &Json, at: &str, reals: &[String]) -> Res<Vec<Param>> {
     Ok(params)
 }
 
-type Rows = Vec<(Vec<BigRational>, Vec<BigRational>, Vec<BigRational>)>;
+type Rows = Vec<certificate::RowValues>;
 
-fn read_rows(eq: &Json, at: &str) -> Res<Rows> {
+fn read_rows(eq: &Json, at: &str, points: usize) -> Res<Rows> {
     let values = array(eq, "values", at)?;
     if values.len() > certificate::MAX_RECHECK_POINTS {
         return Err(format!(
@@ -427,7 +469,12 @@ fn read_rows(eq: &Json, at: &str) -> Res<Rows> {
         .map(|(k, row)| {
             let at = format!("{at}.values[{k}]");
             let get = |key: &str| rationals(field(row, key, &at)?, &format!("{at}.{key}"));
-            Ok((get("at")?, get("lhs")?, get("rhs")?))
+            Ok((
+                get("at")?,
+                polygon::read_basis(row, &at, points)?,
+                get("lhs")?,
+                get("rhs")?,
+            ))
         })
         .collect()
 }
@@ -443,17 +490,18 @@ fn recheck_proof(cert: &Json, goal: &Goal, method: &str) -> Res<String> {
         ));
     }
     let mut claimed = Vec::with_capacity(eqs.len());
-    for (i, (eq, (ints, lhs, rhs))) in eqs.iter().zip(&goal.equalities).enumerate() {
+    for (i, (eq, (ints, lhs, rhs, points))) in eqs.iter().zip(&goal.equalities).enumerate() {
         let at = format!("sampling.equalities[{i}]");
         claimed.push(Claimed {
             lhs,
             rhs,
             ints: ints.clone(),
             params: read_params(eq, &at, &goal.reals)?,
-            rows: read_rows(eq, &at)?,
+            rows: read_rows(eq, &at, points.len())?,
+            env: Box::new(polygon::FileEnv::new(points.clone())),
         });
     }
-    let proof = certificate::recheck_sampled(&claimed)?;
+    let proof = certificate::recheck_sampled(&mut claimed)?;
     let derived = method_name(proof.method());
     if derived != method {
         return Err(format!("method: the file says {method}, the data is {derived}"));
@@ -471,10 +519,13 @@ fn recheck_fails(cert: &Json, goal: &Goal) -> Res<String> {
     let k = field(f, "equality", "fails")?
         .as_u64()
         .ok_or_else(|| "fails.equality: not an index".to_string())?;
-    let (ints, lhs, rhs) = usize::try_from(k)
+    let (ints, lhs, rhs, points) = usize::try_from(k)
         .ok()
         .and_then(|k| goal.equalities.get(k))
         .ok_or_else(|| format!("fails.equality: no equality {k} in the goal"))?;
+    if !points.is_empty() {
+        return Err("fails: a counterexample on control points is not defined in this version".into());
+    }
     let obj = field(f, "at", "fails")?
         .as_object()
         .ok_or_else(|| "fails.at: not an object".to_string())?;

@@ -7,13 +7,18 @@ use super::objects::{Exact, NumEnv};
 use crate::any_curve::AnyCurve;
 use crate::point::Point;
 use num_rational::BigRational;
+use std::collections::BTreeMap;
 use std::str::FromStr;
 
-/// `e` with every call of a concrete curve or surface of `env` written out; `None` when a
-/// call cannot be (a symbolic polygon, a de Casteljau point, a rational curve's derivative,
-/// a coordinate that is not rational).
-pub fn inline<T: Exact>(e: &Expr, env: &NumEnv<T>) -> Option<Expr> {
-    let go = |x: &Expr| inline(x, env);
+mod library;
+
+/// `e` with every call of a concrete curve or surface of `env`, and of the symbolic polygon
+/// or net as a curve or surface, written out; `None` when a call cannot be (a rational
+/// curve's derivative, a coordinate that is not rational). The library's operations whose
+/// result is a curve or point with rational coefficients in the control points are written
+/// as what the library computes (`library`); the others stay calls.
+pub fn inline<T: Exact>(e: &Expr, env: &NumEnv<T>, ints: &BTreeMap<String, i64>) -> Option<Expr> {
+    let go = |x: &Expr| inline(x, env, ints);
     let all = |xs: &[Expr]| xs.iter().map(go).collect::<Option<Vec<_>>>();
     Some(match e {
         Expr::Num(_) | Expr::Var(_) => e.clone(),
@@ -26,7 +31,10 @@ pub fn inline<T: Exact>(e: &Expr, env: &NumEnv<T>) -> Option<Expr> {
         Expr::Sum(v, a, b, body) => Expr::Sum(v.clone(), Box::new(go(a)?), Box::new(go(b)?), Box::new(go(body)?)),
         Expr::Call(name, args) => {
             let args = all(args)?;
-            object(name, &args, env).unwrap_or(Expr::Call(name.clone(), args))
+            object(name, &args, env)
+                .or_else(|| symbolic(name, &args, env))
+                .or_else(|| library::written(name, &args, env, ints))
+                .unwrap_or(Expr::Call(name.clone(), args))
         }
     })
 }
@@ -106,4 +114,68 @@ fn object<T: Exact>(name: &str, args: &[Expr], env: &NumEnv<T>) -> Option<Expr> 
         }
     }
     sum(terms.into_iter())
+}
+
+fn sum_over(v: &str, hi: Expr, body: Expr) -> Expr {
+    Expr::Sum(v.into(), Box::new(Expr::int(0)), Box::new(hi), Box::new(body))
+}
+
+/// A call of the symbolic polygon `b` (`b(t)`, `b'(t)`, the de Casteljau point `b(i, r, t)`)
+/// or net (`b(u, v)` and its partials `b_u(u, v)`, …) written with its control points:
+/// `Σ_j b[j] B(j, n, t)`, `Σ_j b[i + j] B(j, r, t)`, `Σ_i Σ_j b[i, j] B(i, m, u) B(j, n, v)`.
+fn symbolic<T: Exact>(name: &str, args: &[Expr], env: &NumEnv<T>) -> Option<Expr> {
+    let var = |v: &str| Expr::Var(v.into());
+    if let Some((pname, coeffs)) = &env.polygon {
+        let base = name.trim_end_matches('\'');
+        let order = name.len() - base.len();
+        let n = coeffs.len() as i64 - 1;
+        if base == pname {
+            let at = |i: Expr| Expr::Index(pname.clone(), vec![i]);
+            return match args {
+                [t] => Some(sum_over(
+                    "_j",
+                    Expr::int(n),
+                    Expr::mul(at(var("_j")), basis_at(var("_j"), Expr::int(n), t, order)),
+                )),
+                [i, r, t] if order == 0 => {
+                    let b = basis_at(var("_j"), r.clone(), t, 0);
+                    Some(sum_over(
+                        "_j",
+                        r.clone(),
+                        Expr::mul(at(Expr::add(i.clone(), var("_j"))), b),
+                    ))
+                }
+                _ => None,
+            };
+        }
+    }
+    let (nname, net) = env.net.as_ref()?;
+    let (ku, kv) = if name == nname {
+        (0, 0)
+    } else {
+        match split_partial(name)? {
+            (b, ku, kv) if b == nname => (ku, kv),
+            _ => return None,
+        }
+    };
+    let [u, v] = args else {
+        return None;
+    };
+    let (m, n) = (net.len() as i64 - 1, net.first()?.len() as i64 - 1);
+    let at = Expr::Index(nname.clone(), vec![var("_i"), var("_j")]);
+    let (m, n) = (Expr::int(m), Expr::int(n));
+    let term = Expr::mul(
+        Expr::mul(at, basis_at(var("_i"), m.clone(), u, ku)),
+        basis_at(var("_j"), n.clone(), v, kv),
+    );
+    Some(sum_over("_i", m, sum_over("_j", n, term)))
+}
+
+/// `B(i, n, x)`, or its `k`-th derivative, for an index expression `i`.
+fn basis_at(i: Expr, n: Expr, x: &Expr, k: usize) -> Expr {
+    if k == 0 {
+        Expr::Call("B".into(), vec![i, n, x.clone()])
+    } else {
+        Expr::Call("__dB".into(), vec![i, n, x.clone(), Expr::int(k as i64)])
+    }
 }

@@ -149,8 +149,8 @@ impl<T: Exact> Points<T> for Grid<T> {
         }
         out
     }
-    fn written_out(&self, side: &Expr) -> Option<Expr> {
-        inline(side, &self.num)
+    fn written_out(&self, side: &Expr, ints: &BTreeMap<String, i64>) -> Option<Expr> {
+        inline(side, &self.num, ints)
     }
 }
 

@@ -28,6 +28,7 @@ from fractions import Fraction
 from .cert_degree import degree
 from .cert_eval import EvalError, Matrix, Unsupported, evaluate
 from .cert_expr import ParseError, free_names, parse
+from .cert_polygon import SORT as _POINTS, PolygonError, check_affine, objects as _polygon, read_points
 
 __all__ = ["Outcome", "check_certificate", "check_path", "MAX_FILE_BYTES", "MAX_FILES", "MAX_GRID"]
 
@@ -176,15 +177,20 @@ class _Goal:
         self.sorts = {}
         for s in syms:
             _need(isinstance(s, dict) and isinstance(s.get("name"), str), "goal: a symbol without a name")
-            _need(s.get("sort") in ("real", "integer"), f"goal: symbol {s.get('name')}: sort not real/integer")
+            _need(s.get("sort") in ("real", "integer", _POINTS), f"goal: symbol {s.get('name')}: sort not real/integer/{_POINTS}")
             _need(s["name"] not in self.sorts, f"goal: symbol {s['name']} declared twice")
             self.sorts[s["name"]] = s["sort"]
         eqs = goal.get("equalities")
         _need(isinstance(eqs, list) and eqs, "goal: no equalities")
         known = list(self.sorts)
-        self.equalities = []
+        self.equalities, self.points = [], []
         for k, eq in enumerate(eqs):
-            _need(isinstance(eq, dict) and set(eq) == {"ints", "lhs", "rhs"}, f"equality {k}: not ints, lhs, rhs")
+            fields = set(eq) - {"control_points"} if isinstance(eq, dict) else None
+            _need(fields == {"ints", "lhs", "rhs"}, f"equality {k}: not ints, lhs, rhs (and control_points)")
+            try:
+                points = read_points(eq, self.sorts, f"equality {k}")
+            except PolygonError as e:
+                raise _Refused(str(e)) from None
             ints = {}
             _need(isinstance(eq["ints"], dict), f"equality {k}: ints is not an object")
             for v, x in eq["ints"].items():
@@ -199,6 +205,15 @@ class _Goal:
                 if self.sorts[u] == "integer":
                     _need(u in ints, f"equality {k}: the integer symbol {u} has no value in ints")
             reals = [u for u in self.sorts if self.sorts[u] == "real" and u in used]
+            names = {n for n, _ in points}
+            for u in used:
+                _need(self.sorts[u] != _POINTS or u in names, f"equality {k}: {u} has no control points listed")
+            for side, e in (("lhs", lhs), ("rhs", rhs)):
+                try:
+                    check_affine(e, names, ints, f"equality {k}: {side}")
+                except PolygonError as err:
+                    raise _Refused(str(err)) from None
+            self.points.append(points)
             self.equalities.append((ints, lhs, rhs, reals))
 
 
@@ -319,24 +334,32 @@ def _check_sampling(sampling, goal, method):
             _need(stated_d == d, f"{where}: {var}: the file's degree {stated_d} is not the derived {d}")
             _need(len(pts) > d, f"{where}: {len(pts)} points in {var} do not exceed the degree bound {d}")
             grids.append(pts)
-        _check_grid(data.get("values"), grids, ints, lhs, rhs, params, where)
+        _check_grid(data.get("values"), grids, ints, lhs, rhs, params, where, goal.points[k])
 
 
-def _check_grid(values, grids, ints, lhs, rhs, params, where):
+def _check_grid(values, grids, ints, lhs, rhs, params, where, points):
     size = 1
     for g in grids:
         size *= len(g)
+    polygons = len(points) + 1
+    size *= polygons
     _need(size <= MAX_GRID, f"{where}: a grid of {size} points (limit {MAX_GRID})")
     _need(isinstance(values, list) and len(values) == size, f"{where}: {len(values or [])} values for a grid of {size} points")
     env0 = {v: Fraction(x) for v, x in ints.items()}
-    for row, at in zip(values, itertools.product(*grids)):
-        _need(isinstance(row, dict) and set(row) == {"at", "lhs", "rhs"}, f"{where}: a value row without at, lhs, rhs")
+    # every grid point (the last param fastest) on every basis polygon, the polygon fastest
+    cells = ((at, k) for at in itertools.product(*grids) for k in range(polygons))
+    for row, (at, k) in zip(values, cells):
+        fields = {"at", "lhs", "rhs", "polygon"} if points else {"at", "lhs", "rhs"}
+        _need(isinstance(row, dict) and set(row) == fields, f"{where}: a value row without {', '.join(sorted(fields))}")
+        _need(not points or row["polygon"] == k, f"{where}: the row of basis polygon {k} is listed as polygon {row.get('polygon')!r}")
         listed_at = [_rational(x, f"{where}: at") for x in row["at"]] if isinstance(row["at"], list) else None
         _need(listed_at == list(at), f"{where}: the grid point {_show(list(at))} is listed as {row['at']}")
         env = dict(env0)
         env.update((p["name"], x) for p, x in zip(params, at))
         point = ", ".join(f"{p['name']} = {x}" for p, x in zip(params, at)) or "the evaluation"
-        lv, rv = evaluate(lhs, env), evaluate(rhs, env)
+        point += f" on basis polygon {k}" if points else ""
+        objs = _polygon(points, k)
+        lv, rv = evaluate(lhs, env, objs), evaluate(rhs, env, objs)
         _need(_shape(lv) == _shape(rv), f"{where}: {point}: the sides have different shapes")
         for side, got in (("lhs", lv), ("rhs", rv)):
             listed = row[side]
@@ -349,8 +372,13 @@ def _check_grid(values, grids, ints, lhs, rhs, params, where):
 def _check_symbolic(goal):
     from .cert_sympy import same, to_sympy
 
+    from .cert_polygon import unlisted_to_zero
+
     for k, (ints, lhs, rhs, _) in enumerate(goal.equalities):
-        ok = same(to_sympy(lhs, ints), to_sympy(rhs, ints))
+        sides = [to_sympy(e, ints) for e in (lhs, rhs)]
+        if goal.points[k]:
+            sides = [unlisted_to_zero(v, goal.points[k], goal.sorts) for v in sides]
+        ok = same(*sides)
         _need(ok, f"equality {k}: SymPy finds lhs - rhs not identically zero")
 
 
@@ -359,6 +387,7 @@ def _check_fails(fails, goal):
     k = fails.get("equality")
     _need(isinstance(k, int) and not isinstance(k, bool) and 0 <= k < len(goal.equalities), f"fails: equality {k!r} is not in the goal")
     ints, lhs, rhs, reals = goal.equalities[k]
+    _need(not goal.points[k], "fails: a counterexample on control points is not defined in version 1")
     at = fails.get("at")
     _need(isinstance(at, dict), "fails: at missing")
     _need(set(at) >= set(reals), f"fails: at gives {sorted(at)}, the sides use {reals}")

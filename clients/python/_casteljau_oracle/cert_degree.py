@@ -125,14 +125,21 @@ class _Deg:
         if name in ("B", "__dB"):
             # as documented, whatever i is (a zero B keeps the bound of degree n)
             self.constant(args[0], "a Bernstein index")
-            # __dB keeps B's bound, not lowered by the order, as docs/certificates.md says
             n = max(self.integer(args[1], "a Bernstein degree"), 0)
+            if name == "__dB":
+                # the k-th derivative of a polynomial of degree n has degree n - k
+                n = max(n - self.integer(args[3], "a derivative's order"), 0)
             p, q = self.go(args[2])
             return (n * max(p, q), n * q)
         if name == "__dpow":
             e = self.integer(args[1], "an exponent") - self.integer(args[2], "a derivative's order")
             p, q = self.go(args[0])
             return (e * p, e * q) if e >= 0 else (-e * q, -e * p)
+        if name == "delta":
+            # a combination of control points: constant in the parameter (its k and j too)
+            for x in args[1:]:
+                self.constant(x, "delta's order or index")
+            return (0, 0)
         if name in ("C", "binom", "sqrt", "integral"):
             return self.constant(e, name)
         if name == "dot":

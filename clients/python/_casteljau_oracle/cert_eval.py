@@ -440,6 +440,15 @@ class _Eval:
             if coeff == 0:
                 return Fraction(0)
             return coeff * _pow(x, e - k)
+        if name == "delta":
+            # the k-th forward difference of a polygon's points: Σ_i (-1)^(k-i) C(k, i) b[j + i]
+            if args[0][0] != "var":
+                raise EvalError("delta(b, k, j) needs a polygon's name first")
+            k, j = (_int(self.go(a), "delta's order or index") for a in args[1:])
+            if not 0 <= k <= MAX_EXPONENT:
+                raise EvalError(f"delta(b, {k}, j): the order is outside 0..={MAX_EXPONENT}")
+            terms = [_mul(Fraction((-1) ** (k - i) * binomial(k, i)), self.index(args[0][1], [Fraction(j + i)])) for i in range(k + 1)]
+            return sum_vectors(terms) if isinstance(terms[0], tuple) else sum(terms, Fraction(0))
         if name == "sqrt":
             return _sqrt(self.go(args[0]))
         if name == "dot":

@@ -9,6 +9,8 @@ SymPy keeps (`1/factorial(-1)` is 0). A `sum` with integer bounds is added out; 
 bounds it stays a `sympy.Sum`.
 """
 
+from fractions import Fraction
+
 import sympy
 
 from .cert_expr import deep
@@ -182,6 +184,15 @@ class _Sym:
             x, e, k = (self.go(a) for a in args)
             y = sympy.Dummy("y")
             return sympy.diff(y**e, y, int(k)).subs(y, x)
+        if name == "delta":
+            k, j = (self.go(a) for a in args[1:])
+            if not (k.is_Integer and j.is_Integer):
+                raise Unsupported("delta(b, k, j) at a symbolic k or j")
+            k, j = int(k), int(j)
+            return sum(
+                ((-1) ** (k - i) * sympy.binomial(k, i) * self.index(("index", args[0][1], [("num", Fraction(j + i))])) for i in range(k + 1)),
+                sympy.Integer(0),
+            )
         if name == "sqrt":
             return sympy.sqrt(self.go(args[0]))
         if name == "dot":

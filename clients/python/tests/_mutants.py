@@ -82,6 +82,13 @@ def mutants(doc):
             out.append(("degree bound", where, _set(doc, path, "/".join([str(int(n[0]) + 1)] + n[1:]))))
         elif path[-1] == "points" and isinstance(val, list):
             pass
+        elif path[-1] == "polygon" and isinstance(val, int):
+            # the basis polygon a row belongs to
+            out.append(("polygon", where, _set(doc, path, val + 1)))
+            if val > 0:
+                out.append(("polygon", where, _set(doc, path, val - 1)))
+        elif len(path) >= 2 and path[-2] == "index" and isinstance(val, int):
+            out.append(("control point", where, _set(doc, path, val + 1)))
     # a point dropped (its grid rows kept), and a point repeated
     for k, eq in enumerate((doc.get("sampling") or {}).get("equalities") or []):
         for j, p in enumerate(eq.get("params") or []):
@@ -90,6 +97,12 @@ def mutants(doc):
                 out.append(("point", f"equality {k} {p['name']} dropped", _set(doc, at, p["points"][:-1])))
                 out.append(("point", f"equality {k} {p['name']} repeated", _set(doc, at, p["points"][:-1] + p["points"][:1])))
     goal = doc.get("goal")
+    for k, eq in enumerate((goal or {}).get("equalities") or []):
+        listed = eq.get("control_points") or []
+        if len(listed) >= 2:
+            at = ("goal", "equalities", k, "control_points")
+            out.append(("control point", f"equality {k}: the last dropped", _set(doc, at, listed[:-1])))
+            out.append(("control point", f"equality {k}: two swapped", _set(doc, at, [listed[1], listed[0]] + listed[2:])))
     if goal:
         for k, eq in enumerate(goal["equalities"]):
             if eq["lhs"] != eq["rhs"]:

@@ -7,7 +7,7 @@
 //! the degree bounds derived again, the points checked distinct and numerous enough, both sides
 //! evaluated again at every point and compared with the file's values.
 
-use super::eval::{Deg, Env, Value, VarEnv};
+use super::eval::{Deg, Env, Evaluator, Value, VarEnv};
 use super::expr::Expr;
 use super::sample::{self, Pair, Points};
 use super::Proof;
@@ -38,6 +38,8 @@ pub struct Param {
 pub struct Row {
     /// The parameters' values, in the order of the params.
     pub at: Vec<BigRational>,
+    /// The basis polygon: 0 the zero polygon, `k + 1` the unit polygon of control point `k`.
+    pub basis: usize,
     /// The common value of both sides, entry by entry (printed exactly).
     pub value: Vec<String>,
 }
@@ -57,6 +59,8 @@ pub struct Equality {
     pub rows: Vec<Row>,
     /// How many basis polygons the sides were evaluated on (1: no symbolic control points).
     pub polygons: usize,
+    /// The symbolic control points, in the order of the unit polygons.
+    pub control_points: Vec<(String, Vec<i64>)>,
 }
 
 /// A counterexample: the equality, where it fails and both sides' values there.
@@ -104,11 +108,11 @@ pub(super) fn equality(
     bounds: &sample::Bounds<'_>,
     points: &[Vec<BigRational>],
     rows: Vec<Row>,
-    polygons: usize,
+    (polygons, control_points): (usize, Vec<(String, Vec<i64>)>),
     written: Option<(Expr, Expr)>,
 ) -> Equality {
     let names = bounds.params().to_vec();
-    let degrees = VarEnv(names.iter().map(|v| (v.clone(), Value::S(Deg::var(v)))).collect());
+    let degrees = Degrees::of(&names, &control_points);
     let again = written
         .as_ref()
         .and_then(|(l, r)| sample::bounds(l, r, bounds.ints(), names.clone(), &degrees).ok());
@@ -140,8 +144,12 @@ pub(super) fn equality(
         params,
         rows,
         polygons,
+        control_points,
     }
 }
+
+/// A recorded row: the point, the basis polygon, the left side's and the right side's values.
+pub type RowValues = (Vec<BigRational>, usize, Vec<BigRational>, Vec<BigRational>);
 
 /// One recorded equality to re-check, its sides parsed from the file's text.
 pub struct Claimed<'a> {
@@ -153,25 +161,38 @@ pub struct Claimed<'a> {
     pub ints: BTreeMap<String, i64>,
     /// The parameters with their recorded bounds and points.
     pub params: Vec<Param>,
-    /// Every grid point: where, the left side's and the right side's recorded values.
-    pub rows: Vec<(Vec<BigRational>, Vec<BigRational>, Vec<BigRational>)>,
+    /// Every row: where, on which basis polygon, the left side's and the right side's values.
+    pub rows: Vec<RowValues>,
+    /// The goal's symbols at each point and basis polygon, read from the file (elaboration,
+    /// like the claim's objects in `prove`; the kernel checks the basis complete).
+    pub env: Box<dyn Points<BigRational> + 'a>,
 }
 
-/// Plain variables: the parameters set at each grid point, one (zero) basis polygon.
-struct Plain(VarEnv<BigRational>);
+/// The degree bounds of parameters and of control points (degree 1 in the polygon).
+pub struct Degrees<'a>(pub VarEnv<Deg>, pub &'a [(String, Vec<i64>)]);
 
-impl Points<BigRational> for Plain {
-    fn polygons(&self) -> usize {
-        1
+impl Degrees<'_> {
+    fn of<'a>(names: &[String], points: &'a [(String, Vec<i64>)]) -> Degrees<'a> {
+        Degrees(
+            VarEnv(names.iter().map(|v| (v.clone(), Value::S(Deg::var(v)))).collect()),
+            points,
+        )
     }
-    fn at(&mut self, _: usize, params: &[String], values: &[BigRational]) -> Result<&dyn Env<BigRational>> {
-        for (p, v) in params.iter().zip(values) {
-            self.0 .0.insert(p.clone(), Value::S(v.clone()));
-        }
-        Ok(&self.0)
+}
+
+impl Env<Deg> for Degrees<'_> {
+    fn var(&self, name: &str) -> Option<Value<Deg>> {
+        self.0.var(name)
     }
-    fn control_points(&self) -> Vec<(String, Vec<i64>)> {
-        Vec::new()
+    fn call(&self, _: &str, _: &[Expr], _: &mut Evaluator<'_, Deg>) -> Result<Option<Value<Deg>>> {
+        Ok(None)
+    }
+    fn index(&self, name: &str, _: &[i64]) -> Result<Option<Value<Deg>>> {
+        Ok(self
+            .1
+            .iter()
+            .any(|(n, _)| n == name)
+            .then(|| Value::S(Deg::control_point())))
     }
 }
 
@@ -183,7 +204,7 @@ fn list(v: &[BigRational]) -> String {
 /// must be the recorded ones), checks the points distinct and more than the bound, evaluates
 /// both sides at every grid point (the recorded rows, in grid order, must list exactly those
 /// points and both sides' values). The error names the first failing obligation.
-pub fn recheck_sampled(claimed: &[Claimed<'_>]) -> std::result::Result<Proof, String> {
+pub fn recheck_sampled(claimed: &mut [Claimed<'_>]) -> std::result::Result<Proof, String> {
     let total: usize = claimed.iter().map(|c| c.rows.len()).sum();
     if total > MAX_RECHECK_POINTS {
         return Err(format!(
@@ -191,16 +212,12 @@ pub fn recheck_sampled(claimed: &[Claimed<'_>]) -> std::result::Result<Proof, St
         ));
     }
     let mut cases = Vec::with_capacity(claimed.len());
-    for (i, c) in claimed.iter().enumerate() {
+    for (i, c) in claimed.iter_mut().enumerate() {
         let at = |m: String| format!("equality {i}: {m}");
         let names: Vec<String> = c.params.iter().map(|p| p.name.clone()).collect();
-        let degrees = VarEnv(
-            names
-                .iter()
-                .map(|v| (v.clone(), Value::S(Deg::var(v))))
-                .collect::<BTreeMap<_, _>>(),
-        );
-        let bounds = sample::bounds(c.lhs, c.rhs, &c.ints, names.clone(), &degrees).map_err(|e| at(e.to_string()))?;
+        let points = c.env.control_points();
+        let degrees = Degrees::of(&names, &points);
+        let bounds = sample::bounds(c.lhs, c.rhs, &c.ints, names, &degrees).map_err(|e| at(e.to_string()))?;
         for (p, &need) in c.params.iter().zip(bounds.needs()) {
             let (l, r) = bounds.describe(&p.name);
             if (p.degree, &p.lhs_degree, &p.rhs_degree) != (need, &l, &r) {
@@ -212,25 +229,28 @@ pub fn recheck_sampled(claimed: &[Claimed<'_>]) -> std::result::Result<Proof, St
         }
         let points: Vec<Vec<BigRational>> = c.params.iter().map(|p| p.points.clone()).collect();
         let grid = points.iter().try_fold(1usize, |acc, p| acc.checked_mul(p.len()));
+        let grid = grid.and_then(|g| g.checked_mul(c.env.polygons()));
         if grid != Some(c.rows.len()) {
             return Err(at(format!(
-                "{} value rows for a grid of {} points",
+                "{} value rows for a grid of {} points on {} basis polygons",
                 c.rows.len(),
-                grid.map_or("too many".into(), |g| g.to_string())
+                grid.map_or("too many".into(), |g| (g / c.env.polygons().max(1)).to_string()),
+                c.env.polygons()
             )));
         }
         let mut k = 0;
         let mut mismatch: Option<String> = None;
-        let mut observe = |values: &[BigRational], _: usize, l: &Value<BigRational>| {
+        let rows = &c.rows;
+        let mut observe = |values: &[BigRational], b: usize, l: &Value<BigRational>| {
             if mismatch.is_some() {
                 return;
             }
-            let (row_at, row_l, row_r) = &c.rows[k];
+            let (row_at, row_b, row_l, row_r) = &rows[k];
             k += 1;
             let got: Vec<BigRational> = l.entries().into_iter().cloned().collect();
-            if row_at.as_slice() != values {
+            if row_at.as_slice() != values || *row_b != b {
                 mismatch = Some(format!(
-                    "row {}: at ({}), the grid's point is ({})",
+                    "row {}: at ({}) on polygon {row_b}, the grid's point is ({}) on polygon {b}",
                     k - 1,
                     list(row_at),
                     list(values)
@@ -251,8 +271,7 @@ pub fn recheck_sampled(claimed: &[Claimed<'_>]) -> std::result::Result<Proof, St
                 ));
             }
         };
-        let outcome = sample::check_pair(&bounds, &mut Plain(VarEnv(BTreeMap::new())), &points, &mut observe)
-            .map_err(|e| at(e.to_string()))?;
+        let outcome = sample::check_pair(&bounds, &mut *c.env, &points, &mut observe).map_err(|e| at(e.to_string()))?;
         if let Some(m) = mismatch {
             return Err(at(m));
         }

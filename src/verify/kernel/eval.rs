@@ -523,7 +523,9 @@ fn bernstein_derivative<A: Alg>(i: i64, n: i64, g: &A, k: i64) -> Result<A> {
     }
     let s = A::from_int(1).sub_ref(g);
     let mut acc = A::from_int(0);
-    for m in 0..=k {
+    // Powers differentiated past their exponent vanish: skipped, so that the degree bound
+    // is n − k (a zero factor would keep the other factor's degree in `Deg`).
+    for m in (k - (n - i)).max(0)..=k.min(i) {
         let left = power_derivative(g, i, m)?;
         let mut right = power_derivative(&s, n - i, k - m)?;
         if (k - m) % 2 == 1 {

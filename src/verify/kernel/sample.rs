@@ -24,7 +24,7 @@ pub trait Points<A: Alg> {
     /// the unit polygons: basis polygon `k + 1` sets the `k`-th to 1.
     fn control_points(&self) -> Vec<(String, Vec<i64>)>;
     /// A side written without the claim's objects, for a certificate (`None`: it cannot be).
-    fn written_out(&self, _side: &Expr) -> Option<Expr> {
+    fn written_out(&self, _side: &Expr, _ints: &BTreeMap<String, i64>) -> Option<Expr> {
         None
     }
 }
@@ -210,7 +210,10 @@ pub enum Pair<A> {
 }
 
 fn written<A: Alg>(env: &dyn Points<A>, bounds: &Bounds<'_>) -> Option<(Expr, Expr)> {
-    Some((env.written_out(bounds.lhs)?, env.written_out(bounds.rhs)?))
+    Some((
+        env.written_out(bounds.lhs, &bounds.ints)?,
+        env.written_out(bounds.rhs, &bounds.ints)?,
+    ))
 }
 
 /// Checks `bounds`' equality at the grid `points` (the proposed values of each parameter):
@@ -255,7 +258,7 @@ pub fn check_pair<A: Alg>(
         }
     }
     let mut idx = vec![0usize; points.len()];
-    // The certificate's rows: kept for sides without symbolic control points only.
+    // The certificate's rows: every grid point on every basis polygon.
     let mut rows = Vec::new();
     loop {
         let values: Vec<BigRational> = idx.iter().zip(points).map(|(&i, s)| s[i].clone()).collect();
@@ -274,16 +277,21 @@ pub fn check_pair<A: Alg>(
             match l.equals(&r) {
                 Some(true) => {
                     observe(&values, b, &l);
-                    if polygons == 1 {
-                        rows.push(Row {
-                            at: values.clone(),
-                            value: certificate::entries(&l),
-                        });
-                    }
+                    rows.push(Row {
+                        at: values.clone(),
+                        basis: b,
+                        value: certificate::entries(&l),
+                    });
                 }
                 equal => {
                     let refutation = (polygons == 1 && equal == Some(false)).then(|| {
-                        let equality = certificate::equality(bounds, &[], Vec::new(), polygons, written(&*env, bounds));
+                        let equality = certificate::equality(
+                            bounds,
+                            &[],
+                            Vec::new(),
+                            (polygons, Vec::new()),
+                            written(&*env, bounds),
+                        );
                         Box::new(Refutation {
                             equality,
                             at: bounds.params.iter().cloned().zip(values.iter().cloned()).collect(),
@@ -313,7 +321,7 @@ pub fn check_pair<A: Alg>(
                         bounds,
                         points,
                         rows,
-                        polygons,
+                        (polygons, if polygons > 1 { env.control_points() } else { Vec::new() }),
                         written(&*env, bounds),
                     )),
                 }));

@@ -1,0 +1,182 @@
+//! The library's operations on the symbolic polygon or net written out as what the library
+//! computes: each result is linear in the control points, so running the library on the zero
+//! polygon and on each unit polygon gives its coefficients, and the call is written as the
+//! resulting curve (`Σ_i (c_i0 + Σ_j c_ij b[j]) B(i, d, t)`) or point. Operations whose result
+//! depends on a parameter other than the curve's (`left(b, t0, t)`, `isou(b, u0, v)`, the
+//! evaluation routines `bsum`, `vfirst`, `sbsum`) are not written out.
+//!
+//! The certificate's values are the ones the proof computed with the library; re-reading the
+//! written goal re-evaluates it on the same grid and basis polygons, so an expression written
+//! here that differs from the library's result is not kept (`certify::certificate`).
+
+use super::super::kernel::expr::{eval_int, Expr};
+use super::super::methods::{NetMethod, PolygonMethod};
+use super::super::objects::{Exact, NumEnv};
+use crate::curve::BezierCurve;
+use crate::point::Point;
+use crate::surface::BezierSurface;
+use num_rational::BigRational;
+use num_traits::{One, Zero};
+use std::collections::BTreeMap;
+
+/// A library result on one basis polygon: a curve (its control points) or a point.
+enum Result1 {
+    Curve(Vec<BigRational>),
+    Point(BigRational),
+}
+
+fn coord(p: &Point<BigRational>) -> BigRational {
+    p.coords()[0].clone()
+}
+
+fn curve_points(c: &BezierCurve<BigRational>) -> Vec<BigRational> {
+    c.points().iter().map(coord).collect()
+}
+
+/// `c0 + Σ_k c_k · point_k` with the zero coefficients left out.
+fn affine(c0: &BigRational, coeffs: &[(Expr, BigRational)]) -> Expr {
+    let mut terms: Vec<Expr> = Vec::new();
+    if !c0.is_zero() {
+        terms.push(Expr::Num(c0.clone()));
+    }
+    for (point, c) in coeffs {
+        let d = c - c0;
+        if !d.is_zero() {
+            terms.push(Expr::mul(Expr::Num(d), point.clone()));
+        }
+    }
+    terms.into_iter().reduce(Expr::add).unwrap_or_else(|| Expr::int(0))
+}
+
+/// The call written from the results on the zero polygon (`results[0]`) and the unit polygon
+/// of each of `points` (`results[k + 1]`); `t` the curve's parameter for a curve result.
+fn write(points: &[Expr], results: &[Result1], t: Option<&Expr>) -> Option<Expr> {
+    match &results[0] {
+        Result1::Point(z) => {
+            let coeffs = points
+                .iter()
+                .zip(&results[1..])
+                .map(|(p, r)| match r {
+                    Result1::Point(x) => Some((p.clone(), x.clone())),
+                    Result1::Curve(_) => None,
+                })
+                .collect::<Option<Vec<_>>>()?;
+            Some(affine(z, &coeffs))
+        }
+        Result1::Curve(z) => {
+            let d = z.len().checked_sub(1)?;
+            let mut terms = Vec::new();
+            for (i, zi) in z.iter().enumerate() {
+                let coeffs = points
+                    .iter()
+                    .zip(&results[1..])
+                    .map(|(p, r)| match r {
+                        Result1::Curve(c) if c.len() == z.len() => Some((p.clone(), c[i].clone())),
+                        _ => None,
+                    })
+                    .collect::<Option<Vec<_>>>()?;
+                let b = Expr::Call("B".into(), vec![Expr::int(i as i64), Expr::int(d as i64), t?.clone()]);
+                terms.push(Expr::mul(affine(zi, &coeffs), b));
+            }
+            terms.into_iter().reduce(Expr::add)
+        }
+    }
+}
+
+fn unit(len: usize, one: Option<usize>) -> Vec<BigRational> {
+    (0..len)
+        .map(|j| {
+            if Some(j) == one {
+                BigRational::one()
+            } else {
+                BigRational::zero()
+            }
+        })
+        .collect()
+}
+
+fn pick(c: &BezierCurve<BigRational>, i: i64) -> BigRational {
+    usize::try_from(i)
+        .ok()
+        .and_then(|i| c.points().get(i))
+        .map_or_else(BigRational::zero, coord)
+}
+
+/// A library operation on the polygon or net of `env` written out (`None`: not one, or one
+/// that is not written out).
+pub(super) fn written<T: Exact>(
+    name: &str,
+    args: &[Expr],
+    env: &NumEnv<T>,
+    ints: &BTreeMap<String, i64>,
+) -> Option<Expr> {
+    let int = |k: usize| eval_int(args.get(k)?, ints).ok();
+    if let Some((pname, coeffs)) = &env.polygon {
+        if let Some(m) = PolygonMethod::of_call(name, args, pname).ok().flatten() {
+            let n = coeffs.len();
+            let points: Vec<Expr> = (0..n)
+                .map(|j| Expr::Index(pname.clone(), vec![Expr::int(j as i64)]))
+                .collect();
+            let r = usize::try_from(int(1)?).ok()?;
+            let on = |one: Option<usize>| -> Option<Result1> {
+                let pts = unit(n, one)
+                    .into_iter()
+                    .map(|x| Point::new(vec![x]).ok())
+                    .collect::<Option<Vec<_>>>()?;
+                let c = BezierCurve::new(pts).ok()?;
+                let deriv = || if r >= n { None } else { c.derivative(r).ok() };
+                Some(match m {
+                    PolygonMethod::Elev => Result1::Curve(curve_points(&c.elevate_by(r).ok()?)),
+                    PolygonMethod::Steps => Result1::Curve(curve_points(&c.elevate_steps(r).ok()?)),
+                    PolygonMethod::Elevp => Result1::Point(pick(&c.elevate_by(r).ok()?, int(2)?)),
+                    PolygonMethod::Deriv => {
+                        Result1::Curve(deriv().map_or(vec![BigRational::zero()], |d| curve_points(&d)))
+                    }
+                    PolygonMethod::Derivp => {
+                        Result1::Point(deriv().map_or_else(BigRational::zero, |d| pick(&d, int(2).unwrap_or(-1))))
+                    }
+                    _ => return None,
+                })
+            };
+            let results = std::iter::once(None)
+                .chain((0..n).map(Some))
+                .map(on)
+                .collect::<Option<Vec<_>>>()?;
+            return write(&points, &results, args.get(2));
+        }
+    }
+    let (nname, net) = env.net.as_ref()?;
+    let m = NetMethod::of_call(name, args, nname).ok().flatten()?;
+    let (rows, cols) = (net.len(), net.first()?.len());
+    let points: Vec<Expr> = (0..rows * cols)
+        .map(|k| {
+            Expr::Index(
+                nname.clone(),
+                vec![Expr::int((k / cols) as i64), Expr::int((k % cols) as i64)],
+            )
+        })
+        .collect();
+    let k = usize::try_from(int(1)?).ok().filter(|&k| k < 4)?;
+    let on = |one: Option<usize>| -> Option<Result1> {
+        let flat = unit(rows * cols, one);
+        let net = flat
+            .chunks(cols)
+            .map(|row| {
+                row.iter()
+                    .map(|x| Point::new(vec![x.clone()]).ok())
+                    .collect::<Option<Vec<_>>>()
+            })
+            .collect::<Option<Vec<_>>>()?;
+        let s = BezierSurface::new(net).ok()?;
+        Some(match m {
+            NetMethod::Bnd => Result1::Curve(curve_points(&s.boundary()[k])),
+            NetMethod::Corner => Result1::Point(coord(&s.corners()[k])),
+            _ => return None,
+        })
+    };
+    let results = std::iter::once(None)
+        .chain((0..rows * cols).map(Some))
+        .map(on)
+        .collect::<Option<Vec<_>>>()?;
+    write(&points, &results, args.get(2))
+}
