@@ -183,7 +183,7 @@ fn proved(m: &Value) -> (Verdict, String) {
     }
     let path = std::env::temp_dir().join(format!("casteljau-mutant-{}.toml", std::process::id()));
     std::fs::write(&path, toml).unwrap();
-    let verdict = match claims::load_paths(&[path.clone()]) {
+    let verdict = match claims::load_paths(std::slice::from_ref(&path)) {
         Ok(files) => {
             let o = &prove_files(&files, &mut |_, _, _| {}).unwrap().outcomes[0];
             (o.verdict, o.certificate.clone())

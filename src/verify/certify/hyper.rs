@@ -141,7 +141,7 @@ pub(super) fn recheck(cert: &Json, method: &str) -> Res<String> {
         ));
     }
     Ok(format!(
-        "for every value of the open ranges: {obligations} obligations proved on the pieces of their domains ({})",
+        "for every value of the open ranges: the goal translated again, {obligations} kernel checks passed ({})",
         derived.text()
     ))
 }

@@ -74,7 +74,8 @@ pub(crate) fn declarations(goal: &Symbolic) -> Decls {
 }
 
 /// Translates a written goal again and proves it by the same kernel checks as `prove` did:
-/// the kernel's method and the number of obligations it checked. The members must print back
+/// the kernel's method and the number of checks it passed (each obligation of the pieces, a
+/// WZ evaluation with its own obligations). The members must print back
 /// to their text.
 pub(crate) fn prove_written(goal: &Symbolic) -> Result<(super::Method, usize)> {
     let decls = declarations(goal);
