@@ -12,6 +12,12 @@ the goal holds at every integer point of the first `OPEN_VALUES` values of each 
 (closed ranges in full), at `REAL_POINTS` values of each real symbol and generic rational
 control points. A goal edited to be false at one of those points is refused; otherwise the file
 is "not re-checked" with what was evaluated.
+
+With SymPy (the optional extra), a `wz` goal of one equality `Σ_{k=a}^{b(n)} F(n, k) = rhs(n)`
+(one sum against one term, either side) with one certificate `R` is also checked for its WZ
+equation: with `F̃ = F / rhs` and `G = R·F̃`, `(F̃(n+1, k) − F̃(n, k) − G(n, k+1) + G(n, k)) / F̃(n, k)`
+must simplify (`combsimp`, `cancel`) to 0 as a rational function; a certificate that does not
+is refused. The boundary of the sum and the base case are not checked here.
 """
 
 import itertools
@@ -19,8 +25,9 @@ from fractions import Fraction
 
 from .cert_eval import evaluate
 from .cert_expr import free_names, parse
+from .cert_eval import Unsupported
 
-__all__ = ["check_pieces", "OPEN_VALUES", "REAL_POINTS"]
+__all__ = ["check_pieces", "check_wz", "OPEN_VALUES", "REAL_POINTS"]
 
 #: The values of each open range evaluated: its least value and the next ones.
 OPEN_VALUES = 4
@@ -136,7 +143,66 @@ def check_pieces(doc):
             for i, (lhs, rhs) in enumerate(sides):
                 lv, rv = evaluate(lhs, env, objects), evaluate(rhs, env, objects)
                 _need(lv == rv, f"goal.equalities[{i}]: at {_show(env)} the sides are {lv} and {rv}")
-    return (
+    detail = (
         f"for-every proof on pieces: not implemented here; the goal holds at its first values "
         f"({count} evaluations, the first {OPEN_VALUES} values of each open range)"
     )
+    wz = check_wz(doc)
+    return detail if wz is None else f"{detail}; {wz}"
+
+
+def _has_sum(e):
+    return isinstance(e, tuple) and (e[0] == "sum" or any(_has_sum(x) for x in e[1:] if isinstance(x, (tuple, list))))
+
+
+def check_wz(doc):
+    """The WZ equation of a one-sum `wz` goal with one `R`, by SymPy (see the module
+    documentation): `None` when the goal has another shape or SymPy is missing, else what was
+    checked; raises `PiecesRefused` when the equation fails."""
+    reals, ranges, sides, polygon, net = _read(doc)
+    certs = doc["pieces"]["certificates"]
+    if doc.get("method") != "wz" or len(certs) != 1 or len(sides) != 1 or polygon or net:
+        return None
+    lhs, rhs = sides[0]
+    if lhs[0] == "sum" and not _has_sum(rhs):
+        s, other = lhs, rhs
+    elif rhs[0] == "sum" and not _has_sum(lhs):
+        s, other = rhs, lhs
+    else:
+        return None
+    if other[0] in ("add", "sub"):
+        return None
+    _, k, _lo, hi, body = s
+    ints = [r["name"] for r in ranges]
+    in_bound = [v for v in ints if v in free_names(hi)]
+    if len(in_bound) != 1:
+        return None
+    try:
+        import sympy
+
+        from .cert_sympy import to_sympy
+    except ImportError:
+        return None
+    n = in_bound[0]
+    syms = {v: None for v in ints + [k]}
+    try:
+        f = to_sympy(body, syms, reals) / to_sympy(other, syms, reals)
+        r = to_sympy(parse(certs[0], strict=True), syms, reals)
+    except Unsupported:
+        return None
+    ns, ks = sympy.Symbol(n, integer=True), sympy.Symbol(k, integer=True)
+    def ratio(x):  # F(shifted) / F as a rational function: powers of one base combined first
+        return sympy.combsimp(sympy.powsimp(sympy.powdenest(x / f, force=True), force=True))
+
+    # F(n+1, k)/F − 1 − R(n, k+1)·F(n, k+1)/F + R(n, k)
+    eq = ratio(f.subs(ns, ns + 1)) - 1 - r.subs(ks, ks + 1) * ratio(f.subs(ks, ks + 1)) + r
+    rest = sympy.cancel(sympy.together(eq))
+    if rest != 0 and not rest.is_rational_function(*rest.free_symbols):
+        # SymPy left powers or factorials: its simplification, not the certificate, stopped
+        return "the WZ equation not decided by SymPy (its simplification left powers or factorials)"
+    _need(
+        rest == 0,
+        f"pieces.certificates[0]: with R = {certs[0]}, F(n+1, k) - F(n, k) - G(n, k+1) + G(n, k) "
+        f"is {rest} times F(n, k), not 0 ({n} = n, {k} = k, G = R·F)",
+    )
+    return f"the WZ equation in {n}, {k} with R holds as a rational identity (SymPy)"

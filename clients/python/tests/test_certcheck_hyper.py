@@ -78,3 +78,21 @@ def test_tampered_goals_are_refused_or_true_at_their_first_values():
     # a goal edited at a number or sign is false at its first values far more often than not
     assert counts[REFUSED] > counts[NOT_RECHECKED]
     assert total >= 500, total
+
+
+def test_a_tampered_wz_certificate_is_refused():
+    import pytest
+
+    pytest.importorskip("sympy")
+    for cid, want in (("000-partition-of-unity", 2), ("000-4", 2)):
+        d = next(d for d in _docs() if d["id"] == cid)
+        o = check_certificate(d)
+        assert "the WZ equation in" in o.detail and o.status == NOT_RECHECKED, o.line()
+        refused = 0
+        for e in _edits(d["pieces"]["certificates"][0]):
+            m = json.loads(json.dumps(d))
+            m["pieces"]["certificates"][0] = e
+            o = check_certificate(m)
+            refused += o.status == REFUSED
+            assert o.status == REFUSED or "WZ equation" in o.detail, o.line()
+        assert refused >= want, (cid, refused)
