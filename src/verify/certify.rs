@@ -214,6 +214,9 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
         (_, Verdict::Fails) => Err(format!(
             "the counterexample was found by {method}, whose data this version does not record (not done)"
         )),
+        (_, Verdict::Proved) if matches!(o.method, Some(Method::Pieces | Method::Wz)) => Err(format!(
+            "method {method}: its goal is written only for an identity resting on no lemma (a claim it uses) and on no assumption beyond its ranges (not done)"
+        )),
         _ => Err(format!(
             "method {method}: this version records no data for it (not done)"
         )),
