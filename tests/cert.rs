@@ -66,7 +66,7 @@ fn every_recheckable_certificate_is_accepted_and_the_others_say_why() {
             }
         }
     }
-    assert_eq!((accepted, none), (65, 90));
+    assert_eq!((accepted, none), (91, 64));
 }
 
 /// Where a mutant changes the file.
@@ -307,7 +307,8 @@ fn tampered_certificates_are_refused_or_prove_a_true_goal() {
     let mut kinds = std::collections::BTreeMap::new();
     for (path, text) in committed() {
         let cert: Value = serde_json::from_str(&text).unwrap();
-        if cert["check"] != "kernel" {
+        // The for-every certificates (`pieces` data) have their own test: tests/cert_hyper.rs.
+        if cert["check"] != "kernel" || cert.get("pieces").is_some() {
             continue;
         }
         for (label, m) in mutants(&cert) {

@@ -44,6 +44,7 @@ use super::outcome::Checked;
 
 mod collapse;
 mod induction;
+pub(crate) mod written;
 use super::recurrence::{self, coefficient_times_sum, has_sum};
 use super::translate::{prepare, Translator, UNIT, UNIT2};
 use crate::error::{Error, Result};
@@ -251,8 +252,13 @@ pub(crate) fn prove_symbolic(
     }
     let sides = parsed_sides(closed, identity)?;
     let rewritten = lemma::apply(&sides, &ctx.decls, lemmas)?;
+    let goal = written::written(ctx, &rewritten, &identity.certificates);
     let (cert, log, method, evidence) = prove_sides(&ctx.decls, closed, rewritten, &identity.certificates)?;
     let proof = check_discharged(method, &evidence).ok_or_else(|| refused(method))?;
+    let proof = match goal {
+        Some(g) => proof.with_goal(g),
+        None => proof,
+    };
     Ok((cert, log, proof))
 }
 

@@ -29,6 +29,7 @@ from .cert_degree import degree
 from .cert_eval import EvalError, Matrix, Unsupported, evaluate
 from .cert_expr import ParseError, free_names, parse
 from .cert_polygon import SORT as _POINTS, PolygonError, check_affine, objects as _polygon, read_points
+from .cert_hyper import PiecesRefused, check_pieces
 
 __all__ = ["Outcome", "check_certificate", "check_path", "MAX_FILE_BYTES", "MAX_FILES", "MAX_GRID"]
 
@@ -115,6 +116,11 @@ def check_certificate(doc, name="?", symbolic=False):
         _check_header(doc)
         if doc["check"] == "none":
             return out(NOT_RECHECKED, f"no checkable data in the file: {doc['reason']}")
+        if "pieces" in doc:
+            try:
+                return out(NOT_RECHECKED, check_pieces(doc))
+            except PiecesRefused as e:
+                return out(REFUSED, str(e))
         if verdict in ("proved", "proved_in_range"):
             _need(method in ("sampling", "evaluation"), f"method {method!r} carries no data in format version 1")
             goal = _Goal(doc.get("goal"))

@@ -263,7 +263,8 @@ class _Parser:
                 return ("sum", args[0][1], args[1], args[2], args[3])
             _check_arity(name, len(args), self.fail)
             return ("call", name, args)
-        # strict (a certificate's goal): only a declared name is indexed (its control points)
+        # strict (a certificate's goal): only a declared name is indexed (its control points,
+        # or a for-every goal's symbolic polygon or net)
         if self.peek_sym("[") and (not self.strict or name in self.known):
             self.pos += 1
             args = self.parse_args("]")

@@ -86,6 +86,27 @@ pub enum Data {
     Sampled(Vec<Equality>),
     /// A counterexample.
     Refuted(Box<Refutation>),
+    /// A for-every proof on the pieces of a domain, by the goal it was built from.
+    Symbolic(Box<Symbolic>),
+}
+
+/// The goal of a for-every proof as its translation into hypergeometric terms read it
+/// (written by the caller, printed so that it parses back): a re-check translates it again
+/// and runs the same kernel checks on what it gets.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Symbolic {
+    /// The real parameters.
+    pub reals: Vec<String>,
+    /// The integer ranges: variable, least value, largest value (`None`: open).
+    pub for_all: Vec<(String, String, Option<String>)>,
+    /// The symbolic control polygon: name, degree.
+    pub polygon: Option<(String, String)>,
+    /// The symbolic control net: name, degrees.
+    pub net: Option<(String, [String; 2])>,
+    /// The chain's members.
+    pub members: Vec<String>,
+    /// The WZ certificates `R` of the symbolic sums, as the claim gives them.
+    pub certificates: Vec<String>,
 }
 
 impl Data {

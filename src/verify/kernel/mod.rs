@@ -133,6 +133,14 @@ impl Proof {
         &self.data
     }
 
+    /// The same proof with the goal its for-every obligations were built from, as its data.
+    pub fn with_goal(mut self, goal: certificate::Symbolic) -> Proof {
+        if self.method.is_for_every() {
+            self.data = certificate::Data::Symbolic(Box::new(goal));
+        }
+        self
+    }
+
     /// The finite ranges a `proved_in_range` covers.
     pub fn range(&self) -> Option<&str> {
         match &self.scope {

@@ -1,0 +1,208 @@
+"""Certificates of for-every proofs with `pieces` data (methods `pieces` and `wz`), written
+from the section "Method pieces and wz: goals for every integer value" of
+docs/certificates.md.
+
+Such a goal says `lhs = rhs` for every integer point of its `for_all` ranges (each open range
+unbounded) and every real value of its real symbols, for every values of its symbolic control
+polygon or net. The program's proof splits the domain into pieces and proves a rational
+identity on each; this checker does not implement that argument, so it never reports such a
+file as re-checked. What it does check, exactly (`Fraction`): the goal is well formed (every
+integer symbol has one range, the equalities form a chain, the names are the goal's), and
+the goal holds at every integer point of the first `OPEN_VALUES` values of each open range
+(closed ranges in full), at `REAL_POINTS` values of each real symbol and generic rational
+control points. A goal edited to be false at one of those points is refused; otherwise the file
+is "not re-checked" with what was evaluated.
+
+With SymPy (the optional extra), a `wz` goal of one equality `Σ_{k=a}^{b(n)} F(n, k) = rhs(n)`
+(one sum against one term, either side) with one certificate `R` is also checked for its WZ
+equation: with `F̃ = F / rhs` and `G = R·F̃`, `(F̃(n+1, k) − F̃(n, k) − G(n, k+1) + G(n, k)) / F̃(n, k)`
+must simplify (`combsimp`, `cancel`) to 0 as a rational function; a certificate that does not
+is refused. The boundary of the sum and the base case are not checked here.
+"""
+
+import itertools
+from fractions import Fraction
+
+from .cert_eval import evaluate
+from .cert_expr import free_names, parse
+from .cert_eval import Unsupported
+
+__all__ = ["check_pieces", "check_wz", "OPEN_VALUES", "REAL_POINTS"]
+
+#: The values of each open range evaluated: its least value and the next ones.
+OPEN_VALUES = 4
+#: Rational values of each real symbol (distinct, away from 0 and 1 where Bernstein
+#: conventions are special).
+REAL_POINTS = (Fraction(1, 3), Fraction(5, 7))
+#: Most integer points evaluated per file.
+MAX_CASES = 2_000
+
+
+class PiecesRefused(Exception):
+    """An obligation of a `pieces` certificate that fails (the message names it)."""
+
+
+def _need(cond, msg):
+    if not cond:
+        raise PiecesRefused(msg)
+
+
+def _int_value(text, env, where):
+    _need(isinstance(text, str), f"{where}: not a string")
+    v = evaluate(parse(text, strict=True), env)
+    _need(isinstance(v, Fraction) and v.denominator == 1, f"{where}: {text!r} is not an integer here")
+    return int(v)
+
+
+def _read(doc):
+    goal = doc.get("goal")
+    _need(isinstance(goal, dict) and goal.get("relation") == "=", "goal: missing, or its relation is not '='")
+    syms = goal.get("symbols")
+    _need(isinstance(syms, list) and all(isinstance(s, dict) for s in syms), "goal.symbols: not a list")
+    reals = [s.get("name") for s in syms if s.get("sort") == "real"]
+    ints = [s.get("name") for s in syms if s.get("sort") == "integer"]
+    _need(len(reals) + len(ints) == len(syms), "goal.symbols: a sort that is not real or integer")
+    _need(len(set(reals + ints)) == len(syms), "goal.symbols: a name declared twice")
+    ranges = goal.get("for_all")
+    _need(isinstance(ranges, list), "goal.for_all: not a list")
+    _need([r.get("name") for r in ranges] == ints, "goal.for_all: not one range per integer symbol, in order")
+    _need(any(r.get("to") is None for r in ranges), "goal.for_all: no open range (to: null)")
+    eqs = goal.get("equalities")
+    _need(isinstance(eqs, list) and eqs, "goal.equalities: none")
+    for i in range(1, len(eqs)):
+        _need(eqs[i].get("lhs") == eqs[i - 1].get("rhs"), f"goal.equalities[{i}]: not a chain")
+    polygon, net = goal.get("polygon"), goal.get("net")
+    _need(polygon is None or net is None, "goal: both a polygon and a net")
+    known = [o["name"] for o in (polygon, net) if isinstance(o, dict) and isinstance(o.get("name"), str)]
+    names = set(reals) | set(ints)
+    sides = []
+    for i, eq in enumerate(eqs):
+        pair = []
+        for key in ("lhs", "rhs"):
+            e = parse(eq.get(key), known, strict=True)
+            extra = free_names(e) - names
+            _need(not extra, f"goal.equalities[{i}].{key}: names {sorted(extra)} are not symbols of the goal")
+            pair.append(e)
+        sides.append(pair)
+    data = doc.get("pieces")
+    _need(isinstance(data, dict) and isinstance(data.get("certificates"), list), "pieces.certificates: not a list")
+    return reals, ranges, sides, polygon, net
+
+
+def _cases(ranges):
+    """Every integer point of the ranges, open ones cut after `OPEN_VALUES` values."""
+
+    def walk(k, env):
+        if k == len(ranges):
+            yield dict(env)
+            return
+        r = ranges[k]
+        lo = _int_value(r.get("from"), env, f"goal.for_all[{k}].from")
+        hi = lo + OPEN_VALUES - 1 if r.get("to") is None else _int_value(r.get("to"), env, f"goal.for_all[{k}].to")
+        for v in range(lo, hi + 1):
+            env[r["name"]] = Fraction(v)
+            yield from walk(k + 1, env)
+        env.pop(r["name"], None)
+
+    return walk(0, {})
+
+
+def _control_points(polygon, net, env):
+    """Generic rational control points at this integer point: `b[i] = 1/(i + 2) + i²/3`, a
+    net's `b[i, j] = 1/(i + 2j + 3) + ij/5` (distinct, not affine in the index)."""
+    if polygon is not None:
+        n = _int_value(polygon.get("degree"), env, "goal.polygon.degree")
+        _need(n >= 0, f"goal.polygon.degree: {n} at {_show(env)}")
+        return {polygon["name"]: [Fraction(1, i + 2) + Fraction(i * i, 3) for i in range(n + 1)]}
+    if net is not None:
+        d = net.get("degree")
+        _need(isinstance(d, list) and len(d) == 2, "goal.net.degree: not two expressions")
+        m, n = (_int_value(x, env, "goal.net.degree") for x in d)
+        _need(m >= 0 and n >= 0, f"goal.net.degree: ({m}, {n}) at {_show(env)}")
+        pts = {(i, j): Fraction(1, i + 2 * j + 3) + Fraction(i * j, 5) for i in range(m + 1) for j in range(n + 1)}
+        return {net["name"]: pts}
+    return {}
+
+
+def _show(env):
+    return ", ".join(f"{k} = {v}" for k, v in env.items())
+
+
+def check_pieces(doc):
+    """The first values of a `pieces` goal evaluated; returns the detail of a file that is not
+    re-checked, or raises `PiecesRefused` naming the first point where the sides differ."""
+    reals, ranges, sides, polygon, net = _read(doc)
+    count = 0
+    for ints in _cases(ranges):
+        objects = _control_points(polygon, net, ints)
+        for values in itertools.product(REAL_POINTS, repeat=len(reals)):
+            env = dict(ints)
+            env.update(zip(reals, values))
+            count += 1
+            _need(count <= MAX_CASES, f"more than {MAX_CASES} evaluations")
+            for i, (lhs, rhs) in enumerate(sides):
+                lv, rv = evaluate(lhs, env, objects), evaluate(rhs, env, objects)
+                _need(lv == rv, f"goal.equalities[{i}]: at {_show(env)} the sides are {lv} and {rv}")
+    detail = (
+        f"for-every proof on pieces: not implemented here; the goal holds at its first values "
+        f"({count} evaluations, the first {OPEN_VALUES} values of each open range)"
+    )
+    wz = check_wz(doc)
+    return detail if wz is None else f"{detail}; {wz}"
+
+
+def _has_sum(e):
+    return isinstance(e, tuple) and (e[0] == "sum" or any(_has_sum(x) for x in e[1:] if isinstance(x, (tuple, list))))
+
+
+def check_wz(doc):
+    """The WZ equation of a one-sum `wz` goal with one `R`, by SymPy (see the module
+    documentation): `None` when the goal has another shape or SymPy is missing, else what was
+    checked; raises `PiecesRefused` when the equation fails."""
+    reals, ranges, sides, polygon, net = _read(doc)
+    certs = doc["pieces"]["certificates"]
+    if doc.get("method") != "wz" or len(certs) != 1 or len(sides) != 1 or polygon or net:
+        return None
+    lhs, rhs = sides[0]
+    if lhs[0] == "sum" and not _has_sum(rhs):
+        s, other = lhs, rhs
+    elif rhs[0] == "sum" and not _has_sum(lhs):
+        s, other = rhs, lhs
+    else:
+        return None
+    if other[0] in ("add", "sub"):
+        return None
+    _, k, _lo, hi, body = s
+    ints = [r["name"] for r in ranges]
+    in_bound = [v for v in ints if v in free_names(hi)]
+    if len(in_bound) != 1:
+        return None
+    try:
+        import sympy
+
+        from .cert_sympy import to_sympy
+    except ImportError:
+        return None
+    n = in_bound[0]
+    syms = {v: None for v in ints + [k]}
+    try:
+        f = to_sympy(body, syms, reals) / to_sympy(other, syms, reals)
+        r = to_sympy(parse(certs[0], strict=True), syms, reals)
+    except Unsupported:
+        return None
+    ns, ks = sympy.Symbol(n, integer=True), sympy.Symbol(k, integer=True)
+    def ratio(x):  # F(shifted) / F as a rational function: powers of one base combined first
+        return sympy.combsimp(sympy.powsimp(sympy.powdenest(x / f, force=True), force=True))
+
+    # F(n+1, k)/F − 1 − R(n, k+1)·F(n, k+1)/F + R(n, k)
+    eq = ratio(f.subs(ns, ns + 1)) - 1 - r.subs(ks, ks + 1) * ratio(f.subs(ks, ks + 1)) + r
+    rest = sympy.cancel(sympy.together(eq))
+    if rest != 0 and not rest.is_rational_function(*rest.free_symbols):
+        # SymPy left powers or factorials: its simplification, not the certificate, stopped
+        return "the WZ equation not decided by SymPy (its simplification left powers or factorials)"
+    _need(
+        rest == 0,
+        f"pieces.certificates[0]: with R = {certs[0]}, F(n+1, k) - F(n, k) - G(n, k+1) + G(n, k) "
+        f"is {rest} times F(n, k), not 0 ({n} = n, {k} = k, G = R·F)",
+    )
+    return f"the WZ equation in {n}, {k} with R holds as a rational identity (SymPy)"
