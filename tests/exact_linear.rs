@@ -5,7 +5,13 @@
 
 use casteljau::{BezierCurve, BigInt, BigRational, Point};
 use std::sync::Mutex;
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+// CPU time of the timing thread, not wall time: on a loaded machine the wall counts the other
+// processes too.
+#[path = "support/cpu.rs"]
+mod cpu;
+use cpu::thread_cpu;
 
 /// One timing at a time: tests run on parallel threads, and a measurement taken while
 /// another test computes is the other test's too.
@@ -53,13 +59,14 @@ fn curve(n: usize, seed: u64) -> BezierCurve<BigRational> {
     BezierCurve::new(points).expect("a valid curve")
 }
 
-/// The least of five timings of `f` (the others are the machine's noise).
+/// The least of five CPU timings of `f` (the others are the machine's noise: caches shared
+/// with other processes slow a thread's CPU time too).
 fn least_time(mut f: impl FnMut()) -> Duration {
     (0..5)
         .map(|_| {
-            let start = Instant::now();
+            let start = thread_cpu();
             f();
-            start.elapsed()
+            thread_cpu() - start
         })
         .min()
         .expect("five runs")

@@ -61,6 +61,9 @@ pub struct Equality {
     pub polygons: usize,
     /// The symbolic control points, in the order of the unit polygons.
     pub control_points: Vec<(String, Vec<i64>)>,
+    /// The sides as evaluated at the rows (`lhs`, `rhs` may be them written without the
+    /// claim's objects): a writer re-reading `lhs`, `rhs` knows the rows when they are these.
+    pub evaluated: Box<(Expr, Expr)>,
 }
 
 /// A counterexample: the equality, where it fails and both sides' values there.
@@ -166,6 +169,7 @@ pub(super) fn equality(
         rows,
         polygons,
         control_points,
+        evaluated: Box::new((bounds.lhs().clone(), bounds.rhs().clone())),
     }
 }
 
@@ -221,6 +225,40 @@ fn list(v: &[BigRational]) -> String {
     v.iter().map(ToString::to_string).collect::<Vec<_>>().join(", ")
 }
 
+/// The obligations of the `i`-th recorded equality, with `rows` value rows, that evaluate
+/// nothing: the degree bounds derived again are the recorded ones, and there is one row per
+/// grid point. Its bounds and grid's points.
+pub fn recorded<'c>(
+    i: usize,
+    c: &Claimed<'c>,
+    rows: usize,
+) -> std::result::Result<(sample::Bounds<'c>, Vec<Vec<BigRational>>), String> {
+    let at = |m: String| format!("equality {i}: {m}");
+    let names: Vec<String> = c.params.iter().map(|p| p.name.clone()).collect();
+    let control = c.env.control_points();
+    let degrees = Degrees::of(&names, &control);
+    let bounds = sample::bounds(c.lhs, c.rhs, &c.ints, names, &degrees).map_err(|e| at(e.to_string()))?;
+    for (p, &need) in c.params.iter().zip(bounds.needs()) {
+        let (l, r) = bounds.describe(&p.name);
+        if (p.degree, &p.lhs_degree, &p.rhs_degree) != (need, &l, &r) {
+            return Err(at(format!(
+                "degree bound of {}: the file says {} (sides {}, {}), the kernel derives {need} (sides {l}, {r})",
+                p.name, p.degree, p.lhs_degree, p.rhs_degree
+            )));
+        }
+    }
+    let points: Vec<Vec<BigRational>> = c.params.iter().map(|p| p.points.clone()).collect();
+    let grid = points.iter().try_fold(1usize, |acc, p| acc.checked_mul(p.len()));
+    let polygons = c.env.polygons();
+    if grid.and_then(|g| g.checked_mul(polygons)) != Some(rows) {
+        return Err(at(format!(
+            "{rows} value rows for a grid of {} points on {polygons} basis polygons",
+            grid.map_or("too many".into(), |g| g.to_string()),
+        )));
+    }
+    Ok((bounds, points))
+}
+
 /// Re-checks recorded equalities: for each, the kernel derives the degree bounds again (they
 /// must be the recorded ones), checks the points distinct and more than the bound, evaluates
 /// both sides at every grid point (the recorded rows, in grid order, must list exactly those
@@ -235,30 +273,7 @@ pub fn recheck_sampled(claimed: &mut [Claimed<'_>]) -> std::result::Result<Proof
     let mut cases = Vec::with_capacity(claimed.len());
     for (i, c) in claimed.iter_mut().enumerate() {
         let at = |m: String| format!("equality {i}: {m}");
-        let names: Vec<String> = c.params.iter().map(|p| p.name.clone()).collect();
-        let points = c.env.control_points();
-        let degrees = Degrees::of(&names, &points);
-        let bounds = sample::bounds(c.lhs, c.rhs, &c.ints, names, &degrees).map_err(|e| at(e.to_string()))?;
-        for (p, &need) in c.params.iter().zip(bounds.needs()) {
-            let (l, r) = bounds.describe(&p.name);
-            if (p.degree, &p.lhs_degree, &p.rhs_degree) != (need, &l, &r) {
-                return Err(at(format!(
-                    "degree bound of {}: the file says {} (sides {}, {}), the kernel derives {need} (sides {l}, {r})",
-                    p.name, p.degree, p.lhs_degree, p.rhs_degree
-                )));
-            }
-        }
-        let points: Vec<Vec<BigRational>> = c.params.iter().map(|p| p.points.clone()).collect();
-        let grid = points.iter().try_fold(1usize, |acc, p| acc.checked_mul(p.len()));
-        let grid = grid.and_then(|g| g.checked_mul(c.env.polygons()));
-        if grid != Some(c.rows.len()) {
-            return Err(at(format!(
-                "{} value rows for a grid of {} points on {} basis polygons",
-                c.rows.len(),
-                grid.map_or("too many".into(), |g| (g / c.env.polygons().max(1)).to_string()),
-                c.env.polygons()
-            )));
-        }
+        let (bounds, points) = recorded(i, c, c.rows.len())?;
         let mut k = 0;
         let mut mismatch: Option<String> = None;
         let rows = &c.rows;

@@ -174,22 +174,19 @@ pub fn check_sampled(cases: &[sample::Case]) -> Result<Proof, String> {
     if cases.is_empty() {
         return Err("no case was evaluated".into());
     }
-    let (mut degree, mut basis, mut sampled) = (0, false, false);
-    for case in cases {
-        for d in &case.degrees {
-            degree = degree.max(*d);
-            sampled = true;
-        }
-        basis |= case.polygons > 1;
-    }
-    let method = if sampled {
-        Method::Sampling { basis, degree }
-    } else {
-        Method::Evaluation
-    };
-    let mut proof = Proof::new(method, &[]);
+    let basis = cases.iter().any(|c| c.polygons > 1);
+    let mut proof = Proof::new(sampled_method(cases.iter().flat_map(|c| &c.degrees), basis), &[]);
     proof.data = certificate::Data::Sampled(cases.iter().map(|c| (*c.data).clone()).collect());
     Ok(proof)
+}
+
+/// The method of exact evaluation at grids with these degree bounds (one per parameter of
+/// each case; `basis`: some case on basis polygons): with no parameter, exact evaluation.
+pub fn sampled_method<'a>(degrees: impl IntoIterator<Item = &'a u64>, basis: bool) -> Method {
+    match degrees.into_iter().max() {
+        Some(&degree) => Method::Sampling { basis, degree },
+        None => Method::Evaluation,
+    }
 }
 
 /// A proof by exact symbolic expansion from pairs of sides expanded by [`expand::expand`]:

@@ -216,6 +216,24 @@ fn written<A: Alg>(env: &dyn Points<A>, bounds: &Bounds<'_>) -> Option<(Expr, Ex
     ))
 }
 
+/// Checks that each parameter, of degree bound `needs`, has more distinct `points` than its bound.
+pub fn enough_points(needs: &[u64], points: &[Vec<BigRational>]) -> std::result::Result<(), String> {
+    if points.len() != needs.len() {
+        return Err(format!("{} point sets for {} parameters", points.len(), needs.len()));
+    }
+    for (d, values) in needs.iter().zip(points) {
+        let distinct: BTreeSet<&BigRational> = values.iter().collect();
+        if distinct.len() != values.len() || (distinct.len() as u64) <= *d {
+            return Err(format!(
+                "a parameter of degree ≤ {d} proposed at {} values, {} distinct",
+                values.len(),
+                distinct.len()
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// Checks `bounds`' equality at the grid `points` (the proposed values of each parameter):
 /// each parameter needs more distinct values than its degree bound; both sides are evaluated
 /// exactly at every grid point on every basis polygon of `env`. `observe` sees each point
@@ -227,22 +245,8 @@ pub fn check_pair<A: Alg>(
     observe: &mut Observe<'_, A>,
 ) -> Result<Pair<A>> {
     let refuse = |m: String| Err(Error::Domain(format!("the kernel refuses the evaluations: {m}")));
-    if points.len() != bounds.needs.len() {
-        return refuse(format!(
-            "{} point sets for {} parameters",
-            points.len(),
-            bounds.needs.len()
-        ));
-    }
-    for (d, values) in bounds.needs.iter().zip(points) {
-        let distinct: BTreeSet<&BigRational> = values.iter().collect();
-        if distinct.len() != values.len() || (distinct.len() as u64) <= *d {
-            return refuse(format!(
-                "a parameter of degree ≤ {d} proposed at {} values, {} distinct",
-                values.len(),
-                distinct.len()
-            ));
-        }
+    if let Err(m) = enough_points(&bounds.needs, points) {
+        return refuse(m);
     }
     let polygons = env.polygons();
     if polygons == 0 {
