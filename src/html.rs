@@ -18,7 +18,7 @@ mod report;
 mod statement;
 mod verdict;
 
-pub use certificate::{relative_url, MAX_EMBEDDED_BYTES};
+pub use certificate::{certificate_html, relative_url, MAX_EMBEDDED_BYTES};
 pub use claim_figure::{claim_figure, ClaimFigure};
 pub use handout::{render_handout, write_handout};
 pub use pages::{claim_anchor, page_name, page_names};

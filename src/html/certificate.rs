@@ -14,7 +14,7 @@ pub const MAX_EMBEDDED_BYTES: usize = 32 * 1024;
 
 /// The certificate block of one claim; `json_dir` is the URL of the certificate directory
 /// relative to the page (ending in `/`), when the report links one.
-pub(super) fn certificate_html(r: &Readable, json_dir: Option<&str>) -> String {
+pub fn certificate_html(r: &Readable, json_dir: Option<&str>) -> String {
     let mut s = String::new();
     let (class, word, detail) = match &r.status {
         Status::Rechecked(what) => ("kernel", "re-checked by the kernel", what),

@@ -95,7 +95,7 @@ pub use kernel::{Proof, Trusted};
 pub use kinds::check_claim;
 pub use one_line::identity_file;
 pub use outcome::Checked;
-pub use readable::{readable, Block, Readable, Status};
+pub use readable::{read_back, readable, Block, Readable, Status};
 pub use report::{ClaimOutcome, ExplainStyle, Report, TextSummary};
 pub use scope::{range_bound, PROVABLE};
 pub use theorems::elevation_bound;

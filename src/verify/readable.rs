@@ -92,8 +92,14 @@ pub struct Readable {
 
 /// The certificate of a claim's outcome, read back for people.
 pub fn readable(o: &ClaimOutcome) -> Readable {
-    let cert = certificate(o);
-    let json = serde_json::to_string_pretty(&cert).expect("a JSON value serializes") + "\n";
+    read_back(&certificate(o), &file_name(&o.id))
+}
+
+/// A certificate's JSON value read back for people; `file` is its file's name. The kernel
+/// re-reads the value's text as `casteljau check` reads a file: a value that is not a
+/// certificate, or whose data does not prove its goal, is shown as not re-checked.
+pub fn read_back(cert: &Json, file: &str) -> Readable {
+    let json = serde_json::to_string_pretty(cert).expect("a JSON value serializes") + "\n";
     let status = match check_certificate(&json) {
         Recheck::Accepted(what) if cert.get("check").and_then(Json::as_str) == Some("kernel") => {
             Status::Rechecked(clean(&what))
@@ -103,7 +109,7 @@ pub fn readable(o: &ClaimOutcome) -> Readable {
         Recheck::Refused(why) => Status::NotRechecked(format!("the kernel refuses it: {}", clean(&why))),
     };
     let goal = cert.get("goal").map(goal_blocks).unwrap_or_default();
-    let equalities = goal_equalities(&cert);
+    let equalities = goal_equalities(cert);
     let mut data = Vec::new();
     if let Some(obj) = cert.as_object() {
         for (key, value) in obj.iter().filter(|(k, _)| !COMMON.contains(&k.as_str())) {
@@ -119,7 +125,7 @@ pub fn readable(o: &ClaimOutcome) -> Readable {
         method: cert.get("method").and_then(Json::as_str).map(clean),
         goal,
         data,
-        file: file_name(&o.id),
+        file: clean(file),
         json,
     }
 }
