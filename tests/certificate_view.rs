@@ -270,7 +270,7 @@ fn a_method_without_a_layout_of_its_own_is_shown_generically() {
     let r = read_back(&cert, "x.json");
     // the kernel has no such data in this version: not re-checked, and why
     assert!(matches!(&r.status, Status::NotRechecked(_)), "{:?}", r.status);
-    let text = r.to_text();
+    let text = r.to_text(false);
     for want in [
         "R: -1/2*k/(-k + n + 1)",
         "sum(k, 0, n, binom(n, k)) = 2^n",
@@ -350,6 +350,15 @@ fn explain_ends_with_the_certificate_file() {
         "{cert}"
     );
     assert!(cert.contains("1/3  (8/9, -8/27)  (8/9, -8/27)"), "{cert}");
+    // by default folded to one screen; --verbose as the report shows it
+    let short = explain_files(&files, "000-4-library", ExplainStyle::Short).unwrap();
+    let verbose = explain_files(&files, "000-4-library", ExplainStyle::Verbose).unwrap();
+    let (_, short) = short.split_once("\n\ncertificate file ").unwrap();
+    let (_, verbose) = verbose.split_once("\n\ncertificate file ").unwrap();
+    assert!(short.contains("… 64 more equalities (in the file)"), "{short}");
+    assert!(short.contains("… 62 more rows (in the file)"), "{short}");
+    assert!(verbose.contains("… 60 more equalities (in the file)"), "{verbose}");
+    assert!(short.lines().count() < 80 && verbose.lines().count() > short.lines().count());
     let latex = explain_files(&files, "000-ex4-points", ExplainStyle::Latex).unwrap();
     assert!(!latex.contains("certificate file"));
     let none = explain_files(&files, "004-8", ExplainStyle::Short).unwrap();

@@ -401,7 +401,8 @@ pub fn explain_files(files: &[claims::ClaimFile], id: &str, style: ExplainStyle)
                 // a LaTeX fragment for a handout: the certificate's tables are for the screen
                 return Ok(text);
             }
-            let certificate = readable(&outcome(f, c, checked, range_bound)).to_text();
+            let brief = style == ExplainStyle::Short;
+            let certificate = readable(&outcome(f, c, checked, range_bound)).to_text(brief);
             return Ok(format!("{}\n\n{certificate}", text.trim_end()));
         }
     }

@@ -267,7 +267,10 @@ fn goal_blocks(goal: &Json) -> Vec<Block> {
         }
         blocks.push(Block::Lines(lines));
         if members.len() > 1 && !cases.is_empty() {
-            blocks.push(table_of(&cases));
+            blocks.push(Block::Group {
+                title: format!("stated for these {} integer values (one equality each)", members.len()),
+                blocks: vec![table_of(&cases)],
+            });
         }
     }
     if folded > 0 {
@@ -497,18 +500,25 @@ impl Status {
     }
 }
 
+/// Rows of a table and groups of a list that `--explain` shows by default (one screen);
+/// `--verbose` shows what the HTML report shows.
+const BRIEF: (usize, usize) = (4, 2);
+
 impl Readable {
-    /// The certificate as plain text (`--explain`): indented lines, tables in aligned columns.
-    pub fn to_text(&self) -> String {
+    /// The certificate as plain text (`--explain`): indented lines, tables in aligned columns;
+    /// `brief` folds tables after 4 rows and lists after 2 groups, else as the report does.
+    pub fn to_text(&self, brief: bool) -> String {
+        let limits = if brief { BRIEF } else { (usize::MAX, usize::MAX) };
         let mut out = format!("certificate file {}: {}\n", self.file, self.status.text());
         if let Some(m) = &self.method {
             out.push_str(&format!("  method: {m}\n"));
         }
         if !self.goal.is_empty() {
             out.push_str("  goal:\n");
-            text_blocks(&mut out, &self.goal, 4);
+            // the goal whole: its equalities are what the data below is about
+            text_blocks(&mut out, &self.goal, 4, (limits.0, usize::MAX));
         }
-        text_blocks(&mut out, &self.data, 2);
+        text_blocks(&mut out, &self.data, 2, limits);
         out.push_str(&format!(
             "  the file: `prove --certificates DIR` writes it as DIR/{}, `casteljau check` re-reads it\n",
             self.file
@@ -517,8 +527,11 @@ impl Readable {
     }
 }
 
-fn text_blocks(out: &mut String, blocks: &[Block], indent: usize) {
+/// Blocks as indented text, showing at most `rows` rows of a table and `groups` groups of a
+/// list (the rest counted, with the list's own count of folded items).
+fn text_blocks(out: &mut String, blocks: &[Block], indent: usize, (max_rows, max_groups): (usize, usize)) {
     let pad = " ".repeat(indent);
+    let (mut groups, mut folded, mut noun) = (0, 0, "groups".to_string());
     for b in blocks {
         match b {
             Block::Lines(lines) => {
@@ -531,8 +544,11 @@ fn text_blocks(out: &mut String, blocks: &[Block], indent: usize) {
                 }
             }
             Block::Table { columns, rows, more } => {
+                let shown = &rows[..rows.len().min(max_rows)];
+                let more = more + (rows.len() - shown.len());
                 let width = |k: usize| {
-                    rows.iter()
+                    shown
+                        .iter()
                         .map(|r| r.get(k).map_or(0, |c| c.chars().count()))
                         .chain([columns[k].chars().count()])
                         .max()
@@ -543,23 +559,34 @@ fn text_blocks(out: &mut String, blocks: &[Block], indent: usize) {
                     let padded: Vec<String> = cells
                         .iter()
                         .zip(&widths)
-                        .map(|(c, w)| format!("{c}{}", " ".repeat(w - c.chars().count())))
+                        .map(|(c, w)| format!("{c}{}", " ".repeat(w.saturating_sub(c.chars().count()))))
                         .collect();
                     format!("{pad}{}\n", padded.join("  ").trim_end())
                 };
                 out.push_str(&line(columns));
-                for r in rows {
+                for r in shown {
                     out.push_str(&line(r));
                 }
-                if *more > 0 {
+                if more > 0 {
                     out.push_str(&format!("{pad}… {more} more rows (in the file)\n"));
                 }
             }
             Block::Group { title, blocks } => {
+                groups += 1;
+                if groups > max_groups {
+                    folded += 1;
+                    continue;
+                }
                 out.push_str(&format!("{pad}{title}:\n"));
-                text_blocks(out, blocks, indent + 2);
+                text_blocks(out, blocks, indent + 2, (max_rows, max_groups));
             }
-            Block::More(n, what) => out.push_str(&format!("{pad}… {n} more {what} (in the file)\n")),
+            Block::More(n, what) => {
+                folded += n;
+                noun.clone_from(what);
+            }
         }
+    }
+    if folded > 0 {
+        out.push_str(&format!("{pad}… {folded} more {noun} (in the file)\n"));
     }
 }
