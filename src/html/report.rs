@@ -103,7 +103,8 @@ footer { margin-top: 2rem; color: var(--muted); font-size: 0.85rem; }
   /* A4, compact text; a claim or a figure is never split across pages */
   @page { size: A4; margin: 8mm 10mm; }
   body { max-width: none; padding: 0; font-size: 8.5pt; line-height: 1.25; }
-  nav.toc, .noprint, details.json { display: none; }
+  /* the certificate file read back is for the screen (text 000 keeps to 14 printed pages) */
+  nav.toc, .noprint, details.certfile { display: none; }
   a { color: inherit; text-decoration: none; }
   h1 { font-size: 14pt; } h2 { font-size: 10pt; margin-bottom: 0.15rem; }
   table { margin: 0.4rem 0 0.8rem; } th, td { padding: 0.15rem 0.4rem; }
