@@ -713,7 +713,13 @@ fn prove(
     }
     let report = report.map_err(|e| e.to_string())?;
     if let Some(dir) = reports.html {
-        let written = casteljau::html::write_report(&report, &files, dir).map_err(|e| e.to_string())?;
+        if let Some(certs) = reports.certificates {
+            // the report links each claim's file there (written below)
+            std::fs::create_dir_all(certs)
+                .map_err(|e| format!("--certificates: cannot create {}: {e}", certs.display()))?;
+        }
+        let written =
+            casteljau::html::write_report(&report, &files, dir, reports.certificates).map_err(|e| e.to_string())?;
         eprintln!(
             "casteljau: wrote the HTML report ({written} pages) to {}",
             dir.join("index.html").display()

@@ -1,6 +1,7 @@
 //! The report's pages: the index (what the verdicts mean, the summary, the misprints) and one
 //! page per text with every claim's section.
 
+use super::certificate::certificate_html;
 use super::claim_figure::{claim_figure, topic};
 use super::interactive;
 use super::pages::{claim_anchor, find_claim};
@@ -9,7 +10,7 @@ use super::verdict::{verdict_text, verdict_words};
 use crate::error::Result;
 use crate::figure::svg::esc;
 use crate::verify::claims::{Claim, ClaimFile};
-use crate::verify::{ClaimOutcome, Report, TextSummary, Verdict};
+use crate::verify::{readable, ClaimOutcome, Report, TextSummary, Verdict};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
@@ -49,7 +50,7 @@ tr.total td { font-weight: bold; border-top: 2px solid var(--ink); }
 .banner.misprint { background: #fde2df; border: 1px solid #f4a79d; }
 .banner.correction { background: #dcf2e0; border: 1px solid #9bd3a6; }
 .banner.mismatch { background: #000; color: #fff; }
-dl { margin: 0.4rem 0 0; display: grid; grid-template-columns: max-content 1fr; gap: 0.25rem 0.8rem; }
+dl { margin: 0.4rem 0 0; display: grid; grid-template-columns: max-content minmax(0, 1fr); gap: 0.25rem 0.8rem; }
 dt { color: var(--muted); font-size: 0.88rem; }
 dd { margin: 0; }
 pre { margin: 0; white-space: pre-wrap; overflow-wrap: anywhere; font-family: "DejaVu Sans Mono", monospace; font-size: 0.85rem; }
@@ -60,6 +61,19 @@ figcaption { color: var(--muted); font-size: 0.85rem; }
 nav.toc { columns: 2; font-size: 0.88rem; margin: 0.5rem 0 1rem; }
 nav.toc a { text-decoration: none; }
 nav.toc div { break-inside: avoid; }
+/* the certificate file read back: tables scroll sideways inside the claim, never the page */
+details.certfile { margin: 0.6rem 0 0; border-top: 1px dashed var(--rule); padding-top: 0.4rem; }
+details.certfile > summary { cursor: pointer; font-size: 0.92rem; }
+details.certfile.kernel .recheck { color: var(--proved); } details.certfile.none .recheck { color: var(--muted); }
+details.certfile .file, details.certfile code { font-family: "DejaVu Sans Mono", monospace; font-size: 0.85rem; }
+.recheck-detail, .cert-method, p.more, p.json { margin: 0.2rem 0; font-size: 0.88rem; color: var(--muted); }
+details.certfile h3, details.certfile h4, details.certfile h5, details.certfile h6 { font-size: 0.9rem; margin: 0.5rem 0 0.2rem; }
+dd.math { font-family: "DejaVu Sans Mono", monospace; font-size: 0.85rem; overflow-wrap: anywhere; }
+.cert-group { margin-left: 0.6rem; }
+div.scroll { max-width: 100%; overflow-x: auto; }
+table.cert { width: auto; margin: 0.2rem 0 0.4rem; font-family: "DejaVu Sans Mono", monospace; font-size: 0.82rem; }
+table.cert td, table.cert th { padding: 0.1rem 0.6rem 0.1rem 0; white-space: nowrap; }
+details.json pre { max-height: 24rem; overflow: auto; background: #f7f7f9; padding: 0.4rem; }
 footer { margin-top: 2rem; color: var(--muted); font-size: 0.85rem; }
 @media (max-width: 640px) {
   /* a phone: the summary's rows stacked, each count with its name; figures scroll sideways at
@@ -89,7 +103,8 @@ footer { margin-top: 2rem; color: var(--muted); font-size: 0.85rem; }
   /* A4, compact text; a claim or a figure is never split across pages */
   @page { size: A4; margin: 8mm 10mm; }
   body { max-width: none; padding: 0; font-size: 8.5pt; line-height: 1.25; }
-  nav.toc, .noprint { display: none; }
+  /* the certificate file read back is for the screen (text 000 keeps to 14 printed pages) */
+  nav.toc, .noprint, details.certfile { display: none; }
   a { color: inherit; text-decoration: none; }
   h1 { font-size: 14pt; } h2 { font-size: 10pt; margin-bottom: 0.15rem; }
   table { margin: 0.4rem 0 0.8rem; } th, td { padding: 0.15rem 0.4rem; }
@@ -250,6 +265,7 @@ pub(super) fn text_page(
     title: &str,
     outcomes: &[&ClaimOutcome],
     files: &[ClaimFile],
+    json_dir: Option<&str>,
 ) -> Result<String> {
     let heading = if title.is_empty() {
         sum.text.clone()
@@ -302,7 +318,7 @@ pub(super) fn text_page(
     // a figure drawn once is referred to by later claims on the same data
     let mut drawn: Vec<(String, String)> = Vec::new();
     for o in outcomes {
-        claim_section(&mut s, o, outcomes, find_claim(files, o), &mut drawn)?;
+        claim_section(&mut s, o, outcomes, find_claim(files, o), json_dir, &mut drawn)?;
     }
     s.push_str("</main>\n");
     s.push_str(FOOT);
@@ -314,6 +330,7 @@ fn claim_section(
     o: &ClaimOutcome,
     all: &[&ClaimOutcome],
     claim: Option<&Claim>,
+    json_dir: Option<&str>,
     drawn: &mut Vec<(String, String)>,
 ) -> Result<()> {
     let vt = verdict_text(o);
@@ -415,6 +432,7 @@ fn claim_section(
     }
     let _ = writeln!(s, "<dt>expected</dt><dd>{}</dd>", o.expect.as_str());
     s.push_str("</dl>\n");
+    s.push_str(&certificate_html(&readable(o), json_dir));
     if let Some(c) = claim {
         match claim_figure(c) {
             Ok(Some(cf)) => {

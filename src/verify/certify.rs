@@ -294,7 +294,7 @@ pub fn certificate(o: &ClaimOutcome) -> Json {
 }
 
 /// A file name for a claim id: its letters, digits, `-`, `_` and `.`, others as `_`.
-fn file_name(id: &str) -> String {
+pub(super) fn file_name(id: &str) -> String {
     let safe: String = id
         .chars()
         .map(|c| {

@@ -53,7 +53,8 @@
 //   every n), `theorems`, `inequality`;
 // - the kinds and the scope of a verdict: `kinds`, `scope`;
 // - the reports: `argue`, `latex`, `report`;
-// - certificates as files: `certify` (written from the kernel's data, re-checked by the kernel).
+// - certificates as files: `certify` (written from the kernel's data, re-checked by the kernel);
+//   `readable` (a certificate file laid out for people: `--explain`, the HTML report).
 mod ansatz;
 mod argue;
 mod certify;
@@ -74,6 +75,7 @@ mod objects;
 mod one_line;
 mod outcome;
 mod parse;
+mod readable;
 mod recurrence;
 mod report;
 mod rewrite;
@@ -93,6 +95,7 @@ pub use kernel::{Proof, Trusted};
 pub use kinds::check_claim;
 pub use one_line::identity_file;
 pub use outcome::Checked;
+pub use readable::{read_back, readable, Block, Readable, Status};
 pub use report::{ClaimOutcome, ExplainStyle, Report, TextSummary};
 pub use scope::{range_bound, PROVABLE};
 pub use theorems::elevation_bound;
@@ -393,7 +396,14 @@ pub fn explain_files(files: &[claims::ClaimFile], id: &str, style: ExplainStyle)
     for f in files {
         if let Some(c) = f.claim.iter().find(|c| c.id == id) {
             let (checked, range_bound) = explained(files, c).map_err(|e| in_claim(f, id, e))?;
-            return Ok(report::explain_text(f, c, &checked, range_bound.as_deref(), style));
+            let text = report::explain_text(f, c, &checked, range_bound.as_deref(), style);
+            if style == ExplainStyle::Latex {
+                // a LaTeX fragment for a handout: the certificate's tables are for the screen
+                return Ok(text);
+            }
+            let brief = style == ExplainStyle::Short;
+            let certificate = readable(&outcome(f, c, checked, range_bound)).to_text(brief);
+            return Ok(format!("{}\n\n{certificate}", text.trim_end()));
         }
     }
     let ids = files.iter().flat_map(|f| f.claim.iter().map(|c| c.id.as_str()));
