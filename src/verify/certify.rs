@@ -5,6 +5,8 @@
 //! Reading a file (JSON, the goal's expression text) is elaboration, trusted like the claim
 //! parser; the obligations are decided by `kernel::certificate`.
 
+mod expansion;
+
 use super::kernel::certificate::{self, Claimed, Data, Equality, Param, Refutation};
 use super::kernel::checked::{Method, Verdict};
 use super::kernel::expr::Expr;
@@ -183,6 +185,7 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
             out.insert("sampling".into(), sampling_json(eqs));
             Ok(())
         }
+        (Data::Expanded(eqs), Verdict::Proved | Verdict::ProvedInRange) => expansion::fields(eqs, out),
         (Data::Refuted(r), Verdict::Fails) => {
             if !rational_entries(&r.lhs) || !rational_entries(&r.rhs) {
                 return Err("the values are not rational (a square root)".into());
@@ -514,6 +517,9 @@ fn recheck(cert: &Json) -> Res<Option<String>> {
     let goal = read_goal(cert)?;
     let method = field(cert, "method", "certificate")?.as_str().unwrap_or("none");
     match verdict {
+        Verdict::Proved | Verdict::ProvedInRange if cert.get("expansion").is_some() => {
+            expansion::recheck(cert, &goal, method).map(Some)
+        }
         Verdict::Proved | Verdict::ProvedInRange => recheck_proof(cert, &goal, method).map(Some),
         Verdict::Fails => recheck_fails(cert, &goal).map(Some),
         other => Err(format!("verdict {}: no kernel data is defined for it", other.as_str())),

@@ -114,6 +114,16 @@ def check_certificate(doc, name="?", symbolic=False):
         _check_header(doc)
         if doc["check"] == "none":
             return out(NOT_RECHECKED, f"no checkable data in the file: {doc['reason']}")
+        if verdict in ("proved", "proved_in_range") and method == "expansion":
+            from .cert_expand import check_expansion
+
+            goal = _Goal(doc.get("goal"))
+            _check_range(doc, goal)
+            detail = check_expansion(doc.get("expansion"), goal, _need, _rational)
+            if symbolic:
+                _check_symbolic(goal)
+                detail += "; every equality an identity in SymPy"
+            return out(RECHECKED, detail)
         if verdict in ("proved", "proved_in_range"):
             _need(method in ("sampling", "evaluation"), f"method {method!r} carries no data in format version 1")
             goal = _Goal(doc.get("goal"))

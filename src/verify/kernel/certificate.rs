@@ -82,6 +82,8 @@ pub enum Data {
     Sampled(Vec<Equality>),
     /// A counterexample.
     Refuted(Box<Refutation>),
+    /// Equalities proved by symbolic expansion, each as expanded.
+    Expanded(Vec<super::expand::Expansion>),
 }
 
 impl Data {
@@ -91,6 +93,10 @@ impl Data {
             (Data::Sampled(mut a), Data::Sampled(b)) => {
                 a.extend(b);
                 Data::Sampled(a)
+            }
+            (Data::Expanded(mut a), Data::Expanded(b)) => {
+                a.extend(b);
+                Data::Expanded(a)
             }
             _ => Data::None,
         }

@@ -67,7 +67,7 @@ pub enum Op {
 }
 
 /// The syntax tree of an expression.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Expr {
     /// An exact number (the parser produces non-negative ones; `-3` is `Neg(3)`).
     Num(BigRational),
