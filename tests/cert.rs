@@ -129,7 +129,9 @@ const PER_FILE: usize = 250;
 
 /// The mutants of one certificate: the numbers of its data, its degree bounds, its integer
 /// cases, each goal expression edited (its data kept), each equality's sides swapped, a row
-/// dropped (at most [`PER_FILE`] edits of leaves, and five equalities, per file).
+/// dropped; an expansion's coefficients and exponents, its variables and its two sides' data
+/// exchanged, a term dropped (at most [`PER_FILE`] edits of leaves, and five equalities, per
+/// file).
 fn mutants(cert: &Value) -> Vec<(String, Value)> {
     // (path, replacement) pairs, built before any copy of the file is made.
     fn walk(v: &Value, path: &mut Vec<String>, edits: &mut Vec<(Vec<String>, Value)>) {
@@ -213,6 +215,25 @@ fn mutants(cert: &Value) -> Vec<(String, Value)> {
         eq["lhs"] = r;
         eq["rhs"] = l;
         out.push(("swapped sides".into(), m));
+        if let Some(vars) = cert["expansion"]["equalities"][i]["vars"].as_array() {
+            // The variables exchanged, the two sides' data exchanged, a term dropped.
+            let x = &cert["expansion"]["equalities"][i];
+            let mut m = cert.clone();
+            let mut v = vars.clone();
+            v.reverse();
+            m["expansion"]["equalities"][i]["vars"] = Value::from(v);
+            out.push(("variables exchanged".into(), m));
+            let mut m = cert.clone();
+            let entry = &mut m["expansion"]["equalities"][i]["entries"][0];
+            (entry["lhs"], entry["rhs"]) = (x["entries"][0]["rhs"].clone(), x["entries"][0]["lhs"].clone());
+            out.push(("data sides exchanged".into(), m));
+            let mut m = cert.clone();
+            m["expansion"]["equalities"][i]["entries"][0]["lhs"]["num"]
+                .as_array_mut()
+                .unwrap()
+                .pop();
+            out.push(("a term dropped".into(), m));
+        }
         if let Some(rows) = cert["sampling"]["equalities"][i]["values"].as_array() {
             let mut m = cert.clone();
             m["sampling"]["equalities"][i]["values"]

@@ -82,6 +82,7 @@ def mutants(doc):
             out.append(("degree bound", where, _set(doc, path, "/".join([str(int(n[0]) + 1)] + n[1:]))))
         elif path[-1] == "points" and isinstance(val, list):
             pass
+    out.extend(_expansion_edits(doc))
     # a point dropped (its grid rows kept), and a point repeated
     for k, eq in enumerate((doc.get("sampling") or {}).get("equalities") or []):
         for j, p in enumerate(eq.get("params") or []):
@@ -108,6 +109,35 @@ def mutants(doc):
             return d
 
         out.append(("range end", "last case dropped", drop_last))
+    return out
+
+
+def _expansion_edits(doc):
+    """An `expansion` file's data: every coefficient bumped and negated, every exponent
+    raised and lowered, a term dropped, two variables exchanged, the two sides' data swapped."""
+    out = []
+    for k, eq in enumerate((doc.get("expansion") or {}).get("equalities") or []):
+        base = ("expansion", "equalities", k)
+        if len(eq["vars"]) >= 2:
+            v = list(eq["vars"])
+            v[0], v[-1] = v[-1], v[0]
+            out.append(("variable", f"equality {k} vars exchanged", _set(doc, base + ("vars",), v)))
+        for j, pair in enumerate(eq["entries"]):
+            if pair["lhs"] != pair["rhs"]:
+                out.append(("swapped sides", f"equality {k} entry {j} data", _set(doc, base + ("entries", j), {"lhs": pair["rhs"], "rhs": pair["lhs"]})))
+            for side in ("lhs", "rhs"):
+                for part in ("num", "den"):
+                    poly = pair[side][part]
+                    at = base + ("entries", j, side, part)
+                    where = "/".join(str(x) for x in at)
+                    out.append(("term", f"{where} last term dropped", _set(doc, at, poly[:-1])))
+                    for t, (c, e) in enumerate(poly):
+                        out.append(("coefficient", f"{where}/{t}", _set(doc, at + (t, 0), _bump(c))))
+                        out.append(("sign", f"{where}/{t}", _set(doc, at + (t, 0), str(-Fraction(c)))))
+                        for i, x in enumerate(e):
+                            out.append(("exponent", f"{where}/{t}/{i}", _set(doc, at + (t, 1, i), x + 1)))
+                            if x > 0:
+                                out.append(("exponent", f"{where}/{t}/{i}", _set(doc, at + (t, 1, i), x - 1)))
     return out
 
 
