@@ -5,6 +5,7 @@
 //! Reading a file (JSON, the goal's expression text) is elaboration, trusted like the claim
 //! parser; the obligations are decided by `kernel::certificate`.
 
+mod computation;
 mod expansion;
 
 use super::kernel::certificate::{self, Claimed, Data, Equality, Param, Refutation};
@@ -186,6 +187,9 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
             Ok(())
         }
         (Data::Expanded(eqs), Verdict::Proved | Verdict::ProvedInRange) => expansion::fields(eqs, out),
+        (_, Verdict::Proved | Verdict::ProvedInRange) if matches!(o.method, Some(Method::Computation)) => {
+            computation::fields(&o.computed, out)
+        }
         (Data::Refuted(r), Verdict::Fails) => {
             if !rational_entries(&r.lhs) || !rational_entries(&r.rhs) {
                 return Err("the values are not rational (a square root)".into());
@@ -514,8 +518,11 @@ fn recheck(cert: &Json) -> Res<Option<String>> {
     if range.is_null() == (verdict == Verdict::ProvedInRange) {
         return Err("range: given exactly when the verdict is proved_in_range".into());
     }
-    let goal = read_goal(cert)?;
     let method = field(cert, "method", "certificate")?.as_str().unwrap_or("none");
+    if matches!(verdict, Verdict::Proved | Verdict::ProvedInRange) && cert.get("computation").is_some() {
+        return computation::recheck(cert, method).map(Some);
+    }
+    let goal = read_goal(cert)?;
     match verdict {
         Verdict::Proved | Verdict::ProvedInRange if cert.get("expansion").is_some() => {
             expansion::recheck(cert, &goal, method).map(Some)

@@ -114,6 +114,10 @@ def check_certificate(doc, name="?", symbolic=False):
         _check_header(doc)
         if doc["check"] == "none":
             return out(NOT_RECHECKED, f"no checkable data in the file: {doc['reason']}")
+        if verdict in ("proved", "proved_in_range") and method == "computation":
+            from .cert_computation import check_computation
+
+            return out(RECHECKED, check_computation(doc, _need, _rational))
         if verdict in ("proved", "proved_in_range") and method == "expansion":
             from .cert_expand import check_expansion
 

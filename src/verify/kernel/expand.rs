@@ -114,27 +114,27 @@ pub fn expand(layout: &[(String, usize)], lhs: &Expr, rhs: &Expr, ints: &BTreeMa
     let (names, env) = sym_env(layout)?;
     let l = Evaluator::new(&env, ints.clone()).eval(lhs)?;
     let r = Evaluator::new(&env, ints.clone()).eval(rhs)?;
-    let mut out = Expanded {
-        difference: None,
-        terms: 0,
-        record: Expansion {
-            layout: layout.to_vec(),
-            ints: ints.clone(),
-            sides: (lhs.clone(), rhs.clone()),
-            entries: Vec::new(),
-        },
-    };
+    let (mut entries, mut terms, mut difference) = (Vec::new(), 0, None);
     for (a, b) in l.paired_entries(&r)? {
-        let sides = [&a.num, &a.den, &b.num, &b.den];
-        out.record.entries.push(sides.map(|p| p.terms_in(names.len())));
+        entries.push([&a.num, &a.den, &b.num, &b.den].map(|p| p.terms_in(names.len())));
         let d = a.cleared_difference(b);
         if !d.is_zero() {
-            out.difference = Some(d);
-            return Ok(out);
+            difference = Some(d);
+            break;
         }
-        out.terms += a.num.len() + b.num.len();
+        terms += a.num.len() + b.num.len();
     }
-    Ok(out)
+    let record = Expansion {
+        layout: layout.to_vec(),
+        ints: ints.clone(),
+        sides: (lhs.clone(), rhs.clone()),
+        entries,
+    };
+    Ok(Expanded {
+        difference,
+        terms,
+        record,
+    })
 }
 
 #[cfg(test)]
