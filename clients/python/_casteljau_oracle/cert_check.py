@@ -17,6 +17,7 @@ derivation); the grid is complete, in order; both sides, evaluated here, are the
 and equal at every point. A `fails` certificate: both sides evaluated at the counterexample are
 the listed values and differ. A `proved_in_range` goal must cover every case of its `range` (of the variables the range
 text names: an inner range it does not name, `j = 0..=n`, is not checked for completeness).
+Methods `expansion` and `computation` are checked in `cert_expand` and `cert_computation`.
 """
 
 import itertools

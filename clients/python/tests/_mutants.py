@@ -83,6 +83,7 @@ def mutants(doc):
         elif path[-1] == "points" and isinstance(val, list):
             pass
     out.extend(_expansion_edits(doc))
+    out.extend(_computation_edits(doc))
     # a point dropped (its grid rows kept), and a point repeated
     for k, eq in enumerate((doc.get("sampling") or {}).get("equalities") or []):
         for j, p in enumerate(eq.get("params") or []):
@@ -138,6 +139,32 @@ def _expansion_edits(doc):
                             out.append(("exponent", f"{where}/{t}/{i}", _set(doc, at + (t, 1, i), x + 1)))
                             if x > 0:
                                 out.append(("exponent", f"{where}/{t}/{i}", _set(doc, at + (t, 1, i), x - 1)))
+    return out
+
+
+def _computation_edits(doc):
+    """A `computation` file's facts: every input number bumped and negated, the equation's
+    numbers and signs edited, the result replaced by each other type."""
+    out = []
+    for k, fact in enumerate((doc.get("computation") or {}).get("facts") or []):
+        base = ("computation", "facts", k)
+        for path, val in _paths(fact, base):
+            where = "/".join(str(x) for x in path)
+            if path[-1] in ("lhs", "rhs"):
+                for m in _NUM_IN_EXPR.finditer(val):
+                    new = val[: m.start()] + _bump(m.group()) + val[m.end():]
+                    out.append(("coefficient", f"{where}@{m.start()}", _set(doc, path, new)))
+                for m in _SIGN_IN_EXPR.finditer(val):
+                    flip = "-" if m.group() == "+" else "+"
+                    out.append(("sign", f"{where}@{m.start()}", _set(doc, path, val[: m.start()] + flip + val[m.end():])))
+            elif path[-1] == "kind":
+                for other in ("ellipse", "parabola", "hyperbola", "degenerate"):
+                    if other != val:
+                        out.append(("result", f"{where} {other}", _set(doc, path, other)))
+            elif isinstance(val, str) and path[-1] != "computation":
+                out.append(("number", where, _set(doc, path, _bump(val))))
+                if Fraction(val) != 0:
+                    out.append(("sign", where, _set(doc, path, str(-Fraction(val)))))
     return out
 
 
