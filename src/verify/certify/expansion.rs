@@ -10,7 +10,7 @@
 
 use super::{array, field, not_self_contained, rational, Goal, Res};
 use crate::verify::kernel::check_expanded;
-use crate::verify::kernel::expand::{expand, Expansion};
+use crate::verify::kernel::expand::{expand, Expansion, Terms};
 use crate::verify::kernel::expr::Expr;
 use crate::verify::kernel::poly::Poly;
 use crate::verify::rewrite::substitute;
@@ -46,8 +46,6 @@ fn in_coordinates(e: &Expr, layout: &[(String, usize)]) -> Expr {
         .unzip();
     substitute(e, &names, &tuples)
 }
-
-type Terms = Vec<(Vec<u16>, BigRational)>;
 
 fn poly_json(p: &Terms) -> Json {
     Json::Array(p.iter().map(|(e, c)| json!([c.to_string(), e])).collect())

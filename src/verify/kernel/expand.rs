@@ -74,6 +74,9 @@ fn layout_degrees(layout: &[(String, usize)]) -> BTreeMap<String, Value<Deg>> {
         .collect()
 }
 
+/// A polynomial's terms: exponents (one per variable) and coefficient.
+pub type Terms = Vec<(Vec<u16>, BigRational)>;
+
 /// What [`expand`] expanded, as a certificate's data: the variables, the integers' values,
 /// both sides, and per pair of entries (up to the first that differ) the terms of the left
 /// side's numerator and denominator, then the right side's.
@@ -82,7 +85,7 @@ pub struct Expansion {
     pub layout: Vec<(String, usize)>,
     pub ints: BTreeMap<String, i64>,
     pub sides: (Expr, Expr),
-    pub entries: Vec<[Vec<(Vec<u16>, BigRational)>; 4]>,
+    pub entries: Vec<[Terms; 4]>,
 }
 
 /// `lhs = rhs` expanded here (made only by [`expand`]): the first cleared difference that is
