@@ -5,6 +5,7 @@
 //! Reading a file (JSON, the goal's expression text) is elaboration, trusted like the claim
 //! parser; the obligations are decided by `kernel::certificate`.
 
+
 use super::kernel::certificate::{self, Claimed, Data, Equality, Param, Refutation};
 use super::kernel::checked::{Method, Verdict};
 use super::kernel::expr::Expr;
@@ -19,6 +20,8 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
+mod computation;
+mod expansion;
 mod hyper;
 mod polygon;
 
@@ -223,6 +226,10 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
             out.insert("goal".into(), goal);
             out.insert("pieces".into(), data);
             Ok(())
+        }
+        (Data::Expanded(eqs), Verdict::Proved | Verdict::ProvedInRange) => expansion::fields(eqs, out),
+        (_, Verdict::Proved | Verdict::ProvedInRange) if matches!(o.method, Some(Method::Computation)) => {
+            computation::fields(&o.computed, out)
         }
         (Data::Refuted(r), Verdict::Fails) => {
             if !rational_entries(&r.lhs) || !rational_entries(&r.rhs) {
@@ -648,8 +655,18 @@ fn recheck(cert: &Json, known: Option<&Data>) -> Res<Option<String>> {
         }
         return hyper::recheck(cert, method).map(Some);
     }
+    match verdict {
+        // A computation's facts have no goal: read before the goal is.
+        Verdict::Proved | Verdict::ProvedInRange if cert.get("computation").is_some() => {
+            return computation::recheck(cert, method).map(Some)
+        }
+        _ => {}
+    }
     let goal = read_goal(cert)?;
     match verdict {
+        Verdict::Proved | Verdict::ProvedInRange if cert.get("expansion").is_some() => {
+            expansion::recheck(cert, &goal, method).map(Some)
+        }
         Verdict::Proved | Verdict::ProvedInRange => recheck_proof(cert, &goal, method, known).map(Some),
         Verdict::Fails => recheck_fails(cert, &goal).map(Some),
         other => Err(format!("verdict {}: no kernel data is defined for it", other.as_str())),

@@ -81,7 +81,7 @@ fn sym_assignment(
 /// What the expansion of one equality found.
 pub enum PairResult {
     /// Equal as rational functions: the log, and the kernel's expansion.
-    Proved(PairProof, Expanded),
+    Proved(PairProof, Box<Expanded>),
     /// Not equal: a point where the sides differ.
     Fails(String),
 }
@@ -114,7 +114,7 @@ pub fn symbolic_equal(ctx: &Ctx<'_>, lhs: &Expr, rhs: &Expr, ints: &BTreeMap<Str
         names.len(),
         names.join(", ")
     )));
-    Ok(PairResult::Proved(proof, expanded))
+    Ok(PairResult::Proved(proof, Box::new(expanded)))
 }
 
 /// Checks a chain by symbolic expansion.
@@ -137,7 +137,7 @@ pub fn check_chain_symbolic(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Resu
                     return Ok(c);
                 }
                 PairResult::Proved(p, e) => {
-                    expanded.push(e);
+                    expanded.push(*e);
                     if detail {
                         steps.push(Step::text(format!("'{}' = '{}':", pair[0], pair[1])));
                         steps.extend(p.lines.iter().cloned().map(|l| l.nested(2)));
@@ -302,7 +302,7 @@ pub fn check_implies(ctx: &Ctx<'_>, imp: &Implies, detail: bool) -> Result<Check
             }
             // The difference expanded to zero (`PairResult::Proved`) and the factor has no pole
             // where the premise holds.
-            let proof = check_expanded(std::slice::from_ref(&expanded))
+            let proof = check_expanded(std::slice::from_ref(&*expanded))
                 .ok_or_else(|| Error::Domain("the kernel refuses the expansion".into()))?;
             let mut out = Checked::proved(
                 proof,

@@ -22,7 +22,7 @@ use super::kernel::poly::{Poly, RatFunc};
 use super::kernel::{check_computed, Trusted};
 use super::lemma::Lemma;
 use super::objects::{curve_from_spec, points};
-use super::outcome::Checked;
+use super::outcome::{Checked, Computed};
 use super::rewrite::substitute;
 use super::sampling::check_chain;
 use super::theorems;
@@ -296,21 +296,21 @@ fn poly_coeffs_1d(r: &RatFunc) -> Result<Vec<BigRational>> {
     Ok(out)
 }
 
-fn check_conic_type(ctx: &Ctx<'_>, claim: &ConicType) -> Result<Checked> {
-    let (l, r) = ctx.equation(&claim.equation)?;
-    let printed = claim.conic.as_str();
+/// The coefficients `A, …, F` of `lhs − rhs = A x² + B xy + C y² + D x + E y + F`, expanded
+/// exactly in x and y; an error unless it is a polynomial of degree ≤ 2.
+pub(crate) fn conic_coefficients(l: &Expr, r: &Expr) -> Result<[BigRational; 6]> {
     let names: Rc<[String]> = Rc::from(vec!["x".to_string(), "y".to_string()]);
     let degrees = ["x", "y"]
         .iter()
         .map(|v| (v.to_string(), Value::S(Deg::var(v))))
         .collect();
-    super::kernel::eval::check_symbolic_degrees(degrees, &BTreeMap::new(), &[&l, &r])?;
+    super::kernel::eval::check_symbolic_degrees(degrees, &BTreeMap::new(), &[l, r])?;
     let mut vars = BTreeMap::new();
     vars.insert("x".into(), Value::S(RatFunc::poly(Poly::var(&names, 0))));
     vars.insert("y".into(), Value::S(RatFunc::poly(Poly::var(&names, 1))));
     let env = super::kernel::eval::VarEnv(vars);
-    let lv = Evaluator::new(&env, BTreeMap::new()).scalar(&l)?;
-    let rv = Evaluator::new(&env, BTreeMap::new()).scalar(&r)?;
+    let lv = Evaluator::new(&env, BTreeMap::new()).scalar(l)?;
+    let rv = Evaluator::new(&env, BTreeMap::new()).scalar(r)?;
     let diff = lv.sub(&rv);
     let den = diff
         .den
@@ -329,6 +329,13 @@ fn check_conic_type(ctx: &Ctx<'_>, claim: &ConicType) -> Result<Checked> {
         };
         coef[slot] = &k / &den;
     }
+    Ok(coef)
+}
+
+fn check_conic_type(ctx: &Ctx<'_>, claim: &ConicType) -> Result<Checked> {
+    let (l, r) = ctx.equation(&claim.equation)?;
+    let printed = claim.conic.as_str();
+    let coef = conic_coefficients(&l, &r)?;
     let kind = ImplicitConic::from_coefficients(coef.clone()).kind();
     let [a, b, cc, d, e, f] = &coef;
     let disc = b * b - BigRational::from_integer(4.into()) * a * cc;
@@ -343,7 +350,17 @@ fn check_conic_type(ctx: &Ctx<'_>, claim: &ConicType) -> Result<Checked> {
         kind.family()
     );
     match check_computed(&[kind.family() == printed], &[Trusted::ConicKind]) {
-        Some(proof) => Ok(Checked::proved(proof, format!("{cert}: proof"))),
+        Some(proof) => {
+            let mut c = Checked::proved(proof, format!("{cert}: proof"));
+            let (lhs, rhs, coefficients, kind) = (l, r, coef.to_vec(), kind.family());
+            c.computed = vec![Computed::ConicKind {
+                lhs,
+                rhs,
+                coefficients,
+                kind,
+            }];
+            Ok(c)
+        }
         None => Ok(Checked::fails(format!("{cert}, not {printed}"))),
     }
 }
@@ -454,20 +471,29 @@ fn check_weight_type(ctx: &Ctx<'_>, claim: &WeightType) -> Result<Checked> {
         .iter()
         .map(|x| super::objects::constant(&x.text()?))
         .collect::<Result<Vec<BigRational>>>()?;
-    let curve = RationalBezierCurve::new(pts, ws.clone())?;
+    let curve = RationalBezierCurve::new(pts.clone(), ws.clone())?;
     let kind = classify_conic(&curve)?;
+    let computed = Computed::WeightType {
+        points: pts.iter().map(|p| p.coords().to_vec()).collect(),
+        weights: ws.clone(),
+        kind: kind.as_str(),
+    };
     let ratio = if ws.len() == 3 && !ws[0].is_zero() && !ws[2].is_zero() {
         format!(", w1²/(w0 w2) = {}", &ws[1] * &ws[1] / (&ws[0] * &ws[2]))
     } else {
         String::new()
     };
-    Ok(verdict(
+    let mut c = verdict(
         kind.as_str(),
         format!(
             "classify_conic: weights ({}){ratio}",
             ws.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", ")
         ),
-    ))
+    );
+    if c.proof().is_some() {
+        c.computed = vec![computed];
+    }
+    Ok(c)
 }
 
 /// `enneper`: the surface (`surfaces`, one) is Enneper's surface

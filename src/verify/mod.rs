@@ -300,6 +300,7 @@ fn outcome(f: &claims::ClaimFile, c: &claims::Claim, checked: Checked, range_bou
         method: proof.map(kernel::Proof::method),
         rests_on: proof.map(|p| p.rests_on().to_vec()),
         data: checked.data().clone(),
+        computed: checked.computed.clone(),
         certificate: checked.certificate,
         expect: c.expected(),
         file: f.path.display().to_string(),

@@ -4,6 +4,7 @@
 
 use super::kernel::certificate::{Data, Refutation};
 use super::kernel::checked::{Evaluation, Method, Step, StepKind, Verdict};
+use super::kernel::expr::Expr;
 use super::kernel::{Proof, Trusted};
 use num_rational::BigRational;
 
@@ -53,6 +54,8 @@ enum Outcome {
 /// ```
 #[derive(Clone, Debug)]
 pub struct Checked {
+    /// For a proof by a library computation: its inputs and results, for a certificate.
+    pub computed: Vec<Computed>,
     outcome: Outcome,
     /// The certificate (one line).
     pub certificate: String,
@@ -64,9 +67,30 @@ pub struct Checked {
     data: Data,
 }
 
+/// A library computation a `computation` proof accepted by name, with its inputs and its
+/// result, so that a checker can compute it again (`docs/certificates.md`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Computed {
+    /// `ImplicitConic::kind` of the conic `lhs = rhs` in x, y: its coefficients `A, …, F` of
+    /// `A x² + B xy + C y² + D x + E y + F` (of `lhs − rhs`) and its family.
+    ConicKind {
+        lhs: Expr,
+        rhs: Expr,
+        coefficients: Vec<BigRational>,
+        kind: &'static str,
+    },
+    /// `classify_conic` of the rational quadratic with these control points and weights.
+    WeightType {
+        points: Vec<Vec<BigRational>>,
+        weights: Vec<BigRational>,
+        kind: &'static str,
+    },
+}
+
 impl Checked {
     fn other(verdict: Verdict, certificate: String) -> Self {
         Checked {
+            computed: Vec::new(),
             outcome: Outcome::Other(verdict, None),
             certificate,
             steps: Vec::new(),
@@ -78,6 +102,7 @@ impl Checked {
     /// A proved claim.
     pub(crate) fn proved(proof: Proof, certificate: String) -> Self {
         Checked {
+            computed: Vec::new(),
             outcome: Outcome::Proved(proof),
             certificate,
             steps: Vec::new(),

@@ -78,6 +78,9 @@ pub struct ClaimOutcome {
     /// What the kernel checked, as data (`docs/certificates.md`; not in the JSON report).
     #[serde(skip)]
     pub data: super::kernel::certificate::Data,
+    /// A `computation` proof's library computations, as data (not in the JSON report).
+    #[serde(skip)]
+    pub computed: Vec<super::outcome::Computed>,
 }
 
 impl ClaimOutcome {
@@ -553,6 +556,7 @@ mod tests {
             note: None,
             range_bound: None,
             data: Default::default(),
+            computed: Vec::new(),
         }
     }
 

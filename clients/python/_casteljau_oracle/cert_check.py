@@ -17,6 +17,7 @@ derivation); the grid is complete, in order; both sides, evaluated here, are the
 and equal at every point. A `fails` certificate: both sides evaluated at the counterexample are
 the listed values and differ. A `proved_in_range` goal must cover every case of its `range` (of the variables the range
 text names: an inner range it does not name, `j = 0..=n`, is not checked for completeness).
+Methods `expansion` and `computation` are checked in `cert_expand` and `cert_computation`.
 """
 
 import itertools
@@ -121,6 +122,20 @@ def check_certificate(doc, name="?", symbolic=False):
                 return out(NOT_RECHECKED, check_pieces(doc))
             except PiecesRefused as e:
                 return out(REFUSED, str(e))
+        if verdict in ("proved", "proved_in_range") and method == "computation":
+            from .cert_computation import check_computation
+
+            return out(RECHECKED, check_computation(doc, _need, _rational))
+        if verdict in ("proved", "proved_in_range") and method == "expansion":
+            from .cert_expand import check_expansion
+
+            goal = _Goal(doc.get("goal"))
+            _check_range(doc, goal)
+            detail = check_expansion(doc.get("expansion"), goal, _need, _rational)
+            if symbolic:
+                _check_symbolic(goal)
+                detail += "; every equality an identity in SymPy"
+            return out(RECHECKED, detail)
         if verdict in ("proved", "proved_in_range"):
             _need(method in ("sampling", "evaluation"), f"method {method!r} carries no data in format version 1")
             goal = _Goal(doc.get("goal"))

@@ -89,6 +89,8 @@ def mutants(doc):
                 out.append(("polygon", where, _set(doc, path, val - 1)))
         elif len(path) >= 2 and path[-2] == "index" and isinstance(val, int):
             out.append(("control point", where, _set(doc, path, val + 1)))
+    out.extend(_expansion_edits(doc))
+    out.extend(_computation_edits(doc))
     # a point dropped (its grid rows kept), and a point repeated
     for k, eq in enumerate((doc.get("sampling") or {}).get("equalities") or []):
         for j, p in enumerate(eq.get("params") or []):
@@ -121,6 +123,61 @@ def mutants(doc):
             return d
 
         out.append(("range end", "last case dropped", drop_last))
+    return out
+
+
+def _expansion_edits(doc):
+    """An `expansion` file's data: every coefficient bumped and negated, every exponent
+    raised and lowered, a term dropped, two variables exchanged, the two sides' data swapped."""
+    out = []
+    for k, eq in enumerate((doc.get("expansion") or {}).get("equalities") or []):
+        base = ("expansion", "equalities", k)
+        if len(eq["vars"]) >= 2:
+            v = list(eq["vars"])
+            v[0], v[-1] = v[-1], v[0]
+            out.append(("variable", f"equality {k} vars exchanged", _set(doc, base + ("vars",), v)))
+        for j, pair in enumerate(eq["entries"]):
+            if pair["lhs"] != pair["rhs"]:
+                out.append(("swapped sides", f"equality {k} entry {j} data", _set(doc, base + ("entries", j), {"lhs": pair["rhs"], "rhs": pair["lhs"]})))
+            for side in ("lhs", "rhs"):
+                for part in ("num", "den"):
+                    poly = pair[side][part]
+                    at = base + ("entries", j, side, part)
+                    where = "/".join(str(x) for x in at)
+                    out.append(("term", f"{where} last term dropped", _set(doc, at, poly[:-1])))
+                    for t, (c, e) in enumerate(poly):
+                        out.append(("coefficient", f"{where}/{t}", _set(doc, at + (t, 0), _bump(c))))
+                        out.append(("sign", f"{where}/{t}", _set(doc, at + (t, 0), str(-Fraction(c)))))
+                        for i, x in enumerate(e):
+                            out.append(("exponent", f"{where}/{t}/{i}", _set(doc, at + (t, 1, i), x + 1)))
+                            if x > 0:
+                                out.append(("exponent", f"{where}/{t}/{i}", _set(doc, at + (t, 1, i), x - 1)))
+    return out
+
+
+def _computation_edits(doc):
+    """A `computation` file's facts: every input number bumped and negated, the equation's
+    numbers and signs edited, the result replaced by each other type."""
+    out = []
+    for k, fact in enumerate((doc.get("computation") or {}).get("facts") or []):
+        base = ("computation", "facts", k)
+        for path, val in _paths(fact, base):
+            where = "/".join(str(x) for x in path)
+            if path[-1] in ("lhs", "rhs"):
+                for m in _NUM_IN_EXPR.finditer(val):
+                    new = val[: m.start()] + _bump(m.group()) + val[m.end():]
+                    out.append(("coefficient", f"{where}@{m.start()}", _set(doc, path, new)))
+                for m in _SIGN_IN_EXPR.finditer(val):
+                    flip = "-" if m.group() == "+" else "+"
+                    out.append(("sign", f"{where}@{m.start()}", _set(doc, path, val[: m.start()] + flip + val[m.end():])))
+            elif path[-1] == "kind":
+                for other in ("ellipse", "parabola", "hyperbola", "degenerate"):
+                    if other != val:
+                        out.append(("result", f"{where} {other}", _set(doc, path, other)))
+            elif isinstance(val, str) and path[-1] != "computation":
+                out.append(("number", where, _set(doc, path, _bump(val))))
+                if Fraction(val) != 0:
+                    out.append(("sign", where, _set(doc, path, str(-Fraction(val)))))
     return out
 
 

@@ -54,11 +54,43 @@ def test_every_checkable_certificate_is_re_checked_and_none_refused():
     assert sum(o.status == RECHECKED for o in outcomes) == len(kernel) >= 1
 
 
+def _fact_holds(doc):
+    """A (possibly tampered) computation's facts, decided with SymPy: the implicit conic's type
+    from its discriminant and matrix, the rational quadratic's from the sign of w1² − w0 w2."""
+    import sympy
+
+    x, y = sympy.symbols("x y")
+    for fact in doc["computation"]["facts"]:
+        if fact["computation"] == "ImplicitConic::kind":
+            poly = sympy.Poly(sympy.sympify(fact["lhs"].replace("^", "**")) - sympy.sympify(fact["rhs"].replace("^", "**")), x, y)
+            a, b, c, d, e, f = (poly.coeff_monomial(m) for m in (x**2, x * y, y**2, x, y, 1))
+            det = sympy.Matrix([[a, b / 2, d / 2], [b / 2, c, e / 2], [d / 2, e / 2, f]]).det()
+            disc = b**2 - 4 * a * c
+            kind = ("degenerate" if det == 0 else "parabola" if disc == 0 else "hyperbola" if disc > 0
+                    else "ellipse" if (a + c) * det < 0 else "imaginary ellipse (no real points)")
+        else:
+            (x0, y0), (x1, y1), (x2, y2) = (map(sympy.Rational, p) for p in fact["points"])
+            w0, w1, w2 = map(sympy.Rational, fact["weights"])
+            if sympy.Matrix([[x1 - x0, y1 - y0], [x2 - x0, y2 - y0]]).det() == 0:
+                kind = "degenerate (collinear control points)"
+            elif 0 in (w0, w1, w2):
+                kind = "degenerate (zero weight)"
+            else:
+                excess = sympy.sign(w1**2 - w0 * w2)
+                kind = {0: "parabola", 1: "hyperbola", -1: "ellipse"}[int(excess)]
+        if kind != fact["kind"]:
+            return False
+    return True
+
+
 def _goal_holds(doc):
     """SymPy's verdict on a (possibly tampered) proved goal: every equality an identity."""
     from _casteljau_oracle.cert_expr import parse
     from _casteljau_oracle.cert_polygon import unlisted_to_zero
     from _casteljau_oracle.cert_sympy import same, to_sympy
+
+    if doc.get("method") == "computation":
+        return _fact_holds(doc)
 
     names = [s["name"] for s in doc["goal"]["symbols"]]
     for eq in doc["goal"]["equalities"]:

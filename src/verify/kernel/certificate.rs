@@ -89,6 +89,8 @@ pub enum Data {
     Sampled(Vec<Equality>),
     /// A counterexample.
     Refuted(Box<Refutation>),
+    /// Equalities proved by symbolic expansion, each as expanded.
+    Expanded(Vec<super::expand::Expansion>),
     /// A for-every proof on the pieces of a domain, by the goal it was built from.
     Symbolic(Box<Symbolic>),
 }
@@ -119,6 +121,10 @@ impl Data {
             (Data::Sampled(mut a), Data::Sampled(b)) => {
                 a.extend(b);
                 Data::Sampled(a)
+            }
+            (Data::Expanded(mut a), Data::Expanded(b)) => {
+                a.extend(b);
+                Data::Expanded(a)
             }
             _ => Data::None,
         }

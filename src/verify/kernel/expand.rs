@@ -6,6 +6,7 @@ use super::eval::{check_symbolic_degrees, Deg, Env, Evaluator, Value};
 use super::expr::Expr;
 use super::poly::{Poly, RatFunc};
 use crate::error::{Error, Result};
+use num_rational::BigRational;
 use std::collections::{BTreeMap, BTreeSet};
 use std::rc::Rc;
 
@@ -73,12 +74,28 @@ fn layout_degrees(layout: &[(String, usize)]) -> BTreeMap<String, Value<Deg>> {
         .collect()
 }
 
+/// A polynomial's terms: exponents (one per variable) and coefficient.
+pub type Terms = Vec<(Vec<u16>, BigRational)>;
+
+/// What [`expand`] expanded, as a certificate's data: the variables, the integers' values,
+/// both sides, and per pair of entries (up to the first that differ) the terms of the left
+/// side's numerator and denominator, then the right side's.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Expansion {
+    pub layout: Vec<(String, usize)>,
+    pub ints: BTreeMap<String, i64>,
+    pub sides: (Expr, Expr),
+    pub entries: Vec<[Terms; 4]>,
+}
+
 /// `lhs = rhs` expanded here (made only by [`expand`]): the first cleared difference that is
 /// not the zero polynomial, if any.
 #[derive(Clone, Debug)]
 pub struct Expanded {
     difference: Option<Poly>,
     terms: usize,
+    /// What was expanded.
+    pub record: Expansion,
 }
 
 impl Expanded {
@@ -97,23 +114,29 @@ impl Expanded {
 /// [`super::eval::MAX_SYMBOLIC_DEGREE`], and compared entry by entry.
 pub fn expand(layout: &[(String, usize)], lhs: &Expr, rhs: &Expr, ints: &BTreeMap<String, i64>) -> Result<Expanded> {
     check_symbolic_degrees(layout_degrees(layout), ints, &[lhs, rhs])?;
-    let (_, env) = sym_env(layout)?;
+    let (names, env) = sym_env(layout)?;
     let l = Evaluator::new(&env, ints.clone()).eval(lhs)?;
     let r = Evaluator::new(&env, ints.clone()).eval(rhs)?;
-    let mut terms = 0;
+    let (mut entries, mut terms, mut difference) = (Vec::new(), 0, None);
     for (a, b) in l.paired_entries(&r)? {
+        entries.push([&a.num, &a.den, &b.num, &b.den].map(|p| p.terms_in(names.len())));
         let d = a.cleared_difference(b);
         if !d.is_zero() {
-            return Ok(Expanded {
-                difference: Some(d),
-                terms,
-            });
+            difference = Some(d);
+            break;
         }
         terms += a.num.len() + b.num.len();
     }
+    let record = Expansion {
+        layout: layout.to_vec(),
+        ints: ints.clone(),
+        sides: (lhs.clone(), rhs.clone()),
+        entries,
+    };
     Ok(Expanded {
-        difference: None,
+        difference,
         terms,
+        record,
     })
 }
 

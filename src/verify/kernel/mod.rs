@@ -193,7 +193,10 @@ pub fn sampled_method<'a>(degrees: impl IntoIterator<Item = &'a u64>, basis: boo
 /// at least one, and in each the cleared difference of every pair of entries is the zero
 /// polynomial.
 pub fn check_expanded(pairs: &[expand::Expanded]) -> Option<Proof> {
-    (!pairs.is_empty() && pairs.iter().all(|p| p.difference().is_none())).then(|| Proof::new(Method::Expansion, &[]))
+    (!pairs.is_empty() && pairs.iter().all(|p| p.difference().is_none())).then(|| Proof {
+        data: certificate::Data::Expanded(pairs.iter().map(|p| p.record.clone()).collect()),
+        ..Proof::new(Method::Expansion, &[])
+    })
 }
 
 /// A proof accepting library computations by name: every fact the computation reported

@@ -1,0 +1,154 @@
+//! Certificates of proofs by a library computation (`docs/certificates.md`, method
+//! `computation`): each computation's inputs and result. Written for the conic types (the
+//! type of an implicit conic from its equation, of a rational quadratic from its weights); the
+//! other computations (`BezierCurve::transform`, `bernstein_all`, `hull_weights`, `fit_cubic`)
+//! record no data yet.
+//!
+//! The re-check runs the named library computation again on the file's inputs and compares
+//! its result with the file's; the verdict still rests on that computation (`rests_on`), as the
+//! proof did. For an implicit conic the coefficients are derived again from the equation.
+
+use super::{array, field, not_self_contained, rational, string, Res};
+use crate::conic::{classify_conic, ImplicitConic};
+use crate::point::Point;
+use crate::rational::RationalBezierCurve;
+use crate::verify::kernel::check_computed;
+use crate::verify::kernel::Trusted;
+use crate::verify::kinds::conic_coefficients;
+use crate::verify::outcome::Computed;
+use crate::verify::parse::parse;
+use num_rational::BigRational;
+use serde_json::{json, Map, Value as Json};
+
+fn strings(v: &[BigRational]) -> Vec<String> {
+    v.iter().map(ToString::to_string).collect()
+}
+
+const XY: [&str; 2] = ["x", "y"];
+
+/// The `computation` data of a proof's library computations, or why it cannot be written.
+pub(super) fn fields(computed: &[Computed], out: &mut Map<String, Json>) -> Res<()> {
+    if computed.is_empty() {
+        return Err("method computation: this version records no data for it (not done)".into());
+    }
+    let known: Vec<String> = XY.iter().map(|v| v.to_string()).collect();
+    let mut facts = Vec::new();
+    for c in computed {
+        facts.push(match c {
+            Computed::ConicKind {
+                lhs,
+                rhs,
+                coefficients,
+                kind,
+            } => {
+                let (l, r) = (lhs.to_string(), rhs.to_string());
+                for side in [&l, &r] {
+                    if let Some(why) = not_self_contained(side, &known, &[]) {
+                        return Err(format!("the equation uses {why}"));
+                    }
+                }
+                json!({"computation": Trusted::ConicKind.name(), "lhs": l, "rhs": r,
+                       "coefficients": strings(coefficients), "kind": kind})
+            }
+            Computed::WeightType { points, weights, kind } => {
+                let points: Vec<Vec<String>> = points.iter().map(|p| strings(p)).collect();
+                json!({"computation": Trusted::ClassifyConic.name(), "points": points,
+                       "weights": strings(weights), "kind": kind})
+            }
+        });
+    }
+    out.insert("computation".into(), json!({ "facts": facts }));
+    Ok(())
+}
+
+fn rationals(v: &Json, at: &str) -> Res<Vec<BigRational>> {
+    let list = v.as_array().ok_or_else(|| format!("{at}: not a list"))?;
+    list.iter()
+        .enumerate()
+        .map(|(i, x)| {
+            let s = x.as_str().ok_or_else(|| format!("{at}[{i}]: not a string"))?;
+            rational(s).map_err(|e| format!("{at}[{i}]: {e}"))
+        })
+        .collect()
+}
+
+/// One fact computed again: the library's result, and what the file says it is.
+fn recompute(fact: &Json, at: &str) -> Res<(Trusted, String, String)> {
+    let said = string(fact, "kind", at)?.to_string();
+    match string(fact, "computation", at)? {
+        "ImplicitConic::kind" => {
+            let known: Vec<String> = XY.iter().map(|v| v.to_string()).collect();
+            let side = |k: &str| parse(string(fact, k, at)?, &known).map_err(|e| format!("{at}.{k}: {e}"));
+            let (l, r) = (side("lhs")?, side("rhs")?);
+            for v in l.free_vars().into_iter().chain(r.free_vars()) {
+                if !known.contains(&v) {
+                    return Err(format!("{at}: the equation names '{v}', not x or y"));
+                }
+            }
+            let coef = conic_coefficients(&l, &r).map_err(|e| format!("{at}: {e}"))?;
+            let listed = rationals(field(fact, "coefficients", at)?, &format!("{at}.coefficients"))?;
+            if listed != coef {
+                return Err(format!(
+                    "{at}.coefficients: ({}), the equation's are ({})",
+                    strings(&listed).join(", "),
+                    strings(&coef).join(", ")
+                ));
+            }
+            let kind = ImplicitConic::from_coefficients(coef).kind().family().to_string();
+            Ok((Trusted::ConicKind, kind, said))
+        }
+        "classify_conic" => {
+            let mut points = Vec::new();
+            for (i, p) in array(fact, "points", at)?.iter().enumerate() {
+                let coords = rationals(p, &format!("{at}.points[{i}]"))?;
+                points.push(Point::new(coords).map_err(|e| format!("{at}.points[{i}]: {e}"))?);
+            }
+            let weights = rationals(field(fact, "weights", at)?, &format!("{at}.weights"))?;
+            let curve = RationalBezierCurve::new(points, weights).map_err(|e| format!("{at}: {e}"))?;
+            let kind = classify_conic(&curve).map_err(|e| format!("{at}: {e}"))?;
+            Ok((Trusted::ClassifyConic, kind.as_str().to_string(), said))
+        }
+        other => Err(format!("{at}.computation: '{other}' records no data in this version")),
+    }
+}
+
+/// Re-checks a `computation` certificate: every listed computation run again on its inputs
+/// gives the listed result, and the file's `rests_on` names it; the proof is the kernel's
+/// `check_computed` on those facts.
+pub(super) fn recheck(cert: &Json, method: &str) -> Res<String> {
+    if method != "computation" {
+        return Err(format!("method: the file says {method}, the data is computation"));
+    }
+    let c = field(cert, "computation", "certificate")?;
+    let facts = array(c, "facts", "computation")?;
+    if facts.is_empty() {
+        return Err("computation.facts: none".into());
+    }
+    let rests: Vec<&str> = array(cert, "rests_on", "certificate")?
+        .iter()
+        .filter_map(Json::as_str)
+        .collect();
+    let (mut trusted, mut holds) = (Vec::new(), Vec::new());
+    for (i, fact) in facts.iter().enumerate() {
+        let at = format!("computation.facts[{i}]");
+        let (t, computed, said) = recompute(fact, &at)?;
+        if computed != said {
+            return Err(format!("{at}: {} gives '{computed}', the file says '{said}'", t.name()));
+        }
+        if !rests.contains(&t.name()) {
+            return Err(format!(
+                "rests_on: the proof rests on {}, the file does not say so",
+                t.name()
+            ));
+        }
+        trusted.push(t);
+        holds.push(true);
+    }
+    let proof = check_computed(&holds, &trusted).ok_or("the kernel refuses the computation")?;
+    let names: Vec<&str> = proof.rests_on().iter().map(|t| t.name()).collect();
+    Ok(format!(
+        "{} library computations run again on the file's inputs, with the file's results; rests on {}",
+        facts.len(),
+        names.join(", ")
+    ))
+}
