@@ -223,7 +223,10 @@ fn mutants(cert: &Value) -> Vec<(String, Value)> {
         eq["lhs"] = r;
         eq["rhs"] = l;
         out.push(("swapped sides".into(), m));
-        if let Some(points) = eqs[i]["control_points"].as_array().filter(|p| p.len() >= 2) {
+        if let Some(points) = cert["goal"]["equalities"][i]["control_points"]
+            .as_array()
+            .filter(|p| p.len() >= 2)
+        {
             let mut m = cert.clone();
             m["goal"]["equalities"][i]["control_points"] = Value::from(points[..points.len() - 1].to_vec());
             out.push(("a control point dropped".into(), m));

@@ -5,11 +5,9 @@
 //! Reading a file (JSON, the goal's expression text) is elaboration, trusted like the claim
 //! parser; the obligations are decided by `kernel::certificate`.
 
-
 use super::kernel::certificate::{self, Claimed, Data, Equality, Param, Refutation};
 use super::kernel::checked::{Method, Verdict};
 use super::kernel::expr::Expr;
-use super::kernel::sample;
 use super::parse::parse;
 use super::report::{ClaimOutcome, Report};
 use crate::error::{Error, Result};
@@ -278,26 +276,19 @@ pub fn certificate(o: &ClaimOutcome) -> Json {
     out.insert("range".into(), json!(o.range));
     out.insert("summary".into(), json!(o.certificate));
     let mut data = Map::new();
-    // Only data the kernel accepts on re-reading is written as re-checkable; the re-reading
-    // knows the kernel's own data, so it repeats no evaluation the kernel has just done.
-    let reread = |data: Map<String, Json>| {
-        let mut full = out.clone();
-        full.insert("check".into(), json!("kernel"));
-        full.extend(data);
-        let full = Json::Object(full);
-        match recheck(&full, Some(&o.data)) {
-            Ok(_) => Ok(full),
-            Err(why) => Err(format!("the kernel refuses the written-out goal: {why}")),
+    // The data the kernel recorded, written as it is: `prove --check` and `casteljau check`
+    // re-read it (re-reading every file here would cost as much as checking them all).
+    match data_fields(o, &mut data) {
+        Ok(()) => {
+            out.insert("check".into(), json!("kernel"));
+            out.extend(data);
         }
-    };
-    match data_fields(o, &mut data).and_then(|()| reread(data)) {
-        Ok(full) => full,
         Err(reason) => {
             out.insert("check".into(), json!("none"));
             out.insert("reason".into(), json!(reason));
-            Json::Object(out)
         }
     }
+    Json::Object(out)
 }
 
 /// A file name for a claim id: its letters, digits, `-`, `_` and `.`, others as `_`.
@@ -501,61 +492,7 @@ fn read_rows(eq: &Json, at: &str, points: usize) -> Res<Rows> {
         .collect()
 }
 
-/// For a certificate just written from the kernel's equalities `known`: when the file's sides
-/// are the very expressions the kernel evaluated, at the same integers and points, and its rows
-/// (compared as text, not parsed again) the kernel's, the evaluations `check` makes would
-/// repeat the kernel's, so only the obligations that evaluate nothing are checked (the degree
-/// bounds derived again from the file's goal, enough distinct points, one row per grid point).
-/// The method the data proves by; `None` when something differs or fails (the full re-check
-/// then decides, and names the failing obligation).
-fn known_rows(eqs: &[Json], goal: &Goal, known: &[Equality]) -> Option<Method> {
-    if eqs.len() != known.len() || goal.equalities.len() != known.len() {
-        return None;
-    }
-    let (mut total, mut degrees) = (0, Vec::new());
-    for (i, ((eq, (ints, lhs, rhs, control)), k)) in eqs.iter().zip(&goal.equalities).zip(known).enumerate() {
-        if !control.is_empty() {
-            return None;
-        }
-        let params = read_params(eq, "", &goal.reals).ok()?;
-        let rows = eq.get("values")?.as_array()?;
-        let texts = |row: &Json, key: &str| -> Option<Vec<String>> {
-            row.get(key)?
-                .as_array()?
-                .iter()
-                .map(|x| x.as_str().map(String::from))
-                .collect()
-        };
-        let same = (lhs, rhs) == (&k.evaluated.0, &k.evaluated.1)
-            && *ints == k.ints
-            && k.polygons == 1
-            && params.iter().map(|p| &p.points).eq(k.params.iter().map(|p| &p.points))
-            && rows.len() == k.rows.len()
-            && rows.iter().zip(&k.rows).all(|(row, r)| {
-                texts(row, "at") == Some(strings(&r.at))
-                    && texts(row, "lhs").as_ref() == Some(&r.value)
-                    && texts(row, "rhs").as_ref() == Some(&r.value)
-            });
-        if !same {
-            return None;
-        }
-        total += rows.len();
-        let c = Claimed {
-            lhs,
-            rhs,
-            ints: ints.clone(),
-            params,
-            rows: Vec::new(),
-            env: Box::new(polygon::FileEnv::new(Vec::new())),
-        };
-        let (bounds, points) = certificate::recorded(i, &c, rows.len()).ok()?;
-        sample::enough_points(bounds.needs(), &points).ok()?;
-        degrees.extend_from_slice(bounds.needs());
-    }
-    (total <= certificate::MAX_RECHECK_POINTS).then(|| super::kernel::sampled_method(&degrees, false))
-}
-
-fn recheck_proof(cert: &Json, goal: &Goal, method: &str, known: Option<&Data>) -> Res<String> {
+fn recheck_proof(cert: &Json, goal: &Goal, method: &str) -> Res<String> {
     let s = field(cert, "sampling", "certificate")?;
     let eqs = array(s, "equalities", "sampling")?;
     if eqs.len() != goal.equalities.len() {
@@ -564,15 +501,6 @@ fn recheck_proof(cert: &Json, goal: &Goal, method: &str, known: Option<&Data>) -
             eqs.len(),
             goal.equalities.len()
         ));
-    }
-    if let Some(Data::Sampled(known)) = known {
-        if let Some(derived) = known_rows(eqs, goal, known).filter(|m| method_name(*m) == method) {
-            return Ok(format!(
-                "{} equalities, {}, as the kernel evaluated them",
-                eqs.len(),
-                derived.text()
-            ));
-        }
     }
     let mut claimed = Vec::with_capacity(eqs.len());
     for (i, (eq, (ints, lhs, rhs, points))) in eqs.iter().zip(&goal.equalities).enumerate() {
@@ -629,7 +557,7 @@ fn recheck_fails(cert: &Json, goal: &Goal) -> Res<String> {
 }
 
 /// Re-checks a certificate; `known`: the kernel's data it was just written from, if it was.
-fn recheck(cert: &Json, known: Option<&Data>) -> Res<Option<String>> {
+fn recheck(cert: &Json) -> Res<Option<String>> {
     if string(cert, "format", "certificate")? != FORMAT {
         return Err(format!("format: not '{FORMAT}'"));
     }
@@ -667,7 +595,7 @@ fn recheck(cert: &Json, known: Option<&Data>) -> Res<Option<String>> {
         Verdict::Proved | Verdict::ProvedInRange if cert.get("expansion").is_some() => {
             expansion::recheck(cert, &goal, method).map(Some)
         }
-        Verdict::Proved | Verdict::ProvedInRange => recheck_proof(cert, &goal, method, known).map(Some),
+        Verdict::Proved | Verdict::ProvedInRange => recheck_proof(cert, &goal, method).map(Some),
         Verdict::Fails => recheck_fails(cert, &goal).map(Some),
         other => Err(format!("verdict {}: no kernel data is defined for it", other.as_str())),
     }
@@ -679,7 +607,7 @@ pub fn check_certificate(text: &str) -> Recheck {
         Ok(v) => v,
         Err(e) => return Recheck::Refused(format!("not JSON: {e}")),
     };
-    match recheck(&cert, None) {
+    match recheck(&cert) {
         Ok(Some(what)) => Recheck::Accepted(what),
         Ok(None) => Recheck::NotChecked(
             cert.get("reason")

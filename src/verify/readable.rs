@@ -502,11 +502,12 @@ impl Status {
 
 /// Rows of a table and groups of a list that `--explain` shows by default (one screen);
 /// `--verbose` shows what the HTML report shows.
-const BRIEF: (usize, usize) = (4, 2);
+const BRIEF: (usize, usize) = (3, 1);
 
 impl Readable {
     /// The certificate as plain text (`--explain`): indented lines, tables in aligned columns;
-    /// `brief` folds tables after 4 rows and lists after 2 groups, else as the report does.
+    /// `brief` folds tables after 3 rows, groups of groups after the first (the data's
+    /// equalities) and the goal after its first equality; else as the report does.
     pub fn to_text(&self, brief: bool) -> String {
         let limits = if brief { BRIEF } else { (usize::MAX, usize::MAX) };
         let mut out = format!("certificate file {}: {}\n", self.file, self.status.text());
@@ -515,8 +516,14 @@ impl Readable {
         }
         if !self.goal.is_empty() {
             out.push_str("  goal:\n");
-            // the goal whole: its equalities are what the data below is about
-            text_blocks(&mut out, &self.goal, 4, (limits.0, usize::MAX));
+            // the goal whole (its equalities are what the data below is about); brief: its
+            // first two equalities, the rest counted
+            let goal = if brief {
+                brief_goal(&self.goal)
+            } else {
+                self.goal.clone()
+            };
+            text_blocks(&mut out, &goal, 4, (limits.0, usize::MAX));
         }
         text_blocks(&mut out, &self.data, 2, limits);
         out.push_str(&format!(
@@ -525,6 +532,27 @@ impl Readable {
         ));
         out
     }
+}
+
+/// The goal's blocks up to its second equality, the equalities after it counted.
+fn brief_goal(goal: &[Block]) -> Vec<Block> {
+    let is_equality = |b: &Block| matches!(b, Block::Lines(l) if l.first().is_some_and(|(k, _)| k == "equality"));
+    let mut shown = Vec::new();
+    let (mut seen, mut folded) = (0, 0);
+    for b in goal {
+        if is_equality(b) {
+            seen += 1;
+        }
+        match b {
+            Block::More(n, _) => folded += n,
+            _ if seen > 1 => folded += usize::from(is_equality(b)),
+            _ => shown.push(b.clone()),
+        }
+    }
+    if folded > 0 {
+        shown.push(Block::More(folded, "equalities".into()));
+    }
+    shown
 }
 
 /// Blocks as indented text, showing at most `rows` rows of a table and `groups` groups of a
@@ -572,8 +600,11 @@ fn text_blocks(out: &mut String, blocks: &[Block], indent: usize, (max_rows, max
                 }
             }
             Block::Group { title, blocks } => {
-                groups += 1;
-                if groups > max_groups {
+                // a group of tables only (a bound's table, the values' table) is never folded:
+                // its rows are
+                let leaf = !blocks.iter().any(|b| matches!(b, Block::Group { .. }));
+                groups += usize::from(!leaf);
+                if !leaf && groups > max_groups {
                     folded += 1;
                     continue;
                 }

@@ -229,7 +229,7 @@ class _Goal:
             names = {n for n, _ in points}
             for u in used:
                 _need(self.sorts[u] != _POINTS or u in names, f"equality {k}: {u} has no control points listed")
-            for side, e in (("lhs", lhs), ("rhs", rhs)):
+            for side, e in (("lhs", lhs), ("rhs", rhs)) if names else ():
                 try:
                     check_affine(e, names, ints, f"equality {k}: {side}")
                 except PolygonError as err:

@@ -61,9 +61,6 @@ pub struct Equality {
     pub polygons: usize,
     /// The symbolic control points, in the order of the unit polygons.
     pub control_points: Vec<(String, Vec<i64>)>,
-    /// The sides as evaluated at the rows (`lhs`, `rhs` may be them written without the
-    /// claim's objects): a writer re-reading `lhs`, `rhs` knows the rows when they are these.
-    pub evaluated: Box<(Expr, Expr)>,
 }
 
 /// A counterexample: the equality, where it fails and both sides' values there.
@@ -175,7 +172,6 @@ pub(super) fn equality(
         rows,
         polygons,
         control_points,
-        evaluated: Box::new((bounds.lhs().clone(), bounds.rhs().clone())),
     }
 }
 
