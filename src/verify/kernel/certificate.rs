@@ -227,14 +227,10 @@ fn list(v: &[BigRational]) -> String {
     v.iter().map(ToString::to_string).collect::<Vec<_>>().join(", ")
 }
 
-/// The obligations of the `i`-th recorded equality, with `rows` value rows, that evaluate
-/// nothing: the degree bounds derived again are the recorded ones, and there is one row per
-/// grid point. Its bounds and grid's points.
-pub fn recorded<'c>(
-    i: usize,
-    c: &Claimed<'c>,
-    rows: usize,
-) -> std::result::Result<(sample::Bounds<'c>, Vec<Vec<BigRational>>), String> {
+/// The obligations of the `i`-th recorded equality that evaluate nothing: the degree bounds
+/// derived again are the recorded ones, and there is one row per grid point. Its bounds and
+/// grid's points.
+fn recorded<'c>(i: usize, c: &Claimed<'c>) -> std::result::Result<(sample::Bounds<'c>, Vec<Vec<BigRational>>), String> {
     let at = |m: String| format!("equality {i}: {m}");
     let names: Vec<String> = c.params.iter().map(|p| p.name.clone()).collect();
     let control = c.env.control_points();
@@ -251,7 +247,7 @@ pub fn recorded<'c>(
     }
     let points: Vec<Vec<BigRational>> = c.params.iter().map(|p| p.points.clone()).collect();
     let grid = points.iter().try_fold(1usize, |acc, p| acc.checked_mul(p.len()));
-    let polygons = c.env.polygons();
+    let (rows, polygons) = (c.rows.len(), c.env.polygons());
     if grid.and_then(|g| g.checked_mul(polygons)) != Some(rows) {
         return Err(at(format!(
             "{rows} value rows for a grid of {} points on {polygons} basis polygons",
@@ -275,7 +271,7 @@ pub fn recheck_sampled(claimed: &mut [Claimed<'_>]) -> std::result::Result<Proof
     let mut cases = Vec::with_capacity(claimed.len());
     for (i, c) in claimed.iter_mut().enumerate() {
         let at = |m: String| format!("equality {i}: {m}");
-        let (bounds, points) = recorded(i, c, c.rows.len())?;
+        let (bounds, points) = recorded(i, c)?;
         let mut k = 0;
         let mut mismatch: Option<String> = None;
         let rows = &c.rows;

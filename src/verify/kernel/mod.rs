@@ -182,7 +182,7 @@ pub fn check_sampled(cases: &[sample::Case]) -> Result<Proof, String> {
 
 /// The method of exact evaluation at grids with these degree bounds (one per parameter of
 /// each case; `basis`: some case on basis polygons): with no parameter, exact evaluation.
-pub fn sampled_method<'a>(degrees: impl IntoIterator<Item = &'a u64>, basis: bool) -> Method {
+fn sampled_method<'a>(degrees: impl IntoIterator<Item = &'a u64>, basis: bool) -> Method {
     match degrees.into_iter().max() {
         Some(&degree) => Method::Sampling { basis, degree },
         None => Method::Evaluation,

@@ -217,7 +217,7 @@ fn written<A: Alg>(env: &dyn Points<A>, bounds: &Bounds<'_>) -> Option<(Expr, Ex
 }
 
 /// Checks that each parameter, of degree bound `needs`, has more distinct `points` than its bound.
-pub fn enough_points(needs: &[u64], points: &[Vec<BigRational>]) -> std::result::Result<(), String> {
+fn enough_points(needs: &[u64], points: &[Vec<BigRational>]) -> std::result::Result<(), String> {
     if points.len() != needs.len() {
         return Err(format!("{} point sets for {} parameters", points.len(), needs.len()));
     }
