@@ -311,7 +311,7 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     #[inline(always)]
     pub fn elevate_reference(&self) -> Result<Self> {
         if let Some(points) = self.inline_array::<3>() {
-            return Ok(Self::from_pushed::<4>(elevate_points(points)));
+            return Ok(Self::from_inline::<4>(elevate_points(points)));
         }
         if let Some(points) = self.inline_array::<CUBIC_POINTS>() {
             return Ok(Self::from_inline::<5>(elevate_points(points)));
