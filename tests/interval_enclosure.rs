@@ -240,6 +240,13 @@ fn interval_coefficients_and_other_parameters() {
         for b in [&lo, &hi, &mid] {
             assert!(e.contains(&exact_value(b, t)), "{e}: {b:?} at {t}");
         }
+        // the kernel's enclosure on the lower endpoints joined with the one on the upper
+        // endpoints, bit for bit (the cubic's is computed out of line)
+        let (low, high) = (
+            interval_de_casteljau(&lo, t).unwrap(),
+            interval_de_casteljau(&hi, t).unwrap(),
+        );
+        assert_eq!(e, Interval::new(low.lo(), high.hi()).unwrap(), "{lo:?}, {hi:?} at {t}");
         for t in [
             Interval::point(1.0 + t).unwrap(),
             Interval::point(-t).unwrap(),

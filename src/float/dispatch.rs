@@ -148,13 +148,32 @@ fn enclose_coordinate<Q: VectorSpace<Scalar = Interval>>(points: &[Q], k: usize,
 }
 
 /// [`enclose_coordinate`] on the coefficients of one coordinate, `N` known at compile time.
+/// Every coefficient a point is tested before the kernel, and wider ones go out of line,
+/// given by value and answered in registers: tested after the kernel, the coefficients
+/// stayed live across it and were spilled to the stack; given by reference, they were
+/// stored before the test; answered as an `Option`, through memory, the kernel's result
+/// was stored and loaded again to meet it.
 #[inline(always)]
 fn enclose_gathered<const N: usize>(coefficients: [Interval; N], t: f64) -> Option<Interval> {
-    let low = sign_split_enclosure_of(&coefficients.map(|c| c.lo()), t)?;
-    let points_only = coefficients.iter().all(|c| c.lo() == c.hi());
-    joined(low, points_only, || {
-        sign_split_enclosure_of(&coefficients.map(|c| c.hi()), t)
-    })
+    if coefficients.iter().all(|c| c.lo() == c.hi()) {
+        return sign_split_enclosure_of(&coefficients.map(|c| c.lo()), t);
+    }
+    let (lo, hi) = enclose_wide(coefficients, t);
+    // NaN is `enclose_wide`'s `None`: no enclosure has a NaN endpoint
+    if lo.is_nan() {
+        return None;
+    }
+    Interval::new(lo, hi).ok()
+}
+
+/// [`enclose_gathered`] when a coefficient is not a point: the enclosure's endpoints, or
+/// NaN for none.
+#[inline(never)]
+fn enclose_wide<const N: usize>(coefficients: [Interval; N], t: f64) -> (f64, f64) {
+    let low = sign_split_enclosure_of(&coefficients.map(|c| c.lo()), t);
+    let enclosure =
+        low.and_then(|low| joined(low, false, || sign_split_enclosure_of(&coefficients.map(|c| c.hi()), t)));
+    enclosure.map_or((f64::NAN, f64::NAN), |e| (e.lo(), e.hi()))
 }
 
 /// The enclosure over interval coefficients from `low`, the curve's on their lower
