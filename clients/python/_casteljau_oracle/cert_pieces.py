@@ -74,10 +74,22 @@ class Prover:
         return out
 
     def _simplify_term(self, dom, t):
+        # where the term is undefined (a vanishing binomial or integer divisor), the goal is:
+        # decided before any condition that would make the term 0 (the evaluator divides too)
+        musts = []
+        for L in t.musts:
+            if dom.implies(L):
+                continue
+            if L.is_Integer or dom.implies(-L - 1):
+                raise Refuted(f"division by a vanishing binomial where {dom.show()}")
+            musts.append(L)
         c = sympy.cancel(t.c)
+        pending = bool(musts) or self._divisor(dom, c) is not None
+        if pending:
+            return [Term(c, t.conds, t.eqs, musts, t.binoms, t.pows, t.has_b)]
         if c == 0:
             return []
-        conds, eqs, musts, binoms, pows = [], [], [], [], []
+        conds, eqs, binoms, pows = [], [], [], []
         for L in t.conds:
             if L.is_Integer:
                 if L < 0:
@@ -96,12 +108,6 @@ class Prover:
             if dom.implies(L - 1) or dom.implies(-L - 1):
                 return []
             eqs.append(L)
-        for L in t.musts:
-            if dom.implies(L):
-                continue
-            if L.is_Integer or dom.implies(-L - 1):
-                raise Refuted(f"division by a vanishing binomial where {dom.show()}")
-            musts.append(L)
         for a, b, s in t.binoms:
             if a.is_Integer and b.is_Integer:
                 if 0 <= b <= a:
@@ -159,32 +165,42 @@ class Prover:
 
     # --- step 3 ---------------------------------------------------------------------
 
+    def _divisor(self, dom, c):
+        """An integer divisor of `c` whose sign is undecided on `dom` (None if none); raises
+        when one vanishes on all of `dom`."""
+        syms = set(dom.syms)
+        _, den = sympy.fraction(sympy.together(c))
+        for f, _ in sympy.factor_list(den)[1]:
+            if not f.free_symbols & syms:
+                continue
+            if not _is_int_only(f, syms):
+                raise Undecided(f"a divisor {f} that mixes integer and real symbols")
+            if sympy.Poly(f, *sorted(syms, key=str)).total_degree() > 1:
+                raise Undecided(f"a divisor {f} that is not affine")
+            sign = dom.sign(f)
+            if sign == 0:
+                raise Refuted(f"division by {f} = 0 where {dom.show()}")
+            if sign is None:
+                return f
+        return None
+
     def _split(self, dom, items):
         """The pieces of `dom` for the first undecided condition, or None."""
-        syms = set(dom.syms)
         for t in items:
             if not isinstance(t, Term):
                 continue
-            for L in t.conds + t.musts:
+            for L in t.musts:
+                return [dom.with_(L), dom.with_(-L - 1)]
+            f = self._divisor(dom, t.c)
+            if f is not None:
+                return [dom.with_(f - 1), dom.with_(f, -f), dom.with_(-f - 1)]
+            for L in t.conds:
                 return [dom.with_(L), dom.with_(-L - 1)]
             for L in t.eqs:
                 return [dom.with_(L - 1), dom.with_(L, -L), dom.with_(-L - 1)]
             for base, e in t.pows:
                 if base == 0:
                     return [dom.with_(e - 1), dom.with_(e, -e), dom.with_(-e - 1)]
-            _, den = sympy.fraction(sympy.together(t.c))
-            for f, _ in sympy.factor_list(den)[1]:
-                if not f.free_symbols & syms:
-                    continue
-                if not _is_int_only(f, syms):
-                    raise Undecided(f"a divisor {f} that mixes integer and real symbols")
-                if sympy.Poly(f, *sorted(syms, key=str)).total_degree() > 1:
-                    raise Undecided(f"a divisor {f} that is not affine")
-                sign = dom.sign(f)
-                if sign == 0:
-                    raise Refuted(f"division by {f} = 0 where {dom.show()}")
-                if sign is None:
-                    return [dom.with_(f - 1), dom.with_(f, -f), dom.with_(-f - 1)]
         return None
 
     # --- the whole argument ---------------------------------------------------------

@@ -253,7 +253,10 @@ def prove_goal(doc):
         unit = tuple(fresh("%u") for _ in degs)
         bounds = []
         for k, d in zip(unit, degs):
-            bounds += [k, base.affine(parse(d, strict=True)) - k]
+            deg = base.affine(parse(d, strict=True))
+            if not dom.implies(deg):
+                raise Undecided(f"goal.{'polygon' if polygon else 'net'}.degree {d} may be negative")
+            bounds += [k, deg - k]
         cases = [(unit, dom.with_(*bounds, add_syms=unit)), (None, dom)]
     for i, eq in enumerate(goal["equalities"]):
         lhs, rhs = parse(eq["lhs"], known, strict=True), parse(eq["rhs"], known, strict=True)
