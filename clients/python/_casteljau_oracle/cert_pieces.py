@@ -74,6 +74,8 @@ class Prover:
         return out
 
     def _simplify_term(self, dom, t):
+        if t.lazy and self._zero(dom, t):
+            return []
         # where the term is undefined (a vanishing binomial or integer divisor), the goal is:
         # decided before any condition that would make the term 0 (the evaluator divides too)
         musts = []
@@ -86,7 +88,7 @@ class Prover:
         c = sympy.cancel(t.c)
         pending = bool(musts) or self._divisor(dom, c) is not None
         if pending:
-            return [Term(c, t.conds, t.eqs, musts, t.binoms, t.pows, t.has_b)]
+            return [t.with_(c=c, musts=musts)]
         if c == 0:
             return []
         conds, eqs, binoms, pows = [], [], [], []
@@ -135,7 +137,7 @@ class Prover:
         c = sympy.cancel(c)
         if c == 0:
             return []
-        return [Term(c, conds, eqs, musts, binoms, pows, t.has_b)]
+        return [t.with_(c=c, conds=conds, eqs=eqs, musts=musts, binoms=binoms, pows=pows)]
 
     def _simplify_sum(self, dom, s):
         length = sympy.expand(s.hi - s.lo)
@@ -150,9 +152,14 @@ class Prover:
                 if hit is not None:
                     val = hit
                     moved = x.subs({s.var: val})
-                    out.append(Term(moved.c, moved.conds + (val - s.lo, s.hi - val), moved.eqs, moved.musts, moved.binoms, moved.pows, moved.has_b))
+                    out.append(moved.with_(conds=moved.conds + (val - s.lo, s.hi - val)))
                     continue
             kept.append(x)
+        if kept and not out:
+            s = _tighten(dom, Sum(s.var, s.lo, s.hi, kept, s.name))
+            kept, length = s.body, sympy.expand(s.hi - s.lo)
+            if length.is_Integer and length < 0:
+                return []
         if kept and length.is_Integer:
             if length > MAX_EXPAND:
                 raise Undecided(f"a sum of {length + 1} terms")
@@ -184,11 +191,26 @@ class Prover:
                 return f
         return None
 
+    @staticmethod
+    def _zero(dom, t):
+        """Whether a condition of `t` fails on all of `dom`."""
+        for L in t.conds:
+            if (L.is_Integer and L < 0) or (not L.is_Integer and dom.implies(-L - 1)):
+                return True
+        for L in t.eqs:
+            if (L.is_Integer and L != 0) or (not L.is_Integer and (dom.implies(L - 1) or dom.implies(-L - 1))):
+                return True
+        return False
+
     def _split(self, dom, items):
         """The pieces of `dom` for the first undecided condition, or None."""
         for t in items:
             if not isinstance(t, Term):
                 continue
+            if t.lazy:
+                for L in t.conds:
+                    if not L.is_Integer and not dom.implies(L):
+                        return [dom.with_(L), dom.with_(-L - 1)]
             for L in t.musts:
                 return [dom.with_(L), dom.with_(-L - 1)]
             f = self._divisor(dom, t.c)
@@ -253,6 +275,31 @@ class Prover:
             if rest != 0:
                 msg = f"where {dom.show()} the terms do not cancel: their sum is {c0}·H·({rest})"
                 raise (Refuted if len(classes) == 1 else Undecided)(msg)
+
+
+def _tighten(dom, s):
+    """`s` with its range cut to where every term of its body may be nonzero: a condition
+    `var ≥ a` (or `var ≤ b`) that every term has, with `a ≥ lo` (`b ≤ hi`) on `dom`."""
+    if not s.body or not all(isinstance(t, Term) and not t.lazy for t in s.body):
+        return s
+    # a term that may divide by zero at a dropped value is kept whole (the evaluator divides)
+    if any(t.musts or sympy.fraction(sympy.together(t.c))[1].has(s.var) for t in s.body):
+        return s
+    lo, hi = s.lo, s.hi
+    for sign in (1, -1):
+        common = None
+        for t in s.body:
+            bounds = set()
+            for L in t.conds:
+                if sympy.expand(L).coeff(s.var) == sign:
+                    bounds.add(sympy.expand(s.var - sign * L))
+            common = bounds if common is None else common & bounds
+        for b in sorted(common or (), key=str):
+            if sign == 1 and dom.implies(b - lo):
+                lo = b
+            elif sign == -1 and dom.implies(hi - b):
+                hi = b
+    return Sum(s.var, lo, hi, s.body, s.name)
 
 
 def _collapse(t, var):

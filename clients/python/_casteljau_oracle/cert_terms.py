@@ -50,11 +50,19 @@ def _subs(x, m):
 
 
 class Term:
-    __slots__ = ("c", "conds", "eqs", "musts", "binoms", "pows", "has_b")
+    __slots__ = ("c", "conds", "eqs", "musts", "binoms", "pows", "has_b", "lazy")
 
-    def __init__(self, c=sympy.Integer(1), conds=(), eqs=(), musts=(), binoms=(), pows=(), has_b=False):
+    def __init__(self, c=sympy.Integer(1), conds=(), eqs=(), musts=(), binoms=(), pows=(), has_b=False, lazy=False):
         self.c, self.conds, self.eqs, self.musts = c, tuple(conds), tuple(eqs), tuple(musts)
         self.binoms, self.pows, self.has_b = tuple(binoms), tuple(pows), has_b
+        # lazy: 0 wherever a condition fails, even where `c` has a pole (a term this checker
+        # builds, `G = R·F` of a WZ pair, defined so); else the evaluator's order: a pole first
+        self.lazy = lazy
+
+    def with_(self, **kw):
+        f = {k: getattr(self, k) for k in self.__slots__}
+        f.update(kw)
+        return Term(**f)
 
     def pure(self):
         return not (self.conds or self.eqs or self.musts or self.binoms or self.pows or self.has_b)
@@ -64,11 +72,11 @@ class Term:
             raise Unsupported("a product of two control points: the goal is not affine in them")
         return Term(
             self.c * o.c, self.conds + o.conds, self.eqs + o.eqs, self.musts + o.musts,
-            self.binoms + o.binoms, self.pows + o.pows, self.has_b or o.has_b,
+            self.binoms + o.binoms, self.pows + o.pows, self.has_b or o.has_b, self.lazy or o.lazy,
         )
 
-    def scaled(self, k):
-        return Term(k * self.c, self.conds, self.eqs, self.musts, self.binoms, self.pows, self.has_b)
+    def scaled(self, k, lazy=None):
+        return self.with_(c=k * self.c, lazy=self.lazy if lazy is None else lazy)
 
     def subs(self, m):
         """The term with the symbols of `m` replaced (integer symbols by affine expressions)."""
@@ -82,6 +90,7 @@ class Term:
             [(_subs(a, m), _subs(b, m), s) for a, b, s in self.binoms],
             [(base.xreplace(m), _subs(e, m)) for base, e in self.pows],
             self.has_b,
+            self.lazy,
         )
 
     def __repr__(self):

@@ -52,9 +52,10 @@ class Wz:
             return
         except (Refuted, Undecided) as e:
             why = f"term by term: {e}"
-        if not self.certs:
-            raise Undecided(f"a sum of symbolic length and no WZ certificate ({why})")
-        self._against(pv, dom, terms, sums)
+        try:
+            self._against(pv, dom, terms, sums)
+        except Undecided as e:
+            raise Undecided(f"{e}; {why}") from None
 
     # --- sums of one length ----------------------------------------------------------
 
@@ -120,7 +121,7 @@ class Wz:
         up = {n: n + 1}
         g = rho * R
         w_items = [t.subs(up) for t in F] + [t.scaled(-rho) for t in F]
-        w_items += [t.scaled(-g).subs({k: k + 1}) for t in F] + [t.scaled(g) for t in F]
+        w_items += [t.scaled(-g, lazy=True).subs({k: k + 1}) for t in F] + [t.scaled(g, lazy=True) for t in F]
         try:
             pv.prove(dom.with_(k - s.lo, s.hi - 1 - k, add_syms=[k]), w_items)
         except Refuted as e:
@@ -128,7 +129,7 @@ class Wz:
         hi, lo = s.hi, s.lo
         s_items = [t.subs({n: n + 1, k: hi}) for t in F] + [t.subs({n: n + 1, k: hi + 1}) for t in F]
         s_items += [t.scaled(-rho).subs({k: hi}) for t in F]
-        s_items += [t.scaled(g).subs({k: hi}) for t in F] + [t.scaled(-g).subs({k: lo}) for t in F]
+        s_items += [t.scaled(g, lazy=True).subs({k: hi}) for t in F] + [t.scaled(-g, lazy=True).subs({k: lo}) for t in F]
         s_items += [t.scaled(-1).subs(up) for t in r] + [t.scaled(rho) for t in r]
         try:
             pv.prove(dom, s_items)
@@ -153,25 +154,54 @@ class Wz:
                     raise Undecided(f"r(n+1)/r(n) = {rho} may divide by zero")
         return rho
 
-    def _try(self, pv, dom, s, body_fn):
-        """Each certificate and induction symbol in turn; the first that works."""
+    def _try(self, pv, dom, s, body_fn, r=None):
+        """Each certificate of the file, then one proposed by Gosper's algorithm, for each
+        induction symbol in turn; the first whose obligations hold. `body_fn(R, n, n0)`."""
         first = None
-        for text, tree in self.certs:
-            try:
-                R = self._cert(text, tree, dom, s)
-            except Undecided as e:
-                first = first or e
-                continue
-            for n, n0 in self._inductions(dom, s):
+        for n, n0 in self._inductions(dom, s):
+            def cands():
+                for text, tree in self.certs:
+                    yield text, lambda: self._cert(text, tree, dom, s)
+                yield "found by Gosper's algorithm", lambda: self._gosper(dom, s, n, r)
+
+            for text, make in cands():
                 try:
+                    R = make()
+                    if R is None:
+                        continue
                     out = body_fn(R, n, n0)
+                    text = text if self.certs and "Gosper" not in text else f"R = {R}, {text}"
                     self.used.append(text)
                     return out
                 except (Refuted, Undecided) as e:
                     first = first or e
         if first is None:
-            raise Undecided(f"no induction symbol for the sum over {s.name} ({s.lo}..{s.hi})")
+            raise Undecided(f"no induction symbol or certificate for the sum over {s.name} ({s.lo}..{s.hi})")
         raise first
+
+    def _gosper(self, dom, s, n, r):
+        """A certificate `R` proposed for sum `s` by Gosper's algorithm on
+        `h(k) = F(n+1, k) − ρ F(n, k)` (a search: what it proposes is checked by (W), (S), (B)),
+        or None."""
+        if len(s.body) != 1 or not isinstance(s.body[0], Term):
+            return None
+        try:
+            rho = self._rho(dom, r or [], n)
+            t, k = s.body[0], s.var
+            up = ratio(_signature(t.subs({n: n + 1})), _signature(t))
+            step = ratio(_signature(t.subs({k: k + 1})), _signature(t))
+            if up is None or step is None:
+                return None
+            q = sympy.cancel(t.c.xreplace({n: n + 1}) / t.c * up - rho)
+            if q == 0:
+                return None
+            hk = sympy.cancel(q.xreplace({k: k + 1}) / q * t.c.xreplace({k: k + 1}) / t.c * step)
+            g = _gosper_term(hk, k)
+            if g is None:
+                return None
+            return sympy.cancel(g * q / rho)
+        except (Undecided, ValueError, ZeroDivisionError, sympy.PolynomialError):
+            return None
 
     def _against(self, pv, dom, terms, sums):
         s0 = sums[0]
@@ -189,7 +219,7 @@ class Wz:
             base = dom.substitute(n, n0)
             pv.prove(base, [x.subs({n: n0}) for x in [s] + terms])
 
-        self._try(pv, dom, s, attempt)
+        self._try(pv, dom, s, attempt, r)
 
     def _reduce(self, pv, dom, s):
         """`s` with each innermost sum of its body replaced by its value at the base."""
@@ -281,3 +311,37 @@ def prove_goal(doc):
     if wz.used:
         what += f", {len(wz.used)} WZ inductions ({', '.join(sorted(set(wz.used)))})"
     return what
+
+
+def _gosper_term(ratio_k, k):
+    """Gosper's algorithm (as SymPy's `gosper_term`, from the term ratio `h(k+1)/h(k)`): a
+    rational `y(k)` with `y(k+1)h(k+1) − y(k)h(k) = h(k)`, or None."""
+    from sympy.concrete.gosper import gosper_normal
+
+    p, q = sympy.fraction(sympy.cancel(ratio_k))
+    A, B, C = gosper_normal(p, q, k)
+    B = B.shift(-1)
+    N, M, K = sympy.S(A.degree()), sympy.S(B.degree()), sympy.S(C.degree())
+    if N != M or A.LC() != B.LC():
+        D = {K - max(N, M)}
+    elif not N:
+        D = {K - N + 1, sympy.S.Zero}
+    else:
+        D = {K - N + 1, (B.nth(N - 1) - A.nth(N - 1)) / A.LC()}
+    D = [d for d in D if d.is_Integer and d >= 0]
+    if not D:
+        return None
+    d = max(D)
+    if d > 8:
+        return None
+    coeffs = sympy.symbols(f"c:{d + 1}", cls=sympy.Dummy)
+    x = sympy.Poly(coeffs, k, domain=A.get_domain().inject(*coeffs))
+    H = A * x.shift(1) - B * x - C
+    sol = sympy.solve(H.coeffs(), coeffs, dict=True)
+    if not sol:
+        return None
+    xe = x.as_expr().subs(sol[0])
+    xe = xe.subs({c: 0 for c in coeffs})
+    if xe == 0:
+        return None
+    return B.as_expr() * xe / C.as_expr()
