@@ -160,9 +160,12 @@ class Wz:
         first = None
         for n, n0 in self._inductions(dom, s):
             def cands():
+                # the file's certificates when it gives any (a wrong one is refused, not
+                # replaced); a file without proposes its own by Gosper's algorithm
                 for text, tree in self.certs:
                     yield text, lambda: self._cert(text, tree, dom, s)
-                yield "found by Gosper's algorithm", lambda: self._gosper(dom, s, n, r)
+                if not self.certs:
+                    yield "found by Gosper's algorithm", lambda: self._gosper(dom, s, n, r)
 
             for text, make in cands():
                 try:
@@ -170,11 +173,13 @@ class Wz:
                     if R is None:
                         continue
                     out = body_fn(R, n, n0)
-                    text = text if self.certs and "Gosper" not in text else f"R = {R}, {text}"
+                    if not self.certs:
+                        text = f"R = {R.xreplace({s.var: sympy.Symbol(s.name)})}, {text}"
                     self.used.append(text)
                     return out
                 except (Refuted, Undecided) as e:
-                    first = first or e
+                    if first is None or (isinstance(e, Refuted) and not isinstance(first, Refuted)):
+                        first = e
         if first is None:
             raise Undecided(f"no induction symbol or certificate for the sum over {s.name} ({s.lo}..{s.hi})")
         raise first
