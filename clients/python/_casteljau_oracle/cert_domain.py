@@ -5,7 +5,6 @@ integer tightening of each derived inequality (`Σ a·x + c ≥ 0` with `g = gcd
 integer point, so `implies` is sound; it may miss an implication that holds only at integer
 points (then the proof splits more, or stops undecided)."""
 
-from fractions import Fraction
 from math import gcd
 
 import sympy

@@ -24,9 +24,8 @@
 
 import sympy
 
-from .cert_domain import Domain, TooLarge
-from .cert_eval import Unsupported
-from .cert_terms import Sum, Term, fresh
+from .cert_domain import TooLarge
+from .cert_terms import Sum, Term
 
 __all__ = ["Refuted", "Undecided", "Prover"]
 
