@@ -97,6 +97,10 @@ def _goal_holds(doc):
 
     if doc.get("method") == "computation":
         return _fact_holds(doc)
+    if "pieces" in doc:  # a for-every goal: exact values at its first seven values
+        from test_certcheck_pieces import _false_somewhere
+
+        return not _false_somewhere(doc)
 
     names = [s["name"] for s in doc["goal"]["symbols"]]
     for eq in doc["goal"]["equalities"]:
