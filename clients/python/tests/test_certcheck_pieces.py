@@ -24,7 +24,7 @@ pytest.importorskip("sympy")
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.path.join(HERE, "..", "..", "..", "tests", "certificates", "texts")
 #: Mutants checked per file (a deterministic sample), and all those of a certificate `R`.
-PER_FILE = 7
+PER_FILE = 5
 
 
 def _docs():
@@ -107,4 +107,4 @@ def test_tampered_pieces_and_wz_certificates():
                 assert o.status == REFUSED, (doc["id"], kind, where, o.line())
     total = sum(counts.values())
     print(f"\n{total} mutants of pieces/wz files: " + ", ".join(f"{k} ({t}) {s}: {n}" for (k, t, s), n in sorted(counts.items())))
-    assert total >= 200, total
+    assert total >= 150, total
