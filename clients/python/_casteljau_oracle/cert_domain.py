@@ -104,7 +104,8 @@ class Domain:
         """+1 if `expr ≥ 1` everywhere, -1 if `≤ −1`, 0 if `= 0`, None if undecided."""
         expr = sympy.expand(expr)
         if expr.is_Integer:
-            return (expr > 0) - (expr < 0)
+            v = int(expr)
+            return (v > 0) - (v < 0)
         if self.implies(expr - 1):
             return 1
         if self.implies(-expr - 1):

@@ -84,10 +84,17 @@ class Prover:
             if L.is_Integer or dom.implies(-L - 1):
                 raise Refuted(f"division by a vanishing binomial where {dom.show()}")
             musts.append(L)
+        nonzeros = []
+        for L in t.nonzeros:
+            sign = dom.sign(L)
+            if sign == 0:
+                raise Refuted(f"division by zero (a divisor of the goal vanishes) where {dom.show()}")
+            if sign is None:
+                nonzeros.append(L)
         c = sympy.cancel(t.c)
-        pending = bool(musts) or self._divisor(dom, c) is not None
+        pending = bool(musts) or bool(nonzeros) or self._divisor(dom, c) is not None
         if pending:
-            return [t.with_(c=c, musts=musts)]
+            return [t.with_(c=c, musts=musts, nonzeros=nonzeros)]
         if c == 0:
             return []
         conds, eqs, binoms, pows = [], [], [], []
@@ -136,7 +143,7 @@ class Prover:
         c = sympy.cancel(c)
         if c == 0:
             return []
-        return [t.with_(c=c, conds=conds, eqs=eqs, musts=musts, binoms=binoms, pows=pows)]
+        return [t.with_(c=c, conds=conds, eqs=eqs, musts=musts, binoms=binoms, pows=pows, nonzeros=())]
 
     def _simplify_sum(self, dom, s):
         length = sympy.expand(s.hi - s.lo)
@@ -146,7 +153,9 @@ class Prover:
         body = self.simplify(inner, s.body)
         kept, out = [], []
         for x in body:
-            if isinstance(x, Term):
+            # a term that may divide by zero at another value of var is not collapsed (the
+            # evaluator divides there even where the control point is 0)
+            if isinstance(x, Term) and not x.musts and not x.nonzeros and not sympy.fraction(sympy.together(x.c))[1].has(s.var):
                 hit = _collapse(x, s.var)
                 if hit is not None:
                     val = hit
@@ -212,6 +221,8 @@ class Prover:
                         return [dom.with_(L), dom.with_(-L - 1)]
             for L in t.musts:
                 return [dom.with_(L), dom.with_(-L - 1)]
+            for L in t.nonzeros:
+                return [dom.with_(L - 1), dom.with_(L, -L), dom.with_(-L - 1)]
             f = self._divisor(dom, t.c)
             if f is not None:
                 return [dom.with_(f - 1), dom.with_(f, -f), dom.with_(-f - 1)]
@@ -282,7 +293,7 @@ def _tighten(dom, s):
     if not s.body or not all(isinstance(t, Term) and not t.lazy for t in s.body):
         return s
     # a term that may divide by zero at a dropped value is kept whole (the evaluator divides)
-    if any(t.musts or sympy.fraction(sympy.together(t.c))[1].has(s.var) for t in s.body):
+    if any(t.musts or t.nonzeros or sympy.fraction(sympy.together(t.c))[1].has(s.var) for t in s.body):
         return s
     lo, hi = s.lo, s.hi
     for sign in (1, -1):

@@ -50,10 +50,13 @@ def _subs(x, m):
 
 
 class Term:
-    __slots__ = ("c", "conds", "eqs", "musts", "binoms", "pows", "has_b", "lazy")
+    __slots__ = ("c", "conds", "eqs", "musts", "binoms", "pows", "has_b", "lazy", "nonzeros")
 
-    def __init__(self, c=sympy.Integer(1), conds=(), eqs=(), musts=(), binoms=(), pows=(), has_b=False, lazy=False):
+    def __init__(self, c=sympy.Integer(1), conds=(), eqs=(), musts=(), binoms=(), pows=(), has_b=False, lazy=False, nonzeros=()):
         self.c, self.conds, self.eqs, self.musts = c, tuple(conds), tuple(eqs), tuple(musts)
+        # nonzeros: integer divisors of the goal (`L ≠ 0`, else undefined), kept apart from
+        # `c` where SymPy would cancel them (`(n - 10)/(n - 10)` is undefined at n = 10)
+        self.nonzeros = tuple(nonzeros)
         self.binoms, self.pows, self.has_b = tuple(binoms), tuple(pows), has_b
         # lazy: 0 wherever a condition fails, even where `c` has a pole (a term this checker
         # builds, `G = R·F` of a WZ pair, defined so); else the evaluator's order: a pole first
@@ -73,6 +76,7 @@ class Term:
         return Term(
             self.c * o.c, self.conds + o.conds, self.eqs + o.eqs, self.musts + o.musts,
             self.binoms + o.binoms, self.pows + o.pows, self.has_b or o.has_b, self.lazy or o.lazy,
+            self.nonzeros + o.nonzeros,
         )
 
     def scaled(self, k, lazy=None):
@@ -91,6 +95,7 @@ class Term:
             [(base.xreplace(m), _subs(e, m)) for base, e in self.pows],
             self.has_b,
             self.lazy,
+            [_subs(x, m) for x in self.nonzeros],
         )
 
     def __repr__(self):
@@ -216,7 +221,15 @@ class Converter:
             raise Unsupported("a control point in a divisor")
         if t.c == 0:
             raise Unsupported("division by zero")
-        return Term(1 / t.c, (), (), t.conds + t.musts, [(a, b, -s) for a, b, s in t.binoms], [(b, -e) for b, e in t.pows])
+        ints = set(self.int_symbols())
+        nonzeros = list(t.nonzeros)
+        for f, _ in sympy.factor_list(sympy.together(t.c))[1]:
+            if f.free_symbols & ints:
+                if f.free_symbols - ints:
+                    raise Unsupported(f"a divisor {f} that mixes integer and real symbols")
+                nonzeros.append(linear(f, list(ints)))
+        return Term(1 / t.c, (), (), t.conds + t.musts, [(a, b, -s) for a, b, s in t.binoms], [(b, -e) for b, e in t.pows],
+                    nonzeros=nonzeros)
 
     def power(self, base, exp):
         e = self.pure(exp, "an exponent")

@@ -88,6 +88,14 @@ def test_a_goal_false_beyond_its_first_values_is_refused():
     assert o.status == REFUSED, o.line()
 
 
+def test_a_goal_undefined_beyond_its_first_values_is_refused():
+    # SymPy would cancel (n - 10)/(n - 10) to 1: the goal divides by zero at n = 10
+    d = next(d for d in _docs() if d["id"] == "000-basis-recursion")
+    d["goal"]["equalities"][0]["rhs"] += " + (n - 10)/(n - 10) - 1"
+    o = check_certificate(d)
+    assert o.status == REFUSED and "division by zero" in o.detail and "n = 10" in o.detail, o.line()
+
+
 def test_tampered_pieces_and_wz_certificates():
     counts = collections.Counter()
     for doc in _docs():
