@@ -119,7 +119,8 @@ def check_certificate(doc, name="?", symbolic=False):
             return out(NOT_RECHECKED, f"no checkable data in the file: {doc['reason']}")
         if "pieces" in doc:
             try:
-                return out(NOT_RECHECKED, check_pieces(doc))
+                proved, detail = check_pieces(doc)
+                return out(RECHECKED if proved else NOT_RECHECKED, detail)
             except PiecesRefused as e:
                 return out(REFUSED, str(e))
         if verdict in ("proved", "proved_in_range") and method == "computation":

@@ -1,33 +1,26 @@
 """Certificates of for-every proofs with `pieces` data (methods `pieces` and `wz`), written
-from the section "Method pieces and wz: goals for every integer value" of
+from the section "Methods `pieces` and `wz`: goals for every integer value" of
 docs/certificates.md.
 
 Such a goal says `lhs = rhs` for every integer point of its `for_all` ranges (each open range
 unbounded) and every real value of its real symbols, for every values of its symbolic control
-polygon or net. The program's proof splits the domain into pieces and proves a rational
-identity on each; this checker does not implement that argument, so it never reports such a
-file as re-checked. What it does check, exactly (`Fraction`): the goal is well formed (every
-integer symbol has one range, the equalities form a chain, the names are the goal's), and
-the goal holds at every integer point of the first `OPEN_VALUES` values of each open range
-(closed ranges in full), at `REAL_POINTS` values of each real symbol and generic rational
-control points. A goal edited to be false at one of those points is refused; otherwise the file
-is "not re-checked" with what was evaluated.
-
-With SymPy (the optional extra), a `wz` goal of one equality `Σ_{k=a}^{b(n)} F(n, k) = rhs(n)`
-(one sum against one term, either side) with one certificate `R` is also checked for its WZ
-equation: with `F̃ = F / rhs` and `G = R·F̃`, `(F̃(n+1, k) − F̃(n, k) − G(n, k+1) + G(n, k)) / F̃(n, k)`
-must simplify (`combsimp`, `cancel`) to 0 as a rational function; a certificate that does not
-is refused. The boundary of the sum and the base case are not checked here.
+polygon or net. This checker first checks the goal well formed (every integer symbol has one
+range, the equalities form a chain, the names are the goal's) and evaluates it exactly
+(`Fraction`) at every integer point of the first `OPEN_VALUES` values of each open range (closed
+ranges in full), at `REAL_POINTS` values of each real symbol and generic rational control
+points: a goal false there is refused. Then, with SymPy, it proves the goal for every value by
+its own argument (`cert_pieces`, `cert_wz`): re-checked when every obligation holds, refused
+when a necessary one fails (named), otherwise "not re-checked" with the reason. Without SymPy
+the file is "not re-checked (needs SymPy)".
 """
 
 import itertools
 from fractions import Fraction
 
-from .cert_eval import evaluate
+from .cert_eval import Unsupported, evaluate
 from .cert_expr import free_names, parse
-from .cert_eval import Unsupported
 
-__all__ = ["check_pieces", "check_wz", "OPEN_VALUES", "REAL_POINTS"]
+__all__ = ["check_pieces", "OPEN_VALUES", "REAL_POINTS"]
 
 #: The values of each open range evaluated: its least value and the next ones.
 OPEN_VALUES = 4
@@ -129,8 +122,9 @@ def _show(env):
 
 
 def check_pieces(doc):
-    """The first values of a `pieces` goal evaluated; returns the detail of a file that is not
-    re-checked, or raises `PiecesRefused` naming the first point where the sides differ."""
+    """A `pieces` certificate checked: returns `(proved, detail)` (`proved` only when the whole
+    argument of `cert_pieces` went through), or raises `PiecesRefused` naming the first point
+    where the sides differ or the first obligation that fails."""
     reals, ranges, sides, polygon, net = _read(doc)
     count = 0
     for ints in _cases(ranges):
@@ -143,66 +137,19 @@ def check_pieces(doc):
             for i, (lhs, rhs) in enumerate(sides):
                 lv, rv = evaluate(lhs, env, objects), evaluate(rhs, env, objects)
                 _need(lv == rv, f"goal.equalities[{i}]: at {_show(env)} the sides are {lv} and {rv}")
-    detail = (
-        f"for-every proof on pieces: not implemented here; the goal holds at its first values "
-        f"({count} evaluations, the first {OPEN_VALUES} values of each open range)"
-    )
-    wz = check_wz(doc)
-    return detail if wz is None else f"{detail}; {wz}"
-
-
-def _has_sum(e):
-    return isinstance(e, tuple) and (e[0] == "sum" or any(_has_sum(x) for x in e[1:] if isinstance(x, (tuple, list))))
-
-
-def check_wz(doc):
-    """The WZ equation of a one-sum `wz` goal with one `R`, by SymPy (see the module
-    documentation): `None` when the goal has another shape or SymPy is missing, else what was
-    checked; raises `PiecesRefused` when the equation fails."""
-    reals, ranges, sides, polygon, net = _read(doc)
-    certs = doc["pieces"]["certificates"]
-    if doc.get("method") != "wz" or len(certs) != 1 or len(sides) != 1 or polygon or net:
-        return None
-    lhs, rhs = sides[0]
-    if lhs[0] == "sum" and not _has_sum(rhs):
-        s, other = lhs, rhs
-    elif rhs[0] == "sum" and not _has_sum(lhs):
-        s, other = rhs, lhs
-    else:
-        return None
-    if other[0] in ("add", "sub"):
-        return None
-    _, k, _lo, hi, body = s
-    ints = [r["name"] for r in ranges]
-    in_bound = [v for v in ints if v in free_names(hi)]
-    if len(in_bound) != 1:
-        return None
+    evaluated = f"the goal holds at its first values ({count} evaluations, the first {OPEN_VALUES} values of each open range)"
     try:
-        import sympy
-
-        from .cert_sympy import to_sympy
+        import sympy  # noqa: F401
     except ImportError:
-        return None
-    n = in_bound[0]
-    syms = {v: None for v in ints + [k]}
-    try:
-        f = to_sympy(body, syms, reals) / to_sympy(other, syms, reals)
-        r = to_sympy(parse(certs[0], strict=True), syms, reals)
-    except Unsupported:
-        return None
-    ns, ks = sympy.Symbol(n, integer=True), sympy.Symbol(k, integer=True)
-    def ratio(x):  # F(shifted) / F as a rational function: powers of one base combined first
-        return sympy.combsimp(sympy.powsimp(sympy.powdenest(x / f, force=True), force=True))
+        return False, f"for-every proof: not re-checked (needs SymPy); {evaluated}"
+    from .cert_pieces import Refuted, Undecided
+    from .cert_wz import prove_goal
 
-    # F(n+1, k)/F − 1 − R(n, k+1)·F(n, k+1)/F + R(n, k)
-    eq = ratio(f.subs(ns, ns + 1)) - 1 - r.subs(ks, ks + 1) * ratio(f.subs(ks, ks + 1)) + r
-    rest = sympy.cancel(sympy.together(eq))
-    if rest != 0 and not rest.is_rational_function(*rest.free_symbols):
-        # SymPy left powers or factorials: its simplification, not the certificate, stopped
-        return "the WZ equation not decided by SymPy (its simplification left powers or factorials)"
-    _need(
-        rest == 0,
-        f"pieces.certificates[0]: with R = {certs[0]}, F(n+1, k) - F(n, k) - G(n, k+1) + G(n, k) "
-        f"is {rest} times F(n, k), not 0 ({n} = n, {k} = k, G = R·F)",
-    )
-    return f"the WZ equation in {n}, {k} with R holds as a rational identity (SymPy)"
+    try:
+        return True, prove_goal(doc)
+    except Refuted as e:
+        raise PiecesRefused(str(e)) from None
+    except (Undecided, Unsupported) as e:
+        return False, f"for-every proof not completed here: {e}; {evaluated}"
+    except Exception as e:  # noqa: BLE001 — SymPy failing on a term: the proof is not done, never a verdict
+        return False, f"for-every proof not completed here: {type(e).__name__}: {e}; {evaluated}"

@@ -89,6 +89,7 @@ def mutants(doc):
                 out.append(("polygon", where, _set(doc, path, val - 1)))
         elif len(path) >= 2 and path[-2] == "index" and isinstance(val, int):
             out.append(("control point", where, _set(doc, path, val + 1)))
+    out.extend(_pieces_edits(doc))
     out.extend(_expansion_edits(doc))
     out.extend(_computation_edits(doc))
     # a point dropped (its grid rows kept), and a point repeated
@@ -220,3 +221,25 @@ def _edit(doc, k, extra, rederive):
         return d
 
     return make
+
+
+def _pieces_edits(doc):
+    """A for-every file's data: every number of each WZ certificate `R` bumped, each sign of
+    it flipped, `R` negated, and each range end of the goal's `for_all` moved by one."""
+    out = []
+    for k, r in enumerate((doc.get("pieces") or {}).get("certificates") or []):
+        at = ("pieces", "certificates", k)
+        for m in _NUM_IN_EXPR.finditer(r):
+            out.append(("certificate", f"R{k}@{m.start()}", _set(doc, at, r[: m.start()] + _bump(m.group()) + r[m.end():])))
+        for m in _SIGN_IN_EXPR.finditer(r):
+            flip = "-" if m.group() == "+" else "+"
+            out.append(("certificate", f"R{k} sign@{m.start()}", _set(doc, at, r[: m.start()] + flip + r[m.end():])))
+        out.append(("certificate", f"R{k} negated", _set(doc, at, f"-({r})")))
+    if "pieces" in doc:
+        for k, r in enumerate(doc["goal"].get("for_all") or []):
+            for key in ("from", "to"):
+                if isinstance(r.get(key), str):
+                    at = ("goal", "for_all", k, key)
+                    out.append(("range end", f"for_all[{k}].{key} + 1", _set(doc, at, f"{r[key]} + 1")))
+                    out.append(("range end", f"for_all[{k}].{key} - 1", _set(doc, at, f"{r[key]} - 1")))
+    return out

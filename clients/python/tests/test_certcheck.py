@@ -42,15 +42,21 @@ def test_every_checkable_certificate_is_re_checked_and_none_refused():
     outcomes = check_path(DATA)
     refused = [o.line() for o in outcomes if o.status == REFUSED]
     assert not refused, "\n".join(refused)
+    try:
+        import sympy  # noqa: F401  (the for-every proofs need it)
+
+        symbolic = True
+    except ImportError:
+        symbolic = False
     for o, doc in zip(outcomes, _docs()):
-        if "pieces" in doc:  # for-every proofs: evaluated at their first values only
-            assert o.status == NOT_RECHECKED and "not implemented here" in o.detail, o.line()
+        if doc["check"] == "kernel" and "pieces" in doc and not symbolic:
+            assert o.status == NOT_RECHECKED and "needs SymPy" in o.detail, o.line()
         elif doc["check"] == "kernel":
             assert o.status == RECHECKED, o.line()
         else:
             assert o.status == NOT_RECHECKED and doc["reason"] in o.detail
     # what the program's files carry data for (docs/certificates.md, version 1), all re-checked
-    kernel = [d["id"] for d in _docs() if d["check"] == "kernel" and "pieces" not in d]
+    kernel = [d["id"] for d in _docs() if d["check"] == "kernel" and (symbolic or "pieces" not in d)]
     assert sum(o.status == RECHECKED for o in outcomes) == len(kernel) >= 1
 
 
@@ -91,6 +97,10 @@ def _goal_holds(doc):
 
     if doc.get("method") == "computation":
         return _fact_holds(doc)
+    if "pieces" in doc:  # a for-every goal: exact values at its first seven values
+        from test_certcheck_pieces import _false_somewhere
+
+        return not _false_somewhere(doc)
 
     names = [s["name"] for s in doc["goal"]["symbols"]]
     for eq in doc["goal"]["equalities"]:
