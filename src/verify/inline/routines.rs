@@ -264,3 +264,85 @@ pub(super) fn net(m: NetMethod, points: &[Expr], (rows, cols): (usize, usize), a
         }))
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn points(n: usize) -> Vec<Expr> {
+        (0..=n)
+            .map(|j| Expr::Index("b".into(), vec![Expr::int(j as i64)]))
+            .collect()
+    }
+
+    fn var(v: &str) -> Expr {
+        Expr::Var(v.into())
+    }
+
+    #[test]
+    fn the_interpolation_inverts_the_bernstein_matrix() {
+        for d in 0..6 {
+            let inv = to_bernstein(d).unwrap();
+            // The values of B_j^d at the nodes, mapped back, are the unit coefficients.
+            for j in 0..=d {
+                let values: Vec<BigRational> = nodes(d)
+                    .iter()
+                    .map(|x| {
+                        BigRational::from_integer(crate::bernstein::binomial_signed(d as i64, j as i64))
+                            * pow(x, j)
+                            * pow(&(BigRational::one() - x), d - j)
+                    })
+                    .collect();
+                let c = coefficients(&values, &[d], std::slice::from_ref(&inv));
+                assert_eq!(c, unit(d + 1, Some(j)), "d = {d}, j = {j}");
+            }
+        }
+    }
+
+    #[test]
+    fn bsum_is_written_as_the_bernstein_sum_of_its_points() {
+        let e = polygon(PolygonMethod::Bsum, &points(2), &[var("b"), var("t")], None).unwrap();
+        assert_eq!(
+            e.to_string(),
+            "1*b[0]*B(0, 2, t) + 1*b[1]*B(1, 2, t) + 1*b[2]*B(2, 2, t)"
+        );
+    }
+
+    #[test]
+    fn the_split_points_are_de_casteljau_points_of_t0() {
+        // leftp(b, t0, 1) = b_0^1(t0) = (1 - t0) b[0] + t0 b[1], of degree n = 2 in t0.
+        let e = polygon(
+            PolygonMethod::Leftp,
+            &points(2),
+            &[var("b"), var("t0"), Expr::int(1)],
+            Some(1),
+        )
+        .unwrap();
+        assert_eq!(
+            e.to_string(),
+            "1*b[0]*B(0, 2, t0) + (1/2*b[0] + 1/2*b[1])*B(1, 2, t0) + 1*b[1]*B(2, 2, t0)"
+        );
+        // A point index outside the part is 0, as the library's `pick` reads it.
+        let z = polygon(
+            PolygonMethod::Rightp,
+            &points(1),
+            &[var("b"), var("t0"), Expr::int(5)],
+            Some(5),
+        )
+        .unwrap();
+        assert_eq!(z.to_string(), "0");
+    }
+
+    #[test]
+    fn an_iso_curve_has_the_degrees_of_its_parameters() {
+        // A 1×3 net (m = 0, n = 2): isov(b, v0, u) has degree n = 2 in v0 and m = 0 in u.
+        let pts: Vec<Expr> = (0..3)
+            .map(|j| Expr::Index("b".into(), vec![Expr::int(0), Expr::int(j)]))
+            .collect();
+        let e = net(NetMethod::Isov, &pts, (1, 3), &[var("b"), var("v0"), var("u")]).unwrap();
+        assert_eq!(
+            e.to_string(),
+            "1*b[0, 0]*B(0, 2, v0)*B(0, 0, u) + 1*b[0, 1]*B(1, 2, v0)*B(0, 0, u) + 1*b[0, 2]*B(2, 2, v0)*B(0, 0, u)"
+        );
+    }
+}
