@@ -25,7 +25,7 @@ enum Result1 {
     Point(BigRational),
 }
 
-fn coord(p: &Point<BigRational>) -> BigRational {
+pub(super) fn coord(p: &Point<BigRational>) -> BigRational {
     p.coords()[0].clone()
 }
 
@@ -83,7 +83,7 @@ fn write(points: &[Expr], results: &[Result1], t: Option<&Expr>) -> Option<Expr>
     }
 }
 
-fn unit(len: usize, one: Option<usize>) -> Vec<BigRational> {
+pub(super) fn unit(len: usize, one: Option<usize>) -> Vec<BigRational> {
     (0..len)
         .map(|j| {
             if Some(j) == one {
@@ -95,7 +95,7 @@ fn unit(len: usize, one: Option<usize>) -> Vec<BigRational> {
         .collect()
 }
 
-fn pick(c: &BezierCurve<BigRational>, i: i64) -> BigRational {
+pub(super) fn pick(c: &BezierCurve<BigRational>, i: i64) -> BigRational {
     usize::try_from(i)
         .ok()
         .and_then(|i| c.points().get(i))

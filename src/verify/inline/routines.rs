@@ -12,7 +12,7 @@
 //! at d + 1 points); the certificate then states the identity about that polynomial.
 
 use super::super::methods::{NetMethod, PolygonMethod};
-use super::library::affine;
+use super::library::{affine, coord as first, pick, unit};
 use crate::curve::BezierCurve;
 use crate::point::Point;
 use crate::surface::BezierSurface;
@@ -48,38 +48,22 @@ fn to_bernstein(d: usize) -> Option<Vec<Vec<BigRational>>> {
                 .collect()
         })
         .collect();
-    let mut inv: Vec<Vec<BigRational>> = (0..size)
-        .map(|i| {
-            (0..size)
-                .map(|j| {
-                    if i == j {
-                        BigRational::one()
-                    } else {
-                        BigRational::zero()
-                    }
-                })
-                .collect()
-        })
-        .collect();
+    let mut inv: Vec<Vec<BigRational>> = (0..size).map(|i| unit(size, Some(i))).collect();
     // Gauss–Jordan elimination, exact.
     for col in 0..size {
         let pivot = (col..size).find(|&r| !m[r][col].is_zero())?;
         m.swap(col, pivot);
         inv.swap(col, pivot);
         let p = m[col][col].clone();
-        for j in 0..size {
-            m[col][j] = &m[col][j] / &p;
-            inv[col][j] = &inv[col][j] / &p;
-        }
-        for r in 0..size {
-            if r != col && !m[r][col].is_zero() {
-                let f = m[r][col].clone();
-                for j in 0..size {
-                    let (a, b) = (&m[col][j] * &f, &inv[col][j] * &f);
-                    m[r][j] = &m[r][j] - a;
-                    inv[r][j] = &inv[r][j] - b;
-                }
+        m[col].iter_mut().chain(inv[col].iter_mut()).for_each(|x| *x = &*x / &p);
+        let (prow, pinv) = (m[col].clone(), inv[col].clone());
+        for (r, (row, irow)) in m.iter_mut().zip(inv.iter_mut()).enumerate() {
+            let f = row[col].clone();
+            if r == col || f.is_zero() {
+                continue;
             }
+            row.iter_mut().zip(&prow).for_each(|(x, a)| *x = &*x - a * &f);
+            irow.iter_mut().zip(&pinv).for_each(|(x, a)| *x = &*x - a * &f);
         }
     }
     Some(inv)
@@ -109,19 +93,6 @@ fn coefficients(values: &[BigRational], degrees: &[usize], inverses: &[Vec<Vec<B
         c = next;
     }
     c
-}
-
-/// `len` zeros, with a 1 at `one`.
-fn unit(len: usize, one: Option<usize>) -> Vec<BigRational> {
-    (0..len)
-        .map(|j| {
-            if Some(j) == one {
-                BigRational::one()
-            } else {
-                BigRational::zero()
-            }
-        })
-        .collect()
 }
 
 /// The call written from `value(basis polygon, parameter values)`: `points` the control
@@ -179,17 +150,6 @@ fn interpolated(
     Some(terms.into_iter().reduce(Expr::add).unwrap_or_else(|| Expr::int(0)))
 }
 
-fn first(p: &Point<BigRational>) -> BigRational {
-    p.coords()[0].clone()
-}
-
-fn pick(c: &BezierCurve<BigRational>, i: i64) -> BigRational {
-    usize::try_from(i)
-        .ok()
-        .and_then(|i| c.points().get(i))
-        .map_or_else(BigRational::zero, first)
-}
-
 fn curve(values: Vec<BigRational>) -> Option<BezierCurve<BigRational>> {
     BezierCurve::new(
         values
@@ -218,7 +178,8 @@ pub(super) fn polygon(m: PolygonMethod, points: &[Expr], args: &[Expr], r: Optio
             let axes = [(n, args.get(1)?.clone()), (deg, args.get(2)?.clone())];
             interpolated(points, &axes, |b, at| {
                 let (l, r) = on(b)?.split_at(&at[0]);
-                Some(first(&if left { l } else { r }.eval(&at[1])))
+                let part = if left { l } else { r };
+                Some(first(&part.eval(&at[1])))
             })
         }
         PolygonMethod::Leftp | PolygonMethod::Rightp => {
