@@ -2,7 +2,7 @@
 //! derivatives), so that a certificate's goal needs no claim object (`docs/certificates.md`).
 //! Only the printed goal changes; proofs evaluate the objects as before.
 
-use super::kernel::expr::{split_partial, Expr};
+use super::kernel::expr::{eval_int, split_partial, Expr};
 use super::objects::{Exact, NumEnv};
 use crate::any_curve::AnyCurve;
 use crate::point::Point;
@@ -11,6 +11,7 @@ use std::collections::BTreeMap;
 use std::str::FromStr;
 
 mod library;
+mod routines;
 
 /// `e` with every call of a concrete curve or surface of `env`, and of the symbolic polygon
 /// or net as a curve or surface, written out; `None` when a call cannot be (a rational
@@ -25,7 +26,10 @@ pub fn inline<T: Exact>(e: &Expr, env: &NumEnv<T>, ints: &BTreeMap<String, i64>)
         Expr::Neg(a) => Expr::Neg(Box::new(go(a)?)),
         Expr::Fact(a) => Expr::Fact(Box::new(go(a)?)),
         Expr::Bin(op, a, b) => Expr::Bin(*op, Box::new(go(a)?), Box::new(go(b)?)),
-        Expr::Index(name, args) => Expr::Index(name.clone(), all(args)?),
+        Expr::Index(name, args) => {
+            let args = all(args)?;
+            point(name, &args, env, ints).unwrap_or(Expr::Index(name.clone(), args))
+        }
         Expr::Tuple(xs) => Expr::Tuple(all(xs)?),
         Expr::Matrix(rows) => Expr::Matrix(rows.iter().map(|r| all(r)).collect::<Option<_>>()?),
         Expr::Sum(v, a, b, body) => Expr::Sum(v.clone(), Box::new(go(a)?), Box::new(go(b)?), Box::new(go(body)?)),
@@ -54,6 +58,35 @@ fn basis(i: usize, n: usize, x: &Expr, k: usize) -> Expr {
         Expr::Call("B".into(), vec![i, n, x.clone()])
     } else {
         Expr::Call("__dB".into(), vec![i, n, x.clone(), Expr::int(k as i64)])
+    }
+}
+
+/// A control point `c[i]` of a concrete polynomial curve or `x[i, j]` of a concrete surface,
+/// written as its coordinates (0 outside the polygon or net, as `prove` reads it); `None`:
+/// not one, or an index that is not a constant integer here.
+fn point<T: Exact>(name: &str, args: &[Expr], env: &NumEnv<T>, ints: &BTreeMap<String, i64>) -> Option<Expr> {
+    let idx = args
+        .iter()
+        .map(|a| eval_int(a, ints).ok())
+        .collect::<Option<Vec<i64>>>()?;
+    let at = |i: i64| usize::try_from(i).ok();
+    let zeros = |dim: usize| Some(Expr::Tuple(vec![Expr::int(0); dim]));
+    if let (Some(AnyCurve::Polynomial(c)), [i]) = (env.curves.get(name), idx.as_slice()) {
+        return match at(*i).and_then(|i| c.points().get(i)) {
+            Some(p) => tuple(p),
+            None => zeros(c.dim()),
+        };
+    }
+    let net = env.surfaces.get(name)?;
+    let [i, j] = idx.as_slice() else {
+        return None;
+    };
+    match at(*i)
+        .and_then(|i| net.get(i))
+        .and_then(|r| at(*j).and_then(|j| r.get(j)))
+    {
+        Some(p) => tuple(p),
+        None => zeros(net.first()?.first()?.dim()),
     }
 }
 

@@ -211,17 +211,19 @@ fn parts_of(name: &str, kmax: i64) -> Option<Vec<(i64, Part)>> {
             ],
         )],
         "derivative_k" => {
-            // one part per order k (diff needs a literal order)
+            // One part per order k (diff needs a literal order). The order is also the
+            // part's integer symbol `k` (a range of one value), so that each case's equality
+            // names it: a certificate's goal then covers the claim's `k = 1..=n`.
             let mut v = Vec::new();
             for k in 1..=kmax {
                 let d = format!("diff(sum(j, 0, n, b[j]*B(j, n, t)), t, {k})");
-                let f = format!("n!/(n - {k})!*sum(j, 0, n - {k}, delta(b, {k}, j)*B(j, n - {k}, t))");
-                let l = format!("deriv(b, {k}, t)");
+                let f = "n!/(n - k)!*sum(j, 0, n - k, delta(b, k, j)*B(j, n - k, t))".to_string();
+                let l = "deriv(b, k, t)".to_string();
                 v.push((
                     k,
                     Part {
                         label: "k-th derivative",
-                        ranges: vec![],
+                        ranges: vec![format!("k = {k}..={k}")],
                         chain: vec![l, d, f],
                         vars: vec!["t"],
                     },

@@ -336,7 +336,14 @@ def _check_sampling(sampling, goal, method):
         _need(isinstance(data, dict) and isinstance(data.get("params"), list), f"{where}: params missing")
         params = data["params"]
         names = [p.get("name") if isinstance(p, dict) else None for p in params]
-        _need(names == reals, f"{where}: params {names} but the sides' real symbols are {reals}")
+        # The grid's order is the file's (a claim's `vars` order); a listed param the sides
+        # do not use is constant in them (degree 0), so only missing or repeated ones matter.
+        _need(
+            len(set(names)) == len(names)
+            and set(names) >= set(reals)
+            and all(goal.sorts.get(n) == "real" for n in names),
+            f"{where}: params {names} but the sides' real symbols are {reals}",
+        )
         if method == "evaluation":
             _need(not params, f"{where}: an evaluation certificate with params")
         grids = []

@@ -3,7 +3,7 @@
 //! polygon and on each unit polygon gives its coefficients, and the call is written as the
 //! resulting curve (`Σ_i (c_i0 + Σ_j c_ij b[j]) B(i, d, t)`) or point. Operations whose result
 //! depends on a parameter other than the curve's (`left(b, t0, t)`, `isou(b, u0, v)`, the
-//! evaluation routines `bsum`, `vfirst`, `sbsum`) are not written out.
+//! evaluation routines `bsum`, `vfirst`, `sbsum`) are interpolated in it (`routines`).
 //!
 //! The certificate's values are the ones the proof computed with the library; re-reading the
 //! written goal re-evaluates it on the same grid and basis polygons, so an expression written
@@ -25,7 +25,7 @@ enum Result1 {
     Point(BigRational),
 }
 
-fn coord(p: &Point<BigRational>) -> BigRational {
+pub(super) fn coord(p: &Point<BigRational>) -> BigRational {
     p.coords()[0].clone()
 }
 
@@ -34,7 +34,7 @@ fn curve_points(c: &BezierCurve<BigRational>) -> Vec<BigRational> {
 }
 
 /// `c0 + Σ_k c_k · point_k` with the zero coefficients left out.
-fn affine(c0: &BigRational, coeffs: &[(Expr, BigRational)]) -> Expr {
+pub(super) fn affine(c0: &BigRational, coeffs: &[(Expr, BigRational)]) -> Expr {
     let mut terms: Vec<Expr> = Vec::new();
     if !c0.is_zero() {
         terms.push(Expr::Num(c0.clone()));
@@ -83,7 +83,7 @@ fn write(points: &[Expr], results: &[Result1], t: Option<&Expr>) -> Option<Expr>
     }
 }
 
-fn unit(len: usize, one: Option<usize>) -> Vec<BigRational> {
+pub(super) fn unit(len: usize, one: Option<usize>) -> Vec<BigRational> {
     (0..len)
         .map(|j| {
             if Some(j) == one {
@@ -95,7 +95,7 @@ fn unit(len: usize, one: Option<usize>) -> Vec<BigRational> {
         .collect()
 }
 
-fn pick(c: &BezierCurve<BigRational>, i: i64) -> BigRational {
+pub(super) fn pick(c: &BezierCurve<BigRational>, i: i64) -> BigRational {
     usize::try_from(i)
         .ok()
         .and_then(|i| c.points().get(i))
@@ -117,6 +117,9 @@ pub(super) fn written<T: Exact>(
             let points: Vec<Expr> = (0..n)
                 .map(|j| Expr::Index(pname.clone(), vec![Expr::int(j as i64)]))
                 .collect();
+            if let Some(e) = super::routines::polygon(m, &points, args, int(2)) {
+                return Some(e);
+            }
             let r = usize::try_from(int(1)?).ok()?;
             let on = |one: Option<usize>| -> Option<Result1> {
                 let pts = unit(n, one)
@@ -156,6 +159,9 @@ pub(super) fn written<T: Exact>(
             )
         })
         .collect();
+    if let Some(e) = super::routines::net(m, &points, (rows, cols), args) {
+        return Some(e);
+    }
     let k = usize::try_from(int(1)?).ok().filter(|&k| k < 4)?;
     let on = |one: Option<usize>| -> Option<Result1> {
         let flat = unit(rows * cols, one);

@@ -1,0 +1,309 @@
+//! The library's operations at a symbolic parameter (the evaluation routines `bsum`,
+//! `vfirst`, `sbsum`; the split `left`, `right`, `leftp`, `rightp` at `t0`; the iso-curves
+//! `isou`, `isov` at `u0`, `v0`) written out as what the library computes.
+//!
+//! Each value is affine in the control points and, by the degree bound `prove` uses for the
+//! operation (`methods::PolygonMethod::degree`, `NetMethod::degree`), a polynomial of degree
+//! ≤ d in each of its parameters. So the library's values on the zero polygon and on each unit
+//! polygon, at d + 1 points per parameter, determine it: they are interpolated into
+//! coefficients in the tensor Bernstein basis, and the call is written as
+//! `Σ (c_0 + Σ_k c_k·point_k)·B(i, d1, x1)·B(j, d2, x2)` of its argument expressions. This
+//! trusts the library's degree bound exactly as the sampling proof does (it evaluates the call
+//! at d + 1 points); the certificate then states the identity about that polynomial.
+
+use super::super::methods::{NetMethod, PolygonMethod};
+use super::library::{affine, coord as first, pick, unit};
+use crate::curve::BezierCurve;
+use crate::point::Point;
+use crate::surface::BezierSurface;
+use num_rational::BigRational;
+use num_traits::{One, Zero};
+
+use super::super::kernel::expr::Expr;
+
+/// The points `i/d`, `i = 0..=d` (just 0 for d = 0).
+fn nodes(d: usize) -> Vec<BigRational> {
+    if d == 0 {
+        return vec![BigRational::zero()];
+    }
+    (0..=d)
+        .map(|i| BigRational::new((i as i64).into(), (d as i64).into()))
+        .collect()
+}
+
+/// The inverse of the matrix `B_j^d(i/d)` (rows i, columns j): values at the nodes to
+/// Bernstein coefficients. The matrix is invertible (distinct nodes, a basis of degree ≤ d).
+fn to_bernstein(d: usize) -> Option<Vec<Vec<BigRational>>> {
+    let xs = nodes(d);
+    let size = d + 1;
+    let mut m: Vec<Vec<BigRational>> = xs
+        .iter()
+        .map(|x| {
+            (0..size)
+                .map(|j| {
+                    let c = BigRational::from_integer(crate::bernstein::binomial_signed(d as i64, j as i64));
+                    let one_minus = BigRational::one() - x;
+                    c * pow(x, j) * pow(&one_minus, d - j)
+                })
+                .collect()
+        })
+        .collect();
+    let mut inv: Vec<Vec<BigRational>> = (0..size).map(|i| unit(size, Some(i))).collect();
+    // Gauss–Jordan elimination, exact.
+    for col in 0..size {
+        let pivot = (col..size).find(|&r| !m[r][col].is_zero())?;
+        m.swap(col, pivot);
+        inv.swap(col, pivot);
+        let p = m[col][col].clone();
+        m[col].iter_mut().chain(inv[col].iter_mut()).for_each(|x| *x = &*x / &p);
+        let (prow, pinv) = (m[col].clone(), inv[col].clone());
+        for (r, (row, irow)) in m.iter_mut().zip(inv.iter_mut()).enumerate() {
+            let f = row[col].clone();
+            if r == col || f.is_zero() {
+                continue;
+            }
+            row.iter_mut().zip(&prow).for_each(|(x, a)| *x = &*x - a * &f);
+            irow.iter_mut().zip(&pinv).for_each(|(x, a)| *x = &*x - a * &f);
+        }
+    }
+    Some(inv)
+}
+
+fn pow(x: &BigRational, k: usize) -> BigRational {
+    (0..k).fold(BigRational::one(), |acc, _| acc * x)
+}
+
+/// The tensor Bernstein coefficients of the values on a grid (the last axis fastest).
+fn coefficients(values: &[BigRational], degrees: &[usize], inverses: &[Vec<Vec<BigRational>>]) -> Vec<BigRational> {
+    let mut c = values.to_vec();
+    let sizes: Vec<usize> = degrees.iter().map(|d| d + 1).collect();
+    for (axis, inv) in inverses.iter().enumerate() {
+        let stride: usize = sizes[axis + 1..].iter().product();
+        let len = sizes[axis];
+        let mut next = c.clone();
+        for (start, _) in c.iter().enumerate().filter(|(k, _)| (k / stride) % len == 0) {
+            for (i, row) in inv.iter().enumerate() {
+                next[start + i * stride] = row
+                    .iter()
+                    .enumerate()
+                    .map(|(j, m)| m * &c[start + j * stride])
+                    .fold(BigRational::zero(), |a, b| a + b);
+            }
+        }
+        c = next;
+    }
+    c
+}
+
+/// The call written from `value(basis polygon, parameter values)`: `points` the control
+/// points (basis polygon `Some(k)` sets the k-th to 1), `axes` each parameter's degree bound
+/// and argument expression.
+fn interpolated(
+    points: &[Expr],
+    axes: &[(usize, Expr)],
+    value: impl Fn(Option<usize>, &[BigRational]) -> Option<BigRational>,
+) -> Option<Expr> {
+    let degrees: Vec<usize> = axes.iter().map(|a| a.0).collect();
+    let inverses = degrees.iter().map(|&d| to_bernstein(d)).collect::<Option<Vec<_>>>()?;
+    let grid: Vec<Vec<BigRational>> = degrees.iter().fold(vec![Vec::new()], |acc, &d| {
+        acc.iter()
+            .flat_map(|p| {
+                nodes(d).into_iter().map(move |x| {
+                    let mut q = p.clone();
+                    q.push(x);
+                    q
+                })
+            })
+            .collect()
+    });
+    let per_basis = std::iter::once(None)
+        .chain((0..points.len()).map(Some))
+        .map(|b| {
+            let values = grid.iter().map(|at| value(b, at)).collect::<Option<Vec<_>>>()?;
+            Some(coefficients(&values, &degrees, &inverses))
+        })
+        .collect::<Option<Vec<_>>>()?;
+    let (zero, units) = per_basis.split_first()?;
+    let sizes: Vec<usize> = degrees.iter().map(|d| d + 1).collect();
+    let mut terms = Vec::new();
+    for (k, z) in zero.iter().enumerate() {
+        let coeffs: Vec<(Expr, BigRational)> = points.iter().cloned().zip(units.iter().map(|u| u[k].clone())).collect();
+        let a = affine(z, &coeffs);
+        if matches!(&a, Expr::Num(x) if x.is_zero()) {
+            continue;
+        }
+        // The multi-index of coefficient k, the last axis fastest.
+        let mut rest = k;
+        let mut index = vec![0; sizes.len()];
+        for axis in (0..sizes.len()).rev() {
+            index[axis] = rest % sizes[axis];
+            rest /= sizes[axis];
+        }
+        let term = axes.iter().zip(&index).fold(a, |acc, ((d, x), &i)| {
+            Expr::mul(
+                acc,
+                Expr::Call("B".into(), vec![Expr::int(i as i64), Expr::int(*d as i64), x.clone()]),
+            )
+        });
+        terms.push(term);
+    }
+    Some(terms.into_iter().reduce(Expr::add).unwrap_or_else(|| Expr::int(0)))
+}
+
+fn curve(values: Vec<BigRational>) -> Option<BezierCurve<BigRational>> {
+    BezierCurve::new(
+        values
+            .into_iter()
+            .map(|x| Point::new(vec![x]).ok())
+            .collect::<Option<Vec<_>>>()?,
+    )
+    .ok()
+}
+
+/// A polygon operation at a symbolic parameter, written out (`None`: another operation).
+/// `points` the polygon's control points `b[0..=n]`, `args` the call's (inlined) arguments,
+/// `r` the index argument of `leftp`/`rightp`.
+pub(super) fn polygon(m: PolygonMethod, points: &[Expr], args: &[Expr], r: Option<i64>) -> Option<Expr> {
+    let len = points.len();
+    let n = len.checked_sub(1)?;
+    let on = |b: Option<usize>| curve(unit(len, b));
+    match m {
+        PolygonMethod::Bsum => interpolated(points, &[(n, args.get(1)?.clone())], |b, at| {
+            Some(first(&on(b)?.eval_bernstein(&at[0])))
+        }),
+        PolygonMethod::Left | PolygonMethod::Right => {
+            let left = m == PolygonMethod::Left;
+            // The parts' degree, read off the library on the zero polygon, as `prove` does.
+            let deg = on(None)?.split_at(&BigRational::zero()).0.degree();
+            let axes = [(n, args.get(1)?.clone()), (deg, args.get(2)?.clone())];
+            interpolated(points, &axes, |b, at| {
+                let (l, r) = on(b)?.split_at(&at[0]);
+                let part = if left { l } else { r };
+                Some(first(&part.eval(&at[1])))
+            })
+        }
+        PolygonMethod::Leftp | PolygonMethod::Rightp => {
+            let (left, r) = (m == PolygonMethod::Leftp, r?);
+            interpolated(points, &[(n, args.get(1)?.clone())], |b, at| {
+                let (lc, rc) = on(b)?.split_at(&at[0]);
+                Some(pick(if left { &lc } else { &rc }, r))
+            })
+        }
+        _ => None,
+    }
+}
+
+/// A net operation at symbolic parameters, written out (`None`: another operation).
+/// `points` the net's control points row by row (`rows × cols`).
+pub(super) fn net(m: NetMethod, points: &[Expr], (rows, cols): (usize, usize), args: &[Expr]) -> Option<Expr> {
+    let (dm, dn) = (rows.checked_sub(1)?, cols.checked_sub(1)?);
+    let on = |b: Option<usize>| -> Option<BezierSurface<BigRational>> {
+        let flat = unit(rows * cols, b);
+        let net = flat
+            .chunks(cols)
+            .map(|row| {
+                row.iter()
+                    .map(|x| Point::new(vec![x.clone()]).ok())
+                    .collect::<Option<Vec<_>>>()
+            })
+            .collect::<Option<Vec<_>>>()?;
+        BezierSurface::new(net).ok()
+    };
+    let (x1, x2) = (args.get(1)?.clone(), args.get(2)?.clone());
+    let axes = match m {
+        NetMethod::Vfirst | NetMethod::Sbsum | NetMethod::Isou => [(dm, x1), (dn, x2)],
+        NetMethod::Isov => [(dn, x1), (dm, x2)],
+        _ => return None,
+    };
+    interpolated(points, &axes, |b, at| {
+        let s = on(b)?;
+        Some(first(&match m {
+            NetMethod::Vfirst => s.eval_v_first(&at[0], &at[1]),
+            NetMethod::Sbsum => s.eval_bernstein(&at[0], &at[1]),
+            NetMethod::Isou => s.iso_u(&at[0]).eval(&at[1]),
+            _ => s.iso_v(&at[0]).eval(&at[1]),
+        }))
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn points(n: usize) -> Vec<Expr> {
+        (0..=n)
+            .map(|j| Expr::Index("b".into(), vec![Expr::int(j as i64)]))
+            .collect()
+    }
+
+    fn var(v: &str) -> Expr {
+        Expr::Var(v.into())
+    }
+
+    #[test]
+    fn the_interpolation_inverts_the_bernstein_matrix() {
+        for d in 0..6 {
+            let inv = to_bernstein(d).unwrap();
+            // The values of B_j^d at the nodes, mapped back, are the unit coefficients.
+            for j in 0..=d {
+                let values: Vec<BigRational> = nodes(d)
+                    .iter()
+                    .map(|x| {
+                        BigRational::from_integer(crate::bernstein::binomial_signed(d as i64, j as i64))
+                            * pow(x, j)
+                            * pow(&(BigRational::one() - x), d - j)
+                    })
+                    .collect();
+                let c = coefficients(&values, &[d], std::slice::from_ref(&inv));
+                assert_eq!(c, unit(d + 1, Some(j)), "d = {d}, j = {j}");
+            }
+        }
+    }
+
+    #[test]
+    fn bsum_is_written_as_the_bernstein_sum_of_its_points() {
+        let e = polygon(PolygonMethod::Bsum, &points(2), &[var("b"), var("t")], None).unwrap();
+        assert_eq!(
+            e.to_string(),
+            "1*b[0]*B(0, 2, t) + 1*b[1]*B(1, 2, t) + 1*b[2]*B(2, 2, t)"
+        );
+    }
+
+    #[test]
+    fn the_split_points_are_de_casteljau_points_of_t0() {
+        // leftp(b, t0, 1) = b_0^1(t0) = (1 - t0) b[0] + t0 b[1], of degree n = 2 in t0.
+        let e = polygon(
+            PolygonMethod::Leftp,
+            &points(2),
+            &[var("b"), var("t0"), Expr::int(1)],
+            Some(1),
+        )
+        .unwrap();
+        assert_eq!(
+            e.to_string(),
+            "1*b[0]*B(0, 2, t0) + (1/2*b[0] + 1/2*b[1])*B(1, 2, t0) + 1*b[1]*B(2, 2, t0)"
+        );
+        // A point index outside the part is 0, as the library's `pick` reads it.
+        let z = polygon(
+            PolygonMethod::Rightp,
+            &points(1),
+            &[var("b"), var("t0"), Expr::int(5)],
+            Some(5),
+        )
+        .unwrap();
+        assert_eq!(z.to_string(), "0");
+    }
+
+    #[test]
+    fn an_iso_curve_has_the_degrees_of_its_parameters() {
+        // A 1×3 net (m = 0, n = 2): isov(b, v0, u) has degree n = 2 in v0 and m = 0 in u.
+        let pts: Vec<Expr> = (0..3)
+            .map(|j| Expr::Index("b".into(), vec![Expr::int(0), Expr::int(j)]))
+            .collect();
+        let e = net(NetMethod::Isov, &pts, (1, 3), &[var("b"), var("v0"), var("u")]).unwrap();
+        assert_eq!(
+            e.to_string(),
+            "1*b[0, 0]*B(0, 2, v0)*B(0, 0, u) + 1*b[0, 1]*B(1, 2, v0)*B(0, 0, u) + 1*b[0, 2]*B(2, 2, v0)*B(0, 0, u)"
+        );
+    }
+}
