@@ -19,6 +19,7 @@ use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
 mod computation;
+mod convergence;
 mod expansion;
 mod hyper;
 mod polygon;
@@ -204,7 +205,7 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
     let method = o.method.map_or("a check", method_name);
     match (&o.data, o.verdict) {
         (_, Verdict::Error) => Err("not decided (an error verdict): nothing to re-check".into()),
-        (_, Verdict::Verified) => Err("bounded evidence, not a proof: no data in this version".into()),
+        (_, Verdict::Verified) => convergence::fields(&o.computed, out),
         (Data::Sampled(eqs), Verdict::Proved | Verdict::ProvedInRange) => {
             // A range variable written into the expressions (not an integer symbol) leaves
             // a checker no way to see that the goal covers the range.
@@ -628,6 +629,7 @@ fn recheck(cert: &Json) -> Res<Option<String>> {
         return hyper::recheck(cert, method).map(Some);
     }
     match verdict {
+        Verdict::Verified if cert.get("convergence").is_some() => return convergence::recheck(cert).map(Some),
         // A computation's facts have no goal: read before the goal is.
         Verdict::Proved | Verdict::ProvedInRange if cert.get("computation").is_some() => {
             return computation::recheck(cert, method).map(Some)

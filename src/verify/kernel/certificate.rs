@@ -390,6 +390,35 @@ pub fn recheck_refutation(
     }
 }
 
+/// Re-checks bounded evidence of a limit (Theorem 1.2's, `verified`): the distances `listed`
+/// in a file must be the ones `computed` again, never increase with `r`, and each be at most
+/// its `bound`. Evidence only: nothing here makes a [`Proof`].
+pub fn recheck_bounded(
+    listed: &[BigRational],
+    computed: &[BigRational],
+    bounds: &[BigRational],
+) -> std::result::Result<(), String> {
+    if listed.len() != computed.len() || computed.len() != bounds.len() {
+        return Err(format!(
+            "{} distances listed for r = 0..={}",
+            listed.len(),
+            computed.len().saturating_sub(1)
+        ));
+    }
+    for (r, ((l, c), b)) in listed.iter().zip(computed).zip(bounds).enumerate() {
+        if l != c {
+            return Err(format!("at r = {r} the distance is {c}, the file says {l}"));
+        }
+        if c > b {
+            return Err(format!("at r = {r} the distance {c} exceeds the bound {b}"));
+        }
+    }
+    if let Some(r) = computed.windows(2).position(|w| w[1] > w[0]) {
+        return Err(format!("the distance grows from r = {r} to r = {}", r + 1));
+    }
+    Ok(())
+}
+
 /// The printed entries of a value.
 pub(super) fn entries<A: super::alg::Alg>(v: &Value<A>) -> Vec<String> {
     v.entries().into_iter().map(ToString::to_string).collect()
