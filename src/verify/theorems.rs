@@ -561,7 +561,11 @@ pub fn check_convergence(ctx: &Ctx<'_>, c: &Convergence, detail: bool) -> Result
         let d = curve.elevation_distances(steps_max)?;
         recorded.push((
             name.clone(),
-            curve.points().iter().map(|p| p.coords().iter().map(Q::to_big).collect()).collect(),
+            curve
+                .points()
+                .iter()
+                .map(|p| p.coords().iter().map(Q::to_big).collect())
+                .collect(),
             d.iter().map(|e| e.max_norm.to_big()).collect(),
         ));
         for w in d.windows(2) {
