@@ -443,7 +443,7 @@ fn check_fit(ctx: &Ctx<'_>, c: &Fit) -> Result<Checked> {
     out.computed = vec![Computed::CubicFit {
         points,
         weights,
-        data,
+        data: Box::new(data),
         k: fit.k,
         l: fit.l,
         delta2: fit.delta2,

@@ -94,7 +94,7 @@ pub enum Computed {
     CubicFit {
         points: Vec<Vec<BigRational>>,
         weights: Option<Vec<BigRational>>,
-        data: CubicFitData<BigRational>,
+        data: Box<CubicFitData<BigRational>>,
         k: BigRational,
         l: BigRational,
         delta2: BigRational,
