@@ -14,8 +14,10 @@ real symbols are exactly its params; the points of each param are distinct ratio
 than a bound on the degree of the cleared difference that this checker derives itself from the
 goal's expressions (the file's `lhs_degree`, `rhs_degree` and `degree` must agree with that
 derivation); the grid is complete, in order; both sides, evaluated here, are the listed values
-and equal at every point. A `fails` certificate: both sides evaluated at the counterexample are
-the listed values and differ. A `proved_in_range` goal must cover every case of its `range` (of the variables the range
+and equal at every point. A `fails` certificate: both sides evaluated at the counterexample (on
+its basis polygon, when the equality lists control points) are the listed values and differ;
+an implication's premise, evaluated there too, is the listed value and 0. A `verified`
+certificate's bounded evidence is re-derived in `cert_convergence` (it stays evidence). A `proved_in_range` goal must cover every case of its `range` (of the variables the range
 text names: an inner range it does not name, `j = 0..=n`, is not checked for completeness).
 Methods `expansion` and `computation` are checked in `cert_expand` and `cert_computation`.
 """
