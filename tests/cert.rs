@@ -159,7 +159,10 @@ fn mutants(cert: &Value) -> Vec<(String, Value)> {
                     set(Value::from(n - 1));
                 }
             }
-            Value::String(s) if (key == "lhs" || key == "rhs") && (path[0] == "goal" || path[0] == "computation") => {
+            Value::String(s)
+                if (key == "lhs" || key == "rhs" || key == "premise")
+                    && (path[0] == "goal" || path[0] == "computation") =>
+            {
                 for e in edit_expression(s) {
                     set(Value::from(e));
                 }
@@ -187,7 +190,7 @@ fn mutants(cert: &Value) -> Vec<(String, Value)> {
         }
     }
     let mut edits = Vec::new();
-    for part in ["goal", "sampling", "fails", "expansion", "computation"] {
+    for part in ["goal", "sampling", "fails", "expansion", "computation", "convergence"] {
         if let Some(v) = cert.get(part) {
             walk(v, &mut vec![part.to_string()], &mut edits);
         }
@@ -376,6 +379,18 @@ fn tampered_certificates_are_refused_or_prove_a_true_goal() {
                     refused += 1;
                 }
                 Recheck::NotChecked(why) => panic!("{}: a mutant not checked: {why}", path.display()),
+                // Every distance of bounded evidence is computed again: only an edited control
+                // point whose curve has the same distances (the maximum taken elsewhere) may pass,
+                // and then the evidence is true of the edited curve.
+                Recheck::Accepted(what) if m["verdict"] == "verified" => {
+                    assert!(
+                        label.contains("points"),
+                        "{}: an accepted mutant of bounded evidence ({label}): {what}",
+                        path.display()
+                    );
+                    still_true += 1;
+                    *kinds.entry("evidence of an edited curve".to_string()).or_insert(0) += 1;
+                }
                 Recheck::Accepted(_) if m["method"] == "computation" => {
                     // The named library computation, run again on the mutant's inputs, gives its
                     // result: what the proof rests on agrees (a fact, not an identity to search).
@@ -394,7 +409,14 @@ fn tampered_certificates_are_refused_or_prove_a_true_goal() {
                     let eqs = m["goal"]["equalities"].as_array().unwrap();
                     if m["verdict"] == "fails" {
                         let k = m["fails"]["equality"].as_u64().unwrap() as usize;
-                        assert_eq!(searched(&eqs[k], &reals), Verdict::Fails, "{}: {m}", path.display());
+                        // An implication's equation (17 coordinates) is searched symbolically; the
+                        // premise holds at the counterexample, re-checked above.
+                        let v = if eqs[k].get("premise").is_some() {
+                            expanded(&eqs[k], &reals)
+                        } else {
+                            searched(&eqs[k], &reals)
+                        };
+                        assert_eq!(v, Verdict::Fails, "{}: {m}", path.display());
                     } else {
                         for eq in eqs {
                             let v = if m["method"] == "expansion" {

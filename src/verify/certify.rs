@@ -19,6 +19,7 @@ use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
 mod computation;
+mod convergence;
 mod expansion;
 mod hyper;
 mod polygon;
@@ -188,7 +189,14 @@ fn sampling_json(eqs: &[Equality]) -> Json {
 
 fn refutation_json(r: &Refutation) -> Json {
     let at: Map<String, Json> = r.at.iter().map(|(k, v)| (k.clone(), json!(v.to_string()))).collect();
-    json!({"equality": 0, "at": at, "lhs": r.lhs, "rhs": r.rhs})
+    let mut out = json!({"equality": 0, "at": at, "lhs": r.lhs, "rhs": r.rhs});
+    if !r.equality.control_points.is_empty() {
+        out["polygon"] = json!(r.basis);
+    }
+    if let Some((_, value)) = &r.premise {
+        out["premise"] = json!(value);
+    }
+    out
 }
 
 /// The data part of a certificate: `check: kernel` with the goal and the method's data, or
@@ -197,7 +205,7 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
     let method = o.method.map_or("a check", method_name);
     match (&o.data, o.verdict) {
         (_, Verdict::Error) => Err("not decided (an error verdict): nothing to re-check".into()),
-        (_, Verdict::Verified) => Err("bounded evidence, not a proof: no data in this version".into()),
+        (_, Verdict::Verified) => convergence::fields(&o.computed, out),
         (Data::Sampled(eqs), Verdict::Proved | Verdict::ProvedInRange) => {
             // A range variable written into the expressions (not an integer symbol) leaves
             // a checker no way to see that the goal covers the range.
@@ -230,7 +238,8 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
             computation::fields(&o.computed, out)
         }
         (Data::Refuted(r), Verdict::Fails) => {
-            if !rational_entries(&r.lhs) || !rational_entries(&r.rhs) {
+            let premise_value = r.premise.iter().flat_map(|(_, v)| v);
+            if !rational_entries(&r.lhs) || !rational_entries(&r.rhs) || premise_value.clone().any(|v| rational(v).is_err()) {
                 return Err("the values are not rational (a square root)".into());
             }
             let mut eq = r.equality.clone();
@@ -245,7 +254,15 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
                         points: Vec::new(),
                     })
                     .collect();
-            out.insert("goal".into(), goal(&[&eq])?);
+            let mut goal = goal(&[&eq])?;
+            if let Some((premise, _)) = &r.premise {
+                let known: Vec<String> = r.at.iter().map(|(k, _)| k.clone()).collect();
+                if let Some(why) = not_self_contained(premise, &known, &[]) {
+                    return Err(format!("the premise uses {why}"));
+                }
+                goal["equalities"][0]["premise"] = json!(premise);
+            }
+            out.insert("goal".into(), goal);
             out.insert("fails".into(), refutation_json(r));
             Ok(())
         }
@@ -384,10 +401,12 @@ fn rationals(v: &Json, at: &str) -> Res<Vec<BigRational>> {
 /// One goal equality: the integer values, both sides, the symbolic control points.
 type GoalEq = (BTreeMap<String, i64>, Expr, Expr, Vec<(String, Vec<i64>)>);
 
-/// The goal: its real symbols and equalities.
+/// The goal: its real symbols and equalities, and each equality's premise (the equality is
+/// claimed where the premise is zero; only a counterexample reads one in this version).
 struct Goal {
     reals: Vec<String>,
     equalities: Vec<GoalEq>,
+    premises: Vec<Option<Expr>>,
 }
 
 fn read_goal(cert: &Json) -> Res<Goal> {
@@ -415,7 +434,7 @@ fn read_goal(cert: &Json) -> Res<Goal> {
         }
     }
     let known: Vec<String> = reals.iter().chain(&integers).chain(&polygons).cloned().collect();
-    let mut equalities = Vec::new();
+    let (mut equalities, mut premises) = (Vec::new(), Vec::new());
     for (i, eq) in array(g, "equalities", "goal")?.iter().enumerate() {
         let at = format!("goal.equalities[{i}]");
         let obj = field(eq, "ints", &at)?
@@ -435,12 +454,20 @@ fn read_goal(cert: &Json) -> Res<Goal> {
         let side =
             |key: &str| -> Res<Expr> { parse(string(eq, key, &at)?, &known).map_err(|e| format!("{at}.{key}: {e}")) };
         let points = polygon::read_points(eq, &at, &polygons)?;
+        premises.push(match eq.get("premise") {
+            None => None,
+            Some(_) => Some(side("premise")?),
+        });
         equalities.push((ints, side("lhs")?, side("rhs")?, points));
     }
     if equalities.is_empty() {
         return Err("goal.equalities: none".into());
     }
-    Ok(Goal { reals, equalities })
+    Ok(Goal {
+        reals,
+        equalities,
+        premises,
+    })
 }
 
 fn read_params(eq: &Json, at: &str, reals: &[String]) -> Res<Vec<Param>> {
@@ -532,13 +559,12 @@ fn recheck_fails(cert: &Json, goal: &Goal) -> Res<String> {
     let k = field(f, "equality", "fails")?
         .as_u64()
         .ok_or_else(|| "fails.equality: not an index".to_string())?;
-    let (ints, lhs, rhs, points) = usize::try_from(k)
+    let k = usize::try_from(k)
         .ok()
-        .and_then(|k| goal.equalities.get(k))
+        .filter(|&k| k < goal.equalities.len())
         .ok_or_else(|| format!("fails.equality: no equality {k} in the goal"))?;
-    if !points.is_empty() {
-        return Err("fails: a counterexample on control points is not defined in this version".into());
-    }
+    let (ints, lhs, rhs, points) = &goal.equalities[k];
+    let basis = polygon::read_basis(f, "fails", points.len())?;
     let obj = field(f, "at", "fails")?
         .as_object()
         .ok_or_else(|| "fails.at: not an object".to_string())?;
@@ -552,8 +578,27 @@ fn recheck_fails(cert: &Json, goal: &Goal) -> Res<String> {
     }
     let l = rationals(field(f, "lhs", "fails")?, "fails.lhs")?;
     let r = rationals(field(f, "rhs", "fails")?, "fails.rhs")?;
-    certificate::recheck_refutation(lhs, rhs, ints, &at, (&l, &r)).map_err(|e| format!("the counterexample: {e}"))?;
-    Ok("the counterexample re-evaluated: the sides differ".into())
+    let premise = match (&goal.premises[k], f.get("premise")) {
+        (None, None) => None,
+        (Some(p), Some(v)) => Some((p, rationals(v, "fails.premise")?)),
+        (Some(_), None) => return Err("fails: the goal has a premise, the counterexample no value of it".into()),
+        (None, Some(_)) => return Err("fails.premise: the goal's equality has no premise".into()),
+    };
+    let mut c = certificate::Counterexample {
+        lhs,
+        rhs,
+        premise,
+        ints: ints.clone(),
+        at,
+        basis,
+        env: Box::new(polygon::FileEnv::new(points.clone())),
+    };
+    certificate::recheck_refutation(&mut c, (&l, &r)).map_err(|e| format!("the counterexample: {e}"))?;
+    Ok(match (basis, &goal.premises[k]) {
+        (0, None) => "the counterexample re-evaluated: the sides differ".into(),
+        (_, None) => format!("the counterexample re-evaluated on basis polygon {basis}: the sides differ"),
+        (_, Some(_)) => "the counterexample re-evaluated: the premise is zero, the sides differ".into(),
+    })
 }
 
 /// Re-checks a certificate; `known`: the kernel's data it was just written from, if it was.
@@ -584,6 +629,7 @@ fn recheck(cert: &Json) -> Res<Option<String>> {
         return hyper::recheck(cert, method).map(Some);
     }
     match verdict {
+        Verdict::Verified if cert.get("convergence").is_some() => return convergence::recheck(cert).map(Some),
         // A computation's facts have no goal: read before the goal is.
         Verdict::Proved | Verdict::ProvedInRange if cert.get("computation").is_some() => {
             return computation::recheck(cert, method).map(Some)
@@ -591,6 +637,9 @@ fn recheck(cert: &Json) -> Res<Option<String>> {
         _ => {}
     }
     let goal = read_goal(cert)?;
+    if verdict != Verdict::Fails && goal.premises.iter().any(Option::is_some) {
+        return Err("goal: a premise is defined only for a counterexample in this version".into());
+    }
     match verdict {
         Verdict::Proved | Verdict::ProvedInRange if cert.get("expansion").is_some() => {
             expansion::recheck(cert, &goal, method).map(Some)

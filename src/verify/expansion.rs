@@ -2,6 +2,7 @@
 
 use super::claims::Implies;
 use super::context::Ctx;
+use super::kernel::certificate::{Equality, Refutation};
 use super::kernel::check_expanded;
 use super::kernel::checked::Step;
 use super::kernel::eval::{Evaluator, Value, VarEnv};
@@ -9,6 +10,7 @@ use super::kernel::expand::{expand, sym_env, Expanded};
 use super::kernel::expr::Expr;
 use super::kernel::poly::{Poly, RatFunc};
 use super::outcome::Checked;
+use super::rewrite::substitute;
 use super::sampling::{list, PairProof};
 use crate::error::{Error, Result};
 use crate::scalar::{Ring, Scalar};
@@ -35,6 +37,73 @@ fn sym_names(ctx: &Ctx<'_>, extra: &[String]) -> (Rc<[String]>, Vec<(String, usi
         }
     }
     (Rc::from(names), layout)
+}
+
+/// The variables of a layout in the kernel's order: a scalar its name, a vector `v` its
+/// coordinates `v_1, …, v_d`.
+pub(crate) fn variables(layout: &[(String, usize)]) -> Vec<String> {
+    let mut out = Vec::new();
+    for (v, dim) in layout {
+        if *dim == 0 {
+            out.push(v.clone());
+        } else {
+            out.extend((1..=*dim).map(|k| format!("{v}_{k}")));
+        }
+    }
+    out
+}
+
+/// `e` with every vector of the layout written as the tuple of its coordinates.
+pub(crate) fn in_coordinates(e: &Expr, layout: &[(String, usize)]) -> Expr {
+    let (names, tuples): (Vec<String>, Vec<Expr>) = layout
+        .iter()
+        .filter(|(_, dim)| *dim > 0)
+        .map(|(v, dim)| {
+            let coords = (1..=*dim).map(|k| Expr::Var(format!("{v}_{k}"))).collect();
+            (v.clone(), Expr::Tuple(coords))
+        })
+        .unzip();
+    substitute(e, &names, &tuples)
+}
+
+/// The counterexample of an implication as data: the equation and the premise written in
+/// coordinates (a vector `v` as `(v_1, …, v_d)`), the point, and the values there.
+fn implies_refutation(
+    layout: &[(String, usize)],
+    vars: &BTreeMap<String, Value<BigRational>>,
+    (prem, a, b): (&Expr, &Expr, &Expr),
+    (pv, av, bv): (&Value<BigRational>, &Value<BigRational>, &Value<BigRational>),
+) -> Box<Refutation> {
+    let mut at = Vec::new();
+    for (v, dim) in layout {
+        match vars.get(v) {
+            Some(Value::S(x)) if *dim == 0 => at.push((v.clone(), x.clone())),
+            Some(Value::V(xs)) => at.extend(
+                xs.iter()
+                    .enumerate()
+                    .map(|(k, x)| (format!("{v}_{}", k + 1), x.clone())),
+            ),
+            _ => {}
+        }
+    }
+    let written = |e: &Expr| in_coordinates(e, layout).to_string();
+    let entries = |v: &Value<BigRational>| v.entries().into_iter().map(ToString::to_string).collect();
+    Box::new(Refutation {
+        equality: Equality {
+            ints: BTreeMap::new(),
+            lhs: written(a),
+            rhs: written(b),
+            params: Vec::new(),
+            rows: Vec::new(),
+            polygons: 1,
+            control_points: Vec::new(),
+        },
+        at,
+        lhs: entries(av),
+        rhs: entries(bv),
+        basis: 0,
+        premise: Some((written(prem), entries(pv))),
+    })
 }
 
 /// A point where a nonzero polynomial does not vanish (small integers tried in turn).
@@ -366,14 +435,14 @@ pub fn check_implies(ctx: &Ctx<'_>, imp: &Implies, detail: bool) -> Result<Check
                 let bv = Evaluator::new(&env, inst.clone()).eval(&b)?;
                 if pv.equals(&Value::S(BigRational::zero())) == Some(true) && av.equals(&bv) == Some(false) {
                     let shown: Vec<String> = vars.iter().map(|(k, v)| format!("{k} = {v}")).collect();
-                    return Ok(Checked::fails(
-                        format!(
-                            "at {}: the premise '{}' = 0 holds, but the equation '{}' gives left side = {av}, right side = {bv}",
-                            shown.join(", "),
-                            imp.premise.as_str(),
-                            imp.equation.as_str()
-                        ),
-                    ));
+                    let refutation = implies_refutation(&layout, &vars, (&prem, &a, &b), (&pv, &av, &bv));
+                    return Ok(Checked::fails(format!(
+                        "at {}: the premise '{}' = 0 holds, but the equation '{}' gives left side = {av}, right side = {bv}",
+                        shown.join(", "),
+                        imp.premise.as_str(),
+                        imp.equation.as_str()
+                    ))
+                    .refuted(Some(refutation)));
                 }
             }
             Err(Error::Domain(format!(

@@ -382,9 +382,14 @@ fn check_fit(ctx: &Ctx<'_>, c: &Fit) -> Result<Checked> {
         .filter(|m| m.len() == 1)
         .and_then(|m| m.iter().next())
         .ok_or_else(|| Error::Parse(format!("claim {}: fit needs exactly one curve", ctx.id)))?;
-    let data = match curve_from_spec::<BigRational>(spec)? {
-        crate::AnyCurve::Polynomial(curve) => curve.cubic_fit_data()?,
-        crate::AnyCurve::Rational(curve) => curve.cubic_fit_data()?,
+    let coords = |ps: &[Point<BigRational>]| ps.iter().map(|p| p.coords().to_vec()).collect::<Vec<_>>();
+    let (data, points, weights) = match curve_from_spec::<BigRational>(spec)? {
+        crate::AnyCurve::Polynomial(curve) => (curve.cubic_fit_data()?, coords(curve.points()), None),
+        crate::AnyCurve::Rational(curve) => (
+            curve.cubic_fit_data()?,
+            coords(curve.points()),
+            Some(curve.weights().to_vec()),
+        ),
     };
     let fit = fit_cubic(&data)?;
     let (k13, l13) = fit_cubic_closed_form(&data)?;
@@ -427,14 +432,23 @@ fn check_fit(ctx: &Ctx<'_>, c: &Fit) -> Result<Checked> {
     } else {
         format!(" ({})", wrong.join("; "))
     };
-    Ok(Checked::proved(
+    let mut out = Checked::proved(
         proof,
         format!(
             "{computed}, exactly: the normal equations (11) solved by exact elimination agree with the closed form (13), \
              ∇δ² = (0, 0) there and the Gram matrix is non-singular (det {}), so this is the unique minimum{notes}: proof",
             fit.gram_determinant
         ),
-    ))
+    );
+    out.computed = vec![Computed::CubicFit {
+        points,
+        weights,
+        data: Box::new(data),
+        k: fit.k,
+        l: fit.l,
+        delta2: fit.delta2,
+    }];
+    Ok(out)
 }
 
 fn check_weight_type(ctx: &Ctx<'_>, claim: &WeightType) -> Result<Checked> {
@@ -459,12 +473,17 @@ fn check_weight_type(ctx: &Ctx<'_>, claim: &WeightType) -> Result<Checked> {
             .iter()
             .map(|x| super::objects::constant(&x.text()?))
             .collect::<Result<Vec<QuadraticIrrational>>>()?;
-        let curve = RationalBezierCurve::new(pts, ws.clone())?;
+        let curve = RationalBezierCurve::new(pts.clone(), ws.clone())?;
         let kind = classify_conic(&curve)?;
-        return Ok(verdict(
-            kind.as_str(),
-            format!("weights {}, {}, {}", ws[0], ws[1], ws[2]),
-        ));
+        let mut c = verdict(kind.as_str(), format!("weights {}, {}, {}", ws[0], ws[1], ws[2]));
+        if c.proof().is_some() {
+            c.computed = vec![Computed::WeightType {
+                points: pts.iter().map(|p| p.coords().to_vec()).collect(),
+                weights: ws,
+                kind: kind.as_str(),
+            }];
+        }
+        return Ok(c);
     }
     let pts = points::<BigRational>(&spec.points)?;
     let ws = w
@@ -474,8 +493,11 @@ fn check_weight_type(ctx: &Ctx<'_>, claim: &WeightType) -> Result<Checked> {
     let curve = RationalBezierCurve::new(pts.clone(), ws.clone())?;
     let kind = classify_conic(&curve)?;
     let computed = Computed::WeightType {
-        points: pts.iter().map(|p| p.coords().to_vec()).collect(),
-        weights: ws.clone(),
+        points: pts
+            .iter()
+            .map(|p| p.coords().iter().cloned().map(QuadraticIrrational::rational).collect())
+            .collect(),
+        weights: ws.iter().cloned().map(QuadraticIrrational::rational).collect(),
         kind: kind.as_str(),
     };
     let ratio = if ws.len() == 3 && !ws[0].is_zero() && !ws[2].is_zero() {

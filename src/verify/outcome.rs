@@ -6,6 +6,8 @@ use super::kernel::certificate::{Data, Refutation};
 use super::kernel::checked::{Evaluation, Method, Step, StepKind, Verdict};
 use super::kernel::expr::Expr;
 use super::kernel::{Proof, Trusted};
+use crate::fit::CubicFitData;
+use crate::quadratic::QuadraticIrrational;
 use num_rational::BigRational;
 
 impl Method {
@@ -69,7 +71,7 @@ pub struct Checked {
 
 /// A library computation a `computation` proof accepted by name, with its inputs and its
 /// result, so that a checker can compute it again (`docs/certificates.md`).
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Computed {
     /// `ImplicitConic::kind` of the conic `lhs = rhs` in x, y: its coefficients `A, …, F` of
     /// `A x² + B xy + C y² + D x + E y + F` (of `lhs − rhs`) and its family.
@@ -79,11 +81,29 @@ pub enum Computed {
         coefficients: Vec<BigRational>,
         kind: &'static str,
     },
-    /// `classify_conic` of the rational quadratic with these control points and weights.
+    /// `classify_conic` of the rational quadratic with these control points and weights (exact
+    /// rationals or `a + b√d`).
     WeightType {
-        points: Vec<Vec<BigRational>>,
-        weights: Vec<BigRational>,
+        points: Vec<Vec<QuadraticIrrational>>,
+        weights: Vec<QuadraticIrrational>,
         kind: &'static str,
+    },
+    /// `fit_cubic` (text 004's method) on the curve with these control points (and weights, a
+    /// rational curve): its data `x(0), x(1), x(1/2), ẋ(0), ẋ(1)`, the solution `k, l` of the
+    /// normal equations (11) and `δ²` there.
+    CubicFit {
+        points: Vec<Vec<BigRational>>,
+        weights: Option<Vec<BigRational>>,
+        data: Box<CubicFitData<BigRational>>,
+        k: BigRational,
+        l: BigRational,
+        delta2: BigRational,
+    },
+    /// Not a proof's computation: the bounded evidence of Theorem 1.2 (`verified`), each
+    /// curve's control points and its exact max-norm distances for `r = 0..=steps`.
+    Convergence {
+        steps: usize,
+        curves: Vec<(String, Vec<Vec<BigRational>>, Vec<BigRational>)>,
     },
 }
 

@@ -404,7 +404,8 @@ fn sampling(value: &Json, goal: &[(String, String)]) -> Block {
     }
 }
 
-/// The counterexample: the equality, the point, both sides' exact values.
+/// The counterexample: the equality, the point (and basis polygon), the premise's value,
+/// both sides' exact values.
 fn fails(value: &Json, goal: &[(String, String)]) -> Block {
     let mut lines = Vec::new();
     let k = value.get("equality").and_then(Json::as_u64);
@@ -422,6 +423,17 @@ fn fails(value: &Json, goal: &[(String, String)]) -> Block {
             .map(|(n, v)| format!("{} = {}", clean(n), flat(v).unwrap_or_default()))
             .collect();
         lines.push(("at".to_string(), point.join(", ")));
+    }
+    // On control points: which basis polygon; for an implication: the premise's value (0).
+    if let Some(p) = value.get("polygon").and_then(Json::as_u64) {
+        let which = match p {
+            0 => "0 (every listed control point 0)".to_string(),
+            p => format!("{p} (listed control point {p} is 1, the others 0)"),
+        };
+        lines.push(("basis polygon".to_string(), which));
+    }
+    if let Some(p) = value.get("premise") {
+        lines.push(("premise".to_string(), vector(p)));
     }
     lines.push((
         "left side".to_string(),

@@ -557,9 +557,19 @@ pub fn check_convergence(ctx: &Ctx<'_>, c: &Convergence, detail: bool) -> Result
         .ok_or_else(|| Error::Parse(format!("claim {}: convergence needs curves", ctx.id)))?;
     let mut lines = Vec::new();
     let mut summary = Vec::new();
+    let mut recorded = Vec::new();
     for (name, spec) in curves {
         let curve: BezierCurve<Q> = BezierCurve::new(super::objects::points(&spec.points)?)?;
         let d = curve.elevation_distances(steps_max)?;
+        recorded.push((
+            name.clone(),
+            curve
+                .points()
+                .iter()
+                .map(|p| p.coords().iter().map(Q::to_big).collect())
+                .collect(),
+            d.iter().map(|e| e.max_norm.to_big()).collect(),
+        ));
         for w in d.windows(2) {
             if w[1].max_norm > w[0].max_norm {
                 return Ok(Checked::fails(format!(
@@ -600,6 +610,10 @@ pub fn check_convergence(ctx: &Ctx<'_>, c: &Convergence, detail: bool) -> Result
         summary.join("; ")
     ));
     out.steps = lines;
+    out.computed = vec![super::outcome::Computed::Convergence {
+        steps: steps_max,
+        curves: recorded,
+    }];
     Ok(out)
 }
 

@@ -14,8 +14,10 @@ real symbols are exactly its params; the points of each param are distinct ratio
 than a bound on the degree of the cleared difference that this checker derives itself from the
 goal's expressions (the file's `lhs_degree`, `rhs_degree` and `degree` must agree with that
 derivation); the grid is complete, in order; both sides, evaluated here, are the listed values
-and equal at every point. A `fails` certificate: both sides evaluated at the counterexample are
-the listed values and differ. A `proved_in_range` goal must cover every case of its `range` (of the variables the range
+and equal at every point. A `fails` certificate: both sides evaluated at the counterexample (on
+its basis polygon, when the equality lists control points) are the listed values and differ;
+an implication's premise, evaluated there too, is the listed value and 0. A `verified`
+certificate's bounded evidence is re-derived in `cert_convergence` (it stays evidence). A `proved_in_range` goal must cover every case of its `range` (of the variables the range
 text names: an inner range it does not name, `j = 0..=n`, is not checked for completeness).
 Methods `expansion` and `computation` are checked in `cert_expand` and `cert_computation`.
 """
@@ -127,10 +129,15 @@ def check_certificate(doc, name="?", symbolic=False):
             from .cert_computation import check_computation
 
             return out(RECHECKED, check_computation(doc, _need, _rational))
+        if verdict == "verified":
+            _need("convergence" in doc, "verdict 'verified' with check 'kernel': only convergence data is defined")
+            from .cert_convergence import check_convergence
+
+            return out(RECHECKED, check_convergence(doc.get("convergence"), _need, _rational))
         if verdict in ("proved", "proved_in_range") and method == "expansion":
             from .cert_expand import check_expansion
 
-            goal = _Goal(doc.get("goal"))
+            goal = _proved_goal(doc.get("goal"))
             _check_range(doc, goal)
             detail = check_expansion(doc.get("expansion"), goal, _need, _rational)
             if symbolic:
@@ -139,7 +146,7 @@ def check_certificate(doc, name="?", symbolic=False):
             return out(RECHECKED, detail)
         if verdict in ("proved", "proved_in_range"):
             _need(method in ("sampling", "evaluation"), f"method {method!r} carries no data in format version 1")
-            goal = _Goal(doc.get("goal"))
+            goal = _proved_goal(doc.get("goal"))
             _check_range(doc, goal)
             _check_sampling(doc.get("sampling"), goal, method)
             detail = f"{len(goal.equalities)} equalities, {_count_points(doc)} points, all exact"
@@ -205,10 +212,10 @@ class _Goal:
         eqs = goal.get("equalities")
         _need(isinstance(eqs, list) and eqs, "goal: no equalities")
         known = list(self.sorts)
-        self.equalities, self.points = [], []
+        self.equalities, self.points, self.premises = [], [], []
         for k, eq in enumerate(eqs):
-            fields = set(eq) - {"control_points"} if isinstance(eq, dict) else None
-            _need(fields == {"ints", "lhs", "rhs"}, f"equality {k}: not ints, lhs, rhs (and control_points)")
+            fields = set(eq) - {"control_points", "premise"} if isinstance(eq, dict) else None
+            _need(fields == {"ints", "lhs", "rhs"}, f"equality {k}: not ints, lhs, rhs (and control_points, premise)")
             try:
                 points = read_points(eq, self.sorts, f"equality {k}")
             except PolygonError as e:
@@ -221,7 +228,11 @@ class _Goal:
                 ints[v] = int(x)
             lhs = parse(eq["lhs"], known, strict=True)
             rhs = parse(eq["rhs"], known, strict=True)
-            used = free_names(lhs) | free_names(rhs)
+            premise = None
+            if "premise" in eq:
+                _need(isinstance(eq["premise"], str), f"equality {k}: the premise is not an expression")
+                premise = parse(eq["premise"], known, strict=True)
+            used = free_names(lhs) | free_names(rhs) | (free_names(premise) if premise else set())
             for u in sorted(used):
                 _need(u in self.sorts, f"equality {k}: '{u}' is not a declared symbol")
                 if self.sorts[u] == "integer":
@@ -236,7 +247,14 @@ class _Goal:
                 except PolygonError as err:
                     raise _Refused(str(err)) from None
             self.points.append(points)
+            self.premises.append(premise)
             self.equalities.append((ints, lhs, rhs, reals))
+
+
+def _proved_goal(doc):
+    goal = _Goal(doc)
+    _need(not any(goal.premises), "goal: a premise is defined only for a counterexample")
+    return goal
 
 
 def _check_range(doc, goal):
@@ -416,7 +434,15 @@ def _check_fails(fails, goal):
     k = fails.get("equality")
     _need(isinstance(k, int) and not isinstance(k, bool) and 0 <= k < len(goal.equalities), f"fails: equality {k!r} is not in the goal")
     ints, lhs, rhs, reals = goal.equalities[k]
-    _need(not goal.points[k], "fails: a counterexample on control points is not defined in version 1")
+    points, premise = goal.points[k], goal.premises[k]
+    basis = 0
+    if points:
+        basis = fails.get("polygon")
+        ok = isinstance(basis, int) and not isinstance(basis, bool) and 0 <= basis <= len(points)
+        _need(ok, f"fails: polygon {basis!r} is not a basis polygon 0..={len(points)}")
+    else:
+        _need("polygon" not in fails, "fails: a polygon without control points")
+    _need((premise is None) == ("premise" not in fails), "fails: the premise's value is given exactly when the goal has a premise")
     at = fails.get("at")
     _need(isinstance(at, dict), "fails: at missing")
     _need(set(at) >= set(reals), f"fails: at gives {sorted(at)}, the sides use {reals}")
@@ -425,14 +451,24 @@ def _check_fails(fails, goal):
     env = {v: Fraction(x) for v, x in ints.items()}
     env.update((v, _rational(x, f"fails: at {v}")) for v, x in at.items())
     point = ", ".join(f"{v} = {at[v]}" for v in reals) or "the evaluation"
-    lv, rv = evaluate(lhs, env), evaluate(rhs, env)
+    point += f" on basis polygon {basis}" if points else ""
+    objs = _polygon(points, basis)
+    if premise is not None:
+        pv = evaluate(premise, env, objs)
+        listed = fails.get("premise")
+        _need(isinstance(listed, list) and listed, "fails: premise values missing")
+        said = [_rational(x, "fails: premise") for x in listed]
+        _need(_entries(pv) == said, f"fails: at {point}: the premise is {_show(_entries(pv))}, the file says {_show(said)}")
+        _need(all(x == 0 for x in _entries(pv)), f"fails: at {point} the premise is {_show(_entries(pv))}, not 0")
+    lv, rv = evaluate(lhs, env, objs), evaluate(rhs, env, objs)
     for side, got in (("lhs", lv), ("rhs", rv)):
         listed = fails.get(side)
         _need(isinstance(listed, list) and listed, f"fails: {side} values missing")
         said = [_rational(x, f"fails: {side}") for x in listed]
         _need(_entries(got) == said, f"fails: at {point}: {side} is {_show(_entries(got))}, the file says {_show(said)}")
     _need(_entries(lv) != _entries(rv) or _shape(lv) != _shape(rv), f"fails: at {point} the sides are equal: no counterexample")
-    return f"counterexample at {point}: {_show(_entries(lv))} ≠ {_show(_entries(rv))}"
+    holds = "the premise is 0 and " if premise is not None else ""
+    return f"counterexample at {point}: {holds}{_show(_entries(lv))} ≠ {_show(_entries(rv))}"
 
 
 def check_path(path, symbolic=False):

@@ -6,10 +6,18 @@ computation, re-derived here from their inputs by the rules the docs state, with
   `A, …, F` of `lhs − rhs` must be the listed ones); the type follows from `B² − 4AC` and the
   determinant of the conic's 3×3 matrix.
 - `classify_conic`: the type of the rational quadratic with the listed control points and
-  weights, from collinearity, zero weights and the sign of `w1² − w0 w2`.
+  weights, from collinearity, zero weights and the sign of `w1² − w0 w2`; a number may be
+  `a + b√d` (`{"rational", "irrational", "radicand"}`, d square-free, not 0 or 1), computed
+  here as the pair (a, b) in Q(√d).
+- `fit_cubic`: text 004's cubic fit: the data `x(0), x(1), x(1/2), ẋ(0), ẋ(1)` derived here
+  from the curve (Bernstein form; `ẋ(0) = n w1/w0 (b1 − b0)`, `ẋ(1) = n w_{n−1}/w_n (b_n −
+  b_{n−1})`), the normal equations `M = 3/4 G`, `r = (ẋ(0)·X, ẋ(1)·X)` with `X = x(0) + x(1) −
+  2 x(1/2)` and `G` the Gram matrix of `ẋ(0), ẋ(1)`, then `M·(−k, l) = r`, `det M ≠ 0` and
+  `δ² = |a(1/2) − x(1/2)|²` with `a(1/2) = (x0 + 3(x0 + k ẋ(0)) + 3(x1 − l ẋ(1)) + x1)/8`.
 """
 
 from fractions import Fraction
+from math import comb, isqrt
 
 from .cert_expand import expand_side
 from .cert_expr import free_names, parse
@@ -45,10 +53,73 @@ def weights_kind(points, weights):
     if all(u[i] * v[j] == u[j] * v[i] for i in range(len(u)) for j in range(i + 1, len(u))):
         return "degenerate (collinear control points)"
     w0, w1, w2 = weights
-    if 0 in (w0, w1, w2):
+    if any(w == 0 for w in (w0, w1, w2)):
         return "degenerate (zero weight)"
     excess = w1 * w1 - w0 * w2
-    return "parabola" if excess == 0 else "hyperbola" if excess > 0 else "ellipse"
+    sign = excess.sign() if isinstance(excess, _Sqrt) else (excess > 0) - (excess < 0)
+    return "parabola" if sign == 0 else "hyperbola" if sign > 0 else "ellipse"
+
+
+class _Sqrt:
+    """a + b√d with rational a, b and one square-free d (exact; d > 0 for a sign)."""
+
+    __slots__ = ("a", "b", "d")
+
+    def __init__(self, a, b=Fraction(0), d=None):
+        self.a, self.b, self.d = Fraction(a), Fraction(b), d
+
+    def _lift(self, o):
+        o = o if isinstance(o, _Sqrt) else _Sqrt(o)
+        d = self.d if self.d is not None else o.d
+        if self.d is not None and o.d is not None and self.d != o.d:
+            raise ValueError(f"numbers of two fields, √{self.d} and √{o.d}")
+        return o, d
+
+    def __add__(self, o):
+        o, d = self._lift(o)
+        return _Sqrt(self.a + o.a, self.b + o.b, d)
+
+    def __sub__(self, o):
+        o, d = self._lift(o)
+        return _Sqrt(self.a - o.a, self.b - o.b, d)
+
+    def __mul__(self, o):
+        o, d = self._lift(o)
+        return _Sqrt(self.a * o.a + self.b * o.b * (d or 0), self.a * o.b + self.b * o.a, d)
+
+    def __eq__(self, o):
+        o, _ = self._lift(o)
+        return self.a == o.a and self.b == o.b
+
+    def sign(self):
+        if self.b == 0:
+            return (self.a > 0) - (self.a < 0)
+        if self.d < 0:
+            raise ValueError(f"√{self.d} is not real: no sign")
+        sa, sb = (self.a > 0) - (self.a < 0), (self.b > 0) - (self.b < 0)
+        if sa == 0 or sa == sb:
+            return sb
+        # a and b√d of opposite signs: the larger square wins
+        diff = self.a * self.a - self.b * self.b * self.d
+        return sa if diff > 0 else sb if diff < 0 else 0
+
+
+def _square_free(d):
+    m = abs(d)
+    return all(m % (k * k) for k in range(2, isqrt(m) + 1))
+
+
+def _number(x, rational, need, at):
+    if isinstance(x, str):
+        return _Sqrt(rational(x, at))
+    need(isinstance(x, dict) and set(x) == {"rational", "irrational", "radicand"}, f"{at}: not p/q nor rational, irrational, radicand")
+    d = x["radicand"]
+    need(isinstance(d, str) and d.lstrip("-").isdigit(), f"{at}.radicand: not an integer")
+    d = int(d)
+    need(d not in (0, 1) and _square_free(d), f"{at}.radicand: {d} is not square-free other than 0 and 1 (√d would be rational)")
+    a, b = rational(x["rational"], f"{at}.rational"), rational(x["irrational"], f"{at}.irrational")
+    need(b != 0, f"{at}: a rational number is written as p/q")
+    return _Sqrt(a, b, d)
 
 
 _SLOTS = {(2, 0): 0, (1, 1): 1, (0, 2): 2, (1, 0): 3, (0, 1): 4, (0, 0): 5}
@@ -66,6 +137,62 @@ def _coefficients(lhs, rhs, need, at):
     return out
 
 
+def _vec(v, rational, at):
+    return [rational(x, at) for x in v]
+
+
+def _dot(u, v):
+    return sum((x * y for x, y in zip(u, v)), Fraction(0))
+
+
+def fit_data(points, weights):
+    """x(0), x(1), x(1/2), ẋ(0), ẋ(1) of the curve (weights None: a polynomial curve)."""
+    n = len(points) - 1
+    w = weights or [Fraction(1)] * (n + 1)
+
+    def at(t):
+        den = sum(w[i] * comb(n, i) * t**i * (1 - t) ** (n - i) for i in range(n + 1))
+        return [sum(w[i] * comb(n, i) * t**i * (1 - t) ** (n - i) * p[c] for i, p in enumerate(points)) / den for c in range(len(points[0]))]
+
+    d0 = [n * w[1] / w[0] * (y - x) for x, y in zip(points[0], points[1])]
+    d1 = [n * w[n - 1] / w[n] * (y - x) for x, y in zip(points[n - 1], points[n])]
+    return {"x0": at(Fraction(0)), "x1": at(Fraction(1)), "xh": at(Fraction(1, 2)), "d0": d0, "d1": d1}
+
+
+def _check_fit(fact, need, rational, at):
+    pts, ws = fact.get("points"), fact.get("weights")
+    need(isinstance(pts, list) and len(pts) >= 2, f"{at}.points: fewer than two control points")
+    need(all(isinstance(p, list) and len(p) >= 2 and len(p) == len(pts[0]) for p in pts), f"{at}.points: not of one dimension ≥ 2")
+    pts = [_vec(p, rational, f"{at}.points") for p in pts]
+    if ws is not None:
+        need(isinstance(ws, list) and len(ws) == len(pts), f"{at}.weights: not one per control point")
+        ws = _vec(ws, rational, f"{at}.weights")
+        need(ws[0] != 0 and ws[-1] != 0, f"{at}.weights: an end weight is 0")
+    data = fit_data(pts, ws)
+    listed = fact.get("data")
+    need(isinstance(listed, dict) and set(listed) == set(data), f"{at}.data: not x0, x1, xh, d0, d1")
+    for key, v in data.items():
+        got = _vec(listed[key], rational, f"{at}.data.{key}") if isinstance(listed[key], list) else None
+        need(got == v, f"{at}.data.{key}: {got}, the curve gives {v}")
+    x0, x1, xh, d0, d1 = (data[k] for k in ("x0", "x1", "xh", "d0", "d1"))
+    big_x = [a + b - 2 * c for a, b, c in zip(x0, x1, xh)]
+    m = [[Fraction(3, 4) * _dot(u, v) for v in (d0, d1)] for u in (d0, d1)]
+    r = [_dot(d0, big_x), _dot(d1, big_x)]
+    eqs = fact.get("normal_equations")
+    need(isinstance(eqs, dict) and isinstance(eqs.get("matrix"), list) and len(eqs["matrix"]) == 2, f"{at}.normal_equations: not a 2×2 matrix and rhs")
+    need([_vec(row, rational, f"{at}.normal_equations.matrix") for row in eqs["matrix"]] == m, f"{at}.normal_equations.matrix: not 3/4 of the Gram matrix of ẋ(0), ẋ(1)")
+    need(isinstance(eqs.get("rhs"), list) and _vec(eqs["rhs"], rational, f"{at}.normal_equations.rhs") == r, f"{at}.normal_equations.rhs: not (ẋ(0)·X, ẋ(1)·X)")
+    k, l = (rational(fact.get(key), f"{at}.{key}") for key in ("k", "l"))
+    for i in range(2):
+        need(m[i][0] * -k + m[i][1] * l == r[i], f"{at}: row {i} of the normal equations fails at k = {k}, l = {l}")
+    need(m[0][0] * m[1][1] - m[0][1] * m[1][0] != 0, f"{at}: the normal equations are singular")
+    a1 = [x + k * d for x, d in zip(x0, d0)]
+    a2 = [x - l * d for x, d in zip(x1, d1)]
+    mid = [(p + 3 * q + 3 * s + t) / 8 for p, q, s, t in zip(x0, a1, a2, x1)]
+    d2 = sum(((a - b) ** 2 for a, b in zip(mid, xh)), Fraction(0))
+    need(rational(fact.get("delta2"), f"{at}.delta2") == d2, f"{at}.delta2: δ² at (k, l) is {d2}")
+
+
 def check_computation(doc, need, rational):
     """Re-derives every listed fact; returns the detail line (refuses through `need`)."""
     data = doc.get("computation")
@@ -74,8 +201,8 @@ def check_computation(doc, need, rational):
     need(isinstance(rests, list), "rests_on: missing")
     for k, fact in enumerate(data["facts"]):
         at = f"computation.facts[{k}]"
-        need(isinstance(fact, dict) and isinstance(fact.get("kind"), str), f"{at}: kind missing")
-        name = fact.get("computation")
+        name = fact.get("computation") if isinstance(fact, dict) else None
+        need(isinstance(fact, dict) and (name == "fit_cubic" or isinstance(fact.get("kind"), str)), f"{at}: kind missing")
         need(name in rests, f"{at}: {name!r} is not named in rests_on")
         if name == "ImplicitConic::kind":
             sides = []
@@ -95,10 +222,16 @@ def check_computation(doc, need, rational):
             need(isinstance(pts, list) and len(pts) == 3, f"{at}.points: not three control points")
             need(all(isinstance(p, list) and p and len(p) == len(pts[0]) for p in pts), f"{at}.points: not of one dimension")
             need(isinstance(ws, list) and len(ws) == 3, f"{at}.weights: not three weights")
-            pts = [[rational(x, f"{at}.points") for x in p] for p in pts]
-            got = weights_kind(pts, [rational(w, f"{at}.weights") for w in ws])
+            pts = [[_number(x, rational, need, f"{at}.points") for x in p] for p in pts]
+            try:
+                got = weights_kind(pts, [_number(w, rational, need, f"{at}.weights") for w in ws])
+            except ValueError as e:
+                need(False, f"{at}: {e}")
+        elif name == "fit_cubic":
+            _check_fit(fact, need, rational, at)
+            got = fact.get("kind")
         else:
             need(False, f"{at}: the computation {name!r} is not one this checker knows")
-        need(got == fact["kind"], f"{at}: the type is {got!r}, the file says {fact['kind']!r}")
+        need(got == fact.get("kind"), f"{at}: the type is {got!r}, the file says {fact.get('kind')!r}")
     n = len(data["facts"])
-    return f"{n} library computation{'s' if n > 1 else ''} re-derived here from the listed inputs: the same type"
+    return f"{n} library computation{'s' if n > 1 else ''} re-derived here from the listed inputs: the same result"

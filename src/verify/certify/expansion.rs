@@ -9,43 +9,15 @@
 //! lists are there for other checkers and for readers.
 
 use super::{array, field, not_self_contained, rational, Goal, Res};
+use crate::verify::expansion::{in_coordinates, variables};
 use crate::verify::kernel::check_expanded;
 use crate::verify::kernel::expand::{expand, Expansion, Terms};
-use crate::verify::kernel::expr::Expr;
 use crate::verify::kernel::poly::Poly;
-use crate::verify::rewrite::substitute;
 use num_rational::BigRational;
 use num_traits::Zero;
 use serde_json::{json, Map, Value as Json};
 use std::collections::BTreeMap;
 use std::rc::Rc;
-
-/// The variables of a layout in the kernel's order: a scalar its name, a vector `v` its
-/// coordinates `v_1, …, v_d`.
-fn variables(layout: &[(String, usize)]) -> Vec<String> {
-    let mut out = Vec::new();
-    for (v, dim) in layout {
-        if *dim == 0 {
-            out.push(v.clone());
-        } else {
-            out.extend((1..=*dim).map(|k| format!("{v}_{k}")));
-        }
-    }
-    out
-}
-
-/// `e` with every vector of the layout written as the tuple of its coordinates.
-fn in_coordinates(e: &Expr, layout: &[(String, usize)]) -> Expr {
-    let (names, tuples): (Vec<String>, Vec<Expr>) = layout
-        .iter()
-        .filter(|(_, dim)| *dim > 0)
-        .map(|(v, dim)| {
-            let coords = (1..=*dim).map(|k| Expr::Var(format!("{v}_{k}"))).collect();
-            (v.clone(), Expr::Tuple(coords))
-        })
-        .unzip();
-    substitute(e, &names, &tuples)
-}
 
 fn poly_json(p: &Terms) -> Json {
     Json::Array(p.iter().map(|(e, c)| json!([c.to_string(), e])).collect())

@@ -13,6 +13,7 @@ use super::sample::{self, Pair, Points};
 use super::Proof;
 use crate::error::Result;
 use num_rational::BigRational;
+use num_traits::Zero;
 use std::collections::BTreeMap;
 
 /// Most grid points a re-checked file may list (all its equalities together).
@@ -74,6 +75,12 @@ pub struct Refutation {
     pub lhs: Vec<String>,
     /// The right side's value.
     pub rhs: Vec<String>,
+    /// The basis polygon of the equality's control points the sides were evaluated on (0: the
+    /// zero polygon, or no control points).
+    pub basis: usize,
+    /// For an implication, its premise (written like the sides) and its value there (zero):
+    /// the claim is the equality wherever the premise is zero.
+    pub premise: Option<(String, Vec<String>)>,
 }
 
 /// What a verdict's data is.
@@ -322,37 +329,94 @@ pub fn recheck_sampled(claimed: &mut [Claimed<'_>]) -> std::result::Result<Proof
     super::check_sampled(&cases)
 }
 
-/// Re-checks a counterexample: both sides of `lhs = rhs` evaluated at `ints` and `at` must be
-/// the recorded values, and differ.
+/// A counterexample to re-check, its expressions parsed from the file's text.
+pub struct Counterexample<'a> {
+    /// The left side.
+    pub lhs: &'a Expr,
+    /// The right side.
+    pub rhs: &'a Expr,
+    /// For an implication: its premise and the recorded value (it must be zero).
+    pub premise: Option<(&'a Expr, Vec<BigRational>)>,
+    /// The integer symbols' values.
+    pub ints: BTreeMap<String, i64>,
+    /// The real symbols' values.
+    pub at: Vec<(String, BigRational)>,
+    /// The basis polygon of the control points (0 without them).
+    pub basis: usize,
+    /// The goal's symbols at the point and basis polygon, read from the file.
+    pub env: Box<dyn Points<BigRational> + 'a>,
+}
+
+/// Re-checks a counterexample: both sides of `lhs = rhs` evaluated at `ints`, `at` and the
+/// basis polygon must be the recorded values, and differ; an implication's premise evaluated
+/// there must be the recorded value, and zero (so the premise holds and the equality fails).
 pub fn recheck_refutation(
-    lhs: &Expr,
-    rhs: &Expr,
-    ints: &BTreeMap<String, i64>,
-    at: &[(String, BigRational)],
+    c: &mut Counterexample<'_>,
     recorded: (&[BigRational], &[BigRational]),
 ) -> std::result::Result<(), String> {
-    let env = VarEnv(at.iter().map(|(k, v)| (k.clone(), Value::S(v.clone()))).collect());
+    let polygons = c.env.polygons();
+    if c.basis >= polygons {
+        return Err(format!("basis polygon {}: there are {polygons}", c.basis));
+    }
+    let (names, values): (Vec<String>, Vec<BigRational>) = c.at.iter().cloned().unzip();
+    let env = c.env.at(c.basis, &names, &values).map_err(|e| e.to_string())?;
+    let ints = &c.ints;
     let side = |e: &Expr, which: &str, want: &[BigRational]| -> std::result::Result<Value<BigRational>, String> {
-        let v = super::eval::Evaluator::new(&env, ints.clone())
+        let v = super::eval::Evaluator::new(env, ints.clone())
             .eval(e)
-            .map_err(|err| format!("the {which} side: {err}"))?;
+            .map_err(|err| format!("the {which}: {err}"))?;
         let got: Vec<BigRational> = v.entries().into_iter().cloned().collect();
         if got != want {
             return Err(format!(
-                "the {which} side is ({}), the file says ({})",
+                "the {which} is ({}), the file says ({})",
                 list(&got),
                 list(want)
             ));
         }
         Ok(v)
     };
-    let l = side(lhs, "left", recorded.0)?;
-    let r = side(rhs, "right", recorded.1)?;
+    if let Some((p, want)) = &c.premise {
+        let v = side(p, "premise", want)?;
+        if v.entries().iter().any(|x| !x.is_zero()) {
+            return Err(format!("the premise is ({}), not zero: it does not hold there", v));
+        }
+    }
+    let l = side(c.lhs, "left side", recorded.0)?;
+    let r = side(c.rhs, "right side", recorded.1)?;
     match l.equals(&r) {
         Some(false) => Ok(()),
         Some(true) => Err(format!("both sides are ({}): no counterexample", l)),
         None => Err("the sides cannot be compared".into()),
     }
+}
+
+/// Re-checks bounded evidence of a limit (Theorem 1.2's, `verified`): the distances `listed`
+/// in a file must be the ones `computed` again, never increase with `r`, and each be at most
+/// its `bound`. Evidence only: nothing here makes a [`Proof`].
+pub fn recheck_bounded(
+    listed: &[BigRational],
+    computed: &[BigRational],
+    bounds: &[BigRational],
+) -> std::result::Result<(), String> {
+    if listed.len() != computed.len() || computed.len() != bounds.len() {
+        return Err(format!(
+            "{} distances listed for r = 0..={}",
+            listed.len(),
+            computed.len().saturating_sub(1)
+        ));
+    }
+    for (r, ((l, c), b)) in listed.iter().zip(computed).zip(bounds).enumerate() {
+        if l != c {
+            return Err(format!("at r = {r} the distance is {c}, the file says {l}"));
+        }
+        if c > b {
+            return Err(format!("at r = {r} the distance {c} exceeds the bound {b}"));
+        }
+    }
+    if let Some(r) = computed.windows(2).position(|w| w[1] > w[0]) {
+        return Err(format!("the distance grows from r = {r} to r = {}", r + 1));
+    }
+    Ok(())
 }
 
 /// The printed entries of a value.

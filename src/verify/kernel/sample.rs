@@ -202,7 +202,7 @@ pub enum Pair<A> {
         lhs: Value<A>,
         rhs: Value<A>,
         equal: Option<bool>,
-        /// The counterexample as data, when the sides are unequal on the only polygon.
+        /// The counterexample as data, when the sides are unequal.
         refutation: Option<Box<Refutation>>,
     },
     /// A denominator vanishes at the grid point with these indices into the proposed points.
@@ -288,19 +288,17 @@ pub fn check_pair<A: Alg>(
                     });
                 }
                 equal => {
-                    let refutation = (polygons == 1 && equal == Some(false)).then(|| {
-                        let equality = certificate::equality(
-                            bounds,
-                            &[],
-                            Vec::new(),
-                            (polygons, Vec::new()),
-                            written(&*env, bounds),
-                        );
+                    let refutation = (equal == Some(false)).then(|| {
+                        let points = if polygons > 1 { env.control_points() } else { Vec::new() };
+                        let equality =
+                            certificate::equality(bounds, &[], Vec::new(), (polygons, points), written(&*env, bounds));
                         Box::new(Refutation {
                             equality,
                             at: bounds.params.iter().cloned().zip(values.iter().cloned()).collect(),
                             lhs: certificate::entries(&l),
                             rhs: certificate::entries(&r),
+                            basis: b,
+                            premise: None,
                         })
                     });
                     return Ok(Pair::Differs {
