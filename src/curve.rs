@@ -25,7 +25,7 @@ use crate::hull::convex_weights;
 use crate::kernel::{de_casteljau, eval_cubic, with_column};
 use crate::point::{common_dimension, AffineMap, Point, PointList};
 use crate::scalar::Scalar;
-use crate::space::{PointN, VectorSpace};
+use crate::space::{common_dim, PointN, VectorSpace};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use smallvec::SmallVec;
@@ -111,21 +111,6 @@ pub(crate) fn elevated_point<T: Scalar, P: VectorSpace<Scalar = T>>(points: &[P]
     }
 }
 
-/// Checks that `points` is non-empty and of one dimension; returns that dimension.
-pub(crate) fn common_dim<P: VectorSpace>(points: &[P], what: &'static str) -> Result<usize> {
-    let first = points.first().ok_or(Error::Empty(what))?;
-    let dim = first.dim();
-    for (i, p) in points.iter().enumerate() {
-        if p.dim() != dim {
-            return Err(Error::DimensionMismatch {
-                expected: dim,
-                found: p.dim(),
-                context: format!("{what}, point {i}"),
-            });
-        }
-    }
-    Ok(dim)
-}
 
 impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     /// A curve from its control points; empty polygons, mixed dimensions and degrees above

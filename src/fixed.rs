@@ -2,12 +2,12 @@
 //! kurbo's `QuadBez` and `CubicBez`: [`BezierN<P, N>`] stores `[P; N]`, with [`Line`],
 //! [`Quad`] and [`Cubic`] for degrees 1 to 3.
 
-use crate::curve::{common_dim, elevated_point, elevation_step, Bezier};
+use crate::curve::{elevated_point, elevation_step, Bezier};
 use crate::error::{Error, Result, MAX_DEGREE};
 use crate::kernel::{de_casteljau, eval_cubic, split_fixed};
 use crate::param::{ParamCurve, ParamCurveDeriv};
 use crate::scalar::Scalar;
-use crate::space::{PointN, VectorSpace};
+use crate::space::{common_dim, PointN, VectorSpace};
 
 /// A Bézier curve with exactly `N` control points (degree `N - 1`), stored as an array;
 /// `Copy` when `P` is. `N = 0` and degrees above [`MAX_DEGREE`] do not compile.

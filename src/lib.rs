@@ -39,6 +39,7 @@
 mod any_curve;
 mod bernstein;
 mod conic;
+mod coords;
 mod curve;
 mod error;
 pub mod exact;

@@ -51,19 +51,23 @@ pub trait VectorSpace: Clone + PartialEq + fmt::Debug + 'static {
     }
 }
 
-/// A point with `N` coordinates of type `T`, stored inline; `Copy` when `T` is.
-///
-/// ```
-/// use casteljau::{Point2, PointN};
-/// let a = Point2::new(1.0, 2.0);
-/// let b: Point2<f64> = [4.0, 6.0].into();
-/// assert_eq!(b - a, Point2::new(3.0, 4.0));
-/// assert_eq!((b - a) * 0.5 + a, Point2::new(2.5, 4.0));
-/// assert_eq!(a[1], 2.0);
-/// assert_eq!(a.to_string().parse::<Point2<f64>>().unwrap(), a);
-/// ```
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct PointN<T, const N: usize>(pub [T; N]);
+pub use crate::coords::PointN;
+
+/// Checks that `points` is non-empty and of one dimension; returns that dimension.
+pub(crate) fn common_dim<P: VectorSpace>(points: &[P], what: &'static str) -> Result<usize> {
+    let first = points.first().ok_or(Error::Empty(what))?;
+    let dim = first.dim();
+    for (i, p) in points.iter().enumerate() {
+        if p.dim() != dim {
+            return Err(Error::DimensionMismatch {
+                expected: dim,
+                found: p.dim(),
+                context: format!("{what}, point {i}"),
+            });
+        }
+    }
+    Ok(dim)
+}
 
 /// A point of the plane.
 pub type Point2<T> = PointN<T, 2>;
