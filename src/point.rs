@@ -14,7 +14,6 @@ use std::ops::{Index, IndexMut};
 use std::str::FromStr;
 
 pub use crate::coords::Point;
-pub(crate) use crate::coords::INLINE_COORDS;
 
 /// A difference of two points; the same type as [`Point`].
 pub type Vector<T> = Point<T>;
@@ -198,6 +197,31 @@ impl<T: Scalar> VectorSpace for Point<T> {
         for (a, b) in self.coords.iter_mut().zip(&other.coords) {
             *a -= b;
         }
+    }
+    // The kernel choice: the scalar type's kernel, if any.
+    #[inline(always)]
+    fn curve_eval(points: &[Self], t: &T) -> Option<Self> {
+        T::curve_eval(points, t)
+    }
+    #[inline(always)]
+    fn curve_derivative_at(points: &[Self], k: usize, t: &T) -> Option<Self> {
+        T::curve_derivative_at(points, k, t)
+    }
+    #[inline(always)]
+    fn curve_elevate(points: &[Self]) -> Option<Result<Vec<Self>>> {
+        T::curve_elevate(points)
+    }
+    #[inline(always)]
+    fn curve_elevate_by(points: &[Self], r: usize) -> Option<Result<Vec<Self>>> {
+        T::curve_elevate_by(points, r)
+    }
+    #[inline(always)]
+    fn curve_split(points: &[Self], t: &T) -> Option<(Vec<Self>, Vec<Self>)> {
+        T::curve_split(points, t)
+    }
+    #[inline(always)]
+    fn curve_derivative(points: &[Self], k: usize) -> Option<Result<Vec<Self>>> {
+        T::curve_derivative(points, k)
     }
 }
 

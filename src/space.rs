@@ -7,7 +7,7 @@
 //! `Copy` for `f64`, stored inline, with mismatched dimensions a type error.
 
 use crate::error::{Error, Result};
-use crate::scalar::Scalar;
+use crate::scalar::{via_points, Scalar};
 use std::fmt;
 use std::ops::{Index, IndexMut};
 use std::str::FromStr;
@@ -49,9 +49,77 @@ pub trait VectorSpace: Clone + PartialEq + fmt::Debug + 'static {
         out.sub_assign_ref(other);
         out
     }
+
+    // The kernel choice of the generic curve code: a point type's curve kernel for one
+    // operation, `None` (the default) for the generic algorithm. `Point` and `PointN` hand
+    // the choice to their scalar type (the kernel methods of `Scalar`). Hidden: how the public
+    // methods choose, not an API of their own.
+
+    /// `b(t)` for the curve on `points`.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_eval(points: &[Self], t: &Self::Scalar) -> Option<Self> {
+        let _ = (points, t);
+        None
+    }
+    /// The `k`-th derivative vector at `t`, `k` at most the degree.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_derivative_at(points: &[Self], k: usize, t: &Self::Scalar) -> Option<Self> {
+        let _ = (points, k, t);
+        None
+    }
+    /// One step of degree elevation.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_elevate(points: &[Self]) -> Option<Result<Vec<Self>>> {
+        let _ = points;
+        None
+    }
+    /// `r` steps of degree elevation.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_elevate_by(points: &[Self], r: usize) -> Option<Result<Vec<Self>>> {
+        let _ = (points, r);
+        None
+    }
+    /// The two halves of the subdivision at `t`.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_split(points: &[Self], t: &Self::Scalar) -> Option<(Vec<Self>, Vec<Self>)> {
+        let _ = (points, t);
+        None
+    }
+    /// The `k`-th derivative curve.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_derivative(points: &[Self], k: usize) -> Option<Result<Vec<Self>>> {
+        let _ = (points, k);
+        None
+    }
 }
 
 pub use crate::coords::PointN;
+
+/// A kernel's fallible answer on fixed-dimension points handed over as [`crate::Point`]s.
+fn fixed_result<T: Scalar, const N: usize>(
+    points: &[PointN<T, N>],
+    kernel: impl FnOnce(&[crate::coords::Point<T>]) -> Option<Result<Vec<crate::coords::Point<T>>>>,
+) -> Option<Result<Vec<PointN<T, N>>>> {
+    let mut error = None;
+    let out = via_points(points, |p| match kernel(p)? {
+        Ok(points) => Some(points),
+        Err(e) => {
+            error = Some(e);
+            None
+        }
+    });
+    match (out, error) {
+        (Some(points), _) => Some(Ok(points)),
+        (None, Some(e)) => Some(Err(e)),
+        (None, None) => None,
+    }
+}
 
 /// Checks that `points` is non-empty and of one dimension; returns that dimension.
 pub(crate) fn common_dim<P: VectorSpace>(points: &[P], what: &'static str) -> Result<usize> {
@@ -162,6 +230,54 @@ impl<T: Scalar, const N: usize> VectorSpace for PointN<T, N> {
         for (a, b) in self.0.iter_mut().zip(&other.0) {
             *a -= b;
         }
+    }
+    // The kernel choice: the scalar type's kernel, if any, for evaluation its own for
+    // fixed-dimension points; the others on the points as `Point`s, and only when the scalar
+    // type has curve kernels (a constant: other types keep no trace of the conversion).
+    #[inline(always)]
+    fn curve_eval(points: &[Self], t: &T) -> Option<Self> {
+        T::curve_eval_fixed(points, t)
+    }
+    #[inline(always)]
+    fn curve_derivative_at(points: &[Self], k: usize, t: &T) -> Option<Self> {
+        if !T::CURVE_KERNELS {
+            return None;
+        }
+        via_points(points, |p| T::curve_derivative_at(p, k, t).map(|p| vec![p])).map(|mut v| v.remove(0))
+    }
+    #[inline(always)]
+    fn curve_elevate(points: &[Self]) -> Option<Result<Vec<Self>>> {
+        if !T::CURVE_KERNELS {
+            return None;
+        }
+        fixed_result(points, T::curve_elevate)
+    }
+    #[inline(always)]
+    fn curve_elevate_by(points: &[Self], r: usize) -> Option<Result<Vec<Self>>> {
+        if !T::CURVE_KERNELS {
+            return None;
+        }
+        fixed_result(points, |p| T::curve_elevate_by(p, r))
+    }
+    #[inline(always)]
+    fn curve_split(points: &[Self], t: &T) -> Option<(Vec<Self>, Vec<Self>)> {
+        if !T::CURVE_KERNELS {
+            return None;
+        }
+        let mut right = None;
+        let left = via_points(points, |p| {
+            let (l, r) = T::curve_split(p, t)?;
+            right = Some(r);
+            Some(l)
+        })?;
+        Some((left, via_points(&[], |_| right)?))
+    }
+    #[inline(always)]
+    fn curve_derivative(points: &[Self], k: usize) -> Option<Result<Vec<Self>>> {
+        if !T::CURVE_KERNELS {
+            return None;
+        }
+        fixed_result(points, |p| T::curve_derivative(p, k))
     }
 }
 

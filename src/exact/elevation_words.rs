@@ -29,7 +29,7 @@
 
 use crate::exact::gcd::gcd_u64;
 use crate::exact::gcd::{self, Part};
-use crate::point::Point;
+use crate::coords::Point;
 use num_bigint::{BigInt, BigUint, Sign};
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};

@@ -13,7 +13,7 @@
 
 use crate::exact::fraction_free::{common_denominator, transpose, Int};
 use crate::exact::gcd;
-use crate::point::Point;
+use crate::coords::Point;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
