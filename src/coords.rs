@@ -62,7 +62,6 @@ impl<T> Point<T> {
     pub fn into_coords(self) -> Vec<T> {
         self.coords.into_vec()
     }
-
 }
 
 /// A point with `N` coordinates of type `T`, stored inline; `Copy` when `T` is.

@@ -17,9 +17,11 @@
 
 use crate::bernstein::{bernstein_all, bernstein_to_power, binomial_row, power_to_bernstein, reparametrize};
 use crate::error::{check_degree, Error, Result};
-use crate::fixed::{elevate_points, split_points};
 use crate::hull::convex_weights;
-use crate::kernel::{de_casteljau, eval_cubic, with_column};
+use crate::kernel::{
+    de_casteljau, elevate_points, elevated_point, elevation_step, eval_cubic, split_points, with_column,
+};
+use crate::param::{ParamCurve, ParamCurveDeriv};
 use crate::point::{common_dimension, AffineMap, Point, PointList};
 use crate::scalar::Scalar;
 use crate::space::{common_dim, PointN, VectorSpace};
@@ -88,27 +90,6 @@ pub struct ElevationDistance<T> {
     /// `max_i |b_i^{(r)} - b(i/(n+r))|²`, the squared Euclidean distance (exact).
     pub max_squared: T,
 }
-
-/// `1/(n+1)`, the step of the weights of (7), divided once: its multiples `i · 1/(n+1)`
-/// are the weights `i/(n+1)`, exactly for exact scalars, with one rounding more for floats.
-#[inline(always)]
-pub(crate) fn elevation_step<T: Scalar>(n: usize) -> Result<T> {
-    T::one().checked_div(&T::from_usize(n + 1))
-}
-
-/// Point `i` of the polygon (7) elevated from the `n + 1` `points`, given `step = 1/(n+1)`.
-#[inline(always)]
-pub(crate) fn elevated_point<T: Scalar, P: VectorSpace<Scalar = T>>(points: &[P], i: usize, step: &T) -> P {
-    let n = points.len() - 1;
-    if i == 0 {
-        points[0].clone()
-    } else if i > n {
-        points[n].clone()
-    } else {
-        points[i].lerp_to(&points[i - 1], &T::from_usize(i).mul_ref(step))
-    }
-}
-
 
 impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     /// A curve from its control points; empty polygons, mixed dimensions and degrees above
@@ -474,6 +455,33 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
             }
         }
         Ok(self.derivative(k)?.eval(t))
+    }
+}
+
+impl<T: Scalar, P: VectorSpace<Scalar = T>> ParamCurve for Bezier<P> {
+    type Scalar = T;
+    type Point = P;
+
+    fn eval(&self, t: &T) -> Result<P> {
+        Ok(Bezier::eval(self, t))
+    }
+    fn split_at(&self, t0: &T) -> Result<(Self, Self)> {
+        Ok(Bezier::split_at(self, t0))
+    }
+    fn degree(&self) -> usize {
+        Bezier::degree(self)
+    }
+}
+
+/// The hodograph; a constant curve's derivative is the constant zero curve.
+impl<T: Scalar, P: VectorSpace<Scalar = T>> ParamCurveDeriv for Bezier<P> {
+    type Deriv = Self;
+
+    fn deriv(&self) -> Result<Self> {
+        if self.degree() == 0 {
+            return Bezier::from_points([VectorSpace::zero_like(&self.points()[0])]);
+        }
+        self.derivative(1)
     }
 }
 

@@ -505,9 +505,9 @@ pub fn delta_squared_gradient<T: Scalar>(data: &CubicFitData<T>, k: &T, l: &T) -
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::least_squares::*;
     use crate::exact::fit_numbers::FitData;
     use crate::exact::fraction_free::Int;
+    use crate::least_squares::*;
     use num_bigint::BigInt;
     use num_rational::BigRational;
     use proptest::prelude::*;

@@ -222,7 +222,6 @@ impl Ring for Interval {
 
 forward_ring_ops!(Interval);
 
-
 /// Decisions of the filtered predicates: how many signs the intervals decided, and how many
 /// needed the exact fallback.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -37,8 +37,8 @@
 
 use crate::bernstein::binomial_row;
 use crate::curve::BezierCurve;
-use crate::exact::fraction_free;
 use crate::error::{check_degree, Error, Result, MAX_DIMENSION};
+use crate::exact::fraction_free;
 use crate::kernel::{casteljau_step, with_column};
 use crate::point::{common_dimension, Point};
 use crate::quadratic::QuadraticIrrational;

@@ -67,4 +67,3 @@ impl BezierCurve<BigRational> {
         BezierCurve::new(fraction_free::elevate_by(self.points(), r)?)
     }
 }
-

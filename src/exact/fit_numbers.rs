@@ -101,4 +101,3 @@ pub(crate) fn fit_cubic_on<I: Int>(data: &FitData<'_>) -> Option<Option<FitNumbe
         gram_determinant,
     }))
 }
-

@@ -30,11 +30,11 @@
 //! `n(n+1)/2`, and no gcd until the end. In exact arithmetic every algorithm gives the same
 //! value, so the cheapest one wins.
 
+use crate::coords::Point;
 use crate::error::{check_degree, Error, Result};
 use crate::exact::gcd::gcd_u128;
 use crate::exact::gcd::{self, Part};
 use crate::exact::{elevation_words, splitting};
-use crate::coords::Point;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -547,11 +547,7 @@ fn net_numerator<I: Int>(x: &[I], n: usize, (pu, su): (&I, &I), (pv, sv): (&I, &
 }
 
 // One coordinate at a time over its own common denominator, as `curve_eval`.
-fn surface_eval<I: Int>(
-    sf: &Net<'_>,
-    u: &BigRational,
-    v: &BigRational,
-) -> Option<Point<BigRational>> {
+fn surface_eval<I: Int>(sf: &Net<'_>, u: &BigRational, v: &BigRational) -> Option<Point<BigRational>> {
     let (m, n) = sf.degrees();
     let (pu, qu, su) = parameter::<I>(u)?;
     let (pv, qv, sv) = parameter::<I>(v)?;

@@ -84,7 +84,10 @@ pub(crate) fn enclose_points(points: &[Point<Interval>], t: &Interval) -> Option
 /// `b(t)` for interval points of fixed dimension `D` (1 to 3; `None` for more, which take
 /// the generic algorithm), as [`enclose_points`].
 #[inline(always)]
-pub(crate) fn enclose_fixed<const D: usize>(points: &[PointN<Interval, D>], t: &Interval) -> Option<PointN<Interval, D>> {
+pub(crate) fn enclose_fixed<const D: usize>(
+    points: &[PointN<Interval, D>],
+    t: &Interval,
+) -> Option<PointN<Interval, D>> {
     if D > 3 {
         return None;
     }
