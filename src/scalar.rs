@@ -167,7 +167,7 @@ pub trait Scalar:
         if !Self::CURVE_KERNELS {
             return None;
         }
-        via_points(points, |p| Self::curve_eval(p, t).map(|p| vec![p])).map(|mut v| v.remove(0))
+        Self::curve_eval(&to_points(points), t).map(to_fixed)
     }
     /// The `k`-th derivative vector at `t`, `k` at most the degree.
     #[doc(hidden)]
@@ -273,22 +273,18 @@ pub trait Scalar:
     }
 }
 
-/// `kernel` on fixed-dimension points handed over as [`Point`]s, its points back as
-/// fixed-dimension ones (each has the `N` coordinates of the points given).
-pub(crate) fn via_points<T: Clone, const N: usize>(
-    points: &[PointN<T, N>],
-    kernel: impl FnOnce(&[Point<T>]) -> Option<Vec<Point<T>>>,
-) -> Option<Vec<PointN<T, N>>> {
-    let points: Vec<Point<T>> = points.iter().map(|p| Point::from_valid(p.0.iter().cloned())).collect();
-    let out = kernel(&points)?;
-    Some(
-        out.into_iter()
-            .map(|p| match p.into_coords().try_into() {
-                Ok(coords) => PointN(coords),
-                Err(_) => unreachable!("the kernels keep the dimension"),
-            })
-            .collect(),
-    )
+/// Fixed-dimension points as [`Point`]s, for the kernels on [`Point`]s.
+pub(crate) fn to_points<T: Clone, const N: usize>(points: &[PointN<T, N>]) -> Vec<Point<T>> {
+    points.iter().map(|p| Point::from_valid(p.0.iter().cloned())).collect()
+}
+
+/// A kernel's point back as the fixed-dimension point it was computed for (the kernels keep
+/// the dimension of the points they are given).
+pub(crate) fn to_fixed<T, const N: usize>(p: Point<T>) -> PointN<T, N> {
+    match p.into_coords().try_into() {
+        Ok(coords) => PointN(coords),
+        Err(_) => unreachable!("the kernels keep the dimension"),
+    }
 }
 
 impl Scalar for f64 {

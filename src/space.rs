@@ -7,7 +7,7 @@
 //! `Copy` for `f64`, stored inline, with mismatched dimensions a type error.
 
 use crate::error::{Error, Result};
-use crate::scalar::{via_points, Scalar};
+use crate::scalar::{to_fixed, to_points, Scalar};
 use std::fmt;
 use std::ops::{Index, IndexMut};
 use std::str::FromStr;
@@ -101,24 +101,9 @@ pub trait VectorSpace: Clone + PartialEq + fmt::Debug + 'static {
 
 pub use crate::coords::PointN;
 
-/// A kernel's fallible answer on fixed-dimension points handed over as [`crate::Point`]s.
-fn fixed_result<T: Scalar, const N: usize>(
-    points: &[PointN<T, N>],
-    kernel: impl FnOnce(&[crate::coords::Point<T>]) -> Option<Result<Vec<crate::coords::Point<T>>>>,
-) -> Option<Result<Vec<PointN<T, N>>>> {
-    let mut error = None;
-    let out = via_points(points, |p| match kernel(p)? {
-        Ok(points) => Some(points),
-        Err(e) => {
-            error = Some(e);
-            None
-        }
-    });
-    match (out, error) {
-        (Some(points), _) => Some(Ok(points)),
-        (None, Some(e)) => Some(Err(e)),
-        (None, None) => None,
-    }
+/// A kernel's points back as fixed-dimension points.
+fn all_fixed<T, const N: usize>(points: Vec<crate::coords::Point<T>>) -> Vec<PointN<T, N>> {
+    points.into_iter().map(to_fixed).collect()
 }
 
 /// Checks that `points` is non-empty and of one dimension; returns that dimension.
@@ -243,41 +228,36 @@ impl<T: Scalar, const N: usize> VectorSpace for PointN<T, N> {
         if !T::CURVE_KERNELS {
             return None;
         }
-        via_points(points, |p| T::curve_derivative_at(p, k, t).map(|p| vec![p])).map(|mut v| v.remove(0))
+        T::curve_derivative_at(&to_points(points), k, t).map(to_fixed)
     }
     #[inline(always)]
     fn curve_elevate(points: &[Self]) -> Option<Result<Vec<Self>>> {
         if !T::CURVE_KERNELS {
             return None;
         }
-        fixed_result(points, T::curve_elevate)
+        Some(T::curve_elevate(&to_points(points))?.map(all_fixed))
     }
     #[inline(always)]
     fn curve_elevate_by(points: &[Self], r: usize) -> Option<Result<Vec<Self>>> {
         if !T::CURVE_KERNELS {
             return None;
         }
-        fixed_result(points, |p| T::curve_elevate_by(p, r))
+        Some(T::curve_elevate_by(&to_points(points), r)?.map(all_fixed))
     }
     #[inline(always)]
     fn curve_split(points: &[Self], t: &T) -> Option<(Vec<Self>, Vec<Self>)> {
         if !T::CURVE_KERNELS {
             return None;
         }
-        let mut right = None;
-        let left = via_points(points, |p| {
-            let (l, r) = T::curve_split(p, t)?;
-            right = Some(r);
-            Some(l)
-        })?;
-        Some((left, via_points(&[], |_| right)?))
+        let (left, right) = T::curve_split(&to_points(points), t)?;
+        Some((all_fixed(left), all_fixed(right)))
     }
     #[inline(always)]
     fn curve_derivative(points: &[Self], k: usize) -> Option<Result<Vec<Self>>> {
         if !T::CURVE_KERNELS {
             return None;
         }
-        fixed_result(points, |p| T::curve_derivative(p, k))
+        Some(T::curve_derivative(&to_points(points), k)?.map(all_fixed))
     }
 }
 
