@@ -193,6 +193,7 @@ pub trait Scalar:
     /// The two halves of a subdivision at `t`.
     #[doc(hidden)]
     #[inline(always)]
+    #[allow(clippy::type_complexity)] // the two halves' points, named once here
     fn curve_split(points: &[Point<Self>], t: &Self) -> Option<(Vec<Point<Self>>, Vec<Point<Self>>)> {
         let _ = (points, t);
         None

@@ -387,8 +387,8 @@ fn path_starts(code: &str) -> Vec<(String, &str)> {
             at == 0 || !(bytes[at - 1].is_ascii_alphanumeric() || bytes[at - 1] == b'_' || bytes[at - 1] == b':');
         if boundary {
             for word in ["crate::", "self::"] {
-                if rest.starts_with(word) {
-                    out.push((word.trim_end_matches("::").to_string(), &rest[word.len()..]));
+                if let Some(tail) = rest.strip_prefix(word) {
+                    out.push((word.trim_end_matches("::").to_string(), tail));
                 }
             }
             if rest.starts_with("super::") {
