@@ -17,20 +17,20 @@
 
 use crate::bernstein::{bernstein_all, bernstein_to_power, binomial_row, power_to_bernstein, reparametrize};
 use crate::error::{check_degree, Error, Result};
-use crate::exact::dispatch::{curve_back, exact_curve, exact_scalar, point_back, scalar_back};
-use crate::exact::power_basis;
-use crate::fixed::{elevate_points, split_points};
-use crate::float::interval_eval;
 use crate::hull::convex_weights;
-use crate::kernel::{de_casteljau, eval_cubic, with_column};
+use crate::kernel::{
+    de_casteljau, elevate_points, elevated_point, elevation_step, eval_cubic, split_points, with_column,
+};
+use crate::param::{ParamCurve, ParamCurveDeriv};
 use crate::point::{common_dimension, AffineMap, Point, PointList};
 use crate::scalar::Scalar;
-use crate::space::{PointN, VectorSpace};
+use crate::space::{common_dim, PointN, VectorSpace};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use smallvec::SmallVec;
 use std::fmt;
 
+mod exact;
 mod scheme;
 pub use scheme::DeCasteljauScheme;
 
@@ -89,42 +89,6 @@ pub struct ElevationDistance<T> {
     pub max_norm: T,
     /// `max_i |b_i^{(r)} - b(i/(n+r))|²`, the squared Euclidean distance (exact).
     pub max_squared: T,
-}
-
-/// `1/(n+1)`, the step of the weights of (7), divided once: its multiples `i · 1/(n+1)`
-/// are the weights `i/(n+1)`, exactly for exact scalars, with one rounding more for floats.
-#[inline(always)]
-pub(crate) fn elevation_step<T: Scalar>(n: usize) -> Result<T> {
-    T::one().checked_div(&T::from_usize(n + 1))
-}
-
-/// Point `i` of the polygon (7) elevated from the `n + 1` `points`, given `step = 1/(n+1)`.
-#[inline(always)]
-pub(crate) fn elevated_point<T: Scalar, P: VectorSpace<Scalar = T>>(points: &[P], i: usize, step: &T) -> P {
-    let n = points.len() - 1;
-    if i == 0 {
-        points[0].clone()
-    } else if i > n {
-        points[n].clone()
-    } else {
-        points[i].lerp_to(&points[i - 1], &T::from_usize(i).mul_ref(step))
-    }
-}
-
-/// Checks that `points` is non-empty and of one dimension; returns that dimension.
-pub(crate) fn common_dim<P: VectorSpace>(points: &[P], what: &'static str) -> Result<usize> {
-    let first = points.first().ok_or(Error::Empty(what))?;
-    let dim = first.dim();
-    for (i, p) in points.iter().enumerate() {
-        if p.dim() != dim {
-            return Err(Error::DimensionMismatch {
-                expected: dim,
-                found: p.dim(),
-                context: format!("{what}, point {i}"),
-            });
-        }
-    }
-    Ok(dim)
 }
 
 impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
@@ -222,12 +186,7 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     /// kernel of [`interval_de_casteljau`](crate::interval_de_casteljau), per coordinate.
     #[inline]
     pub fn eval(&self, t: &T) -> P {
-        if T::EXACT {
-            if let Some(p) = self.eval_exact(t) {
-                return p;
-            }
-        }
-        if let Some(p) = interval_eval(self, t) {
+        if let Some(p) = P::curve_eval(&self.points, t) {
             return p;
         }
         // A cubic, the common case, is tested for first and worked on as an array of
@@ -243,13 +202,6 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     /// kernel is tested against.
     pub fn eval_reference(&self, t: &T) -> P {
         self.eval_any(t)
-    }
-
-    /// [`Self::eval`] by the fraction-free kernel, when the points are exact rationals.
-    #[cold]
-    fn eval_exact(&self, t: &T) -> Option<P> {
-        let (c, t) = (exact_curve(self)?, exact_scalar(t)?);
-        Some(point_back(c.eval_nested(t)))
     }
 
     /// [`Self::eval`] for any number of points. Cold, so that the cubic's code is the one
@@ -296,8 +248,7 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     /// [`Self::elevate`] by the fraction-free kernel, when the points are exact rationals.
     #[cold]
     fn elevate_exact(&self) -> Option<Result<Self>> {
-        let c = exact_curve(self)?;
-        Some(c.elevate_fraction_free().map(curve_back))
+        Some(P::curve_elevate(&self.points)?.map(Bezier::from_valid))
     }
 
     /// [`Self::elevate`] by the steps of (7) on the scalar type itself, whatever it is: the
@@ -348,8 +299,8 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     /// ```
     pub fn elevate_by(&self, r: usize) -> Result<Self> {
         if T::EXACT {
-            if let Some(c) = exact_curve(self) {
-                return Ok(curve_back(c.elevate_by_fraction_free(r)?));
+            if let Some(points) = P::curve_elevate_by(&self.points, r) {
+                return Ok(Bezier::from_valid(points?));
             }
         }
         self.elevate_by_reference(r)
@@ -408,9 +359,8 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     /// [`Self::split_at`] by the fraction-free kernel, when the points are exact rationals.
     #[cold]
     fn split_exact(&self, t0: &T) -> Option<(Self, Self)> {
-        let (c, t0) = (exact_curve(self)?, exact_scalar(t0)?);
-        let (left, right) = c.split_fraction_free(t0);
-        Some((curve_back(left), curve_back(right)))
+        let (left, right) = P::curve_split(&self.points, t0)?;
+        Some((Bezier::from_valid(left), Bezier::from_valid(right)))
     }
 
     /// [`Self::split_at`] by de Casteljau's steps on the scalar type itself, whatever it
@@ -460,8 +410,8 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     /// ([`BezierCurve::derivative_fraction_free`]).
     pub fn derivative(&self, k: usize) -> Result<Self> {
         if T::EXACT {
-            if let Some(c) = exact_curve(self) {
-                return Ok(curve_back(c.derivative_fraction_free(k)?));
+            if let Some(points) = P::curve_derivative(&self.points, k) {
+                return Ok(Bezier::from_valid(points?));
             }
         }
         self.derivative_reference(k)
@@ -500,11 +450,38 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
             return Ok(self.points[0].zero_like());
         }
         if T::EXACT {
-            if let (Some(c), Some(t)) = (exact_curve(self), exact_scalar(t)) {
-                return Ok(point_back(c.derivative_at_nested(k, t)));
+            if let Some(p) = P::curve_derivative_at(&self.points, k, t) {
+                return Ok(p);
             }
         }
         Ok(self.derivative(k)?.eval(t))
+    }
+}
+
+impl<T: Scalar, P: VectorSpace<Scalar = T>> ParamCurve for Bezier<P> {
+    type Scalar = T;
+    type Point = P;
+
+    fn eval(&self, t: &T) -> Result<P> {
+        Ok(Bezier::eval(self, t))
+    }
+    fn split_at(&self, t0: &T) -> Result<(Self, Self)> {
+        Ok(Bezier::split_at(self, t0))
+    }
+    fn degree(&self) -> usize {
+        Bezier::degree(self)
+    }
+}
+
+/// The hodograph; a constant curve's derivative is the constant zero curve.
+impl<T: Scalar, P: VectorSpace<Scalar = T>> ParamCurveDeriv for Bezier<P> {
+    type Deriv = Self;
+
+    fn deriv(&self) -> Result<Self> {
+        if self.degree() == 0 {
+            return Bezier::from_points([VectorSpace::zero_like(&self.points()[0])]);
+        }
+        self.derivative(1)
     }
 }
 
@@ -559,16 +536,10 @@ impl<T: Scalar> BezierCurve<T> {
     /// Exact rationals take Newton's forward formula over integers (`exact::power_basis`).
     pub fn from_power(coeffs: &[Point<T>]) -> Result<Self> {
         let dim = common_dimension(coeffs, "a power-basis curve")?;
-        if T::EXACT {
-            let exact: Option<Vec<&Point<BigRational>>> = coeffs
-                .iter()
-                .map(|a| (a as &dyn std::any::Any).downcast_ref())
-                .collect();
-            if let Some(exact) = exact {
-                check_degree("degree", coeffs.len() as u128 - 1)?;
-                return Ok(curve_back(BezierCurve::from_valid(power_basis::curve_from_power(
-                    &exact,
-                ))));
+        if T::CURVE_KERNELS {
+            check_degree("degree", coeffs.len() as u128 - 1)?;
+            if let Some(points) = T::curve_from_power(coeffs) {
+                return Ok(BezierCurve::from_valid(points));
             }
         }
         let per_coord: Vec<Vec<T>> = (0..dim)
@@ -602,10 +573,10 @@ impl<T: Scalar> BezierCurve<T> {
     /// Exact rationals take forward differences over integers with one reduction per
     /// coefficient (`exact::power_basis`).
     pub fn to_power(&self) -> Result<Vec<Point<T>>> {
-        if T::EXACT {
-            if let Some(c) = (self as &dyn std::any::Any).downcast_ref::<BezierCurve<BigRational>>() {
-                check_degree("degree", self.degree() as u128)?;
-                return Ok(scalar_back(power_basis::curve_power(c.points())).expect("T is BigRational"));
+        if T::CURVE_KERNELS {
+            check_degree("degree", self.degree() as u128)?;
+            if let Some(power) = T::curve_to_power(self.points()) {
+                return Ok(power);
             }
         }
         self.to_power_reference()
@@ -630,14 +601,8 @@ impl<T: Scalar> BezierCurve<T> {
     /// The whole triangular scheme (9) at `t`; over integers
     /// ([`BezierCurve::scheme_fraction_free`]) for exact rationals.
     pub fn scheme(&self, t: &T) -> DeCasteljauScheme<T> {
-        if T::EXACT {
-            let exact = (self as &dyn std::any::Any).downcast_ref::<BezierCurve<BigRational>>();
-            if let (Some(c), Some(t)) = (exact, exact_scalar(t)) {
-                let scheme = c.scheme_fraction_free(t);
-                if let Some(scheme) = scalar_back(scheme) {
-                    return scheme;
-                }
-            }
+        if let Some(columns) = T::curve_scheme(self.points(), t) {
+            return DeCasteljauScheme { t: t.clone(), columns };
         }
         self.scheme_reference(t)
     }

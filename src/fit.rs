@@ -42,16 +42,11 @@
 use crate::bernstein::{bernstein, eval_power};
 use crate::curve::BezierCurve;
 use crate::error::{check_degree, Error, Result};
-use crate::exact::dispatch::scalar_back;
-use crate::exact::fraction_free::{common_denominator, Int};
+use crate::exact::fit_numbers::FitNumbers;
 use crate::linalg::{solve, Matrix};
 use crate::param::ParamCurveDeriv;
 use crate::point::{common_dimension, Point, Vector};
 use crate::scalar::Scalar;
-use num_bigint::BigInt;
-use num_rational::BigRational;
-use num_traits::Zero;
-use std::any::Any;
 
 // ---------------------------------------------------------------------------------------
 // Text 004: the cubic fit
@@ -338,9 +333,8 @@ pub fn fit_cubic<T: Scalar>(data: &CubicFitData<T>) -> Result<CubicFit<T>> {
     if data.d0.is_zero() || data.d1.is_zero() {
         return Err(Error::Singular(parallel_message(data)));
     }
-    if let Some(exact) = (data as &dyn Any).downcast_ref::<CubicFitData<BigRational>>() {
-        let fit = fit_cubic_fraction_free(exact)?;
-        return Ok(scalar_back(fit).expect("T is BigRational"));
+    if let Some(fit) = T::cubic_fit([&data.x0, &data.x1, &data.xh, &data.d0, &data.d1]) {
+        return fit_cubic_fraction_free(data, fit);
     }
     fit_cubic_by_elimination(data)
 }
@@ -373,11 +367,7 @@ fn fit_cubic_by_elimination<T: Scalar>(data: &CubicFitData<T>) -> Result<CubicFi
 ///
 /// all integer arithmetic (machine words while they fit, else big integers), one reduction
 /// per output number.
-fn fit_cubic_fraction_free(data: &CubicFitData<BigRational>) -> Result<CubicFit<BigRational>> {
-    let fit = match fit_cubic_on::<i128>(data) {
-        Some(fit) => fit,
-        None => fit_cubic_on::<BigInt>(data).expect("big integers do not overflow"),
-    };
+fn fit_cubic_fraction_free<T: Scalar>(data: &CubicFitData<T>, fit: Option<FitNumbers<T>>) -> Result<CubicFit<T>> {
     let FitNumbers {
         k,
         l,
@@ -396,80 +386,6 @@ fn fit_cubic_fraction_free(data: &CubicFitData<BigRational>) -> Result<CubicFit<
         residual,
         gram_determinant,
     })
-}
-
-/// The numbers of a fit that [`fit_cubic_fraction_free`] computes on integers, each reduced
-/// once: the tangent lengths, the inner control points `a1, a2`, the midpoint residual, δ²
-/// and the Gram determinant.
-#[derive(Debug, PartialEq)]
-struct FitNumbers {
-    k: BigRational,
-    l: BigRational,
-    controls: [Point<BigRational>; 2],
-    residual: Vector<BigRational>,
-    delta2: BigRational,
-    gram_determinant: BigRational,
-}
-
-/// [`FitNumbers`] on integers `I`: `None` on overflow, `Some(None)` when the tangents are
-/// parallel.
-fn fit_cubic_on<I: Int>(data: &CubicFitData<BigRational>) -> Option<Option<FitNumbers>> {
-    let a = common_denominator::<I>(data.d0.coords().iter())?;
-    let b = common_denominator::<I>(data.d1.coords().iter())?;
-    let dim = data.x0.dim();
-    let x = common_denominator::<I>([&data.x0, &data.x1, &data.xh].into_iter().flat_map(|p| p.coords()))?;
-    let (u, w, h) = (&x.nums[..dim], &x.nums[dim..2 * dim], &x.nums[2 * dim..]);
-    let c = (0..dim)
-        .map(|i| u[i].add(&w[i])?.sub(&h[i].add(&h[i])?))
-        .collect::<Option<Vec<I>>>()?;
-    let dot = |p: &[I], q: &[I]| p.iter().zip(q).try_fold(I::zero(), |acc, (x, y)| acc.add(&x.mul(y)?));
-    let (aa, ab, bb) = (dot(&a.nums, &a.nums)?, dot(&a.nums, &b.nums)?, dot(&b.nums, &b.nums)?);
-    let (ac, bc) = (dot(&a.nums, &c)?, dot(&b.nums, &c)?);
-    let delta = aa.mul(&bb)?.sub(&ab.mul(&ab)?)?;
-    if delta.clone().into_big().is_zero() {
-        return Some(None);
-    }
-    let four = I::from_u64(4);
-    let big_k = four.mul(&ab.mul(&bc)?.sub(&bb.mul(&ac)?)?)?;
-    let big_l = four.mul(&aa.mul(&bc)?.sub(&ab.mul(&ac)?)?)?;
-    let three_delta = I::from_u64(3).mul(&delta)?;
-    let e = three_delta.mul(&x.den)?;
-    let k = I::ratio(a.den.mul(&big_k)?, e.clone());
-    let l = I::ratio(b.den.mul(&big_l)?, e.clone());
-    let control = |ends: &[I], v: &[I], factor: &I| {
-        let coords = (0..dim)
-            .map(|i| {
-                Some(I::ratio(
-                    three_delta.mul(&ends[i])?.add(&factor.mul(&v[i])?)?,
-                    e.clone(),
-                ))
-            })
-            .collect::<Option<Vec<_>>>()?;
-        Some(Point::from_valid(coords))
-    };
-    let minus_l = I::zero().sub(&big_l)?;
-    let controls = [control(u, &a.nums, &big_k)?, control(w, &b.nums, &minus_l)?];
-    let r = (0..dim)
-        .map(|i| {
-            four.mul(&delta)?
-                .mul(&c[i])?
-                .add(&big_k.mul(&a.nums[i])?)?
-                .add(&minus_l.mul(&b.nums[i])?)
-        })
-        .collect::<Option<Vec<I>>>()?;
-    let r_den = I::from_u64(8).mul(&delta)?.mul(&x.den)?;
-    let delta2 = I::ratio(dot(&r, &r)?, r_den.mul(&r_den)?);
-    let residual = Point::from_valid(r.into_iter().map(|ri| I::ratio(ri, r_den.clone())));
-    let dens = a.den.mul(&b.den)?;
-    let gram_determinant = I::ratio(delta, dens.mul(&dens)?);
-    Some(Some(FitNumbers {
-        k,
-        l,
-        controls,
-        residual,
-        delta2,
-        gram_determinant,
-    }))
 }
 
 /// [`fit_cubic`] for anything that supplies the data: a [`BezierCurve`], the data itself,
@@ -589,9 +505,25 @@ pub fn delta_squared_gradient<T: Scalar>(data: &CubicFitData<T>, k: &T, l: &T) -
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::exact::fit_numbers::FitData;
+    use crate::exact::fraction_free::Int;
     use crate::least_squares::*;
+    use num_bigint::BigInt;
+    use num_rational::BigRational;
     use proptest::prelude::*;
     type Q = BigRational;
+
+    /// The kernel on the data's points, on integers `I`.
+    fn fit_cubic_on<I: Int>(d: &CubicFitData<Q>) -> Option<Option<FitNumbers>> {
+        let data = FitData {
+            x0: &d.x0,
+            x1: &d.x1,
+            xh: &d.xh,
+            d0: &d.d0,
+            d1: &d.d1,
+        };
+        crate::exact::fit_numbers::fit_cubic_on::<I>(&data)
+    }
 
     /// Coordinates from small fractions to numerators and denominators at the ends of `i64`
     /// (whose products overflow `i128`), zero among them.

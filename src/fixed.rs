@@ -2,12 +2,12 @@
 //! kurbo's `QuadBez` and `CubicBez`: [`BezierN<P, N>`] stores `[P; N]`, with [`Line`],
 //! [`Quad`] and [`Cubic`] for degrees 1 to 3.
 
-use crate::curve::{common_dim, elevated_point, elevation_step, Bezier};
+use crate::curve::Bezier;
 use crate::error::{Error, Result, MAX_DEGREE};
-use crate::kernel::{de_casteljau, eval_cubic, split_fixed};
+use crate::kernel::{de_casteljau, elevate_points, eval_cubic, split_points};
 use crate::param::{ParamCurve, ParamCurveDeriv};
 use crate::scalar::Scalar;
-use crate::space::{PointN, VectorSpace};
+use crate::space::{common_dim, PointN, VectorSpace};
 
 /// A Bézier curve with exactly `N` control points (degree `N - 1`), stored as an array;
 /// `Copy` when `P` is. `N = 0` and degrees above [`MAX_DEGREE`] do not compile.
@@ -135,31 +135,6 @@ pub(crate) fn eval_points<T: Scalar, P: VectorSpace<Scalar = T>, const N: usize>
         unreachable!("a curve has at least one point")
     };
     first
-}
-
-/// The two halves of the curve with control points `points` split at `t0`, as
-/// [`Bezier::split_at`] computes them.
-#[inline(always)]
-pub(crate) fn split_points<T: Scalar, P: VectorSpace<Scalar = T>, const N: usize>(
-    points: &[P; N],
-    t0: &T,
-) -> ([P; N], [P; N]) {
-    let mut right = points.clone();
-    let left = split_fixed(&mut right, t0);
-    (left, right)
-}
-
-/// One step of degree elevation (7) of the `N` points `points` into `M = N + 1` points, as
-/// [`Bezier::elevate`] computes it.
-#[inline(always)]
-pub(crate) fn elevate_points<T: Scalar, P: VectorSpace<Scalar = T>, const N: usize, const M: usize>(
-    points: &[P; N],
-) -> [P; M] {
-    debug_assert_eq!(M, N + 1);
-    let Ok(step) = elevation_step::<T>(N - 1) else {
-        unreachable!("1/N divides by a nonzero count")
-    };
-    std::array::from_fn(|i| elevated_point(points, i, &step))
 }
 
 /// The hodograph's control points `(N − 1) (b_{j+1} − b_j)`, as [`Bezier::derivative`]

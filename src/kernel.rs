@@ -6,6 +6,7 @@
 //! It works in place on a column of points and never allocates; [`with_column`] gives it a
 //! buffer on the stack for the polygons met in practice.
 
+use crate::error::Result;
 use crate::scalar::{Ring, Scalar};
 use crate::space::VectorSpace;
 
@@ -106,4 +107,49 @@ pub fn with_column<P: Clone, R>(points: &[P], f: impl FnOnce(&mut [P]) -> R) -> 
         17..=STACK_POINTS => fixed::<P, R, STACK_POINTS>(points, f),
         _ => f(&mut points.to_vec()),
     }
+}
+
+/// `1/(n+1)`, the step of the weights of (7), divided once: its multiples `i · 1/(n+1)`
+/// are the weights `i/(n+1)`, exactly for exact scalars, with one rounding more for floats.
+#[inline(always)]
+pub(crate) fn elevation_step<T: Scalar>(n: usize) -> Result<T> {
+    T::one().checked_div(&T::from_usize(n + 1))
+}
+
+/// Point `i` of the polygon (7) elevated from the `n + 1` `points`, given `step = 1/(n+1)`.
+#[inline(always)]
+pub(crate) fn elevated_point<T: Scalar, P: VectorSpace<Scalar = T>>(points: &[P], i: usize, step: &T) -> P {
+    let n = points.len() - 1;
+    if i == 0 {
+        points[0].clone()
+    } else if i > n {
+        points[n].clone()
+    } else {
+        points[i].lerp_to(&points[i - 1], &T::from_usize(i).mul_ref(step))
+    }
+}
+
+/// The two halves of the curve with control points `points` split at `t0`, as
+/// [`Bezier::split_at`](crate::Bezier::split_at) computes them.
+#[inline(always)]
+pub(crate) fn split_points<T: Scalar, P: VectorSpace<Scalar = T>, const N: usize>(
+    points: &[P; N],
+    t0: &T,
+) -> ([P; N], [P; N]) {
+    let mut right = points.clone();
+    let left = split_fixed(&mut right, t0);
+    (left, right)
+}
+
+/// One step of degree elevation (7) of the `N` points `points` into `M = N + 1` points, as
+/// [`Bezier::elevate`](crate::Bezier::elevate) computes it.
+#[inline(always)]
+pub(crate) fn elevate_points<T: Scalar, P: VectorSpace<Scalar = T>, const N: usize, const M: usize>(
+    points: &[P; N],
+) -> [P; M] {
+    debug_assert_eq!(M, N + 1);
+    let Ok(step) = elevation_step::<T>(N - 1) else {
+        unreachable!("1/N divides by a nonzero count")
+    };
+    std::array::from_fn(|i| elevated_point(points, i, &step))
 }

@@ -32,6 +32,35 @@
 //! their Cargo features, `verify` and `html` (`prove`: the texts' claims and their report),
 //! `oracle` (`oracle`: the JSON-lines oracle) and `strategies` (`strategies`: proptest
 //! strategies for exact inputs).
+//!
+//! ## Layers
+//!
+//! No import circle: each core file (every file of `src/` but `verify/`, `html`, `figure/`,
+//! `oracle/` and `main.rs`; a folder's `mod.rs` by the folder's name) imports only files named
+//! before it in this list, bottom up (`tests/layers.rs` reads the list and checks it):
+//!
+//! - storage and errors, and the folders' `mod.rs` (declarations and re-exports only):
+//!   `coords` (the point types' storage), `error`, `exact`, `float`;
+//! - kernels on numbers: `exact/gcd`, `exact/splitting`, `exact/elevation_words`,
+//!   `float/scratch`, `float/ulp`, `float/eft`, `float/casteljau`, `float/compensated_pairs`,
+//!   `float/compensated`, `float/methods`, `float/ops`;
+//! - `scalar/ring`, `scalar/ops`, and the exact kernels on points: `exact/fraction_free`,
+//!   `exact/fit_numbers`, `exact/power_basis`;
+//! - the number trait with its kernel choice: `scalar`; the other numbers:
+//!   `exact/small_rational`, `quadratic`, `shadow`, `judge`, `linalg`, `bernstein`,
+//!   `exact/basis_table`;
+//! - points: `space`, `point`, `hull`, `input`;
+//! - curves: `kernel`, `param`, `curve/scheme`, `curve`, `curve/exact`, `fixed`, `many`,
+//!   `float/dyadic`, `strategies`;
+//! - rational curves, surfaces, fitting: `rational`, `conic`, `any_curve`, `surface`, `fit`,
+//!   `least_squares`, `work`;
+//! - intervals: `interval`, `float/dispatch` (the sign-split kernel of `eval`),
+//!   `interval/number` (`Interval` as a number, choosing that kernel).
+//!
+//! The generic algorithms choose a type's own kernel (the fraction-free kernels of
+//! [`exact`] for `BigRational`, the sign-split enclosure for [`Interval`]) by methods of
+//! [`Scalar`] and [`VectorSpace`] that the type overrides, not by type identity: the
+//! kernels take slices of points and import only numbers and points.
 
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
@@ -39,6 +68,7 @@
 mod any_curve;
 mod bernstein;
 mod conic;
+mod coords;
 mod curve;
 mod error;
 pub mod exact;

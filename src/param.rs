@@ -53,33 +53,6 @@ pub trait ParamCurveDeriv: ParamCurve {
     }
 }
 
-impl<T: Scalar, P: crate::VectorSpace<Scalar = T>> ParamCurve for crate::Bezier<P> {
-    type Scalar = T;
-    type Point = P;
-
-    fn eval(&self, t: &T) -> Result<P> {
-        Ok(crate::Bezier::eval(self, t))
-    }
-    fn split_at(&self, t0: &T) -> Result<(Self, Self)> {
-        Ok(crate::Bezier::split_at(self, t0))
-    }
-    fn degree(&self) -> usize {
-        crate::Bezier::degree(self)
-    }
-}
-
-/// The hodograph; a constant curve's derivative is the constant zero curve.
-impl<T: Scalar, P: crate::VectorSpace<Scalar = T>> ParamCurveDeriv for crate::Bezier<P> {
-    type Deriv = Self;
-
-    fn deriv(&self) -> Result<Self> {
-        if self.degree() == 0 {
-            return crate::Bezier::from_points([crate::VectorSpace::zero_like(&self.points()[0])]);
-        }
-        self.derivative(1)
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

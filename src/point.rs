@@ -13,30 +13,7 @@ use std::fmt;
 use std::ops::{Index, IndexMut};
 use std::str::FromStr;
 
-/// Coordinates kept inline, without a heap allocation: enough for a homogeneous point of
-/// space.
-pub(crate) const INLINE_COORDS: usize = 4;
-
-/// A point (or vector) whose dimension is known at run time, with coordinates of type `T`;
-/// up to four coordinates are stored inline. For a dimension fixed at compile time use
-/// [`crate::PointN`].
-///
-/// Arithmetic between points of different dimensions is a programming error and panics;
-/// curves, surfaces and nets check dimensions when they are built, so their algorithms
-/// never meet one.
-///
-/// ```
-/// use casteljau::{Point, BigRational};
-/// let p: Point<BigRational> = "(1/2, -3)".parse().unwrap();
-/// let q: Point<BigRational> = Point::from_ints(&[1, 1]).unwrap();
-/// assert_eq!((&q - &p).to_string(), "(1/2, 4)");
-/// assert_eq!(p[0], BigRational::new(1.into(), 2.into()));
-/// assert_eq!(p.to_string().parse::<Point<BigRational>>().unwrap(), p);
-/// ```
-#[derive(Clone, Debug, PartialEq, Eq, Hash)]
-pub struct Point<T> {
-    coords: SmallVec<[T; INLINE_COORDS]>,
-}
+pub use crate::coords::Point;
 
 /// A difference of two points; the same type as [`Point`].
 pub type Vector<T> = Point<T>;
@@ -59,23 +36,6 @@ impl<T: Scalar> Point<T> {
         })
     }
 
-    /// A point from coordinates already known to be valid (taken from validated points).
-    pub(crate) fn from_valid(coords: impl IntoIterator<Item = T>) -> Self {
-        let coords: SmallVec<_> = coords.into_iter().collect();
-        debug_assert!(!coords.is_empty());
-        Point { coords }
-    }
-
-    /// A point from the first `dim` (1 to 4) of `coords`, already known to be valid: kept
-    /// inline as they are, with no iterator to collect.
-    #[inline]
-    pub(crate) fn from_inline_prefix(coords: [T; INLINE_COORDS], dim: usize) -> Self {
-        debug_assert!((1..=INLINE_COORDS).contains(&dim));
-        Point {
-            coords: SmallVec::from_buf_and_len(coords, dim),
-        }
-    }
-
     /// A point with integer coordinates, convenient for literals.
     ///
     /// ```
@@ -92,21 +52,6 @@ impl<T: Scalar> Point<T> {
         Point {
             coords: SmallVec::from_elem(T::zero(), dim),
         }
-    }
-
-    /// The number of coordinates.
-    pub fn dim(&self) -> usize {
-        self.coords.len()
-    }
-
-    /// The coordinates.
-    pub fn coords(&self) -> &[T] {
-        &self.coords
-    }
-
-    /// The coordinates, by value.
-    pub fn into_coords(self) -> Vec<T> {
-        self.coords.into_vec()
     }
 
     /// Converts every coordinate to another scalar type.
@@ -253,6 +198,31 @@ impl<T: Scalar> VectorSpace for Point<T> {
             *a -= b;
         }
     }
+    // The kernel choice: the scalar type's kernel, if any.
+    #[inline(always)]
+    fn curve_eval(points: &[Self], t: &T) -> Option<Self> {
+        T::curve_eval(points, t)
+    }
+    #[inline(always)]
+    fn curve_derivative_at(points: &[Self], k: usize, t: &T) -> Option<Self> {
+        T::curve_derivative_at(points, k, t)
+    }
+    #[inline(always)]
+    fn curve_elevate(points: &[Self]) -> Option<Result<Vec<Self>>> {
+        T::curve_elevate(points)
+    }
+    #[inline(always)]
+    fn curve_elevate_by(points: &[Self], r: usize) -> Option<Result<Vec<Self>>> {
+        T::curve_elevate_by(points, r)
+    }
+    #[inline(always)]
+    fn curve_split(points: &[Self], t: &T) -> Option<(Vec<Self>, Vec<Self>)> {
+        T::curve_split(points, t)
+    }
+    #[inline(always)]
+    fn curve_derivative(points: &[Self], k: usize) -> Option<Result<Vec<Self>>> {
+        T::curve_derivative(points, k)
+    }
 }
 
 point_ops!([T: Scalar] Point<T>, T);
@@ -346,7 +316,7 @@ impl<T: fmt::Display> fmt::Display for PointList<'_, T> {
 
 /// Checks that `points` is non-empty and all of one dimension; returns that dimension.
 pub fn common_dimension<T: Scalar>(points: &[Point<T>], what: &'static str) -> Result<usize> {
-    crate::curve::common_dim(points, what)
+    crate::space::common_dim(points, what)
 }
 
 /// `Σ c_i p_i` with arbitrary coefficients: a linear combination, meaningful for vectors.

@@ -38,6 +38,7 @@
 use crate::bernstein::binomial_row;
 use crate::curve::BezierCurve;
 use crate::error::{check_degree, Error, Result, MAX_DIMENSION};
+use crate::exact::fraction_free;
 use crate::kernel::{casteljau_step, with_column};
 use crate::point::{common_dimension, Point};
 use crate::quadratic::QuadraticIrrational;
@@ -68,11 +69,8 @@ impl<T: PartialEq> PartialEq for RationalBezierCurve<T> {
 /// `x / w`, `w ≠ 0`; exact rationals by Knuth's two gcds ([`crate::exact::gcd::divide`]),
 /// where num-rational's division runs its binary gcd on the products.
 fn quotient<T: Scalar>(x: &T, w: &T) -> Result<T> {
-    if T::EXACT {
-        use crate::exact::dispatch::{exact_scalar, scalar_back};
-        if let (Some(x), Some(w)) = (exact_scalar(x), exact_scalar(w)) {
-            return Ok(scalar_back(crate::exact::gcd::divide(x, w)).expect("T is BigRational"));
-        }
+    if let Some(q) = T::quotient(x, w) {
+        return Ok(q);
     }
     x.checked_div(w)
 }
@@ -194,24 +192,16 @@ impl<T: Scalar> RationalBezierCurve<T> {
     /// Exact rationals take the homogeneous curve's point by [`BezierCurve::eval`]'s exact
     /// kernels, then one quotient per coordinate ([`RationalBezierCurve::eval_nested`]).
     pub fn eval(&self, t: &T) -> Result<Point<T>> {
-        if let Some(point) = self.on_exact_kernel(t, RationalBezierCurve::<BigRational>::eval_nested) {
+        if let Some(point) = self.on_exact_kernel(t, T::rational_eval(self.homogeneous.points(), t)) {
             return point;
         }
         self.eval_reference(t)
     }
 
-    /// `kernel`'s answer when `T` is [`BigRational`] (the exact kernels), else `None`.
-    fn on_exact_kernel(
-        &self,
-        t: &T,
-        kernel: fn(&RationalBezierCurve<BigRational>, &BigRational) -> Result<Point<BigRational>>,
-    ) -> Option<Result<Point<T>>> {
-        if !T::EXACT {
-            return None;
-        }
-        let c = (self as &dyn std::any::Any).downcast_ref::<RationalBezierCurve<BigRational>>()?;
-        let exact_t = crate::exact::dispatch::exact_scalar(t)?;
-        Some(kernel(c, exact_t).map(|point| crate::exact::dispatch::scalar_back(point).expect("T is BigRational")))
+    /// A kernel's answer (`Some(None)`: the denominator vanishes at `t`) as the result of
+    /// the method that ran it.
+    fn on_exact_kernel(&self, t: &T, answer: Option<Option<Point<T>>>) -> Option<Result<Point<T>>> {
+        Some(answer?.ok_or_else(|| self.vanishing(t)))
     }
 
     /// [`Self::eval`] by de Casteljau's steps on the scalar type itself: the reference the
@@ -314,7 +304,7 @@ impl<T: Scalar> RationalBezierCurve<T> {
     /// Exact rationals take the column's two points by [`BezierCurve::eval`]'s kernels
     /// ([`RationalBezierCurve::derivative_at_nested`]).
     pub fn derivative_at(&self, t: &T) -> Result<Point<T>> {
-        if let Some(point) = self.on_exact_kernel(t, RationalBezierCurve::<BigRational>::derivative_at_nested) {
+        if let Some(point) = self.on_exact_kernel(t, T::rational_derivative_at(self.homogeneous.points(), t)) {
             return point;
         }
         self.derivative_at_reference(t)
@@ -590,6 +580,55 @@ fn bernstein_product<T: Scalar>(a: &[Point<T>], b: &[T]) -> Result<Vec<Point<T>>
             Ok(acc)
         })
         .collect()
+}
+
+impl RationalBezierCurve<BigRational> {
+    /// `x(t)` as the homogeneous curve's point by [`BezierCurve::eval`]'s exact kernels,
+    /// then `x = X / W` by the gcds of the two numerators and of the two denominators
+    /// ([`crate::exact::gcd::divide`]); equals [`RationalBezierCurve::eval`], and a vanishing
+    /// denominator `w(t) = 0` is the same error.
+    ///
+    /// ```
+    /// use casteljau::{BigRational, RationalBezierCurve, Scalar};
+    /// let arc = RationalBezierCurve::<BigRational>::from_ints(&[&[1, 0], &[1, 1], &[0, 1]], &[1, 1, 2]).unwrap();
+    /// let t = BigRational::from_ratio(2, 5).unwrap();
+    /// assert_eq!(arc.eval_nested(&t).unwrap(), arc.eval(&t).unwrap());
+    /// ```
+    pub fn eval_nested(&self, t: &BigRational) -> Result<Point<BigRational>> {
+        fraction_free::rational_eval(self.homogeneous().points(), t).ok_or_else(|| self.vanishing(t))
+    }
+
+    /// `x'(t) = n (h₁ w₀ − h₀ w₁) / w(t)²`, with `(h₀, w₀)` and `(h₁, w₁)` the homogeneous
+    /// curves of the points `0..n` and `1..=n` at `t` (the last-but-one column of de
+    /// Casteljau's scheme) by [`BezierCurve::eval`]'s kernels, and one reduction per
+    /// coordinate; equals [`RationalBezierCurve::derivative_at`], and a vanishing `w(t)` is
+    /// the same error.
+    ///
+    /// With `h₀ = a/b`, `h₁ = c/d`, `w₀ = a_w/b_w`, `w₁ = c_w/d_w` in lowest terms and
+    /// `t = p/q`: `w(t) = W / (q b_w d_w)`, `W = (q − p) a_w d_w + p c_w b_w`, and
+    ///
+    /// ```text
+    /// x'(t) = n (c a_w b d_w − a c_w d b_w) q² b_w d_w / (b d W²).
+    /// ```
+    ///
+    /// The two columns' denominators `b` and `d` share most of their factors; with
+    /// `g = gcd(b, d)`, `b = g b'`, `d = g d'`, the numerator is
+    /// `n (c a_w b' d_w − a c_w d' b_w) q² b_w d_w` over `g b' d' W²`, reduced part by part
+    /// (`W²` by gcds with `W`, `exact::gcd::reduce_by_power`).
+    ///
+    /// ```
+    /// use casteljau::{BigRational, RationalBezierCurve, Scalar};
+    /// let arc = RationalBezierCurve::<BigRational>::from_ints(&[&[1, 0], &[1, 1], &[0, 1]], &[1, 1, 2]).unwrap();
+    /// let t = BigRational::from_ratio(2, 5).unwrap();
+    /// assert_eq!(arc.derivative_at_nested(&t).unwrap(), arc.derivative_at_reference(&t).unwrap());
+    /// ```
+    pub fn derivative_at_nested(&self, t: &BigRational) -> Result<Point<BigRational>> {
+        let points = self.homogeneous().points();
+        if points.len() == 1 {
+            return self.derivative_at_reference(t);
+        }
+        fraction_free::rational_derivative_at(points, t).ok_or_else(|| self.vanishing(t))
+    }
 }
 
 #[cfg(test)]

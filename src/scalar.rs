@@ -12,7 +12,10 @@
 //! an exact type are exact (every finite `f64` is a dyadic rational); conversions that
 //! cannot be exact (NaN, infinities, a rational too large for `f64`) are errors.
 
+use crate::coords::{Point, PointN};
 use crate::error::{Error, Result};
+use crate::exact::fit_numbers::{self, FitNumbers};
+use crate::exact::{fraction_free, power_basis};
 use num_bigint::{BigInt, Sign};
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -136,6 +139,153 @@ pub trait Scalar:
         let (a, b) = (self.to_f64(), other.to_f64());
         (a - b).abs() <= tol * a.abs().max(b.abs()).max(1.0)
     }
+
+    // The kernel choice of the generic curve, surface and fitting code: each method below is
+    // a type's own kernel for one operation, `None` (the default) when the type has none and
+    // the caller runs its generic algorithm. Overridden for `BigRational` (the fraction-free
+    // kernels of `crate::exact`) and `Interval` (the sign-split enclosure of `eval`). A
+    // method of the type, not a test of type identity, so that the kernels need to import
+    // only numbers and points; the default is inlined, so other types keep no trace of it.
+    // Hidden: they are how the public methods choose, not an API of their own.
+
+    /// Whether the curve kernels below run for this type (for [`PointN`] curves, which are
+    /// handed to them as [`Point`]s only then).
+    #[doc(hidden)]
+    const CURVE_KERNELS: bool = false;
+    /// `b(t)`.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_eval(points: &[Point<Self>], t: &Self) -> Option<Point<Self>> {
+        let _ = (points, t);
+        None
+    }
+    /// `b(t)` for a curve of fixed-dimension points: by the kernel for [`Point`]s when there
+    /// is one.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_eval_fixed<const N: usize>(points: &[PointN<Self, N>], t: &Self) -> Option<PointN<Self, N>> {
+        if !Self::CURVE_KERNELS {
+            return None;
+        }
+        Self::curve_eval(&to_points(points), t).map(to_fixed)
+    }
+    /// The `k`-th derivative vector at `t`, `k` at most the degree.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_derivative_at(points: &[Point<Self>], k: usize, t: &Self) -> Option<Point<Self>> {
+        let _ = (points, k, t);
+        None
+    }
+    /// One step of degree elevation.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_elevate(points: &[Point<Self>]) -> Option<Result<Vec<Point<Self>>>> {
+        let _ = points;
+        None
+    }
+    /// `r` steps of degree elevation.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_elevate_by(points: &[Point<Self>], r: usize) -> Option<Result<Vec<Point<Self>>>> {
+        let _ = (points, r);
+        None
+    }
+    /// The two halves of a subdivision at `t`.
+    #[doc(hidden)]
+    #[inline(always)]
+    #[allow(clippy::type_complexity)] // the two halves' points, named once here
+    fn curve_split(points: &[Point<Self>], t: &Self) -> Option<(Vec<Point<Self>>, Vec<Point<Self>>)> {
+        let _ = (points, t);
+        None
+    }
+    /// The control points of the `k`-th derivative curve.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_derivative(points: &[Point<Self>], k: usize) -> Option<Result<Vec<Point<Self>>>> {
+        let _ = (points, k);
+        None
+    }
+    /// The columns of the de Casteljau scheme at `t`, the control points first.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_scheme(points: &[Point<Self>], t: &Self) -> Option<Vec<Vec<Point<Self>>>> {
+        let _ = (points, t);
+        None
+    }
+    /// The power-basis coefficients of a curve (its degree already checked).
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_to_power(points: &[Point<Self>]) -> Option<Vec<Point<Self>>> {
+        let _ = points;
+        None
+    }
+    /// The control points of the curve with power-basis coefficients `coeffs` (the degree
+    /// already checked).
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_from_power(coeffs: &[Point<Self>]) -> Option<Vec<Point<Self>>> {
+        let _ = coeffs;
+        None
+    }
+    /// `x / w`, `w ≠ 0`.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn quotient(x: &Self, w: &Self) -> Option<Self> {
+        let _ = (x, w);
+        None
+    }
+    /// A rational curve at `t`, from its homogeneous control points; `Some(None)` when its
+    /// denominator vanishes there.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn rational_eval(homogeneous: &[Point<Self>], t: &Self) -> Option<Option<Point<Self>>> {
+        let _ = (homogeneous, t);
+        None
+    }
+    /// A rational curve's derivative at `t`, from its homogeneous control points;
+    /// `Some(None)` when its denominator vanishes there.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn rational_derivative_at(homogeneous: &[Point<Self>], t: &Self) -> Option<Option<Point<Self>>> {
+        let _ = (homogeneous, t);
+        None
+    }
+    /// A tensor-product surface at `(u, v)`.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn surface_eval(net: &[Vec<Point<Self>>], u: &Self, v: &Self) -> Option<Point<Self>> {
+        let _ = (net, u, v);
+        None
+    }
+    /// A surface's power-basis coefficients (its degrees already checked).
+    #[doc(hidden)]
+    #[inline(always)]
+    fn surface_to_power(net: &[Vec<Point<Self>>]) -> Option<Vec<Vec<Point<Self>>>> {
+        let _ = net;
+        None
+    }
+    /// Text 004's cubic fit from `x(0)`, `x(1)`, `x(1/2)`, `ẋ(0)`, `ẋ(1)` (validated):
+    /// `Some(None)` when the end tangents are parallel.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn cubic_fit(data: [&Point<Self>; 5]) -> Option<Option<FitNumbers<Self>>> {
+        let _ = data;
+        None
+    }
+}
+
+/// Fixed-dimension points as [`Point`]s, for the kernels on [`Point`]s.
+pub(crate) fn to_points<T: Clone, const N: usize>(points: &[PointN<T, N>]) -> Vec<Point<T>> {
+    points.iter().map(|p| Point::from_valid(p.0.iter().cloned())).collect()
+}
+
+/// A kernel's point back as the fixed-dimension point it was computed for (the kernels keep
+/// the dimension of the points they are given).
+pub(crate) fn to_fixed<T, const N: usize>(p: Point<T>) -> PointN<T, N> {
+    match p.into_coords().try_into() {
+        Ok(coords) => PointN(coords),
+        Err(_) => unreachable!("the kernels keep the dimension"),
+    }
 }
 
 impl Scalar for f64 {
@@ -206,6 +356,66 @@ impl Scalar for BigRational {
     }
     fn abs(&self) -> Self {
         Signed::abs(self)
+    }
+
+    // The fraction-free kernels of `crate::exact`: out of line, so that the generic code
+    // that chooses them stays small.
+    const CURVE_KERNELS: bool = true;
+    #[inline(never)]
+    fn curve_eval(points: &[Point<Self>], t: &Self) -> Option<Point<Self>> {
+        Some(fraction_free::eval(points, t))
+    }
+    #[inline(never)]
+    fn curve_derivative_at(points: &[Point<Self>], k: usize, t: &Self) -> Option<Point<Self>> {
+        Some(fraction_free::derivative_at(points, k, t))
+    }
+    #[inline(never)]
+    fn curve_elevate(points: &[Point<Self>]) -> Option<Result<Vec<Point<Self>>>> {
+        Some(fraction_free::elevate(points))
+    }
+    #[inline(never)]
+    fn curve_elevate_by(points: &[Point<Self>], r: usize) -> Option<Result<Vec<Point<Self>>>> {
+        Some(fraction_free::elevate_by(points, r))
+    }
+    #[inline(never)]
+    fn curve_split(points: &[Point<Self>], t: &Self) -> Option<(Vec<Point<Self>>, Vec<Point<Self>>)> {
+        Some(fraction_free::split(points, t))
+    }
+    #[inline(never)]
+    fn curve_derivative(points: &[Point<Self>], k: usize) -> Option<Result<Vec<Point<Self>>>> {
+        Some(fraction_free::derivative(points, k))
+    }
+    #[inline(never)]
+    fn curve_scheme(points: &[Point<Self>], t: &Self) -> Option<Vec<Vec<Point<Self>>>> {
+        Some(fraction_free::scheme(points, t))
+    }
+    fn curve_to_power(points: &[Point<Self>]) -> Option<Vec<Point<Self>>> {
+        Some(power_basis::curve_power(points))
+    }
+    fn curve_from_power(coeffs: &[Point<Self>]) -> Option<Vec<Point<Self>>> {
+        let coeffs: Vec<&Point<Self>> = coeffs.iter().collect();
+        Some(power_basis::curve_from_power(&coeffs))
+    }
+    /// By Knuth's two gcds ([`crate::exact::gcd::divide`]), where num-rational's division
+    /// runs its binary gcd on the products.
+    fn quotient(x: &Self, w: &Self) -> Option<Self> {
+        Some(crate::exact::gcd::divide(x, w))
+    }
+    fn rational_eval(homogeneous: &[Point<Self>], t: &Self) -> Option<Option<Point<Self>>> {
+        Some(fraction_free::rational_eval(homogeneous, t))
+    }
+    fn rational_derivative_at(homogeneous: &[Point<Self>], t: &Self) -> Option<Option<Point<Self>>> {
+        // a constant curve's derivative is the reference's (zero)
+        (homogeneous.len() > 1).then(|| fraction_free::rational_derivative_at(homogeneous, t))
+    }
+    fn surface_eval(net: &[Vec<Point<Self>>], u: &Self, v: &Self) -> Option<Point<Self>> {
+        Some(fraction_free::surface_point(net, u, v))
+    }
+    fn surface_to_power(net: &[Vec<Point<Self>>]) -> Option<Vec<Vec<Point<Self>>>> {
+        Some(power_basis::net_power(net))
+    }
+    fn cubic_fit([x0, x1, xh, d0, d1]: [&Point<Self>; 5]) -> Option<Option<FitNumbers<Self>>> {
+        Some(fit_numbers::fit_cubic(&fit_numbers::FitData { x0, x1, xh, d0, d1 }))
     }
 }
 

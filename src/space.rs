@@ -7,7 +7,7 @@
 //! `Copy` for `f64`, stored inline, with mismatched dimensions a type error.
 
 use crate::error::{Error, Result};
-use crate::scalar::Scalar;
+use crate::scalar::{to_fixed, to_points, Scalar};
 use std::fmt;
 use std::ops::{Index, IndexMut};
 use std::str::FromStr;
@@ -49,21 +49,78 @@ pub trait VectorSpace: Clone + PartialEq + fmt::Debug + 'static {
         out.sub_assign_ref(other);
         out
     }
+
+    // The kernel choice of the generic curve code: a point type's curve kernel for one
+    // operation, `None` (the default) for the generic algorithm. `Point` and `PointN` hand
+    // the choice to their scalar type (the kernel methods of `Scalar`). Hidden: how the public
+    // methods choose, not an API of their own.
+
+    /// `b(t)` for the curve on `points`.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_eval(points: &[Self], t: &Self::Scalar) -> Option<Self> {
+        let _ = (points, t);
+        None
+    }
+    /// The `k`-th derivative vector at `t`, `k` at most the degree.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_derivative_at(points: &[Self], k: usize, t: &Self::Scalar) -> Option<Self> {
+        let _ = (points, k, t);
+        None
+    }
+    /// One step of degree elevation.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_elevate(points: &[Self]) -> Option<Result<Vec<Self>>> {
+        let _ = points;
+        None
+    }
+    /// `r` steps of degree elevation.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_elevate_by(points: &[Self], r: usize) -> Option<Result<Vec<Self>>> {
+        let _ = (points, r);
+        None
+    }
+    /// The two halves of the subdivision at `t`.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_split(points: &[Self], t: &Self::Scalar) -> Option<(Vec<Self>, Vec<Self>)> {
+        let _ = (points, t);
+        None
+    }
+    /// The `k`-th derivative curve.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn curve_derivative(points: &[Self], k: usize) -> Option<Result<Vec<Self>>> {
+        let _ = (points, k);
+        None
+    }
 }
 
-/// A point with `N` coordinates of type `T`, stored inline; `Copy` when `T` is.
-///
-/// ```
-/// use casteljau::{Point2, PointN};
-/// let a = Point2::new(1.0, 2.0);
-/// let b: Point2<f64> = [4.0, 6.0].into();
-/// assert_eq!(b - a, Point2::new(3.0, 4.0));
-/// assert_eq!((b - a) * 0.5 + a, Point2::new(2.5, 4.0));
-/// assert_eq!(a[1], 2.0);
-/// assert_eq!(a.to_string().parse::<Point2<f64>>().unwrap(), a);
-/// ```
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct PointN<T, const N: usize>(pub [T; N]);
+pub use crate::coords::PointN;
+
+/// A kernel's points back as fixed-dimension points.
+fn all_fixed<T, const N: usize>(points: Vec<crate::coords::Point<T>>) -> Vec<PointN<T, N>> {
+    points.into_iter().map(to_fixed).collect()
+}
+
+/// Checks that `points` is non-empty and of one dimension; returns that dimension.
+pub(crate) fn common_dim<P: VectorSpace>(points: &[P], what: &'static str) -> Result<usize> {
+    let first = points.first().ok_or(Error::Empty(what))?;
+    let dim = first.dim();
+    for (i, p) in points.iter().enumerate() {
+        if p.dim() != dim {
+            return Err(Error::DimensionMismatch {
+                expected: dim,
+                found: p.dim(),
+                context: format!("{what}, point {i}"),
+            });
+        }
+    }
+    Ok(dim)
+}
 
 /// A point of the plane.
 pub type Point2<T> = PointN<T, 2>;
@@ -158,6 +215,49 @@ impl<T: Scalar, const N: usize> VectorSpace for PointN<T, N> {
         for (a, b) in self.0.iter_mut().zip(&other.0) {
             *a -= b;
         }
+    }
+    // The kernel choice: the scalar type's kernel, if any, for evaluation its own for
+    // fixed-dimension points; the others on the points as `Point`s, and only when the scalar
+    // type has curve kernels (a constant: other types keep no trace of the conversion).
+    #[inline(always)]
+    fn curve_eval(points: &[Self], t: &T) -> Option<Self> {
+        T::curve_eval_fixed(points, t)
+    }
+    #[inline(always)]
+    fn curve_derivative_at(points: &[Self], k: usize, t: &T) -> Option<Self> {
+        if !T::CURVE_KERNELS {
+            return None;
+        }
+        T::curve_derivative_at(&to_points(points), k, t).map(to_fixed)
+    }
+    #[inline(always)]
+    fn curve_elevate(points: &[Self]) -> Option<Result<Vec<Self>>> {
+        if !T::CURVE_KERNELS {
+            return None;
+        }
+        Some(T::curve_elevate(&to_points(points))?.map(all_fixed))
+    }
+    #[inline(always)]
+    fn curve_elevate_by(points: &[Self], r: usize) -> Option<Result<Vec<Self>>> {
+        if !T::CURVE_KERNELS {
+            return None;
+        }
+        Some(T::curve_elevate_by(&to_points(points), r)?.map(all_fixed))
+    }
+    #[inline(always)]
+    fn curve_split(points: &[Self], t: &T) -> Option<(Vec<Self>, Vec<Self>)> {
+        if !T::CURVE_KERNELS {
+            return None;
+        }
+        let (left, right) = T::curve_split(&to_points(points), t)?;
+        Some((all_fixed(left), all_fixed(right)))
+    }
+    #[inline(always)]
+    fn curve_derivative(points: &[Self], k: usize) -> Option<Result<Vec<Self>>> {
+        if !T::CURVE_KERNELS {
+            return None;
+        }
+        Some(T::curve_derivative(&to_points(points), k)?.map(all_fixed))
     }
 }
 

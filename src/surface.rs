@@ -156,13 +156,12 @@ impl<T: Scalar> BezierSurface<T> {
     /// Exact rationals take forward differences over integers with one reduction per
     /// coefficient (`exact::power_basis`).
     pub fn to_power(&self) -> Result<Vec<Vec<Point<T>>>> {
-        if T::EXACT {
-            if let Some(s) = (self as &dyn std::any::Any).downcast_ref::<BezierSurface<BigRational>>() {
-                let (m, n) = self.degrees();
-                check_degree("degree", m as u128)?;
-                check_degree("degree", n as u128)?;
-                let power = crate::exact::power_basis::net_power(s.net());
-                return Ok(crate::exact::dispatch::scalar_back(power).expect("T is BigRational"));
+        if T::CURVE_KERNELS {
+            let (m, n) = self.degrees();
+            check_degree("degree", m as u128)?;
+            check_degree("degree", n as u128)?;
+            if let Some(power) = T::surface_to_power(self.net()) {
+                return Ok(power);
             }
         }
         self.to_power_reference()
@@ -256,12 +255,8 @@ impl<T: Scalar> BezierSurface<T> {
     /// Exact rationals take nested sums over integers with one reduction per coordinate
     /// ([`BezierSurface::eval_nested`]).
     pub fn eval(&self, u: &T, v: &T) -> Point<T> {
-        if T::EXACT {
-            let exact = (self as &dyn std::any::Any).downcast_ref::<BezierSurface<BigRational>>();
-            let scalar = crate::exact::dispatch::exact_scalar;
-            if let (Some(s), Some(u), Some(v)) = (exact, scalar(u), scalar(v)) {
-                return crate::exact::dispatch::scalar_back(s.eval_nested(u, v)).expect("T is BigRational");
-            }
+        if let Some(p) = T::surface_eval(self.net(), u, v) {
+            return p;
         }
         self.iso_u(u).eval(v)
     }
@@ -697,6 +692,15 @@ impl<T: fmt::Display> fmt::Display for BezierSurface<T> {
             write!(f, "{}", crate::point::PointList(row))?;
         }
         Ok(())
+    }
+}
+
+impl BezierSurface<BigRational> {
+    /// `b(u, v)` by nested sums over integers, rows at `v` then the column at `u`, one
+    /// reduction per coordinate; equals [`BezierSurface::eval`], which runs it for exact
+    /// rationals.
+    pub fn eval_nested(&self, u: &BigRational, v: &BigRational) -> Point<BigRational> {
+        crate::exact::fraction_free::surface_point(self.net(), u, v)
     }
 }
 

@@ -281,3 +281,357 @@ fn the_verdict_check_sees_a_construction() {
     assert!(verdict_makers("    Verdict::ProvedInRange => 1,\nx != Verdict::ProvedInRange").is_empty());
     assert_eq!(verdict_makers("out.verdict = Verdict::ProvedInRange;").len(), 1);
 }
+
+// ---------------------------------------------------------------------------------------
+// The core files of `src/` (all but `verify/`, `html`, `figure/`, `oracle/`, `main.rs`): no
+// import circle. Each file imports only files named before it in the list under "Layers" in
+// `src/lib.rs`. A file's imports are the paths it names (`crate::…`, `super::…`, `self::…`,
+// a child module's name in a `use`), each resolved to the file that defines the item: through
+// the re-exports (`pub use`) of the modules on the way, which are not imports themselves, as
+// `mod` declarations are not.
+// ---------------------------------------------------------------------------------------
+
+/// The parts of `src/` outside the core.
+const NOT_CORE: [&str; 6] = ["verify", "html", "figure", "oracle", "main", "lib"];
+
+/// A module's path from the crate root, `["exact", "gcd"]` for `src/exact/gcd.rs`.
+type Module = Vec<String>;
+
+/// The module of a file under `src/`: `src/a/b.rs` and `src/a/b/mod.rs` are `a/b`.
+fn module_of(path: &Path) -> Module {
+    let rel = path.strip_prefix(SRC).unwrap().with_extension("");
+    let mut m: Module = rel
+        .components()
+        .map(|c| c.as_os_str().to_string_lossy().into_owned())
+        .collect();
+    if m.last().is_some_and(|x| x == "mod") {
+        m.pop();
+    }
+    if m == ["lib"] {
+        m.clear();
+    }
+    m
+}
+
+/// Every module of the crate, with its file.
+fn crate_modules() -> std::collections::BTreeMap<Module, PathBuf> {
+    rust_files(Path::new(SRC))
+        .into_iter()
+        .map(|f| (module_of(&f), f))
+        .collect()
+}
+
+/// The paths of a `use` tree starting at `rest` (`a::{b, c::d}` is `a::b` and `a::c::d`;
+/// a glob's last segment is empty).
+fn use_paths(rest: &str) -> Vec<Vec<String>> {
+    let rest = rest.trim_start();
+    if let Some(inner) = rest.strip_prefix('{') {
+        let mut depth = 0;
+        let mut items = vec![String::new()];
+        for c in inner.chars() {
+            match c {
+                '{' => depth += 1,
+                '}' if depth == 0 => break,
+                '}' => depth -= 1,
+                ',' if depth == 0 => {
+                    items.push(String::new());
+                    continue;
+                }
+                _ => {}
+            }
+            items.last_mut().unwrap().push(c);
+        }
+        return items
+            .iter()
+            .filter(|i| !i.trim().is_empty())
+            .flat_map(|i| use_paths(i))
+            .collect();
+    }
+    let head: String = rest.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
+    match rest[head.len()..].strip_prefix("::") {
+        Some(tail) => use_paths(tail)
+            .into_iter()
+            .map(|mut p| {
+                p.insert(0, head.clone());
+                p
+            })
+            .collect(),
+        None => vec![vec![head]],
+    }
+}
+
+/// `path` (`crate::`, `super::`, `self::` or a child's name, already split off) from module
+/// `m` as a path from the crate root.
+fn absolute(m: &Module, prefix: &str, path: Vec<String>) -> Vec<String> {
+    let mut base: Vec<String> = match prefix {
+        "crate" => Vec::new(),
+        "self" => m.clone(),
+        _ => {
+            let ups = prefix.matches("super").count();
+            m[..m.len().saturating_sub(ups)].to_vec()
+        }
+    };
+    base.extend(path);
+    base
+}
+
+/// Every place in `code` where a path starts: `crate::`, `$crate::`, `self::`, or a chain of
+/// `super::`, with the text after it.
+fn path_starts(code: &str) -> Vec<(String, &str)> {
+    let mut out = Vec::new();
+    let bytes = code.as_bytes();
+    let mut at = 0;
+    while at < code.len() {
+        let rest = &code[at..];
+        let boundary =
+            at == 0 || !(bytes[at - 1].is_ascii_alphanumeric() || bytes[at - 1] == b'_' || bytes[at - 1] == b':');
+        if boundary {
+            for word in ["crate::", "self::"] {
+                if let Some(tail) = rest.strip_prefix(word) {
+                    out.push((word.trim_end_matches("::").to_string(), tail));
+                }
+            }
+            if rest.starts_with("super::") {
+                let mut end = 0;
+                while rest[end..].starts_with("super::") {
+                    end += "super::".len();
+                }
+                out.push((rest[..end].to_string(), &rest[end..]));
+                at += end;
+                continue;
+            }
+        }
+        at += rest.chars().next().unwrap().len_utf8();
+    }
+    out
+}
+
+/// The code of a file without its `pub use` re-exports and `mod` declarations.
+fn without_declarations(code: &str) -> String {
+    let mut out = String::new();
+    let mut rest = code;
+    loop {
+        let next = ["pub use ", "pub(crate) use ", "pub(super) use "]
+            .iter()
+            .filter_map(|w| rest.find(w))
+            .min();
+        match next {
+            Some(k) => {
+                out.push_str(&rest[..k]);
+                let end = rest[k..].find(';').map_or(rest.len(), |e| k + e + 1);
+                rest = &rest[end..];
+            }
+            None => {
+                out.push_str(rest);
+                break;
+            }
+        }
+    }
+    out.lines()
+        .filter(|l| {
+            let t = l.trim_start();
+            let t = t
+                .strip_prefix("pub(crate) ")
+                .or_else(|| t.strip_prefix("pub "))
+                .unwrap_or(t);
+            !(t.starts_with("mod ") && t.trim_end().ends_with(';'))
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// The re-exports of each module: name → the absolute path it stands for.
+fn reexports(
+    modules: &std::collections::BTreeMap<Module, PathBuf>,
+) -> std::collections::BTreeMap<Module, std::collections::BTreeMap<String, Vec<String>>> {
+    let mut out = std::collections::BTreeMap::new();
+    for (m, f) in modules {
+        let code = code_of(f);
+        let table: &mut std::collections::BTreeMap<String, Vec<String>> = out.entry(m.clone()).or_default();
+        for w in ["pub use ", "pub(crate) use ", "pub(super) use "] {
+            for (k, _) in code.match_indices(w) {
+                for mut p in use_paths(&code[k + w.len()..]) {
+                    if p.is_empty() || p[0].is_empty() {
+                        continue;
+                    }
+                    let first = p.remove(0);
+                    let abs = match first.as_str() {
+                        "crate" | "self" => absolute(m, &first, p),
+                        "super" => absolute(m, "super", p),
+                        child => {
+                            let mut c = m.clone();
+                            c.push(child.to_string());
+                            if !modules.contains_key(&c) {
+                                continue;
+                            }
+                            c.extend(p);
+                            c
+                        }
+                    };
+                    if let Some(name) = abs.last().filter(|n| !n.is_empty()) {
+                        table.insert(name.clone(), abs.clone());
+                    }
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The module whose file defines what `path` names: the deepest module on the path, through
+/// re-exports.
+fn resolve(
+    path: &[String],
+    modules: &std::collections::BTreeMap<Module, PathBuf>,
+    reexports: &std::collections::BTreeMap<Module, std::collections::BTreeMap<String, Vec<String>>>,
+    depth: usize,
+) -> Module {
+    let mut cur: Module = Vec::new();
+    for s in path {
+        let mut next = cur.clone();
+        next.push(s.clone());
+        if modules.contains_key(&next) {
+            cur = next;
+            continue;
+        }
+        if let Some(target) = reexports.get(&cur).and_then(|t| t.get(s)) {
+            if depth < 8 && target.as_slice() != path {
+                return resolve(target, modules, reexports, depth + 1);
+            }
+        }
+        break;
+    }
+    cur
+}
+
+/// The core modules each core module imports.
+fn core_imports() -> std::collections::BTreeMap<String, BTreeSet<String>> {
+    let modules = crate_modules();
+    let reexports = reexports(&modules);
+    let name = |m: &Module| m.join("/");
+    let is_core = |m: &Module| !m.is_empty() && !NOT_CORE.contains(&m[0].as_str());
+    let mut out = std::collections::BTreeMap::new();
+    for (m, f) in &modules {
+        let file = f.file_name().unwrap().to_string_lossy();
+        if !is_core(m) || file == "tests.rs" || file.ends_with("_tests.rs") {
+            continue;
+        }
+        let code = without_declarations(&code_of(f));
+        let mut targets = BTreeSet::new();
+        for (prefix, rest) in path_starts(&code) {
+            for p in use_paths(rest) {
+                targets.insert(resolve(&absolute(m, &prefix, p), &modules, &reexports, 0));
+            }
+        }
+        // `use child::…` in a module with a folder
+        for (k, _) in code.match_indices("use ") {
+            for mut p in use_paths(&code[k + 4..]) {
+                let mut child = m.clone();
+                child.push(p.remove(0));
+                if modules.contains_key(&child) {
+                    child.extend(p);
+                    targets.insert(resolve(&child, &modules, &reexports, 0));
+                }
+            }
+        }
+        let used: BTreeSet<String> = targets.iter().filter(|t| is_core(t) && *t != m).map(name).collect();
+        out.insert(name(m), used);
+    }
+    out
+}
+
+/// The core files in the order of the list under "Layers" in `src/lib.rs`.
+fn core_layer_order() -> Vec<String> {
+    let text = std::fs::read_to_string(format!("{SRC}/lib.rs")).unwrap();
+    let start = text.find("//! ## Layers").expect("lib.rs documents the layers");
+    let mut out = Vec::new();
+    for line in text[start..]
+        .lines()
+        .skip(1)
+        .take_while(|l| !l.starts_with("//! ## ") && l.starts_with("//!"))
+    {
+        for (k, piece) in line.split('`').enumerate() {
+            let is_name = !piece.is_empty() && piece.chars().all(|c| c.is_alphanumeric() || c == '_' || c == '/');
+            if k % 2 == 1 && is_name && !out.contains(&piece.to_string()) {
+                out.push(piece.to_string());
+            }
+        }
+    }
+    out
+}
+
+/// The imports that go up the list (or to a file the list does not name): empty when
+/// every file imports only files below it, so that there is no circle.
+fn upward_imports(order: &[String], imports: &std::collections::BTreeMap<String, BTreeSet<String>>) -> Vec<String> {
+    let mut out = Vec::new();
+    for (m, used) in imports {
+        let at = order.iter().position(|x| x == m);
+        for u in used {
+            let below = match (at, order.iter().position(|x| x == u)) {
+                (Some(a), Some(b)) => b < a,
+                _ => false,
+            };
+            if !below {
+                out.push(format!("{m} imports {u}"));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn every_core_file_imports_only_files_below_it() {
+    let order = core_layer_order();
+    let imports = core_imports();
+    // the list names every core file (its other backquoted words name no core file)
+    let files: BTreeSet<String> = imports.keys().cloned().collect();
+    let order: Vec<String> = order.into_iter().filter(|n| files.contains(n)).collect();
+    let listed: BTreeSet<String> = order.iter().cloned().collect();
+    assert_eq!(listed, files, "the list in lib.rs names every core file");
+    let up = upward_imports(&order, &imports);
+    assert!(up.is_empty(), "imports against the layers of lib.rs: {up:#?}");
+}
+
+#[test]
+fn the_core_check_sees_imports_and_circles() {
+    let imports = core_imports();
+    // a path through a re-export reaches the defining file: `scalar` names
+    // `crate::exact::{fraction_free, …}`, `surface` `crate::point::Point` (in `coords`)
+    assert!(
+        imports["scalar"].contains("exact/fraction_free"),
+        "{:?}",
+        imports["scalar"]
+    );
+    assert!(imports["surface"].contains("coords"));
+    assert!(imports["curve/exact"].contains("curve"), "super:: paths");
+    assert!(
+        !imports["exact/fraction_free"].contains("curve"),
+        "the kernels import no curve"
+    );
+    // a circle: whatever the order, one of its imports goes up
+    let circle: std::collections::BTreeMap<String, BTreeSet<String>> = [
+        ("a".to_string(), BTreeSet::from(["b".to_string()])),
+        ("b".to_string(), BTreeSet::from(["a".to_string()])),
+    ]
+    .into();
+    for order in [["a", "b"], ["b", "a"]] {
+        let order: Vec<String> = order.iter().map(|s| s.to_string()).collect();
+        assert_eq!(upward_imports(&order, &circle).len(), 1);
+    }
+    assert_eq!(use_paths("{a, b::{c, d}, e::*}; x").len(), 4);
+}
+
+#[test]
+fn no_type_identity_in_the_core() {
+    // The kernel choice is by trait methods: no `Any`, no `TypeId` in the core files.
+    let core = core_imports();
+    for (m, path) in crate_modules() {
+        if !core.contains_key(&m.join("/")) {
+            continue;
+        }
+        let code = code_of(&path);
+        for word in ["TypeId", "dyn Any", "std::any"] {
+            assert!(!code.contains(word), "{} uses {word}", path.display());
+        }
+    }
+}

@@ -27,9 +27,9 @@
 //! modulo `2^64`. The tests compare both with `==` against
 //! [`BezierCurve::elevate_reference`](crate::BezierCurve::elevate_reference).
 
+use crate::coords::Point;
 use crate::exact::gcd::gcd_u64;
 use crate::exact::gcd::{self, Part};
-use crate::point::Point;
 use num_bigint::{BigInt, BigUint, Sign};
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};

@@ -9,19 +9,20 @@
 //! algorithm there: the point of a curve is then summed by binary splitting
 //! (`exact::splitting`), and one elevation step combines neighbouring points pairwise, on
 //! 256-bit words where they fit (`exact::elevation_words`). The public generic methods
-//! choose these kernels for exact rationals (`exact::dispatch`); the tests compare them
+//! choose these kernels for exact rationals (the kernel methods of `BigRational`'s
+//! [`Scalar`](crate::Scalar) implementation); the tests compare them
 //! with `==` against the step-by-step `*_reference` methods.
 //!
-//! | kernel | here | reference |
+//! | kernel | method | reference |
 //! |---|---|---|
-//! | one point, O(n) nested Bernstein sum | [`BezierCurve::eval_nested`] | [`BezierCurve::eval_reference`] |
-//! | derivative vector at `t` (the first past machine words: `splitting::first_derivative_sum`) | [`BezierCurve::derivative_at_nested`] | [`BezierCurve::derivative_reference`] then [`BezierCurve::eval_reference`] |
-//! | de Casteljau triangle, subdivision | [`BezierCurve::scheme_fraction_free`], [`BezierCurve::split_fraction_free`] | [`BezierCurve::scheme_reference`], [`BezierCurve::split_at_reference`] |
-//! | degree elevation (7), (8) | [`BezierCurve::elevate_fraction_free`], [`BezierCurve::elevate_by_fraction_free`] | [`BezierCurve::elevate_reference`], [`BezierCurve::elevate_by_reference`] |
-//! | derivative curve | [`BezierCurve::derivative_fraction_free`] | [`BezierCurve::derivative_reference`] |
-//! | rational curve point (homogeneous point, then one quotient) | [`RationalBezierCurve::eval_nested`] | [`RationalBezierCurve::eval_reference`] |
-//! | rational curve's derivative vector at `t` (two homogeneous points, one reduction) | [`RationalBezierCurve::derivative_at_nested`] | [`RationalBezierCurve::derivative_at_reference`] |
-//! | surface point | [`BezierSurface::eval_nested`] | [`BezierSurface::eval_bernstein`] |
+//! | one point, O(n) nested Bernstein sum | [`BezierCurve::eval_nested`](crate::BezierCurve::eval_nested) | [`BezierCurve::eval_reference`](crate::BezierCurve::eval_reference) |
+//! | derivative vector at `t` (the first past machine words: `splitting::first_derivative_sum`) | [`BezierCurve::derivative_at_nested`](crate::BezierCurve::derivative_at_nested) | [`BezierCurve::derivative_reference`](crate::BezierCurve::derivative_reference) then [`BezierCurve::eval_reference`](crate::BezierCurve::eval_reference) |
+//! | de Casteljau triangle, subdivision | [`BezierCurve::scheme_fraction_free`](crate::BezierCurve::scheme_fraction_free), [`BezierCurve::split_fraction_free`](crate::BezierCurve::split_fraction_free) | [`BezierCurve::scheme_reference`](crate::BezierCurve::scheme_reference), [`BezierCurve::split_at_reference`](crate::BezierCurve::split_at_reference) |
+//! | degree elevation (7), (8) | [`BezierCurve::elevate_fraction_free`](crate::BezierCurve::elevate_fraction_free), [`BezierCurve::elevate_by_fraction_free`](crate::BezierCurve::elevate_by_fraction_free) | [`BezierCurve::elevate_reference`](crate::BezierCurve::elevate_reference), [`BezierCurve::elevate_by_reference`](crate::BezierCurve::elevate_by_reference) |
+//! | derivative curve | [`BezierCurve::derivative_fraction_free`](crate::BezierCurve::derivative_fraction_free) | [`BezierCurve::derivative_reference`](crate::BezierCurve::derivative_reference) |
+//! | rational curve point (homogeneous point, then one quotient) | [`RationalBezierCurve::eval_nested`](crate::RationalBezierCurve::eval_nested) | [`RationalBezierCurve::eval_reference`](crate::RationalBezierCurve::eval_reference) |
+//! | rational curve's derivative vector at `t` (two homogeneous points, one reduction) | [`RationalBezierCurve::derivative_at_nested`](crate::RationalBezierCurve::derivative_at_nested) | [`RationalBezierCurve::derivative_at_reference`](crate::RationalBezierCurve::derivative_at_reference) |
+//! | surface point | [`BezierSurface::eval_nested`](crate::BezierSurface::eval_nested) | [`BezierSurface::eval_bernstein`](crate::BezierSurface::eval_bernstein) |
 //!
 //! The nested evaluation (Volk–Schumaker, Horner in Bernstein form) of `t = p/q`, `s = q − p`:
 //! `qⁿ D b(t) = Σ_i C(n,i) pⁱ s^(n−i) (D b_i)`, accumulated as `acc ← s·acc + C(n,i) pⁱ (D b_i)`
@@ -29,14 +30,11 @@
 //! `n(n+1)/2`, and no gcd until the end. In exact arithmetic every algorithm gives the same
 //! value, so the cheapest one wins.
 
-use crate::curve::{BezierCurve, DeCasteljauScheme};
+use crate::coords::Point;
 use crate::error::{check_degree, Error, Result};
 use crate::exact::gcd::gcd_u128;
 use crate::exact::gcd::{self, Part};
 use crate::exact::{elevation_words, splitting};
-use crate::point::Point;
-use crate::rational::RationalBezierCurve;
-use crate::surface::BezierSurface;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -313,7 +311,7 @@ fn point_by_coordinate(dim: usize, each: impl FnMut(usize) -> Option<BigRational
 // One coordinate at a time, each over its own common denominator: with unrelated
 // denominators in the coordinates, a denominator shared by all would be their product,
 // and every integer of the sum that much longer.
-fn curve_eval<I: Int>(c: &BezierCurve<BigRational>, t: &BigRational) -> Option<Point<BigRational>> {
+fn curve_eval<I: Int>(c: &Curve<'_>, t: &BigRational) -> Option<Point<BigRational>> {
     if I::IS_BIG {
         // Past machine words the sum is split in balanced halves (see `splitting`).
         return point_by_coordinate(c.dim(), |k| {
@@ -346,7 +344,7 @@ fn falling_factorial<I: Int>(n: usize, k: usize) -> Option<I> {
     (n - k + 1..=n).try_fold(I::one(), |acc, m| acc.mul(&I::from_u64(m as u64)))
 }
 
-fn curve_derivative_at<I: Int>(c: &BezierCurve<BigRational>, k: usize, t: &BigRational) -> Option<Point<BigRational>> {
+fn curve_derivative_at<I: Int>(c: &Curve<'_>, k: usize, t: &BigRational) -> Option<Point<BigRational>> {
     let n = c.degree();
     let (p, q, s) = parameter::<I>(t)?;
     let factor = falling_factorial::<I>(n, k)?;
@@ -373,7 +371,7 @@ fn curve_derivative_at<I: Int>(c: &BezierCurve<BigRational>, k: usize, t: &BigRa
     })
 }
 
-fn curve_derivative<I: Int>(c: &BezierCurve<BigRational>, k: usize) -> Option<Vec<Point<BigRational>>> {
+fn curve_derivative<I: Int>(c: &Curve<'_>, k: usize) -> Option<Vec<Point<BigRational>>> {
     let (n, dim) = (c.degree(), c.dim());
     let x = common_denominator::<I>(coordinates(c.points()))?;
     let factor = falling_factorial::<I>(n, k)?;
@@ -391,7 +389,7 @@ fn curve_derivative<I: Int>(c: &BezierCurve<BigRational>, k: usize) -> Option<Ve
 /// `visit(r, column, den, q)` for `r = 0..=n`, where `column` holds the `n − r + 1` values
 /// `b_i^r(t)` as numerators over `den · q^r`.
 fn casteljau_columns<I: Int>(
-    c: &BezierCurve<BigRational>,
+    c: &Curve<'_>,
     k: usize,
     t: &BigRational,
     mut visit: impl FnMut(usize, &[I], &I, &I) -> Option<()>,
@@ -425,7 +423,7 @@ pub(crate) fn transpose(values: Vec<Vec<BigRational>>, count: usize) -> Points {
         .collect()
 }
 
-fn curve_split<I: Int>(c: &BezierCurve<BigRational>, t: &BigRational) -> Option<(Points, Points)> {
+fn curve_split<I: Int>(c: &Curve<'_>, t: &BigRational) -> Option<(Points, Points)> {
     let (n, dim) = (c.degree(), c.dim());
     let mut left = Vec::with_capacity(dim);
     let mut right = Vec::with_capacity(dim);
@@ -443,7 +441,7 @@ fn curve_split<I: Int>(c: &BezierCurve<BigRational>, t: &BigRational) -> Option<
     Some((transpose(left, n + 1), transpose(right, n + 1)))
 }
 
-fn curve_scheme<I: Int>(c: &BezierCurve<BigRational>, t: &BigRational) -> Option<Vec<Vec<Point<BigRational>>>> {
+fn curve_scheme<I: Int>(c: &Curve<'_>, t: &BigRational) -> Option<Vec<Vec<Point<BigRational>>>> {
     let (n, dim) = (c.degree(), c.dim());
     // values[k][r][i]: coordinate k of b_i^r.
     let mut values = Vec::with_capacity(dim);
@@ -490,7 +488,7 @@ fn binomials<I: Int>(m: usize) -> Option<Vec<I>> {
     Some(row)
 }
 
-fn curve_elevate_by<I: Int>(c: &BezierCurve<BigRational>, r: usize) -> Option<Vec<Point<BigRational>>> {
+fn curve_elevate_by<I: Int>(c: &Curve<'_>, r: usize) -> Option<Vec<Point<BigRational>>> {
     let (n, dim) = (c.degree(), c.dim());
     let x = common_denominator::<I>(coordinates(c.points()))?;
     let (cn, cr, ct) = (binomials::<I>(n)?, binomials::<I>(r)?, binomials::<I>(n + r)?);
@@ -509,7 +507,7 @@ fn curve_elevate_by<I: Int>(c: &BezierCurve<BigRational>, r: usize) -> Option<Ve
     Some(out)
 }
 
-fn curve_elevate<I: Int>(c: &BezierCurve<BigRational>) -> Option<Vec<Point<BigRational>>> {
+fn curve_elevate<I: Int>(c: &Curve<'_>) -> Option<Vec<Point<BigRational>>> {
     let (n, dim) = (c.degree(), c.dim());
     let x = common_denominator::<I>(coordinates(c.points()))?;
     let n1 = I::from_u64(n as u64 + 1);
@@ -549,11 +547,7 @@ fn net_numerator<I: Int>(x: &[I], n: usize, (pu, su): (&I, &I), (pv, sv): (&I, &
 }
 
 // One coordinate at a time over its own common denominator, as `curve_eval`.
-fn surface_eval<I: Int>(
-    sf: &BezierSurface<BigRational>,
-    u: &BigRational,
-    v: &BigRational,
-) -> Option<Point<BigRational>> {
+fn surface_eval<I: Int>(sf: &Net<'_>, u: &BigRational, v: &BigRational) -> Option<Point<BigRational>> {
     let (m, n) = sf.degrees();
     let (pu, qu, su) = parameter::<I>(u)?;
     let (pv, qv, sv) = parameter::<I>(v)?;
@@ -572,197 +566,173 @@ fn surface_eval<I: Int>(
     })
 }
 
-impl BezierCurve<BigRational> {
-    /// `b(t)` exactly by the nested (Horner) Bernstein sum over integers: the same value as
-    /// [`BezierCurve::eval`], in `n` steps on machine words while they fit (see the
-    /// [module documentation](self)).
-    ///
-    /// ```
-    /// use casteljau::{BezierCurve, BigRational, Scalar};
-    /// let c: BezierCurve<BigRational> = BezierCurve::from_ints(&[&[0, 0], &[1, 2], &[3, 2], &[4, 0]]).unwrap();
-    /// let t = BigRational::from_ratio(-1, 3).unwrap();
-    /// assert_eq!(c.eval_nested(&t), c.eval(&t));
-    /// ```
-    pub fn eval_nested(&self, t: &BigRational) -> Point<BigRational> {
-        // The curve passes through its end points, (1) at t = 0 and 1: no sum to form.
-        let points = self.points();
-        if t.is_zero() {
-            return points[0].clone();
-        }
-        if t.is_one() {
-            return points[points.len() - 1].clone();
-        }
-        words_then_big(|tier| on_tier!(tier, curve_eval(self, t)))
-    }
+/// A curve's control points as the kernels read them (the names of the curve's methods, so
+/// that the kernels read as they did on the curve type).
+struct Curve<'a>(&'a [Point<BigRational>]);
 
-    /// The `k`-th derivative vector at `t` (zero when `k` exceeds the degree), by forward
-    /// differences and the nested sum over integers; equals [`BezierCurve::derivative_at`].
-    pub fn derivative_at_nested(&self, k: usize, t: &BigRational) -> Point<BigRational> {
-        if k > self.degree() {
-            return Point::origin(self.dim());
-        }
-        words_then_big(|tier| on_tier!(tier, curve_derivative_at(self, k, t)))
+impl Curve<'_> {
+    fn points(&self) -> &[Point<BigRational>] {
+        self.0
     }
-
-    /// The `k`-th derivative curve over integers; equals [`BezierCurve::derivative`] (and
-    /// `k > n` is the same error).
-    pub fn derivative_fraction_free(&self, k: usize) -> Result<Self> {
-        if k > self.degree() {
-            return Err(Error::DerivativeOrder {
-                order: k,
-                degree: self.degree(),
-            });
-        }
-        if k == 1 {
-            // Neighbours combined pairwise: each point over its own two denominators, where a
-            // denominator common to the whole curve makes every point as long as all inputs.
-            if let Some(points) = curve_derivative::<i128>(self, 1) {
-                return BezierCurve::new(points);
-            }
-            return BezierCurve::new(elevation_words::derivative_pairwise(self.points()));
-        }
-        BezierCurve::new(words_then_big(|tier| on_tier!(tier, curve_derivative(self, k))))
+    fn degree(&self) -> usize {
+        self.0.len() - 1
     }
-
-    /// The de Casteljau triangle (9) at `t` over integers; equals [`BezierCurve::scheme`].
-    pub fn scheme_fraction_free(&self, t: &BigRational) -> DeCasteljauScheme<BigRational> {
-        DeCasteljauScheme {
-            t: t.clone(),
-            columns: words_then_big(|tier| on_tier!(tier, curve_scheme(self, t))),
-        }
-    }
-
-    /// Subdivision at `t0` over integers; equals [`BezierCurve::split_at`].
-    pub fn split_fraction_free(&self, t0: &BigRational) -> (Self, Self) {
-        let (left, right) = words_then_big(|tier| on_tier!(tier, curve_split(self, t0)));
-        let valid = "the points of a valid curve's scheme";
-        (
-            BezierCurve::new(left).expect(valid),
-            BezierCurve::new(right).expect(valid),
-        )
-    }
-
-    /// One degree elevation step (7) over integers; equals [`BezierCurve::elevate`].
-    pub fn elevate_fraction_free(&self) -> Result<Self> {
-        check_degree("degree after elevation", self.degree() as u128 + 1)?;
-        let points = curve_elevate::<i128>(self).unwrap_or_else(|| elevation_words::elevate_pairwise(self.points()));
-        BezierCurve::new(points)
-    }
-
-    /// `r` elevation steps by the closed form (8) over integers; equals
-    /// [`BezierCurve::elevate_by`].
-    ///
-    ///
-    /// One step (`r = 1`) combines each point with its neighbour over their own denominators,
-    /// not (8) over the common denominator of the whole curve: with distinct denominators every
-    /// point of (8) is as long as all `n + 1` inputs together, so one step would cost time
-    /// quadratic in the degree. Several steps keep (8): taken one by one they re-reduce every
-    /// point at every step, which the oracle's calibration measured slower on integers, floats
-    /// and decimals (its work estimate is made for (8)).
-    pub fn elevate_by_fraction_free(&self, r: usize) -> Result<Self> {
-        check_degree("degree after elevation", self.degree() as u128 + r as u128)?;
-        match r {
-            0 => Ok(self.clone()),
-            1 => self.elevate_fraction_free(),
-            _ => BezierCurve::new(words_then_big(|tier| on_tier!(tier, curve_elevate_by(self, r)))),
-        }
+    fn dim(&self) -> usize {
+        self.0[0].dim()
     }
 }
 
-impl RationalBezierCurve<BigRational> {
-    /// `x(t)` as the homogeneous curve's point by [`BezierCurve::eval`]'s exact kernels,
-    /// then `x = X / W` by the gcds of the two numerators and of the two denominators
-    /// ([`gcd::divide`]); equals [`RationalBezierCurve::eval`], and a vanishing
-    /// denominator `w(t) = 0` is the same error.
-    ///
-    /// ```
-    /// use casteljau::{BigRational, RationalBezierCurve, Scalar};
-    /// let arc = RationalBezierCurve::<BigRational>::from_ints(&[&[1, 0], &[1, 1], &[0, 1]], &[1, 1, 2]).unwrap();
-    /// let t = BigRational::from_ratio(2, 5).unwrap();
-    /// assert_eq!(arc.eval_nested(&t).unwrap(), arc.eval(&t).unwrap());
-    /// ```
-    pub fn eval_nested(&self, t: &BigRational) -> Result<Point<BigRational>> {
-        let h = self.homogeneous().eval(t);
-        let (w, x) = h.coords().split_last().expect("dim + 1 ≥ 2 homogeneous coordinates");
-        if w.is_zero() {
-            return Err(self.vanishing(t));
-        }
-        Ok(Point::new(x.iter().map(|c| gcd::divide(c, w)).collect()).expect("as many coordinates as a valid point"))
-    }
+/// A surface's net of control points as the kernels read it.
+struct Net<'a>(&'a [Vec<Point<BigRational>>]);
 
-    /// `x'(t) = n (h₁ w₀ − h₀ w₁) / w(t)²`, with `(h₀, w₀)` and `(h₁, w₁)` the homogeneous
-    /// curves of the points `0..n` and `1..=n` at `t` (the last-but-one column of de
-    /// Casteljau's scheme) by [`BezierCurve::eval`]'s kernels, and one reduction per
-    /// coordinate; equals [`RationalBezierCurve::derivative_at`], and a vanishing `w(t)` is
-    /// the same error.
-    ///
-    /// With `h₀ = a/b`, `h₁ = c/d`, `w₀ = a_w/b_w`, `w₁ = c_w/d_w` in lowest terms and
-    /// `t = p/q`: `w(t) = W / (q b_w d_w)`, `W = (q − p) a_w d_w + p c_w b_w`, and
-    ///
-    /// ```text
-    /// x'(t) = n (c a_w b d_w − a c_w d b_w) q² b_w d_w / (b d W²).
-    /// ```
-    ///
-    /// The two columns' denominators `b` and `d` share most of their factors; with
-    /// `g = gcd(b, d)`, `b = g b'`, `d = g d'`, the numerator is
-    /// `n (c a_w b' d_w − a c_w d' b_w) q² b_w d_w` over `g b' d' W²`, reduced part by part
-    /// (`W²` by gcds with `W`, `gcd::reduce_by_power`).
-    ///
-    /// ```
-    /// use casteljau::{BigRational, RationalBezierCurve, Scalar};
-    /// let arc = RationalBezierCurve::<BigRational>::from_ints(&[&[1, 0], &[1, 1], &[0, 1]], &[1, 1, 2]).unwrap();
-    /// let t = BigRational::from_ratio(2, 5).unwrap();
-    /// assert_eq!(arc.derivative_at_nested(&t).unwrap(), arc.derivative_at_reference(&t).unwrap());
-    /// ```
-    pub fn derivative_at_nested(&self, t: &BigRational) -> Result<Point<BigRational>> {
-        let points = self.homogeneous().points();
-        let n = points.len() - 1;
-        if n == 0 {
-            return self.derivative_at_reference(t);
-        }
-        let column = |range: std::ops::Range<usize>| BezierCurve::from_valid(points[range].iter().cloned()).eval(t);
-        let (h0, h1) = (column(0..n), column(1..n + 1));
-        let (w0, h0) = h0.coords().split_last().expect("dim + 1 ≥ 2 homogeneous coordinates");
-        let (w1, h1) = h1.coords().split_last().expect("dim + 1 ≥ 2 homogeneous coordinates");
-        let (p, q) = (t.numer(), t.denom());
-        let (a_w, b_w, c_w, d_w) = (w0.numer(), w0.denom(), w1.numer(), w1.denom());
-        let big_w = (q - p) * a_w * d_w + p * c_w * b_w;
-        if big_w.is_zero() {
-            return Err(self.vanishing(t));
-        }
-        let common = BigInt::from(n) * q * q * b_w * d_w;
-        let coords = h0.iter().zip(h1).map(|(x0, x1)| {
-            let (a, b, c, d) = (x0.numer(), x0.denom(), x1.numer(), x1.denom());
-            // `b` and `d` share the factors of the points 1..n−1: over `g b' d'` the
-            // numerator is shorter than over `b d` by the length of `g`.
-            let g = gcd::gcd_int(b, d);
-            let (b1, d1) = if g.is_one() {
-                (b.clone(), d.clone())
-            } else {
-                (b / &g, d / &g)
-            };
-            let num = (c * a_w * &b1 * d_w - a * c_w * &d1 * b_w) * &common;
-            gcd::reduce(
-                num,
-                &[
-                    Part::Number(&b1),
-                    Part::Number(&d1),
-                    Part::Number(&g),
-                    Part::Power(&big_w, 2),
-                ],
-            )
+impl Net<'_> {
+    fn net(&self) -> &[Vec<Point<BigRational>>] {
+        self.0
+    }
+    fn degrees(&self) -> (usize, usize) {
+        (self.0.len() - 1, self.0[0].len() - 1)
+    }
+    fn dim(&self) -> usize {
+        self.0[0][0].dim()
+    }
+}
+
+// The kernels on control points (a valid curve's: at least one point, one dimension), what
+// `BigRational`'s `Scalar` methods and the curve types' `*_nested` / `*_fraction_free`
+// methods run.
+
+/// `b(t)` by the nested (Horner) Bernstein sum over integers.
+pub(crate) fn eval(points: &[Point<BigRational>], t: &BigRational) -> Point<BigRational> {
+    // The curve passes through its end points, (1) at t = 0 and 1: no sum to form.
+    if t.is_zero() {
+        return points[0].clone();
+    }
+    if t.is_one() {
+        return points[points.len() - 1].clone();
+    }
+    let c = &Curve(points);
+    words_then_big(|tier| on_tier!(tier, curve_eval(c, t)))
+}
+
+/// The `k`-th derivative vector at `t`, `k` at most the degree.
+pub(crate) fn derivative_at(points: &[Point<BigRational>], k: usize, t: &BigRational) -> Point<BigRational> {
+    let c = &Curve(points);
+    words_then_big(|tier| on_tier!(tier, curve_derivative_at(c, k, t)))
+}
+
+/// The `k`-th derivative curve's points; `k > n` is [`Error::DerivativeOrder`].
+pub(crate) fn derivative(points: &[Point<BigRational>], k: usize) -> Result<Vec<Point<BigRational>>> {
+    let c = &Curve(points);
+    if k > c.degree() {
+        return Err(Error::DerivativeOrder {
+            order: k,
+            degree: c.degree(),
         });
-        Ok(Point::new(coords.collect()).expect("as many coordinates as a valid point"))
+    }
+    if k == 1 {
+        // Neighbours combined pairwise: each point over its own two denominators, where a
+        // denominator common to the whole curve makes every point as long as all inputs.
+        if let Some(points) = curve_derivative::<i128>(c, 1) {
+            return Ok(points);
+        }
+        return Ok(elevation_words::derivative_pairwise(points));
+    }
+    Ok(words_then_big(|tier| on_tier!(tier, curve_derivative(c, k))))
+}
+
+/// The columns of de Casteljau's triangle (9) at `t`.
+pub(crate) fn scheme(points: &[Point<BigRational>], t: &BigRational) -> Vec<Vec<Point<BigRational>>> {
+    let c = &Curve(points);
+    words_then_big(|tier| on_tier!(tier, curve_scheme(c, t)))
+}
+
+/// The two halves of the subdivision at `t0`.
+pub(crate) fn split(points: &[Point<BigRational>], t0: &BigRational) -> (Points, Points) {
+    let c = &Curve(points);
+    words_then_big(|tier| on_tier!(tier, curve_split(c, t0)))
+}
+
+/// One degree elevation step (7); beyond [`crate::MAX_DEGREE`] an error.
+pub(crate) fn elevate(points: &[Point<BigRational>]) -> Result<Vec<Point<BigRational>>> {
+    let c = &Curve(points);
+    check_degree("degree after elevation", c.degree() as u128 + 1)?;
+    Ok(curve_elevate::<i128>(c).unwrap_or_else(|| elevation_words::elevate_pairwise(points)))
+}
+
+/// `r` elevation steps by the closed form (8).
+///
+/// One step (`r = 1`) combines each point with its neighbour over their own denominators,
+/// not (8) over the common denominator of the whole curve: with distinct denominators every
+/// point of (8) is as long as all `n + 1` inputs together, so one step would cost time
+/// quadratic in the degree. Several steps keep (8): taken one by one they re-reduce every
+/// point at every step, which the oracle's calibration measured slower on integers, floats
+/// and decimals (its work estimate is made for (8)).
+pub(crate) fn elevate_by(points: &[Point<BigRational>], r: usize) -> Result<Vec<Point<BigRational>>> {
+    let c = &Curve(points);
+    check_degree("degree after elevation", c.degree() as u128 + r as u128)?;
+    match r {
+        0 => Ok(points.to_vec()),
+        1 => elevate(points),
+        _ => Ok(words_then_big(|tier| on_tier!(tier, curve_elevate_by(c, r)))),
     }
 }
 
-impl BezierSurface<BigRational> {
-    /// `b(u, v)` by nested sums over integers, rows at `v` then the column at `u`, one
-    /// reduction per coordinate; equals [`BezierSurface::eval`], which runs it for exact
-    /// rationals.
-    pub fn eval_nested(&self, u: &BigRational, v: &BigRational) -> Point<BigRational> {
-        words_then_big(|tier| on_tier!(tier, surface_eval(self, u, v)))
+/// A rational curve at `t` from its homogeneous points: the homogeneous point by [`eval`],
+/// then `x = X / W` by the gcds of the two numerators and of the two denominators
+/// ([`gcd::divide`]); `None` when the denominator `w(t)` vanishes.
+pub(crate) fn rational_eval(homogeneous: &[Point<BigRational>], t: &BigRational) -> Option<Point<BigRational>> {
+    let h = eval(homogeneous, t);
+    let (w, x) = h.coords().split_last().expect("dim + 1 ≥ 2 homogeneous coordinates");
+    if w.is_zero() {
+        return None;
     }
+    Some(Point::new(x.iter().map(|c| gcd::divide(c, w)).collect()).expect("as many coordinates as a valid point"))
+}
+
+/// A rational curve's derivative at `t` from its homogeneous points of degree `n ≥ 1`
+/// (`RationalBezierCurve::derivative_at_nested` says how); `None` when `w(t)` vanishes.
+pub(crate) fn rational_derivative_at(points: &[Point<BigRational>], t: &BigRational) -> Option<Point<BigRational>> {
+    let n = points.len() - 1;
+    let column = |range: std::ops::Range<usize>| eval(&points[range], t);
+    let (h0, h1) = (column(0..n), column(1..n + 1));
+    let (w0, h0) = h0.coords().split_last().expect("dim + 1 ≥ 2 homogeneous coordinates");
+    let (w1, h1) = h1.coords().split_last().expect("dim + 1 ≥ 2 homogeneous coordinates");
+    let (p, q) = (t.numer(), t.denom());
+    let (a_w, b_w, c_w, d_w) = (w0.numer(), w0.denom(), w1.numer(), w1.denom());
+    let big_w = (q - p) * a_w * d_w + p * c_w * b_w;
+    if big_w.is_zero() {
+        return None;
+    }
+    let common = BigInt::from(n) * q * q * b_w * d_w;
+    let coords = h0.iter().zip(h1).map(|(x0, x1)| {
+        let (a, b, c, d) = (x0.numer(), x0.denom(), x1.numer(), x1.denom());
+        // `b` and `d` share the factors of the points 1..n−1: over `g b' d'` the
+        // numerator is shorter than over `b d` by the length of `g`.
+        let g = gcd::gcd_int(b, d);
+        let (b1, d1) = if g.is_one() {
+            (b.clone(), d.clone())
+        } else {
+            (b / &g, d / &g)
+        };
+        let num = (c * a_w * &b1 * d_w - a * c_w * &d1 * b_w) * &common;
+        gcd::reduce(
+            num,
+            &[
+                Part::Number(&b1),
+                Part::Number(&d1),
+                Part::Number(&g),
+                Part::Power(&big_w, 2),
+            ],
+        )
+    });
+    Some(Point::new(coords.collect()).expect("as many coordinates as a valid point"))
+}
+
+/// A surface at `(u, v)` by nested sums over integers, rows at `v` then the column at `u`,
+/// one reduction per coordinate.
+pub(crate) fn surface_point(net: &[Vec<Point<BigRational>>], u: &BigRational, v: &BigRational) -> Point<BigRational> {
+    let sf = &Net(net);
+    words_then_big(|tier| on_tier!(tier, surface_eval(sf, u, v)))
 }
 
 /// `Σ_i C(n,i) pⁱ (q−p)^(n−i) x_i` for integer `x_0..x_n` and `t = p/q`, exactly: the

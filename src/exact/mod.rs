@@ -10,17 +10,20 @@
 //!   computed once and shared across threads;
 //! - [`gcd`]: Lehmer's gcd, the part-by-part reduction the kernels end with, and the
 //!   quotient of two fractions;
+//! - `fit_numbers`: text 004's cubic fit over integers, one reduction per number;
 //! - `splitting`: the exact Bernstein sum on big integers by binary splitting (what `eval`
 //!   runs when machine words overflow), reduced through a remainder tree;
 //! - `power_basis`: `to_power` of curves and surfaces, differences over the lcm of the
 //!   denominators and one reduction per coefficient;
 //! - `elevation_words`: one elevation step point by point, each coordinate on machine
-//!   words where it fits 256 bits;
-//! - `dispatch`: how the public generic methods hand exact rationals to the kernels.
+//!   words where it fits 256 bits.
+//!
+//! The public generic methods reach these kernels through the kernel methods of
+//! `BigRational`'s [`Scalar`](crate::Scalar) implementation.
 
 pub mod basis_table;
-pub(crate) mod dispatch;
 pub(crate) mod elevation_words;
+pub(crate) mod fit_numbers;
 pub mod fraction_free;
 pub mod gcd;
 pub(crate) mod power_basis;

@@ -11,9 +11,9 @@
 //! surface is its columns' curves, then its rows'. Inputs whose lcm and differences fit
 //! `i128` stay on machine words.
 
+use crate::coords::Point;
 use crate::exact::fraction_free::{common_denominator, transpose, Int};
 use crate::exact::gcd;
-use crate::point::Point;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Zero};

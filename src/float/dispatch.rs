@@ -1,20 +1,17 @@
-//! The kernel choice inside `Bezier::eval` for interval points: a curve whose coordinates
-//! are [`Interval`]s ([`Point<Interval>`], or [`PointN`] of `Interval` in 1 to 3
-//! dimensions), evaluated at a point `t ∈ [0, 1]`, is enclosed per coordinate by the
-//! sign-split kernel of [`crate::interval_de_casteljau`] (two float triangles) instead of
-//! the generic algorithm's interval operations. Every other curve, an interval `t` and a
-//! `t` outside `[0, 1]` take the generic algorithm.
+//! The kernel of `Bezier::eval` for interval points: a curve whose coordinates are
+//! [`Interval`]s ([`Point<Interval>`], or [`PointN`] of `Interval` in 1 to 3 dimensions),
+//! evaluated at a point `t ∈ [0, 1]`, is enclosed per coordinate by the sign-split kernel of
+//! [`crate::interval_de_casteljau`] (two float triangles) instead of the generic algorithm's
+//! interval operations. Every other curve, an interval `t` and a `t` outside `[0, 1]` take
+//! the generic algorithm.
 //!
-//! The choice is by type identity ([`Any`]), as in `crate::exact::dispatch`: a constant once
-//! the generic code is instantiated, so the code for other scalars keeps no trace of it.
+//! `Interval`'s `Scalar` implementation chooses it (its `curve_eval` methods): a method of
+//! the type, so the code for other scalars keeps no trace of it.
 
-use crate::curve::Bezier;
-use crate::exact::dispatch::cast;
+use crate::coords::{Point, PointN, INLINE_COORDS};
 use crate::interval::{sign_split_enclosure_by, sign_split_enclosure_of, Interval};
-use crate::point::{Point, INLINE_COORDS};
 use crate::scalar::Ring;
-use crate::space::{PointN, VectorSpace};
-use std::any::{Any, TypeId};
+use crate::space::VectorSpace;
 use std::cell::Cell;
 
 /// The point of `dim ≤ INLINE_COORDS` coordinates, coordinate `k` the expression given
@@ -54,49 +51,47 @@ macro_rules! inline_point {
     }};
 }
 
-/// `b(t)` by the sign-split enclosure when the points are intervals and `t` is a point of
-/// `[0, 1]`; `None` otherwise, and when a coefficient is not finite (the generic algorithm
-/// then gives its own enclosure).
+/// `t` as a float when it is a point of `[0, 1]` (where the Bernstein weights are
+/// nonnegative), else `None`.
 #[inline(always)]
-pub(crate) fn interval_eval<P: VectorSpace + 'static>(c: &Bezier<P>, t: &P::Scalar) -> Option<P>
-where
-    P::Scalar: 'static,
-{
-    if TypeId::of::<P::Scalar>() != TypeId::of::<Interval>() {
-        return None;
-    }
-    enclose_curve(c, t)
-}
-
-/// Inlined into `eval`, so that an interval cubic whose points have at most 4 coordinates
-/// (a point's inline capacity) is enclosed and its point built in place, without a call and
-/// a copy of the result through memory; every other curve goes out of line.
-#[inline(always)]
-fn enclose_curve<P: VectorSpace + 'static>(c: &Bezier<P>, t: &P::Scalar) -> Option<P>
-where
-    P::Scalar: 'static,
-{
-    let t = *(t as &dyn Any).downcast_ref::<Interval>()?;
+fn unit_point(t: &Interval) -> Option<f64> {
     if t.lo() != t.hi() || !(0.0..=1.0).contains(&t.lo()) {
         return None;
     }
-    let t = t.lo();
-    let any = c as &dyn Any;
-    if let Some(c) = any.downcast_ref::<Bezier<Point<Interval>>>() {
-        let points = c.points();
-        if let [p0, p1, p2, p3] = points {
-            // each point's coordinates looked up once
-            let coords = [p0.coords(), p1.coords(), p2.coords(), p3.coords()];
-            let dim = coords[0].len();
-            if dim <= INLINE_COORDS && coords.iter().all(|c| c.len() == dim) {
-                return cast(inline_point!(dim, k => enclose_gathered(coords.map(|c| c[k]), t))).ok();
-            }
+    Some(t.lo())
+}
+
+/// `b(t)` for interval points of run-time dimension by the sign-split enclosure, when `t`
+/// is a point of `[0, 1]`; `None` otherwise, and when a coefficient is not finite (the
+/// generic algorithm then gives its own enclosure). Inlined into `eval`, so that an
+/// interval cubic whose points have at most 4 coordinates (a point's inline capacity) is
+/// enclosed and its point built in place, without a call and a copy of the result through
+/// memory; every other curve goes out of line.
+#[inline(always)]
+pub(crate) fn enclose_points(points: &[Point<Interval>], t: &Interval) -> Option<Point<Interval>> {
+    let t = unit_point(t)?;
+    if let [p0, p1, p2, p3] = points {
+        // each point's coordinates looked up once
+        let coords = [p0.coords(), p1.coords(), p2.coords(), p3.coords()];
+        let dim = coords[0].len();
+        if dim <= INLINE_COORDS && coords.iter().all(|c| c.len() == dim) {
+            return Some(inline_point!(dim, k => enclose_gathered(coords.map(|c| c[k]), t)));
         }
-        return cast(curve_of_points(points, t)?).ok();
     }
-    fixed::<P, 1>(any, t)
-        .or_else(|| fixed::<P, 2>(any, t))
-        .or_else(|| fixed::<P, 3>(any, t))
+    curve_of_points(points, t)
+}
+
+/// `b(t)` for interval points of fixed dimension `D` (1 to 3; `None` for more, which take
+/// the generic algorithm), as [`enclose_points`].
+#[inline(always)]
+pub(crate) fn enclose_fixed<const D: usize>(
+    points: &[PointN<Interval, D>],
+    t: &Interval,
+) -> Option<PointN<Interval, D>> {
+    if D > 3 {
+        return None;
+    }
+    fixed(points, unit_point(t)?)
 }
 
 /// Any other curve of points of run-time dimension, coordinate by coordinate.
@@ -111,13 +106,12 @@ fn curve_of_points(points: &[Point<Interval>], t: f64) -> Option<Point<Interval>
 }
 
 #[inline(never)]
-fn fixed<P: 'static, const D: usize>(any: &dyn Any, t: f64) -> Option<P> {
-    let c = any.downcast_ref::<Bezier<PointN<Interval, D>>>()?;
+fn fixed<const D: usize>(points: &[PointN<Interval, D>], t: f64) -> Option<PointN<Interval, D>> {
     let mut coords = [Interval::zero(); D];
     for (k, x) in coords.iter_mut().enumerate() {
-        *x = enclose_coordinate(c.points(), k, t)?;
+        *x = enclose_coordinate(points, k, t)?;
     }
-    cast(PointN(coords)).ok()
+    Some(PointN(coords))
 }
 
 /// Coordinate `k` of the curve on `points` at `t ∈ [0, 1]`: the Bernstein weights are

@@ -29,7 +29,7 @@ pub use compensated::{
     compensated_a_priori_bound, compensated_de_casteljau, compensated_de_casteljau_by, compensated_derivative,
     compensated_surface,
 };
-pub(crate) use dispatch::interval_eval;
+pub(crate) use dispatch::{enclose_fixed, enclose_points};
 pub use dyadic::{dyadic_ratio, eval_dyadic};
 pub use eft::{fast_two_sum, two_product, two_product_dekker, two_product_fma, two_sum, TWO_PRODUCT_METHOD};
 pub(crate) use eft::{ExactRange, Factor};
