@@ -13,6 +13,12 @@ use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
+mod lehmer;
+
+/// Numbers up to this many words take Lehmer's gcd ([`lehmer`]); longer ones dashu-int's,
+/// whose subquadratic algorithms win there.
+const LEHMER_WORDS: usize = 20;
+
 /// The greatest common divisor of two unsigned words (binary gcd, no division).
 pub(crate) fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
     if a == 0 {
@@ -60,19 +66,45 @@ pub(crate) fn gcd_u128(mut a: u128, mut b: u128) -> u128 {
     }
 }
 
-/// `gcd(a, b)` of natural numbers: within two words by a machine gcd, otherwise by
-/// dashu-int's (its digits are copied in and out: still faster, `benches/exact.rs`).
+/// `gcd(a, b)` of natural numbers: within two words by a machine gcd; with one operand a
+/// word, by the other's remainder (no copy); up to [`LEHMER_WORDS`] words by Lehmer's
+/// algorithm ([`lehmer`]); longer by dashu-int's (its digits are copied in and out: still
+/// faster than num-bigint's, `benches/exact.rs`).
 pub fn gcd(a: &BigUint, b: &BigUint) -> BigUint {
     if let (Some(x), Some(y)) = (a.to_u128(), b.to_u128()) {
         return BigUint::from(gcd_u128(x, y));
     }
-    let g = dashu_int::ops::Gcd::gcd(to_dashu(a), to_dashu(b));
-    BigUint::new(
-        g.as_words()
-            .iter()
-            .flat_map(|&w| [w as u32, (w >> 32) as u32])
-            .collect(),
-    )
+    for (long, short) in [(a, b), (b, a)] {
+        if let Some(m) = short.to_u64() {
+            if m == 0 {
+                return long.clone();
+            }
+            return BigUint::from(gcd_u64(m, rem_word(long, m)));
+        }
+    }
+    let words = |x: &BigUint| x.bits().div_ceil(64) as usize;
+    let g = if words(a).max(words(b)) <= LEHMER_WORDS {
+        lehmer::gcd_limbs(a.to_u64_digits(), b.to_u64_digits())
+    } else {
+        dashu_int::ops::Gcd::gcd(to_dashu(a), to_dashu(b)).as_words().to_vec()
+    };
+    BigUint::new(g.iter().flat_map(|&w| [w as u32, (w >> 32) as u32]).collect())
+}
+
+/// `x mod m` for a word `m > 0`, from `x`'s words in place.
+pub(crate) fn rem_word(x: &BigUint, m: u64) -> u64 {
+    if let Ok(small) = u32::try_from(m) {
+        // Half words: each step a 64-bit division (an instruction, a 128-bit one a call).
+        let m = u64::from(small);
+        return x.iter_u64_digits().rev().fold(0u64, |r, w| {
+            let r = ((r << 32) | (w >> 32)) % m;
+            ((r << 32) | (w & 0xFFFF_FFFF)) % m
+        });
+    }
+    let m = u128::from(m);
+    x.iter_u64_digits()
+        .rev()
+        .fold(0u128, |r, w| ((r << 64) | u128::from(w)) % m) as u64
 }
 
 fn to_dashu(x: &BigUint) -> dashu_int::UBig {
