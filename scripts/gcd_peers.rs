@@ -67,9 +67,17 @@ fn main() {
                 black_box(black_box(a).gcd(black_box(b)));
             }
         };
-        // Repetitions for about 20 ms of our gcd per batch.
-        let once = mean_ns(1, 1, &ours).max(1.0);
-        let reps = ((20e6 / once) as u64).max(1);
+        // Repetitions for about 20 ms of our gcd per batch, counted by doubling: the thread's
+        // CPU clock moves at scheduler ticks.
+        let mut reps = 1u64;
+        loop {
+            let spent = mean_ns(reps, 1, &ours);
+            if spent >= 4e6 {
+                reps = ((reps as f64 * 20e6 / spent) as u64).max(1);
+                break;
+            }
+            reps *= 2;
+        }
         let mut times: [Vec<f64>; 3] = Default::default();
         for _ in 0..5 {
             for (k, f) in [&ours as &dyn Fn(), &theirs, &num].into_iter().enumerate() {

@@ -454,6 +454,34 @@ mod tests {
             prop_assert_eq!(got, want);
         }
 
+        /// The big-integer pair against num-rational's own arithmetic, in lowest terms: long
+        /// numerators and denominators (1 to 8 words) that share a factor of any length with
+        /// each other (`g` of several words) and small primes with the weights and the total,
+        /// negative values, zero, and the derivative's negated first term.
+        #[test]
+        fn big_pair_is_num_rationals(
+            (x, y) in (proptest::collection::vec(any::<u64>(), 0..8), proptest::collection::vec(any::<u64>(), 0..8)),
+            (d, e, common) in (proptest::collection::vec(any::<u64>(), 1..6), proptest::collection::vec(any::<u64>(), 1..6), proptest::collection::vec(any::<u64>(), 0..4)),
+            (small_d, small_e) in (0usize..6, 0usize..6),
+            (signs, negate_first) in (any::<(bool, bool)>(), any::<bool>()),
+            (alpha, beta, total) in (1u32..70, 1u32..70, 1u32..70),
+        ) {
+            let big = |limbs: &[u64]| BigInt::from_biguint(Sign::Plus, BigUint::new(limbs.iter().flat_map(|&w| [w as u32, (w >> 32) as u32]).collect()));
+            // Small primes the weights and the total may share, to every power up to 5.
+            let smooth = |k: usize| BigInt::from(2u32.pow(k as u32) * 3u32.pow((k % 3) as u32) * 5u32.pow((k % 2) as u32) * 7u32.pow((k / 3) as u32));
+            let common = big(&common).max(BigInt::one());
+            let d = (big(&d).max(BigInt::one())) * &common * smooth(small_d);
+            let e = (big(&e).max(BigInt::one())) * &common * smooth(small_e);
+            let sign = |n: BigInt, negative: bool| if negative { -n } else { n };
+            let a = BigRational::new(sign(big(&x) * smooth(small_e), signs.0), d);
+            let b = BigRational::new(sign(big(&y), signs.1), e);
+            let first = if negate_first { -&a } else { a.clone() };
+            let want = (first * BigInt::from(alpha) + &b * BigInt::from(beta)) / BigInt::from(total);
+            let got = pair_big(&a, negate_first, alpha, &b, beta, total);
+            prop_assert_eq!(format!("{got:?}"), format!("{want:?}"));
+            prop_assert_eq!(got, want);
+        }
+
         #[test]
         fn exact_division_of_a_double_word(q in any::<u128>(), shift in 0u32..128, k in 1u32..) {
             // Quotients of every length, the product below 2^128.

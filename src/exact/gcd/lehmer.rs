@@ -2,15 +2,17 @@
 //!
 //! Euclid's algorithm on numbers of a few hundred bits spends its time in multi-word
 //! divisions whose quotients are almost all below 4. Lehmer's algorithm (Knuth, TAOCP vol. 2,
-//! 4.5.2, Algorithm L) runs Euclid on the leading 63 bits of both numbers instead, for as
-//! long as the quotients are certainly those of the whole numbers, collecting them in a 2×2
-//! cofactor matrix, and then applies the matrix to the whole numbers in one pass — about
-//! 30 bits of both numbers per pass, with word arithmetic in between. A pass that finds no
-//! certain quotient (a first quotient beyond a word) takes one long division instead.
+//! 4.5.2) runs Euclid on the leading 61 bits of both numbers instead, for as long as the
+//! quotients are certainly those of the whole numbers (Jebelean's condition), collecting
+//! them in a 2×2 cofactor matrix, and then applies the matrix to the whole numbers in one
+//! pass — about 30 bits of both numbers per pass, with word arithmetic in between. A pass
+//! that finds no certain quotient (a first quotient beyond a word) takes one long division instead.
 //!
 //! The matrix is applied into scratch buffers and checked: a result that would be negative
-//! (which Algorithm L's test rules out) is not used, and a long division is taken instead,
-//! so that the answer is Euclid's whatever the cofactors.
+//! (which the condition rules out), or a pass that does not shrink the smaller number, is
+//! not used, and a long division is taken instead. The matrix is a product of Euclid steps
+//! (determinant ±1), so two nonnegative results have the gcd of the inputs: the answer is
+//! right and the loop ends whatever the cofactors.
 
 use super::{gcd_u128, gcd_u64};
 use num_bigint::BigUint;
@@ -90,15 +92,18 @@ fn rem_long(x: &[u64], y: &[u64]) -> Vec<u64> {
 }
 
 /// The cofactor matrix `[[A, B], [C, D]]` of the quotients of Euclid's algorithm on the
-/// leading 63 bits of `a` (with `b` shifted alike) that are certainly quotients of `a`, `b`
-/// themselves: the next pair is `(A a + B b, C a + D b)`. `None` when not even the first one
-/// is (`B = 0`).
+/// leading 61 bits `x` of `a` and `y` of `b` (shifted alike) that are certainly quotients
+/// of `a`, `b` themselves: the next pair is `(A a + B b, C a + D b)`. `None` when not even
+/// the first one is.
 ///
-/// Algorithm L: the leading bits `x`, `y` bound `a / b` between `x / (y + 1)` and
-/// `(x + 1) / y`; after some quotients with cofactors `A..D` the ratio of the current pair
-/// lies between `(x + B) / (y + D)` and `(x + A) / (y + C)`, and a quotient is taken only
-/// when both bounds give it.
-fn cofactors(a: &[u64], b: &[u64]) -> Option<[i128; 4]> {
+/// Jebelean's condition (Jebelean 1993, "Improving the multiprecision Euclidean
+/// algorithm"): with `r_i = u_i x + v_i y` the remainders, the quotient that makes `r_{i+1}`
+/// is kept while `r_{i+1} ≥ |u_{i+1}|, |v_{i+1}|` and `r_i − r_{i+1} ≥ |u_{i+1} − u_i|,
+/// |v_{i+1} − v_i|` (both cofactors tested, where the paper tests one by parity: stricter,
+/// so still sufficient) — one quotient and comparisons per step, where Knuth's test takes
+/// two quotients. Below 2^61, every cofactor and difference fits an `i64`: an accepted
+/// `|u_i| ≤ r_i`, so `|q u_i| ≤ r_{i−1} < 2^61`.
+fn cofactors(a: &[u64], b: &[u64]) -> Option<[i64; 4]> {
     let n = a.len();
     let shift = a[n - 1].leading_zeros();
     let top = |x: &[u64]| {
@@ -109,31 +114,23 @@ fn cofactors(a: &[u64], b: &[u64]) -> Option<[i128; 4]> {
         } else {
             (high << shift) | (low >> (64 - shift))
         };
-        // 63 bits, so that x + A stays below 2^64.
-        i128::from(word >> 1)
+        (word >> 3) as i64
     };
-    let (mut x, mut y) = (top(a), top(b));
-    let (mut ca, mut cb, mut cc, mut cd) = (1i128, 0i128, 0i128, 1i128);
-    loop {
-        let (lower_den, upper_den) = (y + cc, y + cd);
-        if lower_den <= 0 || upper_den <= 0 || x + ca < 0 || x + cb < 0 {
+    let (mut r0, mut r1) = (top(a), top(b));
+    let (mut u0, mut u1, mut v0, mut v1) = (1i64, 0i64, 0i64, 1i64);
+    while r1 > 0 {
+        let q = quotient(r0 as u64, r1 as u64) as i64;
+        let (r2, u2, v2) = (r0 - q * r1, u0 - q * u1, v0 - q * v1);
+        if r2 < u2.abs().max(v2.abs()) || r1 - r2 < (u2 - u1).abs().max((v2 - v1).abs()) {
             break;
         }
-        let q = quotient((x + ca) as u64, lower_den as u64);
-        // The other bound's quotient is q too: q (y + D) ≤ x + B < (q + 1)(y + D).
-        let (low, high) = (q * upper_den, (q + 1) * upper_den);
-        if !(low <= x + cb && x + cb < high) {
-            break;
-        }
-        (ca, cc) = (cc, ca - q * cc);
-        (cb, cd) = (cd, cb - q * cd);
-        (x, y) = (y, x - q * y);
+        (r0, r1, u0, u1, v0, v1) = (r1, r2, u1, u2, v1, v2);
     }
-    (cb != 0).then_some([ca, cb, cc, cd])
+    (v0 != 0).then_some([u0, v0, u1, v1])
 }
 
 /// `⌊x / y⌋`, `y > 0`: Euclid's quotients are mostly 1 to 3, found by subtraction.
-fn quotient(x: u64, y: u64) -> i128 {
+fn quotient(x: u64, y: u64) -> u64 {
     let r = x.wrapping_sub(y);
     if x < y {
         0
@@ -142,23 +139,21 @@ fn quotient(x: u64, y: u64) -> i128 {
     } else if r - y < y {
         2
     } else {
-        i128::from(x / y)
+        x / y
     }
 }
 
 /// `(A a + B b, C a + D b)` into `next_a`, `next_b`; false (and the buffers unspecified) when
-/// either would be negative or a cofactor does not fit a word.
-fn apply(m: &[i128; 4], a: &[u64], b: &[u64], next_a: &mut Vec<u64>, next_b: &mut Vec<u64>) -> bool {
+/// either would be negative.
+fn apply(m: &[i64; 4], a: &[u64], b: &[u64], next_a: &mut Vec<u64>, next_b: &mut Vec<u64>) -> bool {
     combine(m[0], m[1], a, b, next_a) && combine(m[2], m[3], a, b, next_b)
 }
 
 /// `out ← p a + q b`, for `p`, `q` of opposite signs (or one zero), magnitudes below 2^64:
 /// the positive product minus the negative one, limb by limb with a carry for each and a
 /// borrow between them. False when the result would be negative.
-fn combine(p: i128, q: i128, a: &[u64], b: &[u64], out: &mut Vec<u64>) -> bool {
-    let (Ok(pm), Ok(qm)) = (u64::try_from(p.unsigned_abs()), u64::try_from(q.unsigned_abs())) else {
-        return false;
-    };
+fn combine(p: i64, q: i64, a: &[u64], b: &[u64], out: &mut Vec<u64>) -> bool {
+    let (pm, qm) = (p.unsigned_abs(), q.unsigned_abs());
     if p < 0 && q < 0 || p > 0 && q > 0 {
         return false;
     }
