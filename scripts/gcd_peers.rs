@@ -71,7 +71,7 @@ fn main() {
         // CPU clock moves at scheduler ticks.
         let mut reps = 1u64;
         loop {
-            let spent = mean_ns(reps, 1, &ours);
+            let spent = mean_ns(reps, 1, &ours) * reps as f64;
             if spent >= 4e6 {
                 reps = ((reps as f64 * 20e6 / spent) as u64).max(1);
                 break;
