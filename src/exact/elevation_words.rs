@@ -29,7 +29,7 @@
 
 use crate::coords::Point;
 use crate::exact::gcd::gcd_u64;
-use crate::exact::gcd::{self, Part};
+use crate::exact::gcd;
 use num_bigint::{BigInt, BigUint, Sign};
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -298,46 +298,59 @@ fn pair_words(
     ))
 }
 
-/// `(α a + β b) / total` in lowest terms on big integers, the way GMP adds two fractions
-/// (Knuth, TAOCP vol. 2, 4.5.1): with `a = x/d`, `b = y/e`, `g = gcd(d, e)`, `d = g d'`,
-/// `e = g e'`, the sum is `s / (g d' e')` with `s = α x e' + β y d'`. A prime of `d'` that
-/// divides `s` divides `α` (it divides neither `x` nor `e'`), and likewise for `e'` and `β`:
-/// so `s` is tested against `g` and `total` only, and against `d'` or `e'` only when it
-/// shares a factor with `α` or `β` — one gcd of denominator length instead of two of the
-/// sum's.
-fn pair_big(a: &BigRational, alpha: u32, b: &BigRational, beta: u32, total: &BigInt) -> BigRational {
+/// `(±α a + β b) / total` in lowest terms on big integers (`−` with `negate_first`), the
+/// way GMP adds two fractions (Knuth, TAOCP vol. 2, 4.5.1) with the word path's small gcds
+/// (see the module documentation): with `a = x/d`, `b = y/e`, `g = gcd(d, e)`, `d = g d'`,
+/// `e = g e'`, the sum is `s / (g d' e' total)` with `s = ±α x e' + β y d'`;
+/// `gcd(s, d') = gcd(α, d')` and `gcd(s, e') = gcd(β, e')` are gcds of a word, and what is
+/// left of `s` is reduced against `g` (one gcd of denominator length, none when `g = 1`) and
+/// then against `total` (a word).
+fn pair_big(a: &BigRational, negate_first: bool, alpha: u32, b: &BigRational, beta: u32, total: u32) -> BigRational {
     let (x, d, y, e) = (a.numer(), a.denom(), b.numer(), b.denom());
     let g = gcd::gcd_int(d, e);
-    let (d1, e1) = if g.is_one() {
+    let (mut d1, mut e1) = if g.is_one() {
         (d.clone(), e.clone())
     } else {
         (d / &g, e / &g)
     };
-    let s = x * &e1 * alpha + y * &d1 * beta;
-    // `m` shares no factor with `weight` exactly when no prime of `m` can divide `s`.
-    let coprime = |m: &BigInt, weight: u32| {
-        let r = (m % weight).to_u64().expect("a remainder below a u32");
-        gcd_u64(r, u64::from(weight)) == 1
-    };
-    let (d_free, e_free) = (coprime(&d1, alpha), coprime(&e1, beta));
-    let mut tested = vec![Part::Number(total)];
-    if !g.is_one() {
-        tested.push(Part::Number(&g));
+    let first = x * &e1 * alpha;
+    let second = y * &d1 * beta;
+    let mut s = if negate_first { second - first } else { first + second };
+    if s.is_zero() {
+        return BigRational::new_raw(s, BigInt::one());
     }
-    let mut untested = BigInt::one();
-    for (m, free) in [(&d1, d_free), (&e1, e_free)] {
-        if free {
-            untested *= m;
+    let small_gcd = |m: &BigInt, weight: u32| {
+        let weight = u64::from(weight);
+        gcd_u64(weight, gcd::rem_word(m.magnitude(), weight)) as u32
+    };
+    let (hx, hy) = (small_gcd(&d1, alpha), small_gcd(&e1, beta));
+    if hx != 1 {
+        d1 /= hx;
+    }
+    if hy != 1 {
+        e1 /= hy;
+    }
+    if hx * hy != 1 {
+        s /= hx * hy;
+    }
+    let mut den = d1 * e1;
+    if !g.is_one() {
+        let h = gcd::gcd_int(&s, &g);
+        if h.is_one() {
+            den *= g;
         } else {
-            tested.push(Part::Number(m));
+            s /= &h;
+            den *= g / h;
         }
     }
-    let r = gcd::reduce(s, &tested);
-    if r.numer().is_zero() {
-        return r;
+    if total != 1 {
+        let h = small_gcd(&s, total);
+        if h != 1 {
+            s /= h;
+        }
+        den *= total / h;
     }
-    let (num, den) = r.into_raw();
-    BigRational::new_raw(num, den * untested)
+    BigRational::new_raw(s, den)
 }
 
 /// One elevation step (7) of the points, each new coordinate reduced on its own.
@@ -367,7 +380,6 @@ fn combine_neighbours(
     negate_first: bool,
 ) -> Vec<Point<BigRational>> {
     let n = points.len() - 1;
-    let total_big = BigInt::from(total);
     let dim = points[0].dim();
     let words: Vec<Option<WordFraction>> = points
         .iter()
@@ -396,10 +408,7 @@ fn combine_neighbours(
                 }
                 _ => None,
             };
-            fast.unwrap_or_else(|| {
-                let first = if negate_first { -&before[k] } else { before[k].clone() };
-                pair_big(&first, alpha, &here[k], beta, &total_big)
-            })
+            fast.unwrap_or_else(|| pair_big(&before[k], negate_first, alpha, &here[k], beta, total))
         });
         out.push(Point::from_valid(coords));
     }
@@ -442,6 +451,34 @@ mod tests {
                 pairs.iter().zip(&skipped).map(|(&p, &skip)| (!skip).then_some(p)).collect();
             let got = gcd::paired_gcds(input.iter().copied());
             let want: Vec<u128> = input.iter().map(|p| p.map_or(0, |(a, b)| gcd_u128(a, b))).collect();
+            prop_assert_eq!(got, want);
+        }
+
+        /// The big-integer pair against num-rational's own arithmetic, in lowest terms: long
+        /// numerators and denominators (1 to 8 words) that share a factor of any length with
+        /// each other (`g` of several words) and small primes with the weights and the total,
+        /// negative values, zero, and the derivative's negated first term.
+        #[test]
+        fn big_pair_is_num_rationals(
+            (x, y) in (proptest::collection::vec(any::<u64>(), 0..8), proptest::collection::vec(any::<u64>(), 0..8)),
+            (d, e, common) in (proptest::collection::vec(any::<u64>(), 1..6), proptest::collection::vec(any::<u64>(), 1..6), proptest::collection::vec(any::<u64>(), 0..4)),
+            (small_d, small_e) in (0usize..6, 0usize..6),
+            (signs, negate_first) in (any::<(bool, bool)>(), any::<bool>()),
+            (alpha, beta, total) in (1u32..70, 1u32..70, 1u32..70),
+        ) {
+            let big = |limbs: &[u64]| BigInt::from_biguint(Sign::Plus, BigUint::new(limbs.iter().flat_map(|&w| [w as u32, (w >> 32) as u32]).collect()));
+            // Small primes the weights and the total may share, to every power up to 5.
+            let smooth = |k: usize| BigInt::from(2u32.pow(k as u32) * 3u32.pow((k % 3) as u32) * 5u32.pow((k % 2) as u32) * 7u32.pow((k / 3) as u32));
+            let common = big(&common).max(BigInt::one());
+            let d = (big(&d).max(BigInt::one())) * &common * smooth(small_d);
+            let e = (big(&e).max(BigInt::one())) * &common * smooth(small_e);
+            let sign = |n: BigInt, negative: bool| if negative { -n } else { n };
+            let a = BigRational::new(sign(big(&x) * smooth(small_e), signs.0), d);
+            let b = BigRational::new(sign(big(&y), signs.1), e);
+            let first = if negate_first { -&a } else { a.clone() };
+            let want = (first * BigInt::from(alpha) + &b * BigInt::from(beta)) / BigInt::from(total);
+            let got = pair_big(&a, negate_first, alpha, &b, beta, total);
+            prop_assert_eq!(format!("{got:?}"), format!("{want:?}"));
             prop_assert_eq!(got, want);
         }
 
