@@ -220,9 +220,12 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
             Ok(())
         }
         (Data::Symbolic(s), Verdict::Proved) => {
-            let (goal, data) = hyper::fields(s);
+            let (goal, data, lemmas) = hyper::fields(s);
             out.insert("goal".into(), goal);
             out.insert("pieces".into(), data);
+            if !lemmas.is_empty() {
+                out.insert("lemmas".into(), Json::Array(lemmas));
+            }
             Ok(())
         }
         (Data::Expanded(eqs), Verdict::Proved | Verdict::ProvedInRange) => expansion::fields(eqs, out),
