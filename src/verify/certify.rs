@@ -21,6 +21,7 @@ use std::str::FromStr;
 mod computation;
 mod expansion;
 mod hyper;
+mod links;
 mod polygon;
 
 /// The `format` field of every certificate.
@@ -604,13 +605,14 @@ fn recheck(cert: &Json) -> Res<Option<String>> {
     }
 }
 
-/// Re-checks one certificate's text with the kernel alone.
-pub fn check_certificate(text: &str) -> Recheck {
+/// Re-checks one certificate's text with the kernel alone: its JSON value and the result, a
+/// proof citing lemmas accepted here with their goals assumed.
+fn check_alone(text: &str) -> (links::Link, Recheck) {
     let cert: Json = match serde_json::from_str(text) {
         Ok(v) => v,
-        Err(e) => return Recheck::Refused(format!("not JSON: {e}")),
+        Err(e) => return (links::Link::of(None), Recheck::Refused(format!("not JSON: {e}"))),
     };
-    match recheck(&cert) {
+    let r = match recheck(&cert) {
         Ok(Some(what)) => Recheck::Accepted(what),
         Ok(None) => Recheck::NotChecked(
             cert.get("reason")
@@ -619,7 +621,22 @@ pub fn check_certificate(text: &str) -> Recheck {
                 .to_string(),
         ),
         Err(obligation) => Recheck::Refused(obligation),
-    }
+    };
+    (links::Link::of(Some(&cert)), r)
+}
+
+/// Re-checks certificate texts together with the kernel: each file alone, then the lemmas
+/// each cites resolved among them (a file citing a lemma is accepted only when the lemma's
+/// file is among `texts`, is accepted and states the goal it assumes; no cycle).
+pub fn check_certificate_texts(texts: &[&str]) -> Vec<Recheck> {
+    let (links, alone): (Vec<_>, Vec<_>) = texts.iter().map(|t| check_alone(t)).unzip();
+    links::resolve(&links, alone)
+}
+
+/// Re-checks one certificate's text with the kernel alone (a proof citing a lemma is "not
+/// re-checked": the lemma's file is not given).
+pub fn check_certificate(text: &str) -> Recheck {
+    check_certificate_texts(&[text]).remove(0)
 }
 
 /// Re-checks certificate files: each path a file, or a directory whose `.json` files are read
@@ -649,9 +666,9 @@ pub fn check_certificates(paths: &[PathBuf]) -> Result<Vec<(PathBuf, Recheck)>> 
             files.push(p.clone());
         }
     }
-    let mut out = Vec::with_capacity(files.len());
-    for f in files {
-        let size = std::fs::metadata(&f).map_err(|e| io(&f, e))?.len();
+    let (mut links, mut alone) = (Vec::with_capacity(files.len()), Vec::with_capacity(files.len()));
+    for f in &files {
+        let size = std::fs::metadata(f).map_err(|e| io(f, e))?.len();
         if size > MAX_FILE_BYTES {
             return Err(Error::TooLarge {
                 what: "certificate file",
@@ -659,9 +676,9 @@ pub fn check_certificates(paths: &[PathBuf]) -> Result<Vec<(PathBuf, Recheck)>> 
                 limit: format!("{MAX_FILE_BYTES} bytes"),
             });
         }
-        let text = std::fs::read_to_string(&f).map_err(|e| io(&f, e))?;
-        let r = check_certificate(&text);
-        out.push((f, r));
+        let (link, r) = check_alone(&std::fs::read_to_string(f).map_err(|e| io(f, e))?);
+        links.push(link);
+        alone.push(r);
     }
-    Ok(out)
+    Ok(files.into_iter().zip(links::resolve(&links, alone)).collect())
 }

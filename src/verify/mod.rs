@@ -89,7 +89,7 @@ mod translate;
 use crate::error::{Error, Result};
 use std::path::PathBuf;
 
-pub use certify::{check_certificate, check_certificates, write_certificates, Recheck};
+pub use certify::{check_certificate, check_certificate_texts, check_certificates, write_certificates, Recheck};
 pub use kernel::checked::{Evaluation, Method, Step, StepKind, Verdict};
 pub use kernel::{Proof, Trusted};
 pub use kinds::check_claim;

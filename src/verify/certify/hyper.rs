@@ -134,10 +134,17 @@ fn read_goal(g: &Json, whole: &str) -> Res<Symbolic> {
         for_all.push((name, string(r, "from", &at)?.to_string(), to));
     }
     if for_all.len() != ints.len() || !for_all.iter().any(|r| r.2.is_none()) {
-        return Err(format!("{whole}.for_all: one range per integer symbol, at least one open (to: null)"));
+        return Err(format!(
+            "{whole}.for_all: one range per integer symbol, at least one open (to: null)"
+        ));
     }
     let polygon = match object(g, "polygon", whole)? {
-        Some((name, d)) => Some((name, d.as_str().ok_or_else(|| format!("{whole}.polygon.degree: not a string"))?.to_string())),
+        Some((name, d)) => Some((
+            name,
+            d.as_str()
+                .ok_or_else(|| format!("{whole}.polygon.degree: not a string"))?
+                .to_string(),
+        )),
         None => None,
     };
     let net = match object(g, "net", whole)? {

@@ -27,10 +27,18 @@ pub(super) fn written(ctx: &Ctx<'_>, sides: &[Expr], identity: &Identity, lemmas
     let d = &ctx.decls;
     let ints: Vec<&str> = d.ranges.iter().map(|r| r.var.as_str()).collect();
     let refs: Vec<&Expr> = sides.iter().collect();
-    let reals = ctx.params(&refs).into_iter().filter(|v| !ints.contains(&v.as_str())).collect();
+    let reals = ctx
+        .params(&refs)
+        .into_iter()
+        .filter(|v| !ints.contains(&v.as_str()))
+        .collect();
     Some(Symbolic {
         reals,
-        for_all: d.ranges.iter().map(|r| (r.var.clone(), r.from.clone(), r.to.clone())).collect(),
+        for_all: d
+            .ranges
+            .iter()
+            .map(|r| (r.var.clone(), r.from.clone(), r.to.clone()))
+            .collect(),
         polygon: d.polygon.as_ref().map(|p| (p.name.clone(), p.degree.clone())),
         net: d.net.as_ref().map(|n| (n.name.clone(), n.degree.clone())),
         members: sides.iter().map(ToString::to_string).collect(),
@@ -97,7 +105,11 @@ pub(crate) fn prove_written(goal: &Symbolic) -> Result<(super::Method, usize)> {
             first.certificate
         )));
     }
-    let lemmas: Vec<Lemma> = goal.lemmas.iter().map(|(id, g)| read_lemma(id, g)).collect::<Result<_>>()?;
+    let lemmas: Vec<Lemma> = goal
+        .lemmas
+        .iter()
+        .map(|(id, g)| read_lemma(id, g))
+        .collect::<Result<_>>()?;
     let refused = |m| Error::Domain(format!("the kernel refuses a for-every proof by {m:?}"));
     if let Some(var) = &goal.induction {
         let identity = identity_of(goal);
