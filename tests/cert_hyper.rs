@@ -201,7 +201,7 @@ fn mutants(cert: &Value) -> Vec<(String, Value)> {
 /// `m` says (its WZ certificates, induction variable and lemmas).
 fn claim_toml(id: &str, m: &Value) -> String {
     let g = &m["goal"];
-    let q = |s: &str| format!("'{s}'");
+    let q = |s: &str| format!("{s:?}");
     let ranges: Vec<String> = g["for_all"]
         .as_array()
         .unwrap()
