@@ -3,7 +3,10 @@
 //! re-checks every re-checkable one, and tampered copies are refused — or, where a mutant
 //! still proves its (changed) goal, the search proves that goal too.
 
-use casteljau::verify::{check_certificate, check_certificate_texts, claims, identity_file, prove_files, write_certificates, Recheck, Verdict};
+use casteljau::verify::{
+    check_certificate, check_certificate_texts, claims, identity_file, prove_files, write_certificates, Recheck,
+    Verdict,
+};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 

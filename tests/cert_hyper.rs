@@ -128,7 +128,13 @@ fn mutants(cert: &Value) -> Vec<(String, Value)> {
     for i in 0..cert["pieces"]["certificates"].as_array().unwrap().len() {
         edit("certificate R", &format!("/pieces/certificates/{i}"), cert);
     }
-    for (k, lemma) in cert.get("lemmas").and_then(Value::as_array).into_iter().flatten().enumerate() {
+    for (k, lemma) in cert
+        .get("lemmas")
+        .and_then(Value::as_array)
+        .into_iter()
+        .flatten()
+        .enumerate()
+    {
         for i in 0..lemma["goal"]["equalities"].as_array().unwrap().len() {
             edit("lemma goal side", &format!("/lemmas/{k}/goal/equalities/{i}/lhs"), cert);
             edit("lemma goal side", &format!("/lemmas/{k}/goal/equalities/{i}/rhs"), cert);

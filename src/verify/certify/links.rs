@@ -95,7 +95,7 @@ impl Resolver<'_> {
         }
         self.state[i] = State::Visiting;
         self.path.push(c.id.clone().unwrap_or_default());
-        let out = self.lemmas(&lemmas, what);
+        let out = self.lemmas(lemmas, what);
         self.path.pop();
         out
     }
