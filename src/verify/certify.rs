@@ -22,6 +22,7 @@ mod computation;
 mod convergence;
 mod expansion;
 mod hyper;
+mod links;
 mod polygon;
 
 /// The `format` field of every certificate.
@@ -228,9 +229,12 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
             Ok(())
         }
         (Data::Symbolic(s), Verdict::Proved) => {
-            let (goal, data) = hyper::fields(s);
+            let (goal, data, lemmas) = hyper::fields(s);
             out.insert("goal".into(), goal);
             out.insert("pieces".into(), data);
+            if !lemmas.is_empty() {
+                out.insert("lemmas".into(), Json::Array(lemmas));
+            }
             Ok(())
         }
         (Data::Expanded(eqs), Verdict::Proved | Verdict::ProvedInRange) => expansion::fields(eqs, out),
@@ -270,7 +274,7 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
             "the counterexample was found by {method}, whose data this version does not record (not done)"
         )),
         (_, Verdict::Proved) if matches!(o.method, Some(Method::Pieces | Method::Wz)) => Err(format!(
-            "method {method}: its goal is written only for an identity resting on no lemma (a claim it uses) and on no assumption beyond its ranges (not done)"
+            "method {method}: its goal is written only for an identity whose cited lemmas have written goals (not for an inequality) (not done)"
         )),
         _ => Err(format!(
             "method {method}: this version records no data for it (not done)"
@@ -650,13 +654,14 @@ fn recheck(cert: &Json) -> Res<Option<String>> {
     }
 }
 
-/// Re-checks one certificate's text with the kernel alone.
-pub fn check_certificate(text: &str) -> Recheck {
+/// Re-checks one certificate's text with the kernel alone: its JSON value and the result, a
+/// proof citing lemmas accepted here with their goals assumed.
+fn check_alone(text: &str) -> (links::Link, Recheck) {
     let cert: Json = match serde_json::from_str(text) {
         Ok(v) => v,
-        Err(e) => return Recheck::Refused(format!("not JSON: {e}")),
+        Err(e) => return (links::Link::of(None), Recheck::Refused(format!("not JSON: {e}"))),
     };
-    match recheck(&cert) {
+    let r = match recheck(&cert) {
         Ok(Some(what)) => Recheck::Accepted(what),
         Ok(None) => Recheck::NotChecked(
             cert.get("reason")
@@ -665,7 +670,22 @@ pub fn check_certificate(text: &str) -> Recheck {
                 .to_string(),
         ),
         Err(obligation) => Recheck::Refused(obligation),
-    }
+    };
+    (links::Link::of(Some(&cert)), r)
+}
+
+/// Re-checks certificate texts together with the kernel: each file alone, then the lemmas
+/// each cites resolved among them (a file citing a lemma is accepted only when the lemma's
+/// file is among `texts`, is accepted and states the goal it assumes; no cycle).
+pub fn check_certificate_texts(texts: &[&str]) -> Vec<Recheck> {
+    let (links, alone): (Vec<_>, Vec<_>) = texts.iter().map(|t| check_alone(t)).unzip();
+    links::resolve(&links, alone)
+}
+
+/// Re-checks one certificate's text with the kernel alone (a proof citing a lemma is "not
+/// re-checked": the lemma's file is not given).
+pub fn check_certificate(text: &str) -> Recheck {
+    check_certificate_texts(&[text]).remove(0)
 }
 
 /// Re-checks certificate files: each path a file, or a directory whose `.json` files are read
@@ -695,9 +715,9 @@ pub fn check_certificates(paths: &[PathBuf]) -> Result<Vec<(PathBuf, Recheck)>> 
             files.push(p.clone());
         }
     }
-    let mut out = Vec::with_capacity(files.len());
-    for f in files {
-        let size = std::fs::metadata(&f).map_err(|e| io(&f, e))?.len();
+    let (mut links, mut alone) = (Vec::with_capacity(files.len()), Vec::with_capacity(files.len()));
+    for f in &files {
+        let size = std::fs::metadata(f).map_err(|e| io(f, e))?.len();
         if size > MAX_FILE_BYTES {
             return Err(Error::TooLarge {
                 what: "certificate file",
@@ -705,9 +725,9 @@ pub fn check_certificates(paths: &[PathBuf]) -> Result<Vec<(PathBuf, Recheck)>> 
                 limit: format!("{MAX_FILE_BYTES} bytes"),
             });
         }
-        let text = std::fs::read_to_string(&f).map_err(|e| io(&f, e))?;
-        let r = check_certificate(&text);
-        out.push((f, r));
+        let (link, r) = check_alone(&std::fs::read_to_string(f).map_err(|e| io(f, e))?);
+        links.push(link);
+        alone.push(r);
     }
-    Ok(out)
+    Ok(files.into_iter().zip(links::resolve(&links, alone)).collect())
 }

@@ -23,6 +23,7 @@
 
 use super::claims::{Claim, Decls, Identity, Sides};
 use super::context::Ctx;
+use super::kernel::certificate::Symbolic;
 use super::kernel::expr::Expr;
 use super::rewrite::{all_names, derive, map_children, substitute};
 use crate::error::{Error, Result};
@@ -143,6 +144,10 @@ pub(crate) struct Lemma {
     formula: Expr,
     /// Where it holds: its ranges, each condition `≥ 0`.
     conditions: Vec<Expr>,
+    /// The claim's goal as its own certificate states it, when it has one (set by the caller
+    /// from the claim's proof): a proof citing the lemma lists it, and `check` compares it with
+    /// the lemma's file.
+    pub statement: Option<Box<Symbolic>>,
 }
 
 /// A condition `≥ 0` that must hold wherever a lemma or a definition was applied: the sums
@@ -253,6 +258,7 @@ impl Lemma {
             degree,
             formula,
             conditions,
+            statement: None,
         })
     }
 

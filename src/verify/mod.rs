@@ -89,7 +89,7 @@ mod translate;
 use crate::error::{Error, Result};
 use std::path::PathBuf;
 
-pub use certify::{check_certificate, check_certificates, write_certificates, Recheck};
+pub use certify::{check_certificate, check_certificate_texts, check_certificates, write_certificates, Recheck};
 pub use kernel::checked::{Evaluation, Method, Step, StepKind, Verdict};
 pub use kernel::{Proof, Trusted};
 pub use kinds::check_claim;
@@ -142,8 +142,14 @@ struct Decided {
 fn decide_one(claim: &claims::Claim, lemmas: &Result<Vec<lemma::Lemma>>, detail: bool) -> Result<Decided> {
     let (checked, ctx) = kinds::check_citing(claim, lemmas, detail)?;
     let range_bound = scope::range_bound_in(claim, &ctx, checked.verdict());
-    let lemma =
-        (checked.verdict() == Verdict::Proved && claim.for_every()).then(|| lemma::Lemma::from_claim(claim, &ctx));
+    let lemma = (checked.verdict() == Verdict::Proved && claim.for_every()).then(|| {
+        let mut lemma = lemma::Lemma::from_claim(claim, &ctx)?;
+        // The goal the claim's own certificate writes, for the certificates citing it.
+        if let kernel::certificate::Data::Symbolic(goal) = checked.data() {
+            lemma.statement = Some(Box::new(symbolic::written::statement(goal)));
+        }
+        Ok(lemma)
+    });
     Ok(Decided {
         checked,
         range_bound,

@@ -245,21 +245,31 @@ pub(crate) fn prove_symbolic(
     lemmas: &[Lemma],
 ) -> Result<(String, Vec<Step>, Proof)> {
     let refused = |method: Method| Error::Domain(format!("the kernel refuses a for-every proof by {method:?}"));
-    if let Some(var) = &identity.induction {
-        let (cert, log, base, step) = induction::prove(ctx, identity, var, lemmas)?;
-        let proof = check_induction(&base, &step).ok_or_else(|| refused(Method::Induction))?;
-        return Ok((cert, log, proof));
-    }
     let sides = parsed_sides(closed, identity)?;
-    let rewritten = lemma::apply(&sides, &ctx.decls, lemmas)?;
-    let goal = written::written(ctx, &rewritten, &identity.certificates);
-    let (cert, log, method, evidence) = prove_sides(&ctx.decls, closed, rewritten, &identity.certificates)?;
-    let proof = check_discharged(method, &evidence).ok_or_else(|| refused(method))?;
-    let proof = match goal {
+    let with_goal = |proof: Proof, goal: Option<_>| match goal {
         Some(g) => proof.with_goal(g),
         None => proof,
     };
-    Ok((cert, log, proof))
+    if let Some(var) = &identity.induction {
+        let goal = written::written(ctx, &sides, identity, lemmas);
+        let (cert, log, base, step) = induction::prove(ctx, identity, var, lemmas)?;
+        let proof = check_induction(&base, &step).ok_or_else(|| refused(Method::Induction))?;
+        return Ok((cert, log, with_goal(proof, goal)));
+    }
+    let rewritten = lemma::apply(&sides, &ctx.decls, lemmas)?;
+    // Without lemmas the goal is the sides as the objects' definitions read them (a checker
+    // needs no definition of an object), and only when reading them left no obligation; with
+    // lemmas it is the claim's sides, which `check` reads through the lemmas' goals again.
+    let goal = if !lemmas.is_empty() {
+        written::written(ctx, &sides, identity, lemmas)
+    } else if rewritten.obligations.is_empty() && rewritten.assumptions.is_empty() {
+        written::written(ctx, &rewritten.sides, identity, lemmas)
+    } else {
+        None
+    };
+    let (cert, log, method, evidence) = prove_sides(&ctx.decls, closed, rewritten, &identity.certificates)?;
+    let proof = check_discharged(method, &evidence).ok_or_else(|| refused(method))?;
+    Ok((cert, log, with_goal(proof, goal)))
 }
 
 /// The members of an identity, parsed in `ctx`.

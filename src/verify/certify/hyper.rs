@@ -9,8 +9,23 @@ use super::super::symbolic::written::prove_written;
 use super::{array, field, method_name, string, Res};
 use serde_json::{json, Value as Json};
 
-/// The goal and the data of a written for-every proof.
-pub(super) fn fields(s: &Symbolic) -> (Json, Json) {
+/// The goal, the data and the cited lemmas (`[{"id", "goal"}]`, empty when none) of a written
+/// for-every proof.
+pub(super) fn fields(s: &Symbolic) -> (Json, Json, Vec<Json>) {
+    let lemmas = s
+        .lemmas
+        .iter()
+        .map(|(id, g)| json!({"id": id, "goal": goal_json(g)}))
+        .collect();
+    let mut data = json!({"certificates": s.certificates});
+    if let Some(var) = &s.induction {
+        data["induction"] = json!(var);
+    }
+    (goal_json(s), data, lemmas)
+}
+
+/// The goal of a written for-every proof (its statement, no proof data).
+fn goal_json(s: &Symbolic) -> Json {
     let mut symbols: Vec<Json> = s.reals.iter().map(|n| json!({"name": n, "sort": "real"})).collect();
     symbols.extend(s.for_all.iter().map(|(n, ..)| json!({"name": n, "sort": "integer"})));
     let for_all: Vec<Json> = s
@@ -30,29 +45,71 @@ pub(super) fn fields(s: &Symbolic) -> (Json, Json) {
     if let Some((name, degree)) = &s.net {
         goal["net"] = json!({"name": name, "degree": degree});
     }
-    (goal, json!({"certificates": s.certificates}))
+    goal
 }
 
 /// An optional `{"name", "degree"}` object of the goal.
-fn object<'a>(g: &'a Json, key: &str) -> Res<Option<(String, &'a Json)>> {
+fn object<'a>(g: &'a Json, key: &str, whole: &str) -> Res<Option<(String, &'a Json)>> {
     match g.get(key) {
         None => Ok(None),
         Some(o) => {
-            let at = format!("goal.{key}");
+            let at = format!("{whole}.{key}");
             Ok(Some((string(o, "name", &at)?.to_string(), field(o, "degree", &at)?)))
         }
     }
 }
 
-/// Reads a written goal back (see [`fields`]).
+/// Reads a written goal back with its data (see [`fields`]).
 fn read(cert: &Json) -> Res<Symbolic> {
-    let g = field(cert, "goal", "certificate")?;
-    if string(g, "relation", "goal")? != "=" {
-        return Err("goal.relation: only '=' is defined".into());
+    let mut goal = read_goal(field(cert, "goal", "certificate")?, "goal")?;
+    let p = field(cert, "pieces", "certificate")?;
+    goal.certificates = array(p, "certificates", "pieces")?
+        .iter()
+        .enumerate()
+        .map(|(i, c)| {
+            c.as_str()
+                .map(str::to_string)
+                .ok_or_else(|| format!("pieces.certificates[{i}]: not a string"))
+        })
+        .collect::<Res<_>>()?;
+    goal.induction = match p.get("induction") {
+        None => None,
+        Some(_) => Some(string(p, "induction", "pieces")?.to_string()),
+    };
+    goal.lemmas = lemmas(cert)?
+        .into_iter()
+        .enumerate()
+        .map(|(i, (id, g))| Ok((id, read_goal(g, &format!("lemmas[{i}].goal"))?)))
+        .collect::<Res<_>>()?;
+    Ok(goal)
+}
+
+/// The lemmas a certificate cites: each id and goal as written (`[]` without the field).
+pub(super) fn lemmas(cert: &Json) -> Res<Vec<(String, &Json)>> {
+    let Some(list) = cert.get("lemmas") else {
+        return Ok(Vec::new());
+    };
+    let list = list.as_array().ok_or("lemmas: not a list")?;
+    let mut out: Vec<(String, &Json)> = Vec::new();
+    for (i, l) in list.iter().enumerate() {
+        let at = format!("lemmas[{i}]");
+        let id = string(l, "id", &at)?.to_string();
+        if out.iter().any(|(seen, _)| *seen == id) {
+            return Err(format!("{at}: lemma {id} is listed twice"));
+        }
+        out.push((id, field(l, "goal", &at)?));
+    }
+    Ok(out)
+}
+
+/// Reads a written goal (its statement) back; `whole` names it in errors.
+fn read_goal(g: &Json, whole: &str) -> Res<Symbolic> {
+    if string(g, "relation", whole)? != "=" {
+        return Err(format!("{whole}.relation: only '=' is defined"));
     }
     let (mut reals, mut ints) = (Vec::new(), Vec::new());
-    for (i, s) in array(g, "symbols", "goal")?.iter().enumerate() {
-        let at = format!("goal.symbols[{i}]");
+    for (i, s) in array(g, "symbols", whole)?.iter().enumerate() {
+        let at = format!("{whole}.symbols[{i}]");
         let name = string(s, "name", &at)?.to_string();
         if reals.contains(&name) || ints.contains(&name) {
             return Err(format!("{at}: '{name}' is declared twice"));
@@ -64,8 +121,8 @@ fn read(cert: &Json) -> Res<Symbolic> {
         }
     }
     let mut for_all = Vec::new();
-    for (i, r) in array(g, "for_all", "goal")?.iter().enumerate() {
-        let at = format!("goal.for_all[{i}]");
+    for (i, r) in array(g, "for_all", whole)?.iter().enumerate() {
+        let at = format!("{whole}.for_all[{i}]");
         let name = string(r, "name", &at)?.to_string();
         if ints.get(i) != Some(&name) {
             return Err(format!("{at}: '{name}' is not the integer symbol {i} of the goal"));
@@ -77,25 +134,32 @@ fn read(cert: &Json) -> Res<Symbolic> {
         for_all.push((name, string(r, "from", &at)?.to_string(), to));
     }
     if for_all.len() != ints.len() || !for_all.iter().any(|r| r.2.is_none()) {
-        return Err("goal.for_all: one range per integer symbol, at least one open (to: null)".into());
+        return Err(format!(
+            "{whole}.for_all: one range per integer symbol, at least one open (to: null)"
+        ));
     }
-    let polygon = match object(g, "polygon")? {
-        Some((name, d)) => Some((name, d.as_str().ok_or("goal.polygon.degree: not a string")?.to_string())),
+    let polygon = match object(g, "polygon", whole)? {
+        Some((name, d)) => Some((
+            name,
+            d.as_str()
+                .ok_or_else(|| format!("{whole}.polygon.degree: not a string"))?
+                .to_string(),
+        )),
         None => None,
     };
-    let net = match object(g, "net")? {
+    let net = match object(g, "net", whole)? {
         Some((name, d)) => {
             let d: Vec<&str> = d.as_array().into_iter().flatten().filter_map(Json::as_str).collect();
             match d[..] {
                 [m, n] => Some((name, [m.to_string(), n.to_string()])),
-                _ => return Err("goal.net.degree: not two strings".into()),
+                _ => return Err(format!("{whole}.net.degree: not two strings")),
             }
         }
         None => None,
     };
     let mut members: Vec<String> = Vec::new();
-    for (i, eq) in array(g, "equalities", "goal")?.iter().enumerate() {
-        let at = format!("goal.equalities[{i}]");
+    for (i, eq) in array(g, "equalities", whole)?.iter().enumerate() {
+        let at = format!("{whole}.equalities[{i}]");
         let (l, r) = (string(eq, "lhs", &at)?, string(eq, "rhs", &at)?);
         match members.last() {
             None => members.push(l.to_string()),
@@ -107,25 +171,17 @@ fn read(cert: &Json) -> Res<Symbolic> {
         members.push(r.to_string());
     }
     if members.is_empty() {
-        return Err("goal.equalities: none".into());
+        return Err(format!("{whole}.equalities: none"));
     }
-    let p = field(cert, "pieces", "certificate")?;
-    let certificates = array(p, "certificates", "pieces")?
-        .iter()
-        .enumerate()
-        .map(|(i, c)| {
-            c.as_str()
-                .map(str::to_string)
-                .ok_or_else(|| format!("pieces.certificates[{i}]: not a string"))
-        })
-        .collect::<Res<_>>()?;
     Ok(Symbolic {
         reals,
         for_all,
         polygon,
         net,
         members,
-        certificates,
+        certificates: Vec::new(),
+        lemmas: Vec::new(),
+        induction: None,
     })
 }
 

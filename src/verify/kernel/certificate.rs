@@ -116,6 +116,11 @@ pub struct Symbolic {
     pub members: Vec<String>,
     /// The WZ certificates `R` of the symbolic sums, as the claim gives them.
     pub certificates: Vec<String>,
+    /// The lemmas the proof assumes: each claim's id and goal (its own `certificates`,
+    /// `lemmas` and `induction` empty), checked against the lemma's own file by the caller.
+    pub lemmas: Vec<(String, Symbolic)>,
+    /// Proved by induction on this range symbol (base and step derived again from the goal).
+    pub induction: Option<String>,
 }
 
 impl Data {
