@@ -28,8 +28,8 @@
 //! [`BezierCurve::elevate_reference`](crate::BezierCurve::elevate_reference).
 
 use crate::coords::Point;
-use crate::exact::gcd::gcd_u64;
 use crate::exact::gcd;
+use crate::exact::gcd::gcd_u64;
 use num_bigint::{BigInt, BigUint, Sign};
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};

@@ -15,7 +15,7 @@ use num_rational::BigRational;
 use num_traits::Zero;
 
 /// An operation on the symbolic polygon `b` of degree `n`, called as `name(b, …)`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum PolygonMethod {
     /// `bsum(b, t)`: `eval_bernstein`.
     Bsum,
@@ -40,7 +40,7 @@ pub enum PolygonMethod {
 }
 
 /// An operation on the symbolic net `b` of degree `(m, n)`, called as `name(b, …)`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum NetMethod {
     /// `vfirst(b, u, v)`: `eval_v_first`.
     Vfirst,

@@ -18,6 +18,10 @@ use crate::point::Point;
 use crate::surface::BezierSurface;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
+use std::cell::RefCell;
+use std::collections::HashMap;
+use std::hash::Hash;
+use std::sync::{Arc, Mutex, OnceLock};
 
 use super::super::kernel::expr::Expr;
 
@@ -69,15 +73,43 @@ fn to_bernstein(d: usize) -> Option<Vec<Vec<BigRational>>> {
     Some(inv)
 }
 
+/// [`to_bernstein`] of `d`, computed once per run (every table of degree `d` uses it).
+fn inverse(d: usize) -> Option<Arc<Matrix>> {
+    static INVERSES: Memo<usize> = OnceLock::new();
+    memo(&INVERSES, d, || to_bernstein(d))
+}
+
+/// A square or rectangular table of exact numbers, shared once computed.
+type Matrix = Vec<Vec<BigRational>>;
+type Memo<K> = OnceLock<Mutex<HashMap<K, Arc<Matrix>>>>;
+
+/// `make()`, or what it gave for `key` before in this run (at most `MAX_TABLES` kept).
+fn memo<K: Hash + Eq>(cache: &'static Memo<K>, key: K, make: impl FnOnce() -> Option<Matrix>) -> Option<Arc<Matrix>> {
+    let cache = cache.get_or_init(Default::default);
+    if let Some(t) = cache.lock().ok()?.get(&key) {
+        return Some(Arc::clone(t));
+    }
+    let table = Arc::new(make()?);
+    let mut map = cache.lock().ok()?;
+    if map.len() < MAX_TABLES {
+        map.insert(key, Arc::clone(&table));
+    }
+    Some(table)
+}
+
 fn pow(x: &BigRational, k: usize) -> BigRational {
     (0..k).fold(BigRational::one(), |acc, _| acc * x)
 }
 
 /// The tensor Bernstein coefficients of the values on a grid (the last axis fastest).
-fn coefficients(values: &[BigRational], degrees: &[usize], inverses: &[Vec<Vec<BigRational>>]) -> Vec<BigRational> {
+fn coefficients<M: AsRef<[Vec<BigRational>]>>(
+    values: &[BigRational],
+    degrees: &[usize],
+    inverses: &[M],
+) -> Vec<BigRational> {
     let mut c = values.to_vec();
     let sizes: Vec<usize> = degrees.iter().map(|d| d + 1).collect();
-    for (axis, inv) in inverses.iter().enumerate() {
+    for (axis, inv) in inverses.iter().map(AsRef::as_ref).enumerate() {
         let stride: usize = sizes[axis + 1..].iter().product();
         let len = sizes[axis];
         let mut next = c.clone();
@@ -95,16 +127,33 @@ fn coefficients(values: &[BigRational], degrees: &[usize], inverses: &[Vec<Vec<B
     c
 }
 
-/// The call written from `value(basis polygon, parameter values)`: `points` the control
-/// points (basis polygon `Some(k)` sets the k-th to 1), `axes` each parameter's degree bound
-/// and argument expression.
-fn interpolated(
-    points: &[Expr],
-    axes: &[(usize, Expr)],
+/// Which library operation a table of coefficients is of: everything `value` depends on in
+/// [`polygon`] and [`net`] (the control points enter only as unit polygons).
+#[derive(Clone, PartialEq, Eq, Hash)]
+enum Key {
+    Polygon(PolygonMethod, usize, Option<i64>),
+    Net(NetMethod, usize, usize),
+}
+
+/// Most tables kept: a claim's cases use a few degrees, so the texts need a few dozen.
+const MAX_TABLES: usize = 512;
+
+/// The coefficients of `key`'s operation, computed once per run: `prove` writes the same
+/// call at the same degree in every equality of a case, and in every claim over that polygon.
+fn tables(key: Key, make: impl FnOnce() -> Option<Matrix>) -> Option<Arc<Matrix>> {
+    static TABLES: Memo<Key> = OnceLock::new();
+    memo(&TABLES, key, make)
+}
+
+/// The tensor Bernstein coefficients of `value` on the zero polygon and on each of the
+/// `points` unit polygons, from its values at `d + 1` nodes of each axis.
+fn per_basis(
+    points: usize,
+    degrees: &[usize],
     value: impl Fn(Option<usize>, &[BigRational]) -> Option<BigRational>,
-) -> Option<Expr> {
-    let degrees: Vec<usize> = axes.iter().map(|a| a.0).collect();
-    let inverses = degrees.iter().map(|&d| to_bernstein(d)).collect::<Option<Vec<_>>>()?;
+) -> Option<Vec<Vec<BigRational>>> {
+    let inverses = degrees.iter().map(|&d| inverse(d)).collect::<Option<Vec<_>>>()?;
+    let slices: Vec<&[Vec<BigRational>]> = inverses.iter().map(|m| m.as_slice()).collect();
     let grid: Vec<Vec<BigRational>> = degrees.iter().fold(vec![Vec::new()], |acc, &d| {
         acc.iter()
             .flat_map(|p| {
@@ -116,13 +165,26 @@ fn interpolated(
             })
             .collect()
     });
-    let per_basis = std::iter::once(None)
-        .chain((0..points.len()).map(Some))
+    std::iter::once(None)
+        .chain((0..points).map(Some))
         .map(|b| {
             let values = grid.iter().map(|at| value(b, at)).collect::<Option<Vec<_>>>()?;
-            Some(coefficients(&values, &degrees, &inverses))
+            Some(coefficients(&values, degrees, &slices))
         })
-        .collect::<Option<Vec<_>>>()?;
+        .collect::<Option<Vec<_>>>()
+}
+
+/// The call written from `value(basis polygon, parameter values)`: `points` the control
+/// points (basis polygon `Some(k)` sets the k-th to 1), `axes` each parameter's degree bound
+/// and argument expression.
+fn interpolated(
+    key: Key,
+    points: &[Expr],
+    axes: &[(usize, Expr)],
+    value: impl Fn(Option<usize>, &[BigRational]) -> Option<BigRational>,
+) -> Option<Expr> {
+    let degrees: Vec<usize> = axes.iter().map(|a| a.0).collect();
+    let per_basis = tables(key, || per_basis(points.len(), &degrees, value))?;
     let (zero, units) = per_basis.split_first()?;
     let sizes: Vec<usize> = degrees.iter().map(|d| d + 1).collect();
     let mut terms = Vec::new();
@@ -168,30 +230,53 @@ pub(super) fn polygon(m: PolygonMethod, points: &[Expr], args: &[Expr], r: Optio
     let n = len.checked_sub(1)?;
     let on = |b: Option<usize>| curve(unit(len, b));
     match m {
-        PolygonMethod::Bsum => interpolated(points, &[(n, args.get(1)?.clone())], |b, at| {
-            Some(first(&on(b)?.eval_bernstein(&at[0])))
-        }),
+        PolygonMethod::Bsum => interpolated(
+            Key::Polygon(m, len, None),
+            points,
+            &[(n, args.get(1)?.clone())],
+            |b, at| Some(first(&on(b)?.eval_bernstein(&at[0]))),
+        ),
         PolygonMethod::Left | PolygonMethod::Right => {
             let left = m == PolygonMethod::Left;
             // The parts' degree, read off the library on the zero polygon, as `prove` does.
             let deg = on(None)?.split_at(&BigRational::zero()).0.degree();
             let axes = [(n, args.get(1)?.clone()), (deg, args.get(2)?.clone())];
-            interpolated(points, &axes, |b, at| {
-                let (l, r) = on(b)?.split_at(&at[0]);
-                let part = if left { l } else { r };
+            // The grid's last axis runs fastest: one split serves a whole row of `t` values.
+            let last = RefCell::new(None);
+            interpolated(Key::Polygon(m, len, None), points, &axes, |b, at| {
+                let mut last = last.borrow_mut();
+                let fresh = !matches!(&*last, Some((lb, lt, _)) if *lb == b && *lt == at[0]);
+                if fresh {
+                    let (l, r) = on(b)?.split_at(&at[0]);
+                    *last = Some((b, at[0].clone(), if left { l } else { r }));
+                }
+                let (_, _, part) = last.as_ref()?;
                 Some(first(&part.eval(&at[1])))
             })
         }
         PolygonMethod::Leftp | PolygonMethod::Rightp => {
             let (left, r) = (m == PolygonMethod::Leftp, r?);
-            interpolated(points, &[(n, args.get(1)?.clone())], |b, at| {
-                let (lc, rc) = on(b)?.split_at(&at[0]);
-                Some(pick(if left { &lc } else { &rc }, r))
-            })
+            interpolated(
+                Key::Polygon(m, len, Some(r)),
+                points,
+                &[(n, args.get(1)?.clone())],
+                |b, at| {
+                    let (lc, rc) = on(b)?.split_at(&at[0]);
+                    Some(pick(if left { &lc } else { &rc }, r))
+                },
+            )
         }
         _ => None,
     }
 }
+
+/// The basis net, the parameter and the iso-curve a row of the grid shares.
+type IsoRow = (
+    Option<usize>,
+    BigRational,
+    BezierSurface<BigRational>,
+    Option<BezierCurve<BigRational>>,
+);
 
 /// A net operation at symbolic parameters, written out (`None`: another operation).
 /// `points` the net's control points row by row (`rows × cols`).
@@ -215,13 +300,26 @@ pub(super) fn net(m: NetMethod, points: &[Expr], (rows, cols): (usize, usize), a
         NetMethod::Isov => [(dn, x1), (dm, x2)],
         _ => return None,
     };
-    interpolated(points, &axes, |b, at| {
-        let s = on(b)?;
-        Some(first(&match m {
-            NetMethod::Vfirst => s.eval_v_first(&at[0], &at[1]),
-            NetMethod::Sbsum => s.eval_bernstein(&at[0], &at[1]),
-            NetMethod::Isou => s.iso_u(&at[0]).eval(&at[1]),
-            _ => s.iso_v(&at[0]).eval(&at[1]),
+    // The grid's last axis runs fastest: one net and one iso-curve serve a whole row.
+    let last: RefCell<Option<IsoRow>> = RefCell::new(None);
+    interpolated(Key::Net(m, rows, cols), points, &axes, |b, at| {
+        let mut last = last.borrow_mut();
+        let fresh = !matches!(&*last, Some((lb, lx, ..)) if *lb == b && *lx == at[0]);
+        if fresh {
+            let s = on(b)?;
+            let iso = match m {
+                NetMethod::Isou => Some(s.iso_u(&at[0])),
+                NetMethod::Isov => Some(s.iso_v(&at[0])),
+                _ => None,
+            };
+            *last = Some((b, at[0].clone(), s, iso));
+        }
+        let (_, _, s, iso) = last.as_ref()?;
+        Some(first(&match (m, iso) {
+            (NetMethod::Vfirst, _) => s.eval_v_first(&at[0], &at[1]),
+            (NetMethod::Sbsum, _) => s.eval_bernstein(&at[0], &at[1]),
+            (_, Some(c)) => c.eval(&at[1]),
+            _ => return None,
         }))
     })
 }
