@@ -92,6 +92,9 @@ def _cases(ranges):
         r = ranges[k]
         lo = _int_value(r.get("from"), env, f"goal.for_all[{k}].from")
         hi = lo + OPEN_VALUES - 1 if r.get("to") is None else _int_value(r.get("to"), env, f"goal.for_all[{k}].to")
+        # docs/certificates.md: a range empty at a value evaluated is refused (a claim over
+        # an empty range says nothing), as the program refuses it
+        _need(hi >= lo, f"goal.for_all[{k}]: the range {r['name']} = {lo}..={hi} is empty at {_show(env) or 'the start'}")
         for v in range(lo, hi + 1):
             env[r["name"]] = Fraction(v)
             yield from walk(k + 1, env)

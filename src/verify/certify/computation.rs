@@ -126,6 +126,21 @@ fn weight_type(fact: &Json, at: &str) -> Res<String> {
         .enumerate()
         .map(|(j, x)| number(x, &format!("{at}.weights[{j}]")))
         .collect::<Res<Vec<_>>>()?;
+    // One real field Q(√d): a control point or weight of another field, or a non-real one,
+    // is not a real conic's data (the library's arithmetic would poison, not refuse, it).
+    let mut fields = points
+        .iter()
+        .flatten()
+        .chain(&weights)
+        .filter_map(QuadraticIrrational::radicand);
+    if let Some(d) = fields.next() {
+        if d < 0 {
+            return Err(format!("{at}: √{d} is not real"));
+        }
+        if let Some(e) = fields.find(|&e| e != d) {
+            return Err(format!("{at}: numbers of two fields, √{d} and √{e}"));
+        }
+    }
     let all: Option<Vec<Vec<BigRational>>> = points
         .iter()
         .chain(std::iter::once(&weights))
