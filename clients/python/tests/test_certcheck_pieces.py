@@ -29,7 +29,12 @@ PER_FILE = 5
 
 def _docs():
     docs = [json.load(open(f, encoding="utf-8")) for f in sorted(glob.glob(os.path.join(DATA, "*.json")))]
-    return [d for d in docs if "pieces" in d and d["check"] == "kernel"]
+    # the proofs citing lemmas and the inductions are not proved here (docs/certificates.md)
+    return [d for d in docs if "pieces" in d and d["check"] == "kernel" and not _resting(d)]
+
+
+def _resting(doc):
+    return bool(doc.get("lemmas")) or "induction" in doc["pieces"]
 
 
 def _false_somewhere(doc):
