@@ -86,27 +86,33 @@ fn supers_to_verify(path: &Path) -> usize {
     }
 }
 
+/// The top-level items of a `use` tree's braces, `inner` starting after the `{`: `a`, `b::{c,
+/// d}` of `{a, b::{c, d}}`.
+fn brace_items(inner: &str) -> Vec<String> {
+    let mut depth = 0;
+    let mut items = vec![String::new()];
+    for c in inner.chars() {
+        match c {
+            '{' => depth += 1,
+            '}' if depth == 0 => break,
+            '}' => depth -= 1,
+            ',' if depth == 0 => {
+                items.push(String::new());
+                continue;
+            }
+            _ => {}
+        }
+        items.last_mut().unwrap().push(c);
+    }
+    items
+}
+
 /// The first path segment of each item of a `use` tree's braces or a path: `a`, `b` of
 /// `{a, b::c}`.
 fn heads(rest: &str) -> Vec<String> {
     let ident = |s: &str| -> String { s.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect() };
     if let Some(inner) = rest.strip_prefix('{') {
-        let mut depth = 0;
-        let mut items = vec![String::new()];
-        for c in inner.chars() {
-            match c {
-                '{' => depth += 1,
-                '}' if depth == 0 => break,
-                '}' => depth -= 1,
-                ',' if depth == 0 => {
-                    items.push(String::new());
-                    continue;
-                }
-                _ => {}
-            }
-            items.last_mut().unwrap().push(c);
-        }
-        items
+        brace_items(inner)
             .iter()
             .map(|i| ident(i.trim()))
             .filter(|i| !i.is_empty())
@@ -326,22 +332,7 @@ fn crate_modules() -> std::collections::BTreeMap<Module, PathBuf> {
 fn use_paths(rest: &str) -> Vec<Vec<String>> {
     let rest = rest.trim_start();
     if let Some(inner) = rest.strip_prefix('{') {
-        let mut depth = 0;
-        let mut items = vec![String::new()];
-        for c in inner.chars() {
-            match c {
-                '{' => depth += 1,
-                '}' if depth == 0 => break,
-                '}' => depth -= 1,
-                ',' if depth == 0 => {
-                    items.push(String::new());
-                    continue;
-                }
-                _ => {}
-            }
-            items.last_mut().unwrap().push(c);
-        }
-        return items
+        return brace_items(inner)
             .iter()
             .filter(|i| !i.trim().is_empty())
             .flat_map(|i| use_paths(i))

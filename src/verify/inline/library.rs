@@ -95,6 +95,20 @@ pub(super) fn unit(len: usize, one: Option<usize>) -> Vec<BigRational> {
         .collect()
 }
 
+/// The `rows × cols` net of one coordinate that is 1 at control point `one` (row by row) and 0
+/// elsewhere (`None`: the zero net).
+pub(super) fn unit_net(rows: usize, cols: usize, one: Option<usize>) -> Option<BezierSurface<BigRational>> {
+    let net = unit(rows * cols, one)
+        .chunks(cols)
+        .map(|row| {
+            row.iter()
+                .map(|x| Point::new(vec![x.clone()]).ok())
+                .collect::<Option<Vec<_>>>()
+        })
+        .collect::<Option<Vec<_>>>()?;
+    BezierSurface::new(net).ok()
+}
+
 pub(super) fn pick(c: &BezierCurve<BigRational>, i: i64) -> BigRational {
     usize::try_from(i)
         .ok()
@@ -164,16 +178,7 @@ pub(super) fn written<T: Exact>(
     }
     let k = usize::try_from(int(1)?).ok().filter(|&k| k < 4)?;
     let on = |one: Option<usize>| -> Option<Result1> {
-        let flat = unit(rows * cols, one);
-        let net = flat
-            .chunks(cols)
-            .map(|row| {
-                row.iter()
-                    .map(|x| Point::new(vec![x.clone()]).ok())
-                    .collect::<Option<Vec<_>>>()
-            })
-            .collect::<Option<Vec<_>>>()?;
-        let s = BezierSurface::new(net).ok()?;
+        let s = unit_net(rows, cols, one)?;
         Some(match m {
             NetMethod::Bnd => Result1::Curve(curve_points(&s.boundary()[k])),
             NetMethod::Corner => Result1::Point(coord(&s.corners()[k])),

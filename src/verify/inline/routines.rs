@@ -12,7 +12,7 @@
 //! at d + 1 points); the certificate then states the identity about that polynomial.
 
 use super::super::methods::{NetMethod, PolygonMethod};
-use super::library::{affine, coord as first, pick, unit};
+use super::library::{affine, coord as first, pick, unit, unit_net};
 use crate::curve::BezierCurve;
 use crate::point::Point;
 use crate::surface::BezierSurface;
@@ -282,18 +282,7 @@ type IsoRow = (
 /// `points` the net's control points row by row (`rows × cols`).
 pub(super) fn net(m: NetMethod, points: &[Expr], (rows, cols): (usize, usize), args: &[Expr]) -> Option<Expr> {
     let (dm, dn) = (rows.checked_sub(1)?, cols.checked_sub(1)?);
-    let on = |b: Option<usize>| -> Option<BezierSurface<BigRational>> {
-        let flat = unit(rows * cols, b);
-        let net = flat
-            .chunks(cols)
-            .map(|row| {
-                row.iter()
-                    .map(|x| Point::new(vec![x.clone()]).ok())
-                    .collect::<Option<Vec<_>>>()
-            })
-            .collect::<Option<Vec<_>>>()?;
-        BezierSurface::new(net).ok()
-    };
+    let on = |b: Option<usize>| unit_net(rows, cols, b);
     let (x1, x2) = (args.get(1)?.clone(), args.get(2)?.clone());
     let axes = match m {
         NetMethod::Vfirst | NetMethod::Sbsum | NetMethod::Isou => [(dm, x1), (dn, x2)],
