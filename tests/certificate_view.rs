@@ -370,9 +370,9 @@ fn explain_ends_with_the_certificate_file() {
     assert!(short.lines().count() < 80 && verbose.lines().count() > short.lines().count());
     let latex = explain_files(&files, "000-ex4-points", ExplainStyle::Latex).unwrap();
     assert!(!latex.contains("certificate file"));
-    let none = explain_files(&files, "004-8", ExplainStyle::Short).unwrap();
+    let none = explain_files(&files, "000-affine", ExplainStyle::Short).unwrap();
     assert!(
-        none.contains("\n\ncertificate file 004-8.json: not re-checked: "),
+        none.contains("\n\ncertificate file 000-affine.json: not re-checked: "),
         "{none}"
     );
 }
