@@ -10,10 +10,11 @@
 //! a fit the normal equations are checked solved exactly by the listed `k, l`.
 
 use super::{array, field, not_self_contained, rational, string, Res};
-use crate::conic::{classify_conic, ImplicitConic};
+use crate::conic::{classify_conic, ConicKind, ImplicitConic};
 use crate::point::Point;
 use crate::quadratic::QuadraticIrrational;
 use crate::rational::RationalBezierCurve;
+
 use crate::verify::kernel::check_computed;
 use crate::verify::kernel::Trusted;
 use crate::verify::kinds::conic_coefficients;
@@ -150,25 +151,22 @@ fn weight_type(fact: &Json, at: &str) -> Res<String> {
         // Exact rationals: the library's rational arithmetic, as `prove` ran it.
         Some(mut r) => {
             let w = r.pop().unwrap_or_default();
-            let points = r
-                .into_iter()
-                .enumerate()
-                .map(|(i, c)| Point::new(c).map_err(|e| format!("{at}.points[{i}]: {e}")))
-                .collect::<Res<Vec<_>>>()?;
-            let curve = RationalBezierCurve::new(points, w).map_err(|e| format!("{at}: {e}"))?;
-            classify_conic(&curve).map_err(|e| format!("{at}: {e}"))?
+            classified(r, w, at)?
         }
-        None => {
-            let points = points
-                .into_iter()
-                .enumerate()
-                .map(|(i, c)| Point::new(c).map_err(|e| format!("{at}.points[{i}]: {e}")))
-                .collect::<Res<Vec<_>>>()?;
-            let curve = RationalBezierCurve::new(points, weights).map_err(|e| format!("{at}: {e}"))?;
-            classify_conic(&curve).map_err(|e| format!("{at}: {e}"))?
-        }
+        None => classified(points, weights, at)?,
     };
     Ok(kind.as_str().to_string())
+}
+
+/// The library's type of the rational quadratic on `points` with `weights`, in `T`.
+fn classified<T: crate::scalar::Scalar>(points: Vec<Vec<T>>, weights: Vec<T>, at: &str) -> Res<ConicKind> {
+    let points = points
+        .into_iter()
+        .enumerate()
+        .map(|(i, c)| Point::new(c).map_err(|e| format!("{at}.points[{i}]: {e}")))
+        .collect::<Res<Vec<_>>>()?;
+    let curve = RationalBezierCurve::new(points, weights).map_err(|e| format!("{at}: {e}"))?;
+    classify_conic(&curve).map_err(|e| format!("{at}: {e}"))
 }
 
 /// One fact computed again: the library computation it rests on, once its result is the
