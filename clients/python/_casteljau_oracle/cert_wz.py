@@ -39,6 +39,9 @@ class Wz:
         self.certs = certs  # [(text, tree)]
         self.ints, self.reals = ints, reals
         self.used = []
+        # the unit polygon's (net's) symbolic indices of the case being proved: a file's `R`
+        # names them `__j` (`__k`), as the program's translation does (proofs/README.md)
+        self.unit = None
 
     def sums(self, pv, dom, terms, sums):
         if any(isinstance(y, Sum) for s in sums for y in s.body):
@@ -86,6 +89,8 @@ class Wz:
     def _cert(self, text, tree, dom, s):
         conv = Converter(self.ints, self.reals)
         conv.env[s.name] = s.var
+        for name, u in zip(("__j", "__k"), self.unit or ()):
+            conv.env[name] = u
         try:
             r = conv.pure(tree, "a WZ certificate")
         except Unsupported as e:
@@ -301,6 +306,7 @@ def prove_goal(doc):
                 raise Unsupported(f"goal.equalities[{i}]: sides of different shapes")
             pairs = list(zip(lhs[1], rhs[1]))
         for unit, d in cases:
+            wz.unit = unit
             conv = Converter(ints, reals, obj["name"] if obj else None, unit)
             for j, (a, b) in enumerate(pairs):
                 items = conv.items(a) + [Converter._neg(x) for x in conv.items(b)]
