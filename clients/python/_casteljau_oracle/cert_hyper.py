@@ -47,7 +47,7 @@ def _int_value(text, env, where):
     return int(v)
 
 
-def _read(doc):
+def _read(doc, parse_sides=True):
     goal = doc.get("goal")
     _need(isinstance(goal, dict) and goal.get("relation") == "=", "goal: missing, or its relation is not '='")
     syms = goal.get("symbols")
@@ -69,7 +69,7 @@ def _read(doc):
     known = [o["name"] for o in (polygon, net) if isinstance(o, dict) and isinstance(o.get("name"), str)]
     names = set(reals) | set(ints)
     sides = []
-    for i, eq in enumerate(eqs):
+    for i, eq in enumerate(eqs if parse_sides else ()):
         pair = []
         for key in ("lhs", "rhs"):
             e = parse(eq.get(key), known, strict=True)
@@ -126,6 +126,14 @@ def _control_points(polygon, net, env):
 
 def _show(env):
     return ", ".join(f"{k} = {v}" for k, v in env.items())
+
+
+def check_ranges(doc):
+    """The goal's ranges and polygon at the values `check_pieces` evaluates: raises
+    `PiecesRefused` for a range empty there or a polygon (net) of negative degree."""
+    _, ranges, _, polygon, net = _read(doc, parse_sides=False)
+    for ints in _cases(ranges):
+        _control_points(polygon, net, ints)
 
 
 def check_pieces(doc, skip_empty=False):

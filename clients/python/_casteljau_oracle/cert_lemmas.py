@@ -301,6 +301,19 @@ class _Rewriter:
         _, syms = self._domain(ctx)
         return sympy.expand(_affine(a, syms) - _affine(b, syms)) == 0
 
+    def defined(self, obj, ctx):
+        """Raises `Unsupported` unless the object is read within its scheme on the domain:
+        `b(i, r, g)` for `0 ≤ r`, `0 ≤ i ≤ n − r`; `delta(b, k, j)` for `0 ≤ k`, `0 ≤ j ≤ n − k`
+        (`n` the polygon's degree). The program refuses an object read outside; this checker
+        does not prove such a goal either."""
+        if obj.kind not in ("point", "delta"):
+            return
+        step, index = (obj.args[1], obj.args[0]) if obj.kind == "point" else (obj.args[1], obj.args[2])
+        need = [step, index, ("sub", ("sub", self.degree, step), index)]
+        if not self.holds(ctx, need):
+            args = ", ".join(show(a) for a in obj.args)
+            raise Unsupported(f"the object {obj.kind}({args}) is not shown within its scheme (0 ≤ {show(step)}, 0 ≤ {show(index)} ≤ {show(self.degree)} − {show(step)})")
+
     def rewrite(self, e, visit, ctx=()):
         """`e` with every object call replaced by `visit(obj, ctx)` (bottom-up)."""
         kind = e[0]
@@ -328,6 +341,7 @@ class _Rewriter:
             x = self.names.fresh("x")
             curve = self.apply(lemmas, _Object("point", (_ZERO_F, self.degree, ("var", x))), ctx)
             return subst(_derivative(curve, x, obj.order), {x: obj.args[0]}, self.names)
+        self.defined(obj, ctx)
         why = []
         for lem in lemmas:
             if lem.kind != obj.kind:
@@ -439,6 +453,11 @@ def prove_resting(doc, refs, check_pieces):
         return proved, f"{detail}; the goal rewritten with its lemmas' goals assumed (applied: {used}), each application within the lemma's ranges"
     if lemmas:
         raise Unsupported("an induction that also cites lemmas")
+    # as for any for-every goal: a range empty at a value evaluated, or a polygon of negative
+    # degree there, is refused (the base and step, derived, may have empty ranges)
+    from .cert_hyper import check_ranges
+
+    check_ranges(doc)
     return _prove_induction(doc, goal, var, check_pieces)
 
 
@@ -488,6 +507,7 @@ def _prove_induction(doc, goal, var, check_pieces):
     rw = _Rewriter(base_ints, ineqs_of(base_ranges), name, degree, names)
 
     def at_base(obj, ctx):
+        rw.defined(obj, ctx)
         if obj.kind not in ("point", "delta") or not rw.equal(ctx, _recursion_arg(obj), _ZERO_F):
             args = ", ".join(show(a) for a in obj.args)
             raise Unsupported(f"the base: the object {obj.kind}({args}) is not at the base of its recursion")
@@ -505,6 +525,7 @@ def _prove_induction(doc, goal, var, check_pieces):
     hyp = Lemma(f"the hypothesis at {var}", goal, only_at=(var, vv))
 
     def at_step(obj, ctx):
+        rs.defined(obj, ctx)
         if obj.kind in ("point", "delta") and rs.equal(ctx, _recursion_arg(obj), ("add", vv, _ONE_F)):
             return rs.rewrite(_unfold(obj, name), lambda o, c: rs.apply([hyp], o, c), ctx)
         return rs.apply([hyp], obj, ctx)

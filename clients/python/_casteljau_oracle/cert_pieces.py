@@ -155,12 +155,19 @@ class Prover:
         for x in body:
             # a term that may divide by zero at another value of var is not collapsed (the
             # evaluator divides there even where the control point is 0)
-            if isinstance(x, Term) and not x.musts and not x.nonzeros and not sympy.fraction(sympy.together(x.c))[1].has(s.var):
+            if (
+                isinstance(x, Term)
+                and not x.musts
+                and not x.nonzeros
+                and not sympy.fraction(sympy.together(x.c))[1].has(s.var)
+            ):
                 hit = _collapse(x, s.var)
-                if hit is not None:
-                    val = hit
-                    moved = x.subs({s.var: val})
-                    out.append(moved.with_(conds=moved.conds + (val - s.lo, s.hi - val)))
+                # a term nonzero only in a window a ≤ var ≤ a + c (c a constant): written out
+                vals = [hit] if hit is not None else None if x.lazy else _window(x, s.var)
+                if vals is not None:
+                    for val in vals:
+                        moved = x.subs({s.var: val})
+                        out.append(moved.with_(conds=moved.conds + (val - s.lo, s.hi - val)))
                     continue
             nested = _collapse_nested(x, s)
             if nested is not None:
@@ -314,6 +321,25 @@ def _tighten(dom, s):
             elif sign == -1 and dom.implies(hi - b):
                 hi = b
     return Sum(s.var, lo, hi, s.body, s.name)
+
+
+def _window(t, var):
+    """The values `a, a + 1, …, b` of `var` where `t`'s conditions `var ≥ a`, `var ≤ b` may
+    hold, when `b − a` is a constant `0..=MAX_EXPAND`; else None."""
+    lows, ups = [], []
+    for L in t.conds:
+        L = sympy.expand(L)
+        a = L.coeff(var)
+        if a == 1:
+            lows.append(sympy.expand(var - L))
+        elif a == -1:
+            ups.append(sympy.expand(L + var))
+    for lo in lows:
+        for hi in ups:
+            width = sympy.expand(hi - lo)
+            if width.is_Integer and 0 <= width <= MAX_EXPAND:
+                return [sympy.expand(lo + m) for m in range(int(width) + 1)]
+    return None
 
 
 def _collapse_nested(x, s):

@@ -49,11 +49,8 @@ def test_every_checkable_certificate_is_re_checked_and_none_refused():
         symbolic = True
     except ImportError:
         symbolic = False
-    # proofs citing lemmas or by induction that this checker does not complete (their WZ
-    # sums or sums it cannot collapse; test_certcheck_lemmas.py names them)
-    open_ = {"000-derivative-k-object", "000-lemma-1.3-c2", "000-lemma-1.3-proof"}
     for o, doc in zip(outcomes, _docs()):
-        if doc["check"] == "kernel" and "pieces" in doc and _resting(doc) and (doc["id"] in open_ or not symbolic):
+        if doc["check"] == "kernel" and "pieces" in doc and _resting(doc) and not symbolic:
             assert o.status == NOT_RECHECKED and "resting on" in o.detail, o.line()
         elif doc["check"] == "kernel" and "pieces" in doc and not symbolic:
             assert o.status == NOT_RECHECKED and "needs SymPy" in o.detail, o.line()
@@ -65,7 +62,7 @@ def test_every_checkable_certificate_is_re_checked_and_none_refused():
     kernel = [
         d["id"]
         for d in _docs()
-        if d["check"] == "kernel" and (symbolic or "pieces" not in d) and d["id"] not in open_
+        if d["check"] == "kernel" and (symbolic or "pieces" not in d)
     ]
     assert sum(o.status == RECHECKED for o in outcomes) == len(kernel) >= 1
 

@@ -17,13 +17,12 @@ pytest.importorskip("sympy")
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.path.join(HERE, "..", "..", "..", "tests", "certificates", "texts")
 
-#: The files proved here: the two inductions and the proofs citing lemmas.
+#: The files proved here: the two inductions and the 10 proofs citing lemmas.
 PROVED = {
     "000-9-intermediate", "000-delta-closed-form", "000-1", "000-delta", "000-derivative-proof",
     "000-endpoints-object", "000-lemma-1.3-b00", "000-lemma-1.3-c1", "000-tangent-t0-point",
+    "000-derivative-k-object", "000-lemma-1.3-c2", "000-lemma-1.3-proof",
 }
-#: Citing lemmas, not proved here (the reason each is named in the test below).
-NOT_PROVED = {"000-derivative-k-object", "000-lemma-1.3-c2", "000-lemma-1.3-proof"}
 
 
 def _by_id():
@@ -46,7 +45,7 @@ def _run(tmp_path, *docs):
 def test_the_texts_resting_files(tmp_path):
     by_id = _by_id()
     resting = {i for i, d in by_id.items() if _resting(d)}
-    assert resting == PROVED | NOT_PROVED
+    assert resting == PROVED
     got = {o.id: o for o in check_path(DATA)}
     for cid in PROVED:
         assert got[cid].status == RECHECKED, got[cid].line()
@@ -55,13 +54,11 @@ def test_the_texts_resting_files(tmp_path):
         assert "the base" in got[cid].detail and "the step" in got[cid].detail, got[cid].line()
     for cid in PROVED - {"000-9-intermediate", "000-delta-closed-form"}:
         assert "its lemmas" in got[cid].detail and "re-checked here in their own files" in got[cid].detail, got[cid].line()
-    for cid in NOT_PROVED:
-        assert got[cid].status == NOT_RECHECKED and "not completed here" in got[cid].detail, got[cid].line()
-    # a sum whose WZ argument this checker does not find (a certificate R it cannot use)
-    assert "no induction symbol or certificate" in got["000-lemma-1.3-proof"].detail
+    # the file's WZ certificate R, naming the unit polygon's index __j, used as given
+    assert "WZ inductions ((__j - __j*t - r + r*t)/" in got["000-lemma-1.3-proof"].detail
     proved = [o for o in got.values() if o.verdict in ("proved", "proved_in_range")]
-    assert sum(o.status == RECHECKED for o in got.values()) == 144
-    assert (sum(o.status == RECHECKED for o in proved), len(proved)) == (139, 150)
+    assert sum(o.status == RECHECKED for o in got.values()) == 147
+    assert (sum(o.status == RECHECKED for o in proved), len(proved)) == (142, 150)
     assert not [o for o in got.values() if o.status == REFUSED]
 
 
