@@ -142,6 +142,10 @@ def check_certificate(doc, name="?", symbolic=False):
                     return out(NOT_RECHECKED, f"a for-every proof resting on {resting}: not implemented here: {e}")
                 if not proved:
                     return out(NOT_RECHECKED, f"a for-every proof resting on {resting}: {detail}")
+                if refs:
+                    # alone, a file citing lemmas is not re-checked (`resolve` decides it among
+                    # the files checked together)
+                    detail += "; re-checked only with its lemmas' files"
                 o = out(RECHECKED if not refs else NOT_RECHECKED, detail)
                 o.assumes = [lid for lid, _ in refs]
                 return o
