@@ -18,9 +18,10 @@ object's arguments (and the polygon's degree for the lemma's) put for its symbol
 application is an obligation: every range of the lemma holds at the arguments, shown
 (`cert_domain`) on the goal's domain and the ranges of the sums around the object. An
 object no lemma covers, or an application not shown within the lemma's ranges, stops the
-proof ("not re-checked": the proof may still hold). `b'(g)` is rewritten as the derivative
-in `x` of the rewritten `b(x)`, taken here only of `Σ c·B(j, m, x)` with `c` free of `x`
-(`B`'s derivatives are the grammar's `__dB`).
+proof ("not re-checked": the proof may still hold), and so does an object not shown within
+its scheme (`0 ≤ r`, `0 ≤ i ≤ n − r`; `0 ≤ k`, `0 ≤ j ≤ n − k`), which the program refuses.
+`b'(g)` is rewritten as the derivative in `x` of the rewritten `b(x)`, taken here only of
+`Σ c·B(j, m, x)` with `c` free of `x` (`B`'s derivatives are the grammar's `__dB`).
 
 An induction on `v` (`pieces.induction`, range `v = a..=e`): the base is the goal at `v = a`
 with each object read from the base of its recursion (its recursion argument 0 there);
@@ -49,6 +50,9 @@ __all__ = ["prove_resting"]
 
 def _num(k):
     return ("num", Fraction(k))
+
+
+_ONE_F, _ZERO_F = _num(1), _num(0)
 
 
 class _Names:
@@ -193,8 +197,6 @@ def _unfold(obj, poly):
     _, _, j = obj.args
     return ("sub", ("call", "delta", (("var", poly), a1, ("add", j, _ONE_F))), ("call", "delta", (("var", poly), a1, j)))
 
-
-_ONE_F = _num(1)
 
 
 class Lemma:
@@ -368,8 +370,6 @@ class _Rewriter:
         args = ", ".join(show(a) for a in obj.args)
         raise Unsupported(f"no lemma applies to the object {obj.kind}({args})" + (f" ({'; '.join(why)})" if why else ""))
 
-
-_ZERO_F = _num(0)
 
 
 def _derivative(e, x, k):
