@@ -33,7 +33,7 @@ from .cert_eval import EvalError, Matrix, Unsupported, evaluate
 from .cert_expr import ParseError, free_names, parse
 from .cert_polygon import SORT as _POINTS, PolygonError, check_affine, objects as _polygon, read_points
 from .cert_hyper import PiecesRefused, check_pieces
-from .cert_links import LinkRefused, rests_on, resolve
+from .cert_links import LinkRefused, lemma_refs, rests_on, resolve
 
 __all__ = ["Outcome", "check_certificate", "check_path", "MAX_FILE_BYTES", "MAX_FILES", "MAX_GRID"]
 
@@ -53,10 +53,12 @@ _DEGREE = re.compile(r"^([0-9]+)(?:/([0-9]+))?$")
 class Outcome:
     """One certificate's result: `status` (re-checked / refused / not re-checked), `detail`."""
 
-    __slots__ = ("id", "status", "detail", "verdict", "method")
+    __slots__ = ("id", "status", "detail", "verdict", "method", "assumes")
 
     def __init__(self, id, status, detail, verdict=None, method=None):
         self.id, self.status, self.detail, self.verdict, self.method = id, status, detail, verdict, method
+        # the lemma ids a proof re-derived here assumed (their files must be re-checked)
+        self.assumes = []
 
     def line(self):
         what = f"{self.verdict}/{self.method}" if self.method else f"{self.verdict}"
@@ -122,12 +124,31 @@ def check_certificate(doc, name="?", symbolic=False):
             return out(NOT_RECHECKED, f"no checkable data in the file: {doc['reason']}")
         if "pieces" in doc:
             try:
-                # Objects read through lemmas or unfolded by an induction: not evaluated here.
                 resting = rests_on(doc)
-                if resting is not None:
-                    return out(NOT_RECHECKED, f"not implemented here: a for-every proof resting on {resting}")
-                proved, detail = check_pieces(doc)
-                return out(RECHECKED if proved else NOT_RECHECKED, detail)
+                if resting is None:
+                    proved, detail = check_pieces(doc)
+                    return out(RECHECKED if proved else NOT_RECHECKED, detail)
+                # the objects rewritten by the lemmas' goals, or an induction's base and step
+                # derived (`cert_lemmas`); a proof citing lemmas is re-checked only once
+                # `cert_links.resolve` finds each lemma's file re-checked with that goal
+                try:
+                    from .cert_lemmas import prove_resting
+                except ImportError:
+                    return out(NOT_RECHECKED, f"a for-every proof resting on {resting}: not re-checked (needs SymPy)")
+                refs = lemma_refs(doc)
+                try:
+                    proved, detail = prove_resting(doc, refs, check_pieces)
+                except Unsupported as e:
+                    return out(NOT_RECHECKED, f"a for-every proof resting on {resting}: not implemented here: {e}")
+                if not proved:
+                    return out(NOT_RECHECKED, f"a for-every proof resting on {resting}: {detail}")
+                if refs:
+                    # alone, a file citing lemmas is not re-checked (`resolve` decides it among
+                    # the files checked together)
+                    detail += "; re-checked only with its lemmas' files"
+                o = out(RECHECKED if not refs else NOT_RECHECKED, detail)
+                o.assumes = [lid for lid, _ in refs]
+                return o
             except (PiecesRefused, LinkRefused) as e:
                 return out(REFUSED, str(e))
         if verdict in ("proved", "proved_in_range") and method == "computation":

@@ -1,8 +1,8 @@
 """The lemmas a for-every certificate cites (`lemmas`, docs/certificates.md "Lemmas and
-induction"), checked here for their structure only: each lemma's file among the files checked
-together, stating the very goal the proof assumes, itself not refused, and no cycle in the
-references. The proofs resting on lemmas or by induction are not re-derived here (the pieces
-argument is not implemented in this checker), so such a file is at best "not re-checked"."""
+induction"): each lemma's file among the files checked together, stating the very goal the
+proof assumes, itself not refused, and no cycle in the references. The proof itself, with the
+lemmas' goals assumed, is re-derived in `cert_lemmas`; it is re-checked only when every
+lemma's file is re-checked here too."""
 
 
 class LinkRefused(Exception):
@@ -40,10 +40,12 @@ def rests_on(doc):
     return " and ".join(parts) or None
 
 
-def resolve(outcomes, docs, refused, not_rechecked):
+def resolve(outcomes, docs, refused, not_rechecked, rechecked="re-checked"):
     """Rewrites the `outcomes` (one per doc, same order) of the files checked together: a file
     citing a lemma is refused when the lemma's file states another goal, is refused, is given
-    twice or closes a cycle; its detail says when the lemma's file was not given."""
+    twice or closes a cycle. A proof re-derived with its lemmas' goals assumed (its outcome's
+    `assumes`) is re-checked only when every lemma's file is given and itself re-checked;
+    otherwise it is not re-checked, its detail naming the lemma missing or not re-checked."""
     by_id = {}
     for k, d in enumerate(docs):
         if isinstance(d, dict) and isinstance(d.get("id"), str):
@@ -62,8 +64,8 @@ def resolve(outcomes, docs, refused, not_rechecked):
             state[k] = (o.status, None)
             return state[k]
         path = path + [d["id"]]
-        result = (o.status, None)
-        missing = []
+        result = None
+        missing, pending = [], []
         for lid, goal in refs:
             files = by_id.get(lid, [])
             if not files:
@@ -84,13 +86,19 @@ def resolve(outcomes, docs, refused, not_rechecked):
             if status == refused:
                 result = (refused, f"rests on lemma {lid}, which is refused" + (f" ({why})" if why else ""))
                 break
+            if status != rechecked:
+                pending.append(lid)
         else:
-            note = "; lemma references: " + (
-                "; ".join(f"rests on lemma {m}, whose file was not given" for m in missing)
-                if missing
-                else "every lemma's file given, with the goal assumed, none refused, no cycle"
-            )
-            result = (o.status, note)
+            gaps = [f"rests on lemma {m}, whose file was not given" for m in missing]
+            gaps += [f"rests on lemma {m}, whose file is not re-checked here" for m in pending]
+            if gaps:
+                result = (not_rechecked, "; lemma references: " + "; ".join(gaps))
+            elif o.assumes:
+                ids = ", ".join(i for i, _ in refs)
+                result = (rechecked, f"; its lemmas {ids} re-checked here in their own files, with the goals it assumes")
+            else:
+                note = "; lemma references: every lemma's file given, with the goal assumed, none refused, no cycle"
+                result = (o.status, note)
         state[k] = result
         return result
 
@@ -102,5 +110,6 @@ def resolve(outcomes, docs, refused, not_rechecked):
         if status == refused and o.status != refused:
             o.status, o.detail = refused, why
         elif status != refused:
+            o.status = status
             o.detail += why
     return outcomes

@@ -155,13 +155,24 @@ class Prover:
         for x in body:
             # a term that may divide by zero at another value of var is not collapsed (the
             # evaluator divides there even where the control point is 0)
-            if isinstance(x, Term) and not x.musts and not x.nonzeros and not sympy.fraction(sympy.together(x.c))[1].has(s.var):
+            if (
+                isinstance(x, Term)
+                and not x.musts
+                and not x.nonzeros
+                and not sympy.fraction(sympy.together(x.c))[1].has(s.var)
+            ):
                 hit = _collapse(x, s.var)
-                if hit is not None:
-                    val = hit
-                    moved = x.subs({s.var: val})
-                    out.append(moved.with_(conds=moved.conds + (val - s.lo, s.hi - val)))
+                # a term nonzero only in a window a ≤ var ≤ a + c (c a constant): written out
+                vals = [hit] if hit is not None else None if x.lazy else _window(x, s.var)
+                if vals is not None:
+                    for val in vals:
+                        moved = x.subs({s.var: val})
+                        out.append(moved.with_(conds=moved.conds + (val - s.lo, s.hi - val)))
                     continue
+            nested = _collapse_nested(x, s)
+            if nested is not None:
+                out.append(nested)
+                continue
             kept.append(x)
         if kept and not out:
             s = _tighten(dom, Sum(s.var, s.lo, s.hi, kept, s.name))
@@ -312,6 +323,48 @@ def _tighten(dom, s):
     return Sum(s.var, lo, hi, s.body, s.name)
 
 
+def _window(t, var):
+    """The values `a, a + 1, …, b` of `var` where `t`'s conditions `var ≥ a`, `var ≤ b` may
+    hold, when `b − a` is a constant `0..=MAX_EXPAND`; else None."""
+    lows, ups = [], []
+    for L in t.conds:
+        L = sympy.expand(L)
+        a = L.coeff(var)
+        if a == 1:
+            lows.append(sympy.expand(var - L))
+        elif a == -1:
+            ups.append(sympy.expand(L + var))
+    for lo in lows:
+        for hi in ups:
+            width = sympy.expand(hi - lo)
+            if width.is_Integer and 0 <= width <= MAX_EXPAND:
+                return [sympy.expand(lo + m) for m in range(int(width) + 1)]
+    return None
+
+
+def _collapse_nested(x, s):
+    """`Σ_v Σ_{w=a(v)}^{b(v)} [v = val]·T(v, w)` over `s` (v its variable): the inner sum `x` at
+    `v = val`, its terms given the conditions `lo ≤ val ≤ hi` of `s`, when every term of its
+    body has the same indicator on `v` (`val` free of `w`); else None."""
+    if not isinstance(x, Sum) or not x.body or not all(isinstance(t, Term) for t in x.body):
+        return None
+    vals = set()
+    for t in x.body:
+        # as for a term: one that may divide by zero at another value of v is kept whole
+        if t.musts or t.nonzeros or sympy.fraction(sympy.together(t.c))[1].has(s.var):
+            return None
+        hit = _collapse(t, s.var)
+        if hit is None or hit.has(x.var):
+            return None
+        vals.add(sympy.expand(hit))
+    if len(vals) != 1:
+        return None
+    val = vals.pop()
+    moved = x.subs({s.var: val})
+    body = [t.with_(conds=t.conds + (val - s.lo, s.hi - val)) for t in moved.body]
+    return Sum(moved.var, moved.lo, moved.hi, body, moved.name)
+
+
 def _collapse(t, var):
     """The value `var` takes by an indicator `[var + c = k]` of `t`, or None."""
     for L in t.eqs:
@@ -339,6 +392,12 @@ def _signature(t):
                 q = -q
             if q != 1:
                 pows[q] = sympy.expand(pows.get(q, 0) + e)
+    minus = sympy.Integer(-1)
+    if minus in pows:
+        # (−1)^e depends only on e mod 2 (e affine in the integer symbols, integer
+        # coefficients): (1 − t0)^n (1 − t)^n and ((1 − t0)(1 − t))^n are one class
+        parts = sympy.expand(pows[minus]).as_coefficients_dict()
+        pows[minus] = sympy.Add(*[x * (int(a) % 2) for x, a in parts.items()])
     return facts, pows
 
 

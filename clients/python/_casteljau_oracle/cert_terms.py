@@ -23,6 +23,8 @@ from .cert_eval import Unsupported
 __all__ = ["Term", "Sum", "Converter", "linear", "fresh"]
 
 _COUNT = itertools.count()
+#: Highest derivative order of `__dB` written out (Leibniz's rule, k + 1 terms).
+MAX_ORDER = 16
 
 
 def fresh(prefix="%k"):
@@ -166,6 +168,8 @@ class Converter:
         if kind == "mul":
             return times(self.items(e[1]), self.items(e[2]))
         if kind == "div":
+            if e[1][0] == e[2][0] == "fact":
+                return [self.falling(e[1][1], e[2][1])]
             return times(self.items(e[1]), [self.inverse(self.items(e[2]))])
         if kind == "pow":
             return self.power(e[1], e[2])
@@ -231,6 +235,15 @@ class Converter:
         return Term(1 / t.c, (), (), t.conds + t.musts, [(a, b, -s) for a, b, s in t.binoms], [(b, -e) for b, e in t.pows],
                     nonzeros=nonzeros)
 
+    def falling(self, a, b):
+        """`a!/b!` where `a − b` is a constant `c ≥ 0`: the product `a(a−1)…(b+1)`, defined
+        where `b ≥ 0` (a factorial of a negative integer is undefined)."""
+        a, b = self.affine(a), self.affine(b)
+        c = sympy.expand(a - b)
+        if not c.is_Integer or not 0 <= c <= MAX_ORDER:
+            raise Unsupported(f"({a})!/({b})!: the arguments do not differ by a constant 0..={MAX_ORDER}")
+        return Term(sympy.expand(sympy.Mul(*[a - m for m in range(int(c))])), musts=[b])
+
     def power(self, base, exp):
         e = self.pure(exp, "an exponent")
         if e.is_Integer:
@@ -258,14 +271,20 @@ class Converter:
         if name == "__dB":
             i, n = self.affine(args[0]), self.affine(args[1])
             x = self.real(args[2])
-            if self.pure(args[3], "a derivative's order") != 1:
-                raise Unsupported("__dB of an order other than 1")
-            # d/dx C(n, i) x^i (1 - x)^(n - i), a polynomial for 0 <= i <= n
+            order = self.pure(args[3], "a derivative's order")
+            if not order.is_Integer or not 0 <= order <= MAX_ORDER:
+                raise Unsupported(f"__dB of order {order} (a constant 0..={MAX_ORDER} here)")
+            # d^k/dx^k C(n, i) x^i (1 - x)^(n - i) by Leibniz's rule, a polynomial for
+            # 0 <= i <= n: Σ_l C(k, l)·i(i−1)…(i−l+1)·x^(i−l)·(−1)^(k−l)·(n−i)…(n−i−k+l+1)·(1−x)^(n−i−k+l)
+            # (a term whose falling factorial is 0 carries a negative power only where it is 0)
+            k = int(order)
             common = dict(conds=[i, n - i], binoms=[(n, i, 1)])
-            return [
-                Term(i, pows=[(x, i - 1), (1 - x, n - i)], **common),
-                Term(-(n - i), pows=[(x, i), (1 - x, n - i - 1)], **common),
-            ]
+            out = []
+            for l in range(k + 1):
+                c = sympy.binomial(k, l) * (-1) ** (k - l)
+                c *= sympy.Mul(*[i - m for m in range(l)]) * sympy.Mul(*[n - i - m for m in range(k - l)])
+                out.append(Term(sympy.expand(c), pows=[(x, i - l), (1 - x, n - i - (k - l))], **common))
+            return out
         raise Unsupported(f"the function {name} in a for-every goal")
 
     def index(self, name, args):

@@ -39,6 +39,9 @@ class Wz:
         self.certs = certs  # [(text, tree)]
         self.ints, self.reals = ints, reals
         self.used = []
+        # the unit polygon's (net's) symbolic indices of the case being proved: a file's `R`
+        # names them `__j` (`__k`), as the program's translation does (proofs/README.md)
+        self.unit = None
 
     def sums(self, pv, dom, terms, sums):
         if any(isinstance(y, Sum) for s in sums for y in s.body):
@@ -86,6 +89,8 @@ class Wz:
     def _cert(self, text, tree, dom, s):
         conv = Converter(self.ints, self.reals)
         conv.env[s.name] = s.var
+        for name, u in zip(("__j", "__k"), self.unit or ()):
+            conv.env[name] = u
         try:
             r = conv.pure(tree, "a WZ certificate")
         except Unsupported as e:
@@ -93,24 +98,28 @@ class Wz:
         return r.xreplace(dom.sub)
 
     def _inductions(self, dom, s):
-        """Candidates (n, n₀) for the induction of sum `s` on `dom`."""
+        """Candidates (n, n₀, step domain) for the induction of sum `s` on `dom`. An upper
+        bound of `n` (an inequality decreasing in n, `n ≤ m`) keeps the values of `n` an
+        interval from n₀: the step is proved where both n and n + 1 lie in `dom`."""
         out = []
         length = sympy.expand(s.hi - s.lo)
         for n in dom.syms:
             if length.coeff(n) != 1 or s.lo.has(n) or (length - n).has(n):
                 continue
-            lows, ok = [], True
+            lows, ups, ok = [], [], True
             for x in dom.ineqs:
                 a = sympy.expand(x).coeff(n)
-                if a < 0 or (a > 0 and a != 1):
+                if a > 0 and a != 1:
                     ok = False
                 elif a == 1:
                     lows.append(sympy.expand(n - x))
+                elif a < 0:
+                    ups.append(sympy.expand(x.xreplace({n: n + 1})))
             if not ok or not lows:
                 continue
             n0 = next((a for a in lows if all(dom.implies(a - b) for b in lows)), None)
             if n0 is not None:
-                out.append((n, n0))
+                out.append((n, n0, dom.with_(*ups) if ups else dom))
         return out
 
     def _step(self, pv, dom, s, R, n, rho, r):
@@ -156,9 +165,10 @@ class Wz:
 
     def _try(self, pv, dom, s, body_fn, r=None):
         """Each certificate of the file, then one proposed by Gosper's algorithm, for each
-        induction symbol in turn; the first whose obligations hold. `body_fn(R, n, n0)`."""
+        induction symbol in turn; the first whose obligations hold. `body_fn(R, n, n0, step)`,
+        `step` the domain of the step (n and n + 1 in `dom`)."""
         first = None
-        for n, n0 in self._inductions(dom, s):
+        for n, n0, step in self._inductions(dom, s):
             def cands():
                 # the file's certificates when it gives any (a wrong one is refused, not
                 # replaced); a file without proposes its own by Gosper's algorithm
@@ -172,7 +182,7 @@ class Wz:
                     R = make()
                     if R is None:
                         continue
-                    out = body_fn(R, n, n0)
+                    out = body_fn(R, n, n0, step)
                     if not self.certs:
                         text = f"R = {R.xreplace({s.var: sympy.Symbol(s.name)})}, {text}"
                     self.used.append(text)
@@ -218,9 +228,9 @@ class Wz:
         s = Sum(s0.var, s0.lo, s0.hi, body, s0.name)
         r = [t.scaled(-1) for t in terms]
 
-        def attempt(R, n, n0):
+        def attempt(R, n, n0, step):
             rho = self._rho(dom, r, n)
-            self._step(pv, dom, s, R, n, rho, r)
+            self._step(pv, step, s, R, n, rho, r)
             base = dom.substitute(n, n0)
             pv.prove(base, [x.subs({n: n0}) for x in [s] + terms])
 
@@ -240,13 +250,13 @@ class Wz:
         return [Sum(s.var, s.lo, s.hi, body, s.name)]
 
     def _constant(self, pv, dom, s):
-        def attempt(R, n, n0):
+        def attempt(R, n, n0, step):
             at = s.subs({n: n0})
             length = sympy.expand(at.hi - at.lo)
             if not length.is_Integer or length > 64:
                 raise Undecided(f"the sum over {s.name} at its base has symbolic length")
             r = [x.subs({at.var: at.lo + j}) for j in range(int(length) + 1) for x in at.body]
-            self._step(pv, dom, s, R, n, sympy.Integer(1), [])
+            self._step(pv, step, s, R, n, sympy.Integer(1), [])
             return r
 
         return self._try(pv, dom, s, attempt)
@@ -301,6 +311,7 @@ def prove_goal(doc):
                 raise Unsupported(f"goal.equalities[{i}]: sides of different shapes")
             pairs = list(zip(lhs[1], rhs[1]))
         for unit, d in cases:
+            wz.unit = unit
             conv = Converter(ints, reals, obj["name"] if obj else None, unit)
             for j, (a, b) in enumerate(pairs):
                 items = conv.items(a) + [Converter._neg(x) for x in conv.items(b)]
