@@ -78,7 +78,7 @@ pub fn render_pages_linking(
         let title = titles.get(&sum.text).cloned().unwrap_or_default();
         pages.push((
             names[&sum.text].clone(),
-            text_page(sum, &title, &outcomes, files, json_dir)?,
+            text_page(sum, &title, &outcomes, report, files, json_dir)?,
         ));
     }
     Ok(pages)

@@ -7,8 +7,8 @@
 use casteljau::html::{certificate_html, render_pages, render_pages_linking};
 use casteljau::verify::claims::{load_paths, parse_file};
 use casteljau::verify::{
-    explain_files, prove_files, prove_paths, read_back, readable, write_certificates, ExplainStyle, Report, Status,
-    Verdict,
+    explain_files, prove_files, prove_paths, read_back, readable, readable_among, write_certificates, ExplainStyle,
+    Report, Status, Verdict,
 };
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
@@ -242,6 +242,43 @@ fn re_checked_exactly_when_the_kernel_accepts_the_file_else_the_reason() {
         }
     }
     assert!(kernel > 0 && none > 0, "{kernel} re-checked, {none} not");
+}
+
+/// A proof citing lemmas is re-checked with the lemmas' certificates of the same run, as
+/// `check DIR` does: in the report's page and by `readable_among`; without them it is not.
+#[test]
+fn a_proof_citing_lemmas_is_re_checked_with_their_certificates() {
+    let (report, _) = fixture();
+    let mut citing = 0;
+    for o in &report.outcomes {
+        let alone = readable(o);
+        let cert: Value = serde_json::from_str(&alone.json).unwrap();
+        if cert.get("lemmas").is_none() {
+            continue;
+        }
+        citing += 1;
+        match readable_among(o, &report.outcomes).status {
+            Status::Rechecked(what) => assert!(what.contains("its lemmas "), "{}: {what}", o.id),
+            other => panic!("{}: {other:?}", o.id),
+        }
+        // the lemmas are found among the others, not assumed: without them, not re-checked
+        let others: Vec<_> = report.outcomes.iter().filter(|c| c.id == o.id).cloned().collect();
+        assert!(
+            matches!(readable_among(o, &others).status, Status::NotRechecked(_)),
+            "{}",
+            o.id
+        );
+        assert!(matches!(alone.status, Status::NotRechecked(_)), "{}", o.id);
+        with_block(&o.id, |block| {
+            let text = text_of(&block);
+            assert!(
+                text.contains("re-checked by the kernel") && !text.contains("not re-checked"),
+                "{}: {text}",
+                o.id
+            );
+        });
+    }
+    assert!(citing >= 10, "{citing} proofs citing lemmas");
 }
 
 #[test]

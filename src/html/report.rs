@@ -10,7 +10,7 @@ use super::verdict::{verdict_text, verdict_words};
 use crate::error::Result;
 use crate::figure::svg::esc;
 use crate::verify::claims::{Claim, ClaimFile};
-use crate::verify::{readable, ClaimOutcome, Report, TextSummary, Verdict};
+use crate::verify::{readable_among, ClaimOutcome, Report, TextSummary, Verdict};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
@@ -264,6 +264,7 @@ pub(super) fn text_page(
     sum: &TextSummary,
     title: &str,
     outcomes: &[&ClaimOutcome],
+    report: &Report,
     files: &[ClaimFile],
     json_dir: Option<&str>,
 ) -> Result<String> {
@@ -318,7 +319,7 @@ pub(super) fn text_page(
     // a figure drawn once is referred to by later claims on the same data
     let mut drawn: Vec<(String, String)> = Vec::new();
     for o in outcomes {
-        claim_section(&mut s, o, outcomes, find_claim(files, o), json_dir, &mut drawn)?;
+        claim_section(&mut s, o, outcomes, report, find_claim(files, o), json_dir, &mut drawn)?;
     }
     s.push_str("</main>\n");
     s.push_str(FOOT);
@@ -329,6 +330,7 @@ fn claim_section(
     s: &mut String,
     o: &ClaimOutcome,
     all: &[&ClaimOutcome],
+    report: &Report,
     claim: Option<&Claim>,
     json_dir: Option<&str>,
     drawn: &mut Vec<(String, String)>,
@@ -432,7 +434,8 @@ fn claim_section(
     }
     let _ = writeln!(s, "<dt>expected</dt><dd>{}</dd>", o.expect.as_str());
     s.push_str("</dl>\n");
-    s.push_str(&certificate_html(&readable(o), json_dir));
+    // re-checked with the certificates of the lemmas it cites, as `check DIR` does
+    s.push_str(&certificate_html(&readable_among(o, &report.outcomes), json_dir));
     if let Some(c) = claim {
         match claim_figure(c) {
             Ok(Some(cf)) => {

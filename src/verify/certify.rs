@@ -682,6 +682,12 @@ pub fn check_certificate_texts(texts: &[&str]) -> Vec<Recheck> {
     links::resolve(&links, alone)
 }
 
+/// The ids of the lemmas a certificate's proof cites (none when its list cannot be read: the
+/// re-check then refuses it).
+pub(crate) fn cited_lemmas(cert: &Json) -> Vec<String> {
+    hyper::lemmas(cert).map_or_else(|_| Vec::new(), |l| l.into_iter().map(|(id, _)| id).collect())
+}
+
 /// Re-checks one certificate's text with the kernel alone (a proof citing a lemma is "not
 /// re-checked": the lemma's file is not given).
 pub fn check_certificate(text: &str) -> Recheck {

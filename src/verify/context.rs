@@ -40,6 +40,9 @@ pub struct Ctx<'c> {
     expanded: Rc<[(Expr, Vec<String>)]>,
     /// Integer ranges, their bounds parsed (`to` is `None` for an open range).
     ranges: Vec<Bounds>,
+    /// Whether the checks keep what only a certificate file needs (the sampled sides written
+    /// out without the claim's objects): `prove` without `--certificates` skips that work.
+    pub(crate) certify: bool,
 }
 
 /// An integer range with its bounds parsed.
@@ -92,6 +95,7 @@ impl<'c> Ctx<'c> {
             defs: Rc::from(Vec::new()),
             expanded: Rc::from(Vec::new()),
             ranges,
+            certify: true,
         };
         // In dependency order, each body expanded with the definitions it uses (so `diff`
         // sees the whole expression, never an undefined name).
@@ -126,6 +130,7 @@ impl<'c> Ctx<'c> {
             defs: Rc::clone(&self.defs),
             expanded: Rc::clone(&self.expanded),
             ranges: parsed,
+            certify: self.certify,
         };
         for (k, (body, params)) in ctx.expanded.iter().enumerate() {
             ctx.check_names(body, params, &ctx.defs[..k])?;
@@ -156,6 +161,7 @@ impl<'c> Ctx<'c> {
             bound_by_kind: self.bound_by_kind.clone(),
             defs: Rc::clone(&self.defs),
             expanded: Rc::clone(&self.expanded),
+            certify: self.certify,
         })
     }
 

@@ -54,18 +54,27 @@ pub fn check_claim(claim: &Claim, detail: bool) -> Result<Checked> {
             claim.uses.join(", ")
         )));
     }
-    check_citing(claim, &Ok(Vec::new()), detail).map(|(out, _)| out)
+    check_citing(claim, &Ok(Vec::new()), detail, true).map(|(out, _)| out)
 }
 
 /// Checks one claim with the lemmas it cites, or the reason they cannot serve (a cited claim
 /// not proved for every value): a claim with open ranges then is that error, one over finite
 /// ranges is checked case by case as without them. The claim is elaborated once, here; its
 /// context is returned with the outcome (the note on its scope and its lemma read it).
+/// `certify`: also keep what only a certificate file needs ([`Ctx::certify`]); the verdict
+/// and the evidence the kernel checks for it are the same either way.
 pub(crate) fn check_citing<'c>(
     claim: &'c Claim,
     lemmas: &Result<Vec<Lemma>>,
     detail: bool,
+    certify: bool,
 ) -> Result<(Checked, Ctx<'c>)> {
+    let elaborate = |claim: &'c Claim| {
+        elaborate(claim).map(|mut ctx| {
+            ctx.certify = certify;
+            ctx
+        })
+    };
     super::names::check_declarations(claim)?;
     if claim.for_every() {
         if let (Some(identity), false) = (claim.kind.identity(), claim.decls.symbolic()) {

@@ -95,7 +95,7 @@ pub use kernel::{Proof, Trusted};
 pub use kinds::check_claim;
 pub use one_line::identity_file;
 pub use outcome::Checked;
-pub use readable::{read_back, readable, Block, Readable, Status};
+pub use readable::{read_back, readable, readable_among, Block, Readable, Status};
 pub use report::{ClaimOutcome, ExplainStyle, Report, TextSummary};
 pub use scope::{range_bound, PROVABLE};
 pub use theorems::elevation_bound;
@@ -118,8 +118,28 @@ pub fn prove_paths(paths: &[PathBuf], progress: &mut dyn FnMut(usize, usize, &st
 /// Checks every claim of claim files already loaded (e.g. [`claims::builtin_files`]), as
 /// [`prove_paths`] does.
 pub fn prove_files(files: &[claims::ClaimFile], progress: &mut dyn FnMut(usize, usize, &str)) -> Result<Report> {
+    prove_files_keeping(files, progress, true)
+}
+
+/// The verdicts of [`prove_files`] without the work only certificate files need (the sampled
+/// sides written out without the claim's objects): the same verdicts, methods, texts and JSON
+/// report, checked on the same evidence. The outcomes' data then records each sampled side as
+/// the claim writes it, so it is not for [`write_certificates`], the HTML report or `explain`
+/// (they take [`prove_files`]).
+pub fn prove_files_without_certificates(
+    files: &[claims::ClaimFile],
+    progress: &mut dyn FnMut(usize, usize, &str),
+) -> Result<Report> {
+    prove_files_keeping(files, progress, false)
+}
+
+fn prove_files_keeping(
+    files: &[claims::ClaimFile],
+    progress: &mut dyn FnMut(usize, usize, &str),
+    certify: bool,
+) -> Result<Report> {
     let jobs: Vec<Job<'_>> = files.iter().flat_map(|f| f.claim.iter().map(move |c| (f, c))).collect();
-    let decided = decide(&jobs, progress);
+    let decided = decide(&jobs, progress, certify);
     let outcomes = jobs
         .iter()
         .zip(decided)
@@ -139,8 +159,14 @@ struct Decided {
 }
 
 /// Checks one claim (elaborated once, in [`kinds::check_citing`]) with the lemmas it cites.
-fn decide_one(claim: &claims::Claim, lemmas: &Result<Vec<lemma::Lemma>>, detail: bool) -> Result<Decided> {
-    let (checked, ctx) = kinds::check_citing(claim, lemmas, detail)?;
+/// `certify`: see [`kinds::check_citing`].
+fn decide_one(
+    claim: &claims::Claim,
+    lemmas: &Result<Vec<lemma::Lemma>>,
+    detail: bool,
+    certify: bool,
+) -> Result<Decided> {
+    let (checked, ctx) = kinds::check_citing(claim, lemmas, detail, certify)?;
     let range_bound = scope::range_bound_in(claim, &ctx, checked.verdict());
     let lemma = (checked.verdict() == Verdict::Proved && claim.for_every()).then(|| {
         let mut lemma = lemma::Lemma::from_claim(claim, &ctx)?;
@@ -158,7 +184,7 @@ fn decide_one(claim: &claims::Claim, lemmas: &Result<Vec<lemma::Lemma>>, detail:
 }
 
 /// Every claim of `jobs` checked, the cited ones first (see [`prove_files`]).
-fn decide(jobs: &[Job<'_>], progress: &mut dyn FnMut(usize, usize, &str)) -> Vec<Decided> {
+fn decide(jobs: &[Job<'_>], progress: &mut dyn FnMut(usize, usize, &str), certify: bool) -> Vec<Decided> {
     use rayon::prelude::*;
     let total = jobs.len();
     let rounds = citation_rounds(jobs);
@@ -172,7 +198,7 @@ fn decide(jobs: &[Job<'_>], progress: &mut dyn FnMut(usize, usize, &str)) -> Vec
         let check = |&(index, ref cited): &(usize, Result<Vec<usize>>)| {
             let lemmas = cited.clone().and_then(|cited| lemmas_of(jobs, decided_so_far, &cited));
             // A claim that cannot be decided is reported as such; it never hides the others.
-            let decided = decide_one(jobs[index].1, &lemmas, false).unwrap_or_else(|e| Decided {
+            let decided = decide_one(jobs[index].1, &lemmas, false, certify).unwrap_or_else(|e| Decided {
                 checked: Checked::error(e.to_string()),
                 range_bound: None,
                 lemma: None,
@@ -318,10 +344,14 @@ fn outcome(f: &claims::ClaimFile, c: &claims::Claim, checked: Checked, range_bou
 }
 
 /// One claim checked with its steps, after the claims it cites (and theirs), and the note on
-/// its scope.
-fn explained(files: &[claims::ClaimFile], claim: &claims::Claim) -> Result<(Checked, Option<String>)> {
+/// its scope; with the outcomes of the claims it cites (and theirs), whose certificates its
+/// own is re-checked with.
+fn explained(
+    files: &[claims::ClaimFile],
+    claim: &claims::Claim,
+) -> Result<(Checked, Option<String>, Vec<ClaimOutcome>)> {
     if claim.uses.is_empty() {
-        return decide_one(claim, &Ok(Vec::new()), true).map(|d| (d.checked, d.range_bound));
+        return decide_one(claim, &Ok(Vec::new()), true, true).map(|d| (d.checked, d.range_bound, Vec::new()));
     }
     let all: Vec<Job<'_>> = files.iter().flat_map(|f| f.claim.iter().map(move |c| (f, c))).collect();
     let mut wanted: Vec<&str> = claim.uses.iter().map(String::as_str).collect();
@@ -354,12 +384,19 @@ fn explained(files: &[claims::ClaimFile], claim: &claims::Claim) -> Result<(Chec
         .find(|(k, _)| *k == jobs.len() - 1)
         .map(|(_, cited)| cited.clone())
         .expect("every claim is in a round");
-    let decided: Vec<Option<Decided>> = decide(&jobs[..jobs.len() - 1], &mut |_, _, _| {})
+    let decided: Vec<Option<Decided>> = decide(&jobs[..jobs.len() - 1], &mut |_, _, _| {}, true)
         .into_iter()
         .map(Some)
         .collect();
     let lemmas = cited.and_then(|cited| lemmas_of(&jobs, &decided, &cited));
-    decide_one(claim, &lemmas, true).map(|d| (d.checked, d.range_bound))
+    let d = decide_one(claim, &lemmas, true, true)?;
+    // As `prove --certificates` writes them (checked without steps), for the re-check.
+    let outcomes = jobs
+        .iter()
+        .zip(decided)
+        .filter_map(|(&(f, c), d)| d.map(|d| outcome(f, c, d.checked, d.range_bound)))
+        .collect();
+    Ok((d.checked, d.range_bound, outcomes))
 }
 
 fn text_name(f: &claims::ClaimFile) -> String {
@@ -389,7 +426,7 @@ pub fn explain(paths: &[PathBuf], id: &str, style: ExplainStyle) -> Result<Strin
 pub fn worked_case_lines(files: &[claims::ClaimFile], id: &str) -> Result<Vec<String>> {
     for f in files {
         if let Some(c) = f.claim.iter().find(|c| c.id == id) {
-            let (checked, _) = explained(files, c).map_err(|e| in_claim(f, id, e))?;
+            let (checked, _, _) = explained(files, c).map_err(|e| in_claim(f, id, e))?;
             return Ok(report::worked_lines(c, &checked));
         }
     }
@@ -402,14 +439,14 @@ pub fn worked_case_lines(files: &[claims::ClaimFile], id: &str) -> Result<Vec<St
 pub fn explain_files(files: &[claims::ClaimFile], id: &str, style: ExplainStyle) -> Result<String> {
     for f in files {
         if let Some(c) = f.claim.iter().find(|c| c.id == id) {
-            let (checked, range_bound) = explained(files, c).map_err(|e| in_claim(f, id, e))?;
+            let (checked, range_bound, cited) = explained(files, c).map_err(|e| in_claim(f, id, e))?;
             let text = report::explain_text(f, c, &checked, range_bound.as_deref(), style);
             if style == ExplainStyle::Latex {
                 // a LaTeX fragment for a handout: the certificate's tables are for the screen
                 return Ok(text);
             }
             let brief = style == ExplainStyle::Short;
-            let certificate = readable(&outcome(f, c, checked, range_bound)).to_text(brief);
+            let certificate = readable_among(&outcome(f, c, checked, range_bound), &cited).to_text(brief);
             return Ok(format!("{}\n\n{certificate}", text.trim_end()));
         }
     }
@@ -445,7 +482,7 @@ mod tests {
                 let lemmas = uses.and_then(|uses| lemmas_of(&jobs, &decided, &uses));
                 cited += usize::from(lemmas.as_ref().is_ok_and(|l| !l.is_empty()));
                 let before = context::elaborations();
-                let d = decide_one(claim, &lemmas, false).unwrap_or_else(|e| panic!("{}: {e}", claim.id));
+                let d = decide_one(claim, &lemmas, false, true).unwrap_or_else(|e| panic!("{}: {e}", claim.id));
                 let n = context::elaborations() - before;
                 assert_eq!(n, 1, "claim {} is elaborated {n} times", claim.id);
                 in_range += usize::from(d.range_bound.is_some());

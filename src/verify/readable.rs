@@ -9,7 +9,7 @@
 //! data in a later version is shown without a change here. Long lists are folded with a
 //! count; the JSON keeps them whole.
 
-use super::certify::{certificate, check_certificate, file_name, Recheck};
+use super::certify::{certificate, check_certificate_texts, cited_lemmas, file_name, Recheck};
 use super::report::ClaimOutcome;
 use serde_json::{Map, Value as Json};
 
@@ -91,16 +91,52 @@ pub struct Readable {
 }
 
 /// The certificate of a claim's outcome, read back for people.
+/// A proof citing lemmas is re-checked alone, so it shows "not re-checked" (see
+/// [`readable_among`]).
 pub fn readable(o: &ClaimOutcome) -> Readable {
     read_back(&certificate(o), &file_name(&o.id))
+}
+
+/// The certificate of a claim's outcome, read back for people and re-checked together with
+/// the certificates of the lemmas it cites, and theirs, found by id among `others` (as
+/// `casteljau check DIR` re-checks the files `prove --certificates DIR` writes in one run).
+pub fn readable_among(o: &ClaimOutcome, others: &[ClaimOutcome]) -> Readable {
+    let cert = certificate(o);
+    let mut lemmas: Vec<Json> = Vec::new();
+    let mut seen: Vec<String> = vec![o.id.clone()];
+    let mut wanted = cited_lemmas(&cert);
+    while let Some(id) = wanted.pop() {
+        if seen.contains(&id) {
+            continue;
+        }
+        // Every claim of that id: two files stating one lemma are refused, as by `check`.
+        for other in others.iter().filter(|c| c.id == id) {
+            let c = certificate(other);
+            wanted.extend(cited_lemmas(&c));
+            lemmas.push(c);
+        }
+        seen.push(id);
+    }
+    read_back_with(&cert, &file_name(&o.id), &lemmas)
 }
 
 /// A certificate's JSON value read back for people; `file` is its file's name. The kernel
 /// re-reads the value's text as `casteljau check` reads a file: a value that is not a
 /// certificate, or whose data does not prove its goal, is shown as not re-checked.
 pub fn read_back(cert: &Json, file: &str) -> Readable {
-    let json = serde_json::to_string_pretty(cert).expect("a JSON value serializes") + "\n";
-    let status = match check_certificate(&json) {
+    read_back_with(cert, file, &[])
+}
+
+/// [`read_back`], the kernel re-checking `cert` together with the certificates `lemmas` (the
+/// lemmas it cites resolved among them).
+fn read_back_with(cert: &Json, file: &str, lemmas: &[Json]) -> Readable {
+    let pretty = |c: &Json| serde_json::to_string_pretty(c).expect("a JSON value serializes") + "\n";
+    let json = pretty(cert);
+    let texts: Vec<String> = lemmas.iter().map(pretty).collect();
+    let all: Vec<&str> = std::iter::once(json.as_str())
+        .chain(texts.iter().map(String::as_str))
+        .collect();
+    let status = match check_certificate_texts(&all).swap_remove(0) {
         Recheck::Accepted(what) if cert.get("check").and_then(Json::as_str) == Some("kernel") => {
             Status::Rechecked(clean(&what))
         }

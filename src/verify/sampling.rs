@@ -124,6 +124,8 @@ pub enum PairResult {
 struct Grid<T> {
     num: NumEnv<T>,
     basis: Vec<Basis>,
+    /// Whether the sides are written out for a certificate ([`Ctx::certify`]).
+    certify: bool,
 }
 
 impl<T: Exact> Points<T> for Grid<T> {
@@ -150,6 +152,11 @@ impl<T: Exact> Points<T> for Grid<T> {
         out
     }
     fn written_out(&self, side: &Expr, ints: &BTreeMap<String, i64>) -> Option<Expr> {
+        // Only a certificate file reads them; writing the library's operations out costs
+        // more than evaluating many claims.
+        if !self.certify {
+            return None;
+        }
         inline(side, &self.num, ints)
     }
 }
@@ -375,7 +382,11 @@ fn prepare<'a, T: Exact>(
         .saturating_mul(words.saturating_mul(words));
     Ok(Prepared {
         bounds,
-        grid: Grid { num, basis },
+        grid: Grid {
+            num,
+            basis,
+            certify: ctx.certify,
+        },
         needs,
         proof,
         work,

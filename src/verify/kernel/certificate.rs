@@ -12,6 +12,7 @@ use super::expr::Expr;
 use super::sample::{self, Pair, Points};
 use super::Proof;
 use crate::error::Result;
+use crate::exact::SmallRational;
 use num_rational::BigRational;
 use num_traits::Zero;
 use std::collections::BTreeMap;
@@ -203,8 +204,10 @@ pub struct Claimed<'a> {
     /// Every row: where, on which basis polygon, the left side's and the right side's values.
     pub rows: Vec<RowValues>,
     /// The goal's symbols at each point and basis polygon, read from the file (elaboration,
-    /// like the claim's objects in `prove`; the kernel checks the basis complete).
-    pub env: Box<dyn Points<BigRational> + 'a>,
+    /// like the claim's objects in `prove`; the kernel checks the basis complete). In
+    /// [`SmallRational`]s: the same exact values as `BigRational`, on machine words while they
+    /// fit, so the re-check does not pay a big gcd per operation.
+    pub env: Box<dyn Points<SmallRational> + 'a>,
 }
 
 /// The degree bounds of parameters and of control points (degree 1 in the polygon).
@@ -287,13 +290,13 @@ pub fn recheck_sampled(claimed: &mut [Claimed<'_>]) -> std::result::Result<Proof
         let mut k = 0;
         let mut mismatch: Option<String> = None;
         let rows = &c.rows;
-        let mut observe = |values: &[BigRational], b: usize, l: &Value<BigRational>| {
+        let mut observe = |values: &[BigRational], b: usize, l: &Value<SmallRational>| {
             if mismatch.is_some() {
                 return;
             }
             let (row_at, row_b, row_l, row_r) = &rows[k];
             k += 1;
-            let got: Vec<BigRational> = l.entries().into_iter().cloned().collect();
+            let got: Vec<BigRational> = l.entries().into_iter().map(SmallRational::to_big).collect();
             if row_at.as_slice() != values || *row_b != b {
                 mismatch = Some(format!(
                     "row {}: at ({}) on polygon {row_b}, the grid's point is ({}) on polygon {b}",
