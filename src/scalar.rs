@@ -142,10 +142,11 @@ pub trait Scalar:
 
     // The kernel choice of the generic curve, surface and fitting code: each method below is
     // a type's own kernel for one operation, `None` (the default) when the type has none and
-    // the caller runs its generic algorithm. Overridden for `BigRational` (the fraction-free
-    // kernels of `crate::exact`) and `Interval` (the sign-split enclosure of `eval`). A
-    // method of the type, not a test of type identity, so that the kernels need to import
-    // only numbers and points; the default is inlined, so other types keep no trace of it.
+    // the caller runs its generic algorithm (`curve_eval` runs it itself, given as a
+    // closure). Overridden for `BigRational` (the fraction-free kernels of `crate::exact`)
+    // and `Interval` (the sign-split enclosure of `eval`). A method of the type, not a test
+    // of type identity, so that the kernels need to import only numbers and points; the
+    // default is inlined, so other types keep no trace of it.
     // Hidden: they are how the public methods choose, not an API of their own.
 
     /// Whether the curve kernels below run for this type (for [`PointN`] curves, which are

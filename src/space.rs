@@ -51,7 +51,8 @@ pub trait VectorSpace: Clone + PartialEq + fmt::Debug + 'static {
     }
 
     // The kernel choice of the generic curve code: a point type's curve kernel for one
-    // operation, `None` (the default) for the generic algorithm. `Point` and `PointN` hand
+    // operation, `None` (the default) for the generic algorithm (which `curve_eval` is given
+    // as a closure and runs itself). `Point` and `PointN` hand
     // the choice to their scalar type (the kernel methods of `Scalar`). Hidden: how the public
     // methods choose, not an API of their own.
 
