@@ -186,9 +186,12 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     /// kernel of [`interval_de_casteljau`](crate::interval_de_casteljau), per coordinate.
     #[inline]
     pub fn eval(&self, t: &T) -> P {
-        if let Some(p) = P::curve_eval(&self.points, t) {
-            return p;
-        }
+        P::curve_eval(&self.points, t, || self.eval_generic(t))
+    }
+
+    /// [`Self::eval`] by the generic algorithm, where the point type has no kernel.
+    #[inline(always)]
+    fn eval_generic(&self, t: &T) -> P {
         // A cubic, the common case, is tested for first and worked on as an array of
         // constant length: no loop, and no other degree's code is inlined here.
         if let Some(points) = self.inline_array::<CUBIC_POINTS>() {

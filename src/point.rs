@@ -200,8 +200,8 @@ impl<T: Scalar> VectorSpace for Point<T> {
     }
     // The kernel choice: the scalar type's kernel, if any.
     #[inline(always)]
-    fn curve_eval(points: &[Self], t: &T) -> Option<Self> {
-        T::curve_eval(points, t)
+    fn curve_eval(points: &[Self], t: &T, generic: impl FnOnce() -> Self) -> Self {
+        T::curve_eval(points, t, generic)
     }
     #[inline(always)]
     fn curve_derivative_at(points: &[Self], k: usize, t: &T) -> Option<Self> {

@@ -142,32 +142,42 @@ pub trait Scalar:
 
     // The kernel choice of the generic curve, surface and fitting code: each method below is
     // a type's own kernel for one operation, `None` (the default) when the type has none and
-    // the caller runs its generic algorithm. Overridden for `BigRational` (the fraction-free
-    // kernels of `crate::exact`) and `Interval` (the sign-split enclosure of `eval`). A
-    // method of the type, not a test of type identity, so that the kernels need to import
-    // only numbers and points; the default is inlined, so other types keep no trace of it.
+    // the caller runs its generic algorithm (`curve_eval` runs it itself, given as a
+    // closure). Overridden for `BigRational` (the fraction-free kernels of `crate::exact`)
+    // and `Interval` (the sign-split enclosure of `eval`). A method of the type, not a test
+    // of type identity, so that the kernels need to import only numbers and points; the
+    // default is inlined, so other types keep no trace of it.
     // Hidden: they are how the public methods choose, not an API of their own.
 
     /// Whether the curve kernels below run for this type (for [`PointN`] curves, which are
     /// handed to them as [`Point`]s only then).
     #[doc(hidden)]
     const CURVE_KERNELS: bool = false;
-    /// `b(t)`.
+    /// `b(t)`, by `generic` (the generic algorithm) where the type has no kernel for it.
+    /// The point itself is returned, not an `Option` of it: the `Option`'s tag put the
+    /// point 8 bytes into a temporary, written there and copied out with loads that
+    /// straddled the stores (an interval cubic's eval took 1.8x its kernel).
     #[doc(hidden)]
     #[inline(always)]
-    fn curve_eval(points: &[Point<Self>], t: &Self) -> Option<Point<Self>> {
+    fn curve_eval(points: &[Point<Self>], t: &Self, generic: impl FnOnce() -> Point<Self>) -> Point<Self> {
         let _ = (points, t);
-        None
+        generic()
     }
     /// `b(t)` for a curve of fixed-dimension points: by the kernel for [`Point`]s when there
-    /// is one.
+    /// is one, else by `generic`.
     #[doc(hidden)]
     #[inline(always)]
-    fn curve_eval_fixed<const N: usize>(points: &[PointN<Self, N>], t: &Self) -> Option<PointN<Self, N>> {
+    fn curve_eval_fixed<const N: usize>(
+        points: &[PointN<Self, N>],
+        t: &Self,
+        generic: impl FnOnce() -> PointN<Self, N>,
+    ) -> PointN<Self, N> {
         if !Self::CURVE_KERNELS {
-            return None;
+            return generic();
         }
-        Self::curve_eval(&to_points(points), t).map(to_fixed)
+        to_fixed(Self::curve_eval(&to_points(points), t, || {
+            Point::from_valid(generic().0)
+        }))
     }
     /// The `k`-th derivative vector at `t`, `k` at most the degree.
     #[doc(hidden)]
@@ -362,8 +372,8 @@ impl Scalar for BigRational {
     // that chooses them stays small.
     const CURVE_KERNELS: bool = true;
     #[inline(never)]
-    fn curve_eval(points: &[Point<Self>], t: &Self) -> Option<Point<Self>> {
-        Some(fraction_free::eval(points, t))
+    fn curve_eval(points: &[Point<Self>], t: &Self, _generic: impl FnOnce() -> Point<Self>) -> Point<Self> {
+        fraction_free::eval(points, t)
     }
     #[inline(never)]
     fn curve_derivative_at(points: &[Point<Self>], k: usize, t: &Self) -> Option<Point<Self>> {

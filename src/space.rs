@@ -51,16 +51,18 @@ pub trait VectorSpace: Clone + PartialEq + fmt::Debug + 'static {
     }
 
     // The kernel choice of the generic curve code: a point type's curve kernel for one
-    // operation, `None` (the default) for the generic algorithm. `Point` and `PointN` hand
+    // operation, `None` (the default) for the generic algorithm (which `curve_eval` is given
+    // as a closure and runs itself). `Point` and `PointN` hand
     // the choice to their scalar type (the kernel methods of `Scalar`). Hidden: how the public
     // methods choose, not an API of their own.
 
-    /// `b(t)` for the curve on `points`.
+    /// `b(t)` for the curve on `points`, by `generic` (the generic algorithm) where there is
+    /// no kernel: the point itself, not an `Option` (see `Scalar::curve_eval`).
     #[doc(hidden)]
     #[inline(always)]
-    fn curve_eval(points: &[Self], t: &Self::Scalar) -> Option<Self> {
+    fn curve_eval(points: &[Self], t: &Self::Scalar, generic: impl FnOnce() -> Self) -> Self {
         let _ = (points, t);
-        None
+        generic()
     }
     /// The `k`-th derivative vector at `t`, `k` at most the degree.
     #[doc(hidden)]
@@ -220,8 +222,8 @@ impl<T: Scalar, const N: usize> VectorSpace for PointN<T, N> {
     // fixed-dimension points; the others on the points as `Point`s, and only when the scalar
     // type has curve kernels (a constant: other types keep no trace of the conversion).
     #[inline(always)]
-    fn curve_eval(points: &[Self], t: &T) -> Option<Self> {
-        T::curve_eval_fixed(points, t)
+    fn curve_eval(points: &[Self], t: &T, generic: impl FnOnce() -> Self) -> Self {
+        T::curve_eval_fixed(points, t, generic)
     }
     #[inline(always)]
     fn curve_derivative_at(points: &[Self], k: usize, t: &T) -> Option<Self> {

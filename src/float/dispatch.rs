@@ -14,41 +14,54 @@ use crate::scalar::Ring;
 use crate::space::VectorSpace;
 use std::cell::Cell;
 
-/// The point of `dim ≤ INLINE_COORDS` coordinates, coordinate `k` the expression given
-/// (`?` applied), kept inline in the point as they are (collecting through an iterator cost
-/// as much as the kernel). A macro, not a function taking a closure: each coordinate is
-/// computed where it is written, in registers, and the buffer is written from them at once.
-/// Filled by a loop, it was stored one coordinate at a time and copied into the point with
-/// loads that straddled those stores (a failed store-to-load forwarding each, about as long
-/// as the kernel in all); a closure called for each coordinate was not inlined, and its
-/// result came back through memory.
-macro_rules! inline_point {
-    ($dim:expr, $k:ident => $coordinate:expr) => {{
-        let (dim, z) = ($dim, Interval::zero());
-        let c0 = {
-            let $k = 0;
-            $coordinate?
-        };
-        let c1 = if dim > 1 {
-            let $k = 1;
-            $coordinate?
-        } else {
-            z
-        };
-        let c2 = if dim > 2 {
-            let $k = 2;
-            $coordinate?
-        } else {
-            z
-        };
-        let c3 = if dim > 3 {
-            let $k = 3;
-            $coordinate?
-        } else {
-            z
-        };
-        Point::from_inline_prefix([c0, c1, c2, c3], dim)
-    }};
+/// The first `dim ≤ INLINE_COORDS` coordinates of a point, coordinate `k` the expression
+/// given (an `Option`: `None` if any is), the rest zero. A macro, not a function taking a
+/// closure: each coordinate is computed where it is written, in registers, and the point's
+/// buffer is written from them at once. Filled by a loop, it was stored one coordinate at a
+/// time and copied into the point with loads that straddled those stores (a failed
+/// store-to-load forwarding each, about as long as the kernel in all); a closure called for
+/// each coordinate was not inlined, and its result came back through memory.
+macro_rules! inline_coords {
+    ($dim:expr, $k:ident => $coordinate:expr) => {
+        'coords: {
+            let (dim, z) = ($dim, Interval::zero());
+            let c0 = {
+                let $k = 0;
+                match $coordinate {
+                    Some(c) => c,
+                    None => break 'coords None,
+                }
+            };
+            let c1 = if dim > 1 {
+                let $k = 1;
+                match $coordinate {
+                    Some(c) => c,
+                    None => break 'coords None,
+                }
+            } else {
+                z
+            };
+            let c2 = if dim > 2 {
+                let $k = 2;
+                match $coordinate {
+                    Some(c) => c,
+                    None => break 'coords None,
+                }
+            } else {
+                z
+            };
+            let c3 = if dim > 3 {
+                let $k = 3;
+                match $coordinate {
+                    Some(c) => c,
+                    None => break 'coords None,
+                }
+            } else {
+                z
+            };
+            Some([c0, c1, c2, c3])
+        }
+    };
 }
 
 /// `t` as a float when it is a point of `[0, 1]` (where the Bernstein weights are
@@ -62,23 +75,43 @@ fn unit_point(t: &Interval) -> Option<f64> {
 }
 
 /// `b(t)` for interval points of run-time dimension by the sign-split enclosure, when `t`
-/// is a point of `[0, 1]`; `None` otherwise, and when a coefficient is not finite (the
-/// generic algorithm then gives its own enclosure). Inlined into `eval`, so that an
-/// interval cubic whose points have at most 4 coordinates (a point's inline capacity) is
-/// enclosed and its point built in place, without a call and a copy of the result through
-/// memory; every other curve goes out of line.
+/// is a point of `[0, 1]`; by `generic` (the generic algorithm, which gives its own
+/// enclosure) otherwise, and when a coefficient is not finite. Inlined into `eval`, so that
+/// an interval cubic whose points have at most 4 coordinates (a point's inline capacity) is
+/// enclosed and its point written in place, where the caller keeps it; every other curve
+/// goes out of line. The point is returned, not an `Option` of it: the `Option` was a
+/// temporary that the other paths wrote too, the point 8 bytes into it after the tag,
+/// written there with 8-byte stores and copied out with 16-byte loads, each of which
+/// straddled two stores (failed store-to-load forwardings: 1.8x the kernel at degree 3).
 #[inline(always)]
-pub(crate) fn enclose_points(points: &[Point<Interval>], t: &Interval) -> Option<Point<Interval>> {
-    let t = unit_point(t)?;
+pub(crate) fn enclose_points(
+    points: &[Point<Interval>],
+    t: &Interval,
+    generic: impl FnOnce() -> Point<Interval>,
+) -> Point<Interval> {
+    let Some(t) = unit_point(t) else {
+        return cold(generic);
+    };
     if let [p0, p1, p2, p3] = points {
         // each point's coordinates looked up once
         let coords = [p0.coords(), p1.coords(), p2.coords(), p3.coords()];
         let dim = coords[0].len();
         if dim <= INLINE_COORDS && coords.iter().all(|c| c.len() == dim) {
-            return Some(inline_point!(dim, k => enclose_gathered(coords.map(|c| c[k]), t)));
+            return match inline_coords!(dim, k => enclose_gathered(coords.map(|c| c[k]), t)) {
+                Some(c) => Point::from_inline_prefix(c, dim),
+                None => cold(generic),
+            };
         }
     }
-    curve_of_points(points, t)
+    curve_of_points(points, t, generic)
+}
+
+/// `f()` out of line: the generic algorithm where the kernel does not apply (a `t` that is an
+/// interval or outside `[0, 1]`, a coefficient not finite), so that its code stays out of `eval`'s.
+#[cold]
+#[inline(never)]
+fn cold<R>(f: impl FnOnce() -> R) -> R {
+    f()
 }
 
 /// `b(t)` for interval points of fixed dimension `D` (1 to 3; `None` for more, which take
@@ -96,13 +129,15 @@ pub(crate) fn enclose_fixed<const D: usize>(
 
 /// Any other curve of points of run-time dimension, coordinate by coordinate.
 #[inline(never)]
-fn curve_of_points(points: &[Point<Interval>], t: f64) -> Option<Point<Interval>> {
+fn curve_of_points(points: &[Point<Interval>], t: f64, generic: impl FnOnce() -> Point<Interval>) -> Point<Interval> {
     let dim = points[0].dim();
-    if dim <= INLINE_COORDS {
-        return Some(inline_point!(dim, k => enclose_coordinate(points, k, t)));
-    }
-    let coords: Option<Vec<Interval>> = (0..dim).map(|k| enclose_coordinate(points, k, t)).collect();
-    Some(Point::from_valid(coords?))
+    let point = if dim <= INLINE_COORDS {
+        inline_coords!(dim, k => enclose_coordinate(points, k, t)).map(|c| Point::from_inline_prefix(c, dim))
+    } else {
+        let coords: Option<Vec<Interval>> = (0..dim).map(|k| enclose_coordinate(points, k, t)).collect();
+        coords.map(Point::from_valid)
+    };
+    point.unwrap_or_else(generic)
 }
 
 #[inline(never)]

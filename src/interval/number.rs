@@ -89,11 +89,15 @@ impl Scalar for Interval {
 
     // The sign-split enclosure of `Bezier::eval` (`crate::float`).
     #[inline(always)]
-    fn curve_eval(points: &[Point<Self>], t: &Self) -> Option<Point<Self>> {
-        enclose_points(points, t)
+    fn curve_eval(points: &[Point<Self>], t: &Self, generic: impl FnOnce() -> Point<Self>) -> Point<Self> {
+        enclose_points(points, t, generic)
     }
     #[inline(always)]
-    fn curve_eval_fixed<const N: usize>(points: &[PointN<Self, N>], t: &Self) -> Option<PointN<Self, N>> {
-        enclose_fixed(points, t)
+    fn curve_eval_fixed<const N: usize>(
+        points: &[PointN<Self, N>],
+        t: &Self,
+        generic: impl FnOnce() -> PointN<Self, N>,
+    ) -> PointN<Self, N> {
+        enclose_fixed(points, t).unwrap_or_else(generic)
     }
 }
