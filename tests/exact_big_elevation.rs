@@ -130,9 +130,9 @@ proptest! {
 /// comparison above can fail.
 #[test]
 fn a_changed_input_changes_the_elevation() {
-    let den = (BigInt::one() << 330) + 7;
+    let den: BigInt = (BigInt::one() << 330) + 7u32;
     let coords = |last: i64| {
-        (0..4)
+        (0..4i64)
             .map(|i| vec![Q::new((BigInt::one() << 320) * (i + 2) + last * i, den.clone() + i)])
             .collect::<Vec<_>>()
     };

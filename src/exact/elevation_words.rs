@@ -377,28 +377,52 @@ fn pair_big(
 
 /// The gcds of neighbouring denominators for the big-integer path: each denominator longer
 /// than two words is converted to dashu-int's form once (it takes part in two pairs), and
-/// no pair copies its operands but dashu-int's gcd itself.
-struct BigDenominators(Vec<Option<dashu_int::UBig>>);
+/// the gcds of pairs `m` and `m + 1` (denominators `d_{m−1}, d_m` and `d_m, d_{m+1}`) come
+/// from one gcd `gcd(d_m, d_{m−1} d_{m+1})` ([`gcd::shared_pair`]) for odd `m`: half as
+/// many gcds of denominator length, the largest cost of a pair.
+struct BigDenominators {
+    dashu: Vec<Option<dashu_int::UBig>>,
+    /// By pair slot `j` (coordinates `j` and `j + dim`), where computed ahead.
+    gcds: Vec<Option<Shared>>,
+}
 
 impl BigDenominators {
     fn new(points: &[Point<BigRational>], words: &[Option<WordFraction>]) -> Self {
-        let coords = points.iter().flat_map(|p| p.coords());
-        BigDenominators(
-            coords
-                .zip(words)
-                .map(|(c, w)| match w {
-                    None if c.denom().bits() > 128 => Some(gcd::to_dashu(c.denom().magnitude())),
-                    _ => None,
-                })
-                .collect(),
-        )
+        let dim = points[0].dim();
+        let n = points.len() - 1;
+        let coords: Vec<&BigRational> = points.iter().flat_map(|p| p.coords()).collect();
+        let dashu: Vec<Option<dashu_int::UBig>> = coords
+            .iter()
+            .zip(words)
+            .map(|(c, w)| match w {
+                None if c.denom().bits() > 128 => Some(gcd::to_dashu(c.denom().magnitude())),
+                _ => None,
+            })
+            .collect();
+        let mut gcds: Vec<Option<Shared>> = (0..n * dim).map(|_| None).collect();
+        for k in 0..dim {
+            for m in (1..n).step_by(2) {
+                let (before, middle, after) = ((m - 1) * dim + k, m * dim + k, (m + 1) * dim + k);
+                if let (Some(a), Some(d), Some(c)) = (&dashu[before], &dashu[middle], &dashu[after]) {
+                    let natural = |j: usize| coords[j].denom().magnitude();
+                    let (left, right) = gcd::shared_pair(a, d, c, natural(before), natural(after));
+                    // Pair m is slot `before`, pair m + 1 slot `middle`.
+                    gcds[before] = Some(left);
+                    gcds[middle] = Some(right);
+                }
+            }
+        }
+        BigDenominators { dashu, gcds }
     }
 
-    /// `gcd` of the denominators of coordinates `j` and `k`.
-    fn shared(&self, j: usize, a: &BigRational, k: usize, b: &BigRational) -> Shared {
-        match (&self.0[j], &self.0[k]) {
+    /// `gcd` of the denominators of coordinates `j` and `j + dim` (`a` and `b`).
+    fn shared(&mut self, j: usize, dim: usize, a: &BigRational, b: &BigRational) -> Shared {
+        if let Some(g) = self.gcds[j].take() {
+            return g;
+        }
+        match (&self.dashu[j], &self.dashu[j + dim]) {
             (Some(d), Some(e)) => Shared::of_dashu(d, e),
-            _ => Shared::of_short(a.denom().magnitude(), b.denom().magnitude()),
+            _ => Shared::of(a.denom().magnitude(), b.denom().magnitude()),
         }
     }
 }
@@ -441,7 +465,7 @@ fn combine_neighbours(
         (Some(_), Some(x), Some(y)) => Some((x.den, y.den)),
         _ => None,
     }));
-    let big = BigDenominators::new(points, &words);
+    let mut big = BigDenominators::new(points, &words);
     let mut out = Vec::with_capacity(n);
     for i in 1..=n {
         let (alpha, beta) = weights(i as u32);
@@ -460,7 +484,7 @@ fn combine_neighbours(
                 _ => None,
             };
             fast.unwrap_or_else(|| {
-                let g = big.shared(j, &before[k], j + dim, &here[k]);
+                let g = big.shared(j, dim, &before[k], &here[k]);
                 pair_big(&before[k], negate_first, alpha, &here[k], beta, total, &g)
             })
         });
@@ -533,7 +557,7 @@ mod tests {
             let want = (first * BigInt::from(alpha) + &b * BigInt::from(beta)) / BigInt::from(total);
             // `g` both ways the caller computes it: from dashu-int's copies, or directly.
             let (da, db) = (gcd::to_dashu(a.denom().magnitude()), gcd::to_dashu(b.denom().magnitude()));
-            for g in [Shared::of_dashu(&da, &db), Shared::of_short(a.denom().magnitude(), b.denom().magnitude())] {
+            for g in [Shared::of_dashu(&da, &db), Shared::of(a.denom().magnitude(), b.denom().magnitude())] {
                 let got = pair_big(&a, negate_first, alpha, &b, beta, total, &g);
                 prop_assert_eq!(format!("{got:?}"), format!("{want:?}"));
                 prop_assert_eq!(got, want.clone());

@@ -83,31 +83,14 @@ pub fn gcd(a: &BigUint, b: &BigUint) -> BigUint {
 
 /// `x mod m` for a word `m > 0`, from `x`'s words in place.
 pub(crate) fn rem_word(x: &BigUint, m: u64) -> u64 {
-    if m == 1 {
-        return 0;
-    }
     if let Ok(small) = u32::try_from(m) {
-        // Half words, each step `(r·2^32 + h) mod m` below 2^64 by Barrett's reduction:
-        // two multiplications and at most two subtractions in the chain of dependent steps,
-        // where a hardware division is several times as long (the weights' remainders of
-        // every elevation pair). With `inverse = ⌊(2^64 − 1)/m⌋`, `inverse > 2^64/m − 1`,
-        // so `q = ⌊z·inverse / 2^64⌋ > z/m − z/2^64 − 1 > z/m − 2`: `z − q m < 3m`.
+        // Half words: each step a 64-bit division (an instruction, a 128-bit one a call).
+        // Barrett's reduction (two multiplications a step) was no faster on this machine
+        // (AMD EPYC, 2026-12-05).
         let m = u64::from(small);
-        let inverse = u64::MAX / m;
-        let step = |z: u64| {
-            let q = ((u128::from(z) * u128::from(inverse)) >> 64) as u64;
-            let mut r = z - q * m;
-            if r >= m {
-                r -= m;
-            }
-            if r >= m {
-                r -= m;
-            }
-            r
-        };
         return x.iter_u64_digits().rev().fold(0u64, |r, w| {
-            let r = step((r << 32) | (w >> 32));
-            step((r << 32) | (w & 0xFFFF_FFFF))
+            let r = ((r << 32) | (w >> 32)) % m;
+            ((r << 32) | (w & 0xFFFF_FFFF)) % m
         });
     }
     let m = u128::from(m);
@@ -141,13 +124,34 @@ impl Shared {
 
     /// `gcd(a, b)` of positive integers by [`gcd`] (no copies when both fit two words or
     /// one fits a word).
-    pub(crate) fn of_short(a: &BigUint, b: &BigUint) -> Self {
+    pub(crate) fn of(a: &BigUint, b: &BigUint) -> Self {
         let g = gcd(a, b);
         match g.to_u64() {
             Some(w) => Shared::Word(w),
             None => Shared::Big(BigInt::from_biguint(Sign::Plus, g)),
         }
     }
+}
+
+/// `gcd(a, m)` and `gcd(m, c)` of positive integers (`a_natural`, `c_natural`: `a` and `c`
+/// as num-bigint's) from one gcd `G = gcd(m, a c)` of denominator length, where each
+/// `gcd(m, ·)` would take one: `gcd(G, a) = gcd(m, a c, a) = gcd(m, a)` as `a` divides
+/// `a c`, and likewise for `c`. `G` is usually a word (the small primes the three share),
+/// and the two gcds are then remainders by a word.
+pub(crate) fn shared_pair(
+    a: &dashu_int::UBig,
+    m: &dashu_int::UBig,
+    c: &dashu_int::UBig,
+    a_natural: &BigUint,
+    c_natural: &BigUint,
+) -> (Shared, Shared) {
+    let whole = dashu_int::ops::Gcd::gcd(m, &(a * c));
+    let with = |x: &BigUint| match whole.as_words() {
+        [1] => Shared::Word(1),
+        [w] => Shared::Word(gcd_u64(*w, rem_word(x, *w))),
+        words => Shared::of(&from_words(words), x),
+    };
+    (with(a_natural), with(c_natural))
 }
 
 fn from_words(words: &[u64]) -> BigUint {
@@ -507,7 +511,7 @@ mod tests {
         }
 
         /// The remainder by a word against num-bigint's, for divisors of every size (1, the
-        /// largest below 2^32, where Barrett's quotient is furthest off, and above).
+        /// largest below 2^32, and above).
         #[test]
         fn remainder_by_a_word_is_num_bigints(
             x in proptest::collection::vec(any::<u64>(), 0..10),
