@@ -5,11 +5,11 @@
 
 use super::{array, field, Res};
 use crate::error::Result;
+use crate::verify::kernel::alg::Alg;
 use crate::verify::kernel::eval::{Env, Evaluator, Value, VarEnv};
 use crate::verify::kernel::expr::Expr;
 use crate::verify::kernel::sample::Points;
 use num_rational::BigRational;
-use num_traits::{One, Zero};
 use serde_json::{json, Value as Json};
 
 /// The sort of a control polygon or net's name in the goal's symbols.
@@ -64,14 +64,14 @@ pub(super) fn read_basis(row: &Json, at: &str, points: usize) -> Res<usize> {
 /// The goal's real symbols set at a grid point, its control points at one basis polygon:
 /// polygon 0 is the zero polygon, polygon `k + 1` sets the `k`-th listed point to 1. A control
 /// point not listed is 0 (the claims' convention: `b[-1] = b[n + 1] = 0`).
-pub(super) struct FileEnv {
-    vars: VarEnv<BigRational>,
+pub(super) struct FileEnv<A> {
+    vars: VarEnv<A>,
     points: Vec<(String, Vec<i64>)>,
     basis: usize,
 }
 
-impl FileEnv {
-    pub(super) fn new(points: Vec<(String, Vec<i64>)>) -> FileEnv {
+impl<A> FileEnv<A> {
+    pub(super) fn new(points: Vec<(String, Vec<i64>)>) -> FileEnv<A> {
         FileEnv {
             vars: VarEnv(Default::default()),
             points,
@@ -80,35 +80,31 @@ impl FileEnv {
     }
 }
 
-impl Env<BigRational> for FileEnv {
-    fn var(&self, name: &str) -> Option<Value<BigRational>> {
+impl<A: Alg> Env<A> for FileEnv<A> {
+    fn var(&self, name: &str) -> Option<Value<A>> {
         self.vars.var(name)
     }
-    fn call(&self, _: &str, _: &[Expr], _: &mut Evaluator<'_, BigRational>) -> Result<Option<Value<BigRational>>> {
+    fn call(&self, _: &str, _: &[Expr], _: &mut Evaluator<'_, A>) -> Result<Option<Value<A>>> {
         Ok(None)
     }
-    fn index(&self, name: &str, idx: &[i64]) -> Result<Option<Value<BigRational>>> {
+    fn index(&self, name: &str, idx: &[i64]) -> Result<Option<Value<A>>> {
         if !self.points.iter().any(|(n, _)| n == name) {
             return Ok(None);
         }
         let unit = self.basis.checked_sub(1).and_then(|k| self.points.get(k));
         let one = unit.is_some_and(|(n, i)| n == name && i.as_slice() == idx);
-        Ok(Some(Value::S(if one {
-            BigRational::one()
-        } else {
-            BigRational::zero()
-        })))
+        Ok(Some(Value::S(A::from_int(i64::from(one)))))
     }
 }
 
-impl Points<BigRational> for FileEnv {
+impl<A: Alg> Points<A> for FileEnv<A> {
     fn polygons(&self) -> usize {
         self.points.len() + 1
     }
-    fn at(&mut self, basis: usize, params: &[String], values: &[BigRational]) -> Result<&dyn Env<BigRational>> {
+    fn at(&mut self, basis: usize, params: &[String], values: &[BigRational]) -> Result<&dyn Env<A>> {
         self.basis = basis;
         for (p, v) in params.iter().zip(values) {
-            self.vars.0.insert(p.clone(), Value::S(v.clone()));
+            self.vars.0.insert(p.clone(), Value::S(A::from_rat(v)));
         }
         Ok(self)
     }
