@@ -10,12 +10,17 @@ which decide exactly whether it is zero. Every divisor (and the base of a negati
 evaluated on its own and must be non-zero at the point.
 """
 
+import re
 from fractions import Fraction
 
 from .cert_eval import EvalError, Pole, Unsupported
 from .cert_expr import deep
 
-__all__ = ["SqrtError", "radicand", "number", "values"]
+__all__ = ["SqrtError", "radicand", "number", "values", "same", "MAX_RADICAND"]
+
+#: Largest radicand read (the program's limit, 2^40).
+MAX_RADICAND = 1 << 40
+_RATIONAL = re.compile(r"^-?[0-9]+(/[1-9][0-9]*)?$")
 
 
 class SqrtError(ValueError):
@@ -75,6 +80,8 @@ def radicand(exprs):
                     d = int(args[0][1])
                 if d is None or d < 2:
                     raise SqrtError("sqrt's argument is not an integer d >= 2 (a real irrational √d)")
+                if d > MAX_RADICAND:
+                    raise SqrtError(f"sqrt({d}): the radicand exceeds {MAX_RADICAND}")
                 if not _square_free(d):
                     raise SqrtError(f"sqrt({d}): {d} is not square-free")
                 if found is not None and found != d:
@@ -83,22 +90,23 @@ def radicand(exprs):
     return found
 
 
+def _rational(s, where):
+    if not (isinstance(s, str) and _RATIONAL.match(s) and str(Fraction(s)) == s):
+        raise SqrtError(f"{where}: {s!r} is not an exact rational \"p\" or \"p/q\" written reduced")
+    return Fraction(s)
+
+
 def number(x, where, d):
     """A listed value as a SymPy number of Q(√d) (`d` the goal's radicand)."""
     sympy = _sympy()
     if isinstance(x, str):
-        v = Fraction(x)
-        if str(v) != x:
-            raise SqrtError(f"{where}: {x!r} is not an exact rational written reduced")
+        v = _rational(x, where)
         return sympy.Rational(v.numerator, v.denominator)
     if not isinstance(x, dict) or set(x) != {"rational", "irrational", "radicand"}:
         raise SqrtError(f"{where}: {x!r} is not a rational or a number a + b√d")
     parts = []
     for k in ("rational", "irrational"):
-        s = x[k]
-        v = Fraction(s) if isinstance(s, str) else None
-        if v is None or str(v) != s:
-            raise SqrtError(f"{where}: {k} {s!r} is not an exact rational written reduced")
+        v = _rational(x[k], f"{where}.{k}")
         parts.append(sympy.Rational(v.numerator, v.denominator))
     r = x["radicand"]
     if not (isinstance(r, str) and r.lstrip("-").isdigit() and str(int(r)) == r):
