@@ -6,7 +6,9 @@ use super::kernel::expr::{eval_int, split_partial, Expr};
 use super::objects::{Exact, NumEnv};
 use crate::any_curve::AnyCurve;
 use crate::point::Point;
+use crate::quadratic::QuadraticIrrational;
 use num_rational::BigRational;
+use num_traits::{One, Zero};
 use std::collections::BTreeMap;
 use std::str::FromStr;
 
@@ -43,8 +45,26 @@ pub fn inline<T: Exact>(e: &Expr, env: &NumEnv<T>, ints: &BTreeMap<String, i64>)
     })
 }
 
+/// A coordinate or weight as a constant: a rational, or `a + b·sqrt(d)` for a number of
+/// `Q(√d)` (read from its exact printed form; the certificate's goal is then in `Q(√d)`).
 fn rat<T: Exact>(x: &T) -> Option<Expr> {
-    BigRational::from_str(&x.to_string()).ok().map(Expr::Num)
+    let text = x.to_string();
+    if let Ok(r) = BigRational::from_str(&text) {
+        return Some(Expr::Num(r));
+    }
+    let q = QuadraticIrrational::parse(&text).ok()?;
+    let (a, b, d) = q.parts().ok()?;
+    let root = Expr::Call("sqrt".into(), vec![Expr::int(d?)]);
+    let irrational = if b.is_one() {
+        root
+    } else {
+        Expr::mul(Expr::Num(b.clone()), root)
+    };
+    Some(if a.is_zero() {
+        irrational
+    } else {
+        Expr::add(Expr::Num(a.clone()), irrational)
+    })
 }
 
 fn tuple<T: Exact>(p: &Point<T>) -> Option<Expr> {

@@ -205,13 +205,33 @@ fn flat(v: &Json) -> Option<String> {
             }
             Some(line)
         }
-        Json::Object(_) => None,
+        Json::Object(o) => quadratic(o),
     }
+}
+
+/// A number `a + b√d` written `{"rational": a, "irrational": b, "radicand": d}` (strings),
+/// shown as `a + b√d` (`b√d` when `a` is 0); `None` for any other object.
+fn quadratic(o: &Map<String, Json>) -> Option<String> {
+    if o.len() != 3 {
+        return None;
+    }
+    let part = |k: &str| o.get(k).and_then(Json::as_str).map(clean);
+    let (a, b, d) = (part("rational")?, part("irrational")?, part("radicand")?);
+    let root = match b.as_str() {
+        "1" => format!("√{d}"),
+        "-1" => format!("-√{d}"),
+        _ => format!("{b}√{d}"),
+    };
+    Some(match (a.as_str(), root.strip_prefix('-')) {
+        ("0", _) => root,
+        (_, Some(positive)) => format!("{a} - {positive}"),
+        (_, None) => format!("{a} + {root}"),
+    })
 }
 
 fn scalar(v: &Json) -> Option<String> {
     match v {
-        Json::Array(_) | Json::Object(_) => None,
+        Json::Array(_) => None,
         other => flat(other),
     }
 }

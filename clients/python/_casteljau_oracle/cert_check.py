@@ -4,7 +4,8 @@ program that wrote them.
 
 Each file gets one `Outcome`:
 
-- `re-checked`: every obligation holds, decided here in exact arithmetic (`Fraction`);
+- `re-checked`: every obligation holds, decided here in exact arithmetic (`Fraction`; a goal
+  with `sqrt(d)` in Q(√d) with SymPy, `cert_sqrt`);
 - `refused`: an obligation fails; `detail` names the first one;
 - `not re-checked`: the file carries no checkable data (`"check": "none"`, its reason
   quoted), or uses a construct this checker does not implement (named).
@@ -34,6 +35,7 @@ from .cert_expr import ParseError, free_names, parse
 from .cert_polygon import SORT as _POINTS, PolygonError, check_affine, objects as _polygon, read_points
 from .cert_hyper import PiecesRefused, check_pieces
 from .cert_links import LinkRefused, lemma_refs, rests_on, resolve
+from . import cert_sqrt as _sqrt
 
 __all__ = ["Outcome", "check_certificate", "check_path", "MAX_FILE_BYTES", "MAX_FILES", "MAX_GRID"]
 
@@ -176,6 +178,8 @@ def check_certificate(doc, name="?", symbolic=False):
             _check_range(doc, goal)
             _check_sampling(doc.get("sampling"), goal, method)
             detail = f"{len(goal.equalities)} equalities, {_count_points(doc)} points, all exact"
+            if goal.radicand is not None:
+                detail += f" in Q(√{goal.radicand}) (SymPy)"
             if symbolic:
                 _check_symbolic(goal)
                 detail += "; every equality an identity in SymPy"
@@ -275,6 +279,11 @@ class _Goal:
             self.points.append(points)
             self.premises.append(premise)
             self.equalities.append((ints, lhs, rhs, reals))
+        try:
+            exprs = [e for (_, l, r, _) in self.equalities for e in (l, r)] + [p for p in self.premises if p]
+            self.radicand = _sqrt.radicand(exprs)
+        except _sqrt.SqrtError as err:
+            raise _Refused(f"goal: {err}") from None
 
 
 def _proved_goal(doc):
@@ -407,10 +416,10 @@ def _check_sampling(sampling, goal, method):
             _need(stated_d == d, f"{where}: {var}: the file's degree {stated_d} is not the derived {d}")
             _need(len(pts) > d, f"{where}: {len(pts)} points in {var} do not exceed the degree bound {d}")
             grids.append(pts)
-        _check_grid(data.get("values"), grids, ints, lhs, rhs, params, where, goal.points[k])
+        _check_grid(data.get("values"), grids, ints, lhs, rhs, params, where, goal.points[k], goal.radicand)
 
 
-def _check_grid(values, grids, ints, lhs, rhs, params, where, points):
+def _check_grid(values, grids, ints, lhs, rhs, params, where, points, radicand=None):
     size = 1
     for g in grids:
         size *= len(g)
@@ -431,6 +440,9 @@ def _check_grid(values, grids, ints, lhs, rhs, params, where, points):
         env.update((p["name"], x) for p, x in zip(params, at))
         point = ", ".join(f"{p['name']} = {x}" for p, x in zip(params, at)) or "the evaluation"
         point += f" on basis polygon {k}" if points else ""
+        if radicand is not None:
+            _check_row_in_field(row, lhs, rhs, env, where, point, radicand, points)
+            continue
         objs = _polygon(points, k)
         lv, rv = evaluate(lhs, env, objs), evaluate(rhs, env, objs)
         _need(_shape(lv) == _shape(rv), f"{where}: {point}: the sides have different shapes")
@@ -440,6 +452,28 @@ def _check_grid(values, grids, ints, lhs, rhs, params, where, points):
             said = [_rational(x, f"{where}: {point}: {side}") for x in listed]
             _need(_entries(got) == said, f"{where}: {point}: {side} is {_show(_entries(got))}, the file says {_show(said)}")
         _need(_entries(lv) == _entries(rv), f"{where}: {point}: the sides differ: {_show(_entries(lv))} and {_show(_entries(rv))}")
+
+
+def _check_row_in_field(row, lhs, rhs, env, where, point, d, points):
+    """One grid row of a goal in Q(√d): both sides evaluated with SymPy (`cert_sqrt`)."""
+    if points:
+        raise Unsupported("control points in a goal in Q(√d)")
+    got = {"lhs": _sqrt.values(lhs, env), "rhs": _sqrt.values(rhs, env)}
+    for side in ("lhs", "rhs"):
+        listed = row[side]
+        _need(isinstance(listed, list) and listed, f"{where}: {point}: {side} values missing")
+        try:
+            said = [_sqrt.number(x, f"{where}: {point}: {side}", d) for x in listed]
+        except _sqrt.SqrtError as err:
+            raise _Refused(str(err)) from None
+        _need(
+            len(said) == len(got[side]) and all(_sqrt.same(a, b) for a, b in zip(got[side], said)),
+            f"{where}: {point}: {side} is {_show(got[side])}, the file says {_show(said)}",
+        )
+    _need(
+        len(got["lhs"]) == len(got["rhs"]) and all(_sqrt.same(a, b) for a, b in zip(got["lhs"], got["rhs"])),
+        f"{where}: {point}: the sides differ: {_show(got['lhs'])} and {_show(got['rhs'])}",
+    )
 
 
 def _check_symbolic(goal):

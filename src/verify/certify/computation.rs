@@ -9,6 +9,7 @@
 //! proof did. For an implicit conic the coefficients are derived again from the equation; for
 //! a fit the normal equations are checked solved exactly by the listed `k, l`.
 
+use super::sqrt::{number, number_json};
 use super::{array, field, not_self_contained, rational, string, Res};
 use crate::conic::{classify_conic, ConicKind, ImplicitConic};
 use crate::point::Point;
@@ -21,7 +22,6 @@ use crate::verify::kinds::conic_coefficients;
 use crate::verify::outcome::Computed;
 use crate::verify::parse::parse;
 use num_rational::BigRational;
-use num_traits::Zero;
 use serde_json::{json, Map, Value as Json};
 
 mod fit;
@@ -68,34 +68,6 @@ pub(super) fn fields(computed: &[Computed], out: &mut Map<String, Json>) -> Res<
     }
     out.insert("computation".into(), json!({ "facts": facts }));
     Ok(())
-}
-
-/// A number `a + b√d` as JSON: `"p/q"` when rational, else `{"rational": a, "irrational": b,
-/// "radicand": d}` (d square-free, not 0 or 1: √d is irrational).
-fn number_json(q: &QuadraticIrrational) -> Json {
-    match q.to_rational() {
-        Some(r) => json!(r.to_string()),
-        None => json!({"rational": q.rational_part().to_string(), "irrational": q.irrational_part().to_string(),
-                       "radicand": q.radicand().map(|d| d.to_string())}),
-    }
-}
-
-/// A number written by [`number_json`]; an irrational one with `b ≠ 0` only.
-fn number(v: &Json, at: &str) -> Res<QuadraticIrrational> {
-    if let Some(s) = v.as_str() {
-        return rational(s)
-            .map(QuadraticIrrational::rational)
-            .map_err(|e| format!("{at}: {e}"));
-    }
-    let part = |k: &str| rational(string(v, k, at)?).map_err(|e| format!("{at}.{k}: {e}"));
-    let (a, b) = (part("rational")?, part("irrational")?);
-    let d: i64 = string(v, "radicand", at)?
-        .parse()
-        .map_err(|_| format!("{at}.radicand: not an integer"))?;
-    if b.is_zero() {
-        return Err(format!("{at}: a rational number is written as \"p/q\""));
-    }
-    QuadraticIrrational::new(a, b, d).map_err(|e| format!("{at}: {e}"))
 }
 
 pub(super) fn rationals(v: &Json, at: &str) -> Res<Vec<BigRational>> {

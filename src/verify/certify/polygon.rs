@@ -64,7 +64,8 @@ pub(super) fn read_basis(row: &Json, at: &str, points: usize) -> Res<usize> {
 /// The goal's real symbols set at a grid point, its control points at one basis polygon:
 /// polygon 0 is the zero polygon, polygon `k + 1` sets the `k`-th listed point to 1. A control
 /// point not listed is 0 (the claims' convention: `b[-1] = b[n + 1] = 0`). `A`: the exact
-/// rationals the sides are evaluated in (machine words while the values fit, for speed).
+/// numbers the sides are evaluated in (machine-word rationals while the values fit, for speed;
+/// `Q(√d)` for a goal with `sqrt(d)`).
 pub(super) struct FileEnv<A> {
     vars: VarEnv<A>,
     points: Vec<(String, Vec<i64>)>,

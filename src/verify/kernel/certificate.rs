@@ -7,12 +7,12 @@
 //! the degree bounds derived again, the points checked distinct and numerous enough, both sides
 //! evaluated again at every point and compared with the file's values.
 
+use super::alg::Alg;
 use super::eval::{Deg, Env, Evaluator, Value, VarEnv};
 use super::expr::Expr;
 use super::sample::{self, Pair, Points};
 use super::Proof;
 use crate::error::Result;
-use crate::exact::SmallRational;
 use num_rational::BigRational;
 use num_traits::Zero;
 use std::collections::BTreeMap;
@@ -188,11 +188,12 @@ pub(super) fn equality(
     }
 }
 
-/// A recorded row: the point, the basis polygon, the left side's and the right side's values.
-pub type RowValues = (Vec<BigRational>, usize, Vec<BigRational>, Vec<BigRational>);
+/// A recorded row: the point, the basis polygon, the left side's and the right side's values
+/// (in the algebra the goal is evaluated in: the rationals, or `Q(√d)` for a goal with `sqrt(d)`).
+pub type RowValues<A> = (Vec<BigRational>, usize, Vec<A>, Vec<A>);
 
 /// One recorded equality to re-check, its sides parsed from the file's text.
-pub struct Claimed<'a> {
+pub struct Claimed<'a, A> {
     /// The left side.
     pub lhs: &'a Expr,
     /// The right side.
@@ -202,12 +203,10 @@ pub struct Claimed<'a> {
     /// The parameters with their recorded bounds and points.
     pub params: Vec<Param>,
     /// Every row: where, on which basis polygon, the left side's and the right side's values.
-    pub rows: Vec<RowValues>,
+    pub rows: Vec<RowValues<A>>,
     /// The goal's symbols at each point and basis polygon, read from the file (elaboration,
-    /// like the claim's objects in `prove`; the kernel checks the basis complete). In
-    /// [`SmallRational`]s: the same exact values as `BigRational`, on machine words while they
-    /// fit, so the re-check does not pay a big gcd per operation.
-    pub env: Box<dyn Points<SmallRational> + 'a>,
+    /// like the claim's objects in `prove`; the kernel checks the basis complete).
+    pub env: Box<dyn Points<A> + 'a>,
 }
 
 /// The degree bounds of parameters and of control points (degree 1 in the polygon).
@@ -238,14 +237,17 @@ impl Env<Deg> for Degrees<'_> {
     }
 }
 
-fn list(v: &[BigRational]) -> String {
+fn list<T: std::fmt::Display>(v: &[T]) -> String {
     v.iter().map(ToString::to_string).collect::<Vec<_>>().join(", ")
 }
 
 /// The obligations of the `i`-th recorded equality that evaluate nothing: the degree bounds
 /// derived again are the recorded ones, and there is one row per grid point. Its bounds and
 /// grid's points.
-fn recorded<'c>(i: usize, c: &Claimed<'c>) -> std::result::Result<(sample::Bounds<'c>, Vec<Vec<BigRational>>), String> {
+fn recorded<'c, A: Alg>(
+    i: usize,
+    c: &Claimed<'c, A>,
+) -> std::result::Result<(sample::Bounds<'c>, Vec<Vec<BigRational>>), String> {
     let at = |m: String| format!("equality {i}: {m}");
     let names: Vec<String> = c.params.iter().map(|p| p.name.clone()).collect();
     let control = c.env.control_points();
@@ -275,8 +277,10 @@ fn recorded<'c>(i: usize, c: &Claimed<'c>) -> std::result::Result<(sample::Bound
 /// Re-checks recorded equalities: for each, the kernel derives the degree bounds again (they
 /// must be the recorded ones), checks the points distinct and more than the bound, evaluates
 /// both sides at every grid point (the recorded rows, in grid order, must list exactly those
-/// points and both sides' values). The error names the first failing obligation.
-pub fn recheck_sampled(claimed: &mut [Claimed<'_>]) -> std::result::Result<Proof, String> {
+/// points and both sides' values). The error names the first failing obligation. `A` is the
+/// rationals, or `Q(√d)` ([`crate::quadratic::QuadraticIrrational`], the prover's) for a goal
+/// with `sqrt(d)`: values of another field, or mixing two, compare unequal.
+pub fn recheck_sampled<A: Alg + PartialEq>(claimed: &mut [Claimed<'_, A>]) -> std::result::Result<Proof, String> {
     let total: usize = claimed.iter().map(|c| c.rows.len()).sum();
     if total > MAX_RECHECK_POINTS {
         return Err(format!(
@@ -290,13 +294,13 @@ pub fn recheck_sampled(claimed: &mut [Claimed<'_>]) -> std::result::Result<Proof
         let mut k = 0;
         let mut mismatch: Option<String> = None;
         let rows = &c.rows;
-        let mut observe = |values: &[BigRational], b: usize, l: &Value<SmallRational>| {
+        let mut observe = |values: &[BigRational], b: usize, l: &Value<A>| {
             if mismatch.is_some() {
                 return;
             }
             let (row_at, row_b, row_l, row_r) = &rows[k];
             k += 1;
-            let got: Vec<BigRational> = l.entries().into_iter().map(SmallRational::to_big).collect();
+            let got: Vec<A> = l.entries().into_iter().cloned().collect();
             if row_at.as_slice() != values || *row_b != b {
                 mismatch = Some(format!(
                     "row {}: at ({}) on polygon {row_b}, the grid's point is ({}) on polygon {b}",
@@ -428,6 +432,6 @@ pub fn recheck_bounded(
 }
 
 /// The printed entries of a value.
-pub(super) fn entries<A: super::alg::Alg>(v: &Value<A>) -> Vec<String> {
+pub(super) fn entries<A: Alg>(v: &Value<A>) -> Vec<String> {
     v.entries().into_iter().map(ToString::to_string).collect()
 }
