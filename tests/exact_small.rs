@@ -6,9 +6,10 @@
 //! Curves of degree 0 to 60 whose coordinates have 1- to 6-digit denominators (so that both
 //! sides of the nested sum's threshold are reached: 61 five-digit denominators are past it),
 //! some 30-digit ones, zeros, integers, negative values; parameters 0, 1, small fractions
-//! inside and outside [0, 1] (negative too), 20-digit ones and huge denominators.
+//! inside and outside [0, 1] (negative too), 20-digit ones and huge denominators. Surfaces
+//! of such nets, whose point is summed row by row when the rows' denominators are words.
 
-use casteljau::{BezierCurve, BigInt, BigRational, Point};
+use casteljau::{BezierCurve, BezierSurface, BigInt, BigRational, Point};
 use num_integer::Integer;
 use num_traits::{One, Zero};
 use proptest::prelude::*;
@@ -113,7 +114,10 @@ proptest! {
 #[test]
 fn both_sides_of_the_nested_threshold() {
     let t_small = Q::new(1.into(), 3.into());
-    let t_long = Q::new(BigInt::from(12_345_678_901_234_567_891u128), BigInt::from(98_765_432_109_876_543_211u128));
+    let t_long = Q::new(
+        BigInt::from(12_345_678_901_234_567_891u128),
+        BigInt::from(98_765_432_109_876_543_211u128),
+    );
     for (digits, degrees) in [(5u32, &[3usize, 5, 20, 50, 60][..]), (30, &[3, 5, 20][..])] {
         for &n in degrees {
             // Deterministic coordinates of `digits` digits, alternating signs.
@@ -131,8 +135,79 @@ fn both_sides_of_the_nested_threshold() {
                 .collect();
             let c = BezierCurve::from_coords(points).unwrap();
             for t in [&t_small, &t_long, &Q::new((-7).into(), 2.into())] {
-                assert!(same(&c.eval(t), &nested_reference(&c, t)), "{digits} digits, degree {n}, t = {t}");
+                assert!(
+                    same(&c.eval(t), &nested_reference(&c, t)),
+                    "{digits} digits, degree {n}, t = {t}"
+                );
             }
+        }
+    }
+}
+
+/// A net's point by [`nested_reference`] on each row at `v`, then on their column at `u`.
+fn net_reference(net: &[Vec<Point<Q>>], u: &Q, v: &Q) -> Point<Q> {
+    let column: Vec<Point<Q>> = net
+        .iter()
+        .map(|row| nested_reference(&BezierCurve::new(row.clone()).unwrap(), v))
+        .collect();
+    nested_reference(&BezierCurve::new(column).unwrap(), u)
+}
+
+fn net(max_degree: usize) -> impl Strategy<Value = Vec<Vec<Point<Q>>>> {
+    (0..=max_degree, 0..=max_degree, 1..=2usize).prop_flat_map(|(m, n, dim)| {
+        let point = proptest::collection::vec(coordinate(), dim).prop_map(|c| Point::new(c).unwrap());
+        proptest::collection::vec(proptest::collection::vec(point, n + 1), m + 1)
+    })
+}
+
+proptest! {
+    #![proptest_config(Config::with_cases(120))]
+
+    #[test]
+    fn surface_of_small_numbers(net in net(6), u in parameter(), v in parameter()) {
+        let surface = BezierSurface::new(net.clone()).unwrap();
+        let fast = surface.eval(&u, &v);
+        prop_assert!(same(&fast, &net_reference(&net, &u, &v)));
+        prop_assert!(same(&fast, &surface.eval_bernstein(&u, &v)));
+    }
+}
+
+/// Nets of 5-digit denominators of degree (20, 20) and (20, 3), past machine words: summed row
+/// by row at `t = 1/3` and `-7/2`, by `net_sum` with a 20-digit parameter.
+#[test]
+fn nets_past_machine_words() {
+    let t_long = Q::new(
+        BigInt::from(12_345_678_901_234_567_891u128),
+        BigInt::from(98_765_432_109_876_543_211u128),
+    );
+    for (m, n) in [(20usize, 20usize), (20, 3), (3, 20)] {
+        let net: Vec<Vec<Point<Q>>> = (0..=m)
+            .map(|i| {
+                (0..=n)
+                    .map(|j| {
+                        let coords = (0..2u128)
+                            .map(|k| {
+                                let den = 10_000 + ((i * 31 + j) as u128 * 7919 + k * 104_729 + 1) * 6_700_417 % 90_000;
+                                let num = BigInt::from(((i * 31 + j) as u128 * 15_485_863 + k + 3) % 100_000);
+                                Q::new(if (i + j) % 2 == 0 { -num } else { num }, BigInt::from(den))
+                            })
+                            .collect();
+                        Point::new(coords).unwrap()
+                    })
+                    .collect()
+            })
+            .collect();
+        let surface = BezierSurface::new(net.clone()).unwrap();
+        for (u, v) in [
+            (Q::new(1.into(), 3.into()), Q::new(1.into(), 3.into())),
+            (Q::new((-7).into(), 2.into()), Q::new(2.into(), 5.into())),
+            (Q::new(1.into(), 3.into()), t_long.clone()),
+            (t_long.clone(), Q::new(1.into(), 3.into())),
+        ] {
+            assert!(
+                same(&surface.eval(&u, &v), &net_reference(&net, &u, &v)),
+                "({m}, {n}) at ({u}, {v})"
+            );
         }
     }
 }
