@@ -5,10 +5,12 @@
 //! `D`, a parameter `t = p/q` stays the pair of integers `(p, q)`, and every step is integer
 //! arithmetic; each output coordinate is reduced once, part by part ([`crate::exact::gcd`]).
 //! The integers are machine words (`i128`, every operation overflow-checked) while they fit;
-//! on the first overflow the whole kernel runs again on [`BigInt`]. Two kernels change
+//! on the first overflow the whole kernel runs again on [`BigInt`]. Three kernels change
 //! algorithm there: the point of a curve is then summed by binary splitting
-//! (`exact::splitting`), and one elevation step combines neighbouring points pairwise, on
-//! 256-bit words where they fit (`exact::elevation_words`). The public generic methods
+//! (`exact::splitting`) unless its denominators and `t`'s stay short (`nested_wins`), a
+//! surface's point row by row when its rows' are words (`rows_first`), else by binary
+//! splitting too, and one elevation step combines neighbouring points pairwise, on 256-bit
+//! words where they fit (`exact::elevation_words`). The public generic methods
 //! choose these kernels for exact rationals (the kernel methods of `BigRational`'s
 //! [`Scalar`](crate::Scalar) implementation); the tests compare them
 //! with `==` against the step-by-step `*_reference` methods.
@@ -592,9 +594,9 @@ fn net_numerator<I: Int>(x: &[I], n: usize, (pu, su): (&I, &I), (pv, sv): (&I, &
 
 /// Whether a surface whose net overflows machine words is cheaper row by row (each row's
 /// sum at `v` reduced, then the column of those at `u`) than by `splitting::net_sum` (all
-/// the net's denominators in one product, one reduction): when a row's denominators are
-/// single words and its nested sum wins ([`nested_wins`]), its reduced point is short and
-/// often within machine words.
+/// the net's denominators in one product, one reduction): when a row's denominators and
+/// `v`'s are single words and its nested sum wins ([`nested_wins`]), its reduced point is
+/// short and often within machine words.
 ///
 /// Measured (2026-12-05, interleaved, nets of the `exact_grid.py` grid, u = v = 1/3): row
 /// by row took 10 µs against 21 µs for 5-digit nets of degree (3, 3), 23 against 62 at
@@ -602,8 +604,12 @@ fn net_numerator<I: Int>(x: &[I], n: usize, (pu, su): (&I, &I), (pv, sv): (&I, &
 /// denominators it lost at (3, 3) and (5, 5) (61 against 43 µs, 161 against 136), and with
 /// a 20-digit parameter at 5 digits (1.8 ms against 0.9 ms at (20, 20)), which
 /// [`nested_wins`] already refuses.
+///
+/// In the grid itself, 5-digit nets with a 20-digit parameter at (3, 3) and (5, 5), which
+/// pass [`nested_wins`], took 30.5 µs against 27.5 µs and 79.5 against 77.4 row by row:
+/// the parameter's denominator must be a word too.
 fn rows_first(row: &[&BigRational], v: &BigRational) -> bool {
-    row.iter().all(|x| x.denom().bits() <= 64) && nested_wins(row, v.denom())
+    v.denom().bits() <= 64 && row.iter().all(|x| x.denom().bits() <= 64) && nested_wins(row, v.denom())
 }
 
 // One coordinate at a time over its own common denominator, as `curve_eval`.
