@@ -343,11 +343,12 @@ fn coordinate_sum(values: &[&BigRational], t: &BigRational) -> BigRational {
 ///
 /// Measured (2026-12-05, `examples`-side prototype against the library's eval, interleaved,
 /// planar curves of the `exact_grid.py` grid): the nested sum won at 5 digits up to degree
-/// 50 at `t = 1/3` (size 967: 37 µs against 49 µs), at degrees 3 and 5 with a 20-digit `t`
-/// (266, 432) and at 30 digits at degree 3 (406, 598) and 5 at `t = 1/3` (610); it lost at
-/// 30 digits, degree 5 with a 20-digit `t` (1,260: 17 µs against 14 µs) and from degree 20
-/// at 30 digits (2,100 and up: twice as slow), and tied at 5 digits, degree 20 with a
-/// 20-digit `t` (2,997).
+/// 50 at `t = 1/3` (size 1,067: 37 µs against 49 µs), at degrees 3 and 5 with a 20-digit
+/// `t` (464, 762) and at 30 digits at degree 3 (412, 796) and 5 at `t = 1/3` (620); it lost
+/// at 30 digits, degree 5 with a 20-digit `t` (1,260: 17 µs against 14 µs) and from degree
+/// 20 at 30 digits (2,100 and up: twice as slow), and tied at 5 digits, degree 20 with a
+/// 20-digit `t` (2,997). In the grid's own run afterwards (docs/performance.md) the
+/// 30-digit degree-5 cell at `t = 1/3` (620) was 9% slower nested, within the spread.
 const NESTED_BITS: u64 = 1100;
 
 /// Whether one coordinate's Bernstein sum is cheaper nested (Horner) over the lcm of its
