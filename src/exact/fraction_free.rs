@@ -5,10 +5,12 @@
 //! `D`, a parameter `t = p/q` stays the pair of integers `(p, q)`, and every step is integer
 //! arithmetic; each output coordinate is reduced once, part by part ([`crate::exact::gcd`]).
 //! The integers are machine words (`i128`, every operation overflow-checked) while they fit;
-//! on the first overflow the whole kernel runs again on [`BigInt`]. Two kernels change
+//! on the first overflow the whole kernel runs again on [`BigInt`]. Three kernels change
 //! algorithm there: the point of a curve is then summed by binary splitting
-//! (`exact::splitting`), and one elevation step combines neighbouring points pairwise, on
-//! 256-bit words where they fit (`exact::elevation_words`). The public generic methods
+//! (`exact::splitting`) unless its denominators and `t`'s stay short (`nested_wins`), a
+//! surface's point row by row when its rows' are words (`rows_first`), else by binary
+//! splitting too, and one elevation step combines neighbouring points pairwise, on 256-bit
+//! words where they fit (`exact::elevation_words`). The public generic methods
 //! choose these kernels for exact rationals (the kernel methods of `BigRational`'s
 //! [`Scalar`](crate::Scalar) implementation); the tests compare them
 //! with `==` against the step-by-step `*_reference` methods.
@@ -35,6 +37,9 @@ use crate::error::{check_degree, Error, Result};
 use crate::exact::gcd::gcd_u128;
 use crate::exact::gcd::{self, Part};
 use crate::exact::{elevation_words, splitting};
+use choice::{nested_wins, rows_first};
+
+mod choice;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -312,19 +317,28 @@ fn point_by_coordinate(dim: usize, each: impl FnMut(usize) -> Option<BigRational
 // denominators in the coordinates, a denominator shared by all would be their product,
 // and every integer of the sum that much longer.
 fn curve_eval<I: Int>(c: &Curve<'_>, t: &BigRational) -> Option<Point<BigRational>> {
-    if I::IS_BIG {
+    point_by_coordinate(c.dim(), |k| {
+        let values: Vec<&BigRational> = coordinate(c.points(), k).collect();
+        coordinate_sum_on::<I>(&values, t)
+    })
+}
+
+/// `Σ x_i B_i^n(t)` of one coordinate's values, reduced: nested over their common
+/// denominator, or on big integers by binary splitting past [`nested_wins`].
+fn coordinate_sum_on<I: Int>(values: &[&BigRational], t: &BigRational) -> Option<BigRational> {
+    if I::IS_BIG && !nested_wins(values, t.denom()) {
         // Past machine words the sum is split in balanced halves (see `splitting`).
-        return point_by_coordinate(c.dim(), |k| {
-            let values: Vec<&BigRational> = coordinate(c.points(), k).collect();
-            Some(splitting::bernstein_sum(&values, t.numer(), t.denom()))
-        });
+        return Some(splitting::bernstein_sum(values, t.numer(), t.denom()));
     }
     let (p, q, s) = parameter::<I>(t)?;
-    point_by_coordinate(c.dim(), |k| {
-        let x = common_denominator::<I>(coordinate(c.points(), k))?;
-        let acc = nested_sum(&x.nums, 1, &p, &s)?.pop()?;
-        I::ratio_over_power(acc, &x.den, &q, c.degree())
-    })
+    let x = common_denominator::<I>(values.iter().copied())?;
+    let acc = nested_sum(&x.nums, 1, &p, &s)?.pop()?;
+    I::ratio_over_power(acc, &x.den, &q, values.len() - 1)
+}
+
+/// [`coordinate_sum_on`] on machine words while they fit, else on big integers.
+fn coordinate_sum(values: &[&BigRational], t: &BigRational) -> BigRational {
+    words_then_big(|tier| on_tier!(tier, coordinate_sum_on(values, t)))
 }
 
 /// The `k`-th forward differences of the flat vectors `x` (`dim` integers each).
@@ -430,8 +444,21 @@ fn curve_split<I: Int>(c: &Curve<'_>, t: &BigRational) -> Option<(Points, Points
     for k in 0..dim {
         let (mut l, mut r) = (Vec::with_capacity(n + 1), Vec::with_capacity(n + 1));
         casteljau_columns::<I>(c, k, t, |level, column, den, q| {
-            l.push(I::ratio_over_power(column[0].clone(), den, q, level)?);
-            r.push(I::ratio_over_power(column[n - level].clone(), den, q, level)?);
+            if level == 0 {
+                // The halves start at the curve's end points: the inputs, already reduced.
+                l.push(c.points()[0].coords()[k].clone());
+                r.push(c.points()[n].coords()[k].clone());
+                return Some(());
+            }
+            let first = I::ratio_over_power(column[0].clone(), den, q, level)?;
+            // The last level's one value is both halves' common point: reduced once.
+            let last = if level == n {
+                first.clone()
+            } else {
+                I::ratio_over_power(column[n - level].clone(), den, q, level)?
+            };
+            l.push(first);
+            r.push(last);
             Some(())
         })?;
         r.reverse();
@@ -558,6 +585,11 @@ fn surface_eval<I: Int>(sf: &Net<'_>, u: &BigRational, v: &BigRational) -> Optio
                 .iter()
                 .map(|row| row.iter().map(|p| &p.coords()[k]).collect())
                 .collect();
+            if net.iter().all(|row| rows_first(row, v)) {
+                // Each row's point at `v` reduced, then their column at `u`.
+                let column: Vec<BigRational> = net.iter().map(|row| coordinate_sum(row, v)).collect();
+                return Some(coordinate_sum(&column.iter().collect::<Vec<_>>(), u));
+            }
             return Some(splitting::net_sum(&net, u, v));
         }
         let x = common_denominator::<I>(sf.net().iter().flatten().map(|p| &p.coords()[k]))?;
