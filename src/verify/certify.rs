@@ -23,6 +23,7 @@ mod convergence;
 mod expansion;
 mod hyper;
 mod links;
+mod nonneg;
 mod polygon;
 
 /// The `format` field of every certificate.
@@ -228,6 +229,7 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
             out.insert("sampling".into(), sampling_json(eqs));
             Ok(())
         }
+        (Data::Nonneg(n), Verdict::Proved) => nonneg::fields(n, out),
         (Data::Symbolic(s), Verdict::Proved) => {
             let (goal, data, lemmas) = hyper::fields(s);
             out.insert("goal".into(), goal);
@@ -629,6 +631,9 @@ fn recheck(cert: &Json) -> Res<Option<String>> {
     if cert.get("pieces").is_some() {
         if verdict != Verdict::Proved {
             return Err("verdict: pieces data proves a goal for every value (proved)".into());
+        }
+        if nonneg::is_inequality(cert) {
+            return nonneg::recheck(cert, method).map(Some);
         }
         return hyper::recheck(cert, method).map(Some);
     }
