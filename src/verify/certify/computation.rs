@@ -237,12 +237,12 @@ pub(super) fn recheck(cert: &Json, method: &str) -> Res<String> {
         .filter_map(Json::as_str)
         .collect();
     let lemmas = super::hyper::lemmas(cert)?;
-    let (mut trusted, mut holds, mut from_lemmas) = (Vec::new(), Vec::new(), 0);
+    let (mut trusted, mut holds, mut from_lemmas) = (Vec::new(), Vec::new(), Vec::new());
     for (i, fact) in facts.iter().enumerate() {
         let at = format!("computation.facts[{i}]");
         let ts = match hull::recheck(fact, &at, &lemmas)? {
-            Some(ts) => {
-                from_lemmas += 1;
+            Some((ts, argument)) => {
+                from_lemmas.push(argument);
                 ts
             }
             None => vec![recompute(fact, &at)?],
@@ -260,11 +260,12 @@ pub(super) fn recheck(cert: &Json, method: &str) -> Res<String> {
     }
     let proof = check_computed(&holds, &trusted).ok_or("the kernel refuses the computation")?;
     let names: Vec<&str> = proof.rests_on().iter().map(|t| t.name()).collect();
-    if from_lemmas > 0 {
+    if !from_lemmas.is_empty() {
         return Ok(format!(
-            "{from_lemmas} facts from the cited lemmas' goals (the kernel's argument: {}), {} other library computations run again; rests on {}",
-            hull::ARGUMENT,
-            facts.len() - from_lemmas,
+            "{} facts from the cited lemmas' goals ({}), {} other library computations run again; rests on {}",
+            from_lemmas.len(),
+            from_lemmas.join("; "),
+            facts.len() - from_lemmas.len(),
             names.join(", ")
         ));
     }

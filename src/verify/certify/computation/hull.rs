@@ -21,8 +21,9 @@ use num_rational::BigRational;
 use num_traits::{One, Zero};
 use serde_json::{json, Value as Json};
 
-/// What the kernel's argument for such a fact is, as `check` reports it.
-pub(super) const ARGUMENT: &str = "B_i^n ≥ 0 on [0, 1] and Σ B_i^n = 1 make b(t) a convex combination; Φ(Σ b_i B_i) = Σ Φ(b_i) B_i by linearity and Σ B_i^n = 1, with transform run again on the basis maps and polygons";
+/// The kernel's argument for each kind of fact, as `check` reports it.
+const CONVEX: &str = "B_i^n ≥ 0 on [0, 1] and Σ B_i^n = 1 make b(t) = Σ B_i^n(t) b_i a convex combination";
+const AFFINE: &str = "Φ(Σ b_i B_i^n) = Σ Φ(b_i) B_i^n by linearity and Σ B_i^n = 1, transform run again on the 6 basis maps and the zero and unit polygons";
 
 /// Largest degree a re-check runs `transform` for (the texts use 8).
 const MAX_DEGREE: i64 = 64;
@@ -140,8 +141,8 @@ fn transform_maps_points(lo: i64, hi: i64) -> Res<bool> {
 }
 
 /// Re-checks a fact resting on cited lemmas: the computations the kernel's proof rests on;
-/// `None` for another computation.
-pub(super) fn recheck(fact: &Json, at: &str, lemmas: &[(String, &Json)]) -> Res<Option<Vec<Trusted>>> {
+/// `None` for another computation; with the argument, as `check` reports it.
+pub(super) fn recheck(fact: &Json, at: &str, lemmas: &[(String, &Json)]) -> Res<Option<(Vec<Trusted>, &'static str)>> {
     let kind = string(fact, "computation", at)?;
     if !matches!(kind, "convex_combination" | "affine_invariance") {
         return Ok(None);
@@ -174,5 +175,6 @@ pub(super) fn recheck(fact: &Json, at: &str, lemmas: &[(String, &Json)]) -> Res<
             )
         })?
     };
-    Ok(Some(proof.rests_on().to_vec()))
+    let argument = if kind == "convex_combination" { CONVEX } else { AFFINE };
+    Ok(Some((proof.rests_on().to_vec(), argument)))
 }
