@@ -6,8 +6,8 @@ The goal says `lhs ≥ rhs` at every integer point of its `for_all` ranges and e
 one real symbol in the closed `interval`. This checker evaluates `lhs − rhs` exactly at the
 first `OPEN_VALUES` values of each open range (closed ranges in full) and at nine points of the
 interval: a negative value refuses the file. Then, with SymPy, it proves the goal by its own
-argument from the listed obligations: one piece whose region holds on the whole domain (shown
-by Fourier–Motzkin, `cert_domain`); on it, `lhs − rhs` minus the sum of the listed terms
+argument from the listed obligations: one piece whose region is the domain (its conditions are
+the ranges' `v − from ≥ 0` and `to − v ≥ 0`, compared as expanded expressions); on it, `lhs − rhs` minus the sum of the listed terms
 (each its coefficient × its factorials × its powers) is 0 as an identity (`gammasimp`); each
 factor is ≥ 0 on the interval for the reason listed, its Bernstein coefficients computed here
 from the factor's polynomial and compared with the listed ones; each factorial's argument and
@@ -189,8 +189,12 @@ def _prove(real, ints, ranges, ab, diff, piece, points):
     for part in piece["region"].split(", "):
         _need(part.endswith(" ≥ 0"), f"region: {part!r} is not 'e ≥ 0'")
         region.append(sym(part[: -len(" ≥ 0")], "region"))
+    # The one piece is the domain itself: its conditions are the ranges', as the program
+    # prints them (a piece that merely contains the domain is not what the program proved).
+    same = {sympy.expand(x) for x in region} == {sympy.expand(x) for x in domain_ineqs}
+    _need(same, f"region: {piece['region']} is not the domain of the ranges (one piece must be the domain)")
     for r in region:
-        _need(domain.implies(r), f"region: {r} ≥ 0 does not hold on the whole domain (one piece must cover it)")
+        _need(domain.implies(r), f"region: {r} ≥ 0 does not hold on the whole domain")
     on_piece = Domain([syms[n] for n in ints], region)
     terms = piece.get("terms")
     _need(isinstance(terms, list), "pieces.nonnegative[0].terms: not a list")

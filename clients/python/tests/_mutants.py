@@ -176,6 +176,9 @@ def _computation_edits(doc):
                 for other in ("ellipse", "parabola", "hyperbola", "degenerate"):
                     if other != val:
                         out.append(("result", f"{where} {other}", _set(doc, path, other)))
+            elif path[-1] in ("nonnegative", "sum_one"):
+                # a cited lemma's id: another claim's
+                out.append(("lemma", where, _set(doc, path, "000-basis-recursion")))
             elif isinstance(val, str) and path[-1] != "computation":
                 out.append(("number", where, _set(doc, path, _bump(val))))
                 if Fraction(val) != 0:
