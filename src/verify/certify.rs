@@ -276,7 +276,7 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
             "the counterexample was found by {method}, whose data this version does not record (not done)"
         )),
         (_, Verdict::Proved) if matches!(o.method, Some(Method::Pieces | Method::Wz)) => Err(format!(
-            "method {method}: its goal is written only for an identity whose cited lemmas have written goals (not for an inequality) (not done)"
+            "method {method}: its goal is written only for an identity whose cited lemmas have written goals, or an inequality whose factors' Bernstein coefficients on the whole interval show it (not done: the others)"
         )),
         _ => Err(format!(
             "method {method}: this version records no data for it (not done)"
