@@ -138,7 +138,9 @@ fn tampered_inequality_certificates_are_refused() {
     m["range"] = Value::from("n = 0..=3");
     named.push(("proved in range", m));
     // Each Bernstein coefficient with its sign changed (a zero made -1).
-    let powers = cert["pieces"]["nonnegative"][0]["terms"][0]["powers"].as_array().unwrap();
+    let powers = cert["pieces"]["nonnegative"][0]["terms"][0]["powers"]
+        .as_array()
+        .unwrap();
     for (p, power) in powers.iter().enumerate() {
         for (k, c) in power["bernstein"].as_array().unwrap().iter().enumerate() {
             let c = c.as_str().unwrap();

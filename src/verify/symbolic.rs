@@ -33,11 +33,11 @@ use super::claims::{Decls, Identity, IntRange};
 use super::context::Ctx;
 use super::identity::check_identity;
 use super::kernel::bernstein::check_nonneg_pieces;
-use super::kernel::nonneg::{check_record, Nonneg, NonnegGoal};
 use super::kernel::checked::Verdict;
 use super::kernel::checked::{Method, Step};
 use super::kernel::expr::Expr;
 use super::kernel::hyper::{lin_mul, lin_neg, Aff, Lin};
+use super::kernel::nonneg::{check_record, Nonneg, NonnegGoal};
 use super::kernel::pieces::Domain;
 use super::kernel::{check_discharged, check_induction, Discharged, Proof};
 use super::lemma::{self, Lemma, Obligation, Rewritten};
@@ -136,7 +136,10 @@ pub fn nonneg_for_every(
     if let ([real], true) = (&conts[..], check_record(&record)) {
         let goal = NonnegGoal {
             real: real.clone(),
-            for_all: rs.iter().map(|r| (r.var.clone(), r.from.clone(), r.to.clone())).collect(),
+            for_all: rs
+                .iter()
+                .map(|r| (r.var.clone(), r.from.clone(), r.to.clone()))
+                .collect(),
             lhs: lhs.to_string(),
             rhs: rhs.to_string(),
             interval: (interval.0.clone(), interval.1.clone()),

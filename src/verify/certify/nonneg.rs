@@ -132,7 +132,10 @@ pub(super) fn read_goal(g: &Json, whole: &str) -> Res<NonnegGoal> {
     }
     let sides = field(g, "inequality", whole)?;
     let at = format!("{whole}.inequality");
-    let (l, r) = (string(sides, "lhs", &at)?.to_string(), string(sides, "rhs", &at)?.to_string());
+    let (l, r) = (
+        string(sides, "lhs", &at)?.to_string(),
+        string(sides, "rhs", &at)?.to_string(),
+    );
     let (lhs, rhs) = if swap { (r, l) } else { (l, r) };
     Ok(NonnegGoal {
         real,
@@ -151,7 +154,10 @@ fn first_difference(file: &Json, derived: &Json) -> String {
         return format!("{} pieces, the kernel's proof has {}", f.len(), d.len());
     }
     for (i, (x, y)) in f.iter().zip(d).enumerate() {
-        let (tx, ty) = (x.get("terms").and_then(Json::as_array), y.get("terms").and_then(Json::as_array));
+        let (tx, ty) = (
+            x.get("terms").and_then(Json::as_array),
+            y.get("terms").and_then(Json::as_array),
+        );
         if x.get("region") != y.get("region") {
             return format!("piece {i}: the region is not the kernel's ({})", y["region"]);
         }
@@ -220,7 +226,9 @@ pub(super) fn recheck(cert: &Json, method: &str) -> Res<String> {
     }
     let derived = method_name(checked.method().unwrap_or(Method::Pieces));
     if derived != method {
-        return Err(format!("method: the file says {method}, the kernel's proof is {derived}"));
+        return Err(format!(
+            "method: the file says {method}, the kernel's proof is {derived}"
+        ));
     }
     let Data::Nonneg(n) = checked.data() else {
         return Err("the kernel's proof records no obligations (a factor shown ≥ 0 only by halving)".into());

@@ -256,10 +256,7 @@ fn term_nonneg(
             }
         };
         let Some(why) = why else {
-            return Ok(Err(format!(
-                "the factor {base}^({e}) of {} is not shown ≥ 0",
-                t.show()
-            )));
+            return Ok(Err(format!("the factor {base}^({e}) of {} is not shown ≥ 0", t.show())));
         };
         powers.push(Factor {
             factor: base.to_string(),

@@ -221,7 +221,10 @@ mod tests {
         assert!(!check_record(&[piece(factor(Why::BernsteinPositive, vec![0, 1]))]));
         assert!(!check_record(&[piece(factor(Why::ExponentNonneg, vec![]))]));
         assert!(!check_record(&[]));
-        let (members, reals) = (vec!["sum(i, 0, n, B(i, n, t))".to_string(), "1".into()], vec!["t".to_string()]);
+        let (members, reals) = (
+            vec!["sum(i, 0, n, B(i, n, t))".to_string(), "1".into()],
+            vec!["t".to_string()],
+        );
         let for_all = vec![("n".to_string(), "0".to_string(), None)];
         let unity = Unity {
             members: &members,

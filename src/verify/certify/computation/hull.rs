@@ -109,7 +109,9 @@ fn transform_maps_points(lo: i64, hi: i64) -> Res<bool> {
     let mut maps = Vec::new();
     for r in 0..DIM {
         for s in 0..DIM {
-            let m = (0..DIM).map(|a| (0..DIM).map(|b| q(a == r && b == s)).collect()).collect();
+            let m = (0..DIM)
+                .map(|a| (0..DIM).map(|b| q(a == r && b == s)).collect())
+                .collect();
             maps.push(AffineMap::new(m, vec![BigRational::zero(); DIM]).map_err(e)?);
         }
         let c = (0..DIM).map(|a| q(a == r)).collect();
@@ -158,7 +160,10 @@ pub(super) fn recheck(fact: &Json, at: &str, lemmas: &[(String, &Json)]) -> Res<
         return Err(format!("{at}.sum_one: the lemma's goal has a polygon"));
     }
     let proof = if kind == "convex_combination" {
-        let g = nonneg::read_goal(cited(fact, "nonnegative", at, lemmas)?, &format!("{at}: lemma nonnegative"))?;
+        let g = nonneg::read_goal(
+            cited(fact, "nonnegative", at, lemmas)?,
+            &format!("{at}: lemma nonnegative"),
+        )?;
         check_convex_combination(lo, hi, &g, &unity).ok_or_else(|| {
             format!("{at}: the kernel refuses: the lemmas' goals are not B(i, n, t) ≥ 0 on [0, 1] and Σ B(i, n, t) = 1 for every n ≥ 0")
         })?
