@@ -27,6 +27,7 @@ mod convergence;
 mod expansion;
 mod hyper;
 mod links;
+mod nonneg;
 mod polygon;
 mod sqrt;
 
@@ -248,6 +249,7 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
             out.insert("sampling".into(), sampling_json(eqs, radicand)?);
             Ok(())
         }
+        (Data::Nonneg(n), Verdict::Proved) => nonneg::fields(n, out),
         (Data::Symbolic(s), Verdict::Proved) => {
             let (goal, data, lemmas) = hyper::fields(s);
             out.insert("goal".into(), goal);
@@ -297,7 +299,7 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
             "the counterexample was found by {method}, whose data this version does not record (not done)"
         )),
         (_, Verdict::Proved) if matches!(o.method, Some(Method::Pieces | Method::Wz)) => Err(format!(
-            "method {method}: its goal is written only for an identity whose cited lemmas have written goals (not for an inequality) (not done)"
+            "method {method}: its goal is written only for an identity whose cited lemmas have written goals, or an inequality whose factors' Bernstein coefficients on the whole interval show it (not done: the others)"
         )),
         _ => Err(format!(
             "method {method}: this version records no data for it (not done)"
@@ -696,6 +698,9 @@ fn recheck(cert: &Json) -> Res<Option<String>> {
     if cert.get("pieces").is_some() {
         if verdict != Verdict::Proved {
             return Err("verdict: pieces data proves a goal for every value (proved)".into());
+        }
+        if nonneg::is_inequality(cert) {
+            return nonneg::recheck(cert, method).map(Some);
         }
         return hyper::recheck(cert, method).map(Some);
     }

@@ -195,8 +195,7 @@ pub fn check_for_every(claim: &Ctx<'_>, ineq: &Inequality, detail: bool) -> Resu
     let (a, b) = interval(&ctx, ineq)?;
     let lhs = ctx.expr(&ineq.lhs)?;
     let rhs = ctx.expr(ineq.rhs.as_deref().unwrap_or("0"))?;
-    let p = Expr::sub(lhs, rhs);
-    let mut out = super::symbolic::nonneg_for_every(decls, &ctx, &p, (&a, &b), detail)?;
+    let mut out = super::symbolic::nonneg_for_every(decls, &ctx, (&lhs, &rhs), (&a, &b), detail)?;
     out.certificate = format!(
         "{} on [{a}, {b}]; also evaluated exactly for the first {} values of each open range",
         out.certificate,

@@ -99,6 +99,17 @@ pub enum Computed {
         l: BigRational,
         delta2: BigRational,
     },
+    /// The convex hull property for degrees `lo..=hi`, from the cited lemmas (their claim
+    /// ids) `B_i^n(t) ≥ 0` on `[0, 1]` and `Σ_i B_i^n(t) = 1`.
+    ConvexHull {
+        lo: i64,
+        hi: i64,
+        nonnegative: &'static str,
+        sum_one: &'static str,
+    },
+    /// Affine invariance in the plane for degrees `lo..=hi`, from the cited lemma (its claim
+    /// id) `Σ_i B_i^n(t) = 1` and the library's `transform` on the basis maps and polygons.
+    AffineInvariance { lo: i64, hi: i64, sum_one: &'static str },
     /// Not a proof's computation: the bounded evidence of Theorem 1.2 (`verified`), each
     /// curve's control points and its exact max-norm distances for `r = 0..=steps`.
     Convergence {

@@ -288,6 +288,27 @@ fn goal_blocks(goal: &Json) -> Vec<Block> {
     if !lines.is_empty() {
         blocks.push(Block::Lines(lines));
     }
+    // An inequality's goal (`>=`, `<=`): its sides and the interval of its real symbol.
+    if let Some(ineq) = goal.get("inequality") {
+        let side = |k: &str| ineq.get(k).and_then(Json::as_str).map(clean).unwrap_or_default();
+        let rel = if goal.get("relation").and_then(Json::as_str) == Some("<=") {
+            "≤"
+        } else {
+            "≥"
+        };
+        let mut lines = vec![(
+            "inequality".to_string(),
+            format!("{} {rel} {}", side("lhs"), side("rhs")),
+        )];
+        if let Some(iv) = goal.get("interval") {
+            let get = |k: &str| iv.get(k).and_then(Json::as_str).map(clean).unwrap_or_default();
+            lines.push((
+                "for".to_string(),
+                format!("{} in [{}, {}]", get("name"), get("from"), get("to")),
+            ));
+        }
+        blocks.push(Block::Lines(lines));
+    }
     // Equalities with the same sides differ only in their integers: one line and a table.
     let eqs: Vec<&Json> = goal
         .get("equalities")

@@ -37,6 +37,7 @@ use super::kernel::checked::Verdict;
 use super::kernel::checked::{Method, Step};
 use super::kernel::expr::Expr;
 use super::kernel::hyper::{lin_mul, lin_neg, Aff, Lin};
+use super::kernel::nonneg::{check_record, Nonneg, NonnegGoal};
 use super::kernel::pieces::Domain;
 use super::kernel::{check_discharged, check_induction, Discharged, Proof};
 use super::lemma::{self, Lemma, Obligation, Rewritten};
@@ -104,15 +105,19 @@ pub const REFUTATION_TIME: Duration = Duration::from_secs(4);
 /// constant or a polynomial in `t` with nonnegative Bernstein coefficients on `[a, b]`,
 /// factorials of arguments ≥ 0, powers of positive constants, and powers with exponent ≥ 0 of
 /// polynomials ≥ 0 on `[a, b]` (or any exponent of one > 0 there), checked by the kernel
-/// ([`check_nonneg_pieces`]). The evaluation check is the caller's.
+/// ([`check_nonneg_pieces`]). The evaluation check is the caller's. The proof's data is the
+/// goal `lhs ≥ rhs` with every piece's live terms and the reason each factor is ≥ 0
+/// (`docs/certificates.md`), kept when every factor's Bernstein coefficients on the whole
+/// interval show its reason.
 pub fn nonneg_for_every(
     decls: &Decls,
     ctx: &Ctx<'_>,
-    p: &Expr,
+    (lhs, rhs): (&Expr, &Expr),
     interval: (&BigRational, &BigRational),
     detail: bool,
 ) -> Result<Checked> {
     let rs = &decls.ranges;
+    let p = &Expr::sub(lhs.clone(), rhs.clone());
     let sides = [p.clone()];
     let (certs, sym, conts) = prepare(&[], ctx, &sides)?;
     if conts.len() > 1 {
@@ -125,9 +130,22 @@ pub fn nonneg_for_every(
     let dom = tr.domain(decls, rs)?;
     let lin = tr.lin(p, &dom)?;
     let mut log = Vec::new();
-    let (discharged, pieces) = check_nonneg_pieces(&sym, &lin, &dom, interval, &mut log)?;
-    let proof = check_discharged(Method::Pieces, &[discharged])
+    let (discharged, pieces, record) = check_nonneg_pieces(&sym, &lin, &dom, interval, &mut log)?;
+    let mut proof = check_discharged(Method::Pieces, &[discharged])
         .ok_or_else(|| Error::Domain("the kernel refuses a for-every proof by Pieces".into()))?;
+    if let ([real], true) = (&conts[..], check_record(&record)) {
+        let goal = NonnegGoal {
+            real: real.clone(),
+            for_all: rs
+                .iter()
+                .map(|r| (r.var.clone(), r.from.clone(), r.to.clone()))
+                .collect(),
+            lhs: lhs.to_string(),
+            rhs: rhs.to_string(),
+            interval: (interval.0.clone(), interval.1.clone()),
+        };
+        proof = proof.with_nonneg(Nonneg { goal, pieces: record });
+    }
     let open = scope(rs);
     let mut out = Checked::proved(
         proof,

@@ -11,7 +11,7 @@ use super::claims::{Convergence, Decls, IntRange, PolygonSpec, Theorem};
 use super::context::Ctx;
 use super::kernel::checked::{Method, Step};
 use super::kernel::{check_all, check_computed, Trusted};
-use super::outcome::Checked;
+use super::outcome::{Checked, Computed};
 use super::sampling::{chain_work, check_chain, MAX_WORK};
 use crate::curve::BezierCurve;
 use crate::error::{Error, Result};
@@ -445,14 +445,20 @@ fn affine_invariance(lo: i64, hi: i64) -> Result<Checked> {
         }
     }
     let proof = check_computed(&[], &[Trusted::Transform]).expect("no fact failed");
-    Ok(Checked::proved(
+    let mut out = Checked::proved(
         proof,
         format!(
             "for every n = {lo}..={hi}: both sides are bilinear in (A, control points) plus linear in c, degree ≤ n in t; \
              checked on the 4 matrix units × 2(n+1) unit polygons and the 2 translations, at t = k/n (n+1 points); \
              {evaluations} exact evaluations: proof"
         ),
-    ))
+    );
+    out.computed = vec![Computed::AffineInvariance {
+        lo,
+        hi,
+        sum_one: PARTITION_OF_UNITY,
+    }];
+    Ok(out)
 }
 
 /// The convex hull property: `B_i^n(t) = C(n,i) t^i (1-t)^(n-i) ≥ 0` on `[0, 1]` (a product of
@@ -515,8 +521,21 @@ fn convex_hull(lo: i64, hi: i64, detail: bool) -> Result<Checked> {
         ),
     );
     out.steps = steps;
+    out.computed = vec![Computed::ConvexHull {
+        lo,
+        hi,
+        nonnegative: BASIS_NONNEG,
+        sum_one: PARTITION_OF_UNITY,
+    }];
     Ok(out)
 }
+
+/// The claims of text 000 whose goals a certificate of the convex hull and of the affine
+/// invariance cites as lemmas (`docs/certificates.md`): `B_i^n(t) ≥ 0` on `[0, 1]` and
+/// `Σ_i B_i^n(t) = 1`, each for every `n ≥ 0`. A `check` without their files leaves the two
+/// "not re-checked".
+const BASIS_NONNEG: &str = "000-basis-nonneg";
+const PARTITION_OF_UNITY: &str = "000-partition-of-unity";
 
 /// The bound used for Theorem 1.2: `max_i |b_i^(r) − b(i/(n+r))|_∞ ≤ n(n−1)/(2(n+r)) · max_j |Δ²b_j|_∞`.
 ///

@@ -20,7 +20,8 @@ its basis polygon, when the equality lists control points) are the listed values
 an implication's premise, evaluated there too, is the listed value and 0. A `verified`
 certificate's bounded evidence is re-derived in `cert_convergence` (it stays evidence). A `proved_in_range` goal must cover every case of its `range` (of the variables the range
 text names: an inner range it does not name, `j = 0..=n`, is not checked for completeness).
-Methods `expansion` and `computation` are checked in `cert_expand` and `cert_computation`.
+Methods `expansion` and `computation` are checked in `cert_expand` and `cert_computation`; an
+inequality for every value (a `>=` goal with `pieces` data) in `cert_nonneg`.
 """
 
 import itertools
@@ -124,6 +125,14 @@ def check_certificate(doc, name="?", symbolic=False):
         _check_header(doc)
         if doc["check"] == "none":
             return out(NOT_RECHECKED, f"no checkable data in the file: {doc['reason']}")
+        if "pieces" in doc and isinstance(doc.get("goal"), dict) and doc["goal"].get("relation") in (">=", "<="):
+            from .cert_nonneg import NonnegRefused, check_nonneg
+
+            try:
+                proved, detail = check_nonneg(doc)
+                return out(RECHECKED if proved else NOT_RECHECKED, detail)
+            except NonnegRefused as e:
+                return out(REFUSED, str(e))
         if "pieces" in doc:
             try:
                 resting = rests_on(doc)

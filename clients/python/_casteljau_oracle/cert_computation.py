@@ -14,6 +14,13 @@ computation, re-derived here from their inputs by the rules the docs state, with
   b_{n−1})`), the normal equations `M = 3/4 G`, `r = (ẋ(0)·X, ẋ(1)·X)` with `X = x(0) + x(1) −
   2 x(1/2)` and `G` the Gram matrix of `ẋ(0), ẋ(1)`, then `M·(−k, l) = r`, `det M ≠ 0` and
   `δ² = |a(1/2) − x(1/2)|²` with `a(1/2) = (x0 + 3(x0 + k ẋ(0)) + 3(x1 − l ẋ(1)) + x1)/8`.
+- `convex_combination` and `affine_invariance` (text 000, resting on cited lemmas): the cited
+  goals must be the ones docs/certificates.md states (their files are checked by
+  `cert_links`); then, for every degree n of `degrees`, this checker proves the statement
+  itself: `Σ_i B_i^n = 1` and every `B_i^n` with Bernstein coefficients ≥ 0 (as polynomials
+  here), and `Φ(Σ b_i B_i^n) = Σ Φ(b_i) B_i^n` as polynomials in t for the 4 matrix units ×
+  2(n+1) unit polygons and the 2 translations (both sides are affine in each of A, c and
+  the polygon, so these span every case).
 """
 
 from fractions import Fraction
@@ -193,6 +200,107 @@ def _check_fit(fact, need, rational, at):
     need(rational(fact.get("delta2"), f"{at}.delta2") == d2, f"{at}.delta2: δ² at (k, l) is {d2}")
 
 
+#: The facts resting on cited lemmas: what each rests on in the library.
+_LEMMA_FACTS = {"convex_combination": "bernstein_all", "affine_invariance": "BezierCurve::transform"}
+#: Largest degree checked (as the program's limit).
+_MAX_DEGREE = 64
+_NONNEG_GOAL = {
+    "relation": ">=",
+    "symbols": [{"name": "t", "sort": "real"}, {"name": "n", "sort": "integer"}, {"name": "i", "sort": "integer"}],
+    "for_all": [{"name": "n", "from": "0", "to": None}, {"name": "i", "from": "0", "to": "n"}],
+    "interval": {"name": "t", "from": "0", "to": "1"},
+    "inequality": {"lhs": "B(i, n, t)", "rhs": "0"},
+}
+
+
+def _unity_goal(goal, lo):
+    """Whether `goal` is `Σ_{i=0}^{n} B(i, n, t) = 1` for every real t and n ≥ n0, n0 ≤ lo."""
+    if not isinstance(goal, dict) or set(goal) - {"relation", "symbols", "for_all", "equalities"}:
+        return False
+    ranges = goal.get("for_all")
+    ok_range = (
+        isinstance(ranges, list) and len(ranges) == 1 and isinstance(ranges[0], dict)
+        and ranges[0].get("name") == "n" and ranges[0].get("to") is None
+        and isinstance(ranges[0].get("from"), str) and ranges[0]["from"].lstrip("-").isdigit()
+        and int(ranges[0]["from"]) <= lo
+    )
+    return (
+        ok_range
+        and goal.get("relation") == "="
+        and goal.get("symbols") == [{"name": "t", "sort": "real"}, {"name": "n", "sort": "integer"}]
+        and goal.get("equalities") == [{"lhs": "sum(i, 0, n, B(i, n, t))", "rhs": "1"}]
+    )
+
+
+def _poly_eq(a, b):
+    n = max(len(a), len(b))
+    return all((a[k] if k < len(a) else 0) == (b[k] if k < len(b) else 0) for k in range(n))
+
+
+def _bern(i, n):
+    """B_i^n in the power basis (lowest degree first)."""
+    return [Fraction(comb(n, i) * comb(n - i, k - i) * (-1) ** (k - i)) if k >= i else Fraction(0) for k in range(n + 1)]
+
+
+def _check_lemma_fact(doc, fact, name, need, at):
+    rests = doc.get("rests_on")
+    need(_LEMMA_FACTS[name] in rests, f"{at}: rests on {_LEMMA_FACTS[name]}, not named in rests_on")
+    deg = fact.get("degrees")
+    need(isinstance(deg, dict), f"{at}.degrees: missing")
+    try:
+        lo, hi = int(deg.get("from")), int(deg.get("to"))
+    except (TypeError, ValueError):
+        need(False, f"{at}.degrees: not integers")
+    need(0 <= lo <= hi <= _MAX_DEGREE, f"{at}.degrees: not 0 ≤ from ≤ to ≤ {_MAX_DEGREE}")
+    lemmas = doc.get("lemmas")
+    need(isinstance(lemmas, list), f"{at}: the lemmas it cites are missing")
+    cited = {x.get("id"): x.get("goal") for x in lemmas if isinstance(x, dict)}
+
+    def goal_of(key):
+        lid = fact.get(key)
+        need(isinstance(lid, str) and lid in cited, f"{at}.{key}: lemma {lid!r} is not among the file's lemmas")
+        return cited[lid]
+
+    need(_unity_goal(goal_of("sum_one"), lo), f"{at}.sum_one: the lemma's goal is not Σ B(i, n, t) = 1 for every n ≥ 0")
+    if name == "convex_combination":
+        need(goal_of("nonnegative") == _NONNEG_GOAL, f"{at}.nonnegative: the lemma's goal is not B(i, n, t) ≥ 0 on [0, 1]")
+    for n in range(lo, hi + 1):
+        basis = [_bern(i, n) for i in range(n + 1)]
+        total = [sum(b[k] for b in basis) for k in range(n + 1)]
+        need(_poly_eq(total, [Fraction(1)]), f"{at}: Σ_i B_i^{n} is not 1")
+        if name == "convex_combination":
+            # B_i^n has the Bernstein coefficients of the unit vector e_i on [0, 1].
+            for i, b in enumerate(basis):
+                coeffs = [sum(b[k] * Fraction(comb(j, k), comb(n, k)) for k in range(j + 1)) for j in range(n + 1)]
+                need(all(c >= 0 for c in coeffs), f"{at}: B_{i}^{n} has a negative Bernstein coefficient")
+        else:
+            _check_affine(n, basis, need, at)
+
+
+def _check_affine(n, basis, need, at):
+    """Φ(Σ b_i B_i) = Σ Φ(b_i) B_i as polynomials in t, on the basis maps and polygons (plane)."""
+    dim = 2
+    maps = []
+    for r in range(dim):
+        for c in range(dim):
+            maps.append(([[Fraction(int(a == r and b == c)) for b in range(dim)] for a in range(dim)], [Fraction(0)] * dim))
+        maps.append(([[Fraction(0)] * dim for _ in range(dim)], [Fraction(int(a == r)) for a in range(dim)]))
+    polygons = [[[Fraction(0)] * dim for _ in range(n + 1)]]
+    for k in range(n + 1):
+        for c in range(dim):
+            polygons.append([[Fraction(int(i == k and a == c)) for a in range(dim)] for i in range(n + 1)])
+    apply = lambda m, p: [sum(m[0][a][b] * p[b] for b in range(dim)) + m[1][a] for a in range(dim)]  # noqa: E731
+    for m in maps:
+        for pts in polygons:
+            for a in range(dim):
+                # Φ(b(t))_a = Σ_b A_ab b(t)_b + c_a, with b(t)_b = Σ_i pts[i][b] B_i(t).
+                curve = [[sum(pts[i][b] * basis[i][k] for i in range(n + 1)) for k in range(n + 1)] for b in range(dim)]
+                left = [sum(m[0][a][b] * curve[b][k] for b in range(dim)) + (m[1][a] if k == 0 else 0) for k in range(n + 1)]
+                moved = [apply(m, p) for p in pts]
+                right = [sum(moved[i][a] * basis[i][k] for i in range(n + 1)) for k in range(n + 1)]
+                need(_poly_eq(left, right), f"{at}: Φ(Σ b_i B_i^{n}) ≠ Σ Φ(b_i) B_i^{n} for a basis map and polygon")
+
+
 def check_computation(doc, need, rational):
     """Re-derives every listed fact; returns the detail line (refuses through `need`)."""
     data = doc.get("computation")
@@ -202,6 +310,9 @@ def check_computation(doc, need, rational):
     for k, fact in enumerate(data["facts"]):
         at = f"computation.facts[{k}]"
         name = fact.get("computation") if isinstance(fact, dict) else None
+        if name in _LEMMA_FACTS:
+            _check_lemma_fact(doc, fact, name, need, at)
+            continue
         need(isinstance(fact, dict) and (name == "fit_cubic" or isinstance(fact.get("kind"), str)), f"{at}: kind missing")
         need(name in rests, f"{at}: {name!r} is not named in rests_on")
         if name == "ImplicitConic::kind":
@@ -234,4 +345,8 @@ def check_computation(doc, need, rational):
             need(False, f"{at}: the computation {name!r} is not one this checker knows")
         need(got == fact.get("kind"), f"{at}: the type is {got!r}, the file says {fact.get('kind')!r}")
     n = len(data["facts"])
+    lemma_facts = [f.get("computation") for f in data["facts"] if f.get("computation") in _LEMMA_FACTS]
+    if lemma_facts:
+        return (f"{', '.join(lemma_facts)}: the cited lemmas' goals are the documented ones, and the statement "
+                f"proved here for every degree listed (Σ B_i^n = 1 and the basis as polynomials)")
     return f"{n} library computation{'s' if n > 1 else ''} re-derived here from the listed inputs: the same result"

@@ -57,7 +57,7 @@ def resolve(outcomes, docs, refused, not_rechecked, rechecked="re-checked"):
             return state[k]
         o, d = outcomes[k], docs[k]
         try:
-            refs = lemma_refs(d) if isinstance(d, dict) and "pieces" in d else []
+            refs = lemma_refs(d) if isinstance(d, dict) and ("pieces" in d or "computation" in d) else []
         except LinkRefused:
             refs = []  # already refused by the file's own check
         if o.status == refused or not refs:

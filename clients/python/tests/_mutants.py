@@ -107,8 +107,11 @@ def mutants(doc):
             at = ("goal", "equalities", k, "control_points")
             out.append(("control point", f"equality {k}: the last dropped", _set(doc, at, listed[:-1])))
             out.append(("control point", f"equality {k}: two swapped", _set(doc, at, [listed[1], listed[0]] + listed[2:])))
+    if goal and "inequality" in goal:
+        flipped = {">=": "<=", "<=": ">="}.get(goal.get("relation"), ">=")
+        out.append(("swapped sides", "the inequality flipped", _set(doc, ("goal", "relation"), flipped)))
     if goal:
-        for k, eq in enumerate(goal["equalities"]):
+        for k, eq in enumerate(goal.get("equalities") or []):
             if eq["lhs"] != eq["rhs"]:
                 swapped = {**eq, "lhs": eq["rhs"], "rhs": eq["lhs"]}
                 out.append(("swapped sides", f"equality {k}", _set(doc, ("goal", "equalities", k), swapped)))
@@ -176,6 +179,9 @@ def _computation_edits(doc):
                 for other in ("ellipse", "parabola", "hyperbola", "degenerate"):
                     if other != val:
                         out.append(("result", f"{where} {other}", _set(doc, path, other)))
+            elif path[-1] in ("nonnegative", "sum_one"):
+                # a cited lemma's id: another claim's
+                out.append(("lemma", where, _set(doc, path, "000-basis-recursion")))
             elif isinstance(val, str) and path[-1] != "computation":
                 out.append(("number", where, _set(doc, path, _bump(val))))
                 if Fraction(val) != 0:

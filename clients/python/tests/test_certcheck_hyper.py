@@ -19,7 +19,8 @@ DATA = os.path.join(HERE, "..", "..", "..", "tests", "certificates", "texts")
 
 def _docs():
     docs = [json.load(open(f, encoding="utf-8")) for f in sorted(glob.glob(os.path.join(DATA, "*.json")))]
-    return [d for d in docs if "pieces" in d]
+    # an inequality's goal (`>=`) has its own test: test_cert_nonneg.py
+    return [d for d in docs if "pieces" in d and d["goal"]["relation"] == "="]
 
 
 @pytest.fixture(autouse=True)

@@ -1,8 +1,8 @@
 //! Certificates of proofs by a library computation (`docs/certificates.md`, method
 //! `computation`): each computation's inputs and result. Written for the conic types (the
 //! type of an implicit conic from its equation, of a rational quadratic from its weights,
-//! exact rationals or `a + b√d`) and for text 004's cubic fit ([`fit`]); the other
-//! computations (`BezierCurve::transform`, `bernstein_all`, `hull_weights`) record no data yet.
+//! exact rationals or `a + b√d`), for text 004's cubic fit ([`fit`]), and for the convex hull
+//! and the affine invariance of text 000 as facts resting on cited lemmas ([`hull`]).
 //!
 //! The re-check runs the named library computation again on the file's inputs and compares
 //! its result with the file's; the verdict still rests on that computation (`rests_on`), as the
@@ -25,6 +25,7 @@ use num_rational::BigRational;
 use serde_json::{json, Map, Value as Json};
 
 mod fit;
+mod hull;
 
 pub(super) fn strings(v: &[BigRational]) -> Vec<String> {
     v.iter().map(ToString::to_string).collect()
@@ -38,8 +39,13 @@ pub(super) fn fields(computed: &[Computed], out: &mut Map<String, Json>) -> Res<
         return Err("method computation: this version records no data for it (not done)".into());
     }
     let known: Vec<String> = XY.iter().map(|v| v.to_string()).collect();
-    let mut facts = Vec::new();
+    let (mut facts, mut lemmas) = (Vec::new(), Vec::new());
     for c in computed {
+        if let Some((fact, cited)) = hull::fact(c) {
+            facts.push(fact);
+            lemmas.extend(cited);
+            continue;
+        }
         facts.push(match c {
             Computed::ConicKind {
                 lhs,
@@ -64,9 +70,15 @@ pub(super) fn fields(computed: &[Computed], out: &mut Map<String, Json>) -> Res<
             }
             Computed::CubicFit { .. } => fit::fact(c)?,
             Computed::Convergence { .. } => return Err("bounded evidence is not a computation's fact".into()),
+            Computed::ConvexHull { .. } | Computed::AffineInvariance { .. } => {
+                return Err("a fact resting on lemmas is written above".into())
+            }
         });
     }
     out.insert("computation".into(), json!({ "facts": facts }));
+    if !lemmas.is_empty() {
+        out.insert("lemmas".into(), Json::Array(lemmas));
+    }
     Ok(())
 }
 
@@ -196,21 +208,39 @@ pub(super) fn recheck(cert: &Json, method: &str) -> Res<String> {
         .iter()
         .filter_map(Json::as_str)
         .collect();
-    let (mut trusted, mut holds) = (Vec::new(), Vec::new());
+    let lemmas = super::hyper::lemmas(cert)?;
+    let (mut trusted, mut holds, mut from_lemmas) = (Vec::new(), Vec::new(), Vec::new());
     for (i, fact) in facts.iter().enumerate() {
         let at = format!("computation.facts[{i}]");
-        let t = recompute(fact, &at)?;
-        if !rests.contains(&t.name()) {
-            return Err(format!(
-                "rests_on: the proof rests on {}, the file does not say so",
-                t.name()
-            ));
+        let ts = match hull::recheck(fact, &at, &lemmas)? {
+            Some((ts, argument)) => {
+                from_lemmas.push(argument);
+                ts
+            }
+            None => vec![recompute(fact, &at)?],
+        };
+        for t in ts {
+            if !rests.contains(&t.name()) {
+                return Err(format!(
+                    "rests_on: the proof rests on {}, the file does not say so",
+                    t.name()
+                ));
+            }
+            trusted.push(t);
         }
-        trusted.push(t);
         holds.push(true);
     }
     let proof = check_computed(&holds, &trusted).ok_or("the kernel refuses the computation")?;
     let names: Vec<&str> = proof.rests_on().iter().map(|t| t.name()).collect();
+    if !from_lemmas.is_empty() {
+        return Ok(format!(
+            "{} facts from the cited lemmas' goals ({}), {} other library computations run again; rests on {}",
+            from_lemmas.len(),
+            from_lemmas.join("; "),
+            facts.len() - from_lemmas.len(),
+            names.join(", ")
+        ));
+    }
     Ok(format!(
         "{} library computations run again on the file's inputs, with the file's results; rests on {}",
         facts.len(),

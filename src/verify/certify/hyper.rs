@@ -25,7 +25,7 @@ pub(super) fn fields(s: &Symbolic) -> (Json, Json, Vec<Json>) {
 }
 
 /// The goal of a written for-every proof (its statement, no proof data).
-fn goal_json(s: &Symbolic) -> Json {
+pub(super) fn goal_json(s: &Symbolic) -> Json {
     let mut symbols: Vec<Json> = s.reals.iter().map(|n| json!({"name": n, "sort": "real"})).collect();
     symbols.extend(s.for_all.iter().map(|(n, ..)| json!({"name": n, "sort": "integer"})));
     let for_all: Vec<Json> = s
@@ -103,7 +103,7 @@ pub(super) fn lemmas(cert: &Json) -> Res<Vec<(String, &Json)>> {
 }
 
 /// Reads a written goal (its statement) back; `whole` names it in errors.
-fn read_goal(g: &Json, whole: &str) -> Res<Symbolic> {
+pub(super) fn read_goal(g: &Json, whole: &str) -> Res<Symbolic> {
     if string(g, "relation", whole)? != "=" {
         return Err(format!("{whole}.relation: only '=' is defined"));
     }

@@ -7,6 +7,7 @@
 use super::checked::{Method, Step};
 use super::eval::Alg;
 use super::hyper::{Aff, Base, Symbols, Term};
+use super::nonneg::{Factor, LiveTerm, Piece, Why};
 use super::pieces::{prove_pieces, Domain, ZeroOutcome};
 use super::poly::{Poly, RatFunc};
 use super::Discharged;
@@ -153,26 +154,52 @@ fn coeffs_last(sym: &Symbols, q: &Poly) -> Option<Vec<BigRational>> {
 /// Whether `q`, a rational function of the continuous parameter with constant denominator, is
 /// ≥ 0 (> 0 when `strict`) on `[a, b]` by its Bernstein coefficients.
 fn param_nonneg(sym: &Symbols, q: &RatFunc, (a, b): (&BigRational, &BigRational), strict: bool) -> Result<bool> {
+    let Some(c) = signed_coeffs(sym, q)? else {
+        return Ok(false);
+    };
+    Ok(matches!(bernstein_sign(&c, a, b, strict)?, Sign::Holds(_)))
+}
+
+/// The power coefficients of `q` (constant denominator) in the continuous parameter, the
+/// denominator's sign folded in; `None` when an integer symbol occurs.
+fn signed_coeffs(sym: &Symbols, q: &RatFunc) -> Result<Option<Vec<BigRational>>> {
     let d = q
         .den
         .as_constant()
         .ok_or_else(|| Error::Domain("a polynomial was expected".into()))?;
     let Some(mut c) = coeffs_last(sym, &q.num) else {
-        return Ok(false);
+        return Ok(None);
     };
-    if d.is_negative() {
-        for x in &mut c {
-            *x = -x.clone();
-        }
+    let d_inv = BigRational::from_integer(1.into()) / d;
+    for x in &mut c {
+        *x = x.clone() * &d_inv;
     }
-    Ok(matches!(bernstein_sign(&c, a, b, strict)?, Sign::Holds(_)))
+    Ok(Some(c))
 }
 
-/// Whether every factor of the live term `t` is ≥ 0 on the piece `d` and `[a, b]` (`None`),
-/// else the reason.
-fn term_nonneg(sym: &Symbols, t: &Term, d: &Domain, ab: (&BigRational, &BigRational)) -> Result<Option<String>> {
+/// The Bernstein coefficients of `q` on the whole of `[a, b]` in the degree of its numerator
+/// (what a certificate records of a factor shown ≥ 0 by them; empty when they cannot be
+/// written).
+fn whole_interval(sym: &Symbols, q: &RatFunc, (a, b): (&BigRational, &BigRational)) -> Vec<BigRational> {
+    let Ok(Some(mut c)) = signed_coeffs(sym, q) else {
+        return Vec::new();
+    };
+    while c.len() > 1 && c.last().is_some_and(Zero::is_zero) {
+        c.pop();
+    }
+    power_to_bernstein(&reparametrize(&c, a, b)).unwrap_or_default()
+}
+
+/// Every factor of the live term `t` shown ≥ 0 on the piece `d` and `[a, b]`, each with its
+/// reason (`Ok`), else the reason one is not.
+fn term_nonneg(
+    sym: &Symbols,
+    t: &Term,
+    d: &Domain,
+    ab: (&BigRational, &BigRational),
+) -> Result<std::result::Result<LiveTerm, String>> {
     let zero = BigRational::zero();
-    let coef_ok = if sym.poly_has_ints(&t.coef.num) || sym.poly_has_ints(&t.coef.den) {
+    let coef_why = if sym.poly_has_ints(&t.coef.num) || sym.poly_has_ints(&t.coef.den) {
         // An affine coefficient in the integers (n, i + 1, …) shown ≥ 0 on the piece, or a
         // polynomial with coefficients ≥ 0 in variables ≥ 0 (n t, with n ≥ 0, t ∈ [0, 1]).
         let affine = sym.rf_to_aff(&t.coef).is_some_and(|a| d.implies_ge(&a));
@@ -191,29 +218,64 @@ fn term_nonneg(sym: &Symbols, t: &Term, d: &Domain, ab: (&BigRational, &BigRatio
                 };
             }
         }
-        affine || monomials
+        if affine {
+            Some(Why::AffineOnPiece)
+        } else {
+            monomials.then_some(Why::PositiveMonomials)
+        }
     } else {
-        t.coef.den.as_constant().is_some() && param_nonneg(sym, &t.coef, ab, false)?
+        (t.coef.den.as_constant().is_some() && param_nonneg(sym, &t.coef, ab, false)?).then_some(Why::Bernstein)
     };
-    if !coef_ok {
-        return Ok(Some(format!("the coefficient of {} is not shown ≥ 0", t.show())));
-    }
+    let Some(why) = coef_why else {
+        return Ok(Err(format!("the coefficient of {} is not shown ≥ 0", t.show())));
+    };
+    let coefficient = Factor {
+        factor: t.coef.to_string(),
+        exponent: None,
+        why,
+        bernstein: if why == Why::Bernstein {
+            whole_interval(sym, &t.coef, ab)
+        } else {
+            Vec::new()
+        },
+    };
+    let mut powers = Vec::with_capacity(t.pows.len());
     for (base, e) in &t.pows {
-        let ok = match base {
-            Base::Const(c) => c > &zero,
+        let (why, bernstein) = match base {
+            Base::Const(c) => ((c > &zero).then_some(Why::PositiveConstant), Vec::new()),
             Base::Poly(q) => {
                 let q = RatFunc::poly(q.clone());
-                param_nonneg(sym, &q, ab, true)? || (d.implies_ge(e) && param_nonneg(sym, &q, ab, false)?)
+                let why = if param_nonneg(sym, &q, ab, true)? {
+                    Some(Why::BernsteinPositive)
+                } else if d.implies_ge(e) && param_nonneg(sym, &q, ab, false)? {
+                    Some(Why::ExponentNonneg)
+                } else {
+                    None
+                };
+                (why, whole_interval(sym, &q, ab))
             }
         };
-        if !ok {
-            return Ok(Some(format!(
-                "the factor {base}^({e}) of {} is not shown ≥ 0",
-                t.show()
-            )));
-        }
+        let Some(why) = why else {
+            return Ok(Err(format!("the factor {base}^({e}) of {} is not shown ≥ 0", t.show())));
+        };
+        powers.push(Factor {
+            factor: base.to_string(),
+            exponent: Some(e.to_string()),
+            why,
+            bernstein,
+        });
     }
-    Ok(None)
+    let factorials = t
+        .facts
+        .iter()
+        .map(|(a, e)| if *e > 0 { format!("({a})!") } else { format!("1/({a})!") })
+        .collect();
+    Ok(Ok(LiveTerm {
+        term: t.show(),
+        coefficient,
+        factorials,
+        powers,
+    }))
 }
 
 /// `Σ lin ≥ 0` at every integer point of `dom` and every value of the one continuous parameter
@@ -222,25 +284,33 @@ fn term_nonneg(sym: &Symbols, t: &Term, d: &Domain, ab: (&BigRational, &BigRatio
 /// with positive coefficients in variables ≥ 0, or a polynomial in the parameter with Bernstein
 /// coefficients ≥ 0 on `[a, b]`), factorials (of arguments ≥ 0 on a piece), powers of positive
 /// constants, and powers with exponent ≥ 0 of polynomials ≥ 0 on `[a, b]` (any exponent of one
-/// > 0 there). The obligation and the number of pieces; the steps go to `log`.
+/// > 0 there). The obligation, the number of pieces and each piece's live terms with the
+/// reason each factor is ≥ 0 (what a certificate records); the steps go to `log`.
 pub fn check_nonneg_pieces(
     sym: &Symbols,
     lin: &[Term],
     dom: &Domain,
     (a, b): (&BigRational, &BigRational),
     log: &mut Vec<Step>,
-) -> Result<(Discharged, usize)> {
+) -> Result<(Discharged, usize, Vec<Piece>)> {
     if sym.names.len() > sym.ints + 1 || a >= b {
         return Err(Error::Domain(
             "nonnegativity on pieces needs one continuous parameter on a nonempty interval".into(),
         ));
     }
+    let mut record = Vec::new();
     let mut check = |live: &[&Term], d: &Domain, place: &str, log: &mut Vec<Step>| -> Result<Option<String>> {
+        let mut terms = Vec::with_capacity(live.len());
         for t in live {
-            if let Some(why) = term_nonneg(sym, t, d, (a, b))? {
-                return Ok(Some(why));
+            match term_nonneg(sym, t, d, (a, b))? {
+                Ok(term) => terms.push(term),
+                Err(why) => return Ok(Some(why)),
             }
         }
+        record.push(Piece {
+            region: place.to_string(),
+            terms,
+        });
         log.push(Step::text(format!(
             "on {place}: {} live terms, each a product of factors ≥ 0",
             live.len()
@@ -248,7 +318,7 @@ pub fn check_nonneg_pieces(
         Ok(None)
     };
     match prove_pieces(sym, lin, dom, log, &mut check)? {
-        ZeroOutcome::Zero(pieces) => Ok((Discharged::new(Method::Pieces), pieces)),
+        ZeroOutcome::Zero(pieces) => Ok((Discharged::new(Method::Pieces), pieces, record)),
         ZeroOutcome::NonZero { region, residue } => Err(Error::Domain(format!(
             "cannot show the inequality on {region}: {residue} (a product-of-nonnegative-factors argument only)"
         ))),

@@ -98,6 +98,9 @@ pub enum Data {
     Expanded(Vec<super::expand::Expansion>),
     /// A for-every proof on the pieces of a domain, by the goal it was built from.
     Symbolic(Box<Symbolic>),
+    /// A for-every inequality on the pieces of a domain: its goal and each live term's
+    /// nonnegativity obligation.
+    Nonneg(Box<super::nonneg::Nonneg>),
 }
 
 /// The goal of a for-every proof as its translation into hypergeometric terms read it

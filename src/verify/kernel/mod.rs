@@ -26,6 +26,7 @@ pub(crate) mod eval;
 pub(crate) mod expand;
 pub(crate) mod expr;
 pub(crate) mod hyper;
+pub(crate) mod nonneg;
 pub(crate) mod pieces;
 pub(crate) mod poly;
 pub(crate) mod powers;
@@ -137,6 +138,15 @@ impl Proof {
     pub fn with_goal(mut self, goal: certificate::Symbolic) -> Proof {
         if self.method.is_for_every() {
             self.data = certificate::Data::Symbolic(Box::new(goal));
+        }
+        self
+    }
+
+    /// The same proof with the for-every inequality's goal and the obligations its pieces
+    /// discharged, as its data (a proof by [`Method::Pieces`] only).
+    pub fn with_nonneg(mut self, record: nonneg::Nonneg) -> Proof {
+        if self.method == Method::Pieces {
+            self.data = certificate::Data::Nonneg(Box::new(record));
         }
         self
     }
