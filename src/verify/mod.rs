@@ -435,6 +435,32 @@ pub fn worked_case_lines(files: &[claims::ClaimFile], id: &str) -> Result<Vec<St
     )))
 }
 
+/// `cited` and the outcomes of the lemmas `o`'s certificate cites that `cited` lacks, and
+/// theirs: a theorem's certificate may cite lemmas its claim does not `use` (the convex hull,
+/// the affine invariance), decided here as [`explained`] decides a claim's own.
+fn with_certificate_lemmas(
+    files: &[claims::ClaimFile],
+    o: &ClaimOutcome,
+    mut cited: Vec<ClaimOutcome>,
+) -> Result<Vec<ClaimOutcome>> {
+    let mut wanted = certify::cited_lemmas(&certify::certificate(o));
+    while let Some(id) = wanted.pop() {
+        if id == o.id || cited.iter().any(|c| c.id == id) {
+            continue;
+        }
+        for f in files {
+            for c in f.claim.iter().filter(|c| c.id == id) {
+                let (checked, range_bound, more) = explained(files, c).map_err(|e| in_claim(f, &id, e))?;
+                let lemma = outcome(f, c, checked, range_bound);
+                wanted.extend(certify::cited_lemmas(&certify::certificate(&lemma)));
+                cited.extend(more.into_iter().filter(|m| !cited.iter().any(|c| c.id == m.id)).collect::<Vec<_>>());
+                cited.push(lemma);
+            }
+        }
+    }
+    Ok(cited)
+}
+
 /// The proof of claim `id`, searched in claim files already loaded; see [`explain`].
 pub fn explain_files(files: &[claims::ClaimFile], id: &str, style: ExplainStyle) -> Result<String> {
     for f in files {
@@ -446,7 +472,9 @@ pub fn explain_files(files: &[claims::ClaimFile], id: &str, style: ExplainStyle)
                 return Ok(text);
             }
             let brief = style == ExplainStyle::Short;
-            let certificate = readable_among(&outcome(f, c, checked, range_bound), &cited).to_text(brief);
+            let o = outcome(f, c, checked, range_bound);
+            let cited = with_certificate_lemmas(files, &o, cited)?;
+            let certificate = readable_among(&o, &cited).to_text(brief);
             return Ok(format!("{}\n\n{certificate}", text.trim_end()));
         }
     }
