@@ -12,6 +12,7 @@ use super::parse::parse;
 use super::report::{ClaimOutcome, Report};
 use crate::error::{Error, Result};
 use num_rational::BigRational;
+use num_traits::ToPrimitive;
 use serde_json::{json, Map, Value as Json};
 use std::collections::BTreeMap;
 use std::io::Write;
@@ -124,7 +125,22 @@ fn ints_json(ints: &BTreeMap<String, i64>) -> Json {
 }
 
 fn strings(v: &[BigRational]) -> Vec<String> {
-    v.iter().map(ToString::to_string).collect()
+    v.iter().map(rational_text).collect()
+}
+
+/// `r.to_string()`, formatted from machine words when numerator and denominator fit (most
+/// sampled values do; num-bigint's decimal conversion is the slow part of writing them).
+fn rational_text(r: &BigRational) -> String {
+    match (r.numer().to_i64(), r.denom().to_i64()) {
+        (Some(p), Some(1)) => p.to_string(),
+        (Some(p), Some(q)) => format!("{p}/{q}"),
+        _ => r.to_string(),
+    }
+}
+
+/// A list of strings as JSON, built directly (`json!` would serialize it through serde).
+fn string_array(v: &[String]) -> Json {
+    Json::Array(v.iter().map(|s| Json::String(s.clone())).collect())
 }
 
 /// The goal of equalities, or why it cannot be re-checked alone.
@@ -171,15 +187,23 @@ fn sampling_json(eqs: &[Equality]) -> Json {
                            "rhs_degree": p.rhs_degree, "points": strings(&p.points)})
                 })
                 .collect();
+            // Built as maps directly: these rows are most of a sampled file's bytes.
             let values: Vec<Json> = eq
                 .rows
                 .iter()
                 .map(|r| {
-                    let mut row = json!({"at": strings(&r.at), "lhs": r.value, "rhs": r.value});
+                    let value = string_array(&r.value);
+                    let mut row = Map::new();
+                    row.insert(
+                        "at".into(),
+                        Json::Array(r.at.iter().map(|x| Json::String(rational_text(x))).collect()),
+                    );
+                    row.insert("lhs".into(), value.clone());
+                    row.insert("rhs".into(), value);
                     if !eq.control_points.is_empty() {
-                        row["polygon"] = json!(r.basis);
+                        row.insert("polygon".into(), Json::from(r.basis));
                     }
-                    row
+                    Json::Object(row)
                 })
                 .collect();
             json!({"params": params, "values": values})
@@ -382,6 +406,39 @@ fn array<'a>(v: &'a Json, key: &str, at: &str) -> Res<&'a Vec<Json>> {
 
 /// An exact rational written `p` or `p/q`, reduced, q > 1.
 fn rational(text: &str) -> Res<BigRational> {
+    if let Some(r) = small_rational_text(text) {
+        return Ok(r);
+    }
+    rational_big(text)
+}
+
+/// `rational(text)` when `text` is `p` or `p/q` in lowest terms with both in an `i64` (the
+/// common case), without num-bigint's parsing and printing back; `None` sends every other
+/// text (bigger numbers, and every text not so written) to [`rational_big`], which decides.
+fn small_rational_text(text: &str) -> Option<BigRational> {
+    // Canonical decimal of an i64: digits with no leading zero, "-" only before a nonzero.
+    fn int(s: &str, signed: bool) -> Option<i64> {
+        let digits = if signed { s.strip_prefix('-').unwrap_or(s) } else { s };
+        let ok = !digits.is_empty()
+            && digits.len() <= 18
+            && digits.bytes().all(|b| b.is_ascii_digit())
+            && (digits == "0" || !digits.starts_with('0'))
+            && !(s.starts_with('-') && digits == "0");
+        if !ok {
+            return None;
+        }
+        s.parse().ok()
+    }
+    match text.split_once('/') {
+        None => int(text, true).map(|p| BigRational::from_integer(p.into())),
+        Some((p, q)) => {
+            let (p, q) = (int(p, true)?, int(q, false)?);
+            (q > 1 && num_integer::Integer::gcd(&p, &q) == 1).then(|| BigRational::new_raw(p.into(), q.into()))
+        }
+    }
+}
+
+fn rational_big(text: &str) -> Res<BigRational> {
     let r = BigRational::from_str(text).map_err(|_| format!("'{text}' is not an exact rational p/q"))?;
     if r.to_string() != text {
         return Err(format!("'{text}' is not written in lowest terms as p/q"));
