@@ -206,10 +206,16 @@ fn sampling_json(eqs: &[Equality]) -> Json {
                     Json::Object(row)
                 })
                 .collect();
-            json!({"params": params, "values": values})
+            // Moved in, not through `json!` (which would serialize the rows into a copy).
+            let mut e = Map::new();
+            e.insert("params".into(), Json::Array(params));
+            e.insert("values".into(), Json::Array(values));
+            Json::Object(e)
         })
         .collect();
-    json!({ "equalities": equalities })
+    let mut out = Map::new();
+    out.insert("equalities".into(), Json::Array(equalities));
+    Json::Object(out)
 }
 
 fn refutation_json(r: &Refutation) -> Json {
