@@ -102,15 +102,18 @@ fn pow(x: &BigRational, k: usize) -> BigRational {
     (0..k).fold(BigRational::one(), |acc, _| acc * x)
 }
 
-/// The tensor Bernstein coefficients of the values on a grid (the last axis fastest).
+/// The tensor Bernstein coefficients of the values on a grid (the last axis fastest),
+/// computed on `SmallRational` (the same exact values; most entries fit machine words).
 fn coefficients<M: AsRef<[Vec<BigRational>]>>(
     values: &[BigRational],
     degrees: &[usize],
     inverses: &[M],
 ) -> Vec<BigRational> {
-    let mut c = values.to_vec();
+    use crate::scalar::Ring as _;
+    let mut c: Vec<Q> = values.iter().map(Q::from).collect();
     let sizes: Vec<usize> = degrees.iter().map(|d| d + 1).collect();
     for (axis, inv) in inverses.iter().map(AsRef::as_ref).enumerate() {
+        let inv: Vec<Vec<Q>> = inv.iter().map(|row| row.iter().map(Q::from).collect()).collect();
         let stride: usize = sizes[axis + 1..].iter().product();
         let len = sizes[axis];
         let mut next = c.clone();
@@ -119,13 +122,13 @@ fn coefficients<M: AsRef<[Vec<BigRational>]>>(
                 next[start + i * stride] = row
                     .iter()
                     .enumerate()
-                    .map(|(j, m)| m * &c[start + j * stride])
-                    .fold(BigRational::zero(), |a, b| a + b);
+                    .map(|(j, m)| m.mul_ref(&c[start + j * stride]))
+                    .fold(Q::from(0), |a, b| a.add_ref(&b));
             }
         }
         c = next;
     }
-    c
+    c.iter().map(Q::to_big).collect()
 }
 
 /// Which library operation a table of coefficients is of: everything `value` depends on in
