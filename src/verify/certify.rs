@@ -16,6 +16,7 @@ use crate::error::{Error, Result};
 use crate::exact::SmallRational;
 use crate::quadratic::QuadraticIrrational;
 use num_rational::BigRational;
+use num_traits::ToPrimitive;
 use serde_json::{json, Map, Value as Json};
 use std::collections::BTreeMap;
 use std::io::Write;
@@ -137,7 +138,17 @@ fn ints_json(ints: &BTreeMap<String, i64>) -> Json {
 }
 
 fn strings(v: &[BigRational]) -> Vec<String> {
-    v.iter().map(ToString::to_string).collect()
+    v.iter().map(rational_text).collect()
+}
+
+/// `r.to_string()`, formatted from machine words when numerator and denominator fit (most
+/// sampled values do; num-bigint's decimal conversion is the slow part of writing them).
+fn rational_text(r: &BigRational) -> String {
+    match (r.numer().to_i64(), r.denom().to_i64()) {
+        (Some(p), Some(1)) => p.to_string(),
+        (Some(p), Some(q)) => format!("{p}/{q}"),
+        _ => r.to_string(),
+    }
 }
 
 /// The goal of equalities and its field's radicand (`None`: the rationals), or why it
@@ -186,26 +197,40 @@ fn sampling_json(eqs: &[Equality], radicand: Option<i64>) -> std::result::Result
                            "rhs_degree": p.rhs_degree, "points": strings(&p.points)})
                 })
                 .collect();
+            // Built as maps directly: these rows are most of a sampled file's bytes.
             let values = eq
                 .rows
                 .iter()
                 .map(|r| {
-                    let value = r
-                        .value
-                        .iter()
-                        .map(|v| sqrt::value_json(v, radicand))
-                        .collect::<std::result::Result<Vec<Json>, String>>()?;
-                    let mut row = json!({"at": strings(&r.at), "lhs": value, "rhs": value});
+                    let value = Json::Array(
+                        r.value
+                            .iter()
+                            .map(|v| sqrt::value_json(v, radicand))
+                            .collect::<std::result::Result<Vec<Json>, String>>()?,
+                    );
+                    let mut row = Map::new();
+                    row.insert(
+                        "at".into(),
+                        Json::Array(r.at.iter().map(|x| Json::String(rational_text(x))).collect()),
+                    );
+                    row.insert("lhs".into(), value.clone());
+                    row.insert("rhs".into(), value);
                     if !eq.control_points.is_empty() {
-                        row["polygon"] = json!(r.basis);
+                        row.insert("polygon".into(), Json::from(r.basis));
                     }
-                    Ok(row)
+                    Ok(Json::Object(row))
                 })
                 .collect::<std::result::Result<Vec<Json>, String>>()?;
-            Ok(json!({"params": params, "values": values}))
+            // Moved in, not through `json!` (which would serialize the rows into a copy).
+            let mut e = Map::new();
+            e.insert("params".into(), Json::Array(params));
+            e.insert("values".into(), Json::Array(values));
+            Ok(Json::Object(e))
         })
         .collect::<std::result::Result<Vec<Json>, String>>()?;
-    Ok(json!({ "equalities": equalities }))
+    let mut out = Map::new();
+    out.insert("equalities".into(), Json::Array(equalities));
+    Ok(Json::Object(out))
 }
 
 fn refutation_json(r: &Refutation) -> Json {
@@ -407,6 +432,39 @@ fn array<'a>(v: &'a Json, key: &str, at: &str) -> Res<&'a Vec<Json>> {
 
 /// An exact rational written `p` or `p/q`, reduced, q > 1.
 fn rational(text: &str) -> Res<BigRational> {
+    if let Some(r) = small_rational_text(text) {
+        return Ok(r);
+    }
+    rational_big(text)
+}
+
+/// `rational(text)` when `text` is `p` or `p/q` in lowest terms with both in an `i64` (the
+/// common case), without num-bigint's parsing and printing back; `None` sends every other
+/// text (bigger numbers, and every text not so written) to [`rational_big`], which decides.
+fn small_rational_text(text: &str) -> Option<BigRational> {
+    // Canonical decimal of an i64: digits with no leading zero, "-" only before a nonzero.
+    fn int(s: &str, signed: bool) -> Option<i64> {
+        let digits = if signed { s.strip_prefix('-').unwrap_or(s) } else { s };
+        let ok = !digits.is_empty()
+            && digits.len() <= 18
+            && digits.bytes().all(|b| b.is_ascii_digit())
+            && (digits == "0" || !digits.starts_with('0'))
+            && !(s.starts_with('-') && digits == "0");
+        if !ok {
+            return None;
+        }
+        s.parse().ok()
+    }
+    match text.split_once('/') {
+        None => int(text, true).map(|p| BigRational::from_integer(p.into())),
+        Some((p, q)) => {
+            let (p, q) = (int(p, true)?, int(q, false)?);
+            (q > 1 && num_integer::Integer::gcd(&p, &q) == 1).then(|| BigRational::new_raw(p.into(), q.into()))
+        }
+    }
+}
+
+fn rational_big(text: &str) -> Res<BigRational> {
     let r = BigRational::from_str(text).map_err(|_| format!("'{text}' is not an exact rational p/q"))?;
     if r.to_string() != text {
         return Err(format!("'{text}' is not written in lowest terms as p/q"));
@@ -582,7 +640,9 @@ fn recheck_proof(cert: &Json, goal: &Goal, method: &str) -> Res<String> {
     // re-check does not pay a big gcd per operation.
     let (proof, points) = match goal.radicand {
         Some(_) => recheck_in(goal, read, Some)?,
-        None => recheck_in(goal, read, |q: QuadraticIrrational| q.to_rational().map(SmallRational::from))?,
+        None => recheck_in(goal, read, |q: QuadraticIrrational| {
+            q.to_rational().map(SmallRational::from)
+        })?,
     };
     let derived = method_name(proof.method());
     if derived != method {

@@ -453,7 +453,11 @@ fn with_certificate_lemmas(
                 let (checked, range_bound, more) = explained(files, c).map_err(|e| in_claim(f, &id, e))?;
                 let lemma = outcome(f, c, checked, range_bound);
                 wanted.extend(certify::cited_lemmas(&certify::certificate(&lemma)));
-                cited.extend(more.into_iter().filter(|m| !cited.iter().any(|c| c.id == m.id)).collect::<Vec<_>>());
+                cited.extend(
+                    more.into_iter()
+                        .filter(|m| !cited.iter().any(|c| c.id == m.id))
+                        .collect::<Vec<_>>(),
+                );
                 cited.push(lemma);
             }
         }

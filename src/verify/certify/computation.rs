@@ -233,11 +233,13 @@ pub(super) fn recheck(cert: &Json, method: &str) -> Res<String> {
     let proof = check_computed(&holds, &trusted).ok_or("the kernel refuses the computation")?;
     let names: Vec<&str> = proof.rests_on().iter().map(|t| t.name()).collect();
     if !from_lemmas.is_empty() {
+        let others = match facts.len() - from_lemmas.len() {
+            0 => String::new(),
+            k => format!(", {k} other library computations run again"),
+        };
         return Ok(format!(
-            "{} facts from the cited lemmas' goals ({}), {} other library computations run again; rests on {}",
-            from_lemmas.len(),
+            "from the cited lemmas' goals: {}{others}; rests on {}",
             from_lemmas.join("; "),
-            facts.len() - from_lemmas.len(),
             names.join(", ")
         ));
     }

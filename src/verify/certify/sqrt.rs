@@ -75,8 +75,9 @@ pub(super) fn radicand<'e>(exprs: impl IntoIterator<Item = &'e Expr>) -> Res<Opt
 /// A value entry as the kernel printed it (exactly: a rational, or `a + b*sqrt(d)`) as a
 /// number of the goal's field `Q(√d)` (`radicand`; `None`: the rationals).
 pub(super) fn value_json(text: &str, radicand: Option<i64>) -> Res<Json> {
-    if let Ok(r) = rational(text) {
-        return Ok(json!(r.to_string()));
+    // `rational` accepts only a rational written as it prints (lowest terms): the text itself
+    if rational(text).is_ok() {
+        return Ok(Json::String(text.to_string()));
     }
     let q =
         QuadraticIrrational::parse(text).map_err(|e| format!("the value '{text}' is not a number a + b√d ({e})"))?;

@@ -12,8 +12,9 @@
 //! at d + 1 points); the certificate then states the identity about that polynomial.
 
 use super::super::methods::{NetMethod, PolygonMethod};
-use super::library::{affine, coord as first, pick, unit, unit_net};
+use super::library::{affine, unit, unit_net};
 use crate::curve::BezierCurve;
+use crate::exact::SmallRational;
 use crate::point::Point;
 use crate::surface::BezierSurface;
 use num_rational::BigRational;
@@ -101,15 +102,18 @@ fn pow(x: &BigRational, k: usize) -> BigRational {
     (0..k).fold(BigRational::one(), |acc, _| acc * x)
 }
 
-/// The tensor Bernstein coefficients of the values on a grid (the last axis fastest).
+/// The tensor Bernstein coefficients of the values on a grid (the last axis fastest),
+/// computed on `SmallRational` (the same exact values; most entries fit machine words).
 fn coefficients<M: AsRef<[Vec<BigRational>]>>(
     values: &[BigRational],
     degrees: &[usize],
     inverses: &[M],
 ) -> Vec<BigRational> {
-    let mut c = values.to_vec();
+    use crate::scalar::Ring as _;
+    let mut c: Vec<Q> = values.iter().map(Q::from).collect();
     let sizes: Vec<usize> = degrees.iter().map(|d| d + 1).collect();
     for (axis, inv) in inverses.iter().map(AsRef::as_ref).enumerate() {
+        let inv: Vec<Vec<Q>> = inv.iter().map(|row| row.iter().map(Q::from).collect()).collect();
         let stride: usize = sizes[axis + 1..].iter().product();
         let len = sizes[axis];
         let mut next = c.clone();
@@ -118,13 +122,13 @@ fn coefficients<M: AsRef<[Vec<BigRational>]>>(
                 next[start + i * stride] = row
                     .iter()
                     .enumerate()
-                    .map(|(j, m)| m * &c[start + j * stride])
-                    .fold(BigRational::zero(), |a, b| a + b);
+                    .map(|(j, m)| m.mul_ref(&c[start + j * stride]))
+                    .fold(Q::from(0), |a, b| a.add_ref(&b));
             }
         }
         c = next;
     }
-    c
+    c.iter().map(Q::to_big).collect()
 }
 
 /// Which library operation a table of coefficients is of: everything `value` depends on in
@@ -212,14 +216,47 @@ fn interpolated(
     Some(terms.into_iter().reduce(Expr::add).unwrap_or_else(|| Expr::int(0)))
 }
 
-fn curve(values: Vec<BigRational>) -> Option<BezierCurve<BigRational>> {
+/// The library runs on `SmallRational` here: the same exact values as on `BigRational`
+/// (machine words while they fit, `BigRational` beyond), so the same tables, at a fraction of
+/// num-bigint's cost (the unit polygons' values are small).
+type Q = SmallRational;
+
+fn curve(values: Vec<BigRational>) -> Option<BezierCurve<Q>> {
     BezierCurve::new(
         values
             .into_iter()
-            .map(|x| Point::new(vec![x]).ok())
+            .map(|x| Point::new(vec![Q::from(x)]).ok())
             .collect::<Option<Vec<_>>>()?,
     )
     .ok()
+}
+
+/// The one coordinate of a point, as a `BigRational`.
+fn first(p: &Point<Q>) -> BigRational {
+    p.coords()[0].to_big()
+}
+
+/// Control point `i` of a curve (0 when there is none), as [`super::library::pick`].
+fn pick(c: &BezierCurve<Q>, i: i64) -> BigRational {
+    usize::try_from(i)
+        .ok()
+        .and_then(|i| c.points().get(i))
+        .map_or_else(BigRational::zero, first)
+}
+
+/// [`unit_net`] on `SmallRational`.
+fn net_on(rows: usize, cols: usize, one: Option<usize>) -> Option<BezierSurface<Q>> {
+    let big = unit_net(rows, cols, one)?;
+    let net = big
+        .net()
+        .iter()
+        .map(|row| {
+            row.iter()
+                .map(|p| Point::new(vec![Q::from(&p.coords()[0])]).ok())
+                .collect::<Option<Vec<_>>>()
+        })
+        .collect::<Option<Vec<_>>>()?;
+    BezierSurface::new(net).ok()
 }
 
 /// A polygon operation at a symbolic parameter, written out (`None`: another operation).
@@ -234,12 +271,12 @@ pub(super) fn polygon(m: PolygonMethod, points: &[Expr], args: &[Expr], r: Optio
             Key::Polygon(m, len, None),
             points,
             &[(n, args.get(1)?.clone())],
-            |b, at| Some(first(&on(b)?.eval_bernstein(&at[0]))),
+            |b, at| Some(first(&on(b)?.eval_bernstein(&Q::from(&at[0])))),
         ),
         PolygonMethod::Left | PolygonMethod::Right => {
             let left = m == PolygonMethod::Left;
             // The parts' degree, read off the library on the zero polygon, as `prove` does.
-            let deg = on(None)?.split_at(&BigRational::zero()).0.degree();
+            let deg = on(None)?.split_at(&Q::from(0)).0.degree();
             let axes = [(n, args.get(1)?.clone()), (deg, args.get(2)?.clone())];
             // The grid's last axis runs fastest: one split serves a whole row of `t` values.
             let last = RefCell::new(None);
@@ -247,11 +284,11 @@ pub(super) fn polygon(m: PolygonMethod, points: &[Expr], args: &[Expr], r: Optio
                 let mut last = last.borrow_mut();
                 let fresh = !matches!(&*last, Some((lb, lt, _)) if *lb == b && *lt == at[0]);
                 if fresh {
-                    let (l, r) = on(b)?.split_at(&at[0]);
+                    let (l, r) = on(b)?.split_at(&Q::from(&at[0]));
                     *last = Some((b, at[0].clone(), if left { l } else { r }));
                 }
                 let (_, _, part) = last.as_ref()?;
-                Some(first(&part.eval(&at[1])))
+                Some(first(&part.eval(&Q::from(&at[1]))))
             })
         }
         PolygonMethod::Leftp | PolygonMethod::Rightp => {
@@ -261,7 +298,7 @@ pub(super) fn polygon(m: PolygonMethod, points: &[Expr], args: &[Expr], r: Optio
                 points,
                 &[(n, args.get(1)?.clone())],
                 |b, at| {
-                    let (lc, rc) = on(b)?.split_at(&at[0]);
+                    let (lc, rc) = on(b)?.split_at(&Q::from(&at[0]));
                     Some(pick(if left { &lc } else { &rc }, r))
                 },
             )
@@ -271,18 +308,13 @@ pub(super) fn polygon(m: PolygonMethod, points: &[Expr], args: &[Expr], r: Optio
 }
 
 /// The basis net, the parameter and the iso-curve a row of the grid shares.
-type IsoRow = (
-    Option<usize>,
-    BigRational,
-    BezierSurface<BigRational>,
-    Option<BezierCurve<BigRational>>,
-);
+type IsoRow = (Option<usize>, BigRational, BezierSurface<Q>, Option<BezierCurve<Q>>);
 
 /// A net operation at symbolic parameters, written out (`None`: another operation).
 /// `points` the net's control points row by row (`rows × cols`).
 pub(super) fn net(m: NetMethod, points: &[Expr], (rows, cols): (usize, usize), args: &[Expr]) -> Option<Expr> {
     let (dm, dn) = (rows.checked_sub(1)?, cols.checked_sub(1)?);
-    let on = |b: Option<usize>| unit_net(rows, cols, b);
+    let on = |b: Option<usize>| net_on(rows, cols, b);
     let (x1, x2) = (args.get(1)?.clone(), args.get(2)?.clone());
     let axes = match m {
         NetMethod::Vfirst | NetMethod::Sbsum | NetMethod::Isou => [(dm, x1), (dn, x2)],
@@ -296,18 +328,20 @@ pub(super) fn net(m: NetMethod, points: &[Expr], (rows, cols): (usize, usize), a
         let fresh = !matches!(&*last, Some((lb, lx, ..)) if *lb == b && *lx == at[0]);
         if fresh {
             let s = on(b)?;
+            let x = Q::from(&at[0]);
             let iso = match m {
-                NetMethod::Isou => Some(s.iso_u(&at[0])),
-                NetMethod::Isov => Some(s.iso_v(&at[0])),
+                NetMethod::Isou => Some(s.iso_u(&x)),
+                NetMethod::Isov => Some(s.iso_v(&x)),
                 _ => None,
             };
             *last = Some((b, at[0].clone(), s, iso));
         }
         let (_, _, s, iso) = last.as_ref()?;
+        let (x, y) = (Q::from(&at[0]), Q::from(&at[1]));
         Some(first(&match (m, iso) {
-            (NetMethod::Vfirst, _) => s.eval_v_first(&at[0], &at[1]),
-            (NetMethod::Sbsum, _) => s.eval_bernstein(&at[0], &at[1]),
-            (_, Some(c)) => c.eval(&at[1]),
+            (NetMethod::Vfirst, _) => s.eval_v_first(&x, &y),
+            (NetMethod::Sbsum, _) => s.eval_bernstein(&x, &y),
+            (_, Some(c)) => c.eval(&y),
             _ => return None,
         }))
     })
