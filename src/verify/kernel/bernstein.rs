@@ -283,8 +283,8 @@ fn term_nonneg(
 /// ≥ 0 — a coefficient shown ≥ 0 (affine in the integers and ≥ 0 on the piece, a polynomial
 /// with positive coefficients in variables ≥ 0, or a polynomial in the parameter with Bernstein
 /// coefficients ≥ 0 on `[a, b]`), factorials (of arguments ≥ 0 on a piece), powers of positive
-/// constants, and powers with exponent ≥ 0 of polynomials ≥ 0 on `[a, b]` (any exponent of one
-/// > 0 there). The obligation, the number of pieces and each piece's live terms with the
+/// constants, and powers with exponent ≥ 0 of polynomials ≥ 0 on `[a, b]` (any exponent of a
+/// positive one there). The obligation, the number of pieces and each piece's live terms with the
 /// reason each factor is ≥ 0 (what a certificate records); the steps go to `log`.
 pub fn check_nonneg_pieces(
     sym: &Symbols,
