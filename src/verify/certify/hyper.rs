@@ -102,11 +102,8 @@ pub(super) fn lemmas(cert: &Json) -> Res<Vec<(String, &Json)>> {
     Ok(out)
 }
 
-/// Reads a written goal (its statement) back; `whole` names it in errors.
-pub(super) fn read_goal(g: &Json, whole: &str) -> Res<Symbolic> {
-    if string(g, "relation", whole)? != "=" {
-        return Err(format!("{whole}.relation: only '=' is defined"));
-    }
+/// A written goal's symbols, the real ones and the integer ones in order (each declared once).
+pub(super) fn read_symbols(g: &Json, whole: &str) -> Res<(Vec<String>, Vec<String>)> {
     let (mut reals, mut ints) = (Vec::new(), Vec::new());
     for (i, s) in array(g, "symbols", whole)?.iter().enumerate() {
         let at = format!("{whole}.symbols[{i}]");
@@ -120,6 +117,12 @@ pub(super) fn read_goal(g: &Json, whole: &str) -> Res<Symbolic> {
             other => return Err(format!("{at}.sort: '{other}' is not real or integer")),
         }
     }
+    Ok((reals, ints))
+}
+
+/// A written goal's integer ranges, one per integer symbol in `ints`' order, at least one open:
+/// each `(name, from, to)` (`to: None` for an open range).
+pub(super) fn read_for_all(g: &Json, whole: &str, ints: &[String]) -> Res<Vec<(String, String, Option<String>)>> {
     let mut for_all = Vec::new();
     for (i, r) in array(g, "for_all", whole)?.iter().enumerate() {
         let at = format!("{whole}.for_all[{i}]");
@@ -138,6 +141,16 @@ pub(super) fn read_goal(g: &Json, whole: &str) -> Res<Symbolic> {
             "{whole}.for_all: one range per integer symbol, at least one open (to: null)"
         ));
     }
+    Ok(for_all)
+}
+
+/// Reads a written goal (its statement) back; `whole` names it in errors.
+pub(super) fn read_goal(g: &Json, whole: &str) -> Res<Symbolic> {
+    if string(g, "relation", whole)? != "=" {
+        return Err(format!("{whole}.relation: only '=' is defined"));
+    }
+    let (reals, ints) = read_symbols(g, whole)?;
+    let for_all = read_for_all(g, whole, &ints)?;
     let polygon = match object(g, "polygon", whole)? {
         Some((name, d)) => Some((
             name,

@@ -88,19 +88,7 @@ pub(super) fn read_goal(g: &Json, whole: &str) -> Res<NonnegGoal> {
         "<=" => true,
         other => return Err(format!("{whole}.relation: '{other}' is not >= or <=")),
     };
-    let (mut reals, mut ints) = (Vec::new(), Vec::new());
-    for (i, s) in array(g, "symbols", whole)?.iter().enumerate() {
-        let at = format!("{whole}.symbols[{i}]");
-        let name = string(s, "name", &at)?.to_string();
-        if reals.contains(&name) || ints.contains(&name) {
-            return Err(format!("{at}: '{name}' is declared twice"));
-        }
-        match string(s, "sort", &at)? {
-            "real" => reals.push(name),
-            "integer" => ints.push(name),
-            other => return Err(format!("{at}.sort: '{other}' is not real or integer")),
-        }
-    }
+    let (reals, ints) = super::hyper::read_symbols(g, whole)?;
     let iv = field(g, "interval", whole)?;
     let at = format!("{whole}.interval");
     let real = string(iv, "name", &at)?.to_string();
@@ -112,24 +100,7 @@ pub(super) fn read_goal(g: &Json, whole: &str) -> Res<NonnegGoal> {
     if a >= b {
         return Err(format!("{at}: [{a}, {b}] is empty or a point"));
     }
-    let mut for_all = Vec::new();
-    for (i, r) in array(g, "for_all", whole)?.iter().enumerate() {
-        let at = format!("{whole}.for_all[{i}]");
-        let name = string(r, "name", &at)?.to_string();
-        if ints.get(i) != Some(&name) {
-            return Err(format!("{at}: '{name}' is not the integer symbol {i} of the goal"));
-        }
-        let to = match field(r, "to", &at)? {
-            Json::Null => None,
-            _ => Some(string(r, "to", &at)?.to_string()),
-        };
-        for_all.push((name, string(r, "from", &at)?.to_string(), to));
-    }
-    if for_all.len() != ints.len() || !for_all.iter().any(|r| r.2.is_none()) {
-        return Err(format!(
-            "{whole}.for_all: one range per integer symbol, at least one open (to: null)"
-        ));
-    }
+    let for_all = super::hyper::read_for_all(g, whole, &ints)?;
     let sides = field(g, "inequality", whole)?;
     let at = format!("{whole}.inequality");
     let (l, r) = (
