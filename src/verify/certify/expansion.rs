@@ -8,7 +8,8 @@
 //! expansion of that side's entry as a rational function (the cross products agree); the
 //! lists are there for other checkers and for readers.
 
-use super::{array, field, not_self_contained, rational, Goal, Res};
+use super::sampled::Goal;
+use super::{array, field, not_self_contained, rational, Res};
 use crate::verify::expansion::{in_coordinates, variables};
 use crate::verify::kernel::check_expanded;
 use crate::verify::kernel::expand::{expand, Expansion, Terms};
