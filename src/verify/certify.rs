@@ -24,11 +24,14 @@ mod computation;
 mod convergence;
 mod expansion;
 mod hyper;
+mod layout;
 mod links;
 mod nonneg;
 mod polygon;
+mod rows;
 mod sampled;
 
+use rows::Sampling;
 use sampled::{read_goal, recheck_fails, recheck_proof};
 mod sqrt;
 
@@ -107,6 +110,14 @@ fn self_contained(text: &str, known: &[String], points: &[&String]) -> std::resu
     if e.to_string() != text {
         return Err(format!("'{text}' does not print back to itself"));
     }
+    contained(&e, known, points)?;
+    Ok(e)
+}
+
+/// Why an expression cannot be re-checked alone (a claim object, a control point not among
+/// `points`, a name that is not a symbol, a `sqrt` that is not of one square-free integer
+/// constant). Its printed text parses back to it (`tests` of the printer: `expr_tests.rs`).
+pub(super) fn contained(e: &Expr, known: &[String], points: &[&String]) -> std::result::Result<(), String> {
     let mut bad: Option<String> = None;
     e.visit(&mut |x| match x {
         Expr::Index(name, _) if !points.contains(&name) => {
@@ -125,8 +136,8 @@ fn self_contained(text: &str, known: &[String], points: &[&String]) -> std::resu
     if let Some(why) = bad {
         return Err(why);
     }
-    sqrt::radicand([&e])?;
-    Ok(e)
+    sqrt::radicand([e])?;
+    Ok(())
 }
 
 fn rational_entries(values: &[String]) -> bool {
@@ -156,22 +167,21 @@ fn rational_text(r: &BigRational) -> String {
 fn goal(eqs: &[&Equality]) -> std::result::Result<(Json, Option<i64>), String> {
     let syms = symbols(eqs)?;
     let known: Vec<String> = syms.keys().cloned().collect();
-    let mut sides = Vec::new();
     for eq in eqs {
         if eq.polygons != eq.control_points.len() + 1 {
             return Err("the basis polygons are not the zero and the unit ones".into());
         }
         let points: Vec<&String> = eq.control_points.iter().map(|(n, _)| n).collect();
         for side in [&eq.lhs, &eq.rhs] {
-            sides.push(self_contained(side, &known, &points).map_err(|why| format!("the goal uses {why}"))?);
+            contained(side, &known, &points).map_err(|why| format!("the goal uses {why}"))?;
         }
     }
-    let radicand = sqrt::radicand(&sides)?;
+    let radicand = sqrt::radicand(eqs.iter().flat_map(|eq| [&eq.lhs, &eq.rhs]))?;
     let symbols: Vec<Json> = syms.iter().map(|(n, s)| json!({"name": n, "sort": s})).collect();
     let equalities: Vec<Json> = eqs
         .iter()
         .map(|eq| {
-            let mut e = json!({"ints": ints_json(&eq.ints), "lhs": eq.lhs, "rhs": eq.rhs});
+            let mut e = json!({"ints": ints_json(&eq.ints), "lhs": eq.lhs.to_string(), "rhs": eq.rhs.to_string()});
             if !eq.control_points.is_empty() {
                 e["control_points"] = polygon::points_json(&eq.control_points);
             }
@@ -182,55 +192,6 @@ fn goal(eqs: &[&Equality]) -> std::result::Result<(Json, Option<i64>), String> {
         json!({"relation": "=", "symbols": symbols, "equalities": equalities}),
         radicand,
     ))
-}
-
-/// The `sampling` data; the values are numbers of the goal's field (`radicand`).
-fn sampling_json(eqs: &[Equality], radicand: Option<i64>) -> std::result::Result<Json, String> {
-    let equalities: Vec<Json> = eqs
-        .iter()
-        .map(|eq| {
-            let params: Vec<Json> = eq
-                .params
-                .iter()
-                .map(|p| {
-                    json!({"name": p.name, "degree": p.degree, "lhs_degree": p.lhs_degree,
-                           "rhs_degree": p.rhs_degree, "points": strings(&p.points)})
-                })
-                .collect();
-            // Built as maps directly: these rows are most of a sampled file's bytes.
-            let values = eq
-                .rows
-                .iter()
-                .map(|r| {
-                    let value = Json::Array(
-                        r.value
-                            .iter()
-                            .map(|v| sqrt::value_json(v, radicand))
-                            .collect::<std::result::Result<Vec<Json>, String>>()?,
-                    );
-                    let mut row = Map::new();
-                    row.insert(
-                        "at".into(),
-                        Json::Array(r.at.iter().map(|x| Json::String(rational_text(x))).collect()),
-                    );
-                    row.insert("lhs".into(), value.clone());
-                    row.insert("rhs".into(), value);
-                    if !eq.control_points.is_empty() {
-                        row.insert("polygon".into(), Json::from(r.basis));
-                    }
-                    Ok(Json::Object(row))
-                })
-                .collect::<std::result::Result<Vec<Json>, String>>()?;
-            // Moved in, not through `json!` (which would serialize the rows into a copy).
-            let mut e = Map::new();
-            e.insert("params".into(), Json::Array(params));
-            e.insert("values".into(), Json::Array(values));
-            Ok(Json::Object(e))
-        })
-        .collect::<std::result::Result<Vec<Json>, String>>()?;
-    let mut out = Map::new();
-    out.insert("equalities".into(), Json::Array(equalities));
-    Ok(Json::Object(out))
 }
 
 fn refutation_json(r: &Refutation) -> Json {
@@ -247,11 +208,14 @@ fn refutation_json(r: &Refutation) -> Json {
 
 /// The data part of a certificate: `check: kernel` with the goal and the method's data, or
 /// `check: none` with the reason.
-fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Result<(), String> {
+fn data_fields<'o>(
+    o: &'o ClaimOutcome,
+    out: &mut Map<String, Json>,
+) -> std::result::Result<Option<Sampling<'o>>, String> {
     let method = o.method.map_or("a check", method_name);
     match (&o.data, o.verdict) {
         (_, Verdict::Error) => Err("not decided (an error verdict): nothing to re-check".into()),
-        (_, Verdict::Verified) => convergence::fields(&o.computed, out),
+        (_, Verdict::Verified) => convergence::fields(&o.computed, out).map(|()| None),
         (Data::Sampled(eqs), Verdict::Proved | Verdict::ProvedInRange) => {
             // A range variable written into the expressions (not an integer symbol) leaves
             // a checker no way to see that the goal covers the range.
@@ -270,11 +234,11 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
             }
             let refs: Vec<&Equality> = eqs.iter().collect();
             let (goal, radicand) = goal(&refs)?;
+            let sampling = Sampling::new(eqs, radicand)?;
             out.insert("goal".into(), goal);
-            out.insert("sampling".into(), sampling_json(eqs, radicand)?);
-            Ok(())
+            Ok(Some(sampling))
         }
-        (Data::Nonneg(n), Verdict::Proved) => nonneg::fields(n, out),
+        (Data::Nonneg(n), Verdict::Proved) => nonneg::fields(n, out).map(|()| None),
         (Data::Symbolic(s), Verdict::Proved) => {
             let (goal, data, lemmas) = hyper::fields(s);
             out.insert("goal".into(), goal);
@@ -282,11 +246,11 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
             if !lemmas.is_empty() {
                 out.insert("lemmas".into(), Json::Array(lemmas));
             }
-            Ok(())
+            Ok(None)
         }
-        (Data::Expanded(eqs), Verdict::Proved | Verdict::ProvedInRange) => expansion::fields(eqs, out),
+        (Data::Expanded(eqs), Verdict::Proved | Verdict::ProvedInRange) => expansion::fields(eqs, out).map(|()| None),
         (_, Verdict::Proved | Verdict::ProvedInRange) if matches!(o.method, Some(Method::Computation)) => {
-            computation::fields(&o.computed, out)
+            computation::fields(&o.computed, out).map(|()| None)
         }
         (Data::Refuted(r), Verdict::Fails) => {
             let premise_value = r.premise.iter().flat_map(|(_, v)| v);
@@ -318,7 +282,7 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
             }
             out.insert("goal".into(), goal);
             out.insert("fails".into(), refutation_json(r));
-            Ok(())
+            Ok(None)
         }
         (_, Verdict::Fails) => Err(format!(
             "the counterexample was found by {method}, whose data this version does not record (not done)"
@@ -334,6 +298,24 @@ fn data_fields(o: &ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Re
 
 /// The certificate of one claim's outcome.
 pub fn certificate(o: &ClaimOutcome) -> Json {
+    let (mut out, sampling) = certificate_parts(o);
+    if let Some(sampling) = sampling {
+        match serde_json::to_value(&sampling) {
+            Ok(v) => {
+                out.insert("sampling".into(), v);
+            }
+            // not reached: `Sampling::new` checked every value
+            Err(e) => {
+                out.insert("check".into(), json!("none"));
+                out.insert("reason".into(), json!(e.to_string()));
+            }
+        }
+    }
+    Json::Object(out)
+}
+
+/// A certificate's fields, but for the `sampling` data (serialized as it is written).
+fn certificate_parts(o: &ClaimOutcome) -> (Map<String, Json>, Option<Sampling<'_>>) {
     let mut out = Map::new();
     out.insert("format".into(), json!(FORMAT));
     out.insert("version".into(), json!(VERSION));
@@ -350,16 +332,50 @@ pub fn certificate(o: &ClaimOutcome) -> Json {
     // The data the kernel recorded, written as it is: `prove --check` and `casteljau check`
     // re-read it (re-reading every file here would cost as much as checking them all).
     match data_fields(o, &mut data) {
-        Ok(()) => {
+        Ok(sampling) => {
             out.insert("check".into(), json!("kernel"));
             out.extend(data);
+            (out, sampling)
         }
         Err(reason) => {
             out.insert("check".into(), json!("none"));
             out.insert("reason".into(), json!(reason));
+            (out, None)
         }
     }
-    Json::Object(out)
+}
+
+/// A certificate as it is written: its fields in sorted order (as a `Value` map prints them),
+/// with the `sampling` data in its place.
+struct Written<'a>(Map<String, Json>, Option<Sampling<'a>>);
+
+impl serde::Serialize for Written<'_> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut m = s.serialize_map(Some(self.0.len() + usize::from(self.1.is_some())))?;
+        let mut pending = self.1.as_ref();
+        for (k, v) in &self.0 {
+            if let Some(sampling) = pending.filter(|_| k.as_str() > "sampling") {
+                m.serialize_entry("sampling", sampling)?;
+                pending = None;
+            }
+            m.serialize_entry(k, v)?;
+        }
+        if let Some(sampling) = pending {
+            m.serialize_entry("sampling", sampling)?;
+        }
+        m.end()
+    }
+}
+
+/// A certificate's text as its file holds it ([`layout`]), with the final newline.
+pub(super) fn file_text(cert: &Json) -> String {
+    let mut out = Vec::new();
+    let mut json = serde_json::Serializer::with_formatter(&mut out, layout::Layout::new());
+    // A `Value` of strings, numbers, lists and maps serializes into memory without error.
+    let _ = serde::Serialize::serialize(cert, &mut json);
+    out.push(b'\n');
+    String::from_utf8_lossy(&out).into_owned()
 }
 
 /// A file name for a claim id: its letters, digits, `-`, `_` and `.`, others as `_`.
@@ -392,7 +408,9 @@ pub fn write_certificates(report: &Report, dir: &Path) -> Result<usize> {
         }
         // Written as it serializes: no copy of the text (a certificate can be megabytes).
         let mut file = std::io::BufWriter::new(std::fs::File::create(dir.join(name)).map_err(io)?);
-        serde_json::to_writer_pretty(&mut file, &certificate(o)).map_err(|e| io(e.into()))?;
+        let (fields, sampling) = certificate_parts(o);
+        let mut json = serde_json::Serializer::with_formatter(&mut file, layout::Layout::new());
+        serde::Serialize::serialize(&Written(fields, sampling), &mut json).map_err(|e| io(e.into()))?;
         file.write_all(b"\n").and_then(|()| file.flush()).map_err(io)?;
     }
     Ok(report.outcomes.len())
@@ -442,6 +460,11 @@ fn rational(text: &str) -> Res<BigRational> {
 /// common case), without num-bigint's parsing and printing back; `None` sends every other
 /// text (bigger numbers, and every text not so written) to [`rational_big`], which decides.
 fn small_rational_text(text: &str) -> Option<BigRational> {
+    small_parts(text).map(|(p, q)| BigRational::new_raw(p.into(), q.into()))
+}
+
+/// `p` and `q` (1 for an integer) of a text [`small_rational_text`] reads.
+fn small_parts(text: &str) -> Option<(i64, i64)> {
     // Canonical decimal of an i64: digits with no leading zero, "-" only before a nonzero.
     fn int(s: &str, signed: bool) -> Option<i64> {
         let digits = if signed { s.strip_prefix('-').unwrap_or(s) } else { s };
@@ -456,12 +479,17 @@ fn small_rational_text(text: &str) -> Option<BigRational> {
         s.parse().ok()
     }
     match text.split_once('/') {
-        None => int(text, true).map(|p| BigRational::from_integer(p.into())),
+        None => int(text, true).map(|p| (p, 1)),
         Some((p, q)) => {
             let (p, q) = (int(p, true)?, int(q, false)?);
-            (q > 1 && num_integer::Integer::gcd(&p, &q) == 1).then(|| BigRational::new_raw(p.into(), q.into()))
+            (q > 1 && num_integer::Integer::gcd(&p, &q) == 1).then_some((p, q))
         }
     }
+}
+
+/// Whether [`rational`] reads `text`, without building the number when it is small.
+fn is_rational_text(text: &str) -> bool {
+    small_parts(text).is_some() || rational_big(text).is_ok()
 }
 
 fn rational_big(text: &str) -> Res<BigRational> {

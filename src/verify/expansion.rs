@@ -91,8 +91,8 @@ fn implies_refutation(
     Box::new(Refutation {
         equality: Equality {
             ints: BTreeMap::new(),
-            lhs: written(a),
-            rhs: written(b),
+            lhs: in_coordinates(a, layout),
+            rhs: in_coordinates(b, layout),
             params: Vec::new(),
             rows: Vec::new(),
             polygons: 1,

@@ -98,3 +98,55 @@ fn bad_inputs_have_clear_errors() {
     assert!(msg("B(1, 2)").contains("B needs 3 arguments"));
     assert!(msg("").contains("empty"));
 }
+
+/// Expressions as a certificate's goal is built (`inline`): negative and fractional
+/// constants, vectors, sums, factorials, Bernstein derivatives, control points.
+fn arb_written() -> impl Strategy<Value = Expr> {
+    let num = (-30i64..30, 1i64..7).prop_map(|(p, q)| Expr::Num(Q::from_ratio(p, q).unwrap()));
+    let leaf = prop_oneof![num, Just(Expr::Var("t".into())), Just(Expr::Var("s".into()))];
+    leaf.prop_recursive(4, 40, 3, |inner| {
+        prop_oneof![
+            inner.clone().prop_map(|a| Expr::Neg(Box::new(a))),
+            (inner.clone(), inner.clone()).prop_map(|(a, b)| Expr::add(a, b)),
+            (inner.clone(), inner.clone()).prop_map(|(a, b)| Expr::sub(a, b)),
+            (inner.clone(), inner.clone()).prop_map(|(a, b)| Expr::mul(a, b)),
+            (inner.clone(), inner.clone()).prop_map(|(a, b)| Expr::div(a, b)),
+            (inner.clone(), 0i64..4).prop_map(|(a, k)| Expr::pow(a, Expr::int(k))),
+            (0i64..5).prop_map(|k| Expr::Fact(Box::new(Expr::int(k)))),
+            (0i64..4, 0i64..5, inner.clone(), 0i64..3)
+                .prop_map(|(i, n, g, k)| Expr::Call("__dB".into(), vec![Expr::int(i), Expr::int(n), g, Expr::int(k)])),
+            (0i64..3, inner.clone()).prop_map(|(top, body)| Expr::Sum(
+                "k".into(),
+                Box::new(Expr::int(0)),
+                Box::new(Expr::int(top)),
+                Box::new(Expr::mul(Expr::Var("k".into()), body))
+            )),
+            (0i64..4).prop_map(|j| Expr::Index("b".into(), vec![Expr::int(j)])),
+        ]
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    // A certificate writes a goal as the printer prints it, without parsing it back: the text
+    // must be canonical (it prints back to itself) and mean what the expression means.
+    #[test]
+    fn written_goals_print_back_and_mean_the_same(e in arb_written(), pair in any::<bool>()) {
+        let e = if pair { Expr::Tuple(vec![e.clone(), Expr::Neg(Box::new(e))]) } else { e };
+        let known = ["t".to_string(), "s".to_string()];
+        let printed = e.to_string();
+        let back = parse(&printed, &known).unwrap();
+        prop_assert_eq!(back.to_string(), printed.clone());
+        let mut vars = BTreeMap::new();
+        vars.insert("t".to_string(), Value::S(Q::from_ratio(3, 7).unwrap()));
+        vars.insert("s".to_string(), Value::S(Q::from_ratio(-2, 5).unwrap()));
+        let env = VarEnv(vars);
+        let value = |x: &Expr| Evaluator::new(&env, BTreeMap::new()).eval(x).map_err(|e| e.to_string());
+        match (value(&e), value(&back)) {
+            (Ok(a), Ok(b)) => prop_assert_eq!(a.equals(&b), Some(true), "printed as {}", printed),
+            (Err(_), Err(_)) => {}
+            (a, b) => prop_assert!(false, "{} evaluates to {:?} printed, {:?} as built", printed, b, a),
+        }
+    }
+}

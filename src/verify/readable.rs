@@ -9,7 +9,7 @@
 //! data in a later version is shown without a change here. Long lists are folded with a
 //! count; the JSON keeps them whole.
 
-use super::certify::{certificate, check_certificate_texts, cited_lemmas, file_name, Recheck};
+use super::certify::{certificate, check_certificate_texts, cited_lemmas, file_name, file_text, Recheck};
 use super::report::ClaimOutcome;
 use serde_json::{Map, Value as Json};
 
@@ -130,9 +130,8 @@ pub fn read_back(cert: &Json, file: &str) -> Readable {
 /// [`read_back`], the kernel re-checking `cert` together with the certificates `lemmas` (the
 /// lemmas it cites resolved among them).
 fn read_back_with(cert: &Json, file: &str, lemmas: &[Json]) -> Readable {
-    let pretty = |c: &Json| serde_json::to_string_pretty(c).expect("a JSON value serializes") + "\n";
-    let json = pretty(cert);
-    let texts: Vec<String> = lemmas.iter().map(pretty).collect();
+    let json = file_text(cert);
+    let texts: Vec<String> = lemmas.iter().map(file_text).collect();
     let all: Vec<&str> = std::iter::once(json.as_str())
         .chain(texts.iter().map(String::as_str))
         .collect();

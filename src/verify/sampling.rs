@@ -632,7 +632,7 @@ pub fn check_chain<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Res
         )
     };
     let proof =
-        check_sampled(&sampled_cases).map_err(|e| Error::Domain(format!("the kernel refuses the evaluations: {e}")))?;
+        check_sampled(sampled_cases).map_err(|e| Error::Domain(format!("the kernel refuses the evaluations: {e}")))?;
     let mut c = Checked::proved(proof, cert);
     c.steps = steps;
     c.params = first_params;

@@ -9,7 +9,7 @@
 //! lists are there for other checkers and for readers.
 
 use super::sampled::Goal;
-use super::{array, field, not_self_contained, rational, Res};
+use super::{array, contained, field, rational, Res};
 use crate::verify::expansion::{in_coordinates, variables};
 use crate::verify::kernel::check_expanded;
 use crate::verify::kernel::expand::{expand, Expansion, Terms};
@@ -42,16 +42,11 @@ pub(super) fn fields(eqs: &[Expansion], out: &mut Map<String, Json>) -> Res<()> 
             }
         }
         let known: Vec<String> = vars.iter().chain(ints.keys()).cloned().collect();
-        let (l, r) = (
-            in_coordinates(lhs, layout).to_string(),
-            in_coordinates(rhs, layout).to_string(),
-        );
+        let (l, r) = (in_coordinates(lhs, layout), in_coordinates(rhs, layout));
         for side in [&l, &r] {
-            if let Some(why) = not_self_contained(side, &known, &[]) {
-                return Err(format!("the goal uses {why}"));
-            }
+            contained(side, &known, &[]).map_err(|why| format!("the goal uses {why}"))?;
         }
-        goal_eqs.push(json!({"ints": super::ints_json(ints), "lhs": l, "rhs": r}));
+        goal_eqs.push(json!({"ints": super::ints_json(ints), "lhs": l.to_string(), "rhs": r.to_string()}));
         let entries: Vec<Json> = e
             .entries
             .iter()

@@ -12,6 +12,7 @@
 use super::super::kernel::expr::{eval_int, Expr};
 use super::super::methods::{NetMethod, PolygonMethod};
 use super::super::objects::{Exact, NumEnv};
+use super::routines::{tables, Key};
 use crate::curve::BezierCurve;
 use crate::point::Point;
 use crate::surface::BezierSurface;
@@ -83,6 +84,30 @@ fn write(points: &[Expr], results: &[Result1], t: Option<&Expr>) -> Option<Expr>
     }
 }
 
+/// The results `make` gives on each basis polygon (points when `point`), computed once per
+/// run for `key`: every case over polygons of one length writes the same call.
+fn results(key: Key, point: bool, make: impl FnOnce() -> Option<Vec<Result1>>) -> Option<Vec<Result1>> {
+    let table = tables(key, || {
+        let rs = make()?;
+        Some(
+            rs.into_iter()
+                .map(|r| match r {
+                    Result1::Curve(c) => c,
+                    Result1::Point(x) => vec![x],
+                })
+                .collect(),
+        )
+    })?;
+    table
+        .iter()
+        .map(|v| match (point, v.as_slice()) {
+            (true, [x]) => Some(Result1::Point(x.clone())),
+            (false, _) => Some(Result1::Curve(v.clone())),
+            _ => None,
+        })
+        .collect()
+}
+
 pub(super) fn unit(len: usize, one: Option<usize>) -> Vec<BigRational> {
     (0..len)
         .map(|j| {
@@ -135,6 +160,8 @@ pub(super) fn written<T: Exact>(
                 return Some(e);
             }
             let r = usize::try_from(int(1)?).ok()?;
+            let key = Key::Results(m, n, [int(1), int(2)]);
+            let point = matches!(m, PolygonMethod::Elevp | PolygonMethod::Derivp);
             let on = |one: Option<usize>| -> Option<Result1> {
                 let pts = unit(n, one)
                     .into_iter()
@@ -155,10 +182,9 @@ pub(super) fn written<T: Exact>(
                     _ => return None,
                 })
             };
-            let results = std::iter::once(None)
-                .chain((0..n).map(Some))
-                .map(on)
-                .collect::<Option<Vec<_>>>()?;
+            let results = results(key, point, || {
+                std::iter::once(None).chain((0..n).map(Some)).map(on).collect()
+            })?;
             return write(&points, &results, args.get(2));
         }
     }
@@ -185,9 +211,12 @@ pub(super) fn written<T: Exact>(
             _ => return None,
         })
     };
-    let results = std::iter::once(None)
-        .chain((0..rows * cols).map(Some))
-        .map(on)
-        .collect::<Option<Vec<_>>>()?;
+    let key = Key::NetResults(m, rows, cols, k);
+    let results = results(key, m == NetMethod::Corner, || {
+        std::iter::once(None)
+            .chain((0..rows * cols).map(Some))
+            .map(on)
+            .collect()
+    })?;
     write(&points, &results, args.get(2))
 }

@@ -18,7 +18,7 @@ use crate::exact::SmallRational;
 use crate::point::Point;
 use crate::surface::BezierSurface;
 use num_rational::BigRational;
-use num_traits::{One, Zero};
+use num_traits::Zero;
 use std::cell::RefCell;
 use std::collections::HashMap;
 use std::hash::Hash;
@@ -38,40 +38,55 @@ fn nodes(d: usize) -> Vec<BigRational> {
 
 /// The inverse of the matrix `B_j^d(i/d)` (rows i, columns j): values at the nodes to
 /// Bernstein coefficients. The matrix is invertible (distinct nodes, a basis of degree ≤ d).
+/// Eliminated on `SmallRational` (the same exact values, machine words while they fit).
 fn to_bernstein(d: usize) -> Option<Vec<Vec<BigRational>>> {
-    let xs = nodes(d);
+    use crate::scalar::{Ring as _, Scalar as _};
     let size = d + 1;
-    let mut m: Vec<Vec<BigRational>> = xs
+    let powers = |x: &Q| -> Vec<Q> {
+        std::iter::successors(Some(Q::from(1)), |p| Some(p.mul_ref(x)))
+            .take(size)
+            .collect()
+    };
+    let mut m: Vec<Vec<Q>> = nodes(d)
         .iter()
         .map(|x| {
+            let x = Q::from(x);
+            let (xs, ys) = (powers(&x), powers(&Q::from(1).sub_ref(&x)));
             (0..size)
                 .map(|j| {
-                    let c = BigRational::from_integer(crate::bernstein::binomial_signed(d as i64, j as i64));
-                    let one_minus = BigRational::one() - x;
-                    c * pow(x, j) * pow(&one_minus, d - j)
+                    let c = Q::from_bigint(&crate::bernstein::binomial_signed(d as i64, j as i64)).ok()?;
+                    Some(c.mul_ref(&xs[j]).mul_ref(&ys[d - j]))
                 })
-                .collect()
+                .collect::<Option<Vec<Q>>>()
         })
+        .collect::<Option<_>>()?;
+    let mut inv: Vec<Vec<Q>> = (0..size)
+        .map(|i| (0..size).map(|j| Q::from(i64::from(i == j))).collect())
         .collect();
-    let mut inv: Vec<Vec<BigRational>> = (0..size).map(|i| unit(size, Some(i))).collect();
     // Gauss–Jordan elimination, exact.
     for col in 0..size {
         let pivot = (col..size).find(|&r| !m[r][col].is_zero())?;
         m.swap(col, pivot);
         inv.swap(col, pivot);
         let p = m[col][col].clone();
-        m[col].iter_mut().chain(inv[col].iter_mut()).for_each(|x| *x = &*x / &p);
+        for x in m[col].iter_mut().chain(inv[col].iter_mut()) {
+            *x = x.checked_div(&p).ok()?;
+        }
         let (prow, pinv) = (m[col].clone(), inv[col].clone());
         for (r, (row, irow)) in m.iter_mut().zip(inv.iter_mut()).enumerate() {
             let f = row[col].clone();
             if r == col || f.is_zero() {
                 continue;
             }
-            row.iter_mut().zip(&prow).for_each(|(x, a)| *x = &*x - a * &f);
-            irow.iter_mut().zip(&pinv).for_each(|(x, a)| *x = &*x - a * &f);
+            row.iter_mut()
+                .zip(&prow)
+                .for_each(|(x, a)| *x = x.sub_ref(&a.mul_ref(&f)));
+            irow.iter_mut()
+                .zip(&pinv)
+                .for_each(|(x, a)| *x = x.sub_ref(&a.mul_ref(&f)));
         }
     }
-    Some(inv)
+    Some(inv.iter().map(|row| row.iter().map(Q::to_big).collect()).collect())
 }
 
 /// [`to_bernstein`] of `d`, computed once per run (every table of degree `d` uses it).
@@ -81,7 +96,7 @@ fn inverse(d: usize) -> Option<Arc<Matrix>> {
 }
 
 /// A square or rectangular table of exact numbers, shared once computed.
-type Matrix = Vec<Vec<BigRational>>;
+pub(super) type Matrix = Vec<Vec<BigRational>>;
 type Memo<K> = OnceLock<Mutex<HashMap<K, Arc<Matrix>>>>;
 
 /// `make()`, or what it gave for `key` before in this run (at most `MAX_TABLES` kept).
@@ -96,10 +111,6 @@ fn memo<K: Hash + Eq>(cache: &'static Memo<K>, key: K, make: impl FnOnce() -> Op
         map.insert(key, Arc::clone(&table));
     }
     Some(table)
-}
-
-fn pow(x: &BigRational, k: usize) -> BigRational {
-    (0..k).fold(BigRational::one(), |acc, _| acc * x)
 }
 
 /// The tensor Bernstein coefficients of the values on a grid (the last axis fastest),
@@ -134,9 +145,14 @@ fn coefficients<M: AsRef<[Vec<BigRational>]>>(
 /// Which library operation a table of coefficients is of: everything `value` depends on in
 /// [`polygon`] and [`net`] (the control points enter only as unit polygons).
 #[derive(Clone, PartialEq, Eq, Hash)]
-enum Key {
+pub(super) enum Key {
     Polygon(PolygonMethod, usize, Option<i64>),
     Net(NetMethod, usize, usize),
+    /// The library's results on each basis polygon (`library::written`): the operation, the
+    /// polygon's length, its integer arguments.
+    Results(PolygonMethod, usize, [Option<i64>; 2]),
+    /// The same on each basis net: the operation, its rows and columns, the boundary or corner.
+    NetResults(NetMethod, usize, usize, usize),
 }
 
 /// Most tables kept: a claim's cases use a few degrees, so the texts need a few dozen.
@@ -144,7 +160,7 @@ const MAX_TABLES: usize = 512;
 
 /// The coefficients of `key`'s operation, computed once per run: `prove` writes the same
 /// call at the same degree in every equality of a case, and in every claim over that polygon.
-fn tables(key: Key, make: impl FnOnce() -> Option<Matrix>) -> Option<Arc<Matrix>> {
+pub(super) fn tables(key: Key, make: impl FnOnce() -> Option<Matrix>) -> Option<Arc<Matrix>> {
     static TABLES: Memo<Key> = OnceLock::new();
     memo(&TABLES, key, make)
 }
@@ -350,6 +366,11 @@ pub(super) fn net(m: NetMethod, points: &[Expr], (rows, cols): (usize, usize), a
 #[cfg(test)]
 mod tests {
     use super::*;
+    use num_traits::One;
+
+    fn pow(x: &BigRational, k: usize) -> BigRational {
+        (0..k).fold(BigRational::one(), |acc, _| acc * x)
+    }
 
     fn points(n: usize) -> Vec<Expr> {
         (0..=n)

@@ -51,10 +51,10 @@ pub struct Row {
 pub struct Equality {
     /// The integer symbols' values.
     pub ints: BTreeMap<String, i64>,
-    /// The left side, printed so that it parses back.
-    pub lhs: String,
+    /// The left side (a certificate prints it; the printer's text parses back to it).
+    pub lhs: Expr,
     /// The right side.
-    pub rhs: String,
+    pub rhs: Expr,
     /// The real parameters (empty for an exact evaluation).
     pub params: Vec<Param>,
     /// Every grid point, the last parameter fastest.
@@ -156,14 +156,12 @@ pub(super) fn equality(
 ) -> Equality {
     let names = bounds.params().to_vec();
     let degrees = Degrees::of(&names, &control_points);
+    // Sides written out unchanged keep the bounds derived from them.
     let again = written
         .as_ref()
+        .filter(|(l, r)| l != bounds.lhs() || r != bounds.rhs())
         .and_then(|(l, r)| sample::bounds(l, r, bounds.ints(), names.clone(), &degrees).ok());
     let used = again.as_ref().unwrap_or(bounds);
-    let (lhs, rhs) = match &written {
-        Some((l, r)) if again.is_some() => (l.to_string(), r.to_string()),
-        _ => (bounds.lhs().to_string(), bounds.rhs().to_string()),
-    };
     let params = used
         .params()
         .iter()
@@ -180,6 +178,12 @@ pub(super) fn equality(
             }
         })
         .collect();
+    let rewritten = again.is_some();
+    drop(again);
+    let (lhs, rhs) = match written {
+        Some((l, r)) if rewritten => (l, r),
+        _ => (bounds.lhs().clone(), bounds.rhs().clone()),
+    };
     Equality {
         ints: bounds.ints().clone(),
         lhs,
@@ -341,7 +345,7 @@ pub fn recheck_sampled<A: Alg + PartialEq>(claimed: &mut [Claimed<'_, A>]) -> st
             }
         }
     }
-    super::check_sampled(&cases)
+    super::check_sampled(cases)
 }
 
 /// A counterexample to re-check, its expressions parsed from the file's text.

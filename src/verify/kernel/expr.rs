@@ -245,7 +245,9 @@ fn prec(e: &Expr) -> u8 {
         Expr::Neg(_) => 3,
         Expr::Bin(Op::Pow, ..) => 4,
         Expr::Fact(_) => 5,
-        Expr::Num(r) if !r.is_integer() || r.is_negative() => 2,
+        // -p parses as a negation, -p/q as (-p)/q: printed where those would be.
+        Expr::Num(r) if r.is_integer() && r.is_negative() => 3,
+        Expr::Num(r) if !r.is_integer() => 2,
         _ => 6,
     }
 }
@@ -277,12 +279,14 @@ impl fmt::Display for Expr {
                 };
                 write_wrapped(f, a, la)?;
                 write!(f, "{sym}")?;
-                // a - (b + c) and a / (b * c) keep their parentheses; -x in a product too.
-                let rb = if matches!(b.as_ref(), Expr::Neg(_)) && *op != Op::Pow {
-                    4
-                } else {
-                    rb
+                // a - (b + c) and a / (b * c) keep their parentheses; -x (a negation or a
+                // negative integer) after any operator too.
+                let negative = match b.as_ref() {
+                    Expr::Neg(_) => true,
+                    Expr::Num(r) => r.is_integer() && r.is_negative(),
+                    _ => false,
                 };
+                let rb = if negative && *op != Op::Pow { 4 } else { rb };
                 write_wrapped(f, b, rb)
             }
             Expr::Fact(a) => {

@@ -180,13 +180,13 @@ impl Proof {
 /// [`sample::check_pair`] on its whole grid, each parameter at more distinct values than its
 /// degree bound d (a nonzero polynomial of degree ≤ d has at most d roots). Parameter-free
 /// cases are exact evaluations of both sides.
-pub fn check_sampled(cases: &[sample::Case]) -> Result<Proof, String> {
+pub fn check_sampled(cases: Vec<sample::Case>) -> Result<Proof, String> {
     if cases.is_empty() {
         return Err("no case was evaluated".into());
     }
     let basis = cases.iter().any(|c| c.polygons > 1);
     let mut proof = Proof::new(sampled_method(cases.iter().flat_map(|c| &c.degrees), basis), &[]);
-    proof.data = certificate::Data::Sampled(cases.iter().map(|c| (*c.data).clone()).collect());
+    proof.data = certificate::Data::Sampled(cases.into_iter().map(|c| *c.data).collect());
     Ok(proof)
 }
 
