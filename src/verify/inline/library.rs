@@ -12,13 +12,14 @@
 use super::super::kernel::expr::{eval_int, Expr};
 use super::super::methods::{NetMethod, PolygonMethod};
 use super::super::objects::{Exact, NumEnv};
-use super::routines::{tables, Key};
+use super::routines::{tables, Key, Matrix};
 use crate::curve::BezierCurve;
 use crate::point::Point;
 use crate::surface::BezierSurface;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 use std::collections::BTreeMap;
+use std::sync::Arc;
 
 /// A library result on one basis polygon: a curve (its control points) or a point.
 enum Result1 {
@@ -84,28 +85,11 @@ fn write(points: &[Expr], results: &[Result1], t: Option<&Expr>) -> Option<Expr>
     }
 }
 
-/// The results `make` gives on each basis polygon (points when `point`), computed once per
-/// run for `key`: every case over polygons of one length writes the same call.
-fn results(key: Key, point: bool, make: impl FnOnce() -> Option<Vec<Result1>>) -> Option<Vec<Result1>> {
-    let table = tables(key, || {
-        let rs = make()?;
-        Some(
-            rs.into_iter()
-                .map(|r| match r {
-                    Result1::Curve(c) => c,
-                    Result1::Point(x) => vec![x],
-                })
-                .collect(),
-        )
-    })?;
-    table
-        .iter()
-        .map(|v| match (point, v.as_slice()) {
-            (true, [x]) => Some(Result1::Point(x.clone())),
-            (false, _) => Some(Result1::Curve(v.clone())),
-            _ => None,
-        })
-        .collect()
+/// The library's curves on each basis polygon for `key`, computed once per run: every case
+/// over polygons of one length writes the same call, and a point of the result (`elevp`,
+/// `derivp`) is picked from the same curves.
+fn curves(key: Key, make: impl FnOnce() -> Option<Vec<Vec<BigRational>>>) -> Option<Arc<Matrix>> {
+    tables(key, make)
 }
 
 pub(super) fn unit(len: usize, one: Option<usize>) -> Vec<BigRational> {
@@ -134,13 +118,6 @@ pub(super) fn unit_net(rows: usize, cols: usize, one: Option<usize>) -> Option<B
     BezierSurface::new(net).ok()
 }
 
-pub(super) fn pick(c: &BezierCurve<BigRational>, i: i64) -> BigRational {
-    usize::try_from(i)
-        .ok()
-        .and_then(|i| c.points().get(i))
-        .map_or_else(BigRational::zero, coord)
-}
-
 /// A library operation on the polygon or net of `env` written out (`None`: not one, or one
 /// that is not written out).
 pub(super) fn written<T: Exact>(
@@ -160,31 +137,50 @@ pub(super) fn written<T: Exact>(
                 return Some(e);
             }
             let r = usize::try_from(int(1)?).ok()?;
-            let key = Key::Results(m, n, [int(1), int(2)]);
-            let point = matches!(m, PolygonMethod::Elevp | PolygonMethod::Derivp);
-            let on = |one: Option<usize>| -> Option<Result1> {
+            // The operation whose curves give the result (a point is one of them).
+            let of = match m {
+                PolygonMethod::Elev | PolygonMethod::Elevp => PolygonMethod::Elev,
+                PolygonMethod::Steps => PolygonMethod::Steps,
+                PolygonMethod::Deriv | PolygonMethod::Derivp => PolygonMethod::Deriv,
+                _ => return None,
+            };
+            let on = |one: Option<usize>| -> Option<Vec<BigRational>> {
                 let pts = unit(n, one)
                     .into_iter()
                     .map(|x| Point::new(vec![x]).ok())
                     .collect::<Option<Vec<_>>>()?;
                 let c = BezierCurve::new(pts).ok()?;
-                let deriv = || if r >= n { None } else { c.derivative(r).ok() };
-                Some(match m {
-                    PolygonMethod::Elev => Result1::Curve(curve_points(&c.elevate_by(r).ok()?)),
-                    PolygonMethod::Steps => Result1::Curve(curve_points(&c.elevate_steps(r).ok()?)),
-                    PolygonMethod::Elevp => Result1::Point(pick(&c.elevate_by(r).ok()?, int(2)?)),
-                    PolygonMethod::Deriv => {
-                        Result1::Curve(deriv().map_or(vec![BigRational::zero()], |d| curve_points(&d)))
-                    }
-                    PolygonMethod::Derivp => {
-                        Result1::Point(deriv().map_or_else(BigRational::zero, |d| pick(&d, int(2).unwrap_or(-1))))
-                    }
-                    _ => return None,
+                Some(match of {
+                    PolygonMethod::Elev => curve_points(&c.elevate_by(r).ok()?),
+                    PolygonMethod::Steps => curve_points(&c.elevate_steps(r).ok()?),
+                    // a derivative of order ≥ the polygon's length is the zero curve
+                    _ if r >= n => vec![BigRational::zero()],
+                    _ => c
+                        .derivative(r)
+                        .ok()
+                        .map_or(vec![BigRational::zero()], |d| curve_points(&d)),
                 })
             };
-            let results = results(key, point, || {
+            let table = curves(Key::Results(of, n, r), || {
                 std::iter::once(None).chain((0..n).map(Some)).map(on).collect()
             })?;
+            let pick = |c: &Vec<BigRational>, i: i64| {
+                usize::try_from(i)
+                    .ok()
+                    .and_then(|i| c.get(i))
+                    .map_or_else(BigRational::zero, Clone::clone)
+            };
+            let results: Vec<Result1> = match m {
+                PolygonMethod::Elevp => {
+                    let i = int(2)?;
+                    table.iter().map(|c| Result1::Point(pick(c, i))).collect()
+                }
+                PolygonMethod::Derivp => {
+                    let i = int(2).unwrap_or(-1);
+                    table.iter().map(|c| Result1::Point(pick(c, i))).collect()
+                }
+                _ => table.iter().map(|c| Result1::Curve(c.clone())).collect(),
+            };
             return write(&points, &results, args.get(2));
         }
     }
@@ -203,20 +199,27 @@ pub(super) fn written<T: Exact>(
         return Some(e);
     }
     let k = usize::try_from(int(1)?).ok().filter(|&k| k < 4)?;
-    let on = |one: Option<usize>| -> Option<Result1> {
+    // A corner is listed as a one-point curve.
+    let on = |one: Option<usize>| -> Option<Vec<BigRational>> {
         let s = unit_net(rows, cols, one)?;
         Some(match m {
-            NetMethod::Bnd => Result1::Curve(curve_points(&s.boundary()[k])),
-            NetMethod::Corner => Result1::Point(coord(&s.corners()[k])),
+            NetMethod::Bnd => curve_points(&s.boundary()[k]),
+            NetMethod::Corner => vec![coord(&s.corners()[k])],
             _ => return None,
         })
     };
-    let key = Key::NetResults(m, rows, cols, k);
-    let results = results(key, m == NetMethod::Corner, || {
+    let table = curves(Key::NetResults(m, rows, cols, k), || {
         std::iter::once(None)
             .chain((0..rows * cols).map(Some))
             .map(on)
             .collect()
     })?;
+    let results: Vec<Result1> = match m {
+        NetMethod::Corner => table
+            .iter()
+            .map(|c| c.first().cloned().map(Result1::Point))
+            .collect::<Option<_>>()?,
+        _ => table.iter().map(|c| Result1::Curve(c.clone())).collect(),
+    };
     write(&points, &results, args.get(2))
 }

@@ -148,9 +148,9 @@ fn coefficients<M: AsRef<[Vec<BigRational>]>>(
 pub(super) enum Key {
     Polygon(PolygonMethod, usize, Option<i64>),
     Net(NetMethod, usize, usize),
-    /// The library's results on each basis polygon (`library::written`): the operation, the
-    /// polygon's length, its integer arguments.
-    Results(PolygonMethod, usize, [Option<i64>; 2]),
+    /// The library's curves on each basis polygon (`library::written`): the operation, the
+    /// polygon's length, its order (of elevation or derivative).
+    Results(PolygonMethod, usize, usize),
     /// The same on each basis net: the operation, its rows and columns, the boundary or corner.
     NetResults(NetMethod, usize, usize, usize),
 }
@@ -252,7 +252,7 @@ fn first(p: &Point<Q>) -> BigRational {
     p.coords()[0].to_big()
 }
 
-/// Control point `i` of a curve (0 when there is none), as [`super::library::pick`].
+/// Control point `i` of a curve (0 when there is none, as `prove` reads it).
 fn pick(c: &BezierCurve<Q>, i: i64) -> BigRational {
     usize::try_from(i)
         .ok()
