@@ -24,18 +24,20 @@ fn arb_expr() -> impl Strategy<Value = Expr> {
         Just(Expr::Var("t".into())),
         Just(Expr::Var("s".into())),
     ];
-    leaf.prop_recursive(4, 32, 3, |inner| {
-        prop_oneof![
-            inner.clone().prop_map(|a| Expr::Neg(Box::new(a))),
-            (inner.clone(), inner.clone()).prop_map(|(a, b)| Expr::add(a, b)),
-            (inner.clone(), inner.clone()).prop_map(|(a, b)| Expr::sub(a, b)),
-            (inner.clone(), inner.clone()).prop_map(|(a, b)| Expr::mul(a, b)),
-            (inner.clone(), inner.clone()).prop_map(|(a, b)| Expr::div(a, b)),
-            (inner.clone(), 0i64..4).prop_map(|(a, k)| Expr::pow(a, Expr::int(k))),
-            (0i64..4, 0i64..5, inner.clone())
-                .prop_map(|(i, n, g)| Expr::Call("B".into(), vec![Expr::int(i), Expr::int(n), g])),
-        ]
-    })
+    leaf.prop_recursive(4, 32, 3, |inner| operations(inner.boxed()))
+}
+
+/// Negation, the four operations, integer powers and `B(i, n, ·)` of expressions of `inner`.
+fn operations(inner: BoxedStrategy<Expr>) -> impl Strategy<Value = Expr> {
+    prop_oneof![
+        inner.clone().prop_map(|a| Expr::Neg(Box::new(a))),
+        (inner.clone(), inner.clone()).prop_map(|(a, b)| Expr::add(a, b)),
+        (inner.clone(), inner.clone()).prop_map(|(a, b)| Expr::sub(a, b)),
+        (inner.clone(), inner.clone()).prop_map(|(a, b)| Expr::mul(a, b)),
+        (inner.clone(), inner.clone()).prop_map(|(a, b)| Expr::div(a, b)),
+        (inner.clone(), 0i64..4).prop_map(|(a, k)| Expr::pow(a, Expr::int(k))),
+        (0i64..4, 0i64..5, inner).prop_map(|(i, n, g)| Expr::Call("B".into(), vec![Expr::int(i), Expr::int(n), g])),
+    ]
 }
 
 proptest! {
@@ -100,28 +102,24 @@ fn bad_inputs_have_clear_errors() {
 }
 
 /// Expressions as a certificate's goal is built (`inline`): negative and fractional
-/// constants, vectors, sums, factorials, Bernstein derivatives, control points.
+/// constants, vectors, sums, factorials, Bernstein polynomials and their derivatives, control
+/// points.
 fn arb_written() -> impl Strategy<Value = Expr> {
     let num = (-30i64..30, 1i64..7).prop_map(|(p, q)| Expr::Num(Q::from_ratio(p, q).unwrap()));
     let leaf = prop_oneof![num, Just(Expr::Var("t".into())), Just(Expr::Var("s".into()))];
     leaf.prop_recursive(4, 40, 3, |inner| {
         prop_oneof![
-            inner.clone().prop_map(|a| Expr::Neg(Box::new(a))),
-            (inner.clone(), inner.clone()).prop_map(|(a, b)| Expr::add(a, b)),
-            (inner.clone(), inner.clone()).prop_map(|(a, b)| Expr::sub(a, b)),
-            (inner.clone(), inner.clone()).prop_map(|(a, b)| Expr::mul(a, b)),
-            (inner.clone(), inner.clone()).prop_map(|(a, b)| Expr::div(a, b)),
-            (inner.clone(), 0i64..4).prop_map(|(a, k)| Expr::pow(a, Expr::int(k))),
-            (0i64..5).prop_map(|k| Expr::Fact(Box::new(Expr::int(k)))),
-            (0i64..4, 0i64..5, inner.clone(), 0i64..3)
+            7 => operations(inner.clone().boxed()),
+            1 => (0i64..5).prop_map(|k| Expr::Fact(Box::new(Expr::int(k)))),
+            1 => (0i64..4, 0i64..5, inner.clone(), 0i64..3)
                 .prop_map(|(i, n, g, k)| Expr::Call("__dB".into(), vec![Expr::int(i), Expr::int(n), g, Expr::int(k)])),
-            (0i64..3, inner.clone()).prop_map(|(top, body)| Expr::Sum(
+            1 => (0i64..3, inner.clone()).prop_map(|(top, body)| Expr::Sum(
                 "k".into(),
                 Box::new(Expr::int(0)),
                 Box::new(Expr::int(top)),
                 Box::new(Expr::mul(Expr::Var("k".into()), body))
             )),
-            (0i64..4).prop_map(|j| Expr::Index("b".into(), vec![Expr::int(j)])),
+            1 => (0i64..4).prop_map(|j| Expr::Index("b".into(), vec![Expr::int(j)])),
         ]
     })
 }
