@@ -12,9 +12,15 @@ cd "$(dirname "$0")/.."
 target_dir="${CARGO_TARGET_DIR:-target}"
 case "$target_dir" in /*) ;; *) target_dir="$PWD/$target_dir" ;; esac
 
-if [ ! -x /usr/bin/chromium ] || ! command -v npm >/dev/null; then
+# Only what is missing: a machine whose Node.js comes from elsewhere (NodeSource's bundles npm)
+# cannot take Debian's npm beside it.
+missing=()
+[ -x /usr/bin/chromium ] || missing+=(chromium chromium-driver)
+command -v node >/dev/null || missing+=(nodejs)
+command -v npm >/dev/null || missing+=(npm)
+if [ "${#missing[@]}" -gt 0 ]; then
     apt-get update -qq
-    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium chromium-driver nodejs npm >/dev/null
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}" >/dev/null
 fi
 pw="$target_dir/browser-test"
 if [ ! -f "$pw/node_modules/playwright-core/package.json" ]; then
