@@ -12,14 +12,13 @@
 use super::super::kernel::expr::{eval_int, Expr};
 use super::super::methods::{NetMethod, PolygonMethod};
 use super::super::objects::{Exact, NumEnv};
-use super::routines::{tables, Key, Matrix};
+use super::routines::{tables, Key};
 use crate::curve::BezierCurve;
 use crate::point::Point;
 use crate::surface::BezierSurface;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 use std::collections::BTreeMap;
-use std::sync::Arc;
 
 /// A library result on one basis polygon: a curve (its control points) or a point.
 enum Result1 {
@@ -83,13 +82,6 @@ fn write(points: &[Expr], results: &[Result1], t: Option<&Expr>) -> Option<Expr>
             terms.into_iter().reduce(Expr::add)
         }
     }
-}
-
-/// The library's curves on each basis polygon for `key`, computed once per run: every case
-/// over polygons of one length writes the same call, and a point of the result (`elevp`,
-/// `derivp`) is picked from the same curves.
-fn curves(key: Key, make: impl FnOnce() -> Option<Vec<Vec<BigRational>>>) -> Option<Arc<Matrix>> {
-    tables(key, make)
 }
 
 pub(super) fn unit(len: usize, one: Option<usize>) -> Vec<BigRational> {
@@ -161,26 +153,29 @@ pub(super) fn written<T: Exact>(
                         .map_or(vec![BigRational::zero()], |d| curve_points(&d)),
                 })
             };
-            let table = curves(Key::Results(of, n, r), || {
+            // The curves on each basis polygon, computed once per run: every case over polygons
+            // of one length writes the same call, and a point of the result is picked from them.
+            let table = tables(Key::Results(of, n, r), || {
                 std::iter::once(None).chain((0..n).map(Some)).map(on).collect()
             })?;
-            let pick = |c: &Vec<BigRational>, i: i64| {
-                usize::try_from(i)
-                    .ok()
-                    .and_then(|i| c.get(i))
-                    .map_or_else(BigRational::zero, Clone::clone)
+            let point = match m {
+                PolygonMethod::Elevp => Some(int(2)?),
+                PolygonMethod::Derivp => Some(int(2).unwrap_or(-1)),
+                _ => None,
             };
-            let results: Vec<Result1> = match m {
-                PolygonMethod::Elevp => {
-                    let i = int(2)?;
-                    table.iter().map(|c| Result1::Point(pick(c, i))).collect()
-                }
-                PolygonMethod::Derivp => {
-                    let i = int(2).unwrap_or(-1);
-                    table.iter().map(|c| Result1::Point(pick(c, i))).collect()
-                }
-                _ => table.iter().map(|c| Result1::Curve(c.clone())).collect(),
-            };
+            let results: Vec<Result1> = table
+                .iter()
+                .map(|c| match point {
+                    // control point i of the curve, 0 when there is none
+                    Some(i) => Result1::Point(
+                        usize::try_from(i)
+                            .ok()
+                            .and_then(|i| c.get(i))
+                            .map_or_else(BigRational::zero, Clone::clone),
+                    ),
+                    None => Result1::Curve(c.clone()),
+                })
+                .collect();
             return write(&points, &results, args.get(2));
         }
     }
@@ -208,7 +203,7 @@ pub(super) fn written<T: Exact>(
             _ => return None,
         })
     };
-    let table = curves(Key::NetResults(m, rows, cols, k), || {
+    let table = tables(Key::NetResults(m, rows, cols, k), || {
         std::iter::once(None)
             .chain((0..rows * cols).map(Some))
             .map(on)

@@ -96,7 +96,7 @@ fn inverse(d: usize) -> Option<Arc<Matrix>> {
 }
 
 /// A square or rectangular table of exact numbers, shared once computed.
-pub(super) type Matrix = Vec<Vec<BigRational>>;
+type Matrix = Vec<Vec<BigRational>>;
 type Memo<K> = OnceLock<Mutex<HashMap<K, Arc<Matrix>>>>;
 
 /// `make()`, or what it gave for `key` before in this run (at most `MAX_TABLES` kept).
