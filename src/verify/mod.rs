@@ -321,19 +321,29 @@ fn lemmas_of(jobs: &[Job<'_>], decided: &[Option<Decided>], cited: &[usize]) -> 
         .collect()
 }
 
-fn outcome(f: &claims::ClaimFile, c: &claims::Claim, checked: Checked, range_bound: Option<String>) -> ClaimOutcome {
+fn outcome(
+    f: &claims::ClaimFile,
+    c: &claims::Claim,
+    mut checked: Checked,
+    range_bound: Option<String>,
+) -> ClaimOutcome {
     let proof = checked.proof();
+    let (verdict, range) = (checked.verdict(), checked.range().map(str::to_string));
+    let (method, rests_on) = (proof.map(kernel::Proof::method), proof.map(|p| p.rests_on().to_vec()));
+    // moved, not copied: a certificate's data holds every sampled side written out
+    let computed = std::mem::take(&mut checked.computed);
+    let certificate = std::mem::take(&mut checked.certificate);
     ClaimOutcome {
         id: c.id.clone(),
         source: c.source.clone(),
         statement: c.statement.clone(),
-        verdict: checked.verdict(),
-        range: checked.range().map(str::to_string),
-        method: proof.map(kernel::Proof::method),
-        rests_on: proof.map(|p| p.rests_on().to_vec()),
-        data: checked.data().clone(),
-        computed: checked.computed.clone(),
-        certificate: checked.certificate,
+        verdict,
+        range,
+        method,
+        rests_on,
+        data: checked.into_data(),
+        computed,
+        certificate,
         expect: c.expected(),
         file: f.path.display().to_string(),
         text: text_name(f),

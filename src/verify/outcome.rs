@@ -198,6 +198,22 @@ impl Checked {
         }
     }
 
+    /// The verdict's data, taken out (see [`Checked::data`]).
+    pub fn into_data(self) -> Data {
+        match self.outcome {
+            Outcome::Proved(p) => p.into_data(),
+            Outcome::Other(..) => self.data,
+        }
+    }
+
+    /// The proof, taken out, when the claim is proved.
+    pub fn into_proof(self) -> Option<Proof> {
+        match self.outcome {
+            Outcome::Proved(p) => Some(p),
+            Outcome::Other(..) => None,
+        }
+    }
+
     /// The verdict.
     pub fn verdict(&self) -> Verdict {
         match &self.outcome {

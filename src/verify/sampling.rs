@@ -565,7 +565,7 @@ pub fn check_chain<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Res
                     c.steps.push(Step::text(format!("FAILS {which}{cx}")));
                     return Ok(c);
                 }
-                PairResult::Proved(p) => {
+                PairResult::Proved(mut p) => {
                     for (v, need, l, r) in &p.degrees {
                         let e = max_need.entry(v.clone()).or_insert(0);
                         *e = (*e).max(*need);
@@ -585,7 +585,8 @@ pub fn check_chain<T: Exact>(ctx: &Ctx<'_>, sides: &[Expr], detail: bool) -> Res
                     if first_params.is_empty() {
                         first_params = p.points.first().cloned().unwrap_or_default();
                     }
-                    sampled_cases.extend(p.case.clone());
+                    // moved, not copied: a case holds both sides written out
+                    sampled_cases.extend(p.case.take());
                     last = Some(p);
                 }
             }

@@ -307,7 +307,7 @@ pub fn check_theorem(ctx: &Ctx<'_>, theorem: &Theorem, detail: bool) -> Result<C
     let mut proofs = Vec::new();
     let mut operations = Vec::new();
     for (p, sub, sides) in &prepared {
-        let out = check_chain::<Q>(sub, sides, detail)?;
+        let mut out = check_chain::<Q>(sub, sides, detail)?;
         operations.extend(super::methods::operations_called(sides));
         if let Some(m) = out.method() {
             method = method.join(m);
@@ -316,14 +316,14 @@ pub fn check_theorem(ctx: &Ctx<'_>, theorem: &Theorem, detail: bool) -> Result<C
             steps.push(Step::text(format!("{}: {}", p.label, p.chain.join(" = "))));
             steps.extend(out.steps.iter().cloned().map(|s| s.nested(1)));
         }
-        let Some(proof) = out.proof() else {
-            let mut f =
-                Checked::fails(format!("{} ({}): {}", p.label, p.chain.join(" = "), out.certificate)).found_by(method);
+        let text = std::mem::take(&mut out.certificate);
+        let Some(proof) = out.into_proof() else {
+            let mut f = Checked::fails(format!("{} ({}): {text}", p.label, p.chain.join(" = "))).found_by(method);
             f.steps = steps;
             return Ok(f);
         };
-        proofs.push(proof.clone());
-        certs.push(format!("[{}] {}", p.label, out.certificate));
+        proofs.push(proof);
+        certs.push(format!("[{}] {text}", p.label));
     }
     let Some(proof) = check_all(proofs) else {
         return Err(Error::Domain(format!(

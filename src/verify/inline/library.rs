@@ -20,9 +20,10 @@ use num_rational::BigRational;
 use num_traits::{One, Zero};
 use std::collections::BTreeMap;
 
-/// A library result on one basis polygon: a curve (its control points) or a point.
-enum Result1 {
-    Curve(Vec<BigRational>),
+/// A library result on one basis polygon, as a row of [`differences`]: a curve (its control
+/// points) or a point.
+enum Result1<'a> {
+    Curve(&'a [BigRational]),
     Point(BigRational),
 }
 
@@ -34,50 +35,63 @@ fn curve_points(c: &BezierCurve<BigRational>) -> Vec<BigRational> {
     c.points().iter().map(coord).collect()
 }
 
-/// `c0 + Σ_k c_k · point_k` with the zero coefficients left out.
-pub(super) fn affine(c0: &BigRational, coeffs: &[(Expr, BigRational)]) -> Expr {
+/// `c0 + Σ_k d_k · point_k` with the zero terms left out: `d_k` is point k's coefficient, its
+/// unit polygon's value less the zero polygon's (a row of [`differences`]).
+pub(super) fn affine<'a>(c0: &BigRational, coeffs: impl Iterator<Item = (&'a Expr, &'a BigRational)>) -> Expr {
     let mut terms: Vec<Expr> = Vec::new();
     if !c0.is_zero() {
         terms.push(Expr::Num(c0.clone()));
     }
-    for (point, c) in coeffs {
-        let d = c - c0;
+    for (point, d) in coeffs {
         if !d.is_zero() {
-            terms.push(Expr::mul(Expr::Num(d), point.clone()));
+            terms.push(Expr::mul(Expr::Num(d.clone()), point.clone()));
         }
     }
     terms.into_iter().reduce(Expr::add).unwrap_or_else(|| Expr::int(0))
 }
 
-/// The call written from the results on the zero polygon (`results[0]`) and the unit polygon
-/// of each of `points` (`results[k + 1]`); `t` the curve's parameter for a curve result.
+/// Values on the zero polygon and on each unit polygon (`rows[0]`, `rows[k + 1]`) as the
+/// coefficients of their affine form: the zero polygon's row, then each unit polygon's less it
+/// (`None` when the rows' lengths differ). Kept in the tables so that each call written from
+/// them only copies.
+pub(super) fn differences(rows: Vec<Vec<BigRational>>) -> Option<Vec<Vec<BigRational>>> {
+    let mut rows = rows.into_iter();
+    let zero = rows.next()?;
+    let units = rows
+        .map(|r| (r.len() == zero.len()).then(|| r.iter().zip(&zero).map(|(a, z)| a - z).collect()))
+        .collect::<Option<Vec<Vec<BigRational>>>>()?;
+    Some(std::iter::once(zero).chain(units).collect())
+}
+
+/// The call written from the results on the basis polygons as [`differences`] (`results[0]`
+/// the zero polygon's, `results[k + 1]` the coefficients of `points[k]`); `t` the curve's
+/// parameter for a curve result.
 fn write(points: &[Expr], results: &[Result1], t: Option<&Expr>) -> Option<Expr> {
-    match &results[0] {
+    let (zero, units) = results.split_first()?;
+    match zero {
         Result1::Point(z) => {
-            let coeffs = points
+            let coeffs = units
                 .iter()
-                .zip(&results[1..])
-                .map(|(p, r)| match r {
-                    Result1::Point(x) => Some((p.clone(), x.clone())),
+                .map(|r| match r {
+                    Result1::Point(x) => Some(x),
                     Result1::Curve(_) => None,
                 })
                 .collect::<Option<Vec<_>>>()?;
-            Some(affine(z, &coeffs))
+            Some(affine(z, points.iter().zip(coeffs)))
         }
         Result1::Curve(z) => {
             let d = z.len().checked_sub(1)?;
+            let units = units
+                .iter()
+                .map(|r| match r {
+                    Result1::Curve(c) if c.len() == z.len() => Some(c),
+                    _ => None,
+                })
+                .collect::<Option<Vec<_>>>()?;
             let mut terms = Vec::new();
             for (i, zi) in z.iter().enumerate() {
-                let coeffs = points
-                    .iter()
-                    .zip(&results[1..])
-                    .map(|(p, r)| match r {
-                        Result1::Curve(c) if c.len() == z.len() => Some((p.clone(), c[i].clone())),
-                        _ => None,
-                    })
-                    .collect::<Option<Vec<_>>>()?;
                 let b = Expr::Call("B".into(), vec![Expr::int(i as i64), Expr::int(d as i64), t?.clone()]);
-                terms.push(Expr::mul(affine(zi, &coeffs), b));
+                terms.push(Expr::mul(affine(zi, points.iter().zip(units.iter().map(|c| &c[i]))), b));
             }
             terms.into_iter().reduce(Expr::add)
         }
@@ -156,7 +170,12 @@ pub(super) fn written<T: Exact>(
             // The curves on each basis polygon, computed once per run: every case over polygons
             // of one length writes the same call, and a point of the result is picked from them.
             let table = tables(Key::Results(of, n, r), || {
-                std::iter::once(None).chain((0..n).map(Some)).map(on).collect()
+                differences(
+                    std::iter::once(None)
+                        .chain((0..n).map(Some))
+                        .map(on)
+                        .collect::<Option<_>>()?,
+                )
             })?;
             let point = match m {
                 PolygonMethod::Elevp => Some(int(2)?),
@@ -173,7 +192,7 @@ pub(super) fn written<T: Exact>(
                             .and_then(|i| c.get(i))
                             .map_or_else(BigRational::zero, Clone::clone),
                     ),
-                    None => Result1::Curve(c.clone()),
+                    None => Result1::Curve(c),
                 })
                 .collect();
             return write(&points, &results, args.get(2));
@@ -194,27 +213,35 @@ pub(super) fn written<T: Exact>(
         return Some(e);
     }
     let k = usize::try_from(int(1)?).ok().filter(|&k| k < 4)?;
-    // A corner is listed as a one-point curve.
-    let on = |one: Option<usize>| -> Option<Vec<BigRational>> {
+    // All four boundaries (or corners) of the basis nets, one table per operation and size:
+    // row `k·bases + b` is side `k` on basis net `b`; a corner is listed as a one-point curve.
+    let on = |one: Option<usize>| -> Option<Vec<Vec<BigRational>>> {
         let s = unit_net(rows, cols, one)?;
         Some(match m {
-            NetMethod::Bnd => curve_points(&s.boundary()[k]),
-            NetMethod::Corner => vec![coord(&s.corners()[k])],
+            NetMethod::Bnd => s.boundary().iter().map(curve_points).collect(),
+            NetMethod::Corner => s.corners().iter().map(|c| vec![coord(c)]).collect(),
             _ => return None,
         })
     };
-    let table = tables(Key::NetResults(m, rows, cols, k), || {
-        std::iter::once(None)
+    let bases = rows * cols + 1;
+    let table = tables(Key::NetResults(m, rows, cols), || {
+        let per_basis = std::iter::once(None)
             .chain((0..rows * cols).map(Some))
             .map(on)
-            .collect()
+            .collect::<Option<Vec<_>>>()?;
+        let mut table = Vec::with_capacity(4 * bases);
+        for side in 0..4 {
+            table.extend(differences(per_basis.iter().map(|s| s[side].clone()).collect())?);
+        }
+        Some(table)
     })?;
+    let sides = table.get(k * bases..(k + 1) * bases)?;
     let results: Vec<Result1> = match m {
-        NetMethod::Corner => table
+        NetMethod::Corner => sides
             .iter()
             .map(|c| c.first().cloned().map(Result1::Point))
             .collect::<Option<_>>()?,
-        _ => table.iter().map(|c| Result1::Curve(c.clone())).collect(),
+        _ => sides.iter().map(|c| Result1::Curve(c)).collect(),
     };
     write(&points, &results, args.get(2))
 }

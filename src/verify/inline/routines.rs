@@ -12,7 +12,7 @@
 //! at d + 1 points); the certificate then states the identity about that polynomial.
 
 use super::super::methods::{NetMethod, PolygonMethod};
-use super::library::{affine, unit, unit_net};
+use super::library::{affine, differences, unit, unit_net};
 use crate::curve::BezierCurve;
 use crate::exact::SmallRational;
 use crate::point::Point;
@@ -151,8 +151,9 @@ pub(super) enum Key {
     /// The library's curves on each basis polygon (`library::written`): the operation, the
     /// polygon's length, its order (of elevation or derivative).
     Results(PolygonMethod, usize, usize),
-    /// The same on each basis net: the operation, its rows and columns, the boundary or corner.
-    NetResults(NetMethod, usize, usize, usize),
+    /// The same on each basis net, all four boundaries or corners: the operation, its rows
+    /// and columns.
+    NetResults(NetMethod, usize, usize),
 }
 
 /// Most tables kept: a claim's cases use a few degrees, so the texts need a few dozen.
@@ -166,7 +167,7 @@ pub(super) fn tables(key: Key, make: impl FnOnce() -> Option<Matrix>) -> Option<
 }
 
 /// The tensor Bernstein coefficients of `value` on the zero polygon and on each of the
-/// `points` unit polygons, from its values at `d + 1` nodes of each axis.
+/// `points` unit polygons, from its values at `d + 1` nodes of each axis, as [`differences`].
 fn per_basis(
     points: usize,
     degrees: &[usize],
@@ -185,13 +186,15 @@ fn per_basis(
             })
             .collect()
     });
-    std::iter::once(None)
-        .chain((0..points).map(Some))
-        .map(|b| {
-            let values = grid.iter().map(|at| value(b, at)).collect::<Option<Vec<_>>>()?;
-            Some(coefficients(&values, degrees, &slices))
-        })
-        .collect::<Option<Vec<_>>>()
+    differences(
+        std::iter::once(None)
+            .chain((0..points).map(Some))
+            .map(|b| {
+                let values = grid.iter().map(|at| value(b, at)).collect::<Option<Vec<_>>>()?;
+                Some(coefficients(&values, degrees, &slices))
+            })
+            .collect::<Option<Vec<_>>>()?,
+    )
 }
 
 /// The call written from `value(basis polygon, parameter values)`: `points` the control
@@ -209,8 +212,7 @@ fn interpolated(
     let sizes: Vec<usize> = degrees.iter().map(|d| d + 1).collect();
     let mut terms = Vec::new();
     for (k, z) in zero.iter().enumerate() {
-        let coeffs: Vec<(Expr, BigRational)> = points.iter().cloned().zip(units.iter().map(|u| u[k].clone())).collect();
-        let a = affine(z, &coeffs);
+        let a = affine(z, points.iter().zip(units.iter().map(|u| &u[k])));
         if matches!(&a, Expr::Num(x) if x.is_zero()) {
             continue;
         }

@@ -134,6 +134,11 @@ impl Proof {
         &self.data
     }
 
+    /// What the kernel checked, taken out of the proof (for a report that keeps it).
+    pub fn into_data(self) -> certificate::Data {
+        self.data
+    }
+
     /// The same proof with the goal its for-every obligations were built from, as its data.
     pub fn with_goal(mut self, goal: certificate::Symbolic) -> Proof {
         if self.method.is_for_every() {
