@@ -1,7 +1,9 @@
 //! The library's operations on the symbolic polygon or net written out as what the library
 //! computes: each result is linear in the control points, so running the library on the zero
 //! polygon and on each unit polygon gives its coefficients, and the call is written as the
-//! resulting curve (`Σ_i (c_i0 + Σ_j c_ij b[j]) B(i, d, t)`) or point. Operations whose result
+//! resulting curve (`Σ_i (c_i0 + Σ_j c_ij b[j]) B(i, d, t)`) or point. The operations act on
+//! each coordinate alike, so one run on the polygon whose control point `j` is the unit vector
+//! `e_j` gives every unit polygon's result at once ([`Basis`]). Operations whose result
 //! depends on a parameter other than the curve's (`left(b, t0, t)`, `isou(b, u0, v)`, the
 //! evaluation routines `bsum`, `vfirst`, `sbsum`) are interpolated in it (`routines`).
 //!
@@ -14,11 +16,18 @@ use super::super::methods::{NetMethod, PolygonMethod};
 use super::super::objects::{Exact, NumEnv};
 use super::routines::{tables, Key};
 use crate::curve::BezierCurve;
+use crate::exact::SmallRational;
 use crate::point::Point;
+use crate::scalar::Ring as _;
 use crate::surface::BezierSurface;
 use num_rational::BigRational;
-use num_traits::{One, Zero};
+use num_traits::Zero;
 use std::collections::BTreeMap;
+
+/// The library runs on `SmallRational` here: the same exact values as on `BigRational`
+/// (machine words while they fit, `BigRational` beyond), at a fraction of num-bigint's cost
+/// (the basis polygons' values are small).
+pub(super) type Q = SmallRational;
 
 /// A library result on one basis polygon, as a row of [`differences`]: a curve (its control
 /// points) or a point.
@@ -27,12 +36,56 @@ enum Result1<'a> {
     Point(BigRational),
 }
 
-pub(super) fn coord(p: &Point<BigRational>) -> BigRational {
-    p.coords()[0].clone()
+/// The polygons the library runs on to write a call out: the zero polygon (one coordinate),
+/// and all the unit polygons at once, as the polygon whose control point `j` is the unit
+/// vector `e_j` (its operations act on each coordinate alike, so coordinate `k` of a result
+/// there is the result on the unit polygon of point `k`).
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(super) enum Basis {
+    Zero,
+    Units,
 }
 
-fn curve_points(c: &BezierCurve<BigRational>) -> Vec<BigRational> {
-    c.points().iter().map(coord).collect()
+impl Basis {
+    /// Control point `j` of `len` on this basis.
+    fn point(self, len: usize, j: usize) -> Option<Point<Q>> {
+        let coords = match self {
+            Basis::Zero => vec![Q::zero()],
+            Basis::Units => (0..len).map(|k| if k == j { Q::one() } else { Q::zero() }).collect(),
+        };
+        Point::new(coords).ok()
+    }
+
+    /// The polygon of `len` control points on this basis.
+    pub(super) fn polygon(self, len: usize) -> Option<BezierCurve<Q>> {
+        let points = (0..len).map(|j| self.point(len, j)).collect::<Option<Vec<_>>>()?;
+        BezierCurve::new(points).ok()
+    }
+
+    /// The `rows × cols` net on this basis (its points numbered row by row).
+    pub(super) fn net(self, rows: usize, cols: usize) -> Option<BezierSurface<Q>> {
+        let net = (0..rows)
+            .map(|i| (0..cols).map(|j| self.point(rows * cols, i * cols + j)).collect())
+            .collect::<Option<Vec<Vec<_>>>>()?;
+        BezierSurface::new(net).ok()
+    }
+}
+
+/// The values of one result on every basis polygon, from its runs on the zero polygon and on
+/// the unit vectors (`len` of them): the zero polygon's row, then unit polygon `k`'s, each a
+/// list of one value per point of the result.
+pub(super) fn by_basis(zero: &[Point<Q>], units: &[Point<Q>], len: usize) -> Option<Vec<Vec<Q>>> {
+    if zero.len() != units.len() || units.iter().any(|p| p.coords().len() != len) {
+        return None;
+    }
+    let zero_row = zero.iter().map(|p| p.coords()[0].clone()).collect();
+    let unit_rows = (0..len).map(|k| units.iter().map(|p| p.coords()[k].clone()).collect());
+    Some(std::iter::once(zero_row).chain(unit_rows).collect())
+}
+
+/// [`by_basis`] as exact rationals.
+fn big(rows: Vec<Vec<Q>>) -> Vec<Vec<BigRational>> {
+    rows.iter().map(|r| r.iter().map(Q::to_big).collect()).collect()
 }
 
 /// `c0 + Σ_k d_k · point_k` with the zero terms left out: `d_k` is point k's coefficient, its
@@ -98,32 +151,6 @@ fn write(points: &[Expr], results: &[Result1], t: Option<&Expr>) -> Option<Expr>
     }
 }
 
-pub(super) fn unit(len: usize, one: Option<usize>) -> Vec<BigRational> {
-    (0..len)
-        .map(|j| {
-            if Some(j) == one {
-                BigRational::one()
-            } else {
-                BigRational::zero()
-            }
-        })
-        .collect()
-}
-
-/// The `rows × cols` net of one coordinate that is 1 at control point `one` (row by row) and 0
-/// elsewhere (`None`: the zero net).
-pub(super) fn unit_net(rows: usize, cols: usize, one: Option<usize>) -> Option<BezierSurface<BigRational>> {
-    let net = unit(rows * cols, one)
-        .chunks(cols)
-        .map(|row| {
-            row.iter()
-                .map(|x| Point::new(vec![x.clone()]).ok())
-                .collect::<Option<Vec<_>>>()
-        })
-        .collect::<Option<Vec<_>>>()?;
-    BezierSurface::new(net).ok()
-}
-
 /// A library operation on the polygon or net of `env` written out (`None`: not one, or one
 /// that is not written out).
 pub(super) fn written<T: Exact>(
@@ -150,32 +177,24 @@ pub(super) fn written<T: Exact>(
                 PolygonMethod::Deriv | PolygonMethod::Derivp => PolygonMethod::Deriv,
                 _ => return None,
             };
-            let on = |one: Option<usize>| -> Option<Vec<BigRational>> {
-                let pts = unit(n, one)
-                    .into_iter()
-                    .map(|x| Point::new(vec![x]).ok())
-                    .collect::<Option<Vec<_>>>()?;
-                let c = BezierCurve::new(pts).ok()?;
+            let on = |b: Basis| -> Option<Vec<Point<Q>>> {
+                let c = b.polygon(n)?;
+                let zero = || Some(vec![Point::new(vec![Q::zero(); c.dim()]).ok()?]);
                 Some(match of {
-                    PolygonMethod::Elev => curve_points(&c.elevate_by(r).ok()?),
-                    PolygonMethod::Steps => curve_points(&c.elevate_steps(r).ok()?),
+                    PolygonMethod::Elev => c.elevate_by(r).ok()?.points().to_vec(),
+                    PolygonMethod::Steps => c.elevate_steps(r).ok()?.points().to_vec(),
                     // a derivative of order ≥ the polygon's length is the zero curve
-                    _ if r >= n => vec![BigRational::zero()],
-                    _ => c
-                        .derivative(r)
-                        .ok()
-                        .map_or(vec![BigRational::zero()], |d| curve_points(&d)),
+                    _ if r >= n => zero()?,
+                    _ => match c.derivative(r) {
+                        Ok(d) => d.points().to_vec(),
+                        Err(_) => zero()?,
+                    },
                 })
             };
             // The curves on each basis polygon, computed once per run: every case over polygons
             // of one length writes the same call, and a point of the result is picked from them.
             let table = tables(Key::Results(of, n, r), || {
-                differences(
-                    std::iter::once(None)
-                        .chain((0..n).map(Some))
-                        .map(on)
-                        .collect::<Option<_>>()?,
-                )
+                differences(big(by_basis(&on(Basis::Zero)?, &on(Basis::Units)?, n)?))
             })?;
             let point = match m {
                 PolygonMethod::Elevp => Some(int(2)?),
@@ -190,7 +209,7 @@ pub(super) fn written<T: Exact>(
                         usize::try_from(i)
                             .ok()
                             .and_then(|i| c.get(i))
-                            .map_or_else(BigRational::zero, Clone::clone),
+                            .map_or_else(<BigRational as Zero>::zero, Clone::clone),
                     ),
                     None => Result1::Curve(c),
                 })
@@ -215,23 +234,20 @@ pub(super) fn written<T: Exact>(
     let k = usize::try_from(int(1)?).ok().filter(|&k| k < 4)?;
     // All four boundaries (or corners) of the basis nets, one table per operation and size:
     // row `k·bases + b` is side `k` on basis net `b`; a corner is listed as a one-point curve.
-    let on = |one: Option<usize>| -> Option<Vec<Vec<BigRational>>> {
-        let s = unit_net(rows, cols, one)?;
+    let on = |b: Basis| -> Option<Vec<Vec<Point<Q>>>> {
+        let s = b.net(rows, cols)?;
         Some(match m {
-            NetMethod::Bnd => s.boundary().iter().map(curve_points).collect(),
-            NetMethod::Corner => s.corners().iter().map(|c| vec![coord(c)]).collect(),
+            NetMethod::Bnd => s.boundary().iter().map(|c| c.points().to_vec()).collect(),
+            NetMethod::Corner => s.corners().iter().map(|c| vec![c.clone()]).collect(),
             _ => return None,
         })
     };
     let bases = rows * cols + 1;
     let table = tables(Key::NetResults(m, rows, cols), || {
-        let per_basis = std::iter::once(None)
-            .chain((0..rows * cols).map(Some))
-            .map(on)
-            .collect::<Option<Vec<_>>>()?;
+        let (zero, units) = (on(Basis::Zero)?, on(Basis::Units)?);
         let mut table = Vec::with_capacity(4 * bases);
-        for side in 0..4 {
-            table.extend(differences(per_basis.iter().map(|s| s[side].clone()).collect())?);
+        for (z, u) in zero.iter().zip(&units) {
+            table.extend(differences(big(by_basis(z, u, rows * cols)?))?);
         }
         Some(table)
     })?;

@@ -12,9 +12,8 @@
 //! at d + 1 points); the certificate then states the identity about that polynomial.
 
 use super::super::methods::{NetMethod, PolygonMethod};
-use super::library::{affine, differences, unit, unit_net};
+use super::library::{affine, by_basis, differences, Basis, Q};
 use crate::curve::BezierCurve;
-use crate::exact::SmallRational;
 use crate::point::Point;
 use crate::surface::BezierSurface;
 use num_rational::BigRational;
@@ -113,18 +112,14 @@ fn memo<K: Hash + Eq>(cache: &'static Memo<K>, key: K, make: impl FnOnce() -> Op
     Some(table)
 }
 
-/// The tensor Bernstein coefficients of the values on a grid (the last axis fastest),
-/// computed on `SmallRational` (the same exact values; most entries fit machine words).
-fn coefficients<M: AsRef<[Vec<BigRational>]>>(
-    values: &[BigRational],
-    degrees: &[usize],
-    inverses: &[M],
-) -> Vec<BigRational> {
+/// The tensor Bernstein coefficients of the values on a grid (the last axis fastest), by each
+/// axis' inverse matrix ([`to_bernstein`] on `SmallRational`: the same exact values, most
+/// entries machine words).
+fn coefficients(values: &[Q], degrees: &[usize], inverses: &[Vec<Vec<Q>>]) -> Vec<BigRational> {
     use crate::scalar::Ring as _;
-    let mut c: Vec<Q> = values.iter().map(Q::from).collect();
+    let mut c: Vec<Q> = values.to_vec();
     let sizes: Vec<usize> = degrees.iter().map(|d| d + 1).collect();
-    for (axis, inv) in inverses.iter().map(AsRef::as_ref).enumerate() {
-        let inv: Vec<Vec<Q>> = inv.iter().map(|row| row.iter().map(Q::from).collect()).collect();
+    for (axis, inv) in inverses.iter().enumerate() {
         let stride: usize = sizes[axis + 1..].iter().product();
         let len = sizes[axis];
         let mut next = c.clone();
@@ -140,6 +135,11 @@ fn coefficients<M: AsRef<[Vec<BigRational>]>>(
         c = next;
     }
     c.iter().map(Q::to_big).collect()
+}
+
+/// An inverse matrix on `SmallRational`, for [`coefficients`].
+fn small(m: &Matrix) -> Vec<Vec<Q>> {
+    m.iter().map(|row| row.iter().map(Q::from).collect()).collect()
 }
 
 /// Which library operation a table of coefficients is of: everything `value` depends on in
@@ -167,14 +167,18 @@ pub(super) fn tables(key: Key, make: impl FnOnce() -> Option<Matrix>) -> Option<
 }
 
 /// The tensor Bernstein coefficients of `value` on the zero polygon and on each of the
-/// `points` unit polygons, from its values at `d + 1` nodes of each axis, as [`differences`].
+/// `points` unit polygons, from its values at `d + 1` nodes of each axis, as [`differences`]:
+/// `value(basis, at)` is the library's point there (one coordinate on [`Basis::Zero`], one per
+/// unit polygon on [`Basis::Units`]).
 fn per_basis(
     points: usize,
     degrees: &[usize],
-    value: impl Fn(Option<usize>, &[BigRational]) -> Option<BigRational>,
+    value: impl Fn(Basis, &[BigRational]) -> Option<Point<Q>>,
 ) -> Option<Vec<Vec<BigRational>>> {
-    let inverses = degrees.iter().map(|&d| inverse(d)).collect::<Option<Vec<_>>>()?;
-    let slices: Vec<&[Vec<BigRational>]> = inverses.iter().map(|m| m.as_slice()).collect();
+    let inverses = degrees
+        .iter()
+        .map(|&d| Some(small(&*inverse(d)?)))
+        .collect::<Option<Vec<_>>>()?;
     let grid: Vec<Vec<BigRational>> = degrees.iter().fold(vec![Vec::new()], |acc, &d| {
         acc.iter()
             .flat_map(|p| {
@@ -186,15 +190,9 @@ fn per_basis(
             })
             .collect()
     });
-    differences(
-        std::iter::once(None)
-            .chain((0..points).map(Some))
-            .map(|b| {
-                let values = grid.iter().map(|at| value(b, at)).collect::<Option<Vec<_>>>()?;
-                Some(coefficients(&values, degrees, &slices))
-            })
-            .collect::<Option<Vec<_>>>()?,
-    )
+    let on = |b: Basis| grid.iter().map(|at| value(b, at)).collect::<Option<Vec<_>>>();
+    let values = by_basis(&on(Basis::Zero)?, &on(Basis::Units)?, points)?;
+    differences(values.iter().map(|v| coefficients(v, degrees, &inverses)).collect())
 }
 
 /// The call written from `value(basis polygon, parameter values)`: `points` the control
@@ -204,7 +202,7 @@ fn interpolated(
     key: Key,
     points: &[Expr],
     axes: &[(usize, Expr)],
-    value: impl Fn(Option<usize>, &[BigRational]) -> Option<BigRational>,
+    value: impl Fn(Basis, &[BigRational]) -> Option<Point<Q>>,
 ) -> Option<Expr> {
     let degrees: Vec<usize> = axes.iter().map(|a| a.0).collect();
     let per_basis = tables(key, || per_basis(points.len(), &degrees, value))?;
@@ -234,47 +232,12 @@ fn interpolated(
     Some(terms.into_iter().reduce(Expr::add).unwrap_or_else(|| Expr::int(0)))
 }
 
-/// The library runs on `SmallRational` here: the same exact values as on `BigRational`
-/// (machine words while they fit, `BigRational` beyond), so the same tables, at a fraction of
-/// num-bigint's cost (the unit polygons' values are small).
-type Q = SmallRational;
-
-fn curve(values: Vec<BigRational>) -> Option<BezierCurve<Q>> {
-    BezierCurve::new(
-        values
-            .into_iter()
-            .map(|x| Point::new(vec![Q::from(x)]).ok())
-            .collect::<Option<Vec<_>>>()?,
-    )
-    .ok()
-}
-
-/// The one coordinate of a point, as a `BigRational`.
-fn first(p: &Point<Q>) -> BigRational {
-    p.coords()[0].to_big()
-}
-
-/// Control point `i` of a curve (0 when there is none, as `prove` reads it).
-fn pick(c: &BezierCurve<Q>, i: i64) -> BigRational {
-    usize::try_from(i)
-        .ok()
-        .and_then(|i| c.points().get(i))
-        .map_or_else(BigRational::zero, first)
-}
-
-/// [`unit_net`] on `SmallRational`.
-fn net_on(rows: usize, cols: usize, one: Option<usize>) -> Option<BezierSurface<Q>> {
-    let big = unit_net(rows, cols, one)?;
-    let net = big
-        .net()
-        .iter()
-        .map(|row| {
-            row.iter()
-                .map(|p| Point::new(vec![Q::from(&p.coords()[0])]).ok())
-                .collect::<Option<Vec<_>>>()
-        })
-        .collect::<Option<Vec<_>>>()?;
-    BezierSurface::new(net).ok()
+/// Control point `i` of a curve (the origin when there is none, as `prove` reads it).
+fn pick(c: &BezierCurve<Q>, i: i64) -> Option<Point<Q>> {
+    match usize::try_from(i).ok().and_then(|i| c.points().get(i)) {
+        Some(p) => Some(p.clone()),
+        None => Point::new(vec![Q::from(0); c.dim()]).ok(),
+    }
 }
 
 /// A polygon operation at a symbolic parameter, written out (`None`: another operation).
@@ -283,18 +246,18 @@ fn net_on(rows: usize, cols: usize, one: Option<usize>) -> Option<BezierSurface<
 pub(super) fn polygon(m: PolygonMethod, points: &[Expr], args: &[Expr], r: Option<i64>) -> Option<Expr> {
     let len = points.len();
     let n = len.checked_sub(1)?;
-    let on = |b: Option<usize>| curve(unit(len, b));
+    let on = |b: Basis| b.polygon(len);
     match m {
         PolygonMethod::Bsum => interpolated(
             Key::Polygon(m, len, None),
             points,
             &[(n, args.get(1)?.clone())],
-            |b, at| Some(first(&on(b)?.eval_bernstein(&Q::from(&at[0])))),
+            |b, at| Some(on(b)?.eval_bernstein(&Q::from(&at[0]))),
         ),
         PolygonMethod::Left | PolygonMethod::Right => {
             let left = m == PolygonMethod::Left;
             // The parts' degree, read off the library on the zero polygon, as `prove` does.
-            let deg = on(None)?.split_at(&Q::from(0)).0.degree();
+            let deg = on(Basis::Zero)?.split_at(&Q::from(0)).0.degree();
             let axes = [(n, args.get(1)?.clone()), (deg, args.get(2)?.clone())];
             // The grid's last axis runs fastest: one split serves a whole row of `t` values.
             let last = RefCell::new(None);
@@ -306,7 +269,7 @@ pub(super) fn polygon(m: PolygonMethod, points: &[Expr], args: &[Expr], r: Optio
                     *last = Some((b, at[0].clone(), if left { l } else { r }));
                 }
                 let (_, _, part) = last.as_ref()?;
-                Some(first(&part.eval(&Q::from(&at[1]))))
+                Some(part.eval(&Q::from(&at[1])))
             })
         }
         PolygonMethod::Leftp | PolygonMethod::Rightp => {
@@ -317,7 +280,7 @@ pub(super) fn polygon(m: PolygonMethod, points: &[Expr], args: &[Expr], r: Optio
                 &[(n, args.get(1)?.clone())],
                 |b, at| {
                     let (lc, rc) = on(b)?.split_at(&Q::from(&at[0]));
-                    Some(pick(if left { &lc } else { &rc }, r))
+                    pick(if left { &lc } else { &rc }, r)
                 },
             )
         }
@@ -326,13 +289,13 @@ pub(super) fn polygon(m: PolygonMethod, points: &[Expr], args: &[Expr], r: Optio
 }
 
 /// The basis net, the parameter and the iso-curve a row of the grid shares.
-type IsoRow = (Option<usize>, BigRational, BezierSurface<Q>, Option<BezierCurve<Q>>);
+type IsoRow = (Basis, BigRational, BezierSurface<Q>, Option<BezierCurve<Q>>);
 
 /// A net operation at symbolic parameters, written out (`None`: another operation).
 /// `points` the net's control points row by row (`rows × cols`).
 pub(super) fn net(m: NetMethod, points: &[Expr], (rows, cols): (usize, usize), args: &[Expr]) -> Option<Expr> {
     let (dm, dn) = (rows.checked_sub(1)?, cols.checked_sub(1)?);
-    let on = |b: Option<usize>| net_on(rows, cols, b);
+    let on = |b: Basis| b.net(rows, cols);
     let (x1, x2) = (args.get(1)?.clone(), args.get(2)?.clone());
     let axes = match m {
         NetMethod::Vfirst | NetMethod::Sbsum | NetMethod::Isou => [(dm, x1), (dn, x2)],
@@ -356,12 +319,12 @@ pub(super) fn net(m: NetMethod, points: &[Expr], (rows, cols): (usize, usize), a
         }
         let (_, _, s, iso) = last.as_ref()?;
         let (x, y) = (Q::from(&at[0]), Q::from(&at[1]));
-        Some(first(&match (m, iso) {
+        Some(match (m, iso) {
             (NetMethod::Vfirst, _) => s.eval_v_first(&x, &y),
             (NetMethod::Sbsum, _) => s.eval_bernstein(&x, &y),
             (_, Some(c)) => c.eval(&y),
             _ => return None,
-        }))
+        })
     })
 }
 
@@ -390,16 +353,20 @@ mod tests {
             let inv = to_bernstein(d).unwrap();
             // The values of B_j^d at the nodes, mapped back, are the unit coefficients.
             for j in 0..=d {
-                let values: Vec<BigRational> = nodes(d)
+                let values: Vec<Q> = nodes(d)
                     .iter()
                     .map(|x| {
                         BigRational::from_integer(crate::bernstein::binomial_signed(d as i64, j as i64))
                             * pow(x, j)
                             * pow(&(BigRational::one() - x), d - j)
                     })
+                    .map(Q::from)
                     .collect();
-                let c = coefficients(&values, &[d], std::slice::from_ref(&inv));
-                assert_eq!(c, unit(d + 1, Some(j)), "d = {d}, j = {j}");
+                let c = coefficients(&values, &[d], &[small(&inv)]);
+                let unit: Vec<BigRational> = (0..=d)
+                    .map(|k| BigRational::from_integer(i64::from(k == j).into()))
+                    .collect();
+                assert_eq!(c, unit, "d = {d}, j = {j}");
             }
         }
     }

@@ -9,8 +9,9 @@ use crate::scalar::Ring;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
-use std::collections::BTreeMap;
+use smallvec::SmallVec;
 use std::fmt;
+use std::sync::Arc;
 
 /// What the evaluator computes in: a [`Ring`] with the rational constants, a checked
 /// division and a decidable (or undecidable) equality.
@@ -180,8 +181,10 @@ impl Alg for crate::quadratic::QuadraticIrrational {
 /// `affine` is the degree in a symbolic control polygon (must stay ≤ 1).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Deg {
-    /// `var → (num, den)`; missing vars are `(0, 0)`.
-    pub vars: BTreeMap<String, (u64, u64)>,
+    /// `var → (num, den)`, sorted by name, each name once; missing vars are `(0, 0)`. A
+    /// goal has a few parameters: kept inline, names shared, so the bounds of a long written
+    /// side are derived without allocating.
+    vars: SmallVec<[(Arc<str>, (u64, u64)); 2]>,
     /// Degree in the symbolic control points.
     pub poly: u64,
 }
@@ -191,47 +194,72 @@ const DEG_LIMIT: u64 = 1 << 40;
 impl Deg {
     /// The bound of a single parameter `v`.
     pub fn var(v: &str) -> Deg {
-        let mut vars = BTreeMap::new();
-        vars.insert(v.to_string(), (1, 0));
+        let mut vars = SmallVec::new();
+        vars.push((Arc::from(v), (1, 0)));
         Deg { vars, poly: 0 }
     }
     /// A control point of a symbolic polygon (degree 1 in the polygon, 0 in the parameters).
     pub fn control_point() -> Deg {
         Deg {
-            vars: BTreeMap::new(),
+            vars: SmallVec::new(),
             poly: 1,
         }
     }
     /// `(num, den)` for `v`.
     pub fn get(&self, v: &str) -> (u64, u64) {
-        self.vars.get(v).copied().unwrap_or((0, 0))
+        self.vars.iter().find(|(k, _)| &**k == v).map_or((0, 0), |(_, nd)| *nd)
     }
+    /// Each parameter with its `(num, den)`, in name order.
+    pub fn vars(&self) -> impl Iterator<Item = (&str, (u64, u64))> {
+        self.vars.iter().map(|(k, nd)| (&**k, *nd))
+    }
+    /// `f` of both bounds in each parameter of either (a merge of the two sorted lists).
     fn zip(&self, o: &Deg, poly: u64, f: impl Fn((u64, u64), (u64, u64)) -> (u64, u64)) -> Deg {
-        let mut vars = BTreeMap::new();
-        for k in self.vars.keys().chain(o.vars.keys()) {
-            let (n, d) = f(self.get(k), o.get(k));
-            vars.insert(k.clone(), (n.min(DEG_LIMIT), d.min(DEG_LIMIT)));
+        let mut vars = SmallVec::new();
+        let (mut a, mut b) = (self.vars.iter().peekable(), o.vars.iter().peekable());
+        loop {
+            let (k, x, y) = match (a.peek(), b.peek()) {
+                (None, None) => break,
+                (Some((ka, xa)), Some((kb, _))) if ka < kb => {
+                    a.next();
+                    (ka, *xa, (0, 0))
+                }
+                (Some((ka, xa)), Some((kb, xb))) if ka == kb => {
+                    a.next();
+                    b.next();
+                    (ka, *xa, *xb)
+                }
+                (_, Some((kb, xb))) => {
+                    b.next();
+                    (kb, (0, 0), *xb)
+                }
+                (Some((ka, xa)), None) => {
+                    a.next();
+                    (ka, *xa, (0, 0))
+                }
+            };
+            let (n, d) = f(x, y);
+            vars.push((Arc::clone(k), (n.min(DEG_LIMIT), d.min(DEG_LIMIT))));
         }
         Deg { vars, poly }
+    }
+    /// Each parameter's bound mapped by `f`, and the control points' degree `poly`.
+    fn map(&self, poly: u64, f: impl Fn((u64, u64)) -> (u64, u64)) -> Deg {
+        Deg {
+            vars: self.vars.iter().map(|(k, nd)| (Arc::clone(k), f(*nd))).collect(),
+            poly,
+        }
     }
     /// The bound of `g ↦ p(g)` for a polynomial `p` of degree `n` with constant coefficients
     /// (`Σ c_k P^k Q^(n-k) / Q^n`). The bound is a function of the inner bound in every
     /// component: a `g` of degree `d` in the control points gives degree `n·d` in them.
     pub fn compose(&self, n: u64) -> Deg {
-        let mut vars = BTreeMap::new();
-        for (k, &(num, den)) in &self.vars {
-            vars.insert(
-                k.clone(),
-                (
-                    n.saturating_mul(num.max(den)).min(DEG_LIMIT),
-                    n.saturating_mul(den).min(DEG_LIMIT),
-                ),
-            );
-        }
-        Deg {
-            vars,
-            poly: n.saturating_mul(self.poly).min(DEG_LIMIT),
-        }
+        self.map(n.saturating_mul(self.poly).min(DEG_LIMIT), |(num, den)| {
+            (
+                n.saturating_mul(num.max(den)).min(DEG_LIMIT),
+                n.saturating_mul(den).min(DEG_LIMIT),
+            )
+        })
     }
     /// The bound of a value affine in the symbolic control points with coefficients bounded
     /// by `self` (a control point times `self`).
@@ -241,17 +269,16 @@ impl Deg {
     }
     /// Whether the value is a polynomial in every parameter (no parameter in a denominator).
     pub fn is_polynomial(&self) -> bool {
-        self.vars.values().all(|&(_, d)| d == 0)
+        self.vars.iter().all(|(_, (_, d))| *d == 0)
     }
 }
 
 impl fmt::Display for Deg {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let parts: Vec<String> = self
-            .vars
-            .iter()
-            .filter(|(_, &(n, d))| n > 0 || d > 0)
-            .map(|(v, &(n, d))| {
+            .vars()
+            .filter(|&(_, (n, d))| n > 0 || d > 0)
+            .map(|(v, (n, d))| {
                 if d == 0 {
                     format!("{v}:{n}")
                 } else {
@@ -324,19 +351,9 @@ impl Alg for Deg {
     fn pow(&self, k: i64) -> Result<Self> {
         check_index(k)?;
         let m = k.unsigned_abs();
-        let scaled = Deg {
-            vars: self
-                .vars
-                .iter()
-                .map(|(v, &(n, d))| {
-                    (
-                        v.clone(),
-                        (n.saturating_mul(m).min(DEG_LIMIT), d.saturating_mul(m).min(DEG_LIMIT)),
-                    )
-                })
-                .collect(),
-            poly: self.poly.saturating_mul(m).min(DEG_LIMIT),
-        };
+        let scaled = self.map(self.poly.saturating_mul(m).min(DEG_LIMIT), |(n, d)| {
+            (n.saturating_mul(m).min(DEG_LIMIT), d.saturating_mul(m).min(DEG_LIMIT))
+        });
         if k < 0 {
             Deg::default().div(&scaled)
         } else {

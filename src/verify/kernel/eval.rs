@@ -627,7 +627,7 @@ pub fn check_symbolic_degrees(
     for e in exprs {
         let d = Evaluator::new(&env, ints.clone()).eval(e)?;
         for x in d.entries() {
-            for (v, &(num, den)) in &x.vars {
+            for (v, (num, den)) in x.vars() {
                 if num.max(den) > MAX_SYMBOLIC_DEGREE {
                     return Err(Error::TooLarge {
                         what: "degree of a symbolic expansion",
