@@ -44,23 +44,26 @@ pub const MAX_FILE_BYTES: u64 = 4 << 20;
 /// Most certificate files `check` reads from one directory.
 pub const MAX_FILES: usize = 10_000;
 
-/// The calls a re-checkable goal may make: the built-in functions that need no claim object.
-const BUILTINS: &[&str] = &[
-    "B",
-    "C",
-    "binom",
-    "dot",
-    "comp",
-    "det",
-    "inv",
-    "transpose",
-    "rows",
-    "cols",
-    "integral",
-    "__dB",
-    "__dpow",
-    "delta",
-];
+/// Whether a re-checkable goal may call `name`: a built-in function that needs no claim
+/// object (a `match`: written-out sides call `B` many times).
+fn builtin(name: &str) -> bool {
+    matches!(
+        name,
+        "B" | "C"
+            | "binom"
+            | "dot"
+            | "comp"
+            | "det"
+            | "inv"
+            | "transpose"
+            | "rows"
+            | "cols"
+            | "integral"
+            | "__dB"
+            | "__dpow"
+            | "delta"
+    )
+}
 
 /// The method's name in a certificate.
 fn method_name(m: Method) -> &'static str {
@@ -116,14 +119,15 @@ fn self_contained(text: &str, known: &[String], points: &[&String]) -> std::resu
 
 /// Why an expression cannot be re-checked alone (a claim object, a control point not among
 /// `points`, a name that is not a symbol, a `sqrt` that is not of one square-free integer
-/// constant). Its printed text parses back to it (`tests` of the printer: `expr_tests.rs`).
-pub(super) fn contained(e: &Expr, known: &[String], points: &[&String]) -> std::result::Result<(), String> {
+/// constant), or the radicand of its `sqrt` (`None`: there is none). Its printed text parses
+/// back to it (`tests` of the printer: `expr_tests.rs`).
+pub(super) fn contained(e: &Expr, known: &[String], points: &[&String]) -> std::result::Result<Option<i64>, String> {
     let mut bad: Option<String> = None;
     e.visit(&mut |x| match x {
         Expr::Index(name, _) if !points.contains(&name) => {
             bad.get_or_insert(format!("the control points {name}[…]"));
         }
-        Expr::Call(name, _) if name != "sqrt" && !BUILTINS.contains(&name.as_str()) => {
+        Expr::Call(name, _) if name != "sqrt" && !builtin(name) => {
             bad.get_or_insert(format!("the claim's object {name}(…)"));
         }
         _ => {}
@@ -136,8 +140,7 @@ pub(super) fn contained(e: &Expr, known: &[String], points: &[&String]) -> std::
     if let Some(why) = bad {
         return Err(why);
     }
-    sqrt::radicand([e])?;
-    Ok(())
+    sqrt::radicand([e])
 }
 
 fn rational_entries(values: &[String]) -> bool {
@@ -164,34 +167,75 @@ fn rational_text(r: &BigRational) -> String {
 
 /// The goal of equalities and its field's radicand (`None`: the rationals), or why it
 /// cannot be re-checked alone.
-fn goal(eqs: &[&Equality]) -> std::result::Result<(Json, Option<i64>), String> {
-    let syms = symbols(eqs)?;
+fn goal<'e>(eqs: Vec<&'e Equality>) -> std::result::Result<(Goal<'e>, Option<i64>), String> {
+    let syms = symbols(&eqs)?;
     let known: Vec<String> = syms.keys().cloned().collect();
-    for eq in eqs {
+    let mut radicand = None;
+    for eq in &eqs {
         if eq.polygons != eq.control_points.len() + 1 {
             return Err("the basis polygons are not the zero and the unit ones".into());
         }
         let points: Vec<&String> = eq.control_points.iter().map(|(n, _)| n).collect();
         for side in [&eq.lhs, &eq.rhs] {
-            contained(side, &known, &points).map_err(|why| format!("the goal uses {why}"))?;
+            let d = contained(side, &known, &points).map_err(|why| format!("the goal uses {why}"))?;
+            radicand = sqrt::same_field(radicand, d)?;
         }
     }
-    let radicand = sqrt::radicand(eqs.iter().flat_map(|eq| [&eq.lhs, &eq.rhs]))?;
-    let symbols: Vec<Json> = syms.iter().map(|(n, s)| json!({"name": n, "sort": s})).collect();
-    let equalities: Vec<Json> = eqs
-        .iter()
-        .map(|eq| {
-            let mut e = json!({"ints": ints_json(&eq.ints), "lhs": eq.lhs.to_string(), "rhs": eq.rhs.to_string()});
-            if !eq.control_points.is_empty() {
-                e["control_points"] = polygon::points_json(&eq.control_points);
+    Ok((Goal { symbols: syms, eqs }, radicand))
+}
+
+/// A goal of equalities as it is written: `{"equalities": […], "relation": "=", "symbols":
+/// […]}`, each side printed straight into the file (a side written out can be long).
+struct Goal<'e> {
+    symbols: BTreeMap<String, &'static str>,
+    eqs: Vec<&'e Equality>,
+}
+
+impl serde::Serialize for Goal<'_> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        use serde::ser::{SerializeMap, SerializeSeq};
+        struct Side<'a>(&'a Expr);
+        impl serde::Serialize for Side<'_> {
+            fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+                s.collect_str(self.0)
             }
-            e
-        })
-        .collect();
-    Ok((
-        json!({"relation": "=", "symbols": symbols, "equalities": equalities}),
-        radicand,
-    ))
+        }
+        struct Eq<'a>(&'a Equality);
+        impl serde::Serialize for Eq<'_> {
+            fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+                let eq = self.0;
+                let points = !eq.control_points.is_empty();
+                let mut m = s.serialize_map(Some(3 + usize::from(points)))?;
+                if points {
+                    m.serialize_entry("control_points", &polygon::points_json(&eq.control_points))?;
+                }
+                m.serialize_entry("ints", &ints_json(&eq.ints))?;
+                m.serialize_entry("lhs", &Side(&eq.lhs))?;
+                m.serialize_entry("rhs", &Side(&eq.rhs))?;
+                m.end()
+            }
+        }
+        struct Eqs<'a>(&'a [&'a Equality]);
+        impl serde::Serialize for Eqs<'_> {
+            fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+                let mut seq = s.serialize_seq(Some(self.0.len()))?;
+                for eq in self.0 {
+                    seq.serialize_element(&Eq(eq))?;
+                }
+                seq.end()
+            }
+        }
+        let symbols: Vec<Json> = self
+            .symbols
+            .iter()
+            .map(|(n, s)| json!({"name": n, "sort": s}))
+            .collect();
+        let mut m = s.serialize_map(Some(3))?;
+        m.serialize_entry("equalities", &Eqs(&self.eqs))?;
+        m.serialize_entry("relation", "=")?;
+        m.serialize_entry("symbols", &symbols)?;
+        m.end()
+    }
 }
 
 fn refutation_json(r: &Refutation) -> Json {
@@ -206,12 +250,13 @@ fn refutation_json(r: &Refutation) -> Json {
     out
 }
 
+/// A sampled proof's `goal` and `sampling` data, serialized as they are written (the others'
+/// data is in the certificate's map).
+type Direct<'o> = Option<(Goal<'o>, Sampling<'o>)>;
+
 /// The data part of a certificate: `check: kernel` with the goal and the method's data, or
 /// `check: none` with the reason.
-fn data_fields<'o>(
-    o: &'o ClaimOutcome,
-    out: &mut Map<String, Json>,
-) -> std::result::Result<Option<Sampling<'o>>, String> {
+fn data_fields<'o>(o: &'o ClaimOutcome, out: &mut Map<String, Json>) -> std::result::Result<Direct<'o>, String> {
     let method = o.method.map_or("a check", method_name);
     match (&o.data, o.verdict) {
         (_, Verdict::Error) => Err("not decided (an error verdict): nothing to re-check".into()),
@@ -232,11 +277,9 @@ fn data_fields<'o>(
                     ));
                 }
             }
-            let refs: Vec<&Equality> = eqs.iter().collect();
-            let (goal, radicand) = goal(&refs)?;
+            let (goal, radicand) = goal(eqs.iter().collect())?;
             let sampling = Sampling::new(eqs, radicand)?;
-            out.insert("goal".into(), goal);
-            Ok(Some(sampling))
+            Ok(Some((goal, sampling)))
         }
         (Data::Nonneg(n), Verdict::Proved) => nonneg::fields(n, out).map(|()| None),
         (Data::Symbolic(s), Verdict::Proved) => {
@@ -269,7 +312,8 @@ fn data_fields<'o>(
                         points: Vec::new(),
                     })
                     .collect();
-            let (mut goal, radicand) = goal(&[&eq])?;
+            let (goal, radicand) = goal(vec![&eq])?;
+            let mut goal = serde_json::to_value(&goal).map_err(|e| e.to_string())?;
             if radicand.is_some() {
                 return Err("a counterexample's goal with sqrt: its values are not written in this version (not done)".into());
             }
@@ -298,14 +342,15 @@ fn data_fields<'o>(
 
 /// The certificate of one claim's outcome.
 pub fn certificate(o: &ClaimOutcome) -> Json {
-    let (mut out, sampling) = certificate_parts(o);
-    if let Some(sampling) = sampling {
-        match serde_json::to_value(&sampling) {
-            Ok(v) => {
+    let (mut out, direct) = certificate_parts(o);
+    if let Some((goal, sampling)) = direct {
+        match (serde_json::to_value(&goal), serde_json::to_value(&sampling)) {
+            (Ok(g), Ok(v)) => {
+                out.insert("goal".into(), g);
                 out.insert("sampling".into(), v);
             }
             // not reached: `Sampling::new` checked every value
-            Err(e) => {
+            (Err(e), _) | (_, Err(e)) => {
                 out.insert("check".into(), json!("none"));
                 out.insert("reason".into(), json!(e.to_string()));
             }
@@ -314,8 +359,8 @@ pub fn certificate(o: &ClaimOutcome) -> Json {
     Json::Object(out)
 }
 
-/// A certificate's fields, but for the `sampling` data (serialized as it is written).
-fn certificate_parts(o: &ClaimOutcome) -> (Map<String, Json>, Option<Sampling<'_>>) {
+/// A certificate's fields, but for a sampled proof's goal and data (serialized as written).
+fn certificate_parts(o: &ClaimOutcome) -> (Map<String, Json>, Direct<'_>) {
     let mut out = Map::new();
     out.insert("format".into(), json!(FORMAT));
     out.insert("version".into(), json!(VERSION));
@@ -332,10 +377,10 @@ fn certificate_parts(o: &ClaimOutcome) -> (Map<String, Json>, Option<Sampling<'_
     // The data the kernel recorded, written as it is: `prove --check` and `casteljau check`
     // re-read it (re-reading every file here would cost as much as checking them all).
     match data_fields(o, &mut data) {
-        Ok(sampling) => {
+        Ok(direct) => {
             out.insert("check".into(), json!("kernel"));
             out.extend(data);
-            (out, sampling)
+            (out, direct)
         }
         Err(reason) => {
             out.insert("check".into(), json!("none"));
@@ -346,23 +391,39 @@ fn certificate_parts(o: &ClaimOutcome) -> (Map<String, Json>, Option<Sampling<'_
 }
 
 /// A certificate as it is written: its fields in sorted order (as a `Value` map prints them),
-/// with the `sampling` data in its place.
-struct Written<'a>(Map<String, Json>, Option<Sampling<'a>>);
+/// with a sampled proof's `goal` and `sampling` in their places.
+struct Written<'a>(Map<String, Json>, Direct<'a>);
 
 impl serde::Serialize for Written<'_> {
     fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
         use serde::ser::SerializeMap;
-        let mut m = s.serialize_map(Some(self.0.len() + usize::from(self.1.is_some())))?;
-        let mut pending = self.1.as_ref();
+        enum Entry<'b> {
+            Goal(&'b Goal<'b>),
+            Sampling(&'b Sampling<'b>),
+        }
+        impl serde::Serialize for Entry<'_> {
+            fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+                match self {
+                    Entry::Goal(g) => g.serialize(s),
+                    Entry::Sampling(d) => d.serialize(s),
+                }
+            }
+        }
+        // in key order
+        let direct = match &self.1 {
+            Some((goal, sampling)) => vec![("goal", Entry::Goal(goal)), ("sampling", Entry::Sampling(sampling))],
+            None => Vec::new(),
+        };
+        let mut m = s.serialize_map(Some(self.0.len() + direct.len()))?;
+        let mut direct = direct.into_iter().peekable();
         for (k, v) in &self.0 {
-            if let Some(sampling) = pending.filter(|_| k.as_str() > "sampling") {
-                m.serialize_entry("sampling", sampling)?;
-                pending = None;
+            while let Some((key, entry)) = direct.next_if(|(key, _)| k.as_str() > *key) {
+                m.serialize_entry(key, &entry)?;
             }
             m.serialize_entry(k, v)?;
         }
-        if let Some(sampling) = pending {
-            m.serialize_entry("sampling", sampling)?;
+        for (key, entry) in direct {
+            m.serialize_entry(key, &entry)?;
         }
         m.end()
     }
@@ -408,9 +469,9 @@ pub fn write_certificates(report: &Report, dir: &Path) -> Result<usize> {
         }
         // Written as it serializes: no copy of the text (a certificate can be megabytes).
         let mut file = std::io::BufWriter::new(std::fs::File::create(dir.join(name)).map_err(io)?);
-        let (fields, sampling) = certificate_parts(o);
+        let (fields, direct) = certificate_parts(o);
         let mut json = serde_json::Serializer::with_formatter(&mut file, layout::Layout::new());
-        serde::Serialize::serialize(&Written(fields, sampling), &mut json).map_err(|e| io(e.into()))?;
+        serde::Serialize::serialize(&Written(fields, direct), &mut json).map_err(|e| io(e.into()))?;
         file.write_all(b"\n").and_then(|()| file.flush()).map_err(io)?;
     }
     Ok(report.outcomes.len())

@@ -62,14 +62,23 @@ pub(super) fn radicand<'e>(exprs: impl IntoIterator<Item = &'e Expr>) -> Res<Opt
             };
             found = match (checked, &found) {
                 (Err(e), _) => Err(e),
-                (Ok(d), Ok(Some(e))) if *e != d => Err(format!(
-                    "the goal mixes sqrt({e}) and sqrt({d}): it must be in one field Q(√d)"
-                )),
-                (Ok(d), _) => Ok(Some(d)),
+                (Ok(d), Ok(e)) => same_field(*e, Some(d)),
+                (Ok(_), Err(e)) => Err(e.clone()),
             };
         });
     }
     found
+}
+
+/// The field of a goal whose parts are in `Q(√a)` and `Q(√b)` (`None`: the rationals): one
+/// radicand at most.
+pub(super) fn same_field(a: Option<i64>, b: Option<i64>) -> Res<Option<i64>> {
+    match (a, b) {
+        (Some(e), Some(d)) if e != d => Err(format!(
+            "the goal mixes sqrt({e}) and sqrt({d}): it must be in one field Q(√d)"
+        )),
+        _ => Ok(a.or(b)),
+    }
 }
 
 /// A value entry as the kernel printed it (exactly: a rational, or `a + b*sqrt(d)`) as a
