@@ -184,10 +184,13 @@ pub struct Deg {
     /// `var → (num, den)`, sorted by name, each name once; missing vars are `(0, 0)`. A
     /// goal has a few parameters: kept inline, names shared, so the bounds of a long written
     /// side are derived without allocating.
-    vars: SmallVec<[(Arc<str>, (u64, u64)); 2]>,
+    vars: SmallVec<[Bound; 2]>,
     /// Degree in the symbolic control points.
     pub poly: u64,
 }
+
+/// One parameter's name and its `(num, den)` bounds.
+type Bound = (Arc<str>, (u64, u64));
 
 const DEG_LIMIT: u64 = 1 << 40;
 
