@@ -62,19 +62,24 @@ fn check_wz_refuses_a_wrong_certificate() {
     assert!(wz(&[binomial(q(-1, 2), 1, 2, 1), binomial(q(-1, 3), 1, 2, 1)]).is_err());
 }
 
+/// The sum over `0 ≤ k ≤ n` for every `n ≥ 0` (`zero` the constant 0, `n` the variable).
+fn from_zero_to_n<'a>(zero: &'a Aff, n: &'a Aff, rest: &'a Domain) -> SumShape<'a> {
+    SumShape {
+        k: "k",
+        a: zero,
+        b: n,
+        n: "n",
+        n0: zero,
+        rest,
+    }
+}
+
 /// `Σ_{k=0}^{n} C(n, k) = c^n` for `n ≥ 0` by the recurrence `p` and certificate `G`.
 fn telescoper(p: &[i64], g: Term, c: i64) -> Result<(Discharged, String)> {
     let sym = sym();
     let (zero, n) = (Aff::constant(0), Aff::var("n"));
     let rest = Domain::default();
-    let shape = SumShape {
-        k: "k",
-        a: &zero,
-        b: &n,
-        n: "n",
-        n0: &zero,
-        rest: &rest,
-    };
+    let shape = from_zero_to_n(&zero, &n, &rest);
     let t = Telescoper {
         p: p.iter().map(|&x| RatFunc::from_int(x)).collect(),
         g,
@@ -105,14 +110,7 @@ fn two_forms(p2: &[i64], c2: i64, s2: i64) -> Result<(Discharged, String)> {
     let sym = sym();
     let (zero, one, n) = (Aff::constant(0), Aff::constant(1), Aff::var("n"));
     let rest = Domain::default();
-    let shape = SumShape {
-        k: "k",
-        a: &zero,
-        b: &n,
-        n: "n",
-        n0: &zero,
-        rest: &rest,
-    };
+    let shape = from_zero_to_n(&zero, &n, &rest);
     let tel = |p: &[i64], g: Term| Telescoper {
         p: p.iter().map(|&x| RatFunc::from_int(x)).collect(),
         g,
