@@ -1,8 +1,8 @@
 //! Tests of the recurrence checks (a file of their own: `recurrence.rs` stays within the
 //! size the guide sets).
 
+use super::super::hyper::Base;
 use super::*;
-use crate::verify::kernel::hyper::Base;
 use num_rational::BigRational;
 
 fn sym() -> Symbols {
