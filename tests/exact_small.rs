@@ -1,7 +1,8 @@
 //! The small-number paths of the exact kernels against independent references with `==` and
-//! in lowest terms: eval's nested sum over the lcm on big integers (chosen over binary
-//! splitting while the denominators and the powers of `t`'s denominator stay short) and the
-//! subdivision that copies its end points and reduces its middle point once.
+//! in lowest terms: eval's nested sum on a fraction on big integers (chosen over binary
+//! splitting while the denominators and the powers of `t`'s denominator stay short; equal
+//! neighbouring denominators multiplied in once) and the subdivision that copies its end
+//! points and reduces its middle point once.
 //!
 //! Curves of degree 0 to 60 whose coordinates have 1- to 6-digit denominators (so that both
 //! sides of the nested sum's threshold are reached: 61 five-digit denominators are past it),
@@ -106,6 +107,50 @@ proptest! {
         prop_assert!(same(&left.points()[c.degree()], &c.eval(&t)));
         prop_assert!(same(&left.points()[0], &c.points()[0]));
         prop_assert!(same(&right.points()[c.degree()], &c.points()[c.degree()]));
+    }
+}
+
+/// Denominators from a pool of four (1 among them), so that runs of equal neighbours, ones
+/// between equal ones and repeats far apart all occur, of 5 to 300 digits.
+fn pooled_curve() -> impl Strategy<Value = BezierCurve<Q>> {
+    let pool = proptest::collection::vec((1u32..=300, any::<u64>()), 3).prop_map(|seeds| {
+        let mut pool: Vec<BigInt> = seeds
+            .into_iter()
+            .map(|(digits, seed)| num_traits::pow(BigInt::from(10), digits as usize) / 7 + seed)
+            .collect();
+        pool.push(BigInt::one());
+        pool
+    });
+    (pool, 0..=70usize, 1..=2usize).prop_flat_map(|(pool, n, dim)| {
+        let value = (0..4usize, any::<i64>(), 0u32..40).prop_map(move |(k, a, digits)| {
+            Q::new(
+                BigInt::from(a) * num_traits::pow(BigInt::from(10), digits as usize),
+                pool[k].clone(),
+            )
+        });
+        proptest::collection::vec(proptest::collection::vec(value, dim), n + 1)
+            .prop_map(|points| BezierCurve::from_coords(points).unwrap())
+    })
+}
+
+/// Parameters with a short, a 20-digit or a 100-digit denominator, and long numerators.
+fn wide_parameter() -> impl Strategy<Value = Q> {
+    prop_oneof![
+        1 => Just(Q::zero()),
+        1 => Just(Q::one()),
+        3 => (-40i64..=40, 1i64..=13).prop_map(|(p, q)| Q::new(p.into(), q.into())),
+        2 => (any::<i64>(), prop_oneof![Just(20usize), Just(100)], any::<u64>()).prop_map(|(a, digits, b)| {
+            Q::new(BigInt::from(a) << 40, num_traits::pow(BigInt::from(10), digits) + b)
+        }),
+    ]
+}
+
+proptest! {
+    #![proptest_config(Config::with_cases(150))]
+
+    #[test]
+    fn eval_with_shared_denominators(c in pooled_curve(), t in wide_parameter()) {
+        prop_assert!(same(&c.eval(&t), &nested_reference(&c, &t)));
     }
 }
 

@@ -5,11 +5,12 @@
 //! `D`, a parameter `t = p/q` stays the pair of integers `(p, q)`, and every step is integer
 //! arithmetic; each output coordinate is reduced once, part by part ([`crate::exact::gcd`]).
 //! The integers are machine words (`i128`, every operation overflow-checked) while they fit;
-//! on the first overflow the whole kernel runs again on [`BigInt`]. Three kernels change
-//! algorithm there: the point of a curve is then summed by binary splitting
-//! (`exact::splitting`) unless its denominators and `t`'s stay short (`nested_wins`), a
-//! surface's point row by row when its rows' are words (`rows_first`), else by binary
-//! splitting too, and one elevation step combines neighbouring points pairwise, on 256-bit
+//! on the first overflow the whole kernel runs again on [`BigInt`] (a curve's point skips
+//! the words when its denominators are clearly too long, `words_hopeless`). Three kernels
+//! change algorithm there: the point of a curve is then summed nested on an unreduced
+//! fraction (`horner`) while its denominators and `t`'s stay short (`horner_wins`), else
+//! by binary splitting (`exact::splitting`); a surface's point row by row when its rows'
+//! are words (`rows_first`), else by binary splitting too; and one elevation step combines neighbouring points pairwise, on 256-bit
 //! words where they fit (`exact::elevation_words`). The public generic methods
 //! choose these kernels for exact rationals (the kernel methods of `BigRational`'s
 //! [`Scalar`](crate::Scalar) implementation); the tests compare them
@@ -37,9 +38,10 @@ use crate::error::{check_degree, Error, Result};
 use crate::exact::gcd::gcd_u128;
 use crate::exact::gcd::{self, Part};
 use crate::exact::{elevation_words, splitting};
-use choice::{nested_wins, rows_first};
+use choice::{horner_wins, rows_first, words_hopeless};
 
 mod choice;
+mod horner;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -316,18 +318,23 @@ fn point_by_coordinate(dim: usize, each: impl FnMut(usize) -> Option<BigRational
 // One coordinate at a time, each over its own common denominator: with unrelated
 // denominators in the coordinates, a denominator shared by all would be their product,
 // and every integer of the sum that much longer.
-fn curve_eval<I: Int>(c: &Curve<'_>, t: &BigRational) -> Option<Point<BigRational>> {
+fn curve_eval(c: &Curve<'_>, t: &BigRational) -> Point<BigRational> {
     point_by_coordinate(c.dim(), |k| {
         let values: Vec<&BigRational> = coordinate(c.points(), k).collect();
-        coordinate_sum_on::<I>(&values, t)
+        Some(coordinate_sum(&values, t))
     })
+    .expect("every coordinate has a sum")
 }
 
-/// `Σ x_i B_i^n(t)` of one coordinate's values, reduced: nested over their common
-/// denominator, or on big integers by binary splitting past [`nested_wins`].
+/// `Σ x_i B_i^n(t)` of one coordinate's values, reduced: on machine words nested over
+/// their common denominator; on big integers nested on a fraction (`horner`) while
+/// [`horner_wins`], else by binary splitting.
 fn coordinate_sum_on<I: Int>(values: &[&BigRational], t: &BigRational) -> Option<BigRational> {
-    if I::IS_BIG && !nested_wins(values, t.denom()) {
-        // Past machine words the sum is split in balanced halves (see `splitting`).
+    if I::IS_BIG {
+        if horner_wins(values, t.denom()) {
+            return Some(horner::fraction_sum(values, t.numer(), t.denom()));
+        }
+        // Past that the sum is split in balanced halves (see `splitting`).
         return Some(splitting::bernstein_sum(values, t.numer(), t.denom()));
     }
     let (p, q, s) = parameter::<I>(t)?;
@@ -336,8 +343,11 @@ fn coordinate_sum_on<I: Int>(values: &[&BigRational], t: &BigRational) -> Option
     I::ratio_over_power(acc, &x.den, &q, values.len() - 1)
 }
 
-/// [`coordinate_sum_on`] on machine words while they fit, else on big integers.
+/// [`coordinate_sum_on`] on machine words while they may fit, else on big integers.
 fn coordinate_sum(values: &[&BigRational], t: &BigRational) -> BigRational {
+    if words_hopeless(values) {
+        return coordinate_sum_on::<BigInt>(values, t).expect("big integers do not overflow");
+    }
     words_then_big(|tier| on_tier!(tier, coordinate_sum_on(values, t)))
 }
 
@@ -642,8 +652,7 @@ pub(crate) fn eval(points: &[Point<BigRational>], t: &BigRational) -> Point<BigR
     if t.is_one() {
         return points[points.len() - 1].clone();
     }
-    let c = &Curve(points);
-    words_then_big(|tier| on_tier!(tier, curve_eval(c, t)))
+    curve_eval(&Curve(points), t)
 }
 
 /// The `k`-th derivative vector at `t`, `k` at most the degree.

@@ -3,33 +3,54 @@
 use num_bigint::BigInt;
 use num_rational::BigRational;
 
-/// The size below which the nested sum over the lcm of the denominators beats binary
-/// splitting on big integers, as `Σ bits(d_i) + 2 n bits(q)` (see [`nested_wins`]).
+/// Bounds of the fraction-form nested sum (`horner`) on big integers, against binary
+/// splitting: `n bits(q)` (its parameter's share of every number) at most
+/// `HORNER_PARAMETER_BITS`, and `Σ bits(d_i) + 2 n bits(q)` (about the length of its last
+/// numbers) at most `HORNER_BITS`.
 ///
-/// Measured (2026-12-05, `examples`-side prototype against the library's eval, interleaved,
-/// planar curves of the `exact_grid.py` grid): the nested sum won at 5 digits up to degree
-/// 50 at `t = 1/3` (size 1,067: 37 µs against 49 µs), at degrees 3 and 5 with a 20-digit
-/// `t` (464, 762) and at 30 digits at degree 3 (412, 796) and 5 at `t = 1/3` (620); it lost
-/// at 30 digits, degree 5 with a 20-digit `t` (1,260: 17 µs against 14 µs) and from degree
-/// 20 at 30 digits (2,100 and up: twice as slow), and tied at 5 digits, degree 20 with a
-/// 20-digit `t` (2,997). In the grid's own run afterwards (docs/performance.md) the
-/// 30-digit degree-5 cell at `t = 1/3` (620) was 9% slower nested, within the spread.
-const NESTED_BITS: u64 = 1100;
+/// Measured (2026-12-05, `exact_grid.py`, planar curves, the `eval` cells of digits 5 to
+/// 300, degrees 3 to 200, the three kinds of `t`; the program with either kernel alone, run
+/// one after the other, about 8% noise between runs): the nested sum won or tied at every
+/// degree-3 cell (the widest 300 digits with a 100-digit `t`, 75 µs against 82 µs: size
+/// 6,000, parameter share 996), at 5 digits to degree 100 at `t = 1/3` (65 against 130 µs)
+/// and at 30 digits to degree 50 at `t = 1/3` (140 against 160 µs: size 5,200); it lost at
+/// 30 digits, degree 100 at 1/3 (480 against 404 µs: size 10,400), at 300 digits, degree
+/// 20 at 1/3 (960 against 880 µs: size 21,000), with a 100-digit `t` from degree 20 (90
+/// against 74 µs at 5 digits: share 6,640) and at 5 digits, degree 50 with a 20-digit `t`
+/// (110 against 83 µs: share 3,300); at share 1,320 (degree 20, 20-digit `t`) it won and
+/// lost by turns (5 digits: 22.5 and 32.5 µs against 25 µs; a rational curve's point 70
+/// against 50 µs), and at 5 digits, degree 200, 1/3 (size 4,200) it tied.
+const HORNER_PARAMETER_BITS: u64 = 1000;
+const HORNER_BITS: u64 = 6000;
 
-/// Whether one coordinate's Bernstein sum is cheaper nested (Horner) over the lcm of its
-/// denominators than by binary splitting: when that lcm and the powers of `q` stay short
-/// the nested sum's steps are products by short numbers and its reduction one gcd, where
-/// binary splitting builds a tree of products and reduces through their remainders.
-pub(super) fn nested_wins(values: &[&BigRational], q: &BigInt) -> bool {
+/// Whether one coordinate's Bernstein sum on big integers is cheaper nested on a fraction
+/// than by binary splitting: its steps are products by short factors and cost the length of
+/// the numbers so far, a total quadratic in the degree, where binary splitting builds a
+/// tree of balanced products (see [`HORNER_BITS`]).
+pub(super) fn horner_wins(values: &[&BigRational], q: &BigInt) -> bool {
     let n = values.len() as u64 - 1;
     let denominators: u64 = values.iter().map(|v| v.denom().bits()).sum();
-    denominators + 2 * n * q.bits() <= NESTED_BITS
+    n * q.bits() <= HORNER_PARAMETER_BITS && denominators + 2 * n * q.bits() <= HORNER_BITS
+}
+
+/// Whether the sum is bound to overflow machine words: the denominators that differ from
+/// their neighbour, longer than 160 bits together. Their lcm could still be short (shared
+/// factors), but the word kernel would first compute gcds and products until it overflows,
+/// and the big-integer kernels keep equal neighbours' denominators once.
+pub(super) fn words_hopeless(values: &[&BigRational]) -> bool {
+    let mut bits = values[0].denom().bits() - 1;
+    for pair in values.windows(2) {
+        if pair[1].denom() != pair[0].denom() {
+            bits += pair[1].denom().bits() - 1;
+        }
+    }
+    bits > 160
 }
 
 /// Whether a surface whose net overflows machine words is cheaper row by row (each row's
 /// sum at `v` reduced, then the column of those at `u`) than by `splitting::net_sum` (all
 /// the net's denominators in one product, one reduction): when a row's denominators and
-/// `v`'s are single words and its nested sum wins ([`nested_wins`]), its reduced point is
+/// `v`'s are single words and its nested sum wins ([`horner_wins`]), its reduced point is
 /// short and often within machine words.
 ///
 /// Measured (2026-12-05, interleaved, nets of the `exact_grid.py` grid, u = v = 1/3): row
@@ -37,11 +58,11 @@ pub(super) fn nested_wins(values: &[&BigRational], q: &BigInt) -> bool {
 /// (5, 5), 563 against 695 at (20, 20) and 5.0 ms against 6.0 ms at (50, 50); with 30-digit
 /// denominators it lost at (3, 3) and (5, 5) (61 against 43 µs, 161 against 136), and with
 /// a 20-digit parameter at 5 digits (1.8 ms against 0.9 ms at (20, 20)), which
-/// [`nested_wins`] already refuses.
+/// [`horner_wins`] already refuses.
 ///
 /// In the grid itself, 5-digit nets with a 20-digit parameter at (3, 3) and (5, 5), which
-/// pass [`nested_wins`], took 30.5 µs against 27.5 µs and 79.5 against 77.4 row by row:
+/// pass [`horner_wins`], took 30.5 µs against 27.5 µs and 79.5 against 77.4 row by row:
 /// the parameter's denominator must be a word too.
 pub(super) fn rows_first(row: &[&BigRational], v: &BigRational) -> bool {
-    v.denom().bits() <= 64 && row.iter().all(|x| x.denom().bits() <= 64) && nested_wins(row, v.denom())
+    v.denom().bits() <= 64 && row.iter().all(|x| x.denom().bits() <= 64) && horner_wins(row, v.denom())
 }
