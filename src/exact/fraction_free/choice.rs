@@ -40,7 +40,7 @@ pub(super) fn horner_wins(values: &[&BigRational], q: &BigInt) -> bool {
 pub(super) fn words_hopeless(values: &[&BigRational]) -> bool {
     let mut bits = values[0].denom().bits() - 1;
     for pair in values.windows(2) {
-        if pair[1].denom() != pair[0].denom() {
+        if !super::horner::equal(pair[1].denom(), pair[0].denom()) {
             bits += pair[1].denom().bits() - 1;
         }
     }

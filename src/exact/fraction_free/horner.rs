@@ -88,7 +88,7 @@ pub(super) fn fraction_sum(values: &[&BigRational], p: &BigInt, q: &BigInt) -> B
         if d.is_one() {
             scratch.clone_from(&den);
             s.apply(&mut num);
-        } else if let (true, Some(b)) = (d == last, before.as_ref()) {
+        } else if let (true, Some(b)) = (equal(d, last), before.as_ref()) {
             scratch.clone_from(b);
             s.apply(&mut num);
         } else {
@@ -104,11 +104,17 @@ pub(super) fn fraction_sum(values: &[&BigRational], p: &BigInt, q: &BigInt) -> B
     reduced(num, den, q, n)
 }
 
+/// `a == b`, by the lengths and the lowest words first: distinct denominators almost always
+/// differ there, and a full comparison is a call to `memcmp`.
+pub(super) fn equal(a: &BigInt, b: &BigInt) -> bool {
+    a.bits() == b.bits() && a.iter_u64_digits().next() == b.iter_u64_digits().next() && a == b
+}
+
 /// `Some(value())` when the value after `i` has the same denominator as value `i`.
 fn keep_if_next(values: &[&BigRational], i: usize, value: impl FnOnce() -> BigInt) -> Option<BigInt> {
     values
         .get(i + 1)
-        .filter(|next| next.denom() == values[i].denom())
+        .filter(|next| equal(next.denom(), values[i].denom()))
         .map(|_| value())
 }
 
@@ -138,10 +144,18 @@ fn reduced(mut num: BigInt, mut den: BigInt, q: &BigInt, n: usize) -> BigRationa
         }
     };
     let g = gcd::gcd(num.magnitude(), den.magnitude());
-    if !g.is_one() {
-        let g = BigInt::from_biguint(num_bigint::Sign::Plus, g);
-        num /= &g;
-        den /= &g;
+    match g.to_u64() {
+        Some(1) => {}
+        // In place, digit by digit: a division by a long divisor would copy the dividend.
+        Some(w) => {
+            num /= w;
+            den /= w;
+        }
+        None => {
+            let g = BigInt::from_biguint(num_bigint::Sign::Plus, g);
+            num /= &g;
+            den /= &g;
+        }
     }
     BigRational::new_raw(num, den * power)
 }
