@@ -5,8 +5,8 @@ use num_rational::BigRational;
 
 /// Bounds of the fraction-form nested sum (`horner`) on big integers, against binary
 /// splitting: `n bits(q)` (its parameter's share of every number) at most
-/// `HORNER_PARAMETER_BITS`, and `Σ bits(d_i) + 2 n bits(q)` (about the length of its last
-/// numbers) at most `HORNER_BITS`.
+/// `HORNER_PARAMETER_BITS`, `Σ bits(d_i) + 2 n bits(q)` (about the length of its last
+/// numbers) at most `HORNER_BITS`, and the degree at most `HORNER_DEGREE`.
 ///
 /// Measured (2026-12-05, `exact_grid.py`, planar curves, the `eval` cells of digits 5 to
 /// 300, degrees 3 to 200, the three kinds of `t`; the program with either kernel alone, run
@@ -19,8 +19,11 @@ use num_rational::BigRational;
 /// against 74 µs at 5 digits: share 6,640) and at 5 digits, degree 50 with a 20-digit `t`
 /// (110 against 83 µs: share 3,300); at share 1,320 (degree 20, 20-digit `t`) it won and
 /// lost by turns (5 digits: 22.5 and 32.5 µs against 25 µs; a rational curve's point 70
-/// against 50 µs), and at 5 digits, degree 200, 1/3 (size 4,200) it tied.
+/// against 50 µs), and at 5 digits, degree 200, 1/3 (size 4,200) it lost or tied (221
+/// against 185 µs, 261 and 220 against 322 and 200 µs in three runs): degrees above
+/// `HORNER_DEGREE` are left to binary splitting.
 const HORNER_PARAMETER_BITS: u64 = 1000;
+const HORNER_DEGREE: u64 = 100;
 const HORNER_BITS: u64 = 6000;
 
 /// Whether one coordinate's Bernstein sum on big integers is cheaper nested on a fraction
@@ -30,7 +33,7 @@ const HORNER_BITS: u64 = 6000;
 pub(super) fn horner_wins(values: &[&BigRational], q: &BigInt) -> bool {
     let n = values.len() as u64 - 1;
     let denominators: u64 = values.iter().map(|v| v.denom().bits()).sum();
-    n * q.bits() <= HORNER_PARAMETER_BITS && denominators + 2 * n * q.bits() <= HORNER_BITS
+    n <= HORNER_DEGREE && n * q.bits() <= HORNER_PARAMETER_BITS && denominators + 2 * n * q.bits() <= HORNER_BITS
 }
 
 /// Whether the sum is bound to overflow machine words: the denominators that differ from
