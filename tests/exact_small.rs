@@ -111,9 +111,11 @@ proptest! {
 }
 
 /// Denominators from a pool of four (1 among them), so that runs of equal neighbours, ones
-/// between equal ones and repeats far apart all occur, of 5 to 300 digits.
+/// between equal ones and repeats far apart all occur, of 1 to 300 digits.
 fn pooled_curve() -> impl Strategy<Value = BezierCurve<Q>> {
-    let pool = proptest::collection::vec((1u32..=300, any::<u64>()), 3).prop_map(|seeds| {
+    // Both kernels' paths: denominators and numerators within 62 bits (steps on words) or not.
+    let digits = || prop_oneof![1u32..=17, 1u32..=300];
+    let pool = proptest::collection::vec((digits(), any::<u32>()), 3).prop_map(|seeds| {
         let mut pool: Vec<BigInt> = seeds
             .into_iter()
             .map(|(digits, seed)| num_traits::pow(BigInt::from(10), digits as usize) / 7 + seed)
@@ -122,7 +124,7 @@ fn pooled_curve() -> impl Strategy<Value = BezierCurve<Q>> {
         pool
     });
     (pool, 0..=70usize, 1..=2usize).prop_flat_map(|(pool, n, dim)| {
-        let value = (0..4usize, any::<i64>(), 0u32..40).prop_map(move |(k, a, digits)| {
+        let value = (0..4usize, any::<i32>(), prop_oneof![Just(0u32), 0u32..40]).prop_map(move |(k, a, digits)| {
             Q::new(
                 BigInt::from(a) * num_traits::pow(BigInt::from(10), digits as usize),
                 pool[k].clone(),
@@ -145,11 +147,40 @@ fn wide_parameter() -> impl Strategy<Value = Q> {
     ]
 }
 
+/// Curves whose sum runs on words in the fraction kernel: denominators of 14 to 17 digits
+/// from a pool (runs of equal neighbours; their product past 160 bits), short numerators.
+fn word_step_curve() -> impl Strategy<Value = BezierCurve<Q>> {
+    let pool = proptest::collection::vec((14u32..=17, any::<u32>()), 3).prop_map(|seeds| {
+        let mut pool: Vec<BigInt> = seeds
+            .into_iter()
+            .map(|(digits, seed)| num_traits::pow(BigInt::from(10), digits as usize) / 7 + seed)
+            .collect();
+        pool.push(BigInt::one());
+        pool
+    });
+    (pool, 2..=24usize, 1..=2usize).prop_flat_map(|(pool, n, dim)| {
+        let value = (prop_oneof![0..3usize, 0..4usize], any::<i16>())
+            .prop_map(move |(k, a)| Q::new(BigInt::from(a), pool[k].clone()));
+        proptest::collection::vec(proptest::collection::vec(value, dim), n + 1)
+            .prop_map(|points| BezierCurve::from_coords(points).unwrap())
+    })
+}
+
 proptest! {
     #![proptest_config(Config::with_cases(150))]
 
     #[test]
     fn eval_with_shared_denominators(c in pooled_curve(), t in wide_parameter()) {
+        prop_assert!(same(&c.eval(&t), &nested_reference(&c, &t)));
+    }
+
+    #[test]
+    fn eval_on_words_with_shared_denominators(
+        c in word_step_curve(),
+        p in prop_oneof![Just(-1i64), Just(1), Just(2)],
+        q in prop_oneof![Just(2i64), Just(3), Just(5), Just(7)],
+    ) {
+        let t = Q::new(p.into(), q.into());
         prop_assert!(same(&c.eval(&t), &nested_reference(&c, &t)));
     }
 }

@@ -154,7 +154,7 @@ pub(crate) fn shared_pair(
     (with(a_natural), with(c_natural))
 }
 
-fn from_words(words: &[u64]) -> BigUint {
+pub(crate) fn from_words(words: &[u64]) -> BigUint {
     BigUint::new(words.iter().flat_map(|&w| [w as u32, (w >> 32) as u32]).collect())
 }
 
