@@ -5,15 +5,16 @@
 //! `D`, a parameter `t = p/q` stays the pair of integers `(p, q)`, and every step is integer
 //! arithmetic; each output coordinate is reduced once, part by part ([`crate::exact::gcd`]).
 //! The integers are machine words (`i128`, every operation overflow-checked) while they fit;
-//! on the first overflow the whole kernel runs again on [`BigInt`]. Three kernels change
+//! on the first overflow the whole kernel runs again on [`BigInt`]. Four kernels change
 //! algorithm there: the point of a curve is then summed by binary splitting
 //! (`exact::splitting`) unless its denominators and `t`'s stay short (`nested_wins`), a
 //! surface's point row by row when its rows' are words (`rows_first`), else by binary
-//! splitting too, and one elevation step combines neighbouring points pairwise, on 256-bit
-//! words where they fit (`exact::elevation_words`). The public generic methods
-//! choose these kernels for exact rationals (the kernel methods of `BigRational`'s
-//! [`Scalar`](crate::Scalar) implementation); the tests compare them
-//! with `==` against the step-by-step `*_reference` methods.
+//! splitting too, one elevation step combines neighbouring points pairwise, on 256-bit
+//! words where they fit (`exact::elevation_words`), and so does a subdivision's triangle
+//! with long denominators at a low degree (`split`, chosen by `choice::pairs_win`). The
+//! public generic methods choose these kernels for exact rationals (the kernel methods of
+//! `BigRational`'s [`Scalar`](crate::Scalar) implementation); the tests compare them with
+//! `==` against the step-by-step `*_reference` methods.
 //!
 //! | kernel | method | reference |
 //! |---|---|---|
@@ -37,9 +38,10 @@ use crate::error::{check_degree, Error, Result};
 use crate::exact::gcd::gcd_u128;
 use crate::exact::gcd::{self, Part};
 use crate::exact::{elevation_words, splitting};
-use choice::{nested_wins, rows_first};
+use choice::{nested_wins, pairs_win, rows_first};
 
 mod choice;
+mod split;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -442,6 +444,14 @@ fn curve_split<I: Int>(c: &Curve<'_>, t: &BigRational) -> Option<(Points, Points
     let mut left = Vec::with_capacity(dim);
     let mut right = Vec::with_capacity(dim);
     for k in 0..dim {
+        let values = || coordinate(c.points(), k).collect::<Vec<_>>();
+        if I::IS_BIG && pairs_win(&values(), t.denom()) {
+            // Long denominators, low degree: pair by pair on reduced fractions.
+            let (l, r) = split::split_coordinate(&values(), t);
+            left.push(l);
+            right.push(r);
+            continue;
+        }
         let (mut l, mut r) = (Vec::with_capacity(n + 1), Vec::with_capacity(n + 1));
         casteljau_columns::<I>(c, k, t, |level, column, den, q| {
             if level == 0 {
