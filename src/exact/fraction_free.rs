@@ -444,10 +444,10 @@ fn curve_split<I: Int>(c: &Curve<'_>, t: &BigRational) -> Option<(Points, Points
     let mut left = Vec::with_capacity(dim);
     let mut right = Vec::with_capacity(dim);
     for k in 0..dim {
-        let values = || coordinate(c.points(), k).collect::<Vec<_>>();
-        if I::IS_BIG && pairs_win(&values(), t.denom()) {
-            // Long denominators, low degree: pair by pair on reduced fractions.
-            let (l, r) = split::split_coordinate(&values(), t);
+        // Long denominators, low degree: pair by pair on reduced fractions.
+        let values = I::IS_BIG.then(|| coordinate(c.points(), k).collect::<Vec<_>>());
+        let pairs = values.filter(|v| pairs_win(v, t.denom()));
+        if let Some((l, r)) = pairs.and_then(|v| split::split_coordinate(&v, t)) {
             left.push(l);
             right.push(r);
             continue;
