@@ -348,7 +348,8 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     /// Bernstein sum); exact scalars agree.
     ///
     /// Exact rational points are split by de Casteljau's steps over integers
-    /// ([`BezierCurve::split_fraction_free`]), each point reduced once.
+    /// ([`BezierCurve::split_fraction_free`]), each point reduced once, or, for long
+    /// denominators at a low degree, pair by pair on reduced fractions.
     #[inline]
     pub fn split_at(&self, t0: &T) -> (Self, Self) {
         if T::EXACT {

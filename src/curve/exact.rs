@@ -45,7 +45,9 @@ impl BezierCurve<BigRational> {
         }
     }
 
-    /// Subdivision at `t0` over integers; equals [`BezierCurve::split_at`].
+    /// Subdivision at `t0` over integers (long denominators at a low degree pair by pair
+    /// on reduced fractions, which costs less than their lcm); equals
+    /// [`BezierCurve::split_at`].
     pub fn split_fraction_free(&self, t0: &BigRational) -> (Self, Self) {
         let (left, right) = fraction_free::split(self.points(), t0);
         let valid = "the points of a valid curve's scheme";

@@ -69,3 +69,36 @@ pub(super) fn words_hopeless(values: &[&BigRational]) -> bool {
 pub(super) fn rows_first(row: &[&BigRational], v: &BigRational) -> bool {
     v.denom().bits() <= 64 && row.iter().all(|x| x.denom().bits() <= 64) && horner_wins(row, v.denom())
 }
+
+/// The shortest mean denominator, in bits, for which a subdivision is split pair by pair.
+const PAIRS_MIN_BITS: u64 = 30;
+
+/// Whether one coordinate's subdivision past machine words is cheaper pair by pair on
+/// reduced fractions (`split::split_coordinate`) than over the lcm of its denominators:
+/// with long denominators and a low degree, the lcm is as long as all of them together and
+/// each of the `2n − 1` outputs is reduced by a gcd with all of it, where a pair's gcds are
+/// of one or two neighbours' denominators; with short ones, or many, or a long `t` (whose
+/// powers both kernels carry, the pairs in every value of the triangle), the lcm wins.
+///
+/// The rule, with `D` the mean bits of the denominators and `Q` those of `t`'s: pairs up to
+/// degree 6 while `n Q ≤ 6 D`, and at degrees 7 and 8 while `D ≥ 800` and `n Q ≤ D`, never
+/// below 30 bits. Measured (2026-12-05, both kernels on the `exact_grid.py` grid's planar
+/// curves, one after the other, 2 shared cores): pairs won at 30, 100 and 300 digits (`D` =
+/// 100, 333, 1000) up to degree 6 with `t = 1/3` and a 20-digit `t` (by 10% to 45%: 30
+/// digits, cubic, 22.4 µs against 17.3 µs), with a 100-digit `t` at 100 digits to degree 4
+/// and at 300 to degree 6; they lost with a 100-digit `t` at 15 to 30 digits (30 digits,
+/// cubic: 42 µs against 40; degree 6: 200 against 159), at 100 digits from degree 6 and at
+/// degree 8 with a 20-digit `t` (480 against 440 µs), and everywhere at degree 10 but 300
+/// digits with a short `t` (a tie). At 300 digits, degree 8, pairs won with a short `t`
+/// (1.92 ms against 2.33) and lost with a 100-digit one (2.75 against 2.57).
+pub(super) fn pairs_win(values: &[&BigRational], q: &BigInt) -> bool {
+    let n = values.len() as u64 - 1;
+    let mean = values.iter().map(|v| v.denom().bits()).sum::<u64>() / (n + 1);
+    let reach = n * q.bits();
+    mean >= PAIRS_MIN_BITS
+        && match n {
+            1..=6 => reach <= 6 * mean,
+            7..=8 => mean >= 800 && reach <= mean,
+            _ => false,
+        }
+}
