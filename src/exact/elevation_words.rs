@@ -465,7 +465,8 @@ fn combine_neighbours(
         (Some(_), Some(x), Some(y)) => Some((x.den, y.den)),
         _ => None,
     }));
-    let mut big = BigDenominators::new(points, &words);
+    // Built on the first coordinate past the word path: none where all fit.
+    let mut big: Option<BigDenominators> = None;
     let mut out = Vec::with_capacity(n);
     for i in 1..=n {
         let (alpha, beta) = weights(i as u32);
@@ -484,7 +485,9 @@ fn combine_neighbours(
                 _ => None,
             };
             fast.unwrap_or_else(|| {
-                let g = big.shared(j, dim, &before[k], &here[k]);
+                let g = big
+                    .get_or_insert_with(|| BigDenominators::new(points, &words))
+                    .shared(j, dim, &before[k], &here[k]);
                 pair_big(&before[k], negate_first, alpha, &here[k], beta, total, &g)
             })
         });

@@ -527,7 +527,8 @@ pub(crate) fn derivative(points: &[Point<BigRational>], k: usize) -> Result<Vec<
     if k == 1 {
         // Neighbours combined pairwise: each point over its own two denominators, where a
         // denominator common to the whole curve makes every point as long as all inputs.
-        if let Some(points) = curve_derivative::<i128>(c, 1) {
+        let short = (0..c.dim()).all(|k| !words_hopeless(&coordinate(points, k).collect::<Vec<_>>()));
+        if let Some(points) = short.then(|| curve_derivative::<i128>(c, 1)).flatten() {
             return Ok(points);
         }
         return Ok(elevation_words::derivative_pairwise(points));
