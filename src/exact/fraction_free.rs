@@ -191,7 +191,7 @@ fn coordinate_sum_on<I: Int>(values: &[&BigRational], t: &BigRational) -> Option
 
 /// [`coordinate_sum_on`] on machine words while they may fit, else on big integers.
 fn coordinate_sum(values: &[&BigRational], t: &BigRational) -> BigRational {
-    if words_hopeless(values) {
+    if words_hopeless(values, 160) {
         return coordinate_sum_on::<BigInt>(values, t).expect("big integers do not overflow");
     }
     words_then_big(|tier| on_tier!(tier, coordinate_sum_on(values, t)))
@@ -527,7 +527,8 @@ pub(crate) fn derivative(points: &[Point<BigRational>], k: usize) -> Result<Vec<
     if k == 1 {
         // Neighbours combined pairwise: each point over its own two denominators, where a
         // denominator common to the whole curve makes every point as long as all inputs.
-        let short = (0..c.dim()).all(|k| !words_hopeless(&coordinate(points, k).collect::<Vec<_>>()));
+        // The word kernel puts the whole curve over one denominator.
+        let short = !words_hopeless(&coordinates(points).collect::<Vec<_>>(), 64);
         if let Some(points) = short.then(|| curve_derivative::<i128>(c, 1)).flatten() {
             return Ok(points);
         }
