@@ -42,10 +42,25 @@ fn coordinate() -> impl Strategy<Value = Q> {
     ]
 }
 
+/// Curves of `n + 1` points of `dim` coordinates drawn from `value`.
+fn curve_of<S: Strategy<Value = Q>>(value: S, n: usize, dim: usize) -> impl Strategy<Value = BezierCurve<Q>> {
+    proptest::collection::vec(proptest::collection::vec(value, dim), n + 1)
+        .prop_map(|points| BezierCurve::from_coords(points).unwrap())
+}
+
 fn curve(max_degree: usize) -> impl Strategy<Value = BezierCurve<Q>> {
-    (0..=max_degree, 1..=2usize).prop_flat_map(|(n, dim)| {
-        proptest::collection::vec(proptest::collection::vec(coordinate(), dim), n + 1)
-            .prop_map(|points| BezierCurve::from_coords(points).unwrap())
+    (0..=max_degree, 1..=2usize).prop_flat_map(|(n, dim)| curve_of(coordinate(), n, dim))
+}
+
+/// Three denominators `10^digits / 7 + seed` and 1.
+fn denominator_pool(digits: impl Strategy<Value = u32>) -> impl Strategy<Value = Vec<BigInt>> {
+    proptest::collection::vec((digits, any::<u32>()), 3).prop_map(|seeds| {
+        let mut pool: Vec<BigInt> = seeds
+            .into_iter()
+            .map(|(digits, seed)| num_traits::pow(BigInt::from(10), digits as usize) / 7 + seed)
+            .collect();
+        pool.push(BigInt::one());
+        pool
     })
 }
 
@@ -114,15 +129,7 @@ proptest! {
 /// between equal ones and repeats far apart all occur, of 1 to 300 digits.
 fn pooled_curve() -> impl Strategy<Value = BezierCurve<Q>> {
     // Both kernels' paths: denominators and numerators within 62 bits (steps on words) or not.
-    let digits = || prop_oneof![1u32..=17, 1u32..=300];
-    let pool = proptest::collection::vec((digits(), any::<u32>()), 3).prop_map(|seeds| {
-        let mut pool: Vec<BigInt> = seeds
-            .into_iter()
-            .map(|(digits, seed)| num_traits::pow(BigInt::from(10), digits as usize) / 7 + seed)
-            .collect();
-        pool.push(BigInt::one());
-        pool
-    });
+    let pool = denominator_pool(prop_oneof![1u32..=17, 1u32..=300]);
     (pool, 0..=70usize, 1..=2usize).prop_flat_map(|(pool, n, dim)| {
         let value = (0..4usize, any::<i32>(), prop_oneof![Just(0u32), 0u32..40]).prop_map(move |(k, a, digits)| {
             Q::new(
@@ -130,8 +137,7 @@ fn pooled_curve() -> impl Strategy<Value = BezierCurve<Q>> {
                 pool[k].clone(),
             )
         });
-        proptest::collection::vec(proptest::collection::vec(value, dim), n + 1)
-            .prop_map(|points| BezierCurve::from_coords(points).unwrap())
+        curve_of(value, n, dim)
     })
 }
 
@@ -150,19 +156,11 @@ fn wide_parameter() -> impl Strategy<Value = Q> {
 /// Curves whose sum runs on words in the fraction kernel: denominators of 14 to 17 digits
 /// from a pool (runs of equal neighbours; their product past 160 bits), short numerators.
 fn word_step_curve() -> impl Strategy<Value = BezierCurve<Q>> {
-    let pool = proptest::collection::vec((14u32..=17, any::<u32>()), 3).prop_map(|seeds| {
-        let mut pool: Vec<BigInt> = seeds
-            .into_iter()
-            .map(|(digits, seed)| num_traits::pow(BigInt::from(10), digits as usize) / 7 + seed)
-            .collect();
-        pool.push(BigInt::one());
-        pool
-    });
+    let pool = denominator_pool(14u32..=17);
     (pool, 2..=24usize, 1..=2usize).prop_flat_map(|(pool, n, dim)| {
         let value = (prop_oneof![0..3usize, 0..4usize], any::<i16>())
             .prop_map(move |(k, a)| Q::new(BigInt::from(a), pool[k].clone()));
-        proptest::collection::vec(proptest::collection::vec(value, dim), n + 1)
-            .prop_map(|points| BezierCurve::from_coords(points).unwrap())
+        curve_of(value, n, dim)
     })
 }
 
