@@ -25,11 +25,11 @@
 //! divisor prepared once (`ConstDivisor`). The gcds of neighbouring denominators that fit two
 //! words are computed two at a time (`gcd::paired_gcds`).
 
-use crate::exact::gcd::paired_gcds;
+use crate::exact::gcd::{from_words, paired_gcds, to_dashu};
 use dashu_int::fast_div::ConstDivisor;
 use dashu_int::ops::{BitTest, Gcd};
 use dashu_int::{IBig, Sign, UBig};
-use num_bigint::{BigInt, BigUint};
+use num_bigint::BigInt;
 use num_rational::BigRational;
 use std::borrow::Cow;
 
@@ -39,31 +39,18 @@ struct Fraction {
     den: UBig,
 }
 
-fn to_ubig(x: &BigUint) -> UBig {
-    UBig::from_words(&x.to_u64_digits())
-}
-
-fn to_biguint(x: &UBig) -> BigUint {
-    BigUint::new(
-        x.as_words()
-            .iter()
-            .flat_map(|&w| [w as u32, (w >> 32) as u32])
-            .collect(),
-    )
-}
-
 fn to_ibig(x: &BigInt) -> IBig {
     let sign = if x.sign() == num_bigint::Sign::Minus {
         Sign::Negative
     } else {
         Sign::Positive
     };
-    IBig::from_parts(sign, to_ubig(x.magnitude()))
+    IBig::from_parts(sign, to_dashu(x.magnitude()))
 }
 
 fn to_bigint(x: &IBig) -> BigInt {
     let (sign, words) = x.as_sign_words();
-    let magnitude = BigUint::new(words.iter().flat_map(|&w| [w as u32, (w >> 32) as u32]).collect());
+    let magnitude = from_words(words);
     let sign = match sign {
         Sign::Negative => num_bigint::Sign::Minus,
         Sign::Positive => num_bigint::Sign::Plus,
@@ -76,13 +63,13 @@ impl Fraction {
     fn of(x: &BigRational) -> Self {
         Fraction {
             num: to_ibig(x.numer()),
-            den: to_ubig(x.denom().magnitude()),
+            den: to_dashu(x.denom().magnitude()),
         }
     }
     fn to_rational(&self) -> BigRational {
         BigRational::new_raw(
             to_bigint(&self.num),
-            BigInt::from_biguint(num_bigint::Sign::Plus, to_biguint(&self.den)),
+            BigInt::from_biguint(num_bigint::Sign::Plus, from_words(self.den.as_words())),
         )
     }
 }
@@ -204,7 +191,7 @@ pub(super) fn split_coordinate(
     t: &BigRational,
 ) -> Option<(Vec<BigRational>, Vec<BigRational>)> {
     // The denominators first: their gcds decide, and the numerators are converted only then.
-    let dens: Vec<UBig> = values.iter().map(|v| to_ubig(v.denom().magnitude())).collect();
+    let dens: Vec<UBig> = values.iter().map(|v| to_dashu(v.denom().magnitude())).collect();
     let gcds = neighbour_gcds(dens.iter());
     if !lcm_is_long(&dens, &gcds) {
         return None;
@@ -228,7 +215,7 @@ fn triangle(
     t: &BigRational,
 ) -> (Vec<BigRational>, Vec<BigRational>) {
     let n = values.len() - 1;
-    let q = to_ubig(t.denom().magnitude());
+    let q = to_dashu(t.denom().magnitude());
     let p = to_ibig(t.numer());
     let product: UBig = column.iter().map(|v| &v.den).product();
     let s = IBig::from(q.clone()) - &p;
