@@ -41,7 +41,8 @@
 //!
 //! - storage and errors, and the folders' `mod.rs` (declarations and re-exports only):
 //!   `coords` (the point types' storage), `error`, `exact`, `float`;
-//! - kernels on numbers: `exact/gcd`, `exact/splitting`, `exact/elevation_words`,
+//! - kernels on numbers: `exact/gcd`, `exact/splitting`, `exact/long_pair`,
+//!   `exact/elevation_words`,
 //!   `exact/fraction_free/int`, `exact/fraction_free/horner`, `exact/fraction_free/split`,
 //!   `exact/fraction_free/choice` (which of them runs, by size),
 //!   `float/scratch`, `float/ulp`, `float/eft`, `float/casteljau`, `float/compensated_pairs`,

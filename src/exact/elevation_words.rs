@@ -30,6 +30,7 @@
 use crate::coords::Point;
 use crate::exact::gcd;
 use crate::exact::gcd::{gcd_u64, Shared};
+use crate::exact::long_pair::{pair_long, LongFraction, Residues, INPUT_WORDS, RESIDUE_WORDS};
 use num_bigint::{BigInt, BigUint, Sign};
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -427,6 +428,63 @@ impl BigDenominators {
     }
 }
 
+/// The residues [`pair_long`] takes by the weights: `total`'s once, `α`'s and `β`'s for the
+/// pair at hand (shared by its coordinates).
+struct LongWeights {
+    total: Residues,
+    denominator_words: usize,
+    pair: Option<(u32, u32, Residues, Residues)>,
+}
+
+impl LongWeights {
+    fn new(total: u32, denominator_words: usize) -> Self {
+        LongWeights {
+            total: Residues::new(total, RESIDUE_WORDS),
+            denominator_words,
+            pair: None,
+        }
+    }
+
+    fn at(&mut self, alpha: u32, beta: u32) -> (&Residues, &Residues, &Residues) {
+        let words = self.denominator_words;
+        if !matches!(self.pair, Some((a, b, _, _)) if (a, b) == (alpha, beta)) {
+            self.pair = Some((alpha, beta, Residues::new(alpha, words), Residues::new(beta, words)));
+        }
+        let (_, _, a, b) = self.pair.as_ref().expect("just set");
+        (a, b, &self.total)
+    }
+}
+
+/// [`pair_long`] on `I`-word inputs, when `a` and `b` fit: the callers try 4 words (256
+/// bits: 40-digit fractions have 133), 8 (100-digit ones have 333) and then 16, since
+/// every copy and cleared buffer is as long as the type.
+fn on_words<const I: usize, const P: usize>(
+    a: &BigRational,
+    negate_first: bool,
+    alpha: &Residues,
+    b: &BigRational,
+    beta: &Residues,
+    total: &Residues,
+    g: u32,
+) -> Option<BigRational> {
+    let mut x = LongFraction::<I>::of(a)?;
+    let y = LongFraction::<I>::of(b)?;
+    x.negative ^= negate_first;
+    Some(pair_long::<I, P>(&x, alpha, &y, beta, total, g))
+}
+
+/// The most words of any denominator of the points, at most [`INPUT_WORDS`] (the longer
+/// ones take `pair_big`).
+fn long_denominators(points: &[Point<BigRational>]) -> usize {
+    points
+        .iter()
+        .flat_map(|p| p.coords())
+        .map(|c| c.denom().iter_u64_digits().len())
+        .filter(|&len| len <= INPUT_WORDS)
+        .max()
+        .unwrap_or(0)
+}
+
 /// One elevation step (7) of the points, each new coordinate reduced on its own.
 pub(crate) fn elevate_pairwise(points: &[Point<BigRational>]) -> Vec<Point<BigRational>> {
     let n = points.len() - 1;
@@ -467,6 +525,7 @@ fn combine_neighbours(
     }));
     // Built on the first coordinate past the word path: none where all fit.
     let mut big: Option<BigDenominators> = None;
+    let mut long_weights: Option<LongWeights> = None;
     let mut out = Vec::with_capacity(n);
     for i in 1..=n {
         let (alpha, beta) = weights(i as u32);
@@ -488,7 +547,26 @@ fn combine_neighbours(
                 let g = big
                     .get_or_insert_with(|| BigDenominators::new(points, &words))
                     .shared(j, dim, &before[k], &here[k]);
-                pair_big(&before[k], negate_first, alpha, &here[k], beta, total, &g)
+                let on_stack = match (&g, &moduli) {
+                    (Shared::Word(g), Some(_)) => u32::try_from(*g).ok(),
+                    _ => None,
+                };
+                let pair = on_stack.and_then(|g| {
+                    let weights =
+                        long_weights.get_or_insert_with(|| LongWeights::new(total, long_denominators(points)));
+                    let (alpha, beta, total) = weights.at(alpha, beta);
+                    let (a, b) = (&before[k], &here[k]);
+                    let words = [a.numer().bits(), a.denom().bits(), b.numer().bits(), b.denom().bits()]
+                        .into_iter()
+                        .max()
+                        .map_or(0, |bits| bits.div_ceil(64));
+                    match words {
+                        0..=4 => on_words::<4, 10>(a, negate_first, alpha, b, beta, total, g),
+                        5..=8 => on_words::<8, 18>(a, negate_first, alpha, b, beta, total, g),
+                        _ => on_words::<INPUT_WORDS, RESIDUE_WORDS>(a, negate_first, alpha, b, beta, total, g),
+                    }
+                });
+                pair.unwrap_or_else(|| pair_big(&before[k], negate_first, alpha, &here[k], beta, total, &g))
             })
         });
         out.push(Point::from_valid(coords));

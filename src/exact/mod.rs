@@ -16,7 +16,8 @@
 //! - `power_basis`: `to_power` of curves and surfaces, differences over the lcm of the
 //!   denominators and one reduction per coefficient;
 //! - `elevation_words`: one elevation step point by point, each coordinate on machine
-//!   words where it fits 256 bits.
+//!   words where it fits 256 bits, and `long_pair` the same pair on up to 16 words on the
+//!   stack.
 //!
 //! The public generic methods reach these kernels through the kernel methods of
 //! `BigRational`'s [`Scalar`](crate::Scalar) implementation.
@@ -26,6 +27,7 @@ pub(crate) mod elevation_words;
 pub(crate) mod fit_numbers;
 pub mod fraction_free;
 pub mod gcd;
+pub(crate) mod long_pair;
 pub(crate) mod power_basis;
 pub mod small_rational;
 pub(crate) mod splitting;
