@@ -101,7 +101,17 @@ pub(crate) fn rem_word(x: &BigUint, m: u64) -> u64 {
 
 /// `x` in dashu-int's form: converted once where one number takes part in several gcds.
 pub(crate) fn to_dashu(x: &BigUint) -> dashu_int::UBig {
-    dashu_int::UBig::from_words(&x.to_u64_digits())
+    // Up to 16 words through a buffer on the stack: one allocation, dashu-int's own.
+    let mut words = [0u64; 16];
+    let digits = x.iter_u64_digits();
+    if digits.len() > words.len() {
+        return dashu_int::UBig::from_words(&x.to_u64_digits());
+    }
+    let len = digits.len();
+    for (w, d) in words.iter_mut().zip(digits) {
+        *w = d;
+    }
+    dashu_int::UBig::from_words(&words[..len])
 }
 
 /// A gcd of two denominators: a word in the common case, where the reductions that use it
