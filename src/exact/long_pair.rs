@@ -23,7 +23,8 @@ pub(crate) const RESIDUE_WORDS: usize = 2 * INPUT_WORDS + 2;
 const HALVES: usize = 2 * RESIDUE_WORDS;
 
 /// A natural number of at most `N` words, little-endian; `len` counts the words up to the
-/// highest nonzero one (zero has none). Inputs are `Long<I>`, sums of products `Long<P>`
+/// highest nonzero one (zero has none), and the words past it are zero (sums and
+/// differences read them). Inputs are `Long<I>`, sums of products `Long<P>`
 /// with `P = 2 I + 2`: kept as short as the inputs allow, since every copy and every
 /// cleared buffer is as long as `N`.
 #[derive(Clone, Copy)]
