@@ -3,7 +3,8 @@
 //! curve) against the naive formulas on `BigRational`, with `==` and in lowest terms:
 //! 100-digit-sized numerators and denominators of any sign, zero coordinates, equal
 //! denominators, denominators sharing a long, a one-word or a small factor, and
-//! denominators sharing small primes with the weights `i`, `n+1−i`, `n+1` and `n`.
+//! denominators sharing small primes with the weights `i`, `n+1−i`, `n+1` and `n`; and
+//! curves mixing every length the kernels tell apart (words, 4, 8, 16 words, longer).
 
 use casteljau::{BezierCurve, BigInt, BigRational, Point};
 use num_traits::{One, Zero};
@@ -147,4 +148,56 @@ fn a_changed_input_changes_the_elevation() {
         &c.derivative(1).unwrap().points().to_vec(),
         &naive_derivative(&mutant)
     ));
+}
+
+/// A natural number from 64-bit limbs, at least 1.
+fn from_limbs(limbs: &[u64]) -> BigInt {
+    limbs
+        .iter()
+        .rev()
+        .fold(BigInt::zero(), |acc, &w| (acc << 64) + BigInt::from(w))
+        .max(BigInt::one())
+}
+
+/// One coordinate of any length the kernels tell apart: within the word path (up to 110
+/// bits), 3 to 4, 5 to 8, 9 to 16 words (the stack types of `long_pair`) and 17 to 20
+/// (past them), its denominator times a factor the curve shares (a word below 2^32, one
+/// above, or 1) and a power of 2 and 3 (which the weights share).
+fn mixed_coordinate(common: u64) -> impl Strategy<Value = Q> {
+    let limbs = |words: std::ops::RangeInclusive<usize>| {
+        words.prop_flat_map(|len| proptest::collection::vec(any::<u64>(), len))
+    };
+    let length = prop_oneof![limbs(1..=1), limbs(3..=4), limbs(5..=8), limbs(9..=16), limbs(17..=20)];
+    (length.clone(), length, any::<bool>(), (0u32..6, 0u32..4), any::<bool>()).prop_map(
+        move |(num, den, negative, (a, b), shares)| {
+            let shared = if shares { BigInt::from(common) } else { BigInt::one() };
+            let den = from_limbs(&den) * shared * BigInt::from(2u64.pow(a) * 3u64.pow(b));
+            let num = from_limbs(&num);
+            Q::new(if negative { -num } else { num }, den)
+        },
+    )
+}
+
+fn mixed_curve() -> impl Strategy<Value = BezierCurve<Q>> {
+    (
+        1usize..=9,
+        1..=3usize,
+        prop_oneof![Just(1u64), 2u64..1 << 32, any::<u64>()],
+    )
+        .prop_flat_map(|(n, dim, common)| {
+            proptest::collection::vec(proptest::collection::vec(mixed_coordinate(common), dim), n + 1)
+                .prop_map(|points| BezierCurve::from_coords(points).unwrap())
+        })
+}
+
+proptest! {
+    #![proptest_config(Config::with_cases(150))]
+
+    /// Curves whose coordinates take every path at once (words, the stack pairs of 4, 8
+    /// and 16 words, big integers), with shared factors below and above 2^32.
+    #[test]
+    fn elevation_and_derivative_of_mixed_lengths(c in mixed_curve()) {
+        prop_assert!(same(&c.elevate().unwrap().points().to_vec(), &naive_elevation(&c)));
+        prop_assert!(same(&c.derivative(1).unwrap().points().to_vec(), &naive_derivative(&c)));
+    }
 }
