@@ -73,14 +73,22 @@ fn middle(lo: usize, hi: usize) -> usize {
 
 /// `x` as dashu-int's signed integer.
 fn to_ibig(x: &BigInt) -> IBig {
-    let sign = if x.sign() == Sign::Minus { DashuSign::Negative } else { DashuSign::Positive };
+    let sign = if x.sign() == Sign::Minus {
+        DashuSign::Negative
+    } else {
+        DashuSign::Positive
+    };
     IBig::from_parts(sign, gcd::to_dashu(x.magnitude()))
 }
 
 /// `x` as num-bigint's.
 fn from_ibig(x: IBig) -> BigInt {
     let (sign, magnitude) = x.into_parts();
-    let sign = if sign == DashuSign::Negative { Sign::Minus } else { Sign::Plus };
+    let sign = if sign == DashuSign::Negative {
+        Sign::Minus
+    } else {
+        Sign::Plus
+    };
     BigInt::from_biguint(sign, gcd::from_words(magnitude.as_words()))
 }
 
@@ -128,7 +136,11 @@ impl ProductTree {
         }
         let top = gcd::to_dashu(x.magnitude()) % &self.nodes[0];
         // x mod f = f − (|x| mod f) for a negative x and a nonzero remainder.
-        let top = if x.sign() == Sign::Minus && top != UBig::ZERO { &self.nodes[0] - top } else { top };
+        let top = if x.sign() == Sign::Minus && top != UBig::ZERO {
+            &self.nodes[0] - top
+        } else {
+            top
+        };
         down(&self.nodes, &mut out, top, 0, self.factors.len(), 0);
         out
     }
