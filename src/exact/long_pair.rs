@@ -6,7 +6,7 @@
 //! the weights taken by multiplications ([`Residues`]) instead of chained divisions.
 //!
 //! Inputs within 110 bits keep `elevation_words`' own kernel on four fixed words: this one
-//! on two-word inputs took 1.2 to 1.45 times as long there (a 30-digit derivative of degree
+//! on two-word inputs took 1.1 to 1.55 times as long there (a 30-digit derivative of degree
 //! 50: 38.9–41.5 against 32.9–34.7 µs; a 5-digit elevation of degree 20: 12.5–13.7 against
 //! 8.8–9.4 µs; 2026-12-05).
 
