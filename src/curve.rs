@@ -115,6 +115,14 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
         }
     }
 
+    /// [`Self::from_valid`] from a vector: a polygon past the inline length keeps the
+    /// vector's buffer (the exact kernels' results), where collecting moves every point.
+    pub(crate) fn from_valid_vec(points: Vec<P>) -> Self {
+        Bezier {
+            points: SmallVec::from_vec(points),
+        }
+    }
+
     /// The control points as an array when there are exactly `N` of them, stored inline.
     /// Asking for the inline buffer, not only the length, spares the fast paths the test of
     /// where a `SmallVec` keeps its items: one comparison, on its length, remains.
@@ -251,7 +259,7 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     /// [`Self::elevate`] by the fraction-free kernel, when the points are exact rationals.
     #[cold]
     fn elevate_exact(&self) -> Option<Result<Self>> {
-        Some(P::curve_elevate(&self.points)?.map(Bezier::from_valid))
+        Some(P::curve_elevate(&self.points)?.map(Bezier::from_valid_vec))
     }
 
     /// [`Self::elevate`] by the steps of (7) on the scalar type itself, whatever it is: the
@@ -303,7 +311,7 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     pub fn elevate_by(&self, r: usize) -> Result<Self> {
         if T::EXACT {
             if let Some(points) = P::curve_elevate_by(&self.points, r) {
-                return Ok(Bezier::from_valid(points?));
+                return Ok(Bezier::from_valid_vec(points?));
             }
         }
         self.elevate_by_reference(r)
@@ -364,7 +372,7 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     #[cold]
     fn split_exact(&self, t0: &T) -> Option<(Self, Self)> {
         let (left, right) = P::curve_split(&self.points, t0)?;
-        Some((Bezier::from_valid(left), Bezier::from_valid(right)))
+        Some((Bezier::from_valid_vec(left), Bezier::from_valid_vec(right)))
     }
 
     /// [`Self::split_at`] by de Casteljau's steps on the scalar type itself, whatever it
@@ -415,7 +423,7 @@ impl<T: Scalar, P: VectorSpace<Scalar = T>> Bezier<P> {
     pub fn derivative(&self, k: usize) -> Result<Self> {
         if T::EXACT {
             if let Some(points) = P::curve_derivative(&self.points, k) {
-                return Ok(Bezier::from_valid(points?));
+                return Ok(Bezier::from_valid_vec(points?));
             }
         }
         self.derivative_reference(k)

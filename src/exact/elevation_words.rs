@@ -287,7 +287,8 @@ fn pair_words(
             shared /= h;
         }
     }
-    let h = total.gcd_with(total.of_words(&t.0));
+    // The derivative's total is 1.
+    let h = if total.value() == 1 { 1 } else { total.gcd_with(total.of_words(&t.0)) };
     if h != 1 {
         t = t.div_exact_small(h);
     }
