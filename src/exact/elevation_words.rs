@@ -288,7 +288,11 @@ fn pair_words(
         }
     }
     // The derivative's total is 1.
-    let h = if total.value() == 1 { 1 } else { total.gcd_with(total.of_words(&t.0)) };
+    let h = if total.value() == 1 {
+        1
+    } else {
+        total.gcd_with(total.of_words(&t.0))
+    };
     if h != 1 {
         t = t.div_exact_small(h);
     }
