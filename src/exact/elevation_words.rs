@@ -17,8 +17,9 @@
 //!
 //! When every input numerator and denominator has at most 110 bits (30-digit fractions
 //! have 100), `t` and the denominator fit 256 bits and nothing is allocated but the two
-//! integers of the result; otherwise, or when `g` is longer than a word, the coordinate is
-//! computed on big integers (`pair_big`).
+//! integers of the result; otherwise, up to 16 words and with `g` below 2^32, the same
+//! steps run on the stack (`exact::long_pair`), and past that on big integers
+//! (`pair_big`).
 //!
 //! The gcds `g` of all neighbouring denominators are computed first, two interleaved
 //! binary gcds at a time (`gcd::paired_gcds`); the small gcds need residues modulo `α`,
@@ -460,9 +461,9 @@ impl LongWeights {
     }
 }
 
-/// [`pair_long`] on `I`-word inputs, when `a` and `b` fit: the callers try 4 words (256
-/// bits: 40-digit fractions have 133), 8 (100-digit ones have 333) and then 16, since
-/// every copy and cleared buffer is as long as the type.
+/// [`pair_long`] on `I`-word inputs, when `a` and `b` fit: the caller picks 4 words (256
+/// bits: 40-digit fractions have 133), 8 (100-digit ones have 333) or 16 by the inputs'
+/// length, since every copy and cleared buffer is as long as the type.
 fn on_words<const I: usize, const P: usize>(
     a: &BigRational,
     negate_first: bool,
