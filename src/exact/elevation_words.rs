@@ -114,47 +114,21 @@ impl U256 {
         self.halves().fold(0u64, |r, (_, h)| ((r << 32) | h) % k) as u32
     }
 
-    /// `self / k` for a `0 < k < 2^32` known to divide `self`: the power of two by a shift,
-    /// the odd part by Hensel's exact division (one multiplication by `k⁻¹ mod 2^64` per
-    /// word, as GMP's `mpn_divexact_1`), where long division would cost eight dependent
-    /// hardware divisions.
+    /// `self / k` for a `0 < k < 2^32` known to divide `self` ([`gcd::divide_exactly`]).
+    #[inline]
     fn div_exact_small(&self, k: u32) -> Self {
-        let zeros = k.trailing_zeros();
-        let odd = u64::from(k >> zeros);
-        let words = if zeros == 0 { self.0 } else { self.shr_small(zeros).0 };
-        if odd == 1 {
-            return U256(words);
-        }
-        // Newton's iteration doubles the correct low bits: 3·odd XOR 2 is right to 5 bits.
-        let mut inverse = odd.wrapping_mul(3) ^ 2;
-        for _ in 0..4 {
-            inverse = inverse.wrapping_mul(2u64.wrapping_sub(odd.wrapping_mul(inverse)));
-        }
-        let mut out = [0u64; 4];
-        let mut borrow = 0u64;
-        for (o, w) in out.iter_mut().zip(words) {
-            let (s, below) = w.overflowing_sub(borrow);
-            let q = s.wrapping_mul(inverse);
-            *o = q;
-            borrow = ((u128::from(q) * u128::from(odd)) >> 64) as u64 + u64::from(below);
-        }
-        U256(out)
-    }
-
-    /// `self >> k` for `0 < k < 64`.
-    fn shr_small(&self, k: u32) -> Self {
-        let mut out = [0u64; 4];
-        for (j, o) in out.iter_mut().enumerate() {
-            let high = self.0.get(j + 1).map_or(0, |&w| w << (64 - k));
-            *o = (self.0[j] >> k) | high;
-        }
-        U256(out)
+        let mut words = self.0;
+        gcd::divide_exactly(&mut words, k);
+        U256(words)
     }
 
     fn is_zero(&self) -> bool {
         *self == U256::ZERO
     }
 
+    /// [`gcd::from_words`] for four fixed words, kept apart: the 30-digit degree-50
+    /// derivative took 32.5 µs this way and 34.9 µs through the general one (medians of
+    /// eight alternating runs, 2026-12-05).
     fn to_biguint(self) -> BigUint {
         let mut halves = [0u32; 8];
         for (pair, w) in halves.chunks_exact_mut(2).zip(self.0) {

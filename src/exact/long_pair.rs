@@ -14,7 +14,7 @@ use num_bigint::{BigInt, BigUint, Sign};
 use num_rational::BigRational;
 use std::cmp::Ordering;
 
-use crate::exact::gcd::gcd_u64;
+use crate::exact::gcd::{self, gcd_u64};
 
 /// Inputs longer than this many words take `pair_big`.
 pub(crate) const INPUT_WORDS: usize = 16;
@@ -23,9 +23,6 @@ pub(crate) const INPUT_WORDS: usize = 16;
 /// below 2^32 has at most `2 · INPUT_WORDS + 1` words, and one more for a sum of two such
 /// products.
 pub(crate) const RESIDUE_WORDS: usize = 2 * INPUT_WORDS + 2;
-
-/// The most 32-bit halves a result can have.
-const HALVES: usize = 2 * RESIDUE_WORDS;
 
 /// A natural number of at most `N` words, little-endian; `len` counts the words up to the
 /// highest nonzero one (zero has none), and the words past it are zero (sums and
@@ -137,48 +134,15 @@ impl<const N: usize> Long<N> {
         self.trim();
     }
 
-    /// `self / k` for a `0 < k < 2^32` known to divide `self`: the power of two by a shift,
-    /// the odd part by Hensel's exact division (a multiplication by `k⁻¹ mod 2^64` per word,
-    /// as GMP's `mpn_divexact_1`), in place.
+    /// `self / k` for a `0 < k < 2^32` known to divide `self`, in place
+    /// ([`gcd::divide_exactly`]).
     fn divide_exactly(&mut self, k: u32) {
-        let zeros = k.trailing_zeros();
-        if zeros != 0 {
-            for j in 0..self.len {
-                let high = if j + 1 < self.len {
-                    self.words[j + 1] << (64 - zeros)
-                } else {
-                    0
-                };
-                self.words[j] = (self.words[j] >> zeros) | high;
-            }
-        }
-        let odd = u64::from(k >> zeros);
-        if odd != 1 {
-            // Newton's iteration doubles the correct low bits: 3·odd XOR 2 is right to 5 bits.
-            let mut inverse = odd.wrapping_mul(3) ^ 2;
-            for _ in 0..4 {
-                inverse = inverse.wrapping_mul(2u64.wrapping_sub(odd.wrapping_mul(inverse)));
-            }
-            let mut borrow = 0u64;
-            for w in &mut self.words[..self.len] {
-                let (s, below) = w.overflowing_sub(borrow);
-                let q = s.wrapping_mul(inverse);
-                *w = q;
-                borrow = ((u128::from(q) * u128::from(odd)) >> 64) as u64 + u64::from(below);
-            }
-        }
+        gcd::divide_exactly(&mut self.words[..self.len], k);
         self.trim();
     }
 
     fn natural(&self) -> BigUint {
-        let mut halves = [0u32; HALVES];
-        for (pair, w) in halves.chunks_exact_mut(2).zip(self.digits()) {
-            pair[0] = *w as u32;
-            pair[1] = (w >> 32) as u32;
-        }
-        let len = 2 * self.len - usize::from(self.len > 0 && halves[2 * self.len - 1] == 0);
-        // One allocation of the right length, the digits of the result.
-        BigUint::from_slice(&halves[..len])
+        gcd::from_words(self.digits())
     }
 }
 

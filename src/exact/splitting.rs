@@ -44,7 +44,7 @@
 //! degree 31) is reduced by one gcd instead (`SMALL_TREE_LEAVES`).
 
 use crate::exact::gcd::{self, Part};
-use dashu_int::{IBig, Sign as DashuSign, UBig};
+use dashu_int::{IBig, UBig};
 use num_bigint::{BigInt, Sign};
 use num_integer::Integer;
 use num_rational::BigRational;
@@ -69,27 +69,6 @@ pub(crate) struct ProductTree {
 /// The split point of `[lo, hi)`, the same in every tree of this module.
 fn middle(lo: usize, hi: usize) -> usize {
     lo + (hi - lo) / 2
-}
-
-/// `x` as dashu-int's signed integer.
-fn to_ibig(x: &BigInt) -> IBig {
-    let sign = if x.sign() == Sign::Minus {
-        DashuSign::Negative
-    } else {
-        DashuSign::Positive
-    };
-    IBig::from_parts(sign, gcd::to_dashu(x.magnitude()))
-}
-
-/// `x` as num-bigint's.
-fn from_ibig(x: IBig) -> BigInt {
-    let (sign, magnitude) = x.into_parts();
-    let sign = if sign == DashuSign::Negative {
-        Sign::Minus
-    } else {
-        Sign::Plus
-    };
-    BigInt::from_biguint(sign, gcd::from_words(magnitude.as_words()))
 }
 
 impl ProductTree {
@@ -167,7 +146,7 @@ fn node_powers(base: &BigInt, terms: usize) -> BTreeMap<usize, IBig> {
     let mut powers = BTreeMap::new();
     for m in lengths {
         let value = if m == 1 {
-            to_ibig(base)
+            gcd::to_ibig(base)
         } else {
             &powers[&(m / 2)] * &powers[&(m - m / 2)]
         };
@@ -231,7 +210,7 @@ impl Sum<'_> {
 pub(crate) fn sum_over(numerators: &[BigInt], denominators: Option<&ProductTree>, a: &BigInt, b: &BigInt) -> BigInt {
     let n = numerators.len() - 1;
     let s = b - a;
-    let numerators: Vec<IBig> = numerators.iter().map(to_ibig).collect();
+    let numerators: Vec<IBig> = numerators.iter().map(gcd::to_ibig).collect();
     let sum = Sum {
         n,
         numerators: &numerators,
@@ -241,7 +220,7 @@ pub(crate) fn sum_over(numerators: &[BigInt], denominators: Option<&ProductTree>
     };
     let root = sum.node(0, n + 1, 0);
     // Q = n! divides T (see the module documentation).
-    from_ibig(root.t / root.q)
+    gcd::from_ibig(&(root.t / root.q))
 }
 
 /// `b'(t)` of one coordinate, `n ≥ 1`, as one binary-splitting sum over the product `D` of

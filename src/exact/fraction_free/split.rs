@@ -25,10 +25,10 @@
 //! divisor prepared once (`ConstDivisor`). The gcds of neighbouring denominators that fit two
 //! words are computed two at a time (`gcd::paired_gcds`).
 
-use crate::exact::gcd::{from_words, paired_gcds, to_dashu};
+use crate::exact::gcd::{from_ibig, from_words, paired_gcds, to_dashu, to_ibig};
 use dashu_int::fast_div::ConstDivisor;
 use dashu_int::ops::{BitTest, Gcd};
-use dashu_int::{IBig, Sign, UBig};
+use dashu_int::{IBig, UBig};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use std::borrow::Cow;
@@ -37,25 +37,6 @@ use std::borrow::Cow;
 struct Fraction {
     num: IBig,
     den: UBig,
-}
-
-fn to_ibig(x: &BigInt) -> IBig {
-    let sign = if x.sign() == num_bigint::Sign::Minus {
-        Sign::Negative
-    } else {
-        Sign::Positive
-    };
-    IBig::from_parts(sign, to_dashu(x.magnitude()))
-}
-
-fn to_bigint(x: &IBig) -> BigInt {
-    let (sign, words) = x.as_sign_words();
-    let magnitude = from_words(words);
-    let sign = match sign {
-        Sign::Negative => num_bigint::Sign::Minus,
-        Sign::Positive => num_bigint::Sign::Plus,
-    };
-    BigInt::from_biguint(sign, magnitude)
 }
 
 impl Fraction {
@@ -68,7 +49,7 @@ impl Fraction {
     }
     fn to_rational(&self) -> BigRational {
         BigRational::new_raw(
-            to_bigint(&self.num),
+            from_ibig(&self.num),
             BigInt::from_biguint(num_bigint::Sign::Plus, from_words(self.den.as_words())),
         )
     }
