@@ -159,15 +159,22 @@ fn from_limbs(limbs: &[u64]) -> BigInt {
         .max(BigInt::one())
 }
 
-/// One coordinate of any length the kernels tell apart: within the word path (up to 110
-/// bits), 3 to 4, 5 to 8, 9 to 16 words (the stack types of `long_pair`) and 17 to 20
+/// One coordinate of any length the kernels tell apart: within the word path (up to 119
+/// bits), two words (on either side of 119 bits, the gcds of two words past it), 3 to 4, 5 to 8, 9 to 16 words (the stack types of `long_pair`) and 17 to 20
 /// (past them), its denominator times a factor the curve shares (a word below 2^32, one
 /// above, or 1) and a power of 2 and 3 (which the weights share).
 fn mixed_coordinate(common: u64) -> impl Strategy<Value = Q> {
     let limbs = |words: std::ops::RangeInclusive<usize>| {
         words.prop_flat_map(|len| proptest::collection::vec(any::<u64>(), len))
     };
-    let length = prop_oneof![limbs(1..=1), limbs(3..=4), limbs(5..=8), limbs(9..=16), limbs(17..=20)];
+    let length = prop_oneof![
+        limbs(1..=1),
+        limbs(2..=2),
+        limbs(3..=4),
+        limbs(5..=8),
+        limbs(9..=16),
+        limbs(17..=20)
+    ];
     (length.clone(), length, any::<bool>(), (0u32..6, 0u32..4), any::<bool>()).prop_map(
         move |(num, den, negative, (a, b), shares)| {
             let shared = if shares { BigInt::from(common) } else { BigInt::one() };

@@ -221,6 +221,8 @@ impl<const I: usize> LongFraction<I> {
 /// `(α x + β y) / total` in lowest terms for reduced `x`, `y`, given `g = gcd(den x, den y)
 /// < 2^32`, on `P = 2 I + 2` words. The weights' residues cover at least the denominators'
 /// lengths (`alpha`, `beta`) and `P` words (`total`); `α β < 2^32`.
+// Inlined into each `on_words`: called, it took 1–3% longer on 40- to 100-digit curves.
+#[inline(always)]
 pub(crate) fn pair_long<const I: usize, const P: usize>(
     x: &LongFraction<I>,
     alpha: &Residues,
@@ -339,7 +341,7 @@ mod tests {
         /// Against num-rational's own arithmetic, in lowest terms: numerators and
         /// denominators of 1 to 16 words, denominators sharing a factor below 2^32 and small
         /// primes with the weights and the total, either sign, zero, and the derivative's
-        /// negated first term; both input lengths where the numbers fit them.
+        /// negated first term; each input length (16, 8 and 4 words) where the numbers fit it.
         #[test]
         fn pair_is_num_rationals(
             (x, y) in (limbs(0..17), limbs(0..17)),
@@ -362,7 +364,8 @@ mod tests {
             let weights = (alpha, beta, total);
             let long = pair::<16, 34>(&a, &b, weights, g, negate_first);
             prop_assert!(long.is_some() || a.numer().bits() > 1024 || a.denom().bits() > 1024);
-            for got in [long, pair::<8, 18>(&a, &b, weights, g, negate_first)].into_iter().flatten() {
+            let shorter = [pair::<8, 18>(&a, &b, weights, g, negate_first), pair::<4, 10>(&a, &b, weights, g, negate_first)];
+            for got in [long].into_iter().chain(shorter).flatten() {
                 prop_assert_eq!(format!("{got:?}"), format!("{want:?}"));
                 prop_assert_eq!(got, want.clone());
             }
