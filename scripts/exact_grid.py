@@ -189,8 +189,17 @@ def main():
     ap.add_argument("--ts", default=",".join(TS), help="1/3, 20 or 100 (digits of t's denominator)")
     ap.add_argument("--seed", type=int, default=47)
     ap.add_argument("--example", default=os.path.join(ROOT, "target", "release", "examples", "exact_grid"))
+    ap.add_argument("--cases", action="store_true", help="print the cases' lines for the example, run nothing")
     args = ap.parse_args()
     rng = random.Random(args.seed)
+    if args.cases:
+        for digits in [int(d) for d in args.digits.split(",")]:
+            for n in [int(d) for d in args.degrees.split(",")]:
+                for op in args.ops.split(","):
+                    for t_kind in args.ts.split(",") if op in WITH_T else ["-"]:
+                        if n <= MAX_DEGREE.get(op, n):
+                            print(case(rng, op, n, digits, "1/3" if t_kind == "-" else t_kind)[0])
+        return
     rust = subprocess.Popen([args.example], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True, bufsize=1)
     worst = {}
     print(f"{'op':<14}{'digits':>7}{'degree':>7}{'t':>5}{'casteljau':>12}{'gmpy2':>11}{'ratio':>8}{'spread':>14}{'flint':>11}{'ratio':>8}")

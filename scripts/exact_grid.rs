@@ -14,8 +14,14 @@
 //! for about `BATCH_NS`, after one run that gives the result (the only run, timed by itself,
 //! when it took more than ten batches' time).
 //!
+//! With `--wall REPS`, each batch is instead `REPS` runs timed by the wall clock, nine
+//! batches: finer than the thread's count for comparing two builds on one case, side by
+//! side on a quiet machine (`exact_grid.py --cases` prints the lines).
+//!
 //! ```sh
 //! cargo run --release --example exact_grid < cases.tsv
+//! python3 scripts/exact_grid.py --ops derivative --digits 35 --degrees 50 --cases > case.tsv
+//! target/release/examples/exact_grid --wall 1000 < case.tsv | cut -f1-3
 //! ```
 
 use casteljau::{format_exact, parse_exact, parse_net, parse_numbers, parse_points};
@@ -69,7 +75,32 @@ fn operation(op: &str, t: BigRational, data: &str) -> Result<Box<dyn Fn() -> Vec
     })
 }
 
+/// `reps` runs a batch, nine batches by the wall clock: the means, sorted.
+fn wall_means(run: &dyn Fn() -> Vec<BigRational>, reps: u64) -> Vec<u64> {
+    let mut means: Vec<u64> = (0..9)
+        .map(|_| {
+            let start = std::time::Instant::now();
+            for _ in 0..reps {
+                std::hint::black_box(run());
+            }
+            (start.elapsed().as_nanos() / u128::from(reps)) as u64
+        })
+        .collect();
+    means.sort_unstable();
+    means
+}
+
 fn main() -> Result<()> {
+    let args: Vec<String> = std::env::args().collect();
+    let wall: Option<u64> = match args.get(1).map(String::as_str) {
+        Some("--wall") => Some(
+            args.get(2)
+                .and_then(|r| r.parse().ok())
+                .filter(|&r| r > 0)
+                .expect("--wall REPS"),
+        ),
+        _ => None,
+    };
     let stdin = std::io::stdin();
     let mut out = std::io::stdout().lock();
     for line in stdin.lock().lines() {
@@ -84,6 +115,20 @@ fn main() -> Result<()> {
         let start = cpu_ns();
         let result = std::hint::black_box(run());
         let once = cpu_ns() - start;
+        if let Some(reps) = wall {
+            let means = wall_means(&run, reps);
+            let text: Vec<String> = result.iter().map(format_exact).collect();
+            let line = format!(
+                "{}\t{}\t{}\t{}\t{}",
+                means[4],
+                means[0],
+                means[8],
+                reps * 9,
+                text.join(" ")
+            );
+            writeln!(out, "{line}").expect("stdout");
+            continue;
+        }
         // The kernel's count moves at scheduler ticks (a few ms): the repetitions of a batch
         // are counted by doubling until the count has moved by a tenth of a batch or more.
         let batches = if once > 10 * BATCH_NS { 0 } else { BATCHES };
