@@ -66,13 +66,24 @@ impl<const N: usize> Long<N> {
         self.len == 0
     }
 
-    /// `out = self · o`, `out` of `M ≥ self.len + o.len` words (written in place: a
-    /// returned product was copied out).
+    /// `out = self · o` for a zero `out` of `M ≥ self.len + o.len` words (written in place:
+    /// a returned product was copied out). The first row is stored, not added to a cleared
+    /// buffer: the clearing's wide stores and the first row's loads of them stalled, a third
+    /// of this function's samples on one instruction.
     fn times<const M: usize>(&self, o: &Self, out: &mut Long<M>) {
-        out.len = self.len + o.len;
-        out.words[..out.len].fill(0);
-        for (i, &a) in self.digits().iter().enumerate() {
-            let row = &mut out.words[i..i + o.len + 1];
+        debug_assert!(out.is_zero() && out.words.iter().all(|&w| w == 0));
+        let (Some((&first, rest)), false) = (self.digits().split_first(), o.is_zero()) else {
+            return;
+        };
+        let mut carry = 0u64;
+        for (r, &b) in out.words.iter_mut().zip(o.digits()) {
+            let v = u128::from(first) * u128::from(b) + u128::from(carry);
+            *r = v as u64;
+            carry = (v >> 64) as u64;
+        }
+        out.words[o.len] = carry;
+        for (i, &a) in rest.iter().enumerate() {
+            let row = &mut out.words[i + 1..i + o.len + 2];
             let (last, row) = row.split_last_mut().expect("a row has a carry word");
             let mut carry = 0u64;
             for (r, &b) in row.iter_mut().zip(o.digits()) {
@@ -82,6 +93,7 @@ impl<const N: usize> Long<N> {
             }
             *last = carry;
         }
+        out.len = self.len + o.len;
         out.trim();
     }
 
