@@ -160,7 +160,8 @@ fn from_limbs(limbs: &[u64]) -> BigInt {
 }
 
 /// One coordinate of any length the kernels tell apart: within the word path (up to 119
-/// bits), two words (on either side of 119 bits, the gcds of two words past it), 3 to 4, 5 to 8, 9 to 16 words (the stack types of `long_pair`) and 17 to 20
+/// bits), two words (on either side of 119 bits: past it, the stack pairs with the gcds of
+/// two words), 3 to 4, 5 to 8, 9 to 16 words (the stack types of `long_pair`) and 17 to 20
 /// (past them), its denominator times a factor the curve shares (a word below 2^32, one
 /// above, or 1) and a power of 2 and 3 (which the weights share).
 fn mixed_coordinate(common: u64) -> impl Strategy<Value = Q> {

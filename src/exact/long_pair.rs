@@ -376,7 +376,10 @@ mod tests {
             let weights = (alpha, beta, total);
             let long = pair::<16, 34>(&a, &b, weights, g, negate_first);
             prop_assert!(long.is_some() || a.numer().bits() > 1024 || a.denom().bits() > 1024);
-            let shorter = [pair::<8, 18>(&a, &b, weights, g, negate_first), pair::<4, 10>(&a, &b, weights, g, negate_first)];
+            let shorter = [
+                pair::<8, 18>(&a, &b, weights, g, negate_first),
+                pair::<4, 10>(&a, &b, weights, g, negate_first),
+            ];
             for got in [long].into_iter().chain(shorter).flatten() {
                 prop_assert_eq!(format!("{got:?}"), format!("{want:?}"));
                 prop_assert_eq!(got, want.clone());
