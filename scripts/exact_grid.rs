@@ -75,6 +75,43 @@ fn operation(op: &str, t: BigRational, data: &str) -> Result<Box<dyn Fn() -> Vec
     })
 }
 
+/// The means of `BATCHES` batches of about `BATCH_NS` each by the thread's CPU time, sorted,
+/// and the number of runs (one run of `once` ns alone when that took ten batches' time).
+fn cpu_means(run: &dyn Fn() -> Vec<BigRational>, once: u64) -> (Vec<u64>, u64) {
+    // The kernel's count moves at scheduler ticks (a few ms): the repetitions of a batch
+    // are counted by doubling until the count has moved by a tenth of a batch or more.
+    let batches = if once > 10 * BATCH_NS { 0 } else { BATCHES };
+    let mut reps = 1u64;
+    if batches > 0 {
+        loop {
+            let start = cpu_ns();
+            for _ in 0..reps {
+                std::hint::black_box(run());
+            }
+            let spent = cpu_ns() - start;
+            if spent >= BATCH_NS / 10 {
+                reps = (reps * BATCH_NS / spent).max(1);
+                break;
+            }
+            reps *= 2;
+        }
+    }
+    let mut means: Vec<u64> = (0..batches)
+        .map(|_| {
+            let start = cpu_ns();
+            for _ in 0..reps {
+                std::hint::black_box(run());
+            }
+            (cpu_ns() - start) / reps
+        })
+        .collect();
+    if means.is_empty() {
+        means.push(once);
+    }
+    means.sort_unstable();
+    (means, if batches == 0 { 1 } else { reps * batches as u64 })
+}
+
 /// `reps` runs a batch, nine batches by the wall clock: the means, sorted.
 fn wall_means(run: &dyn Fn() -> Vec<BigRational>, reps: u64) -> Vec<u64> {
     let mut means: Vec<u64> = (0..9)
@@ -115,51 +152,10 @@ fn main() -> Result<()> {
         let start = cpu_ns();
         let result = std::hint::black_box(run());
         let once = cpu_ns() - start;
-        if let Some(reps) = wall {
-            let means = wall_means(&run, reps);
-            let text: Vec<String> = result.iter().map(format_exact).collect();
-            let line = format!(
-                "{}\t{}\t{}\t{}\t{}",
-                means[4],
-                means[0],
-                means[8],
-                reps * 9,
-                text.join(" ")
-            );
-            writeln!(out, "{line}").expect("stdout");
-            continue;
-        }
-        // The kernel's count moves at scheduler ticks (a few ms): the repetitions of a batch
-        // are counted by doubling until the count has moved by a tenth of a batch or more.
-        let batches = if once > 10 * BATCH_NS { 0 } else { BATCHES };
-        let mut reps = 1u64;
-        if batches > 0 {
-            loop {
-                let start = cpu_ns();
-                for _ in 0..reps {
-                    std::hint::black_box(run());
-                }
-                let spent = cpu_ns() - start;
-                if spent >= BATCH_NS / 10 {
-                    reps = (reps * BATCH_NS / spent).max(1);
-                    break;
-                }
-                reps *= 2;
-            }
-        }
-        let mut means: Vec<u64> = (0..batches)
-            .map(|_| {
-                let start = cpu_ns();
-                for _ in 0..reps {
-                    std::hint::black_box(run());
-                }
-                (cpu_ns() - start) / reps
-            })
-            .collect();
-        if means.is_empty() {
-            means.push(once);
-        }
-        means.sort_unstable();
+        let (means, runs) = match wall {
+            Some(reps) => (wall_means(&run, reps), reps * 9),
+            None => cpu_means(&run, once),
+        };
         let text: Vec<String> = result.iter().map(format_exact).collect();
         writeln!(
             out,
@@ -167,7 +163,7 @@ fn main() -> Result<()> {
             means[means.len() / 2],
             means[0],
             means[means.len() - 1],
-            if batches == 0 { 1 } else { reps * batches as u64 },
+            runs,
             text.join(" ")
         )
         .expect("stdout");
