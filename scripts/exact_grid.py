@@ -23,8 +23,8 @@ surface_eval (n+1)^2 points up to degree 50; the rest are printed as "not run".
 casteljau runs through the library, not the oracle: `cargo run --release --example
 exact_grid` (scripts/exact_grid.rs) reads each case as text, parses it untimed, and times the
 public generic method on BigRational. Both sides are CPU time (the Rust thread's, Python's
-process_time), the median of five batch means (about 50 ms each on the Rust side, whose thread
-clock moves at scheduler ticks; 10 ms on Python's) after one run whose result is checked
+process_time; both clocks to the nanosecond), the median of five batch means (about 50 ms each
+on the Rust side, 10 ms on Python's) after one run whose result is checked
 equal (as text in lowest terms) before any time counts; an operation whose first run is
 longer than ten batches is timed by that run on the Rust side, by the lesser of two more runs
 on Python's. Cells run one after the other, casteljau then its peers: interleaved.

@@ -9,13 +9,13 @@
 //! `median_ns <TAB> min_ns <TAB> max_ns <TAB> runs <TAB> result`, the result every output
 //! coordinate in order (point by point; `split` left piece then right), separated by spaces.
 //!
-//! CPU time is the thread's (`/proc/thread-self/schedstat`, Linux; it moves at scheduler
-//! ticks): the median, min and max of five batches' means, each batch repeating the operation
+//! CPU time is the thread's (its CPU clock, to the nanosecond): the median, min and max of
+//! five batches' means, each batch repeating the operation
 //! for about `BATCH_NS`, after one run that gives the result (the only run, timed by itself,
 //! when it took more than ten batches' time).
 //!
 //! With `--wall REPS`, each batch is instead `REPS` runs timed by the wall clock, nine
-//! batches: finer than the thread's count for comparing two builds on one case, side by
+//! batches of a number of runs chosen by hand, for comparing two builds on one case side by
 //! side on a quiet machine (`exact_grid.py --cases` prints the lines).
 //!
 //! ```sh
@@ -31,12 +31,10 @@ use std::io::{BufRead, Write};
 const BATCH_NS: u64 = 50_000_000;
 const BATCHES: usize = 5;
 
+/// The thread's CPU clock, to the nanosecond.
 fn cpu_ns() -> u64 {
-    let stat = std::fs::read_to_string("/proc/thread-self/schedstat").expect("a Linux thread's schedstat");
-    stat.split_whitespace()
-        .next()
-        .and_then(|f| f.parse().ok())
-        .expect("nanoseconds on the CPU")
+    let t = rustix::time::clock_gettime(rustix::time::ClockId::ThreadCPUTime);
+    t.tv_sec as u64 * 1_000_000_000 + t.tv_nsec as u64
 }
 
 /// The output coordinates, moved out of the points (a copy would be timed with the operation).
@@ -78,8 +76,7 @@ fn operation(op: &str, t: BigRational, data: &str) -> Result<Box<dyn Fn() -> Vec
 /// The means of `BATCHES` batches of about `BATCH_NS` each by the thread's CPU time, sorted,
 /// and the number of runs (one run of `once` ns alone when that took ten batches' time).
 fn cpu_means(run: &dyn Fn() -> Vec<BigRational>, once: u64) -> (Vec<u64>, u64) {
-    // The kernel's count moves at scheduler ticks (a few ms): the repetitions of a batch
-    // are counted by doubling until the count has moved by a tenth of a batch or more.
+    // The repetitions of a batch are counted by doubling until a tenth of a batch has passed.
     let batches = if once > 10 * BATCH_NS { 0 } else { BATCHES };
     let mut reps = 1u64;
     if batches > 0 {

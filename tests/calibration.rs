@@ -17,23 +17,18 @@ use casteljau::oracle::{FloatMethod, Op, MAX_REQUEST_WORK};
 use casteljau::CubicFitData;
 use casteljau::{BezierCurve, BezierSurface, BigInt, BigRational, Point, RationalBezierCurve};
 
+#[path = "support/cpu.rs"]
+mod cpu;
+
 /// CPU seconds any admitted request may take here, on a busy shared 2-core machine. The
 /// limits aim at about a third of a second (the calibration in `src/oracle/cost.rs`): the
 /// margin is for a loaded CI machine, whose shared caches slow a thread's CPU time too.
 const BUDGET_SECONDS: f64 = 2.0;
 
 /// CPU time of this thread: the clock the budget is stated in (another process on the
-/// machine does not count against a request). Linux only; elsewhere wall time.
+/// machine does not count against a request).
 fn cpu_seconds() -> f64 {
-    std::fs::read_to_string("/proc/thread-self/schedstat")
-        .ok()
-        .and_then(|s| s.split_whitespace().next()?.parse::<f64>().ok())
-        .map(|ns| ns / 1e9)
-        .unwrap_or_else(|| {
-            use std::sync::OnceLock;
-            static START: OnceLock<std::time::Instant> = OnceLock::new();
-            START.get_or_init(std::time::Instant::now).elapsed().as_secs_f64()
-        })
+    cpu::thread_cpu().as_secs_f64()
 }
 
 fn timed<T>(f: impl FnOnce() -> T) -> (T, f64) {
