@@ -8,7 +8,10 @@ signs) over DIGITS-digit denominators, all distinct; t = p/q in (0, 1) with q of
 size. Ops and peers:
   eval           gmpy2: the nested Bernstein sum over each coordinate's lcm of denominators
                  (exact_big.py's); FLINT: fmpq_poly evaluation of each coordinate's
-                 power-basis polynomial at t (the conversion is not timed)
+                 power-basis polynomial at t (neither the conversion nor the fmpq_poly's
+                 common denominator is timed); with --flint-from-fractions also
+                 "prepared": the common denominator of the power-basis fractions (an fmpz
+                 lcm loop in Python), the numerators over it and the evaluation
   split          gmpy2: de Casteljau's steps on mpq
   elevate        gmpy2: the elevation formula (7) on mpq (FLINT has no Bernstein elevation)
   derivative     gmpy2: n (b_{i+1} - b_i) on mpq
@@ -136,7 +139,7 @@ def timed(f):
     return (means[len(means) // 2], means[0], means[-1]), result
 
 
-def case(rng, op, n, digits, t_kind):
+def case(rng, op, n, digits, t_kind, from_fractions=False):
     """The request line for the Rust side and the peers as closures returning output
     coordinates in casteljau's order."""
     p, q = parameter(rng, t_kind)
@@ -158,6 +161,22 @@ def case(rng, op, n, digits, t_kind):
             polys = [flint.fmpq_poly([flint.fmpq(int(a.numerator), int(a.denominator)) for a in eb.to_power_gmpy2(c)]) for c in per]
             ft = flint.fmpq(p, q)
             peers["flint"] = lambda: [poly(ft) for poly in polys]
+            if from_fractions:
+                coefficients = [[flint.fmpq(int(a.numerator), int(a.denominator)) for a in eb.to_power_gmpy2(c)] for c in per]
+
+                def prepared():
+                    # the common denominator of each coordinate's power-basis coefficients
+                    # and its numerators, as a python-flint user builds them, then evaluation
+                    out = []
+                    for c in coefficients:
+                        den = flint.fmpz(1)
+                        for a in c:
+                            den = den.lcm(a.q)
+                        poly = flint.fmpq_poly(flint.fmpz_poly([a.p * (den // a.q) for a in c]), den)
+                        out.append(poly(ft))
+                    return out
+
+                peers["flint_prepared"] = prepared
     elif op == "split":
         cols = [[mpq(a, d) for a, d in c] for c in per]
 
@@ -190,6 +209,11 @@ def main():
     ap.add_argument("--seed", type=int, default=47)
     ap.add_argument("--example", default=os.path.join(ROOT, "target", "release", "examples", "exact_grid"))
     ap.add_argument("--cases", action="store_true", help="print the cases' lines for the example, run nothing")
+    ap.add_argument(
+        "--flint-from-fractions",
+        action="store_true",
+        help="eval: also time FLINT from the power-basis fractions (common denominator included)",
+    )
     args = ap.parse_args()
     rng = random.Random(args.seed)
     if args.cases:
@@ -202,7 +226,9 @@ def main():
         return
     rust = subprocess.Popen([args.example], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True, bufsize=1)
     worst = {}
-    print(f"{'op':<14}{'digits':>7}{'degree':>7}{'t':>5}{'casteljau':>12}{'gmpy2':>11}{'ratio':>8}{'spread':>14}{'flint':>11}{'ratio':>8}")
+    names = ("gmpy2", "flint") + (("flint_prepared",) if args.flint_from_fractions else ())
+    extra = f"{'prepared':>11}{'ratio':>8}" if args.flint_from_fractions else ""
+    print(f"{'op':<14}{'digits':>7}{'degree':>7}{'t':>5}{'casteljau':>12}{'gmpy2':>11}{'ratio':>8}{'spread':>14}{'flint':>11}{'ratio':>8}{extra}")
     for digits in [int(d) for d in args.digits.split(",")]:
         for n in [int(d) for d in args.degrees.split(",")]:
             for op in args.ops.split(","):
@@ -211,13 +237,13 @@ def main():
                     if n > MAX_DEGREE.get(op, n):
                         print(f"{label}  not run")
                         continue
-                    line, peers = case(rng, op, n, digits, "1/3" if t_kind == "-" else t_kind)
+                    line, peers = case(rng, op, n, digits, "1/3" if t_kind == "-" else t_kind, args.flint_from_fractions)
                     rust.stdin.write(line + "\n")
                     fields = rust.stdout.readline().rstrip("\n").split("\t")
                     ours = [int(x) * 1e-9 for x in fields[:3]]
                     answer = fields[4].split(" ")
                     row = f"{label}{fmt_time(ours[0]):>12}"
-                    for name in ("gmpy2", "flint"):
+                    for name in names:
                         if name not in peers:
                             row += f"{'':>11}{'':>8}" + (f"{'':>14}" if name == "gmpy2" else "")
                             continue
