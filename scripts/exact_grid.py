@@ -158,11 +158,11 @@ def case(rng, op, n, digits, t_kind, from_fractions=False):
     if op == "eval":
         peers["gmpy2"] = lambda: [eb.nested_gmpy2(c, p, q) for c in per]
         if flint is not None:
-            polys = [flint.fmpq_poly([flint.fmpq(int(a.numerator), int(a.denominator)) for a in eb.to_power_gmpy2(c)]) for c in per]
+            coefficients = [[flint.fmpq(int(a.numerator), int(a.denominator)) for a in eb.to_power_gmpy2(c)] for c in per]
+            polys = [flint.fmpq_poly(c) for c in coefficients]
             ft = flint.fmpq(p, q)
             peers["flint"] = lambda: [poly(ft) for poly in polys]
             if from_fractions:
-                coefficients = [[flint.fmpq(int(a.numerator), int(a.denominator)) for a in eb.to_power_gmpy2(c)] for c in per]
 
                 def prepared():
                     # the common denominator of each coordinate's power-basis coefficients

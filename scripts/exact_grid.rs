@@ -31,10 +31,12 @@ use std::io::{BufRead, Write};
 const BATCH_NS: u64 = 50_000_000;
 const BATCHES: usize = 5;
 
-/// The thread's CPU clock, to the nanosecond.
+#[path = "../tests/support/cpu.rs"]
+mod cpu;
+
+/// The thread's CPU clock, in nanoseconds.
 fn cpu_ns() -> u64 {
-    let t = rustix::time::clock_gettime(rustix::time::ClockId::ThreadCPUTime);
-    t.tv_sec as u64 * 1_000_000_000 + t.tv_nsec as u64
+    cpu::thread_cpu().as_nanos() as u64
 }
 
 /// The output coordinates, moved out of the points (a copy would be timed with the operation).

@@ -16,10 +16,12 @@ use num_integer::Integer;
 use std::hint::black_box;
 use std::io::{BufRead, Write};
 
-/// The thread's CPU clock, to the nanosecond.
+#[path = "../tests/support/cpu.rs"]
+mod cpu;
+
+/// The thread's CPU clock, in nanoseconds.
 fn cpu_ns() -> u64 {
-    let t = rustix::time::clock_gettime(rustix::time::ClockId::ThreadCPUTime);
-    t.tv_sec as u64 * 1_000_000_000 + t.tv_nsec as u64
+    cpu::thread_cpu().as_nanos() as u64
 }
 
 /// Mean CPU ns per call of `f` over `reps` calls.

@@ -8,11 +8,8 @@
 use criterion::black_box;
 use std::time::Duration;
 
-/// CPU time of this thread so far.
-fn thread_cpu_time() -> Duration {
-    let t = rustix::time::clock_gettime(rustix::time::ClockId::ThreadCPUTime);
-    Duration::new(t.tv_sec.unsigned_abs(), t.tv_nsec as u32)
-}
+#[path = "../../tests/support/cpu.rs"]
+mod cpu;
 
 /// Sets `group` to 10 samples of equal length over 2 s (200 ms each), after 1 s of warm-up.
 pub fn long_samples<M: criterion::measurement::Measurement>(group: &mut criterion::BenchmarkGroup<'_, M>) {
@@ -25,9 +22,9 @@ pub fn long_samples<M: criterion::measurement::Measurement>(group: &mut criterio
 
 /// Runs `f` `iters` times and returns the CPU time it took.
 pub fn cpu_time_of<R>(iters: u64, mut f: impl FnMut() -> R) -> Duration {
-    let start = thread_cpu_time();
+    let start = cpu::thread_cpu();
     for _ in 0..iters {
         black_box(f());
     }
-    thread_cpu_time() - start
+    cpu::thread_cpu() - start
 }

@@ -1,7 +1,8 @@
-//! CPU time, for tests that bound the work of what they run: on a loaded machine wall time
-//! counts the other processes too, CPU time only what was run.
+//! CPU time, for tests that bound the work of what they run, and for the benches and the
+//! timing tools (`scripts/exact_grid.rs`, `scripts/gcd_peers.rs`): on a loaded machine wall
+//! time counts the other processes too, CPU time only what was run.
 
-// Each test binary that includes this module uses some of its functions.
+// Each binary that includes this module uses some of its functions.
 #![allow(dead_code)]
 
 use std::io::Read;
