@@ -10,9 +10,9 @@
 //! coordinate in order (point by point; `split` left piece then right), separated by spaces.
 //!
 //! CPU time is the thread's (its CPU clock, to the nanosecond): the median, min and max of
-//! five batches' means, each batch repeating the operation
-//! for about `BATCH_NS`, after one run that gives the result (the only run, timed by itself,
-//! when it took more than ten batches' time).
+//! five batches' means, each batch repeating the operation for about `BATCH_NS`, after one
+//! run that gives the result (the only run, timed by itself, when it took more than ten
+//! batches' time).
 //!
 //! With `--wall REPS`, each batch is instead `REPS` runs timed by the wall clock, nine
 //! batches of a number of runs chosen by hand, for comparing two builds on one case side by
@@ -30,6 +30,8 @@ use std::io::{BufRead, Write};
 
 const BATCH_NS: u64 = 50_000_000;
 const BATCHES: usize = 5;
+/// Batches of `--wall`.
+const WALL_BATCHES: u64 = 9;
 
 #[path = "../tests/support/cpu.rs"]
 mod cpu;
@@ -113,7 +115,7 @@ fn cpu_means(run: &dyn Fn() -> Vec<BigRational>, once: u64) -> (Vec<u64>, u64) {
 
 /// `reps` runs a batch, nine batches by the wall clock: the means, sorted.
 fn wall_means(run: &dyn Fn() -> Vec<BigRational>, reps: u64) -> Vec<u64> {
-    let mut means: Vec<u64> = (0..9)
+    let mut means: Vec<u64> = (0..WALL_BATCHES)
         .map(|_| {
             let start = std::time::Instant::now();
             for _ in 0..reps {
@@ -152,7 +154,7 @@ fn main() -> Result<()> {
         let result = std::hint::black_box(run());
         let once = cpu_ns() - start;
         let (means, runs) = match wall {
-            Some(reps) => (wall_means(&run, reps), reps * 9),
+            Some(reps) => (wall_means(&run, reps), reps * WALL_BATCHES),
             None => cpu_means(&run, once),
         };
         let text: Vec<String> = result.iter().map(format_exact).collect();
