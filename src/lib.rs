@@ -43,7 +43,8 @@
 //!   `coords` (the point types' storage), `error`, `exact`, `float`;
 //! - kernels on numbers: `exact/gcd`, `exact/splitting`, `exact/long_pair`,
 //!   `exact/elevation_words`,
-//!   `exact/fraction_free/int`, `exact/fraction_free/horner`, `exact/fraction_free/split`,
+//!   `exact/fraction_free/int`, `exact/fraction_free/horner`,
+//!   `exact/fraction_free/horner_long`, `exact/fraction_free/split`,
 //!   `exact/fraction_free/choice` (which of them runs, by size),
 //!   `float/scratch`, `float/ulp`, `float/eft`, `float/casteljau`, `float/compensated_pairs`,
 //!   `float/compensated`, `float/methods`, `float/ops`;

@@ -43,6 +43,7 @@ use choice::{horner_wins, pairs_win, rows_first, words_hopeless};
 
 mod choice;
 mod horner;
+mod horner_long;
 mod int;
 mod split;
 use int::power;
@@ -178,7 +179,10 @@ fn curve_eval(c: &Curve<'_>, t: &BigRational) -> Point<BigRational> {
 fn coordinate_sum_on<I: Int>(values: &[&BigRational], t: &BigRational) -> Option<BigRational> {
     if I::IS_BIG {
         if horner_wins(values, t.denom()) {
-            return Some(horner::fraction_sum(values, t.numer(), t.denom()));
+            let (p, q) = (t.numer(), t.denom());
+            return Some(
+                horner::word_fraction_sum(values, p, q).unwrap_or_else(|| horner_long::long_sum(values, p, q)),
+            );
         }
         // Past that the sum is split in balanced halves (see `splitting`).
         return Some(splitting::bernstein_sum(values, t.numer(), t.denom()));

@@ -3,28 +3,34 @@
 use num_bigint::BigInt;
 use num_rational::BigRational;
 
-/// Bounds of the fraction-form nested sum (`horner`) on big integers, against binary
-/// splitting: `n bits(q)` (its parameter's share of every number) at most
-/// `HORNER_PARAMETER_BITS`, `Σ bits(d_i) + 2 n bits(q)` (about the length of its last
-/// numbers) at most `HORNER_BITS`, and the degree at most `HORNER_DEGREE`.
+/// Bounds of the fraction-form nested sum (`horner`, on words of any length) against binary
+/// splitting, with `share = n bits(q)` (the parameter's part of every number) and `size =
+/// Σ bits(d_i) + 2 share` (about the length of its last numbers): the degree at most
+/// `HORNER_DEGREE`, the size at most `HORNER_BITS`, and the share at most
+/// `HORNER_PARAMETER_BITS`, or any share up to degree `HORNER_ANY_SHARE_DEGREE`, or a share
+/// up to `HORNER_WIDE_SHARE` with denominators of `HORNER_WIDE_SHARE_DENOMINATORS` bits in
+/// all: a long `t` makes every coefficient `C(n,i) pⁱ` long, and the nested sum's steps
+/// multiply the denominators so far by it.
 ///
-/// Measured (2026-12-05, `exact_grid.py`, planar curves, the `eval` cells of digits 5 to
-/// 300, degrees 3 to 200, the three kinds of `t`; the program with either kernel alone, run
-/// one after the other, about 8% noise between runs): the nested sum won or tied at every
-/// degree-3 cell (the widest 300 digits with a 100-digit `t`, 75 µs against 82 µs: size
-/// 6,000, parameter share 996), at 5 digits to degree 100 at `t = 1/3` (65 against 130 µs)
-/// and at 30 digits to degree 50 at `t = 1/3` (140 against 160 µs: size 5,200); it lost at
-/// 30 digits, degree 100 at 1/3 (480 against 404 µs: size 10,400), at 300 digits, degree
-/// 20 at 1/3 (960 against 880 µs: size 21,000), with a 100-digit `t` from degree 20 (90
-/// against 74 µs at 5 digits: share 6,640) and at 5 digits, degree 50 with a 20-digit `t`
-/// (110 against 83 µs: share 3,300); at share 1,320 (degree 20, 20-digit `t`) it won and
-/// lost by turns (5 digits: 22.5 and 32.5 µs against 25 µs; a rational curve's point 70
-/// against 50 µs), and at 5 digits, degree 200, 1/3 (size 4,200) it lost or tied (221
-/// against 185 µs, 261 and 220 against 322 and 200 µs in three runs): degrees above
-/// `HORNER_DEGREE` are left to binary splitting.
+/// Measured (2026-12-06, `exact_grid.py`, planar curves, the `eval` cells of digits 5 to
+/// 300, degrees 3 to 200, the three kinds of `t`, either kernel forced, two runs each,
+/// alternating): the nested sum won at every cell of degree 3 and 5 (300 digits, degree 5,
+/// 100-digit `t`: 130 against 138 µs, size 9,300, share 1,665); at `t = 1/3` it won at 5
+/// digits to degree 200 (94 against 187 µs, size 4,200), at 30 digits to degree 50 (89–94
+/// against 138 µs, size 5,300) and at 100 digits, degree 20 (138 against 145 µs, size
+/// 7,000), tied at 30 digits, degree 100 (312 against 336–358 µs, size 10,500), and lost
+/// at 30 digits, degree 200 (1.14–1.20 against 0.88–0.97 ms, size 20,000), 100 digits,
+/// degree 50 (670 against 535 µs) and 300 digits, degree 20 (890 against 615 µs). With a
+/// 20-digit `t` at degree 20 it won at 5 digits (18 against 28 µs: share 1,340, 360 bits
+/// of denominators) and lost at 30 (56 against 52 µs: 2,100 bits) and 100 (206 against
+/// 169 µs); with a 20-digit `t` at degree 50 (share 3,350) and a 100-digit one from degree
+/// 20 (share 6,660) it lost or tied everywhere.
 const HORNER_PARAMETER_BITS: u64 = 1000;
-const HORNER_DEGREE: u64 = 100;
-const HORNER_BITS: u64 = 6000;
+const HORNER_DEGREE: u64 = 200;
+const HORNER_BITS: u64 = 10_000;
+const HORNER_ANY_SHARE_DEGREE: u64 = 5;
+const HORNER_WIDE_SHARE: u64 = 1500;
+const HORNER_WIDE_SHARE_DENOMINATORS: u64 = 1000;
 
 /// Whether one coordinate's Bernstein sum on big integers is cheaper nested on a fraction
 /// than by binary splitting: its steps are products by short factors and cost the length of
@@ -33,7 +39,12 @@ const HORNER_BITS: u64 = 6000;
 pub(super) fn horner_wins(values: &[&BigRational], q: &BigInt) -> bool {
     let n = values.len() as u64 - 1;
     let denominators: u64 = values.iter().map(|v| v.denom().bits()).sum();
-    n <= HORNER_DEGREE && n * q.bits() <= HORNER_PARAMETER_BITS && denominators + 2 * n * q.bits() <= HORNER_BITS
+    let share = n * q.bits();
+    n <= HORNER_DEGREE
+        && denominators + 2 * share <= HORNER_BITS
+        && (share <= HORNER_PARAMETER_BITS
+            || n <= HORNER_ANY_SHARE_DEGREE
+            || (share <= HORNER_WIDE_SHARE && denominators <= HORNER_WIDE_SHARE_DENOMINATORS))
 }
 
 /// Whether a word kernel is bound to overflow: the denominators that differ from their

@@ -10,10 +10,11 @@
 //! in once. In a profile of the lcm form on 5-digit values at degree 20, the lcm and the
 //! divisions `L / d_i` were 37% of the time.
 //!
-//! When every step's two factors are below `2^62` (`word_steps`), `N` and `D` are vectors
-//! of words and a step is one pass (`fused_step`) where num-bigint takes three products, a
-//! copy and a sum, each with its own allocation. The reduction takes the power of `q`
-//! from one remainder by the largest power of `q` within half a word.
+//! `N` and `D` are vectors of words, never num-bigint's integers (which take three
+//! products, a copy and a sum per step, each with its own allocation): when every step's
+//! two factors are below `2^62` (`word_steps`) a step is one pass (`fused_step`), else
+//! products row by row into reused buffers (`horner_long`). The reduction takes the power
+//! of `q` from one remainder by the largest power of `q` within half a word.
 
 use crate::exact::gcd;
 use crate::exact::gcd::{gcd_u64, rem_word};
@@ -21,95 +22,12 @@ use num_bigint::{BigInt, Sign};
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
-/// A factor of one step: a machine word when it fits (`BigInt`'s in-place product by a
-/// word), else a big integer.
-enum Factor {
-    Word(i128),
-    Big(BigInt),
-}
-
-impl Factor {
-    fn of(x: &BigInt) -> Self {
-        match x.to_i64() {
-            Some(w) => Factor::Word(i128::from(w)),
-            None => Factor::Big(x.clone()),
-        }
-    }
-
-    fn times(&self, o: &BigInt) -> Self {
-        match (self, o.to_i64()) {
-            (Factor::Word(a), Some(b)) => match a.checked_mul(i128::from(b)) {
-                Some(w) => Factor::Word(w),
-                None => Factor::Big(BigInt::from(*a) * o),
-            },
-            (Factor::Word(a), None) => Factor::Big(o * *a),
-            (Factor::Big(a), _) => Factor::Big(a * o),
-        }
-    }
-
-    fn apply(&self, x: &mut BigInt) {
-        match self {
-            Factor::Word(w) => *x *= *w,
-            Factor::Big(b) => *x *= b,
-        }
-    }
-}
-
-/// `C(n,i) pⁱ`, advanced one `i` at a time: `C(n,i−1) (n−i+1)` is divisible by `i`.
-fn advance(coefficient: Factor, n: usize, i: usize, p: &Factor) -> Factor {
-    let (up, down) = ((n - i + 1) as i128, i as i128);
-    match (coefficient, p) {
-        (Factor::Word(c), Factor::Word(p)) => match c.checked_mul(up).map(|x| x / down).and_then(|x| x.checked_mul(*p))
-        {
-            Some(w) => Factor::Word(w),
-            None => Factor::Big(BigInt::from(c) * up / down * *p),
-        },
-        (Factor::Word(c), Factor::Big(p)) => Factor::Big(BigInt::from(c) * up / down * p),
-        (Factor::Big(c), p) => {
-            let mut c = c * up / down;
-            p.apply(&mut c);
-            Factor::Big(c)
-        }
-    }
-}
-
-/// `Σ_i x_i B_i^n(t)` of one coordinate's values at `t = p/q` (`q > 0`), in lowest terms.
-pub(super) fn fraction_sum(values: &[&BigRational], p: &BigInt, q: &BigInt) -> BigRational {
-    if let Some((s, steps)) = word_steps(values, p, q) {
-        return word_sum(values, s, &steps, q);
-    }
-    let n = values.len() - 1;
-    let s = Factor::of(&(q - p));
-    let p_factor = Factor::of(p);
-    let mut num = values[0].numer().clone();
-    let mut den = values[0].denom().clone();
-    let mut scratch = BigInt::zero();
-    let mut coefficient = Factor::Word(1);
-    // `D / last` while the run of equal denominators that `last` starts goes on: such a
-    // value is over `D` already, `s N / D + c a / d = (s N + c a (D / d)) / D`.
-    let mut last = values[0].denom();
-    let mut before = keep_if_next(values, 0, BigInt::one);
-    for i in 1..=n {
-        coefficient = advance(coefficient, n, i, &p_factor);
-        let (a, d) = (values[i].numer(), values[i].denom());
-        let c = coefficient.times(a);
-        if d.is_one() {
-            scratch.clone_from(&den);
-            s.apply(&mut num);
-        } else if let (true, Some(b)) = (equal(d, last), before.as_ref()) {
-            scratch.clone_from(b);
-            s.apply(&mut num);
-        } else {
-            scratch.clone_from(&den);
-            s.times(d).apply(&mut num);
-            before = keep_if_next(values, i, || den.clone());
-            den *= d;
-            last = d;
-        }
-        c.apply(&mut scratch);
-        num += &scratch;
-    }
-    reduced(num, den, q, n)
+/// `Σ_i x_i B_i^n(t)` of one coordinate's values at `t = p/q` (`q > 0`), in lowest terms,
+/// on words of 64 bits when every step's factors fit ([`word_steps`]); `None` otherwise
+/// (then `horner_long` takes words of any length).
+pub(super) fn word_fraction_sum(values: &[&BigRational], p: &BigInt, q: &BigInt) -> Option<BigRational> {
+    let (s, steps) = word_steps(values, p, q)?;
+    Some(word_sum(values, s, &steps, q))
 }
 
 /// `a == b`, by the lengths and the lowest words first: distinct denominators almost always
@@ -119,7 +37,7 @@ pub(super) fn equal(a: &BigInt, b: &BigInt) -> bool {
 }
 
 /// `Some(value())` when the value after `i` has the same denominator as value `i`.
-fn keep_if_next<T>(values: &[&BigRational], i: usize, value: impl FnOnce() -> T) -> Option<T> {
+pub(super) fn keep_if_next<T>(values: &[&BigRational], i: usize, value: impl FnOnce() -> T) -> Option<T> {
     values
         .get(i + 1)
         .filter(|next| equal(next.denom(), values[i].denom()))
@@ -128,7 +46,7 @@ fn keep_if_next<T>(values: &[&BigRational], i: usize, value: impl FnOnce() -> T)
 
 /// `num / (den · qⁿ)` in lowest terms, `den, q > 0`: the power of `q` first (by remainders
 /// and divisions by a word when `q` is one), then one gcd with `den`.
-fn reduced(mut num: BigInt, den: BigInt, q: &BigInt, n: usize) -> BigRational {
+pub(super) fn reduced(mut num: BigInt, den: BigInt, q: &BigInt, n: usize) -> BigRational {
     if num.is_zero() {
         return BigRational::new_raw(num, BigInt::one());
     }
@@ -198,7 +116,7 @@ struct WordStep {
     d: u64,
 }
 
-/// The steps of [`fraction_sum`] on words, when `s`, every `s d_i` and every `C(n,i) pⁱ a_i`
+/// The nested sum's steps on words, when `s`, every `s d_i` and every `C(n,i) pⁱ a_i`
 /// are below `2^62` in magnitude (then a step's sum fits `i128`, see [`fused_step`]);
 /// `None` otherwise.
 fn word_steps(values: &[&BigRational], p: &BigInt, q: &BigInt) -> Option<(i64, Vec<WordStep>)> {
@@ -281,7 +199,7 @@ fn words_of(x: &BigInt) -> Vec<u64> {
     x.iter_u64_digits().collect()
 }
 
-/// [`fraction_sum`] on vectors of words (see [`word_steps`]): `N` as a magnitude and a sign,
+/// The nested sum on vectors of words (see [`word_steps`]): `N` as a magnitude and a sign,
 /// `D` and `D / last` as magnitudes; each step one pass ([`fused_step`]) and, where `D`
 /// grows, one product by a word.
 fn word_sum(values: &[&BigRational], s: i64, steps: &[WordStep], q: &BigInt) -> BigRational {
