@@ -183,7 +183,7 @@ fn fused_step(num: &mut Vec<u64>, negative: &mut bool, a: i64, src: &[u64], b: i
 }
 
 /// `x ← x·m` for a magnitude `x` and a word `m`.
-fn times_word(x: &mut Vec<u64>, m: u64) {
+pub(super) fn times_word(x: &mut Vec<u64>, m: u64) {
     let mut carry = 0u64;
     for w in x.iter_mut() {
         let v = u128::from(*w) * u128::from(m) + u128::from(carry);

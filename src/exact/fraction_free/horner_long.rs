@@ -11,7 +11,7 @@
 //! below zero at most once, and a wrap means the result is negative (its magnitude is the
 //! two's complement of the buffer).
 
-use super::horner::{equal, keep_if_next, reduced};
+use super::horner::{equal, keep_if_next, reduced, times_word};
 use crate::exact::gcd::{self, divide_exactly};
 use num_bigint::{BigInt, Sign};
 use num_rational::BigRational;
@@ -216,19 +216,6 @@ pub(super) fn long_sum(values: &[&BigRational], p: &BigInt, q: &BigInt) -> BigRa
     }
     let den = BigInt::from_biguint(Sign::Plus, gcd::from_words(&den));
     reduced(num.to_bigint(), den, q, n)
-}
-
-/// `x ← x·m` in place (`x` without zero top words, `m > 0`).
-fn times_word(x: &mut Vec<u64>, m: u64) {
-    let mut carry = 0u64;
-    for w in x.iter_mut() {
-        let v = u128::from(*w) * u128::from(m) + u128::from(carry);
-        *w = v as u64;
-        carry = (v >> 64) as u64;
-    }
-    if carry != 0 {
-        x.push(carry);
-    }
 }
 
 /// `C(n,i−1) pⁱ⁻¹` to `C(n,i) pⁱ` in place: times `n − i + 1`, divided exactly by `i`
