@@ -41,7 +41,7 @@
 //!
 //! - storage and errors, and the folders' `mod.rs` (declarations and re-exports only):
 //!   `coords` (the point types' storage), `error`, `exact`, `float`;
-//! - kernels on numbers: `exact/gcd`, `exact/splitting`, `exact/long_pair`,
+//! - kernels on numbers: `exact/gcd`, `exact/hensel`, `exact/splitting`, `exact/long_pair`,
 //!   `exact/elevation_words`,
 //!   `exact/fraction_free/int`, `exact/fraction_free/horner`,
 //!   `exact/fraction_free/horner_long`, `exact/fraction_free/split`,

@@ -27,6 +27,7 @@ pub(crate) mod elevation_words;
 pub(crate) mod fit_numbers;
 pub mod fraction_free;
 pub mod gcd;
+pub(crate) mod hensel;
 pub(crate) mod long_pair;
 pub(crate) mod power_basis;
 pub mod small_rational;

@@ -44,6 +44,7 @@
 //! degree 31), unless they are long, is reduced by one gcd instead (`tree_reduces`).
 
 use crate::exact::gcd::{self, Part};
+use crate::exact::hensel;
 use dashu_int::{IBig, UBig};
 use num_bigint::{BigInt, Sign};
 use num_integer::Integer;
@@ -401,28 +402,56 @@ fn tree_reduces(tree: &ProductTree) -> bool {
     leaves > SMALL_TREE_LEAVES as u64 || (bits > 7_500 && bits >= 400 * leaves)
 }
 
+/// Whether the tree's factors are long enough for [`hensel::factor_gcds`] ([`hensel::pays`]).
+fn by_factors(tree: &ProductTree) -> bool {
+    hensel::pays(tree.factors.len(), tree.product.bits())
+}
+
 /// `num / (Π tree's factors · Π bᵉ)` in lowest terms, each `b > 0`: by [`gcd::reduce`]
 /// part by part, the tree's factors as their product when they are few, else their gcd
 /// with `num` found by the remainder tree first.
 pub(crate) fn reduce_over(num: BigInt, tree: Option<&ProductTree>, powers: &[(&BigInt, usize)]) -> BigRational {
     let powers = powers.iter().map(|&(b, e)| Part::Power(b, e));
     let tree = match tree {
-        Some(tree) if tree_reduces(tree) && !num.is_zero() => tree,
+        Some(tree) if (by_factors(tree) || tree_reduces(tree)) && !num.is_zero() => tree,
         few => {
             let product = few.map(|tree| Part::Number(tree.product()));
             return gcd::reduce(num, &product.into_iter().chain(powers).collect::<Vec<_>>());
         }
     };
-    // The remainder tree gives every gcd(num, d_i) at the cost of about one division of num
-    // by Π d_i; their product has the primes num shares with Π d_i (`gcd::gcd_with_product`).
-    let remainders = tree.remainders(&num);
+    // Every gcd(num, d_i); their product has the primes num shares with Π d_i
+    // (`gcd::gcd_with_product`).
+    let shared = if by_factors(tree) {
+        hensel::factor_gcds(num.magnitude(), tree.factors.iter().map(|f| f.magnitude()))
+            .into_iter()
+            .filter(|h| !h.is_one())
+            .map(BigInt::from)
+            .collect()
+    } else {
+        tree_gcds(tree, &num)
+    };
+    let g = gcd::gcd_with_product(&num, &shared);
+    let (num, den) = if g.is_one() {
+        (num, tree.product().clone())
+    } else {
+        (num.div_floor(&g), tree.product().div_floor(&g))
+    };
+    // What is left of num is prime to den: the powers against it alone.
+    let (num, power_den) = gcd::reduce(num, &powers.collect::<Vec<_>>()).into_raw();
+    BigRational::new_raw(num, power_den * den)
+}
+
+/// The gcds `gcd(num, d_i) ≠ 1` of `num` with the tree's factors, by the remainder tree: at
+/// the cost of about one division of `num` by `Π d_i`.
+fn tree_gcds(tree: &ProductTree, num: &BigInt) -> Vec<BigInt> {
+    let remainders = tree.remainders(num);
     let leaves = &tree.factors[..];
     // Double words (30-digit denominators): the word gcds interleaved.
     let words = gcd::paired_gcds(remainders.iter().zip(leaves).map(|(r, f)| {
         let (r, f) = (r.to_u128()?, f.to_u128()?);
         (r != 0).then_some((r, f))
     }));
-    let shared: Vec<BigInt> = remainders
+    remainders
         .iter()
         .zip(leaves)
         .zip(words)
@@ -434,16 +463,7 @@ pub(crate) fn reduce_over(num: BigInt, tree: Option<&ProductTree>, powers: &[(&B
             }
         })
         .filter(|h| !h.is_one())
-        .collect();
-    let g = gcd::gcd_with_product(&num, &shared);
-    let (num, den) = if g.is_one() {
-        (num, tree.product().clone())
-    } else {
-        (num.div_floor(&g), tree.product().div_floor(&g))
-    };
-    // What is left of num is prime to den: the powers against it alone.
-    let (num, power_den) = gcd::reduce(num, &powers.collect::<Vec<_>>()).into_raw();
-    BigRational::new_raw(num, power_den * den)
+        .collect()
 }
 
 #[cfg(test)]
@@ -470,6 +490,60 @@ mod tests {
             let tree = ProductTree::new(&factors.iter().collect::<Vec<_>>());
             let want: Vec<BigInt> = factors.iter().map(|f| x.mod_floor(f)).collect();
             prop_assert_eq!(tree.remainders(&x), want);
+        }
+
+        /// `reduce_over` in lowest terms by each of its ways (one gcd, the remainder tree,
+        /// Hensel's remainders by factor): factors of 1 to 14 words sharing a part with
+        /// each other and with the numerator, powers of two, and a power of a base.
+        #[test]
+        fn reduce_over_is_lowest_terms(
+            x in (proptest::collection::vec(any::<u64>(), 1..40), any::<bool>()),
+            factors in proptest::collection::vec((proptest::collection::vec(any::<u64>(), 1..15), 0u32..130, any::<bool>()), 1..40),
+            common in proptest::collection::vec(any::<u64>(), 0..3),
+            (base, e) in (1u64..1000, 0usize..5),
+        ) {
+            let common = integer(&common, false).max(BigInt::one());
+            let num = integer(&x.0, x.1) * &common * BigInt::from(6u8);
+            prop_assume!(!num.is_zero());
+            let factors: Vec<BigInt> = factors
+                .iter()
+                .map(|(f, twos, shared)| {
+                    let f = integer(f, false).max(BigInt::one()) << twos;
+                    if *shared { f * &common } else { f }
+                })
+                .collect();
+            let tree = ProductTree::new(&factors.iter().collect::<Vec<_>>());
+            let base = BigInt::from(base);
+            let want = BigRational::new(num.clone(), tree.product() * num_traits::pow(base.clone(), e));
+            // num-rational's `==` compares values: the parts, for lowest terms.
+            let got = reduce_over(num, Some(&tree), &[(&base, e)]);
+            prop_assert_eq!((got.numer(), got.denom()), (want.numer(), want.denom()));
+        }
+    }
+
+    /// One case of each way `reduce_over` can take, so that the proptest's draws do not
+    /// decide whether a way is tested: 3 factors of 20 words (Hensel's), 50 of 10 words (the
+    /// tree), 2 of 3 words (one gcd); the factors share a 200-bit prime-rich part and
+    /// powers of two with each other and the numerator.
+    #[test]
+    fn reduce_over_takes_each_way() {
+        let word = |i: u64| 0x9E37_79B9_7F4A_7C15u64.wrapping_mul(i + 1) | 1;
+        let shared = integer(&[word(90), word(91), word(92)], false) >> 12u32;
+        for (count, words, hensel_way) in [(3usize, 20usize, true), (50, 10, false), (2, 3, false)] {
+            let factors: Vec<BigInt> = (0..count)
+                .map(|k| {
+                    let limbs: Vec<u64> = (0..words).map(|i| word((k * 31 + i) as u64)).collect();
+                    (integer(&limbs, false) << (k % 3)) * if k % 2 == 0 { shared.clone() } else { BigInt::one() }
+                })
+                .collect();
+            let tree = ProductTree::new(&factors.iter().collect::<Vec<_>>());
+            assert_eq!(by_factors(&tree), hensel_way, "{count} factors of {words} words");
+            let limbs: Vec<u64> = (0..count * words).map(|i| word(i as u64 + 7)).collect();
+            let num = integer(&limbs, true) * &shared * BigInt::from(4u8);
+            let want = BigRational::new(num.clone(), tree.product().clone());
+            assert_ne!(want.denom(), tree.product(), "the case reduces");
+            let got = reduce_over(num, Some(&tree), &[]);
+            assert_eq!((got.numer(), got.denom()), (want.numer(), want.denom()));
         }
     }
 }

@@ -18,6 +18,7 @@
 
 use crate::exact::gcd;
 use crate::exact::gcd::{gcd_u64, rem_word};
+use crate::exact::hensel;
 use num_bigint::{BigInt, Sign};
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -45,8 +46,10 @@ pub(super) fn keep_if_next<T>(values: &[&BigRational], i: usize, value: impl FnO
 }
 
 /// `num / (den · qⁿ)` in lowest terms, `den, q > 0`: the power of `q` first (by remainders
-/// and divisions by a word when `q` is one), then one gcd with `den`.
-pub(super) fn reduced(mut num: BigInt, den: BigInt, q: &BigInt, n: usize) -> BigRational {
+/// and divisions by a word when `q` is one), then the gcd with `den`: one gcd, or, when
+/// `factors` (whose product is `den`, or empty) are long enough ([`hensel::pays`]), the gcds
+/// with each factor ([`hensel::factor_gcds`], [`gcd::gcd_with_product`]).
+pub(super) fn reduced(mut num: BigInt, den: BigInt, q: &BigInt, n: usize, factors: &[&BigInt]) -> BigRational {
     if num.is_zero() {
         return BigRational::new_raw(num, BigInt::one());
     }
@@ -86,7 +89,16 @@ pub(super) fn reduced(mut num: BigInt, den: BigInt, q: &BigInt, n: usize) -> Big
             left
         }
     };
-    let g = gcd::gcd(num.magnitude(), den.magnitude());
+    let g = if hensel::pays(factors.len(), den.bits()) {
+        let shared: Vec<BigInt> = hensel::factor_gcds(num.magnitude(), factors.iter().map(|f| f.magnitude()))
+            .into_iter()
+            .filter(|h| !h.is_one())
+            .map(BigInt::from)
+            .collect();
+        gcd::gcd_with_product(&num, &shared).into_parts().1
+    } else {
+        gcd::gcd(num.magnitude(), den.magnitude())
+    };
     let (sign, magnitude) = num.into_parts();
     let mut den = den.into_parts().1;
     let mut magnitude = magnitude;
@@ -232,5 +244,5 @@ fn word_sum(values: &[&BigRational], s: i64, steps: &[WordStep], q: &BigInt) -> 
     };
     let num = BigInt::from_biguint(sign, gcd::from_words(&num));
     let den = BigInt::from_biguint(Sign::Plus, gcd::from_words(&den));
-    reduced(num, den, q, n)
+    reduced(num, den, q, n, &[])
 }
