@@ -189,9 +189,7 @@ fn fused_step(num: &mut Vec<u64>, negative: &mut bool, a: i64, src: &[u64], b: i
             one = o;
         }
     }
-    while num.last() == Some(&0) {
-        num.pop();
-    }
+    trim(num);
 }
 
 /// `x ← x·m` for a magnitude `x` and a word `m`.
@@ -207,8 +205,15 @@ pub(super) fn times_word(x: &mut Vec<u64>, m: u64) {
     }
 }
 
-fn words_of(x: &BigInt) -> Vec<u64> {
+pub(super) fn words_of(x: &BigInt) -> Vec<u64> {
     x.iter_u64_digits().collect()
+}
+
+/// `x` without its zero top words.
+pub(super) fn trim(x: &mut Vec<u64>) {
+    while x.last() == Some(&0) {
+        x.pop();
+    }
 }
 
 /// The nested sum on vectors of words (see [`word_steps`]): `N` as a magnitude and a sign,

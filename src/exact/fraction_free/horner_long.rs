@@ -11,7 +11,7 @@
 //! below zero at most once, and a wrap means the result is negative (its magnitude is the
 //! two's complement of the buffer).
 
-use super::horner::{equal, keep_if_next, reduced, times_word};
+use super::horner::{equal, keep_if_next, reduced, times_word, trim, words_of};
 use crate::exact::gcd::{self, divide_exactly};
 use crate::exact::hensel;
 use num_bigint::{BigInt, Sign};
@@ -28,7 +28,7 @@ struct Signed64 {
 impl Signed64 {
     fn of(x: &BigInt) -> Self {
         Signed64 {
-            words: x.iter_u64_digits().collect(),
+            words: words_of(x),
             negative: x.is_negative(),
         }
     }
@@ -40,12 +40,6 @@ impl Signed64 {
             (false, false) => Sign::Plus,
         };
         BigInt::from_biguint(sign, gcd::from_words(&self.words))
-    }
-}
-
-fn trim(x: &mut Vec<u64>) {
-    while x.last() == Some(&0) {
-        x.pop();
     }
 }
 
