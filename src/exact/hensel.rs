@@ -21,10 +21,10 @@ use crate::exact::gcd::{self, gcd_u128, gcd_u64};
 /// dashu-int's subquadratic products, cost less, and below it one gcd is as fast.
 /// Measured against both (2026-12-06, every eval, rational eval and surface eval cell of
 /// `exact_grid` to degree 200, two alternating runs each): 4 to 21 factors of 1,000 bits
-/// and 6 to 51 of 333 bits took 4% to 16% less time; 4 of 333 bits and 4 of 200 bits 5% to
-/// 8% more; 51 of 1,000 bits 6% to 10% more, 201 of 333 bits 6% to 20% more, and the 441
-/// factors of a 100-digit degree-(20, 20) surface 25% more; factors of 100 bits (30-digit
-/// denominators) 3% to 24% more at every count.
+/// and 21 to 51 of 333 bits took 4% to 16% less time; 4 of 333 bits 6% to 8% more; 51 of
+/// 1,000 bits 6% to 10% more, 201 of 333 bits 6% to 20% more, and the 441 factors of a
+/// 100-digit degree-(20, 20) surface 22% to 26% more; factors of 100 bits (30-digit
+/// denominators) up to 24% more (docs/performance.md, "The final gcd by factors").
 pub(crate) fn pays(factors: usize, bits: u64) -> bool {
     factors >= 2 && bits >= 128 * factors as u64 && (LEAST_BITS..=24_000).contains(&bits)
 }
