@@ -43,6 +43,23 @@ fn negated_inverse(f: u64) -> u64 {
     x.wrapping_neg()
 }
 
+/// `gcd(x, m)` for an odd `m > 1`: Hensel's remainder by a word (GMP's
+/// `mpn_modexact_1_odd`), two products a word where a remainder by a word past 32 bits
+/// chains 128-bit divisions (a call each). For the words `s_i` of `x` from the lowest, with
+/// `c_0 = 0`: `l = (s_i − c_i) m⁻¹ mod 2^64` and `c_{i+1}` the high word of `l m` plus the
+/// borrow, so that `s_i = c_i + l m − c_{i+1} 2^64` and `x ≡ −c_k 2^(64 k) (mod m)`: `gcd(m,
+/// x) = gcd(m, c_k)`, `c_k ≤ m`.
+pub(crate) fn gcd_odd_word(x: &BigUint, m: u64) -> u64 {
+    debug_assert!(m % 2 == 1 && m > 1);
+    let inverse = negated_inverse(m).wrapping_neg();
+    let c = x.iter_u64_digits().fold(0u64, |c, s| {
+        let (s, borrow) = s.overflowing_sub(c);
+        let l = s.wrapping_mul(inverse);
+        ((u128::from(l) * u128::from(m)) >> 64) as u64 + u64::from(borrow)
+    });
+    gcd_u64(m, c)
+}
+
 /// One row of the remainder: `t[..M] += u · f`, clearing `t[0]`; the row's carry-out.
 #[inline(always)]
 fn row<const M: usize>(t: &mut [u64; M], f: &[u64; M], u: u64) -> u64 {
@@ -216,6 +233,22 @@ mod tests {
     }
 
     proptest! {
+        /// Against num-bigint's gcd: odd words of every size, numbers sharing a part with
+        /// them, of all ones, zero.
+        #[test]
+        fn odd_word_gcds_are_num_bigints(
+            x in limbs(0..30),
+            m in prop_oneof![3u64..1000, any::<u64>(), Just(u64::MAX)],
+            common in 1u64..1_000_000,
+        ) {
+            let m = m | 1;
+            prop_assume!(m > 1);
+            let x = natural(&x) * common;
+            let m = m.wrapping_mul(common | 1) | 1;
+            prop_assume!(m > 1);
+            prop_assert_eq!(BigUint::from(gcd_odd_word(&x, m)), x.gcd(&BigUint::from(m)));
+        }
+
         /// Against num-bigint's gcd: factors of one to twelve words with a shared part and
         /// powers of two (more or fewer than the number's), numbers shorter and longer
         /// than the factors.

@@ -55,25 +55,35 @@ pub(super) fn reduced(mut num: BigInt, den: BigInt, q: &BigInt, n: usize, factor
     }
     let power = match q.to_u64() {
         Some(w) if w > 1 => {
-            let mut power = match u32::try_from(n).ok().and_then(|e| w.checked_pow(e)) {
+            // qⁿ's power of two by trailing zeros and one shift: the rounds below would
+            // take it a factor of q at a time, each with a division of num.
+            let twos = u64::from(w.trailing_zeros()) * n as u64;
+            let shared_twos = twos.min(num.trailing_zeros().expect("num is not zero"));
+            num >>= shared_twos;
+            let odd = w >> w.trailing_zeros();
+            let mut power = match u32::try_from(n).ok().and_then(|e| odd.checked_pow(e)) {
                 Some(x) => BigInt::from(x),
-                None => num_traits::pow(BigInt::from(w), n),
+                None => num_traits::pow(BigInt::from(odd), n),
             };
-            // gcd(num, q^m) for the largest q^m within half a word (`rem_word`'s fast
-            // path: 64-bit divisions), from one remainder: for a
-            // prime of exponent f in q, each round divides out min(v, m f) of what is left
-            // of its exponent v; rounds go on while something divides and the powers taken
-            // stay within qⁿ.
-            let mut left = n;
+            // gcd(num, o^m) for the largest power o^m of q's odd part within half a word
+            // (`rem_word`'s fast path: 64-bit divisions), from one remainder, or of o itself
+            // by Hensel's remainder past half a word: for a prime of exponent f in o, each
+            // round divides out min(v, m f) of what is left of its exponent v; rounds go on
+            // while something divides and the powers taken stay within oⁿ.
+            let mut left = if odd > 1 { n } else { 0 };
             while left > 0 {
-                let (mut block, mut m) = (w, 1);
+                let (mut block, mut m) = (odd, 1);
                 while m < left {
-                    match block.checked_mul(w).filter(|&b| b <= u64::from(u32::MAX)) {
+                    match block.checked_mul(odd).filter(|&b| b <= u64::from(u32::MAX)) {
                         Some(b) => (block, m) = (b, m + 1),
                         None => break,
                     }
                 }
-                let g = gcd_u64(block, rem_word(num.magnitude(), block));
+                let g = if block <= u64::from(u32::MAX) {
+                    gcd_u64(block, rem_word(num.magnitude(), block))
+                } else {
+                    hensel::gcd_odd_word(num.magnitude(), block)
+                };
                 if g == 1 {
                     break;
                 }
@@ -81,7 +91,7 @@ pub(super) fn reduced(mut num: BigInt, den: BigInt, q: &BigInt, n: usize, factor
                 power /= g;
                 left -= m;
             }
-            power
+            power << (twos - shared_twos)
         }
         _ => {
             let (rest, left) = gcd::reduce_by_power(num, q, n);
