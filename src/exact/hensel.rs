@@ -60,9 +60,10 @@ pub(crate) fn gcd_odd_word(x: &BigUint, m: u64) -> u64 {
     gcd_u64(m, c)
 }
 
-/// One row of the remainder: `t[..M] += u · f`, clearing `t[0]`; the row's carry-out.
+/// One row of the remainder: `t += u · f` (as long as `f`), clearing `t[0]`; the row's
+/// carry-out. Inlined where the length is a constant, the row is unrolled.
 #[inline(always)]
-fn row<const M: usize>(t: &mut [u64; M], f: &[u64; M], u: u64) -> u64 {
+fn row(t: &mut [u64], f: &[u64], u: u64) -> u64 {
     let mut carry = 0u64;
     for (r, &w) in t.iter_mut().zip(f) {
         let v = u128::from(u) * u128::from(w) + u128::from(*r) + u128::from(carry);
@@ -73,27 +74,27 @@ fn row<const M: usize>(t: &mut [u64; M], f: &[u64; M], u: u64) -> u64 {
 }
 
 /// Hensel's remainder of `t` (the dividend's words and one zero word on top) by the odd
-/// `M`-word `f`: `t`'s words from `s = len − 1 − M` on hold `R ≡ N · 2^(−64 s) (mod f)`,
-/// `R < 2^(64 M) + f` (`N + Σ u_i f 2^(64 i) < 2^(64 (len − 1)) + 2^(64 s) f`).
-fn remainder<const M: usize>(t: &mut [u64], f: &[u64]) -> usize {
-    let f: &[u64; M] = f.try_into().expect("the factor has M words");
-    let steps = t.len() - 1 - M;
-    let negated = negated_inverse(f[0]);
+/// `m`-word `f`, whose rows `add_row` adds: `t`'s words from `s = len − 1 − m` on hold
+/// `R ≡ N · 2^(−64 s) (mod f)`, `R < 2^(64 m) + f` (`N + Σ u_i f 2^(64 i) < 2^(64 (len − 1))
+/// + 2^(64 s) f`).
+#[inline(always)]
+fn remainder_by(t: &mut [u64], m: usize, f0: u64, add_row: impl Fn(&mut [u64], u64) -> u64) -> usize {
+    let steps = t.len() - 1 - m;
+    let negated = negated_inverse(f0);
     // Each row's carry-out goes into the word above the row, and that addition's own carry
-    // (one bit) into the next row's: the rows stay M words long.
+    // (one bit) into the next row's: the rows stay m words long.
     let mut pending = 0u64;
     for i in 0..steps {
-        let (head, rest) = t[i..].split_at_mut(M);
-        let head: &mut [u64; M] = head.try_into().expect("M words");
+        let (head, rest) = t[i..].split_at_mut(m);
         let u = head[0].wrapping_mul(negated);
-        let carry = row(head, f, u);
+        let carry = add_row(head, u);
         let (s, c1) = rest[0].overflowing_add(carry);
         let (s, c2) = s.overflowing_add(pending);
         rest[0] = s;
         pending = u64::from(c1 | c2);
     }
     // The last row's bit: the word above it is the zero word on top, or within reach of it.
-    let mut k = steps + M;
+    let mut k = steps + m;
     while pending != 0 {
         let (s, c) = t[k].overflowing_add(pending);
         t[k] = s;
@@ -103,34 +104,18 @@ fn remainder<const M: usize>(t: &mut [u64], f: &[u64]) -> usize {
     steps
 }
 
-/// [`remainder`] for a factor of any number of words (a row as a slice).
+/// [`remainder_by`] on a factor of `M` words: rows of a constant length.
+fn remainder<const M: usize>(t: &mut [u64], f: &[u64]) -> usize {
+    let f: &[u64; M] = f.try_into().expect("the factor has M words");
+    remainder_by(t, M, f[0], |head, u| {
+        let head: &mut [u64; M] = head.try_into().expect("M words");
+        row(head, f, u)
+    })
+}
+
+/// [`remainder_by`] on a factor of any number of words.
 fn remainder_any(t: &mut [u64], f: &[u64]) -> usize {
-    let m = f.len();
-    let steps = t.len() - 1 - m;
-    let negated = negated_inverse(f[0]);
-    let mut pending = 0u64;
-    for i in 0..steps {
-        let (head, rest) = t[i..].split_at_mut(m);
-        let u = head[0].wrapping_mul(negated);
-        let mut carry = 0u64;
-        for (r, &w) in head.iter_mut().zip(f) {
-            let v = u128::from(u) * u128::from(w) + u128::from(*r) + u128::from(carry);
-            *r = v as u64;
-            carry = (v >> 64) as u64;
-        }
-        let (s, c1) = rest[0].overflowing_add(carry);
-        let (s, c2) = s.overflowing_add(pending);
-        rest[0] = s;
-        pending = u64::from(c1 | c2);
-    }
-    let mut k = steps + m;
-    while pending != 0 {
-        let (s, c) = t[k].overflowing_add(pending);
-        t[k] = s;
-        pending = u64::from(c);
-        k += 1;
-    }
-    steps
+    remainder_by(t, f.len(), f[0], |head, u| row(head, f, u))
 }
 
 /// `gcd(n, f)` for the odd `f` of at least two words (no zero top word) and `n`'s words
