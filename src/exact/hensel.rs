@@ -9,7 +9,7 @@
 //! The powers of two are taken apart by trailing zeros, and factors of one word by
 //! [`gcd::rem_word`].
 
-use num_bigint::BigUint;
+use num_bigint::{BigInt, BigUint};
 use num_traits::{One, ToPrimitive, Zero};
 
 use crate::exact::gcd::{self, gcd_u128, gcd_u64};
@@ -154,8 +154,19 @@ fn odd_gcd(n: &[u64], f: &[u64], scratch: &mut Vec<u64>) -> BigUint {
     gcd::from_words(g.as_words())
 }
 
+/// `gcd(num, Π f)` of the factors `f > 0`, for `num ≠ 0`, from the gcds with each factor
+/// ([`factor_gcds`], [`gcd::gcd_with_product`]).
+pub(crate) fn gcd_with_factors<'a>(num: &BigInt, factors: impl IntoIterator<Item = &'a BigInt>) -> BigInt {
+    let shared: Vec<BigInt> = factor_gcds(num.magnitude(), factors.into_iter().map(|f| f.magnitude()))
+        .into_iter()
+        .filter(|h| !h.is_one())
+        .map(BigInt::from)
+        .collect();
+    gcd::gcd_with_product(num, &shared)
+}
+
 /// `gcd(num, f)` for every factor `f > 0`, in order, for `num ≠ 0`.
-pub(crate) fn factor_gcds<'a>(num: &BigUint, factors: impl IntoIterator<Item = &'a BigUint>) -> Vec<BigUint> {
+fn factor_gcds<'a>(num: &BigUint, factors: impl IntoIterator<Item = &'a BigUint>) -> Vec<BigUint> {
     debug_assert!(!num.is_zero());
     let words = num.to_u64_digits();
     let num_twos = num.trailing_zeros().expect("num is not zero");

@@ -40,8 +40,10 @@
 //! numbers: the remainders `N mod d_i` come down the product tree of the `d_i` (a remainder
 //! tree), each gives `h_i = gcd(N, d_i)` on short numbers, and `gcd(N, D) = gcd(N, Π h_i)`
 //! ([`super::gcd::gcd_with_product`]), where `Π h_i` is short (usually a few small primes);
-//! `bⁿ` is skipped whole when `gcd(N mod b, b) = 1`. A product of a few factors (up to
-//! degree 31), unless they are long, is reduced by one gcd instead (`tree_reduces`).
+//! `bⁿ` is skipped whole when `gcd(N mod b, b) = 1`. Factors of two words or more, 3,000
+//! to 24,000 bits in all, give their `h_i` by Hensel's remainders instead
+//! ([`super::hensel::gcd_with_factors`]); a product of a few factors (up to degree 31),
+//! unless they are long, is reduced by one gcd (`tree_reduces`).
 
 use crate::exact::gcd::{self, Part};
 use crate::exact::hensel;
@@ -409,7 +411,7 @@ fn by_factors(tree: &ProductTree) -> bool {
 
 /// `num / (Π tree's factors · Π bᵉ)` in lowest terms, each `b > 0`: by [`gcd::reduce`]
 /// part by part, the tree's factors as their product when they are few, else their gcd
-/// with `num` found by the remainder tree first.
+/// with `num` found first, factor by factor ([`by_factors`]) or by the remainder tree.
 pub(crate) fn reduce_over(num: BigInt, tree: Option<&ProductTree>, powers: &[(&BigInt, usize)]) -> BigRational {
     let powers = powers.iter().map(|&(b, e)| Part::Power(b, e));
     let tree = match tree {
@@ -419,18 +421,12 @@ pub(crate) fn reduce_over(num: BigInt, tree: Option<&ProductTree>, powers: &[(&B
             return gcd::reduce(num, &product.into_iter().chain(powers).collect::<Vec<_>>());
         }
     };
-    // Every gcd(num, d_i); their product has the primes num shares with Π d_i
-    // (`gcd::gcd_with_product`).
-    let shared = if by_factors(tree) {
-        hensel::factor_gcds(num.magnitude(), tree.factors.iter().map(|f| f.magnitude()))
-            .into_iter()
-            .filter(|h| !h.is_one())
-            .map(BigInt::from)
-            .collect()
+    let g = if by_factors(tree) {
+        hensel::gcd_with_factors(&num, &tree.factors)
     } else {
-        tree_gcds(tree, &num)
+        // Every gcd(num, d_i); their product has the primes num shares with Π d_i.
+        gcd::gcd_with_product(&num, &tree_gcds(tree, &num))
     };
-    let g = gcd::gcd_with_product(&num, &shared);
     let (num, den) = if g.is_one() {
         (num, tree.product().clone())
     } else {

@@ -48,7 +48,7 @@ pub(super) fn keep_if_next<T>(values: &[&BigRational], i: usize, value: impl FnO
 /// `num / (den · qⁿ)` in lowest terms, `den, q > 0`: the power of `q` first (by remainders
 /// and divisions by a word when `q` is one), then the gcd with `den`: one gcd, or, when
 /// `factors` (whose product is `den`, or empty) are long enough ([`hensel::pays`]), the gcds
-/// with each factor ([`hensel::factor_gcds`], [`gcd::gcd_with_product`]).
+/// with each factor ([`hensel::gcd_with_factors`]).
 pub(super) fn reduced(mut num: BigInt, den: BigInt, q: &BigInt, n: usize, factors: &[&BigInt]) -> BigRational {
     if num.is_zero() {
         return BigRational::new_raw(num, BigInt::one());
@@ -100,12 +100,7 @@ pub(super) fn reduced(mut num: BigInt, den: BigInt, q: &BigInt, n: usize, factor
         }
     };
     let g = if hensel::pays(factors.len(), den.bits()) {
-        let shared: Vec<BigInt> = hensel::factor_gcds(num.magnitude(), factors.iter().map(|f| f.magnitude()))
-            .into_iter()
-            .filter(|h| !h.is_one())
-            .map(BigInt::from)
-            .collect();
-        gcd::gcd_with_product(&num, &shared).into_parts().1
+        hensel::gcd_with_factors(&num, factors.iter().copied()).into_parts().1
     } else {
         gcd::gcd(num.magnitude(), den.magnitude())
     };
