@@ -400,10 +400,9 @@ pub fn reduce_by_power(mut num: BigInt, base: &BigInt, e: usize) -> (BigInt, Big
     // gcd(num, o^e)` for an odd `o`, where the loop below would take a gcd of `q`'s length
     // per factor 2 it finds (an even 20-digit `t` at degree 20: 57% of an eval).
     if let Some(zeros) = base.trailing_zeros().filter(|&z| z > 0 && e > 0) {
-        let total = zeros * e as u64;
-        let take = num.trailing_zeros().map_or(0, |z| z.min(total));
-        let (num, left) = reduce_by_power(num >> take, &(base >> zeros), e);
-        return (num, left << (total - take));
+        let (num, left_twos) = take_twos(num, zeros, e);
+        let (num, left) = reduce_by_power(num, &(base >> zeros), e);
+        return (num, left << left_twos);
     }
     let mut left = num_traits::pow(base.clone(), e);
     if e == 0 || base.is_one() {
@@ -425,6 +424,15 @@ pub fn reduce_by_power(mut num: BigInt, base: &BigInt, e: usize) -> (BigInt, Big
         }
     }
     (num, left)
+}
+
+/// `num` without the power of two it shares with `2^(zeros · e)` (a base's power of two,
+/// `zeros` its trailing zeros), and the exponent of two left in that power: `gcd(num,
+/// 2^(k e) o^e) = 2^min(v₂(num), k e) · gcd(num, o^e)` for an odd `o`.
+pub(crate) fn take_twos(num: BigInt, zeros: u64, e: usize) -> (BigInt, u64) {
+    let total = zeros * e as u64;
+    let take = num.trailing_zeros().map_or(0, |z| z.min(total));
+    (num >> take, total - take)
 }
 
 /// `lcm(a, b)` of positive integers.

@@ -171,7 +171,6 @@ fn factor_gcds<'a>(num: &BigUint, factors: impl IntoIterator<Item = &'a BigUint>
     let words = num.to_u64_digits();
     let num_twos = num.trailing_zeros().expect("num is not zero");
     let mut scratch = Vec::with_capacity(words.len() + 2);
-    let mut odd = Vec::new();
     factors
         .into_iter()
         .map(|f| {
@@ -183,20 +182,7 @@ fn factor_gcds<'a>(num: &BigUint, factors: impl IntoIterator<Item = &'a BigUint>
             }
             let twos = f.trailing_zeros().expect("a factor is positive");
             let shared_twos = twos.min(num_twos);
-            odd.clear();
-            let (skip, shift) = ((twos / 64) as usize, (twos % 64) as u32);
-            let digits: Vec<u64> = f.iter_u64_digits().skip(skip).collect();
-            if shift == 0 {
-                odd.extend_from_slice(&digits);
-            } else {
-                for (i, &w) in digits.iter().enumerate() {
-                    let next = digits.get(i + 1).map_or(0, |&x| x << (64 - shift));
-                    odd.push(w >> shift | next);
-                }
-            }
-            while odd.last() == Some(&0) {
-                odd.pop();
-            }
+            let odd = (f >> twos).to_u64_digits();
             let h = match odd[..] {
                 [w] => BigUint::from(gcd_u64(w, gcd::rem_word(num, w))),
                 _ => odd_gcd(&words, &odd, &mut scratch),

@@ -57,9 +57,8 @@ pub(super) fn reduced(mut num: BigInt, den: BigInt, q: &BigInt, n: usize, factor
         Some(w) if w > 1 => {
             // qⁿ's power of two by trailing zeros and one shift: the rounds below would
             // take it a factor of q at a time, each with a division of num.
-            let twos = u64::from(w.trailing_zeros()) * n as u64;
-            let shared_twos = twos.min(num.trailing_zeros().expect("num is not zero"));
-            num >>= shared_twos;
+            let (rest, left_twos) = gcd::take_twos(num, u64::from(w.trailing_zeros()), n);
+            num = rest;
             let odd = w >> w.trailing_zeros();
             let mut power = match u32::try_from(n).ok().and_then(|e| odd.checked_pow(e)) {
                 Some(x) => BigInt::from(x),
@@ -91,7 +90,7 @@ pub(super) fn reduced(mut num: BigInt, den: BigInt, q: &BigInt, n: usize, factor
                 power /= g;
                 left -= m;
             }
-            power << (twos - shared_twos)
+            power << left_twos
         }
         _ => {
             let (rest, left) = gcd::reduce_by_power(num, q, n);
