@@ -180,18 +180,19 @@ fn factor_gcds<'a>(num: &BigUint, factors: impl IntoIterator<Item = &'a BigUint>
             // A word's odd part by Hensel's remainder by a word: two products a word of
             // `num`, where a remainder chains one or two divisions a word.
             let by_word = |odd: u64| if odd == 1 { 1 } else { gcd_odd_word(num, odd) };
-            if let Some(w) = f.to_u64() {
-                let twos = u64::from(w.trailing_zeros());
-                return BigUint::from(by_word(w >> twos)) << twos.min(num_twos);
-            }
             let twos = f.trailing_zeros().expect("a factor is positive");
-            let shared_twos = twos.min(num_twos);
-            let odd = (f >> twos).to_u64_digits();
-            let h = match odd[..] {
-                [w] => BigUint::from(by_word(w)),
-                _ => odd_gcd(&words, &odd, &mut scratch),
+            let h = match f.to_u64() {
+                // A factor of one word, without a copy of its words.
+                Some(w) => BigUint::from(by_word(w >> twos)),
+                None => {
+                    let odd = (f >> twos).to_u64_digits();
+                    match odd[..] {
+                        [w] => BigUint::from(by_word(w)),
+                        _ => odd_gcd(&words, &odd, &mut scratch),
+                    }
+                }
             };
-            h << shared_twos
+            h << twos.min(num_twos)
         })
         .collect()
 }
