@@ -388,10 +388,11 @@ pub fn product(xs: &[BigInt]) -> BigInt {
 
 /// `num` and `base^e` divided by their gcd, `base > 0`: gcds with the base, each no
 /// longer than the base (usually one, which finds the base prime to `num`), instead of one
-/// gcd with the whole power. For a prime of exponent `f` in the base and `v` in `num`, each
-/// step divides out `min(v', f)` of what is left, `e` steps `min(v, e f)`; a step that
-/// finds nothing in common ends it. Past a few steps, the rest is one gcd with what is
-/// left of the power.
+/// gcd with the whole power. A step divides `g = gcd(gcd(num, base), left)` out of `num`
+/// and of what is left of the power as often as both hold it; for a prime of exponent `f`
+/// in the base, a step takes all of it from one side or at least `f` from both, so `e`
+/// steps end it. A step that finds nothing in common ends it. Past a few steps, the rest is
+/// one gcd with what is left of the power.
 pub fn reduce_by_power(mut num: BigInt, base: &BigInt, e: usize) -> (BigInt, BigInt) {
     if num.is_zero() {
         return (num, BigInt::one());
@@ -409,12 +410,25 @@ pub fn reduce_by_power(mut num: BigInt, base: &BigInt, e: usize) -> (BigInt, Big
         return (num, left);
     }
     for _ in 0..e.min(SHORT_POWER) {
-        let g = gcd_int(&num.mod_floor(base), base);
+        // A prime in both `num` and what is left of the power divides the base, so it
+        // divides `gcd(gcd(num, base), left)`: when that is 1, the two share nothing.
+        let mut g = gcd_int(&num.mod_floor(base), base);
+        if !g.is_one() {
+            g = gcd_int(&left.mod_floor(&g), &g);
+        }
         if g.is_one() {
             return (num, left);
         }
-        num = num.div_floor(&g);
-        left = left.div_floor(&g);
+        // All of `g` that both hold, at once: a small prime of the base that `num` holds to
+        // a high power (the curve's denominators' share of it) would otherwise take a step
+        // a factor, and past `SHORT_POWER` steps a gcd with the whole power.
+        loop {
+            num = num.div_floor(&g);
+            left = left.div_floor(&g);
+            if !(num.is_multiple_of(&g) && left.is_multiple_of(&g)) {
+                break;
+            }
+        }
     }
     if e > SHORT_POWER {
         let g = gcd_int(&num, &left);
@@ -682,6 +696,23 @@ mod tests {
         ) {
             let base = BigInt::from_biguint(Sign::Plus, big(&digits).max(BigUint::one())) * part;
             let num = BigInt::from(n) * num_traits::pow(BigInt::from(part), k as usize) * num_traits::pow(base.clone(), (k / 2) as usize);
+            let (reduced, den) = reduce_by_power(num.clone(), &base, e);
+            let expected = BigRational::new(num, num_traits::pow(base, e));
+            prop_assert_eq!(&reduced, expected.numer());
+            prop_assert_eq!(&den, expected.denom());
+        }
+
+        /// A long base with a small prime that `num` holds to a high power (a curve's
+        /// denominators' share of a parameter's prime), more or less often than the power
+        /// does: against `BigRational::new`.
+        #[test]
+        fn reduce_by_power_of_a_shared_small_prime(
+            digits in proptest::collection::vec(any::<u64>(), 1..3),
+            prime in prop_oneof![Just(3u64), Just(5), Just(7), Just(65_521)],
+            k in 0u32..40, e in 0usize..30, n in any::<i64>(),
+        ) {
+            let base = BigInt::from_biguint(Sign::Plus, big(&digits).max(BigUint::one())) * prime;
+            let num = BigInt::from(n) * num_traits::pow(BigInt::from(prime), k as usize);
             let (reduced, den) = reduce_by_power(num.clone(), &base, e);
             let expected = BigRational::new(num, num_traits::pow(base, e));
             prop_assert_eq!(&reduced, expected.numer());
