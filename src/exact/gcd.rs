@@ -422,6 +422,11 @@ pub fn reduce_by_power(mut num: BigInt, base: &BigInt, e: usize) -> (BigInt, Big
         // All of `g` that both hold, at once: a small prime of the base that `num` holds to
         // a high power (the curve's denominators' share of it) would otherwise take a step
         // a factor, and past `SHORT_POWER` steps a gcd with the whole power.
+        if let Some(w) = g.to_u32() {
+            // Every prime the two share divides `g`, and this takes all of each: done.
+            divide_out_word(&mut num, &mut left, w);
+            return (num, left);
+        }
         loop {
             num = num.div_floor(&g);
             left = left.div_floor(&g);
@@ -438,6 +443,43 @@ pub fn reduce_by_power(mut num: BigInt, base: &BigInt, e: usize) -> (BigInt, Big
         }
     }
     (num, left)
+}
+
+/// Divides `num` and `left` (both nonzero) by all they share of the primes of the odd
+/// word `w > 1`: by blocks, the largest power of `w` within 32 bits, whose gcds with
+/// the two are remainders by a word (`c = gcd(gcd(num, block), left)` a block, until it is
+/// 1), and the divisions exact ones by a word ([`divide_exactly`]). A prime of `w` left in
+/// one of them is then missing from the other.
+fn divide_out_word(num: &mut BigInt, left: &mut BigInt, w: u32) {
+    let mut block = w;
+    while let Some(b) = block.checked_mul(w) {
+        block = b;
+    }
+    let block = u64::from(block);
+    loop {
+        let a = gcd_u64(block, rem_word(num.magnitude(), block));
+        let c = if a == 1 {
+            1
+        } else {
+            gcd_u64(a, rem_word(left.magnitude(), a))
+        };
+        if c == 1 {
+            return;
+        }
+        *num = divided_exactly(std::mem::take(num), c);
+        *left = divided_exactly(std::mem::take(left), c);
+    }
+}
+
+/// `x / k` for a `k > 0` that divides `x`: below 2^32 by [`divide_exactly`].
+fn divided_exactly(x: BigInt, k: u64) -> BigInt {
+    let Ok(small) = u32::try_from(k) else {
+        return x / k;
+    };
+    let (sign, magnitude) = x.into_parts();
+    let mut words = magnitude.to_u64_digits();
+    divide_exactly(&mut words, small);
+    BigInt::from_biguint(sign, from_words(&words))
 }
 
 /// `num` without the power of two it shares with `2^(zeros · e)` (a base's power of two,
