@@ -39,7 +39,7 @@ use crate::coords::Point;
 use crate::error::{check_degree, Error, Result};
 use crate::exact::gcd::{self, Part};
 use crate::exact::{elevation_words, splitting};
-use choice::{horner_wins, pairs_win, rows_first, words_hopeless};
+use choice::{horner_wins, pairs_win, powers_overflow, rows_first, words_hopeless};
 
 mod choice;
 mod horner;
@@ -55,6 +55,16 @@ use num_traits::{One, Zero};
 /// Runs `kernel` on machine words and, if they overflow, on big integers.
 fn words_then_big<R>(kernel: impl Fn(Tier) -> Option<R>) -> R {
     kernel(Tier::Words).unwrap_or_else(|| kernel(Tier::Big).expect("big integers do not overflow"))
+}
+
+/// [`words_then_big`] for the kernels whose outputs have the parameters' denominators to
+/// the powers `powers` (subdivision and the scheme at level `n`, a surface's point):
+/// straight to big integers when their product is past the words ([`powers_overflow`]).
+fn words_then_big_at<R>(powers: &[(usize, &BigInt)], kernel: impl Fn(Tier) -> Option<R>) -> R {
+    if powers_overflow(powers) {
+        return kernel(Tier::Big).expect("big integers do not overflow");
+    }
+    words_then_big(kernel)
 }
 
 /// Which integers a kernel runs on (see [`words_then_big`]).
@@ -195,7 +205,7 @@ fn coordinate_sum_on<I: Int>(values: &[&BigRational], t: &BigRational) -> Option
 
 /// [`coordinate_sum_on`] on machine words while they may fit, else on big integers.
 fn coordinate_sum(values: &[&BigRational], t: &BigRational) -> BigRational {
-    if words_hopeless(values, 160) {
+    if words_hopeless(values, 160) || powers_overflow(&[(values.len() - 1, t.denom())]) {
         return coordinate_sum_on::<BigInt>(values, t).expect("big integers do not overflow");
     }
     words_then_big(|tier| on_tier!(tier, coordinate_sum_on(values, t)))
@@ -544,13 +554,13 @@ pub(crate) fn derivative(points: &[Point<BigRational>], k: usize) -> Result<Vec<
 /// The columns of de Casteljau's triangle (9) at `t`.
 pub(crate) fn scheme(points: &[Point<BigRational>], t: &BigRational) -> Vec<Vec<Point<BigRational>>> {
     let c = &Curve(points);
-    words_then_big(|tier| on_tier!(tier, curve_scheme(c, t)))
+    words_then_big_at(&[(c.degree(), t.denom())], |tier| on_tier!(tier, curve_scheme(c, t)))
 }
 
 /// The two halves of the subdivision at `t0`.
 pub(crate) fn split(points: &[Point<BigRational>], t0: &BigRational) -> (Points, Points) {
     let c = &Curve(points);
-    words_then_big(|tier| on_tier!(tier, curve_split(c, t0)))
+    words_then_big_at(&[(c.degree(), t0.denom())], |tier| on_tier!(tier, curve_split(c, t0)))
 }
 
 /// One degree elevation step (7); beyond [`crate::MAX_DEGREE`] an error.
@@ -633,7 +643,10 @@ pub(crate) fn rational_derivative_at(points: &[Point<BigRational>], t: &BigRatio
 /// one reduction per coordinate.
 pub(crate) fn surface_point(net: &[Vec<Point<BigRational>>], u: &BigRational, v: &BigRational) -> Point<BigRational> {
     let sf = &Net(net);
-    words_then_big(|tier| on_tier!(tier, surface_eval(sf, u, v)))
+    let (m, n) = sf.degrees();
+    words_then_big_at(&[(m, u.denom()), (n, v.denom())], |tier| {
+        on_tier!(tier, surface_eval(sf, u, v))
+    })
 }
 
 /// `Σ_i C(n,i) pⁱ (q−p)^(n−i) x_i` for integer `x_0..x_n` and `t = p/q`, exactly: the
