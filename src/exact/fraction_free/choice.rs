@@ -67,8 +67,8 @@ pub(super) fn words_hopeless(values: &[&BigRational], limit: u64) -> bool {
 
 /// Whether the product of the powers `qⁿ`, a factor of every word kernel's final
 /// denominator, is past `i128` for certain (`q ≥ 2^(bits − 1)`): the word kernel would run
-/// its sums until they overflow. A 5-digit cubic at a 20-digit `t` (67 bits) spent 9% of
-/// its time on the words' lcms.
+/// its sums until they overflow. A 5-digit cubic at a 20-digit `t` (67 bits) spent 8% of
+/// its time on the words' lcms (docs/performance.md, "Word tiers that cannot fit").
 pub(super) fn powers_overflow(powers: &[(usize, &BigInt)]) -> bool {
     let bits = powers
         .iter()
