@@ -58,8 +58,9 @@ fn words_then_big<R>(kernel: impl Fn(Tier) -> Option<R>) -> R {
 }
 
 /// [`words_then_big`] for the kernels whose outputs have the parameters' denominators to
-/// the powers `powers` (subdivision and the scheme at level `n`, a surface's point):
-/// straight to big integers when their product is past the words ([`powers_overflow`]).
+/// the powers `powers` (a point of a curve or of its `k`-th derivative, the scheme's level
+/// `n`, a surface's point): straight to big integers when their product is past the words
+/// ([`powers_overflow`]), where the word kernel would fail for certain.
 fn words_then_big_at<R>(powers: &[(usize, &BigInt)], kernel: impl Fn(Tier) -> Option<R>) -> R {
     if powers_overflow(powers) {
         return kernel(Tier::Big).expect("big integers do not overflow");
@@ -205,10 +206,12 @@ fn coordinate_sum_on<I: Int>(values: &[&BigRational], t: &BigRational) -> Option
 
 /// [`coordinate_sum_on`] on machine words while they may fit, else on big integers.
 fn coordinate_sum(values: &[&BigRational], t: &BigRational) -> BigRational {
-    if words_hopeless(values, 160) || powers_overflow(&[(values.len() - 1, t.denom())]) {
+    if words_hopeless(values, 160) {
         return coordinate_sum_on::<BigInt>(values, t).expect("big integers do not overflow");
     }
-    words_then_big(|tier| on_tier!(tier, coordinate_sum_on(values, t)))
+    words_then_big_at(&[(values.len() - 1, t.denom())], |tier| {
+        on_tier!(tier, coordinate_sum_on(values, t))
+    })
 }
 
 /// The `k`-th forward differences of the flat vectors `x` (`dim` integers each).
@@ -526,7 +529,9 @@ pub(crate) fn eval(points: &[Point<BigRational>], t: &BigRational) -> Point<BigR
 /// The `k`-th derivative vector at `t`, `k` at most the degree.
 pub(crate) fn derivative_at(points: &[Point<BigRational>], k: usize, t: &BigRational) -> Point<BigRational> {
     let c = &Curve(points);
-    words_then_big(|tier| on_tier!(tier, curve_derivative_at(c, k, t)))
+    words_then_big_at(&[(c.degree().saturating_sub(k), t.denom())], |tier| {
+        on_tier!(tier, curve_derivative_at(c, k, t))
+    })
 }
 
 /// The `k`-th derivative curve's points; `k > n` is [`Error::DerivativeOrder`].
