@@ -466,19 +466,17 @@ fn divide_out_word(num: &mut BigInt, left: &mut BigInt, w: u32) {
         if c == 1 {
             return;
         }
+        let c = u32::try_from(c).expect("a divisor of the block, which is within 32 bits");
         *num = divided_exactly(std::mem::take(num), c);
         *left = divided_exactly(std::mem::take(left), c);
     }
 }
 
-/// `x / k` for a `k > 0` that divides `x`: below 2^32 by [`divide_exactly`].
-fn divided_exactly(x: BigInt, k: u64) -> BigInt {
-    let Ok(small) = u32::try_from(k) else {
-        return x / k;
-    };
+/// `x / k` for a `0 < k < 2^32` that divides `x`, by [`divide_exactly`].
+fn divided_exactly(x: BigInt, k: u32) -> BigInt {
     let (sign, magnitude) = x.into_parts();
     let mut words = magnitude.to_u64_digits();
-    divide_exactly(&mut words, small);
+    divide_exactly(&mut words, k);
     BigInt::from_biguint(sign, from_words(&words))
 }
 
